@@ -1,0 +1,50 @@
+"""Exceptions raised by bearinglab.
+
+Every error a user can provoke with bad input is an :class:`InputError` that
+names the parameter, the value given and what is allowed, so that the command
+line can print it as one line.
+"""
+
+from __future__ import annotations
+
+
+class BearinglabError(Exception):
+    """Base class of all bearinglab errors."""
+
+
+class InputError(BearinglabError, ValueError):
+    """A parameter is outside what the model allows.
+
+    >>> str(InputError("ball_count", 2, "an integer >= 3"))
+    'ball_count = 2 is not allowed: expected an integer >= 3'
+    """
+
+    def __init__(self, parameter: str, value: object, allowed: str, hint: str = "") -> None:
+        self.parameter = parameter
+        self.value = value
+        self.allowed = allowed
+        message = f"{parameter} = {value!r} is not allowed: expected {allowed}"
+        if hint:
+            message += f" ({hint})"
+        super().__init__(message)
+
+
+class DesignationError(BearinglabError, ValueError):
+    """A bearing designation could not be read.
+
+    The message names the designation and the part that was not understood.
+    """
+
+    def __init__(self, designation: str, part: str, reason: str) -> None:
+        self.designation = designation
+        self.part = part
+        self.reason = reason
+        super().__init__(f"designation {designation!r}: cannot read {part!r}: {reason}")
+
+
+class CatalogError(BearinglabError, LookupError):
+    """A bearing (or one of its values) is not in the catalogue."""
+
+
+class ConvergenceError(BearinglabError, RuntimeError):
+    """An iterative solver did not converge; the message names the case and residual."""

@@ -1,0 +1,456 @@
+"""Geometry of a single-row ball bearing.
+
+Layer 1 holds the pure functions (raceway diameters, free contact angle, end play,
+contact radii, ring cross-sections); layer 2 holds :class:`BallBearing`, which
+validates a geometry and exposes the derived quantities by calling those functions.
+
+Sources: Harris T. A., Kotzalas M. N., *Essential Concepts of Bearing Technology*,
+5th ed., 2007, ch. 2 ("Rolling bearing macrogeometry": diametral clearance
+P_d = d_o - d_i - 2 D, eq. 2.1; free contact angle cos(alpha_0) = 1 - P_d / (2 A),
+eq. 2.5; end play P_e = 2 A sin(alpha_0), eq. 2.6; curvature sums and differences,
+eqs. 2.26-2.33). Conventions: docs/conventions.md; names: docs/nomenclature.md.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from functools import cached_property
+from typing import Literal, NamedTuple
+
+import numpy as np
+from scipy import integrate
+
+from .errors import InputError
+from .materials import BEARING_STEEL, Material
+
+Race = Literal["inner", "outer"]
+
+#: Groove depth of both rings as a fraction of the ball diameter, used only to place the
+#: ring shoulders for the ring cross-sections. Estimate: SKF's shoulder diameter
+#: d1 = 34.4 mm of a 6205 (D_w = 7.94 mm, d_m = 39.04 mm) gives a depth of 0.21 D_w.
+GROOVE_DEPTH_RATIO = 0.20
+
+
+class Source(NamedTuple):
+    """Where a geometry value came from: ``kind`` is catalog, estimated, user or default."""
+
+    kind: str
+    reference: str = ""
+
+
+# ---------------------------------------------------------------- layer 1: functions
+
+
+def raceway_diameters(pitch_diameter, ball_diameter, diametral_clearance):
+    """Groove-bottom diameters (d_i, d_o) of the inner and outer raceway [m].
+
+    Harris & Kotzalas eq. 2.1 with d_m = (d_i + d_o)/2:
+    d_i = d_m - D_w - P_d/2, d_o = d_m + D_w + P_d/2.
+
+    Parameters
+    ----------
+    pitch_diameter : float or array
+        Pitch diameter d_m [m].
+    ball_diameter : float or array
+        Ball diameter D_w [m].
+    diametral_clearance : float or array
+        Diametral clearance P_d [m]; negative for an interference (preload).
+
+    >>> [round(float(x) * 1e3, 4) for x in raceway_diameters(0.065, 0.0127, 15e-6)]
+    [52.2925, 77.7075]
+    """
+    half = ball_diameter + 0.5 * np.asarray(diametral_clearance)
+    return pitch_diameter - half, pitch_diameter + half
+
+
+def free_contact_angle(diametral_clearance, ball_diameter, inner_groove_factor,
+                       outer_groove_factor):
+    """Free (unloaded) contact angle alpha_0 from the clearance [rad].
+
+    cos(alpha_0) = 1 - P_d / (2 A), A = (f_i + f_o - 1) D_w (Harris & Kotzalas eq. 2.5).
+    An interference (P_d < 0) gives 0.
+
+    Parameters
+    ----------
+    diametral_clearance : float or array
+        P_d [m], at most 2 A (beyond that the balls are loose at 90 degrees).
+    ball_diameter : float
+        D_w [m].
+    inner_groove_factor, outer_groove_factor : float
+        f_i, f_o [-], each > 0.5.
+
+    >>> round(math.degrees(free_contact_angle(15e-6, 0.0127, 0.52, 0.52)), 2)
+    9.86
+    """
+    a = (inner_groove_factor + outer_groove_factor - 1.0) * ball_diameter
+    ratio = np.clip(1.0 - np.maximum(diametral_clearance, 0.0) / (2.0 * a), -1.0, 1.0)
+    return np.arccos(ratio)
+
+
+def clearance_for_contact_angle(contact_angle, ball_diameter, inner_groove_factor,
+                                outer_groove_factor):
+    """Diametral clearance that gives the free contact angle alpha_0 [m].
+
+    Inverse of :func:`free_contact_angle`: P_d = 2 A (1 - cos alpha_0).
+
+    Parameters
+    ----------
+    contact_angle : float or array
+        alpha_0 [rad].
+    ball_diameter : float
+        D_w [m].
+    inner_groove_factor, outer_groove_factor : float
+        f_i, f_o [-].
+    """
+    a = (inner_groove_factor + outer_groove_factor - 1.0) * ball_diameter
+    return 2.0 * a * (1.0 - np.cos(contact_angle))
+
+
+def end_play(diametral_clearance, ball_diameter, inner_groove_factor, outer_groove_factor):
+    """Free end play P_e = 2 A sin(alpha_0) [m] (Harris & Kotzalas eq. 2.6).
+
+    Parameters
+    ----------
+    diametral_clearance : float or array
+        P_d [m].
+    ball_diameter : float
+        D_w [m].
+    inner_groove_factor, outer_groove_factor : float
+        f_i, f_o [-].
+    """
+    a = (inner_groove_factor + outer_groove_factor - 1.0) * ball_diameter
+    alpha = free_contact_angle(diametral_clearance, ball_diameter, inner_groove_factor,
+                               outer_groove_factor)
+    return 2.0 * a * np.sin(alpha)
+
+
+def contact_radii(ball_diameter, pitch_diameter, groove_factor, contact_angle, race: Race):
+    """Effective radii (R_x, R_y) of a ball-raceway contact [m].
+
+    R_x lies in the rolling direction, R_y across the groove; 1/R_x + 1/R_y is the
+    curvature sum and (1/R_x - 1/R_y) / (1/R_x + 1/R_y) the curvature difference
+    F(rho) of Harris & Kotzalas eqs. 2.26-2.33, with gamma = D_w cos(alpha) / d_m:
+
+    inner: R_x = D_w (1 - gamma) / 2, outer: R_x = D_w (1 + gamma) / 2,
+    both: R_y = f D_w / (2 f - 1).
+
+    Parameters
+    ----------
+    ball_diameter : float
+        D_w [m].
+    pitch_diameter : float
+        d_m [m].
+    groove_factor : float
+        f_i or f_o [-] (groove radius / D_w), > 0.5.
+    contact_angle : float or array
+        Operating contact angle alpha [rad].
+    race : {"inner", "outer"}
+        Which raceway.
+
+    >>> rx, ry = contact_radii(12.7e-3, 65e-3, 0.52, 0.0, "inner")
+    >>> round(float(1e-3 * (1 / rx + 1 / ry)), 4)  # Harris 209 example: 0.2018 /mm
+    0.2018
+    """
+    if race not in ("inner", "outer"):
+        raise InputError("race", race, "'inner' or 'outer'")
+    gamma = ball_diameter * np.cos(contact_angle) / pitch_diameter
+    sign = -1.0 if race == "inner" else 1.0
+    rx = 0.5 * ball_diameter * (1.0 + sign * gamma)
+    ry = groove_factor * ball_diameter / (2.0 * groove_factor - 1.0)
+    return rx, ry
+
+
+def curvature_sum_difference(rx, ry):
+    """Curvature sum Sum(rho) [1/m] and difference F(rho) [-] from the radii.
+
+    Parameters
+    ----------
+    rx, ry : float or array
+        Effective radii in the rolling and transverse directions [m].
+    """
+    sx, sy = 1.0 / np.asarray(rx, float), 1.0 / np.asarray(ry, float)
+    total = sx + sy
+    return total, np.abs(sx - sy) / total
+
+
+class RingSection(NamedTuple):
+    """Cross-section of a grooved ring: area [m^2], centroid (mean) radius [m],
+    second moment about the axis through the centroid parallel to the bearing axis
+    [m^4] (the one for in-plane bending), and width [m]."""
+
+    area: float
+    mean_radius: float
+    second_moment: float
+    width: float
+
+
+def grooved_ring_section(inner_radius, outer_radius, width, groove_radius,
+                         groove_bottom_radius, race: Race) -> RingSection:
+    """Cross-section of a ring bounded by two cylinders, minus its raceway groove.
+
+    The ring is the rectangle inner_radius <= r <= outer_radius, |z| <= width/2, less the
+    part of the groove circle (radius f D_w, touching the groove bottom) inside it.
+    Integrated exactly in r with scipy.integrate.quad.
+
+    Parameters
+    ----------
+    inner_radius, outer_radius : float
+        Radial bounds of the ring material (bore or shoulder, shoulder or outside) [m].
+    width : float
+        Ring width B [m].
+    groove_radius : float
+        Groove radius f D_w [m].
+    groove_bottom_radius : float
+        Radius of the groove bottom d_i/2 or d_o/2 [m].
+    race : {"inner", "outer"}
+        The groove opens outward for the inner ring and inward for the outer ring.
+    """
+    centre = groove_bottom_radius + (groove_radius if race == "inner" else -groove_radius)
+
+    def chord(r):
+        h2 = groove_radius**2 - (r - centre) ** 2
+        return 2.0 * math.sqrt(h2) if h2 > 0 else 0.0
+
+    def w(r):
+        return width - chord(r)
+
+    if chord(inner_radius if race == "outer" else outer_radius) >= width:
+        raise InputError("width", width, f"more than the groove opening "
+                         f"{chord(inner_radius if race == 'outer' else outer_radius):.6g} m",
+                         "the groove runs over the ring's side faces")
+    pts = [groove_bottom_radius]
+    area = integrate.quad(w, inner_radius, outer_radius, points=pts)[0]
+    mean = integrate.quad(lambda r: r * w(r), inner_radius, outer_radius, points=pts)[0] / area
+    second = integrate.quad(lambda r: (r - mean) ** 2 * w(r), inner_radius, outer_radius,
+                            points=pts)[0]
+    return RingSection(area, mean, second, width)
+
+
+# ---------------------------------------------------------------- layer 2: the model
+
+
+def _positive(name: str, value: float) -> None:
+    if not (isinstance(value, (int, float, np.floating, np.integer)) and math.isfinite(value)
+            and value > 0):
+        raise InputError(name, value, "a positive length [m]")
+
+
+@dataclass(frozen=True)
+class BallBearing:
+    """A single-row ball bearing: boundary dimensions, internal geometry, materials.
+
+    All lengths in metres, angles in radians. The nominal ``contact_angle`` is the one
+    kinematics and contact calculations use unless an analysis finds the operating
+    angle; the free contact angle follows from the clearance. If ``contact_angle`` is
+    given (> 0) and ``diametral_clearance`` is not, the clearance is the one that
+    gives that free contact angle (angular-contact bearings); a radial bearing with no
+    clearance given has none.
+
+    Parameters
+    ----------
+    ball_count : int
+        Number of balls Z [-], >= 3.
+    ball_diameter : float
+        Ball diameter D_w [m].
+    pitch_diameter : float
+        Pitch diameter d_m [m].
+    inner_groove_factor, outer_groove_factor : float
+        Groove curvature factors f_i, f_o = groove radius / D_w [-], each > 0.5.
+    contact_angle : float
+        Nominal contact angle alpha [rad], 0 <= alpha < pi/2.
+    diametral_clearance : float or None
+        Diametral clearance P_d [m]; negative means interference.
+    bore, outside_diameter, width : float or None
+        Boundary dimensions d, D, B [m]; needed for ring masses and sections.
+    ring_material, ball_material : Material
+        Materials of the rings and of the balls.
+    name : str
+        Label, e.g. the designation.
+    bearing_type : str
+        One of the types in :data:`bearinglab.designation.BEARING_TYPES`.
+    sources : dict
+        Field name -> :class:`Source` (catalog, estimated, user, default).
+
+    >>> b = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3)
+    >>> round(b.inner_raceway_diameter * 1e3, 2), round(b.outer_raceway_diameter * 1e3, 2)
+    (31.1, 46.98)
+    """
+
+    ball_count: int
+    ball_diameter: float
+    pitch_diameter: float
+    inner_groove_factor: float = 0.52
+    outer_groove_factor: float = 0.52
+    contact_angle: float = 0.0
+    diametral_clearance: float | None = None
+    bore: float | None = None
+    outside_diameter: float | None = None
+    width: float | None = None
+    ring_material: Material = BEARING_STEEL
+    ball_material: Material = BEARING_STEEL
+    name: str = ""
+    bearing_type: str = "radial_ball"
+    sources: dict = field(default_factory=dict, compare=False, repr=False)
+
+    def __post_init__(self) -> None:
+        z = self.ball_count
+        if isinstance(z, bool) or not isinstance(z, (int, np.integer)) or z < 3:
+            raise InputError("ball_count", z, "an integer >= 3")
+        _positive("ball_diameter", self.ball_diameter)
+        _positive("pitch_diameter", self.pitch_diameter)
+        for name in ("inner_groove_factor", "outer_groove_factor"):
+            f = getattr(self, name)
+            if not (isinstance(f, (int, float, np.floating)) and 0.5 < f <= 1.0):
+                raise InputError(name, f, "a value in (0.5, 1.0]",
+                                 "the groove radius must exceed the ball radius")
+        if not (isinstance(self.contact_angle, (int, float, np.floating))
+                and 0.0 <= self.contact_angle < 0.5 * math.pi):
+            raise InputError("contact_angle", self.contact_angle, "an angle in [0, 90) degrees")
+        if self.pitch_diameter <= self.ball_diameter:
+            raise InputError("pitch_diameter", self.pitch_diameter,
+                             f"more than the ball diameter {self.ball_diameter:.6g} m")
+        zmax = int(math.floor(math.pi / math.asin(self.ball_diameter / self.pitch_diameter)))
+        if z > zmax:
+            raise InputError("ball_count", z, f"at most {zmax} balls",
+                             f"{z} balls of {self.ball_diameter * 1e3:.4g} mm do not fit around "
+                             f"a {self.pitch_diameter * 1e3:.4g} mm pitch circle")
+        a = (self.inner_groove_factor + self.outer_groove_factor - 1.0) * self.ball_diameter
+        if self.diametral_clearance is None:
+            derived = float(clearance_for_contact_angle(
+                self.contact_angle, self.ball_diameter, self.inner_groove_factor,
+                self.outer_groove_factor))
+            object.__setattr__(self, "diametral_clearance", derived)
+        pd = self.diametral_clearance
+        if not (isinstance(pd, (int, float, np.floating)) and -0.05 * self.ball_diameter <= pd
+                <= 2.0 * a):
+            raise InputError("diametral_clearance", pd,
+                             f"a value in [{-0.05 * self.ball_diameter:.3g}, {2 * a:.3g}] m",
+                             "beyond 2 A the balls are loose even at 90 degrees")
+        for name in ("bore", "outside_diameter", "width"):
+            if getattr(self, name) is not None:
+                _positive(name, getattr(self, name))
+        d, big_d = self.bore, self.outside_diameter
+        if d is not None and big_d is not None and d >= big_d:
+            raise InputError("bore", d, f"less than the outside diameter {big_d:.6g} m")
+        if d is not None and self.inner_raceway_diameter <= d:
+            raise InputError("ball_diameter", self.ball_diameter,
+                             "a ball that leaves material under the inner raceway",
+                             f"inner groove bottom {self.inner_raceway_diameter * 1e3:.4g} mm "
+                             f"is not above the bore {d * 1e3:.4g} mm")
+        if big_d is not None and self.outer_raceway_diameter >= big_d:
+            raise InputError("ball_diameter", self.ball_diameter,
+                             "a ball that leaves material outside the outer raceway",
+                             f"outer groove bottom {self.outer_raceway_diameter * 1e3:.4g} mm "
+                             f"is not inside the outside diameter {big_d * 1e3:.4g} mm")
+
+    # ---- internal geometry
+    @property
+    def inner_raceway_diameter(self) -> float:
+        """Inner groove-bottom diameter d_i [m]."""
+        return float(raceway_diameters(self.pitch_diameter, self.ball_diameter,
+                                       self.diametral_clearance)[0])
+
+    @property
+    def outer_raceway_diameter(self) -> float:
+        """Outer groove-bottom diameter d_o [m]."""
+        return float(raceway_diameters(self.pitch_diameter, self.ball_diameter,
+                                       self.diametral_clearance)[1])
+
+    @property
+    def total_curvature(self) -> float:
+        """B = f_i + f_o - 1 [-]."""
+        return self.inner_groove_factor + self.outer_groove_factor - 1.0
+
+    @property
+    def groove_centre_distance(self) -> float:
+        """A = B D_w, distance between the groove curvature centres [m]."""
+        return self.total_curvature * self.ball_diameter
+
+    @property
+    def free_contact_angle(self) -> float:
+        """Free contact angle from the clearance [rad]."""
+        return float(free_contact_angle(self.diametral_clearance, self.ball_diameter,
+                                        self.inner_groove_factor, self.outer_groove_factor))
+
+    @property
+    def end_play(self) -> float:
+        """Free end play P_e [m]."""
+        return float(end_play(self.diametral_clearance, self.ball_diameter,
+                              self.inner_groove_factor, self.outer_groove_factor))
+
+    @property
+    def gamma(self) -> float:
+        """D_w cos(alpha) / d_m at the nominal contact angle [-]."""
+        return self.ball_diameter * math.cos(self.contact_angle) / self.pitch_diameter
+
+    def contact_radii(self, race: Race, contact_angle: float | None = None):
+        """(R_x, R_y) of the inner or outer contact [m]; see :func:`contact_radii`."""
+        f = self.inner_groove_factor if race == "inner" else self.outer_groove_factor
+        alpha = self.contact_angle if contact_angle is None else contact_angle
+        return contact_radii(self.ball_diameter, self.pitch_diameter, f, alpha, race)
+
+    def curvature(self, race: Race, contact_angle: float | None = None):
+        """Curvature sum [1/m] and difference [-] of the inner or outer contact."""
+        return curvature_sum_difference(*self.contact_radii(race, contact_angle))
+
+    # ---- masses and ring sections
+    @property
+    def ball_mass(self) -> float:
+        """Mass of one ball, rho pi D_w^3 / 6 [kg]."""
+        return self.ball_material.density * math.pi * self.ball_diameter**3 / 6.0
+
+    def _needs_boundary(self, what: str) -> tuple[float, float, float]:
+        for name in ("bore", "outside_diameter", "width"):
+            if getattr(self, name) is None:
+                raise InputError(name, None, "a value [m]", f"needed for the {what}")
+        return self.bore, self.outside_diameter, self.width
+
+    @cached_property
+    def outer_ring_section(self) -> RingSection:
+        """Outer ring cross-section between D and its shoulder, less the groove.
+
+        The shoulder sits GROOVE_DEPTH_RATIO D_w inside the groove bottom (an estimate;
+        see the module constant). Used by the ring-resonance model (seed 000: R, S, I).
+        """
+        _, big_d, width = self._needs_boundary("outer ring cross-section")
+        bottom = 0.5 * self.outer_raceway_diameter
+        shoulder = bottom - GROOVE_DEPTH_RATIO * self.ball_diameter
+        return grooved_ring_section(shoulder, 0.5 * big_d, width,
+                                    self.outer_groove_factor * self.ball_diameter, bottom,
+                                    "outer")
+
+    @cached_property
+    def inner_ring_section(self) -> RingSection:
+        """Inner ring cross-section between the bore and its shoulder, less the groove."""
+        d, _, width = self._needs_boundary("inner ring cross-section")
+        bottom = 0.5 * self.inner_raceway_diameter
+        shoulder = bottom + GROOVE_DEPTH_RATIO * self.ball_diameter
+        return grooved_ring_section(0.5 * d, shoulder, width,
+                                    self.inner_groove_factor * self.ball_diameter, bottom,
+                                    "inner")
+
+    @property
+    def outer_ring_mass(self) -> float:
+        """Mass of the outer ring, 2 pi R S rho (Pappus) [kg]."""
+        s = self.outer_ring_section
+        return 2.0 * math.pi * s.mean_radius * s.area * self.ring_material.density
+
+    @property
+    def inner_ring_mass(self) -> float:
+        """Mass of the inner ring, 2 pi R S rho (Pappus) [kg]."""
+        s = self.inner_ring_section
+        return 2.0 * math.pi * s.mean_radius * s.area * self.ring_material.density
+
+    @property
+    def geometry_source(self) -> str:
+        """catalog, estimated or user when all internal values share one kind, else mixed."""
+        kinds = {self.sources[k].kind for k in INTERNAL_FIELDS if k in self.sources}
+        if not kinds:
+            return "user"
+        return kinds.pop() if len(kinds) == 1 else "mixed"
+
+
+#: The internal-geometry fields whose provenance ``geometry_source`` summarises.
+INTERNAL_FIELDS = ("ball_count", "ball_diameter", "pitch_diameter", "inner_groove_factor",
+                   "outer_groove_factor", "contact_angle", "diametral_clearance")
