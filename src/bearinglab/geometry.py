@@ -230,6 +230,10 @@ def grooved_ring_section(inner_radius, outer_radius, width, groove_radius,
 # ---------------------------------------------------------------- layer 2: the model
 
 
+def _mm(value: float | None) -> float | None:
+    return None if value is None else value * 1e3
+
+
 def _positive(name: str, value: float) -> None:
     if not (isinstance(value, (int, float, np.floating, np.integer)) and math.isfinite(value)
             and value > 0):
@@ -441,6 +445,38 @@ class BallBearing:
         """Mass of the inner ring, 2 pi R S rho (Pappus) [kg]."""
         s = self.inner_ring_section
         return 2.0 * math.pi * s.mean_radius * s.area * self.ring_material.density
+
+    def to_dict(self) -> dict:
+        """JSON-ready summary in engineering units, with each value's source."""
+        out = {
+            "name": self.name, "bearing_type": self.bearing_type,
+            "bore_mm": _mm(self.bore), "outside_diameter_mm": _mm(self.outside_diameter),
+            "width_mm": _mm(self.width), "ball_count": int(self.ball_count),
+            "ball_diameter_mm": _mm(self.ball_diameter),
+            "pitch_diameter_mm": _mm(self.pitch_diameter),
+            "contact_angle_deg": math.degrees(self.contact_angle),
+            "inner_groove_factor": self.inner_groove_factor,
+            "outer_groove_factor": self.outer_groove_factor,
+            "diametral_clearance_um": self.diametral_clearance * 1e6,
+            "inner_raceway_diameter_mm": _mm(self.inner_raceway_diameter),
+            "outer_raceway_diameter_mm": _mm(self.outer_raceway_diameter),
+            "free_contact_angle_deg": math.degrees(self.free_contact_angle),
+            "end_play_um": self.end_play * 1e6,
+            "ball_mass_g": self.ball_mass * 1e3,
+            "geometry_source": self.geometry_source,
+            "geometry_sources": {k: {"kind": v.kind, "reference": v.reference}
+                                 for k, v in self.sources.items()},
+        }
+        if None not in (self.bore, self.outside_diameter, self.width):
+            s = self.outer_ring_section
+            out.update({
+                "inner_ring_mass_g": self.inner_ring_mass * 1e3,
+                "outer_ring_mass_g": self.outer_ring_mass * 1e3,
+                "outer_ring_section_area_mm2": s.area * 1e6,
+                "outer_ring_mean_radius_mm": s.mean_radius * 1e3,
+                "outer_ring_second_moment_mm4": s.second_moment * 1e12,
+            })
+        return out
 
     @property
     def geometry_source(self) -> str:
