@@ -117,6 +117,12 @@ class DefectFrequencies:
             out[f"{name}_order"] = float(self.orders[name])
         return out
 
+    def plot(self, harmonics: int = 3, ax=None):
+        """Stem chart of the frequencies and harmonics; returns (fig, ax)."""
+        from .plotting import frequencies_figure
+
+        return frequencies_figure(self, harmonics, ax)
+
     def to_pandas(self):
         """Table: frequency, long name, order, Hz."""
         import pandas as pd

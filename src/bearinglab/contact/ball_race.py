@@ -66,6 +66,12 @@ class BallContacts:
             "ball_load_deflection_constant_n_per_m1_5": float(self.ball_constant),
         }
 
+    def plot(self, axes=None):
+        """Pressure and approach against load, and the contact ellipses; returns (fig, axes)."""
+        from ..plotting import ball_contacts_figure
+
+        return ball_contacts_figure(self, axes)
+
     def to_pandas(self) -> pd.DataFrame:
         """One row per (contact, load), engineering units."""
         rows = []

@@ -1,0 +1,130 @@
+"""Figures for result objects (matplotlib, imported only when a plot is asked for).
+
+Functions here return ``(figure, axes)`` and never call ``show()``; :func:`save_figure`
+writes atomically (temporary file, then rename) so a failed write leaves no half file.
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+from .errors import InputError
+
+
+def _pyplot():
+    try:
+        import matplotlib
+
+        if not os.environ.get("DISPLAY") and matplotlib.get_backend().lower() != "agg":
+            matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:  # pragma: no cover - depends on the install
+        raise InputError("--plot", None, "matplotlib installed",
+                         "pip install 'bearinglab[plot]'") from None
+    return plt
+
+
+def save_figure(fig, path: str | Path) -> Path:
+    """Save ``fig`` to ``path`` atomically; the format follows the suffix (.png, .svg, .pdf)."""
+    path = Path(path)
+    suffix = path.suffix.lower()
+    if suffix not in (".png", ".svg", ".pdf"):
+        raise InputError("--plot", str(path), "a file name ending in .png, .svg or .pdf")
+    if not path.parent.exists():
+        raise InputError("--plot", str(path), "a path in an existing directory")
+    fd, tmp = tempfile.mkstemp(suffix=suffix, dir=path.parent, prefix=f".{path.stem}-")
+    os.close(fd)
+    try:
+        fig.savefig(tmp, dpi=120, bbox_inches="tight")
+        os.replace(tmp, path)
+    finally:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+    _pyplot().close(fig)
+    return path
+
+
+def ball_contacts_figure(result, axes=None):
+    """Max pressure and approach against ball load (up to the result's load), and the two
+    contact ellipses at that load drawn to scale.
+
+    Parameters
+    ----------
+    result : bearinglab.contact.ball_race.BallContacts
+        A contact result (scalar or array load; the largest load is used).
+    axes : sequence of two matplotlib Axes, optional
+        Where to draw; a new figure otherwise.
+    """
+    from .contact.ball_race import ball_contacts
+
+    plt = _pyplot()
+    if axes is None:
+        fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    else:
+        fig = axes[0].figure
+    q_max = float(np.max(result.load))
+    loads = np.linspace(0.0, q_max, 121)
+    curve = ball_contacts(result.bearing, loads, result.contact_angle, result.method)
+    ax, ax2 = axes[0], axes[0].twinx()
+    for race, c, style in (("inner", curve.inner, "-"), ("outer", curve.outer, "--")):
+        ax.plot(loads, c.max_pressure / 1e9, "C0" + style, label=f"p_max {race}")
+        ax2.plot(loads, c.approach * 1e6, "C1" + style, label=f"approach {race}")
+    ax.set_xlabel("ball load Q [N]")
+    ax.set_ylabel("max pressure [GPa]", color="C0")
+    ax2.set_ylabel("approach [um]", color="C1")
+    lines = ax.get_lines() + ax2.get_lines()
+    ax.legend(lines, [line.get_label() for line in lines], loc="upper left", fontsize=8)
+    ax.set_title(f"{result.bearing.name or 'bearing'}: Hertz contact vs load")
+    t = np.linspace(0, 2 * np.pi, 200)
+    final = ball_contacts(result.bearing, q_max, result.contact_angle, result.method)
+    for race, c, colour in (("inner", final.inner, "C3"), ("outer", final.outer, "C2")):
+        a, b = float(c.semi_major) * 1e3, float(c.semi_minor) * 1e3
+        axes[1].plot(b * np.cos(t), a * np.sin(t), color=colour,
+                     label=f"{race}: 2a = {2 * a:.3g} mm, 2b = {2 * b:.3g} mm, "
+                           f"p_max = {float(c.max_pressure) / 1e9:.3g} GPa")
+    axes[1].set_aspect("equal")
+    axes[1].set_xlabel("rolling direction [mm]")
+    axes[1].set_ylabel("across the groove [mm]")
+    axes[1].set_title(f"contact ellipses at Q = {q_max:g} N")
+    axes[1].legend(fontsize=8, loc="upper right")
+    fig.tight_layout()
+    return fig, axes
+
+
+def frequencies_figure(freqs, harmonics: int = 3, ax=None):
+    """Stem chart of the defect frequencies and their harmonics, for reading spectra.
+
+    Parameters
+    ----------
+    freqs : bearinglab.kinematics.DefectFrequencies
+        The frequencies.
+    harmonics : int
+        How many harmonics of each to draw (>= 1).
+    ax : matplotlib Axes, optional
+        Where to draw.
+    """
+    from .kinematics import FREQUENCY_NAMES
+
+    plt = _pyplot()
+    if ax is None:
+        fig, ax = plt.subplots(figsize=(10, 4))
+    else:
+        fig = ax.figure
+    names = ("shaft",) + FREQUENCY_NAMES
+    for i, name in enumerate(names):
+        base = freqs.hz(name)
+        h = np.arange(1, harmonics + 1) * base
+        ax.vlines(h, 0, 1.0 / np.arange(1, harmonics + 1), color=f"C{i}",
+                  label=f"{name.upper()} {base:.2f} Hz")
+    ax.set_xlabel("frequency [Hz]")
+    ax.set_ylabel("harmonic (1/n)")
+    ax.set_ylim(0, 1.1)
+    ax.set_title(f"{freqs.bearing.name or 'bearing'} at {freqs.shaft_hz * 60:g} rpm: "
+                 f"defect frequencies and harmonics")
+    ax.legend(fontsize=8, ncol=3)
+    fig.tight_layout()
+    return fig, ax
