@@ -1,0 +1,32 @@
+"""Bearing catalogue: ISO boundary dimensions, published internal geometries, estimates.
+
+* :func:`boundary_dimensions` -- d, D, B (and T, C or height) of a designation from the
+  ISO 15 / ISO 355 / ISO 104 dimension plans shipped in ``catalog/data``.
+* :func:`published_geometry` -- internal geometry of specific bearings as their sources
+  published it (CWRU 6205 and 6203, ER-16K, the Harris 209, ...).
+* :func:`estimate_internal_geometry` -- Z, D_w, d_m, f_i, f_o from boundary dimensions by
+  the deep-groove design rules cited in :mod:`bearinglab.catalog.estimate`.
+* :func:`bearing_from_designation` -- a :class:`~bearinglab.geometry.BallBearing` from a
+  designation or catalogue name, every value tagged with its source.
+* :func:`catalog_table` -- the shipped tables as a DataFrame.
+
+Core API in SI units (m, rad); the CSV files hold millimetres as catalogues print them.
+"""
+
+from .build import bearing_from_designation
+from .estimate import EstimatedGeometry, estimate_internal_geometry
+from .families import FAMILIES, Family
+from .lookup import (
+                     BoundaryDimensions,
+                     PublishedGeometry,
+                     boundary_dimensions,
+                     catalog_table,
+                     published_geometries,
+                     published_geometry,
+)
+
+__all__ = [
+    "FAMILIES", "BoundaryDimensions", "EstimatedGeometry", "Family", "PublishedGeometry",
+    "bearing_from_designation", "boundary_dimensions", "catalog_table",
+    "estimate_internal_geometry", "published_geometries", "published_geometry",
+]

@@ -1,0 +1,195 @@
+"""Assemble a :class:`~bearinglab.geometry.BallBearing` from a designation or catalogue name.
+
+Order of precedence for every value: the caller's ``overrides`` (``Source("user", ...)``),
+then the boundary dimensions of its ISO family (``Source("catalog", "ISO 15:2017 ...")``),
+then the published geometry of that bearing if the catalogue has one
+(``Source("catalog", <its source>)``), then the estimate of
+:mod:`bearinglab.catalog.estimate` (``Source("estimated", <method>)``).  A value nobody
+gives keeps the :class:`~bearinglab.geometry.BallBearing` default, marked
+``Source("default", ...)``.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+from ..errors import CatalogError, InputError
+from ..geometry import BallBearing, Source
+from .estimate import (
+    BALL_TYPES,
+    ESTIMATE_METHOD,
+    INNER_GROOVE_FACTOR,
+    OUTER_GROOVE_FACTOR,
+    estimate_internal_geometry,
+)
+from .families import FAMILIES
+from .lookup import (
+    BoundaryDimensions,
+    PublishedGeometry,
+    _norm,
+    _parse,
+    boundary_dimensions,
+    published_geometries,
+    published_geometry,
+)
+
+#: Keywords of BallBearing a caller may override.
+OVERRIDABLE = ("ball_count", "ball_diameter", "pitch_diameter", "inner_groove_factor",
+               "outer_groove_factor", "contact_angle", "diametral_clearance", "bore",
+               "outside_diameter", "width", "ring_material", "ball_material", "name")
+USER_SOURCE = Source("user", "command line or caller")
+_INTERNAL = ("ball_count", "ball_diameter", "pitch_diameter", "inner_groove_factor",
+             "outer_groove_factor")
+
+
+def _check_type(des: Any) -> None:
+    btype = getattr(des, "bearing_type", None)
+    text = getattr(des, "text", "?")
+    if btype in BALL_TYPES:
+        series = getattr(des, "series", None)
+        fam = FAMILIES.get(series)
+        if fam is not None and fam.rows != 1:
+            raise CatalogError(f"{text!r} is a {fam.rows}-row bearing (family {series}): only "
+                               "single-row ball bearings have an internal-geometry model yet")
+        return
+    if btype in ("self_aligning_ball", "thrust_ball"):
+        raise CatalogError(f"{text!r} is a {btype.replace('_', ' ')} bearing: only single-row "
+                           "radial and angular-contact ball bearings have an internal-geometry "
+                           "model yet (boundary_dimensions() still gives its dimensions)")
+    raise CatalogError(f"{text!r} is a {str(btype).replace('_', ' ')} bearing: only ball "
+                       "bearings have an internal-geometry model yet (boundary_dimensions() "
+                       "still gives its dimensions)")
+
+
+def _by_name(text: str) -> PublishedGeometry | None:
+    wanted = _norm(text)
+    for geo in published_geometries():
+        if _norm(geo.name) == wanted:
+            return geo
+    return None
+
+
+def _contact_angle_default(des: Any) -> tuple[float | None, Source | None]:
+    if des is None:
+        return None, None
+    if getattr(des, "contact_angle", None) is not None:
+        return float(des.contact_angle), Source("catalog", f"designation {des.text!r}")
+    fam = FAMILIES.get(getattr(des, "series", None))
+    if fam is not None and fam.default_contact_angle is not None:
+        return fam.default_contact_angle, Source(
+            "default", f"family {fam.key} default {math.degrees(fam.default_contact_angle):g} deg")
+    if getattr(des, "bearing_type", None) == "radial_ball":
+        return 0.0, Source("default", "deep-groove ball bearing: nominal contact angle 0")
+    return None, None
+
+
+def bearing_from_designation(text: str, system: str | None = None,
+                             overrides: dict | None = None) -> tuple[BallBearing, Any]:
+    """Build a BallBearing from a designation (ISO or GOST) or a catalogue name.
+
+    ``text`` may be a catalogue name of a published bearing (``"ER-16K"``,
+    ``"6205 (seed 004)"``) or a designation (``"6205-2RS"``, ``"180205"``).  Internal
+    geometry comes from the published row if there is one, missing values from the
+    estimate; boundary dimensions from the published row or the ISO tables.  The
+    ``sources`` dict of the result says where every value came from.
+
+    Parameters
+    ----------
+    text : str
+        Catalogue name or designation [-].
+    system : str or None
+        ``"gost"`` or ``"iso"``; None lets the designation reader decide [-].
+    overrides : dict or None
+        BallBearing keyword -> value in SI units (m, rad), taking precedence over the
+        catalogue and the estimate [-].
+
+    Returns
+    -------
+    tuple
+        (BallBearing, the parsed Designation or None for a name with no designation) [-].
+
+    Raises
+    ------
+    CatalogError
+        For roller, thrust, self-aligning or double-row bearings (no internal-geometry
+        model yet), or when neither the catalogue nor the overrides give enough to build
+        the bearing.
+    InputError
+        For an unknown override keyword or values the BallBearing refuses.
+    """
+    overrides = dict(overrides or {})
+    for key in overrides:
+        if key not in OVERRIDABLE:
+            raise InputError("overrides", key, f"one of {', '.join(OVERRIDABLE)}")
+    named = _by_name(text)
+    row = named
+    des = None
+    if named is not None:
+        if named.designation:
+            des = _parse(named.designation, "iso")
+    else:
+        des = _parse(text, system)
+        _check_type(des)
+        row = published_geometry(des)
+
+    values: dict[str, Any] = {}
+    sources: dict[str, Source] = {}
+
+    def put(name: str, value: Any, source: Source) -> None:
+        if name not in values and value is not None:
+            values[name] = value
+            sources[name] = source
+
+    for name, value in overrides.items():
+        put(name, value, USER_SOURCE)
+
+    dims: BoundaryDimensions | None = None
+    dims_error: CatalogError | None = None
+    if des is not None:
+        try:
+            dims = boundary_dimensions(des)
+        except CatalogError as exc:
+            dims_error = exc
+    if dims is not None:  # the standard's exact sizes before a row's rounded (inch) ones
+        dim_source = Source("catalog", dims.standard)
+        put("bore", dims.bore, dim_source)
+        put("outside_diameter", dims.outside_diameter, dim_source)
+        put("width", dims.width, dim_source)
+    if row is not None:
+        for name, value in row.published().items():
+            put(name, value, Source("catalog", row.source))
+
+    angle, angle_source = _contact_angle_default(des)
+    if angle is not None and angle_source is not None:
+        put("contact_angle", angle, angle_source)
+
+    missing = [k for k in _INTERNAL if k not in values]
+    if missing and any(k in missing for k in ("ball_count", "ball_diameter", "pitch_diameter")):
+        if dims is None or "bore" not in values or "outside_diameter" not in values:
+            reason = (str(dims_error) if dims_error is not None else
+                      "no ISO family and bore to estimate from")
+            raise CatalogError(f"{text!r}: cannot estimate the internal geometry ({reason}); "
+                               f"give {', '.join(missing)} as overrides")
+        btype = getattr(des, "bearing_type", "radial_ball")
+        est = estimate_internal_geometry(values["bore"], values["outside_diameter"],
+                                         dims.dimension_series or "", btype,
+                                         values.get("contact_angle"))
+        for name, value in est.as_kwargs().items():
+            put(name, value, Source("estimated", ESTIMATE_METHOD))
+    put("inner_groove_factor", INNER_GROOVE_FACTOR, Source("estimated", ESTIMATE_METHOD))
+    put("outer_groove_factor", OUTER_GROOVE_FACTOR, Source("estimated", ESTIMATE_METHOD))
+    if "contact_angle" not in values:
+        sources["contact_angle"] = Source("default", "nominal contact angle 0")
+    if "diametral_clearance" not in values:
+        sources["diametral_clearance"] = Source(
+            "default", "not published: BallBearing derives it from the contact angle "
+                       "(zero for a radial bearing)")
+    for name in ("ring_material", "ball_material"):
+        if name not in values:
+            sources[name] = Source("default", "AISI 52100 bearing steel")
+    name = values.pop("name", None) or (named.name if named is not None else
+                                        getattr(des, "text", text))
+    btype = getattr(des, "bearing_type", None) or "radial_ball"
+    bearing = BallBearing(**values, name=name, bearing_type=btype, sources=sources)
+    return bearing, des
