@@ -314,7 +314,7 @@ class BallBearing:
         if self.pitch_diameter <= self.ball_diameter:
             raise InputError("pitch_diameter", self.pitch_diameter,
                              f"more than the ball diameter {self.ball_diameter:.6g} m")
-        zmax = int(math.floor(math.pi / math.asin(self.ball_diameter / self.pitch_diameter)))
+        zmax = math.floor(math.pi / math.asin(self.ball_diameter / self.pitch_diameter))
         if z > zmax:
             raise InputError("ball_count", z, f"at most {zmax} balls",
                              f"{z} balls of {self.ball_diameter * 1e3:.4g} mm do not fit around "

@@ -6,13 +6,18 @@ import numpy as np
 import pytest
 
 from bearinglab.errors import InputError
-from bearinglab.geometry import (BallBearing, clearance_for_contact_angle, contact_radii,
-                                 curvature_sum_difference, free_contact_angle,
-                                 grooved_ring_section)
+from bearinglab.geometry import (
+    BallBearing,
+    clearance_for_contact_angle,
+    contact_radii,
+    curvature_sum_difference,
+    free_contact_angle,
+    grooved_ring_section,
+)
 from bearinglab.materials import BEARING_STEEL, SILICON_NITRIDE, Material, effective_modulus
 
-CWRU_6205 = dict(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3, bore=25e-3,
-                 outside_diameter=52e-3, width=15e-3)
+CWRU_6205 = {"ball_count": 9, "ball_diameter": 7.94e-3, "pitch_diameter": 39.04e-3, "bore": 25e-3,
+                 "outside_diameter": 52e-3, "width": 15e-3}
 
 
 def test_harris_209_curvature_sums_and_differences():
@@ -109,7 +114,7 @@ def test_impossible_geometry_is_rejected_with_a_clear_message(change, parameter,
 @pytest.mark.parametrize("kwargs", [{"elastic_modulus": -1}, {"poisson_ratio": 0.5},
                                     {"density": 0}])
 def test_material_validation(kwargs):
-    base = dict(name="x", elastic_modulus=200e9, poisson_ratio=0.3, density=7800)
+    base = {"name": "x", "elastic_modulus": 200e9, "poisson_ratio": 0.3, "density": 7800}
     with pytest.raises(InputError):
         Material(**{**base, **kwargs})
 

@@ -75,16 +75,15 @@ class BallContacts:
     def to_pandas(self) -> pd.DataFrame:
         """One row per (contact, load), engineering units."""
         rows = []
+        loads = np.atleast_1d(self.load)
         for race, c in (("inner", self.inner), ("outer", self.outer)):
-            for i, q in enumerate(np.atleast_1d(self.load)):
-                pick = (lambda v: np.atleast_1d(v)[i])  # noqa: E731 - scalar or array
+            columns = {"semi_major_mm": c.semi_major * 1e3, "semi_minor_mm": c.semi_minor * 1e3,
+                       "max_pressure_gpa": c.max_pressure / 1e9, "approach_um": c.approach * 1e6,
+                       "ellipticity": c.ellipticity, "stiffness_n_per_um": c.stiffness * 1e-6}
+            columns = {k: np.broadcast_to(v, loads.shape) for k, v in columns.items()}
+            for i, q in enumerate(loads):
                 rows.append({"contact": race, "ball_load_n": q,
-                             "semi_major_mm": pick(c.semi_major) * 1e3,
-                             "semi_minor_mm": pick(c.semi_minor) * 1e3,
-                             "max_pressure_gpa": pick(c.max_pressure) / 1e9,
-                             "approach_um": pick(c.approach) * 1e6,
-                             "ellipticity": pick(c.ellipticity),
-                             "stiffness_n_per_um": pick(c.stiffness) * 1e-6})
+                             **{k: float(v[i]) for k, v in columns.items()}})
         return pd.DataFrame(rows)
 
 

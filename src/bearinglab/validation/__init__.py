@@ -10,8 +10,8 @@ A published number the project cannot reproduce stays in the list with
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable
 
 
 @dataclass(frozen=True)
@@ -31,7 +31,7 @@ class Case:
     def id(self) -> str:
         return f"{self.source} | {self.quantity}"
 
-    def run(self) -> "CaseResult":
+    def run(self) -> CaseResult:
         computed = float(self.compute())
         error = (computed - self.published) / self.published * 100.0
         passed = math.isfinite(computed) and abs(error) <= self.rel_tol * 100.0

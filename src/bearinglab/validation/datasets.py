@@ -26,6 +26,10 @@ def _order(name: str, z: int, ball_in: float, pitch_in: float, angle_deg: float 
                                           math.radians(angle_deg))[name])
 
 
+def _at_rpm(order, rpm: float):
+    return lambda: order() * rpm / 60
+
+
 # The CWRU multipliers are printed to 4-5 significant figures and computed by CWRU from the
 # printed inch values; 3e-4 relative covers the last printed digit (3.9874 vs 3.98768).
 _CWRU_TOL = (3e-4, "printed to 4-5 significant figures from rounded inch dimensions")
@@ -41,9 +45,8 @@ for label, z, ball, pitch, table in (
                           " order", value, "x shaft", _order(name, z, ball, pitch), *_CWRU_TOL))
 
 for name, value in (("bpfo", 236.4), ("bpfi", 296.9), ("bsf", 139.9), ("ftf", 14.8)):
-    order = _order(name, 16, 0.331, 2.815, 15.17)
     CASES.append(Case("IMS/NASA bearing data (Rexnord ZA-2115, Qiu et al. 2006)",
                       f"{name.upper()} at 2000 rpm", value, "Hz",
-                      (lambda f: lambda: f() * 2000 / 60)(order),
+                      _at_rpm(_order(name, 16, 0.331, 2.815, 15.17), 2000),
                       # half a unit of the printed 0.1 Hz: 0.34 % of 14.8 Hz, 0.04 % of 139.9 Hz
                       0.05 / value, "printed to 0.1 Hz"))
