@@ -21,10 +21,10 @@ from rich.console import Console
 from rich.table import Table
 
 from . import __version__
-from .catalog import bearing_from_designation, boundary_dimensions
+from .catalog import bearing_from_designation, boundary_dimensions, published_geometry
 from .contact.ball_race import ball_contacts
 from .designation import parse
-from .errors import BearinglabError, InputError
+from .errors import BearinglabError, CatalogError, DesignationError, InputError
 from .geometry import BallBearing, Source
 from .kinematics import FREQUENCY_NAMES, LONG_NAMES, defect_frequencies
 from .materials import BEARING_STEEL, Material
@@ -240,13 +240,22 @@ PlotOpt = Annotated[Path | None, typer.Option(
 def info(designation: DesignationArg = None, json_output: JsonOpt = False, *, geometry):
     """Decode a designation; show dimensions, internal geometry (with sources) and
     frequency factors."""
-    decoded = parse(designation, system=_system(geometry)) if designation else None
-    bearing = None
-    if decoded is None or decoded.bearing_type in BALL_TYPES or _has_geometry(geometry):
-        bearing, decoded_b = resolve_bearing(designation, geometry)
-        decoded = decoded_b or decoded
+    decoded = None
+    if designation:
+        try:
+            decoded = parse(designation, system=_system(geometry))
+        except DesignationError:
+            if published_geometry(designation) is None:  # not a catalogue name either
+                raise
+    try:
+        bearing, from_catalog = resolve_bearing(designation, geometry)
+        decoded, why_no_geometry = from_catalog or decoded, None
+    except CatalogError as exc:  # e.g. roller bearings: dimensions only
+        if decoded is None:
+            raise
+        bearing, why_no_geometry = None, str(exc)
     if json_output:
-        _emit_json(_info_dict(designation, decoded, bearing))
+        _emit_json(_info_dict(designation, decoded, bearing, why_no_geometry))
         return
     if decoded is not None:
         _print_designation(decoded)
@@ -256,14 +265,9 @@ def info(designation: DesignationArg = None, json_output: JsonOpt = False, *, ge
             ["bore d", dims.bore * 1e3, "mm", dims.standard],
             ["outside diameter D", dims.outside_diameter * 1e3, "mm", dims.standard],
             ["width B", dims.width * 1e3, "mm", dims.standard]]))
-        console.print("No internal-geometry model for this bearing type yet "
-                      "(ball bearings only).")
+        console.print(f"[yellow]no internal geometry:[/yellow] {why_no_geometry}")
         return
     _print_bearing(bearing)
-
-
-BALL_TYPES = ("radial_ball", "angular_contact_ball", "four_point_contact_ball",
-              "self_aligning_ball", "thrust_ball")
 
 
 def _system(geometry: dict) -> str | None:
@@ -271,12 +275,7 @@ def _system(geometry: dict) -> str | None:
     return system.value if isinstance(system, System) else system
 
 
-def _has_geometry(geometry: dict) -> bool:
-    return any(geometry.get(k) is not None for k in ("balls", "ball_diameter_mm",
-                                                     "pitch_diameter_mm", "geometry"))
-
-
-def _info_dict(text, decoded, bearing) -> dict:
+def _info_dict(text, decoded, bearing, why_no_geometry) -> dict:
     out = {"designation": text, "system": decoded.system if decoded else None,
            "bearing_type": (decoded.bearing_type if decoded else bearing.bearing_type)}
     if bearing is not None:
@@ -291,7 +290,8 @@ def _info_dict(text, decoded, bearing) -> dict:
                     "pitch_diameter_mm": None,
                     "contact_angle_deg": (None if decoded.contact_angle is None
                                           else math.degrees(decoded.contact_angle)),
-                    "geometry_source": None, "dimensions_standard": dims.standard})
+                    "geometry_source": None, "dimensions_standard": dims.standard,
+                    "no_geometry_reason": why_no_geometry})
     if decoded is not None:
         out["decoded"] = decoded.to_dict()
     return out

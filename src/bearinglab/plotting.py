@@ -83,14 +83,15 @@ def ball_contacts_figure(result, axes=None):
     final = ball_contacts(result.bearing, q_max, result.contact_angle, result.method)
     for race, c, colour in (("inner", final.inner, "C3"), ("outer", final.outer, "C2")):
         a, b = float(c.semi_major) * 1e3, float(c.semi_minor) * 1e3
+        axes[1].fill(b * np.cos(t), a * np.sin(t), color=colour, alpha=0.25)
         axes[1].plot(b * np.cos(t), a * np.sin(t), color=colour,
                      label=f"{race}: 2a = {2 * a:.3g} mm, 2b = {2 * b:.3g} mm, "
                            f"p_max = {float(c.max_pressure) / 1e9:.3g} GPa")
-    axes[1].set_aspect("equal")
-    axes[1].set_xlabel("rolling direction [mm]")
+    # the ellipses are 5-15 times longer than wide: stretch the rolling direction to read them
+    axes[1].set_xlabel("rolling direction [mm] (stretched)")
     axes[1].set_ylabel("across the groove [mm]")
     axes[1].set_title(f"contact ellipses at Q = {q_max:g} N")
-    axes[1].legend(fontsize=8, loc="upper right")
+    axes[1].legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.18))
     fig.tight_layout()
     return fig, axes
 

@@ -162,3 +162,11 @@ def test_plots_are_written(tmp_path, capsys):
     assert main(["contact", "6205", "--ball-load-n", "800", "--plot", str(tmp_path / "x.txt")]) == 2
     assert "--plot" in capsys.readouterr().err
     assert not list(tmp_path.glob(".*"))          # no temporary files left behind
+
+
+def test_info_catalogue_name_and_dimension_only_bearings(capsys):
+    d = run_json(capsys, "info", "ER-16K")
+    assert d["ball_count"] == 9 and d["pitch_diameter_mm"] == pytest.approx(38.51)
+    d = run_json(capsys, "info", "1205")
+    assert d["bearing_type"] == "self_aligning_ball" and d["outside_diameter_mm"] == 52
+    assert d["ball_count"] is None and "single-row" in d["no_geometry_reason"]

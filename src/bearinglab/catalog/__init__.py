@@ -8,6 +8,8 @@
   the deep-groove design rules cited in :mod:`bearinglab.catalog.estimate`.
 * :func:`bearing_from_designation` -- a :class:`~bearinglab.geometry.BallBearing` from a
   designation or catalogue name, every value tagged with its source.
+* :func:`radial_clearance` -- the ISO 5753-1 radial internal clearance range (min, max)
+  of a deep-groove ball bearing by bore and group (C2, CN, C3, C4, C5).
 * :func:`catalog_table` -- the shipped tables as a DataFrame.
 
 Core API in SI units (m, rad); the CSV files hold millimetres as catalogues print them.
@@ -23,10 +25,12 @@ from .lookup import (
                      catalog_table,
                      published_geometries,
                      published_geometry,
+                     radial_clearance,
 )
 
 __all__ = [
     "FAMILIES", "BoundaryDimensions", "EstimatedGeometry", "Family", "PublishedGeometry",
     "bearing_from_designation", "boundary_dimensions", "catalog_table",
     "estimate_internal_geometry", "published_geometries", "published_geometry",
+    "radial_clearance",
 ]

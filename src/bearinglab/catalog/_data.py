@@ -23,6 +23,8 @@ TABLES: dict[str, tuple[str, tuple[str, ...]]] = {
                           ("series",)),
     "internal_geometry.csv": ("published internal geometry of specific bearings",
                               ("name", "designation", "source", "notes")),
+    "iso5753_radial_clearance.csv": ("deep-groove ball bearing radial clearance (ISO 5753-1)",
+                                     ("group",)),
 }
 
 

@@ -7,11 +7,22 @@ then the published geometry of that bearing if the catalogue has one
 :mod:`bearinglab.catalog.estimate` (``Source("estimated", <method>)``).  A value nobody
 gives keeps the :class:`~bearinglab.geometry.BallBearing` default, marked
 ``Source("default", ...)``.
+
+The diametral clearance of a single-row deep-groove ball bearing that neither the caller
+nor the published row gives is the middle of its ISO 5753-1 radial internal clearance
+group (:func:`~bearinglab.catalog.lookup.radial_clearance`; ISO's radial internal
+clearance is the whole radial play, P_d): the group written in the designation (suffix
+C2, CN, C3, C4, C5, or P62/P63/P52/P53), CN when none is written, marked
+``Source("estimated", "ISO 5753-1 group CN: mean of 5-20 um (...)")``.  GOST designations
+carry a clearance-group sign in the prefix (``А125-205``: group 2); its correspondence to
+the ISO groups is not verified here, so they get CN and the source says so.
+Angular-contact bearings keep the clearance BallBearing derives from the contact angle.
 """
 
 from __future__ import annotations
 
 import math
+import re
 from typing import Any
 
 from ..errors import CatalogError, InputError
@@ -25,8 +36,10 @@ from .estimate import (
 )
 from .families import FAMILIES
 from .lookup import (
+    CLEARANCE_TABLE,
     BoundaryDimensions,
     PublishedGeometry,
+    _clearance_band,
     _norm,
     _parse,
     boundary_dimensions,
@@ -84,6 +97,57 @@ def _contact_angle_default(des: Any) -> tuple[float | None, Source | None]:
     return None, None
 
 
+#: ISO suffixes that name a radial internal clearance group (SKF combined codes P62...).
+_CLEARANCE_SUFFIX = re.compile(r"C[0-5]|CN")
+_COMBINED_CLEARANCE = {"P62": "C2", "P63": "C3", "P52": "C2", "P53": "C3"}
+
+
+def _clearance_group_of(des: Any) -> tuple[str, str, str | None]:
+    """(ISO 5753-1 group, where it comes from, the code written or None) of a designation."""
+    if getattr(des, "system", None) == "gost":
+        signs = [code for code, meaning in getattr(des, "prefixes", ())
+                 if meaning.startswith("radial clearance group")]
+        if signs:
+            return "CN", (f"GOST clearance group {signs[-1]} in the prefix not mapped to an "
+                          "ISO 5753-1 group (correspondence not verified): CN assumed"), None
+        return "CN", "no clearance group in the designation: CN (normal) assumed", None
+    written = [(code, _COMBINED_CLEARANCE.get(code, code))
+               for code, _ in getattr(des, "suffixes", ())
+               if code in _COMBINED_CLEARANCE or _CLEARANCE_SUFFIX.fullmatch(code)]
+    if not written:
+        return "CN", "no clearance group in the designation: CN (normal) assumed", None
+    code, group = written[-1]
+    where = f"group from the designation suffix {code}"
+    if len({g for _, g in written}) > 1:
+        where += f" (the last of {', '.join(c for c, _ in written)})"
+    return group, where, code
+
+
+def _table_clearance(des: Any, text: str) -> tuple[float | None, Source]:
+    """Mean ISO 5753-1 clearance of a deep-groove bearing's group, or None and why not.
+
+    The row is chosen by the designation's nominal bore (a published row's measured or
+    inch-converted bore could fall across a band edge).  A group written in the
+    designation that the table cannot give is an error; the implied CN outside the table
+    leaves the BallBearing default.
+    """
+    group, where, code = _clearance_group_of(des)
+    try:
+        key, over, incl, low, high = _clearance_band(float(des.bore), group)
+    except (CatalogError, InputError) as exc:
+        if code is not None:
+            raise CatalogError(f"{text!r}: radial internal clearance {code}: {exc}; give "
+                               "diametral_clearance as an override") from exc
+        return None, Source("default", f"not published, and no ISO 5753-1 value ({exc}): "
+                                       "BallBearing derives it from the contact angle (zero "
+                                       "for a radial bearing)")
+    bore_mm = round(float(des.bore) * 1e3, 6)
+    return (low + high) / 2e6, Source(
+        "estimated", f"ISO 5753-1 group {key}: mean of {low:g}-{high:g} um (deep-groove ball "
+                     f"bearing, bore {bore_mm:g} mm over {over:g} incl {incl:g} mm; {where}; "
+                     f"{CLEARANCE_TABLE})")
+
+
 def bearing_from_designation(text: str, system: str | None = None,
                              overrides: dict | None = None) -> tuple[BallBearing, Any]:
     """Build a BallBearing from a designation (ISO or GOST) or a catalogue name.
@@ -91,8 +155,16 @@ def bearing_from_designation(text: str, system: str | None = None,
     ``text`` may be a catalogue name of a published bearing (``"ER-16K"``,
     ``"6205 (seed 004)"``) or a designation (``"6205-2RS"``, ``"180205"``).  Internal
     geometry comes from the published row if there is one, missing values from the
-    estimate; boundary dimensions from the published row or the ISO tables.  The
-    ``sources`` dict of the result says where every value came from.
+    estimate; boundary dimensions from the published row or the ISO tables.  A
+    single-row deep-groove bearing (``bearing_type`` ``"radial_ball"``) whose clearance
+    neither the overrides nor the published row give gets the mean of its ISO 5753-1
+    radial internal clearance group -- the radial internal clearance of ISO 5753-1 is the
+    total radial play, i.e. the diametral clearance P_d -- taken from the designation
+    (``"6205 C3"``, ``"6205-2RS/C4"``), CN if none is written (and for GOST
+    designations, whose clearance-group sign is not mapped); this holds also when an
+    override gives only the contact angle.  Angular-contact bearings keep the clearance
+    BallBearing derives from their contact angle.  The ``sources`` dict of the result says
+    where every value came from.
 
     Parameters
     ----------
@@ -113,8 +185,9 @@ def bearing_from_designation(text: str, system: str | None = None,
     ------
     CatalogError
         For roller, thrust, self-aligning or double-row bearings (no internal-geometry
-        model yet), or when neither the catalogue nor the overrides give enough to build
-        the bearing.
+        model yet), when neither the catalogue nor the overrides give enough to build
+        the bearing, or when the designation names a clearance group the ISO 5753-1
+        table has no value for at that bore (C1; C4 or C5 below 6 mm; bores over 140 mm).
     InputError
         For an unknown override keyword or values the BallBearing refuses.
     """
@@ -164,6 +237,17 @@ def bearing_from_designation(text: str, system: str | None = None,
     if angle is not None and angle_source is not None:
         put("contact_angle", angle, angle_source)
 
+    clearance_default = Source("default", "not published: BallBearing derives it from the "
+                                          "contact angle (zero for a radial bearing)")
+    if ("diametral_clearance" not in values and des is not None
+            and getattr(des, "bearing_type", None) == "radial_ball"
+            and getattr(FAMILIES.get(getattr(des, "series", None)), "rows", 1) == 1):
+        clearance, clearance_source = _table_clearance(des, text)
+        if clearance is not None:
+            put("diametral_clearance", clearance, clearance_source)
+        else:
+            clearance_default = clearance_source
+
     missing = [k for k in _INTERNAL if k not in values]
     if missing and any(k in missing for k in ("ball_count", "ball_diameter", "pitch_diameter")):
         if dims is None or "bore" not in values or "outside_diameter" not in values:
@@ -182,9 +266,7 @@ def bearing_from_designation(text: str, system: str | None = None,
     if "contact_angle" not in values:
         sources["contact_angle"] = Source("default", "nominal contact angle 0")
     if "diametral_clearance" not in values:
-        sources["diametral_clearance"] = Source(
-            "default", "not published: BallBearing derives it from the contact angle "
-                       "(zero for a radial bearing)")
+        sources["diametral_clearance"] = clearance_default
     for name in ("ring_material", "ball_material"):
         if name not in values:
             sources[name] = Source("default", "AISI 52100 bearing steel")

@@ -4,7 +4,9 @@ Boundary dimensions come from the ISO dimension plans shipped in ``catalog/data`
 (ISO 15 radial, ISO 355 tapered, ISO 104 thrust; values as printed in maker catalogues,
 see the ``# source:`` lines of each file).  Published internal geometries
 (``internal_geometry.csv``) are specific bearings documented in a paper, data-set page or
-textbook; each row names its source.  Everything returned is in SI units (m, rad).
+textbook; each row names its source.  Radial internal clearance groups of deep-groove ball
+bearings come from ISO 5753-1 (``iso5753_radial_clearance.csv``, checked against the NTN
+and NSK reprints named in the file).  Everything returned is in SI units (m, rad).
 """
 
 from __future__ import annotations
@@ -16,7 +18,7 @@ from typing import Any
 
 import pandas as pd
 
-from ..errors import CatalogError, DesignationError
+from ..errors import CatalogError, DesignationError, InputError
 from . import _data
 from .families import FAMILIES, TABLE_FILES, Family, families_table
 
@@ -178,6 +180,89 @@ def boundary_dimensions(designation: Any, system: str | None = None) -> Boundary
     return BoundaryDimensions(
         width=height, height=height,
         standard=f"{fam.standard} series {fam.key} ({TABLE_FILES[fam.table]})", **common)
+
+
+# ------------------------------------------------------------------ radial internal clearance
+
+#: Shipped ISO 5753-1 table of deep-groove ball bearings (bore in mm, clearance in um).
+CLEARANCE_TABLE = "iso5753_radial_clearance.csv"
+#: ISO 5753-1 radial internal clearance groups of deep-groove ball bearings, smallest first.
+CLEARANCE_GROUPS = ("C2", "CN", "C3", "C4", "C5")
+_GROUP_ALIASES = {"NORMAL": "CN", "N": "CN", "C0": "CN"}
+
+
+def _clearance_group(group: Any) -> str:
+    allowed = f"one of {', '.join(CLEARANCE_GROUPS)}"
+    if not isinstance(group, str):
+        raise InputError("group", group, allowed)
+    key = "".join(group.split()).upper()
+    key = _GROUP_ALIASES.get(key, key)
+    if key not in CLEARANCE_GROUPS:
+        raise InputError("group", group, allowed,
+                         "the ISO 5753-1 groups of deep-groove ball bearings; 'Normal' and "
+                         "'C0' are read as CN")
+    return key
+
+
+def _clearance_band(bore: Any, group: Any = "CN") -> tuple[str, float, float, float, float]:
+    """(group, bore over [mm], bore incl [mm], min [um], max [um]) of the ISO 5753-1 row."""
+    key = _clearance_group(group)
+    if (isinstance(bore, bool) or not isinstance(bore, (int, float)) or not math.isfinite(bore)
+            or bore <= 0.0):
+        raise InputError("bore", bore, "a positive length [m]")
+    d_mm = round(float(bore) / _MM, 6)
+    table = _data.read_table(CLEARANCE_TABLE)
+    rows = table[table["group"] == key]
+    hit = rows[(rows["bore_over_mm"] < d_mm) & (d_mm <= rows["bore_incl_mm"])]
+    if hit.empty:
+        low, high = float(rows["bore_over_mm"].min()), float(rows["bore_incl_mm"].max())
+        hint = " (the bore is in metres: 25 mm is 0.025)" if d_mm >= 1000.0 else ""
+        raise CatalogError(f"bore {d_mm:g} mm{hint} is outside the ISO 5753-1 table of "
+                           f"radial internal clearance group {key} of deep-groove ball bearings "
+                           f"({CLEARANCE_TABLE}): it covers bores over {low:g} incl {high:g} mm")
+    r = hit.iloc[0]
+    return (key, float(r["bore_over_mm"]), float(r["bore_incl_mm"]), float(r["min_um"]),
+            float(r["max_um"]))
+
+
+def radial_clearance(bore: float, group: str = "CN") -> tuple[float, float]:
+    """Radial internal clearance range of a deep-groove ball bearing, ISO 5753-1 [m].
+
+    The radial internal clearance of ISO 5753-1 is the total distance one ring can move
+    radially relative to the other (unmounted, zero measuring load): the whole radial
+    play, i.e. the diametral clearance P_d = d_o - d_i - 2 D_w of
+    :class:`~bearinglab.geometry.BallBearing` (Harris & Kotzalas), not half of it.
+    Values are those of the table for deep-groove ball bearings with cylindrical bore
+    (``catalog/data/iso5753_radial_clearance.csv``), nominal bore over 2.5 incl 140 mm;
+    groups C4 and C5 start above 6 mm, where ISO gives them.
+
+    Parameters
+    ----------
+    bore : float
+        Nominal bore diameter d [m]; the row is the one with over < d <= incl.
+    group : str
+        ``"C2"``, ``"CN"`` (normal; ``"Normal"`` and ``"C0"`` are read as CN), ``"C3"``,
+        ``"C4"`` or ``"C5"``, case-insensitive [-].
+
+    Returns
+    -------
+    tuple of float
+        (smallest, largest) radial internal clearance of the group [m].
+
+    Raises
+    ------
+    InputError
+        For a group that is not one of these five, or a bore that is not a positive length.
+    CatalogError
+        For a bore outside the table of that group; the message gives the range covered.
+
+    >>> [round(x * 1e6, 6) for x in radial_clearance(0.025)]
+    [5.0, 20.0]
+    >>> [round(x * 1e6, 6) for x in radial_clearance(0.025, "C3")]
+    [13.0, 28.0]
+    """
+    _, _, _, low, high = _clearance_band(bore, group)
+    return low / 1e6, high / 1e6
 
 
 # ------------------------------------------------------------------ published geometries
