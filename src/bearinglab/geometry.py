@@ -275,6 +275,10 @@ class BallBearing:
         One of the types in :data:`bearinglab.designation.BEARING_TYPES`.
     sources : dict
         Field name -> :class:`Source` (catalog, estimated, user, default).
+    inner_arch_angle, outer_arch_angle : float
+        Gothic-arch angle alpha_T of a ring's groove (two groove halves whose centres are
+        offset axially by (f D_w - D_w/2) sin(alpha_T), as in four-point and split-race
+        bearings, seed 001); 0 for a circular groove [rad].
 
     >>> b = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3)
     >>> round(b.inner_raceway_diameter * 1e3, 2), round(b.outer_raceway_diameter * 1e3, 2)
@@ -296,6 +300,8 @@ class BallBearing:
     name: str = ""
     bearing_type: str = "radial_ball"
     sources: dict = field(default_factory=dict, compare=False, repr=False)
+    inner_arch_angle: float = 0.0
+    outer_arch_angle: float = 0.0
 
     def __post_init__(self) -> None:
         z = self.ball_count
@@ -311,6 +317,10 @@ class BallBearing:
         if not (isinstance(self.contact_angle, (int, float, np.floating))
                 and 0.0 <= self.contact_angle < 0.5 * math.pi):
             raise InputError("contact_angle", self.contact_angle, "an angle in [0, 90) degrees")
+        for name in ("inner_arch_angle", "outer_arch_angle"):
+            arch = getattr(self, name)
+            if not (isinstance(arch, (int, float, np.floating)) and 0.0 <= arch < math.pi / 3):
+                raise InputError(name, arch, "an angle in [0, 60) degrees (0 = circular groove)")
         if self.pitch_diameter <= self.ball_diameter:
             raise InputError("pitch_diameter", self.pitch_diameter,
                              f"more than the ball diameter {self.ball_diameter:.6g} m")

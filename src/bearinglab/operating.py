@@ -1,0 +1,88 @@
+"""Operating conditions of a bearing (layer 2 model object).
+
+Loads act on the inner ring (docs/conventions.md): a radial load of magnitude F_r acting
+in the direction ``radial_load_angle`` (from +x towards +y; -90 deg = straight down),
+an axial load along +z, and either a tilting moment or an imposed misalignment (tilt) of
+the inner ring; the outer ring is fixed but may be given an imposed misalignment.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .errors import InputError
+
+
+def _finite(name: str, value: float, allowed: str = "a finite value") -> float:
+    if not (isinstance(value, (int, float, np.floating, np.integer)) and math.isfinite(value)):
+        raise InputError(name, value, allowed)
+    return float(value)
+
+
+@dataclass(frozen=True)
+class OperatingCondition:
+    """Loads, speed and imposed misalignments.
+
+    Parameters
+    ----------
+    radial_load : float
+        Radial load magnitude F_r on the inner ring [N], >= 0.
+    radial_load_angle : float
+        Direction in which the radial load acts, from +x towards +y [rad].
+    axial_load : float
+        Axial load F_a on the inner ring along +z [N].
+    moment : tuple of float or None
+        Tilting moment (M_x, M_y) on the inner ring [N m]; None means the inner ring's tilt
+        is imposed instead (``misalignment``).
+    misalignment : tuple of float
+        Imposed tilt (about x, about y) of the inner ring when ``moment`` is None [rad].
+    outer_misalignment : tuple of float
+        Imposed tilt (about x, about y) of the outer ring [rad].
+    shaft_speed : float
+        Inner-ring speed [rad/s], >= 0 (outer ring fixed).
+
+    >>> OperatingCondition(radial_load=500.0).load_vector()[:3].round(6).tolist()
+    [-0.0, -500.0, 0.0]
+    """
+
+    radial_load: float = 0.0
+    radial_load_angle: float = -0.5 * math.pi
+    axial_load: float = 0.0
+    moment: tuple[float, float] | None = None
+    misalignment: tuple[float, float] = (0.0, 0.0)
+    outer_misalignment: tuple[float, float] = (0.0, 0.0)
+    shaft_speed: float = 0.0
+
+    def __post_init__(self) -> None:
+        if _finite("radial_load", self.radial_load, "a load >= 0 [N]") < 0:
+            raise InputError("radial_load", self.radial_load, "a load >= 0 [N]")
+        _finite("radial_load_angle", self.radial_load_angle)
+        _finite("axial_load", self.axial_load, "a finite load [N]")
+        if _finite("shaft_speed", self.shaft_speed, "a speed >= 0 [rad/s]") < 0:
+            raise InputError("shaft_speed", self.shaft_speed, "a speed >= 0 [rad/s]")
+        for name in ("misalignment", "outer_misalignment") + (("moment",) if self.moment
+                                                               is not None else ()):
+            pair = getattr(self, name)
+            if len(pair) != 2:
+                raise InputError(name, pair, "a pair (about x, about y)")
+            for v in pair:
+                _finite(name, v)
+        for name in ("misalignment", "outer_misalignment"):
+            if max(abs(v) for v in getattr(self, name)) > 0.02:
+                raise InputError(name, getattr(self, name), "tilts within +-20 mrad "
+                                 "(the small-rotation model)")
+
+    def load_vector(self) -> np.ndarray:
+        """(F_x, F_y, F_z, M_x, M_y) applied to the inner ring [N, N m]."""
+        m = self.moment or (0.0, 0.0)
+        return np.array([self.radial_load * math.cos(self.radial_load_angle),
+                         self.radial_load * math.sin(self.radial_load_angle),
+                         self.axial_load, m[0], m[1]])
+
+    @property
+    def tilt_free(self) -> bool:
+        """True when the inner ring's tilt is solved for (a moment is given)."""
+        return self.moment is not None

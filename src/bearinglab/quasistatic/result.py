@@ -1,0 +1,189 @@
+"""Result of a quasi-static solve: per-ball contacts, ring displacements, stiffness."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+import pandas as pd
+
+from ..contact import hertz
+from ..geometry import BallBearing, contact_radii
+from ..materials import effective_modulus
+from ..operating import OperatingCondition
+from .solver import DOF_NAMES
+
+#: Units of the stiffness matrix rows/columns (x, y, z in m; tilts in rad).
+STIFFNESS_UNITS = [["N/m", "N/m", "N/m", "N/rad", "N/rad"],
+                   ["N/m", "N/m", "N/m", "N/rad", "N/rad"],
+                   ["N/m", "N/m", "N/m", "N/rad", "N/rad"],
+                   ["N m/m", "N m/m", "N m/m", "N m/rad", "N m/rad"],
+                   ["N m/m", "N m/m", "N m/m", "N m/rad", "N m/rad"]]
+
+
+@dataclass(frozen=True)
+class LoadDistribution:
+    """Quasi-static equilibrium of a ball bearing.
+
+    Attributes
+    ----------
+    bearing, condition : the inputs.
+    displacement : array (5,)
+        Inner-ring displacement (x, y, z [m], tilt_x, tilt_y [rad]) from the centred position.
+    ball_angle : array (Z,)
+        Ball azimuths psi [rad] from +x towards +y.
+    ball_centre : array (Z, 2)
+        Ball centres (rho, z) in each ball's plane [m].
+    ring : array (C,)
+        0 for inner, 1 for outer groove halves (columns of the per-contact arrays).
+    load, approach, contact_angle, film : arrays (Z, C)
+        Contact loads [N], approaches [m], signed contact angles [rad] (positive when the
+        contact line leans towards +z going from the inner to the outer ring) and film [m].
+    stiffness_matrix : array (5, 5)
+        Tangent stiffness K = -d(ball forces on inner ring)/du, order DOF_NAMES
+        [N/m, N/rad; N m/m, N m/rad].
+    reaction : array (5,)
+        Sum of the ball forces on the inner ring (equal and opposite to the applied load
+        for solved DOFs; the reaction to an imposed tilt otherwise) [N, N m].
+    shoulder_angle, groove_radius : arrays (C,)
+        Groove data for the truncation check [rad], [m].
+    """
+
+    bearing: BallBearing
+    condition: OperatingCondition
+    displacement: np.ndarray
+    ball_angle: np.ndarray
+    ball_centre: np.ndarray
+    ring: np.ndarray
+    load: np.ndarray
+    approach: np.ndarray
+    contact_angle: np.ndarray
+    film: np.ndarray
+    stiffness_matrix: np.ndarray
+    reaction: np.ndarray
+    shoulder_angle: np.ndarray
+    groove_radius: np.ndarray
+    warnings: tuple = field(default=())
+
+    # ---------------------------------------------------------------- derived
+    @property
+    def radial_direction(self) -> np.ndarray:
+        """Unit vector of the radial load (or of the radial displacement if no load)."""
+        f = self.condition.load_vector()[:2]
+        if np.hypot(*f) > 0:
+            return f / np.hypot(*f)
+        d = self.displacement[:2]
+        return d / np.hypot(*d) if np.hypot(*d) > 0 else np.array([0.0, -1.0])
+
+    @property
+    def radial_displacement(self) -> float:
+        """Inner-ring displacement along the radial load direction, S_r of seed 001 [m]."""
+        return float(self.displacement[:2] @ self.radial_direction)
+
+    @property
+    def axial_displacement(self) -> float:
+        """Axial inner-ring displacement S_a from the centred position [m]."""
+        return float(self.displacement[2])
+
+    @property
+    def radial_stiffness(self) -> float:
+        """C_r = dF_r/dS_r at fixed other displacements (seed 001) [N/m]."""
+        e = self.radial_direction
+        return float(e @ self.stiffness_matrix[:2, :2] @ e)
+
+    @property
+    def axial_stiffness(self) -> float:
+        """C_a = dF_a/dS_a at fixed other displacements (seed 001) [N/m]."""
+        return float(self.stiffness_matrix[2, 2])
+
+    @property
+    def contact_points(self) -> np.ndarray:
+        """Number of loaded contacts of each ball (0-4) [-]."""
+        return np.count_nonzero(self.load > 0, axis=1)
+
+    def _race_contacts(self, race: int):
+        """Hertz results of every contact of one race (arrays (Z, C_race))."""
+        cols = self.ring == race
+        b = self.bearing
+        f = b.inner_groove_factor if race == 0 else b.outer_groove_factor
+        rx, ry = contact_radii(b.ball_diameter, b.pitch_diameter, f,
+                               np.abs(self.contact_angle[:, cols]),
+                               "inner" if race == 0 else "outer")
+        e_prime = effective_modulus(b.ball_material, b.ring_material)
+        return hertz.point_contact(self.load[:, cols], rx, np.full_like(rx, ry), e_prime)
+
+    @property
+    def truncated(self) -> np.ndarray:
+        """(Z, C) True where the contact ellipse runs over the groove shoulder:
+        |alpha| + a/R exceeds the shoulder angle."""
+        out = np.zeros(self.load.shape, dtype=bool)
+        for race in (0, 1):
+            cols = self.ring == race
+            a = self._race_contacts(race).semi_major
+            reach = np.abs(self.contact_angle[:, cols]) + a / self.groove_radius[cols]
+            out[:, cols] = (self.load[:, cols] > 0) & (reach > self.shoulder_angle[cols])
+        return out
+
+    def ball_table(self) -> pd.DataFrame:
+        """One row per ball: angle, per-race loads (summed over arch halves), contact
+        angles and pressures of the most loaded half, approaches, contact points."""
+        rows = []
+        hertz_by_race = {race: self._race_contacts(race) for race in (0, 1)}
+        for j, psi in enumerate(self.ball_angle):
+            row = {"ball": j + 1, "angle_deg": math.degrees(psi) % 360.0}
+            for race, name in ((0, "inner"), (1, "outer")):
+                cols = np.flatnonzero(self.ring == race)
+                loads = self.load[j, cols]
+                k = int(np.argmax(loads))
+                pressures = np.atleast_2d(hertz_by_race[race].max_pressure)[j]
+                semi = np.atleast_2d(hertz_by_race[race].semi_major)[j]
+                row.update({
+                    f"{name}_load_n": float(loads.sum()),
+                    f"{name}_contact_angle_deg": math.degrees(self.contact_angle[j, cols[k]]),
+                    f"{name}_max_pressure_gpa": float(pressures[k]) / 1e9,
+                    f"{name}_semi_major_mm": float(semi[k]) * 1e3,
+                    f"{name}_approach_um": float(max(self.approach[j, cols[k]], 0.0)) * 1e6,
+                })
+            row["contact_points"] = int(self.contact_points[j])
+            row["truncated"] = bool(np.any(self.truncated[j]))
+            rows.append(row)
+        return pd.DataFrame(rows)
+
+    def to_pandas(self) -> pd.DataFrame:
+        """The per-ball table (see :meth:`ball_table`)."""
+        return self.ball_table()
+
+    def to_dict(self) -> dict:
+        """JSON-ready summary in engineering units; the stiffness matrix stays SI."""
+        table = self.ball_table()
+        balls = [{k: (v.item() if hasattr(v, "item") else v) for k, v in row.items()}
+                 for row in table.to_dict(orient="records")]
+        residual = self.condition.load_vector() + self.reaction
+        solved = np.array([True, True, True, self.condition.tilt_free, self.condition.tilt_free])
+        return {
+            "radial_displacement_um": self.radial_displacement * 1e6,
+            "axial_displacement_um": self.axial_displacement * 1e6,
+            "displacement_um": (self.displacement[:3] * 1e6).tolist(),
+            "tilt_mrad": (self.displacement[3:] * 1e3).tolist(),
+            "max_ball_load_n": float(max(table["inner_load_n"].max(),
+                                         table["outer_load_n"].max())),
+            "stiffness_matrix": self.stiffness_matrix.tolist(),
+            "stiffness_matrix_order": list(DOF_NAMES),
+            "stiffness_matrix_units": STIFFNESS_UNITS,
+            "radial_stiffness_n_per_um": self.radial_stiffness * 1e-6,
+            "axial_stiffness_n_per_um": self.axial_stiffness * 1e-6,
+            "reaction_moment_nm": self.reaction[3:].tolist(),
+            "equilibrium_residual_n": float(np.linalg.norm(residual[solved])),
+            "speed_rpm": self.condition.shaft_speed * 30 / math.pi,
+            "radial_load_n": self.condition.radial_load,
+            "axial_load_n": self.condition.axial_load,
+            "warnings": list(self.warnings),
+            "balls": balls,
+        }
+
+    def plot(self, axes=None):
+        """Polar load distribution and contact angles; returns (fig, axes)."""
+        from ..plotting import load_distribution_figure
+
+        return load_distribution_figure(self, axes)

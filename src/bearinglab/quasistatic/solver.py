@@ -1,0 +1,252 @@
+"""Quasi-static load distribution of a single-row ball bearing (layer 3).
+
+Model (seed 001, Balyakin et al. 2010, generalised to five ring degrees of freedom):
+each ball has two unknowns, its centre (rho, z) in its own plane, and touches up to four
+groove halves (two-, three- or four-point contact, seed 001 figs. 1-3), with the Hertz law
+Q = K(alpha) delta^1.5 (K from the exact Hertz solution at the current contact angle),
+the approach reduced by the EHL film (seed 001 eq. 2) and the ball pressed outward by its
+centrifugal force F_c = pi rho_b D_w^3 d_m omega_c^2 / 12 (seed 001, after eq. 3;
+omega_c the pure-rolling cage speed). The outer ring is fixed (it may be tilted); the
+inner ring moves by u = (x, y, z, tilt_x, tilt_y) (small rotations). Ball equilibrium
+(seed 001 eqs. 5, 9, 11) is solved by Newton's method for all balls at once; ring
+equilibrium (seed 001 eqs. 8, 12) by Newton's method on u with the analytic Jacobian
+condensed over the balls,
+
+    K = sum_j [ sum_i T^T S T - (sum_i T^T S) (sum_all S)^-1 (sum_i S T) ],
+
+which is also the 5x5 tangent stiffness matrix of the bearing (i: inner contacts of ball
+j, S = -dG/dv the contact's tangent matrix, T the ring kinematics; see _kernels.py).
+
+Per-ball diameter errors (seed 003 noise section eq. 7) change each ball's free distance
+to the groove centres. Not modelled: gyroscopic moments and friction (balls are
+frictionless), ring deformation, thermal expansion.
+
+A ball that touches nothing has no defined position; it is held on the outer race by a
+floor of 1e-6 N on its centrifugal force, negligible against any carried load (this is
+what seed 001's unloaded zone does at speed, fig. 5b).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..errors import ConvergenceError, InputError
+from ..geometry import BallBearing
+from ..operating import OperatingCondition
+from . import _kernels
+from .grooves import ContactSet, contact_set
+
+#: Floor of the outward force on every ball [N] (see the module docstring).
+CENTRIFUGAL_FLOOR = 1e-6
+DOF_NAMES = ("x", "y", "z", "tilt_x", "tilt_y")
+
+
+def centrifugal_force(bearing: BallBearing, shaft_speed: float) -> float:
+    """F_c = pi rho D_w^3 d_m omega_c^2 / 12 of one ball at pure-rolling cage speed [N].
+
+    Seed 001 (after eq. 3); omega_c = omega (1 - D_w cos(alpha)/d_m)/2 with the inner ring
+    turning at omega and the nominal contact angle.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        Geometry and ball material.
+    shaft_speed : float
+        Inner-ring speed omega [rad/s].
+    """
+    omega_c = 0.5 * shaft_speed * (1.0 - bearing.gamma)
+    return (math.pi * bearing.ball_material.density * bearing.ball_diameter**3
+            * bearing.pitch_diameter * omega_c**2 / 12.0)
+
+
+class _Problem:
+    """Everything fixed during one solve: geometry arrays, loads, which DOFs are free."""
+
+    def __init__(self, bearing: BallBearing, condition: OperatingCondition, ball_phase: float,
+                 ball_diameter_errors, film) -> None:
+        self.bearing, self.condition = bearing, condition
+        z = bearing.ball_count
+        self.contacts: ContactSet = contact_set(bearing)
+        cs = self.contacts
+        self.psi = ball_phase + 2.0 * math.pi * np.arange(z) / z
+        errors = np.zeros(z) if ball_diameter_errors is None else np.asarray(
+            ball_diameter_errors, dtype=float)
+        if errors.shape != (z,) or not np.all(np.isfinite(errors)) or np.any(
+                np.abs(errors) > 0.05 * bearing.ball_diameter):
+            raise InputError("ball_diameter_errors", ball_diameter_errors,
+                             f"{z} finite values within +-5 % of D_w [m]")
+        self.free = cs.free_distance[None, :] - 0.5 * errors[:, None]        # (Z, C)
+        self.film = np.zeros((z, cs.count)) if film is None else np.broadcast_to(
+            film, (z, cs.count)).astype(float)
+        self.fc = max(centrifugal_force(bearing, condition.shaft_speed), CENTRIFUGAL_FLOOR)
+        self.t = _kernels.ring_jacobian(self.psi, cs.rho0, cs.z0)            # (Z, C, 2, 5)
+        self.inner = cs.ring == 0
+        outer_u = np.array([0, 0, 0, *condition.outer_misalignment], dtype=float)
+        shift_o = self.t @ outer_u                                            # (Z, C, 2)
+        self.c0_rho = cs.rho0[None, :] + np.where(self.inner, 0.0, shift_o[..., 0])
+        self.c0_z = cs.z0[None, :] + np.where(self.inner, 0.0, shift_o[..., 1])
+        self.load = condition.load_vector()
+        self.free_dofs = np.array([True, True, True, condition.tilt_free, condition.tilt_free])
+        self.u_fixed = np.array([0, 0, 0, *condition.misalignment], dtype=float)
+        self.scale = np.array([1, 1, 1, 2 / bearing.pitch_diameter, 2 / bearing.pitch_diameter])
+
+    def centres(self, u):
+        shift = self.t @ u                                                   # (Z, C, 2)
+        c_rho = self.c0_rho + np.where(self.inner, shift[..., 0], 0.0)
+        c_z = self.c0_z + np.where(self.inner, shift[..., 1], 0.0)
+        return c_rho, c_z
+
+    def state(self, b, u):
+        c_rho, c_z = self.centres(u)
+        cs = self.contacts
+        return _kernels.contact_state(b[:, 0], b[:, 1], c_rho, c_z, self.free, cs.groove_radius,
+                                      cs.side, cs.z0, cs.k_poly, self.film)
+
+    def ball_residual(self, q, n_rho, n_z):
+        return np.stack([self.fc - np.sum(q * n_rho, axis=1), -np.sum(q * n_z, axis=1)], axis=1)
+
+    def seat_loose_balls(self, b, u, q):
+        """Put balls that touch nothing back onto the outer race (radially outward)."""
+        loose = ~np.any(q > 0, axis=1)
+        if not np.any(loose):
+            return b
+        c_rho, c_z = self.centres(u)
+        outer = ~self.inner
+        target = self.free[:, outer] + (self.fc / np.max(self.contacts.k_radial[outer])) ** (
+            2.0 / 3.0)
+        dz = np.clip(b[:, 1:2] - c_z[:, outer], -0.9 * target, 0.9 * target)
+        rho = c_rho[:, outer] + np.sqrt(target**2 - dz**2)
+        b = b.copy()
+        b[loose, 0] = np.max(rho, axis=1)[loose]
+        return b
+
+    def solve_balls(self, b, u, tol):
+        """Newton's method on every ball's equilibrium for fixed ring displacement u."""
+        q, n_rho, n_z, delta, s = self.state(b, u)
+        b = self.seat_loose_balls(b, u, q)
+        q, n_rho, n_z, delta, s = self.state(b, u)
+        g = self.ball_residual(q, n_rho, n_z)
+        for _ in range(100):
+            norm = np.hypot(g[:, 0], g[:, 1])
+            if np.all(norm <= tol):
+                return b, (q, n_rho, n_z, delta, s)
+            sb = s.sum(axis=1)                                               # (Z, 2, 2)
+            det = sb[:, 0, 0] * sb[:, 1, 1] - sb[:, 0, 1] * sb[:, 1, 0]
+            ok = np.abs(det) > 0
+            step = np.zeros_like(b)
+            step[ok, 0] = (sb[ok, 1, 1] * g[ok, 0] - sb[ok, 0, 1] * g[ok, 1]) / det[ok]
+            step[ok, 1] = (-sb[ok, 1, 0] * g[ok, 0] + sb[ok, 0, 0] * g[ok, 1]) / det[ok]
+            lam = np.ones(len(b))
+            for _ in range(30):                                              # backtracking
+                trial = b + lam[:, None] * step
+                state = self.state(trial, u)
+                g_new = self.ball_residual(*state[:3])
+                worse = (np.hypot(g_new[:, 0], g_new[:, 1]) > (1 - 1e-4 * lam) * norm) & (
+                    norm > tol)
+                if not np.any(worse):
+                    break
+                lam = np.where(worse, 0.5 * lam, lam)
+            b = self.seat_loose_balls(trial, u, state[0])
+            q, n_rho, n_z, delta, s = self.state(b, u)
+            g = self.ball_residual(q, n_rho, n_z)
+            stalled = np.max(np.abs(lam[:, None] * step)) < 1e-16
+            if stalled and np.all(np.hypot(g[:, 0], g[:, 1]) <= 1e3 * tol):  # round-off floor
+                return b, (q, n_rho, n_z, delta, s)
+        worst = float(np.max(np.hypot(g[:, 0], g[:, 1])))
+        raise ConvergenceError(f"ball equilibrium did not converge: residual {worst:.3e} N "
+                               f"(tolerance {tol:.1e} N) at ring displacement {u.tolist()}")
+
+    def ring_force_and_stiffness(self, state):
+        """Generalised force of the balls on the inner ring and the condensed stiffness."""
+        q, n_rho, n_z, _, s = state
+        inner = self.inner
+        t_in = self.t[:, inner]                                              # (Z, Ci, 2, 5)
+        g_in = np.stack([q[:, inner] * n_rho[:, inner], q[:, inner] * n_z[:, inner]], axis=-1)
+        force = np.einsum("jkab,jka->b", t_in, g_in)
+        s_in = s[:, inner]
+        st = np.einsum("jkab,jkbc->jac", s_in, t_in)                          # sum_i S T
+        tst = np.einsum("jkba,jkbc,jkcd->ad", t_in, s_in, t_in)
+        ts = np.einsum("jkba,jkbc->jac", t_in, s_in)                          # sum_i T^T S
+        sb = s.sum(axis=1)
+        det = sb[:, 0, 0] * sb[:, 1, 1] - sb[:, 0, 1] * sb[:, 1, 0]
+        inv = np.empty_like(sb)
+        safe = np.where(np.abs(det) > 0, det, 1.0)
+        inv[:, 0, 0], inv[:, 1, 1] = sb[:, 1, 1] / safe, sb[:, 0, 0] / safe
+        inv[:, 0, 1], inv[:, 1, 0] = -sb[:, 0, 1] / safe, -sb[:, 1, 0] / safe
+        inv[np.abs(det) == 0] = 0.0
+        stiffness = tst - np.einsum("jab,jbc,jcd->ad", ts, inv, st)
+        return force, stiffness
+
+
+def initial_ring_guess(problem: _Problem) -> np.ndarray:
+    """A displacement along the load that closes the clearance and compresses the balls."""
+    b = problem.bearing
+    cs = problem.contacts
+    load = problem.load
+    k_n = float(np.min(cs.k_radial)) / 2**1.5       # two equal contacts in series
+    u = problem.u_fixed.copy()
+    fr = math.hypot(load[0], load[1])
+    if fr > 0:
+        q = 5.0 * fr / b.ball_count
+        u[:2] = load[:2] / fr * (0.5 * b.diametral_clearance + (q / k_n) ** (2 / 3))
+    if load[2] != 0:
+        h = float(np.ptp(cs.rho0)) if cs.count > 1 else 0.0
+        a = float(np.max(cs.free_distance[cs.ring == 0]) + np.max(cs.free_distance[cs.ring == 1]))
+        play = math.sqrt(max(a * a - h * h, 0.0))
+        q = abs(load[2]) / b.ball_count / 0.5
+        u[2] = math.copysign(play + (q / k_n) ** (2 / 3), load[2])
+    return u
+
+
+def solve(bearing: BallBearing, condition: OperatingCondition, *, ball_phase: float | None = None,
+          ball_diameter_errors=None, film=None, tolerance: float = 1e-9, max_iterations: int = 100,
+          initial: np.ndarray | None = None):
+    """Solve ring and ball equilibrium; returns (u, b, state, problem).
+
+    See :func:`bearinglab.quasistatic.solve_load_distribution` for the public interface.
+    """
+    if ball_phase is None:
+        ball_phase = condition.radial_load_angle
+    problem = _Problem(bearing, condition, float(ball_phase), ball_diameter_errors, film)
+    load = problem.load
+    load_norm = float(np.linalg.norm(load * problem.scale))
+    ball_tol = tolerance * max(load_norm, 1.0) / bearing.ball_count
+    u = initial_ring_guess(problem) if initial is None else np.asarray(initial, float).copy()
+    b = np.stack([np.full(bearing.ball_count, 0.5 * bearing.pitch_diameter),
+                  np.zeros(bearing.ball_count)], axis=1)
+    free = problem.free_dofs
+    target = tolerance * max(load_norm, 1.0)
+    b, state = problem.solve_balls(b, u, ball_tol)
+    force, stiff = problem.ring_force_and_stiffness(state)
+    r = (load + force) * problem.scale
+    max_step = np.array([0.05, 0.05, 0.05, 0.01, 0.01]) * np.array(
+        [bearing.ball_diameter] * 3 + [1, 1])
+    for _ in range(max_iterations):
+        norm = float(np.linalg.norm(r[free]))
+        if norm <= target:
+            return u, b, state, problem, stiff
+        k_ff = stiff[np.ix_(free, free)]
+        try:
+            du = np.linalg.solve(k_ff, (load + force)[free])
+        except np.linalg.LinAlgError:
+            du = (load + force)[free] / max(np.max(np.abs(np.diag(k_ff))), 1.0)
+        limit = np.max(np.abs(du) / max_step[free])
+        if limit > 1:
+            du /= limit
+        lam = 1.0
+        for _ in range(40):
+            trial = u.copy()
+            trial[free] += lam * du
+            b_t, state_t = problem.solve_balls(b, trial, ball_tol)
+            force_t, stiff_t = problem.ring_force_and_stiffness(state_t)
+            r_t = (load + force_t) * problem.scale
+            if np.linalg.norm(r_t[free]) < (1 - 1e-4 * lam) * norm or lam < 1e-9:
+                break
+            lam *= 0.5
+        u, b, state, force, stiff, r = trial, b_t, state_t, force_t, stiff_t, r_t
+    raise ConvergenceError(
+        f"ring equilibrium did not converge for F = {load.round(6).tolist()} (N, N m): "
+        f"residual {float(np.linalg.norm(r[free])):.3e} (tolerance {target:.1e}) after "
+        f"{max_iterations} iterations; the bearing may not carry this load")
