@@ -45,7 +45,7 @@ class OperatingCondition:
         Inner-ring speed [rad/s], >= 0 (outer ring fixed).
 
     >>> OperatingCondition(radial_load=500.0).load_vector()[:3].round(6).tolist()
-    [-0.0, -500.0, 0.0]
+    [0.0, -500.0, 0.0]
     """
 
     radial_load: float = 0.0
