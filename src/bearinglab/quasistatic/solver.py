@@ -215,13 +215,33 @@ def initial_ring_guess(problem: _Problem) -> np.ndarray:
 def solve(bearing: BallBearing, condition: OperatingCondition, *, ball_phase: float | None = None,
           ball_diameter_errors=None, film=None, tolerance: float = 1e-9, max_iterations: int = 100,
           initial: np.ndarray | None = None):
-    """Solve ring and ball equilibrium; returns (u, b, state, problem).
+    """Solve ring and ball equilibrium; returns (u, b, state, problem, stiffness).
 
+    Without an initial guess, a combined load is solved in two stages: first the radial
+    displacement with the axial one held at zero (the balls then touch), then all free
+    degrees of freedom from there; starting both at once from a guess can leave a
+    four-point or clearance bearing with no loaded ball and no useful Jacobian.
     See :func:`bearinglab.quasistatic.solve_load_distribution` for the public interface.
     """
     if ball_phase is None:
         ball_phase = condition.radial_load_angle
     problem = _Problem(bearing, condition, float(ball_phase), ball_diameter_errors, film)
+    if initial is None and condition.radial_load > 0:
+        guess = initial_ring_guess(problem)
+        guess[2] = 0.0
+        radial_only = problem.free_dofs.copy()
+        problem.free_dofs = np.array([True, True, False, False, False])
+        try:
+            initial = _newton(problem, tolerance, max_iterations, guess)[0]
+        except ConvergenceError:
+            initial = None
+        problem.free_dofs = radial_only
+    return _newton(problem, tolerance, max_iterations, initial)
+
+
+def _newton(problem: _Problem, tolerance: float, max_iterations: int, initial):
+    """Newton's method with damping and an exact line search on the free ring DOFs."""
+    bearing = problem.bearing
     load = problem.load
     load_norm = float(np.linalg.norm(load * problem.scale))
     ball_tol = tolerance * max(load_norm, 1.0) / bearing.ball_count
@@ -233,39 +253,58 @@ def solve(bearing: BallBearing, condition: OperatingCondition, *, ball_phase: fl
     b, state = problem.solve_balls(b, u, ball_tol)
     force, stiff = problem.ring_force_and_stiffness(state)
     r = (load + force) * problem.scale
-    max_step = np.array([0.05, 0.05, 0.05, 0.01, 0.01]) * np.array(
-        [bearing.ball_diameter] * 3 + [1, 1])
-    for _ in range(max_iterations):
+    # steps of the order of the play plus Hertz approaches; tilts a few mrad
+    play = max(bearing.diametral_clearance, 0.0) + 0.005 * bearing.ball_diameter
+    max_step = np.array([play, play, 4 * play, 0.005, 0.005])
+    damping = 0.0
+    for iteration in range(max_iterations + 1):
         norm = float(np.linalg.norm(r[free]))
         if norm <= target:
             return u, b, state, problem, stiff
+        if iteration == max_iterations:
+            break
         k_ff = stiff[np.ix_(free, free)]
+        # Levenberg-Marquardt damping: grows while steps must be cut back (a ring that
+        # touches only one or two balls is nearly singular), shrinks when Newton works
+        diag = np.maximum(np.abs(np.diag(k_ff)), 1e-12 * np.max(np.abs(np.diag(k_ff))) + 1.0)
         try:
-            du = np.linalg.solve(k_ff, (load + force)[free])
+            du = np.linalg.solve(k_ff + damping * np.diag(diag), (load + force)[free])
         except np.linalg.LinAlgError:
-            du = (load + force)[free] / max(np.max(np.abs(np.diag(k_ff))), 1.0)
+            du = (load + force)[free] / diag
+        if (load + force)[free] @ (du * problem.scale[free] ** 2) <= 0:
+            du = (load + force)[free] / diag          # not a descent direction: use gradient
         limit = np.max(np.abs(du) / max_step[free])
         if limit > 1:
             du /= limit
+
         def along(lam):
             trial = u.copy()
             trial[free] += lam * du
-            b_t, state_t = problem.solve_balls(b, trial, ball_tol)
+            try:
+                b_t, state_t = problem.solve_balls(b, trial, ball_tol)
+            except ConvergenceError:        # far past contact onset: the step is too long
+                return None
             force_t, stiff_t = problem.ring_force_and_stiffness(state_t)
             return trial, b_t, state_t, force_t, stiff_t, (load + force_t) * problem.scale
 
-        step = along(1.0)
-        if np.linalg.norm(step[5][free]) >= norm:
-            # Newton overshoots (typically across the onset of contact): find where the
-            # residual turns against the step, i.e. the energy minimum along it.
-            def slope(lam):
-                return float(along(lam)[5][free] @ (du * problem.scale[free]))
+        def slope(lam):
+            at = along(lam)
+            return -1e30 if at is None else float(at[5][free] @ (du * problem.scale[free]))
 
-            if slope(1.0) < 0:
-                lam = optimize.brentq(slope, 0.0, 1.0, xtol=1e-12, rtol=1e-10, maxiter=200)
-                step = along(lam)
-        trial, b_t, state_t, force_t, stiff_t, r_t = step
-        u, b, state, force, stiff, r = trial, b_t, state_t, force_t, stiff_t, r_t
+        step = along(1.0)
+        newton_worked = step is not None and np.linalg.norm(step[5][free]) < 0.5 * norm
+        damping = 0.0 if newton_worked and damping < 1e-3 else (
+            damping * 0.1 if newton_worked else max(1e-3, 10.0 * damping))
+        if step is None or np.linalg.norm(step[5][free]) >= norm:
+            # Newton overshoots (typically across the onset of contact): go to where the
+            # residual turns against the step, i.e. the energy minimum along it.
+            if slope(1.0) < 0 < slope(0.0):
+                step = along(optimize.brentq(slope, 0.0, 1.0, xtol=1e-12, rtol=1e-10,
+                                             maxiter=200))
+            if step is None:
+                raise ConvergenceError(f"ring equilibrium: no admissible step from "
+                                       f"{u.tolist()} for F = {load.round(6).tolist()}")
+        u, b, state, force, stiff, r = step
     raise ConvergenceError(
         f"ring equilibrium did not converge for F = {load.round(6).tolist()} (N, N m): "
         f"residual {float(np.linalg.norm(r[free])):.3e} (tolerance {target:.1e}) after "
