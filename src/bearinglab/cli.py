@@ -9,6 +9,8 @@ import functools
 import inspect
 import json
 import math
+import os
+import re
 import sys
 import tomllib
 from dataclasses import replace
@@ -18,10 +20,16 @@ from typing import Annotated
 
 import typer
 from rich.console import Console
+from rich.markup import escape
 from rich.table import Table
 
 from . import __version__
-from .catalog import bearing_from_designation, boundary_dimensions, published_geometry
+from .catalog import (
+    GeometryNeeded,
+    bearing_from_designation,
+    boundary_dimensions,
+    published_geometry,
+)
 from .contact.ball_race import ball_contacts
 from .designation import parse
 from .errors import BearinglabError, CatalogError, DesignationError, InputError
@@ -76,7 +84,8 @@ _GEOMETRY_OPTIONS = {
     "density_kg_m3": ("--density-kg-m3", float | None, "Density of rings and balls [kg/m^3].",
                       1, None),
     "geometry": ("--geometry", Path | None, ("TOML file with any of the geometry values "
-                 "(keys as the option names with underscores, e.g. ball_diameter_mm)."), None, None),
+                 "(keys as the option names with underscores, e.g. ball_diameter_mm = 7.94, "
+                 "balls = 9; also system and name)."), None, None),
 }
 
 
@@ -104,59 +113,280 @@ def with_geometry(func):
     return wrapper
 
 
+#: Range checks of the command line, in the options' units (the models check the rest):
+#: option name -> (low, high, low included, high included, what).
+_RANGES = {
+    **{name: (0.0, 1e5, False, True, "a length in (0, 100000] mm")
+       for name in ("ball_diameter_mm", "pitch_diameter_mm", "bore_mm", "outside_diameter_mm",
+                    "width_mm")},
+    "elastic_modulus_gpa": (0.0, 1e4, False, True, "a modulus in (0, 10000] GPa"),
+    "poisson_ratio": (0.0, 0.5, True, False, "a value in [0, 0.5)"),
+    "density_kg_m3": (0.0, 1e5, False, True, "a density in (0, 100000] kg/m^3"),
+}
+#: Limits of the analysis options, in their units.
+MAX_BALL_LOAD_N = 1e7
+MAX_SPEED_RPM = 1e6
+
+#: BallBearing / Material keyword -> option name, to put errors in the user's terms.
+_KEYWORD_OPTION = {spec[4]: name for name, spec in _GEOMETRY_OPTIONS.items() if spec[4]}
+_KEYWORD_OPTION.update({"elastic_modulus": "elastic_modulus_gpa", "density": "density_kg_m3",
+                        "poisson_ratio": "poisson_ratio"})
+#: Checks that involve other values: if the user did not give the value a check names,
+#: the error names the first of these the user did give.
+_PARTNERS = {
+    "pitch_diameter": ("ball_diameter", "bore", "outside_diameter"),
+    "ball_count": ("ball_diameter", "pitch_diameter"),
+    "ball_diameter": ("pitch_diameter", "bore", "outside_diameter", "diametral_clearance"),
+    "bore": ("outside_diameter",),
+    "diametral_clearance": ("inner_groove_factor", "outer_groove_factor", "ball_diameter",
+                            "contact_angle"),
+    "width": ("ball_diameter", "outer_groove_factor", "inner_groove_factor", "pitch_diameter",
+              "outside_diameter", "diametral_clearance"),
+}
+_UNITS = {"_mm": "mm", "_um": "um", "_deg": "deg", "_gpa": "GPa", "_kg_m3": "kg/m^3"}
+
+
+def _unit(name: str) -> str:
+    return next((u for suffix, u in _UNITS.items() if name.endswith(suffix)), "")
+
+
+def _show(value) -> str:
+    """A value as the user would type it: 90 rather than 90.0, strings quoted."""
+    if isinstance(value, bool) or value is None:
+        return repr(value)
+    if isinstance(value, float):
+        return f"{value:.10g}"
+    if isinstance(value, (int, str)):
+        return repr(value) if isinstance(value, str) else str(value)
+    if isinstance(value, Path):
+        return repr(str(value))
+    return repr(value)
+
+
+class OptionError(InputError):
+    """An :class:`InputError` worded for the command line: the option as typed, its value
+    in the option's units."""
+
+    def __init__(self, parameter: str, value, allowed: str, hint: str = "") -> None:
+        super().__init__(parameter, value, allowed, hint)
+        message = f"{parameter} = {_show(value)} is not allowed: expected {allowed}"
+        self.args = (message + (f" ({hint})" if hint else ""),)
+
+
+def _si_to_option_units(text: str, name: str) -> str:
+    """Rewrite lengths in metres ("[-0.000397, 0.000635] m", "0.00794 m", "[m]") in the
+    units of option ``name`` (mm or um)."""
+    unit = _unit(name)
+    factor = _GEOMETRY_OPTIONS[name][3] if name in _GEOMETRY_OPTIONS else None
+    if unit not in ("mm", "um") or not factor:
+        return text
+    number = r"-?\d+(?:\.\d*)?(?:[eE][-+]?\d+)?"
+
+    def one(m):
+        return f"{float(m.group(1)) / factor:.6g}"
+
+    text = re.sub(rf"\[({number}), ({number})\] m\b",
+                  lambda m: f"[{float(m.group(1)) / factor:.6g}, "
+                            f"{float(m.group(2)) / factor:.6g}] {unit}", text)
+    text = re.sub(rf"({number}) m\b", lambda m: f"{one(m)} {unit}", text)
+    return text.replace("[m]", f"[{unit}]")
+
+
+class _Inputs:
+    """What the user gave: option values as typed (command line and --geometry file), where
+    each came from, and the BallBearing overrides in SI units."""
+
+    def __init__(self, geometry: dict) -> None:
+        self.values: dict = {}
+        self.origins: dict[str, str] = {}
+        path = geometry.get("geometry")
+        if path is not None:
+            for key, (written, value) in _read_geometry_file(path).items():
+                self.values[key] = value
+                self.origins[key] = f"--geometry {written}"
+        for name, value in geometry.items():
+            if value is not None and name != "geometry":
+                self.values[name] = value.value if isinstance(value, System) else value
+                self.origins[name] = _GEOMETRY_OPTIONS[name][0]
+        self.system = self.values.get("system")
+        self._check_ranges()
+        self.overrides = self._overrides()
+
+    def flag(self, name: str) -> str:
+        return self.origins.get(name, _GEOMETRY_OPTIONS[name][0])
+
+    def _check_ranges(self) -> None:
+        for name, value in self.values.items():
+            if not isinstance(value, float):
+                continue
+            if not math.isfinite(value):
+                raise OptionError(self.flag(name), value, "a finite number")
+            if name in _RANGES:
+                low, high, low_in, high_in, what = _RANGES[name]
+                if not ((low <= value if low_in else low < value)
+                        and (value <= high if high_in else value < high)):
+                    raise OptionError(self.flag(name), value, what)
+
+    def _overrides(self) -> dict:
+        overrides: dict = {}
+        for name, (_, _, _, factor, keyword) in _GEOMETRY_OPTIONS.items():
+            value = self.values.get(name)
+            if keyword is None or value is None:
+                continue
+            overrides[keyword] = int(value) if keyword == "ball_count" else float(value) * factor
+        material = _material(self.values)
+        if material is not None:
+            overrides["ring_material"] = overrides["ball_material"] = material
+        if isinstance(self.values.get("name"), str):
+            overrides["name"] = self.values["name"]
+        return overrides
+
+    def remap(self, exc: InputError) -> InputError:
+        """The model's error in the user's terms: the option they typed (or, for a check
+        between two values, the one of them they gave) with its value in its units."""
+        if isinstance(exc, OptionError):
+            return exc
+        name = _KEYWORD_OPTION.get(exc.parameter)
+        if name is None:
+            return exc
+        if name in self.values:
+            return OptionError(self.flag(name), self.values[name],
+                               _si_to_option_units(exc.allowed, name),
+                               _si_to_option_units(_hint_of(exc), name))
+        for partner in _PARTNERS.get(exc.parameter, ()):
+            other = _KEYWORD_OPTION[partner]
+            if other not in self.values:
+                continue
+            unit = _unit(name)
+            factor = _GEOMETRY_OPTIONS[name][3]
+            own = (f"{exc.value / factor:.6g}" if isinstance(exc.value, (int, float)) and factor
+                   else _show(exc.value))
+            label = exc.parameter.replace("_", " ")
+            if (exc.parameter == "pitch_diameter" and partner == "ball_diameter"
+                    and exc.allowed.startswith("more than the ball diameter")):
+                return OptionError(self.flag(other), self.values[other],
+                                   f"less than the pitch diameter {own} {unit} (not given: "
+                                   "a catalogue or derived value)")
+            if exc.parameter == "bore" and partner == "outside_diameter":
+                return OptionError(self.flag(other), self.values[other],
+                                   f"more than the bore {own} {unit} (not given: a catalogue "
+                                   "or derived value)")
+            return OptionError(
+                self.flag(other), self.values[other],
+                f"a value with which the {label} {own}{' ' + unit if unit else ''} (not given: "
+                f"a catalogue or derived value) passes its check: "
+                f"{_si_to_option_units(exc.allowed, name)}",
+                _si_to_option_units(_hint_of(exc), name))
+        return exc
+
+
+def _hint_of(exc: InputError) -> str:
+    text = str(exc)
+    head = f"expected {exc.allowed}"
+    rest = text[text.find(head) + len(head):] if head in text else ""
+    return rest[2:-1] if rest.startswith(" (") and rest.endswith(")") else ""
+
+
 def _read_geometry_file(path: Path) -> dict:
+    """Read a --geometry TOML file: option name -> (key as written, checked value)."""
+    flag = "--geometry"
     try:
-        data = tomllib.loads(path.read_text(encoding="utf-8"))
+        text = Path(path).read_bytes().decode("utf-8")
+        data = tomllib.loads(text)
     except FileNotFoundError:
-        raise InputError("--geometry", str(path), "an existing TOML file") from None
+        raise OptionError(flag, str(path), "an existing TOML file") from None
+    except IsADirectoryError:
+        raise OptionError(flag, str(path), "a TOML file, not a directory") from None
+    except PermissionError:
+        raise OptionError(flag, str(path), "a readable TOML file", "permission denied") from None
+    except OSError as exc:
+        raise OptionError(flag, str(path), "a readable TOML file",
+                          exc.strerror or type(exc).__name__) from None
+    except UnicodeDecodeError as exc:
+        raise OptionError(flag, str(path), "a UTF-8 encoded TOML file",
+                          f"byte {exc.start} is not UTF-8") from None
     except tomllib.TOMLDecodeError as exc:
-        raise InputError("--geometry", str(path), "a valid TOML file", str(exc)) from None
+        raise OptionError(flag, str(path), "a valid TOML file", str(exc)) from None
     aliases = {"ball_count": "balls", "diametral_clearance_um": "clearance_um"}
+    known = sorted([k for k in _GEOMETRY_OPTIONS if k != "geometry"] + ["name"])
     out = {}
-    for key, value in data.items():
-        key = aliases.get(key, key)
-        if key in ("system", "geometry", "designation", "name"):
-            continue
-        if key not in _GEOMETRY_OPTIONS:
-            raise InputError(f"--geometry key {key!r}", value,
-                             f"one of {sorted(k for k in _GEOMETRY_OPTIONS if k != 'geometry')}")
-        out[key] = value
+    for written, value in data.items():
+        key = aliases.get(written, written)
+        if key not in known:
+            raise OptionError(f"--geometry key {written!r}", value, f"one of {known}")
+        if key in out:
+            raise OptionError(f"--geometry key {written!r}", value,
+                              f"each value once ({out[key][0]!r} gives it too)")
+        where = f"--geometry {written}"
+        if key == "name":
+            if not isinstance(value, str):
+                raise OptionError(where, value, "a text label (TOML string)")
+        elif key == "system":
+            if not (isinstance(value, str) and value.lower() in ("gost", "iso")):
+                raise OptionError(where, value, "'gost' or 'iso'")
+            value = value.lower()
+        elif key == "balls":
+            if type(value) is not int:
+                raise OptionError(where, value, "an integer number of balls (e.g. balls = 9)")
+        elif isinstance(value, bool) or not isinstance(value, (int, float)):
+            raise OptionError(where, value, f"a number{' in ' + _unit(key) if _unit(key) else ''}"
+                                            " (TOML integer or float)")
+        elif not math.isfinite(value):
+            raise OptionError(where, value, "a finite number")
+        else:
+            value = float(value)
+        out[key] = (written, value)
     return out
+
+
+def _catalog_message(exc: CatalogError) -> str:
+    """A catalogue error in the user's terms: the options to give instead of keywords."""
+    if isinstance(exc, GeometryNeeded):
+        flags = [_GEOMETRY_OPTIONS[_KEYWORD_OPTION[k]][0] for k in exc.needed
+                 if k in _KEYWORD_OPTION]
+        if flags:
+            listed = flags[0] if len(flags) == 1 else ", ".join(flags[:-1]) + " and " + flags[-1]
+            return f"{exc.reason}; give {listed}"
+    return str(exc)
+
+
+def _resolve(designation: str | None, inputs: _Inputs):
+    """(BallBearing, Designation or None) from a designation and/or explicit geometry."""
+    overrides = inputs.overrides
+    try:
+        if designation:
+            return bearing_from_designation(designation, system=inputs.system,
+                                            overrides=overrides)
+        missing = [_GEOMETRY_OPTIONS[n][0] for n in ("balls", "ball_diameter_mm",
+                                                      "pitch_diameter_mm")
+                   if _GEOMETRY_OPTIONS[n][4] not in overrides]
+        if missing:
+            raise InputError("DESIGNATION", None, "a designation, or explicit geometry with "
+                             + ", ".join(missing))
+        kwargs = dict(overrides)
+        name = kwargs.pop("name", "user geometry")
+        sources = {k: Source("user", "command line") for k in kwargs}
+        return BallBearing(name=name, sources=sources, **kwargs), None
+    except InputError as exc:
+        raise inputs.remap(exc) from None
+    except GeometryNeeded as exc:
+        raise CatalogError(_catalog_message(exc)) from None
+
+
+def _check_designation_text(designation: str | None) -> None:
+    if designation is not None and not designation.strip():
+        raise OptionError("DESIGNATION", designation,
+                          "a bearing designation (e.g. 6205-2RS, 180205) or catalogue name, or "
+                          "no designation and explicit geometry")
 
 
 def resolve_bearing(designation: str | None, geometry: dict):
     """Build the BallBearing from a designation and/or explicit geometry (SI inside).
 
-    Returns (bearing, Designation or None)."""
-    values = dict(geometry)
-    if values.get("geometry") is not None:
-        from_file = _read_geometry_file(values["geometry"])
-        values = {**from_file, **{k: v for k, v in values.items() if v is not None}}
-    overrides = {}
-    for name, (flag, _, _, factor, keyword) in _GEOMETRY_OPTIONS.items():
-        value = values.get(name)
-        if keyword is None or value is None:
-            continue
-        if keyword == "ball_count":
-            if isinstance(value, float) and not value.is_integer():
-                raise InputError(flag, value, "a whole number of balls")
-            overrides[keyword] = int(value)
-        else:
-            overrides[keyword] = float(value) * factor
-    material = _material(values)
-    if material is not None:
-        overrides["ring_material"] = overrides["ball_material"] = material
-    system = values.get("system")
-    system = system.value if isinstance(system, System) else system
-    if designation:
-        return bearing_from_designation(designation, system=system, overrides=overrides)
-    missing = [_GEOMETRY_OPTIONS[n][0] for n in ("balls", "ball_diameter_mm", "pitch_diameter_mm")
-               if _GEOMETRY_OPTIONS[n][4] not in overrides]
-    if missing:
-        raise InputError("DESIGNATION", None, "a designation, or explicit geometry with "
-                         + ", ".join(missing))
-    sources = {k: Source("user", "command line") for k in overrides}
-    return BallBearing(name="user geometry", sources=sources, **overrides), None
+    Returns (bearing, Designation or None).  Errors name the option the user typed, with
+    its value in that option's units."""
+    _check_designation_text(designation)
+    return _resolve(designation, _Inputs(geometry))
 
 
 def _material(values: dict) -> Material | None:
@@ -168,6 +398,38 @@ def _material(values: dict) -> Material | None:
                    elastic_modulus=base.elastic_modulus if e is None else float(e) * 1e9,
                    poisson_ratio=base.poisson_ratio if nu is None else float(nu),
                    density=base.density if rho is None else float(rho))
+
+
+def _geometry_warnings(bearing: BallBearing) -> list[str]:
+    """Caveats about the geometry used: an estimated ball count of an angular-contact
+    bearing (a lower bound), balls of a thrust bearing reaching past its outside diameter."""
+    out = []
+    src = bearing.sources.get("ball_count")
+    if (src is not None and src.kind == "estimated"
+            and bearing.bearing_type in ("angular_contact_ball", "four_point_contact_ball")):
+        out.append(f"ball count Z = {bearing.ball_count} is estimated with the Conrad "
+                   "filling-angle rule: for an angular-contact bearing that is a lower bound "
+                   "(they carry more balls); give --balls")
+    big_d = bearing.outside_diameter
+    if bearing.is_thrust and big_d is not None:
+        reach = bearing.pitch_diameter + bearing.ball_diameter
+        if reach > big_d:
+            out.append(f"the balls reach to a diameter of {reach * 1e3:.4g} mm, beyond the "
+                       f"outside diameter {big_d * 1e3:.4g} mm: check --pitch-diameter-mm and "
+                       "--ball-diameter-mm")
+    return out
+
+
+def _geometry_line(bearing: BallBearing, contact_angle: float | None = None) -> str:
+    alpha = bearing.contact_angle if contact_angle is None else contact_angle
+    return (f"geometry ({bearing.geometry_source}): Z = {bearing.ball_count}, "
+            f"D_w = {bearing.ball_diameter * 1e3:.4g} mm, d_m = {bearing.pitch_diameter * 1e3:.4g} "
+            f"mm, contact angle {math.degrees(alpha):.4g} deg")
+
+
+def _print_warnings(warnings: list[str]) -> None:
+    for text in warnings:
+        console.print(f"[yellow]warning:[/yellow] {escape(text)}")
 
 
 # ------------------------------------------------------------------ output helpers
@@ -182,8 +444,30 @@ def _tidy(value):
     return value
 
 
+def _check_finite(value, path: str = "") -> None:
+    """Refuse to print a result that is not finite (inf or NaN) with a one-line error."""
+    if isinstance(value, float) and not math.isfinite(value):
+        raise BearinglabError(f"the result {path.lstrip('.') or 'value'} = {value} is not "
+                              "finite for these inputs; check that they are in range")
+    if isinstance(value, dict):
+        for k, v in value.items():
+            _check_finite(v, f"{path}.{k}")
+    elif isinstance(value, (list, tuple)):
+        for i, v in enumerate(value):
+            _check_finite(v, f"{path}[{i}]")
+
+
 def _emit_json(obj: dict) -> None:
+    _check_finite(obj)
     sys.stdout.write(json.dumps(_tidy(obj), indent=2, allow_nan=False) + "\n")
+
+
+def _save_plot(result, plot: Path) -> None:
+    try:
+        save_figure(result.plot()[0], plot)
+    except OSError as exc:
+        raise OptionError("--plot", str(plot), "a writable file",
+                          exc.strerror or type(exc).__name__) from None
 
 
 def _fmt(value, digits: int = 4) -> str:
@@ -191,7 +475,7 @@ def _fmt(value, digits: int = 4) -> str:
         return "-"
     if isinstance(value, float):
         return f"{value:.{digits}g}"
-    return str(value)
+    return escape(str(value))
 
 
 def _table(title: str, columns: list[str], rows: list[list]) -> Table:
@@ -222,7 +506,7 @@ class _References:
 
     def print(self) -> None:
         for i, ref in enumerate(self.refs, start=1):
-            console.print(f"[dim][{i}] {ref}[/dim]")
+            console.print(f"[dim]\\[{i}] {escape(ref)}[/dim]")
 
 
 # ------------------------------------------------------------------ commands
@@ -240,42 +524,56 @@ PlotOpt = Annotated[Path | None, typer.Option(
 def info(designation: DesignationArg = None, json_output: JsonOpt = False, *, geometry):
     """Decode a designation; show dimensions, internal geometry (with sources) and
     frequency factors."""
+    _check_designation_text(designation)
+    inputs = _Inputs(geometry)
     decoded = None
     if designation:
         try:
-            decoded = parse(designation, system=_system(geometry))
+            decoded = parse(designation, system=inputs.system)
         except DesignationError:
             if published_geometry(designation) is None:  # not a catalogue name either
                 raise
     try:
-        bearing, from_catalog = resolve_bearing(designation, geometry)
+        bearing, from_catalog = _resolve(designation, inputs)
         decoded, why_no_geometry = from_catalog or decoded, None
-    except CatalogError as exc:  # e.g. roller bearings: dimensions only
+    except CatalogError as exc:  # roller bearings, sizes not in the catalogue...
         if decoded is None:
             raise
-        bearing, why_no_geometry = None, str(exc)
+        bearing, why_no_geometry = None, _catalog_message(exc)
+    dims = why_no_dims = None
+    if bearing is None:
+        try:
+            dims = boundary_dimensions(decoded)
+        except CatalogError as exc:
+            why_no_dims = str(exc)
+    warnings = [] if bearing is None else _geometry_warnings(bearing)
+    try:
+        out = _info_dict(designation, decoded, bearing, dims, why_no_geometry, why_no_dims,
+                         warnings)
+    except InputError as exc:
+        raise inputs.remap(exc) from None
     if json_output:
-        _emit_json(_info_dict(designation, decoded, bearing, why_no_geometry))
+        _emit_json(out)
         return
+    _check_finite(out)
     if decoded is not None:
         _print_designation(decoded)
     if bearing is None:
-        dims = boundary_dimensions(decoded)
-        console.print(_table("Boundary dimensions", ["quantity", "value", "unit", "source"], [
-            ["bore d", dims.bore * 1e3, "mm", dims.standard],
-            ["outside diameter D", dims.outside_diameter * 1e3, "mm", dims.standard],
-            ["width B", dims.width * 1e3, "mm", dims.standard]]))
-        console.print(f"[yellow]no internal geometry:[/yellow] {why_no_geometry}")
+        if dims is not None:
+            console.print(_table("Boundary dimensions", ["quantity", "value", "unit", "source"], [
+                ["bore d", dims.bore * 1e3, "mm", dims.standard],
+                ["outside diameter D", dims.outside_diameter * 1e3, "mm", dims.standard],
+                ["width B", dims.width * 1e3, "mm", dims.standard]]))
+        else:
+            console.print(f"bore d = {decoded.bore_mm:g} mm (from the designation)")
+            console.print(f"[yellow]no boundary dimensions:[/yellow] {escape(why_no_dims)}")
+        console.print(f"[yellow]no internal geometry:[/yellow] {escape(why_no_geometry)}")
         return
     _print_bearing(bearing)
+    _print_warnings(warnings)
 
 
-def _system(geometry: dict) -> str | None:
-    system = geometry.get("system")
-    return system.value if isinstance(system, System) else system
-
-
-def _info_dict(text, decoded, bearing, why_no_geometry) -> dict:
+def _info_dict(text, decoded, bearing, dims, why_no_geometry, why_no_dims, warnings) -> dict:
     out = {"designation": text, "system": decoded.system if decoded else None,
            "bearing_type": (decoded.bearing_type if decoded else bearing.bearing_type)}
     if bearing is not None:
@@ -284,30 +582,35 @@ def _info_dict(text, decoded, bearing, why_no_geometry) -> dict:
         f = defect_frequencies(bearing, 2 * math.pi)
         out["frequency_factors"] = {f"{n}_order": f.orders[n] for n in FREQUENCY_NAMES}
     else:
-        dims = boundary_dimensions(decoded)
-        out.update({"bore_mm": dims.bore * 1e3, "outside_diameter_mm": dims.outside_diameter * 1e3,
-                    "width_mm": dims.width * 1e3, "ball_count": None, "ball_diameter_mm": None,
-                    "pitch_diameter_mm": None,
-                    "contact_angle_deg": (None if decoded.contact_angle is None
-                                          else math.degrees(decoded.contact_angle)),
-                    "geometry_source": None, "dimensions_standard": dims.standard,
+        out.update({"bore_mm": decoded.bore_mm,
+                    "outside_diameter_mm": None if dims is None else dims.outside_diameter * 1e3,
+                    "width_mm": None if dims is None else dims.width * 1e3,
+                    "ball_count": None, "ball_diameter_mm": None, "pitch_diameter_mm": None,
+                    "contact_angle_deg": decoded.contact_angle_deg,
+                    "geometry_source": None,
+                    "dimensions": None if dims is None else dims.to_dict(),
+                    "dimensions_standard": None if dims is None else dims.standard,
+                    "no_dimensions_reason": why_no_dims,
                     "no_geometry_reason": why_no_geometry})
+        if dims is not None:
+            out["bore_mm"] = dims.bore * 1e3
+    out["warnings"] = warnings
     if decoded is not None:
         out["decoded"] = decoded.to_dict()
     return out
 
 
 def _print_designation(d) -> None:
-    console.print(f"[bold]{d.text}[/bold] - {d.description} "
+    console.print(f"[bold]{escape(d.text)}[/bold] - {escape(d.description)} "
                   f"[dim]({'GOST 3189-89' if d.system == 'gost' else 'ISO'} reading)[/dim]")
     console.print(_table("Designation", ["part", "meaning"], [list(p) for p in d.parts]))
     equivalents = [f"ISO {d.iso_equivalent}" if d.iso_equivalent and d.system == "gost" else None,
                    f"GOST {d.gost_equivalent}" if d.gost_equivalent and d.system == "iso" else None]
     equivalents = [e for e in equivalents if e]
     if equivalents:
-        console.print("Equivalent: " + ", ".join(equivalents))
+        console.print("Equivalent: " + escape(", ".join(equivalents)))
     for note in d.notes:
-        console.print(f"[yellow]note:[/yellow] {note}")
+        console.print(f"[yellow]note:[/yellow] {escape(note)}")
 
 
 def _print_bearing(b: BallBearing) -> None:
@@ -359,15 +662,18 @@ def frequencies(designation: DesignationArg = None,
                 = False,
                 json_output: JsonOpt = False, plot: PlotOpt = None, *, geometry):
     """Kinematic defect frequencies (pure rolling) in Hz and as orders."""
-    if not (math.isfinite(speed_rpm) and speed_rpm >= 0):
-        raise InputError("--speed-rpm", speed_rpm, "a speed >= 0 rpm")
+    if not (math.isfinite(speed_rpm) and 0 <= speed_rpm <= MAX_SPEED_RPM):
+        raise OptionError("--speed-rpm", speed_rpm, f"a speed in [0, {MAX_SPEED_RPM:g}] rpm")
     bearing, _ = resolve_bearing(designation, geometry)
     f = defect_frequencies(bearing, speed_rpm * math.pi / 30, outer_rotating=outer_rotating)
+    warnings = _geometry_warnings(bearing)
+    out = {"designation": designation, **f.to_dict(), "warnings": warnings}
     if plot is not None:
-        save_figure(f.plot()[0], plot)
+        _save_plot(f, plot)
     if json_output:
-        _emit_json({"designation": designation, **f.to_dict()})
+        _emit_json(out)
         return
+    _check_finite(out)
     ring = "outer" if outer_rotating else "inner"
     console.print(_table(f"{bearing.name or 'bearing'} at {speed_rpm:g} rpm ({ring} ring "
                          f"rotating, contact angle {math.degrees(f.contact_angle):g} deg)",
@@ -375,8 +681,10 @@ def frequencies(designation: DesignationArg = None,
                          [["shaft", f.shaft_hz, 1.0, LONG_NAMES["shaft"]]]
                          + [[n.upper() if n != "ball_defect" else "BALL DEFECT", f.hz(n),
                              f.orders[n], LONG_NAMES[n]] for n in FREQUENCY_NAMES]))
+    console.print(escape(_geometry_line(bearing, f.contact_angle)))
     console.print("[dim]BSF is one spin revolution; a ball defect strikes the races at "
                   "2 x BSF (some tables print that as 'ball spin').[/dim]")
+    _print_warnings(warnings)
 
 
 @app.command()
@@ -389,16 +697,20 @@ def contact(designation: DesignationArg = None,
             = HertzMethod.exact,
             json_output: JsonOpt = False, plot: PlotOpt = None, *, geometry):
     """Hertz contact of one ball with the inner and outer raceway."""
-    if not (math.isfinite(ball_load_n) and ball_load_n > 0):
-        raise InputError("--ball-load-n", ball_load_n, "a load > 0 N")
+    if not (math.isfinite(ball_load_n) and 0 < ball_load_n <= MAX_BALL_LOAD_N):
+        raise OptionError("--ball-load-n", ball_load_n,
+                          f"a load in (0, {MAX_BALL_LOAD_N:g}] N")
     bearing, _ = resolve_bearing(designation, geometry)
     result = ball_contacts(bearing, ball_load_n, method=method.value.replace("-", "_"))
-    if plot is not None:
-        save_figure(result.plot()[0], plot)
-    if json_output:
-        _emit_json({"designation": designation, **result.to_dict()})
-        return
     d = result.to_dict()
+    d["warnings"] = _geometry_warnings(bearing) + d["warnings"]
+    out = {"designation": designation, **d}
+    if plot is not None:
+        _save_plot(result, plot)
+    if json_output:
+        _emit_json(out)
+        return
+    _check_finite(out)
     rows = []
     for key, label, unit in (("semi_major_mm", "semi-major axis a", "mm"),
                              ("semi_minor_mm", "semi-minor axis b", "mm"),
@@ -408,11 +720,13 @@ def contact(designation: DesignationArg = None,
                              ("approach_um", "approach delta", "um"),
                              ("stiffness_n_per_um", "stiffness dQ/d(delta)", "N/um")):
         rows.append([label, d["inner"][key], d["outer"][key], unit])
-    console.print(_table(f"Hertz contact, Q = {ball_load_n:g} N, contact angle "
-                         f"{d['contact_angle_deg']:g} deg ({method.value})",
+    console.print(_table(f"{bearing.name or 'bearing'}: Hertz contact, Q = {ball_load_n:g} N, "
+                         f"contact angle {d['contact_angle_deg']:g} deg ({method.value})",
                          ["quantity", "inner", "outer", "unit"], rows))
+    console.print(escape(_geometry_line(bearing, result.contact_angle)))
     console.print(f"ball between both races: total approach {d['total_approach_um']:.4g} um, "
                   f"K_n = {d['ball_load_deflection_constant_n_per_m1_5']:.4g} N/m^1.5")
+    _print_warnings(d["warnings"])
 
 
 def _version(value: bool):
@@ -428,9 +742,15 @@ def _main(version: Annotated[bool, typer.Option("--version", callback=_version, 
 
 
 def main(argv: list[str] | None = None) -> int:
-    """Entry point: run the app; user errors become one line on stderr and exit code 2."""
+    """Entry point: run the app; user errors become one line on stderr and exit code 2.
+
+    With no arguments it prints the help (stdout, exit code 0).  An unexpected failure is
+    one line on stderr and exit code 1 (``BEARINGLAB_DEBUG=1`` shows the traceback)."""
+    args = list(sys.argv[1:] if argv is None else argv)
+    if not args:
+        args = ["--help"]
     try:
-        result = app(args=argv, standalone_mode=False)
+        result = app(args=args, standalone_mode=False)
     except typer.Exit as exc:
         return exc.exit_code
     except typer.Abort:
@@ -443,6 +763,13 @@ def main(argv: list[str] | None = None) -> int:
         text = exc.format_message() if hasattr(exc, "format_message") else str(exc)
         sys.stderr.write("error: " + " ".join(text.split()) + "\n")
         return 2
+    except Exception as exc:  # a bug: say so in one line rather than a traceback
+        if os.environ.get("BEARINGLAB_DEBUG"):
+            raise
+        text = " ".join(str(exc).split())
+        sys.stderr.write(f"error: internal error ({type(exc).__name__}: {text}); please report "
+                         "it with the command line (BEARINGLAB_DEBUG=1 shows the traceback)\n")
+        return 1
     return result if isinstance(result, int) else 0
 
 

@@ -262,7 +262,7 @@ class BallBearing:
     inner_groove_factor, outer_groove_factor : float
         Groove curvature factors f_i, f_o = groove radius / D_w [-], each > 0.5.
     contact_angle : float
-        Nominal contact angle alpha [rad], 0 <= alpha < pi/2.
+        Nominal contact angle alpha [rad], 0 <= alpha <= pi/2 (pi/2: thrust ball bearing).
     diametral_clearance : float or None
         Diametral clearance P_d [m]; negative means interference.
     bore, outside_diameter, width : float or None
@@ -315,8 +315,8 @@ class BallBearing:
                 raise InputError(name, f, "a value in (0.5, 1.0]",
                                  "the groove radius must exceed the ball radius")
         if not (isinstance(self.contact_angle, (int, float, np.floating))
-                and 0.0 <= self.contact_angle < 0.5 * math.pi):
-            raise InputError("contact_angle", self.contact_angle, "an angle in [0, 90) degrees")
+                and 0.0 <= self.contact_angle <= 0.5 * math.pi):
+            raise InputError("contact_angle", self.contact_angle, "an angle in [0, 90] degrees")
         for name in ("inner_arch_angle", "outer_arch_angle"):
             arch = getattr(self, name)
             if not (isinstance(arch, (int, float, np.floating)) and 0.0 <= arch < math.pi / 3):
@@ -347,6 +347,9 @@ class BallBearing:
         d, big_d = self.bore, self.outside_diameter
         if d is not None and big_d is not None and d >= big_d:
             raise InputError("bore", d, f"less than the outside diameter {big_d:.6g} m")
+        if self.is_thrust:
+            self._check_thrust_washers()
+            return
         if d is not None and self.inner_raceway_diameter <= d:
             raise InputError("ball_diameter", self.ball_diameter,
                              "a ball that leaves material under the inner raceway",
@@ -357,6 +360,26 @@ class BallBearing:
                              "a ball that leaves material outside the outer raceway",
                              f"outer groove bottom {self.outer_raceway_diameter * 1e3:.4g} mm "
                              f"is not inside the outside diameter {big_d * 1e3:.4g} mm")
+
+    def _check_thrust_washers(self) -> None:
+        """A thrust bearing's balls run on the faces of its washers: the ball set must clear
+        the shaft (d_m - D_w > d) and the pitch circle lie inside the outside diameter."""
+        d, big_d = self.bore, self.outside_diameter
+        if d is not None and self.pitch_diameter - self.ball_diameter <= d:
+            raise InputError("pitch_diameter", self.pitch_diameter,
+                             f"more than the bore plus the ball diameter "
+                             f"{d + self.ball_diameter:.6g} m",
+                             "the balls of a thrust bearing must clear the shaft")
+        if big_d is not None and self.pitch_diameter >= big_d:
+            raise InputError("pitch_diameter", self.pitch_diameter,
+                             f"less than the outside diameter {big_d:.6g} m")
+
+    @property
+    def is_thrust(self) -> bool:
+        """True for a thrust ball bearing (balls between two washers, ``bearing_type``
+        ``thrust_ball``): its rings are not radial rings, so raceway-versus-bore checks and
+        ring cross-sections do not apply."""
+        return self.bearing_type == "thrust_ball"
 
     # ---- internal geometry
     @property
@@ -415,6 +438,9 @@ class BallBearing:
         return self.ball_material.density * math.pi * self.ball_diameter**3 / 6.0
 
     def _needs_boundary(self, what: str) -> tuple[float, float, float]:
+        if self.is_thrust:
+            raise InputError("bearing_type", self.bearing_type, "a radial bearing",
+                             f"the {what} is modelled for radial rings only")
         for name in ("bore", "outside_diameter", "width"):
             if getattr(self, name) is None:
                 raise InputError(name, None, "a value [m]", f"needed for the {what}")
@@ -477,7 +503,7 @@ class BallBearing:
             "geometry_sources": {k: {"kind": v.kind, "reference": v.reference}
                                  for k, v in self.sources.items()},
         }
-        if None not in (self.bore, self.outside_diameter, self.width):
+        if None not in (self.bore, self.outside_diameter, self.width) and not self.is_thrust:
             s = self.outer_ring_section
             out.update({
                 "inner_ring_mass_g": self.inner_ring_mass * 1e3,

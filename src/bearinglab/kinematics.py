@@ -107,10 +107,16 @@ class DefectFrequencies:
         return float(self.orders[name]) * self.shaft_hz
 
     def to_dict(self) -> dict:
-        """JSON-ready dict: ``<name>_hz`` and ``<name>_order`` for each frequency."""
+        """JSON-ready dict: ``<name>_hz`` and ``<name>_order`` for each frequency, and the
+        geometry used (``ball_count``, ``ball_diameter_mm``, ``pitch_diameter_mm``,
+        ``contact_angle_deg``, ``geometry_source``)."""
+        b = self.bearing
         out = {"speed_rpm": self.shaft_hz * 60.0, "shaft_hz": self.shaft_hz,
                "outer_rotating": self.outer_rotating,
-               "contact_angle_deg": math.degrees(self.contact_angle)}
+               "ball_count": int(b.ball_count), "ball_diameter_mm": b.ball_diameter * 1e3,
+               "pitch_diameter_mm": b.pitch_diameter * 1e3,
+               "contact_angle_deg": math.degrees(self.contact_angle),
+               "geometry_source": b.geometry_source}
         for name in FREQUENCY_NAMES:
             out[f"{name}_hz"] = self.hz(name)
         for name in FREQUENCY_NAMES:

@@ -30,7 +30,9 @@ def test_orders_are_scale_free(z, ratio, alpha, scale):
         assert math.isclose(a[name], b[name], rel_tol=1e-10)
 
 
-radii = st.floats(min_value=1e-4, max_value=1.0)
+# effective radii from 10 um to 100 m: R_y/R_x up to 1e7 (groove factors near 0.5 give
+# R_y of metres against R_x of millimetres)
+radii = st.floats(min_value=1e-5, max_value=1e2)
 loads = st.floats(min_value=1e-3, max_value=1e5)
 
 
@@ -55,3 +57,16 @@ def test_hertz_symmetric_in_the_two_directions(rx, ry, q):
     b = hertz.point_contact(q, ry, rx, 228.6e9)
     assert np.isclose(float(a.approach), float(b.approach), rtol=1e-9)
     assert np.isclose(float(a.max_pressure), float(b.max_pressure), rtol=1e-9)
+
+
+@settings(deadline=None)
+@given(st.floats(min_value=0.0, max_value=8.0))
+def test_exact_ellipticity_solves_its_relation(log10_ratio):
+    ratio = 10.0**log10_ratio
+    k = float(hertz.ellipticity(ratio))
+    assert k >= 1.0 and math.isfinite(k)
+    if k == 1.0:        # the circle, to double precision
+        assert ratio < 1.0 + 1e-14
+    else:
+        residual = math.expm1(float(hertz._log_ratio(math.log(k))) - math.log(ratio))
+        assert abs(residual) < 1e-12

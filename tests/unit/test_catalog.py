@@ -355,3 +355,66 @@ def test_no_family_no_estimate():
 
 def test_result_frame_types():
     assert isinstance(catalog_table(), pd.DataFrame)
+
+
+# ------------------------------------------------------------------------ review fixes
+
+
+def test_iso_family_registries_agree():
+    # The ISO families live twice: the designation reader's table (type, dimension series,
+    # GOST cross reference, suffix group) and the catalogue's (dimension table, rows,
+    # default contact angle). Every key in both must name the same type and series.
+    from bearinglab.designation._tables import FAMILIES as READER_FAMILIES
+
+    shared = set(READER_FAMILIES) & set(FAMILIES)
+    assert "213" in shared and "62" in shared and "511" in shared
+    for key in shared:
+        assert READER_FAMILIES[key].bearing_type == FAMILIES[key].bearing_type, key
+        assert READER_FAMILIES[key].dims == FAMILIES[key].dimension_series, key
+    # the catalogue has nothing the reader cannot read; the reader's double-direction
+    # thrust series have no dimension table yet
+    assert set(FAMILIES) - set(READER_FAMILIES) == set()
+    assert set(READER_FAMILIES) - set(FAMILIES) == {"522", "523", "524"}
+
+
+@pytest.mark.parametrize("text", ["6205", "6306", "6205 C"])  # GOST 7206 is tapered roller
+def test_gost_angular_contact_without_angle_variant_gets_no_iso_default(text):
+    from bearinglab.catalog import GeometryNeeded
+
+    with pytest.raises(GeometryNeeded) as err:
+        bearing_from_designation(text, system="gost" if text != "6205 C" else None)
+    assert err.value.needed == ("contact_angle",) and "design variant" in str(err.value)
+    b, des = bearing_from_designation(text, system="gost" if text != "6205 C" else None,
+                                      overrides={"contact_angle": math.radians(26)})
+    assert des.system == "gost" and b.contact_angle == pytest.approx(math.radians(26))
+    # the angle a GOST variant writes is used; ISO 72 keeps its family default (documented)
+    assert bearing_from_designation("6-36209")[0].contact_angle == pytest.approx(
+        math.radians(12))
+    assert bearing_from_designation("7206")[0].contact_angle == pytest.approx(math.radians(40))
+
+
+def test_thrust_ball_bearing_from_explicit_geometry():
+    from bearinglab.catalog import GeometryNeeded
+
+    with pytest.raises(GeometryNeeded) as err:
+        bearing_from_designation("51105", overrides={"ball_count": 15})
+    assert err.value.needed == ("ball_diameter", "pitch_diameter")
+    assert "internal-geometry model" in str(err.value)
+    b, des = bearing_from_designation("51105", overrides={
+        "ball_count": 15, "ball_diameter": 6e-3, "pitch_diameter": 33.5e-3})
+    assert b.bearing_type == des.bearing_type == "thrust_ball"
+    assert b.contact_angle == pytest.approx(math.pi / 2)
+    assert b.sources["contact_angle"].kind == "default"
+    assert (b.bore, b.outside_diameter, b.width) == pytest.approx((0.025, 0.042, 0.011))
+    assert b.sources["bore"].reference.startswith("ISO 104")
+    assert b.sources["inner_groove_factor"].kind == "default"
+    with pytest.raises(CatalogError, match="double-direction"):
+        bearing_from_designation("52205", overrides={
+            "ball_count": 15, "ball_diameter": 6e-3, "pitch_diameter": 33.5e-3})
+
+
+@pytest.mark.parametrize("text", ["NU2210", "22310", "30205", "51205", "2205", "1205"])
+def test_catalogue_messages_carry_no_python_api_hint(text):
+    with pytest.raises(CatalogError) as err:
+        bearing_from_designation(text)
+    assert "boundary_dimensions()" not in str(err.value)

@@ -2,6 +2,7 @@
 
 import json
 import math
+import os
 import subprocess
 import sys
 
@@ -127,8 +128,8 @@ def test_readable_output(capsys):
     (["contact", "6205", "--ball-load-n", "0"], "--ball-load-n"),
     (["info", "6205-XYZ"], "XYZ"),
     (["info", "6205", "--system", "din"], "system"),
-    (["info", "6205", "--balls", "40"], "ball_count"),
-    (["info", "6205", "--inner-groove-factor", "0.5"], "inner_groove_factor"),
+    (["info", "6205", "--balls", "40"], "--balls = 40"),
+    (["info", "6205", "--inner-groove-factor", "0.5"], "--inner-groove-factor = 0.5"),
     (["frequencies", "--balls", "9", "--speed-rpm", "100"], "--ball-diameter-mm"),
     (["contact", "--geometry", "/nonexistent.toml", "--ball-load-n", "1"], "--geometry"),
 ])
@@ -170,3 +171,266 @@ def test_info_catalogue_name_and_dimension_only_bearings(capsys):
     d = run_json(capsys, "info", "1205")
     assert d["bearing_type"] == "self_aligning_ball" and d["outside_diameter_mm"] == 52
     assert d["ball_count"] is None and "single-row" in d["no_geometry_reason"]
+
+
+
+# ------------------------------------------------------------------ review fixes
+
+
+def one_error_line(capsys, args, code=2):
+    assert main(args) == code
+    captured = capsys.readouterr()
+    lines = captured.err.strip().splitlines()
+    assert len(lines) == 1, captured.err
+    assert "Traceback" not in captured.err and captured.out == ""
+    return lines[0]
+
+
+def _no_nan(text):
+    def refuse(name):
+        raise AssertionError(f"{name} in JSON")
+    return json.loads(text, parse_constant=refuse)
+
+
+GEOMETRY_FILE_ERRORS = [
+    ("balls = true", "--geometry balls = True", "integer"),
+    ("balls = 9.0", "--geometry balls = 9", "integer"),
+    ('balls = "9"', "--geometry balls = '9'", "integer"),
+    ("ball_count = 9.5", "--geometry ball_count = 9.5", "integer"),
+    ('ball_diameter_mm = "7.94"', "--geometry ball_diameter_mm = '7.94'", "number"),
+    ("ball_diameter_mm = [7.94]", "--geometry ball_diameter_mm = [7.94]", "number"),
+    ("ball_diameter_mm = true", "--geometry ball_diameter_mm = True", "number"),
+    ("ball_diameter_mm = inf", "--geometry ball_diameter_mm = inf", "finite"),
+    ("pitch_diameter_mm = nan", "--geometry pitch_diameter_mm = nan", "finite"),
+    ("[pitch_diameter_mm]\nvalue = 38.5", "--geometry pitch_diameter_mm", "number"),
+    ('system = "din"', "--geometry system = 'din'", "'gost' or 'iso'"),
+    ("name = 3", "--geometry name = 3", "text"),
+    ('designation = "6205"', "--geometry key 'designation'", "one of"),
+    ('geometry = "other.toml"', "--geometry key 'geometry'", "one of"),
+    ("[bearing]\nballs = 9", "--geometry key 'bearing'", "one of"),
+    ("balls = 9\nball_count = 9", "--geometry key 'ball_count'", "once"),
+    ("clearance_um = -1000", "--geometry clearance_um = -1000", "[-397, 635] um"),
+]
+
+
+@pytest.mark.parametrize("content, start, words", GEOMETRY_FILE_ERRORS,
+                         ids=[c[0].split("\n")[0] for c in GEOMETRY_FILE_ERRORS])
+def test_geometry_file_values_are_checked(tmp_path, capsys, content, start, words):
+    f = tmp_path / "g.toml"
+    f.write_text(content + "\n", encoding="utf-8")
+    line = one_error_line(capsys, ["info", "6205", "--geometry", str(f)])
+    assert line.startswith("error: " + start) and words in line
+
+
+def test_geometry_file_that_cannot_be_read(tmp_path, capsys):
+    assert "a TOML file, not a directory" in one_error_line(
+        capsys, ["info", "--geometry", str(tmp_path)])
+    latin1 = tmp_path / "latin1.toml"
+    latin1.write_bytes("name = 'Kugellager größe 6205'\n".encode("latin-1"))
+    assert "UTF-8" in one_error_line(capsys, ["info", "--geometry", str(latin1)])
+    if hasattr(os, "geteuid") and os.geteuid() != 0:        # root reads anything
+        locked = tmp_path / "locked.toml"
+        locked.write_text("balls = 9\n")
+        locked.chmod(0)
+        assert "readable" in one_error_line(capsys, ["info", "--geometry", str(locked)])
+
+
+def test_geometry_file_system_and_name_are_honoured(tmp_path, capsys):
+    f = tmp_path / "g.toml"
+    f.write_text('system = "gost"\nname = "test rig bearing"\n', encoding="utf-8")
+    d = run_json(capsys, "info", "310", "--geometry", str(f))
+    assert d["system"] == "gost" and d["name"] == "test rig bearing"
+    # the command line wins over the file
+    d = run_json(capsys, "info", "6205", "--geometry", str(f), "--system", "iso")
+    assert d["system"] == "iso"
+
+
+def test_full_width_digits_work_and_other_digits_are_one_line(capsys):
+    d = run_json(capsys, "info", "６２０５")
+    assert d["bore_mm"] == 25 and d["ball_count"] == 9
+    line = one_error_line(capsys, ["info", "٦٢٠٥"])
+    assert "'٦٢٠٥'" in line and "0-9" in line
+
+
+def test_extreme_groove_factor_is_solved(capsys):
+    d = run_json(capsys, "contact", "6205", "--ball-load-n", "1000",
+                 "--inner-groove-factor", "0.500005")
+    assert d["inner"]["ellipticity"] > 900 and math.isfinite(d["inner"]["approach_um"])
+    assert any("groove shoulder" in w for w in d["warnings"])
+
+
+@pytest.mark.parametrize("args, start, words", [
+    (["contact", "6205", "--ball-load-n", "1e300"], "--ball-load-n = 1e+300", "(0, 1e+07] N"),
+    (["contact", "6205", "--ball-load-n", "inf"], "--ball-load-n = inf", "N"),
+    (["contact", "6205", "--ball-load-n", "nan"], "--ball-load-n = nan", "N"),
+    (["frequencies", "6205", "--speed-rpm", "1e308"], "--speed-rpm = 1e+308",
+     "[0, 1e+06] rpm"),
+    (["frequencies", "6205", "--speed-rpm", "1e300", "--json"], "--speed-rpm", "rpm"),
+    (["info", "--balls", "9", "--ball-diameter-mm", "1e300", "--pitch-diameter-mm", "40"],
+     "--ball-diameter-mm = 1e+300", "(0, 100000] mm"),
+    (["info", "6205", "--elastic-modulus-gpa", "1e300"], "--elastic-modulus-gpa = 1e+300",
+     "GPa"),
+    (["info", "6205", "--density-kg-m3", "-1"], "--density-kg-m3 = -1", "kg/m^3"),
+    (["info", "6205", "--poisson-ratio", "0.5"], "--poisson-ratio = 0.5", "[0, 0.5)"),
+    (["info", "6205", "--clearance-um", "nan"], "--clearance-um = nan", "finite"),
+])
+def test_huge_and_non_finite_inputs_are_refused_with_a_range(capsys, args, start, words):
+    line = one_error_line(capsys, args)
+    assert line.startswith("error: " + start) and words in line
+
+
+def test_json_is_finite_at_the_limits(capsys):
+    for args in (["contact", "6205", "--ball-load-n", "1e7"],
+                 ["contact", "--balls", "3", "--ball-diameter-mm", "0.001",
+                  "--pitch-diameter-mm", "100000", "--ball-load-n", "1e7"],
+                 ["frequencies", "6205", "--speed-rpm", "1e6"],
+                 ["info", "6205", "--elastic-modulus-gpa", "10000", "--density-kg-m3", "1e5"]):
+        assert main([*args, "--json"]) == 0, args
+        _no_nan(capsys.readouterr().out)
+
+
+@pytest.mark.parametrize("args", [[], ["--help"]])
+def test_no_arguments_print_the_help(capsys, args):
+    assert main(args) == 0
+    captured = capsys.readouterr()
+    assert "Usage" in captured.out and "frequencies" in captured.out
+    assert captured.out.count("\n") > 5 and captured.err == ""
+
+
+def test_no_arguments_as_a_program():
+    done = subprocess.run([sys.executable, "-m", "bearinglab.cli"], capture_output=True,
+                          text=True, check=False)
+    assert done.returncode == 0 and "Usage" in done.stdout and done.stderr == ""
+
+
+NOT_IN_CATALOGUE = ["4-3003124P", "67206", "6-18030PR20P", "3205", "23024", "6330"]
+
+
+@pytest.mark.parametrize("text", NOT_IN_CATALOGUE)
+def test_info_decodes_designations_without_catalogue_dimensions(capsys, text):
+    d = run_json(capsys, "info", text)
+    assert d["bore_mm"] == d["decoded"]["bore_mm"] > 0
+    assert d["ball_count"] is None and d["geometry_source"] is None
+    assert d["outside_diameter_mm"] is None and d["dimensions"] is None
+    assert d["no_dimensions_reason"] and d["no_geometry_reason"]
+    assert main(["info", text]) == 0
+    out = capsys.readouterr().out
+    assert d["decoded"]["description"].split(",")[0] in " ".join(out.split())
+    assert "no boundary dimensions" in out and "no internal geometry" in out
+
+
+# seed 003's worked examples, read as GOST 3189-89 (the system the seed describes)
+SEED_003 = [
+    ("7206", "tapered_roller", 30.0),
+    ("67206", "tapered_roller", 30.0),
+    ("311", "radial_ball", 55.0),
+    ("6-36209", "angular_contact_ball", 45.0),
+    ("4-12210", "cylindrical_roller", 50.0),
+    ("4-3003124P", "spherical_roller", 120.0),
+    ("60205", "radial_ball", 25.0),
+    ("80205", "radial_ball", 25.0),
+    ("160205", "radial_ball", 25.0),
+    ("180205", "radial_ball", 25.0),
+    ("6-18030PR20P", "thrust_ball", 150.0),
+]
+
+
+@pytest.mark.parametrize("text, bearing_type, bore_mm", SEED_003, ids=[c[0] for c in SEED_003])
+def test_info_json_of_every_seed_003_example(capsys, text, bearing_type, bore_mm):
+    d = run_json(capsys, "info", text, "--system", "gost")
+    assert INFO_KEYS <= d.keys()
+    assert d["system"] == "gost" and d["bearing_type"] == bearing_type
+    assert d["decoded"]["bore_mm"] == bore_mm
+    if d["ball_count"] is None:
+        assert d["no_geometry_reason"]
+    else:
+        assert d["geometry_source"] in ("catalog", "estimated", "mixed")
+
+
+@pytest.mark.parametrize("args, message", [
+    (["info", "6205", "--contact-angle-deg", "95"],
+     "--contact-angle-deg = 95 is not allowed: expected an angle in [0, 90] degrees"),
+    (["info", "6205", "--clearance-um", "-1000"],
+     "--clearance-um = -1000 is not allowed: expected a value in [-397, 635] um"),
+    (["info", ""], "DESIGNATION = '' is not allowed"),
+    (["info", "6205", "--ball-diameter-mm", "50"],
+     "--ball-diameter-mm = 50 is not allowed: expected less than the pitch diameter 39.0398 mm"),
+    (["info", "6205", "--outside-diameter-mm", "20"],
+     "--outside-diameter-mm = 20 is not allowed: expected more than the bore 25 mm"),
+    (["info", "6205", "--ball-diameter-mm", "-2"], "--ball-diameter-mm = -2"),
+    (["frequencies", "--balls", "9", "--ball-diameter-mm", "7.94", "--pitch-diameter-mm",
+      "39", "--contact-angle-deg", "-1", "--speed-rpm", "10"], "--contact-angle-deg = -1"),
+])
+def test_errors_name_the_option_with_its_value_in_its_units(capsys, args, message):
+    line = one_error_line(capsys, args)
+    assert line.startswith("error: " + message), line
+    assert "diametral_clearance" not in line and "contact_angle =" not in line
+
+
+@pytest.mark.parametrize("command, extra", [
+    ("frequencies", ["--speed-rpm", "1797"]), ("contact", ["--ball-load-n", "1000"])])
+def test_results_carry_the_geometry_and_its_source(capsys, command, extra):
+    d = run_json(capsys, command, "6205", *extra)
+    assert (d["ball_count"], d["ball_diameter_mm"]) == (9, pytest.approx(7.94, abs=0.01))
+    assert d["pitch_diameter_mm"] == pytest.approx(39.04, abs=0.01)
+    assert d["contact_angle_deg"] == 0 and d["geometry_source"] == "mixed"
+    assert d["warnings"] == []
+    assert main([command, "6205", *extra]) == 0
+    out = " ".join(capsys.readouterr().out.split())
+    assert "geometry (mixed): Z = 9, D_w = 7.94 mm, d_m = 39.04 mm" in out
+
+
+def test_estimated_ball_count_of_an_angular_contact_bearing_is_warned(capsys):
+    d = run_json(capsys, "frequencies", "7206", "--speed-rpm", "1000")
+    assert d["geometry_source"] == "mixed" and d["contact_angle_deg"] == 40
+    assert any("lower bound" in w for w in d["warnings"])
+    assert main(["frequencies", "7206", "--speed-rpm", "1000"]) == 0
+    assert "warning: ball count Z = " in capsys.readouterr().out
+    d = run_json(capsys, "frequencies", "7206", "--speed-rpm", "1000", "--balls", "14")
+    assert not any("lower bound" in w for w in d["warnings"])
+
+
+def test_contact_warns_when_the_ellipse_leaves_the_groove(capsys):
+    d = run_json(capsys, "contact", "6205", "--ball-load-n", "20000")
+    assert any(w.startswith("inner contact: the contact ellipse runs over the groove shoulder")
+               for w in d["warnings"])
+    assert main(["contact", "6205", "--ball-load-n", "20000"]) == 0
+    assert "warning: inner contact" in capsys.readouterr().out
+
+
+def test_thrust_ball_bearing_with_explicit_geometry(capsys):
+    args = ["frequencies", "51105", "--speed-rpm", "1000", "--balls", "15",
+            "--ball-diameter-mm", "6", "--pitch-diameter-mm", "38"]
+    d = run_json(capsys, *args)
+    assert d["contact_angle_deg"] == 90 and d["ball_count"] == 15
+    assert d["bpfo_order"] == pytest.approx(7.5) and d["bpfi_order"] == pytest.approx(7.5)
+    assert d["ftf_order"] == pytest.approx(0.5)
+    # this example's balls (32-44 mm) reach past the washers' 42 mm: said, not refused
+    assert any("outside diameter 42 mm" in w for w in d["warnings"])
+    i = run_json(capsys, "info", "51105", "--balls", "15", "--ball-diameter-mm", "6",
+                 "--pitch-diameter-mm", "33.5")
+    assert i["bearing_type"] == "thrust_ball" and i["outside_diameter_mm"] == 42
+    assert i["width_mm"] == 11 and i["warnings"] == []
+    line = one_error_line(capsys, ["frequencies", "51105", "--speed-rpm", "1000"])
+    assert "give --balls, --ball-diameter-mm and --pitch-diameter-mm" in line
+    assert "boundary_dimensions()" not in line
+
+
+def test_gost_angular_contact_bearing_asks_for_the_angle(capsys):
+    line = one_error_line(capsys, ["frequencies", "6205", "--system", "gost",
+                                   "--speed-rpm", "1000"])
+    assert line.endswith("give --contact-angle-deg")
+    d = run_json(capsys, "frequencies", "6205", "--system", "gost", "--speed-rpm", "1000",
+                 "--contact-angle-deg", "26")
+    assert d["contact_angle_deg"] == 26
+    i = run_json(capsys, "info", "6205", "--system", "gost")     # dimensions only
+    assert i["ball_count"] is None and "--contact-angle-deg" in i["no_geometry_reason"]
+
+
+def test_unwritable_plot_is_one_line(tmp_path, capsys):
+    a_file = tmp_path / "not_a_directory"
+    a_file.write_text("x")
+    line = one_error_line(capsys, ["frequencies", "6205", "--speed-rpm", "100", "--plot",
+                                   str(a_file / "f.png")])
+    assert line.startswith("error: --plot = ") and "writable" in line
+    assert list(tmp_path.iterdir()) == [a_file]

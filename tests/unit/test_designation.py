@@ -435,3 +435,79 @@ def test_description_example() -> None:
 def test_iso_reader_refuses_gost_only_forms(text: str) -> None:
     with pytest.raises(DesignationError):
         parse_iso(text)
+
+
+# ---------------------------------------------------------------- review fixes
+
+
+def test_full_width_digits_are_normalised() -> None:
+    # NFKC turns full-width digits and letters into ASCII; the reading is that of "6205"
+    for text, plain in (("６２０５", "6205"), ("６２０５－２ＲＳ", "6205-2RS"), ("１８０２０５", "180205")):
+        a, b = parse(text).to_dict(), parse(plain).to_dict()
+        assert a.pop("text") == text
+        b.pop("text")
+        # notes quote the text as written ("cannot read '－２ＲＳ'")
+        assert len(a.pop("notes")) == len(b.pop("notes"))
+        for alt in a["alternatives"] + b["alternatives"]:
+            alt.pop("text")
+        assert a == b
+
+
+@pytest.mark.parametrize("text, part", [("٦٢٠٥", "٦٢٠٥"), ("62٠5", "٠"), ("۶۲۰۵", "۶۲۰۵")])
+def test_other_scripts_digits_are_refused_naming_them(text: str, part: str) -> None:
+    for reader in (parse, parse_gost, parse_iso):
+        with pytest.raises(DesignationError) as err:
+            reader(text)
+        assert err.value.part == part and "0-9" in str(err.value)
+
+
+def test_a_reader_that_fails_says_what_it_could_not_read() -> None:
+    d = parse("6205 C")  # С: closed and greased in GOST; no C suffix on an ISO 62 bearing
+    assert d.system == "gost" and d.bearing_type == "angular_contact_ball"
+    assert any(n.startswith("not an ISO designation: cannot read 'C'") for n in d.notes)
+    i = parse("6205-2RS")
+    assert any(n.startswith("not a GOST 3189-89 designation: cannot read '-2RS'")
+               for n in i.notes)
+    assert not any(n.startswith("not a") for n in parse("1205").notes)  # both readers agree
+
+
+@pytest.mark.parametrize(
+    "text, part, words",
+    [
+        ("6205 2RS 2Z", "2Z", "conflicts with 2RS"),
+        ("6205-Z-2Z", "2Z", "conflicts with Z"),
+        ("6205-2RS-Z", "Z", "conflicts"),
+        ("7206 B B", "B", "repeated"),
+        ("6205 C3 C3", "C3", "repeated"),
+        ("180205ЕЕ", "Е", "repeated"),
+        ("6205-2RS-", "-", "separator"),
+        ("6205/", "/", "separator"),
+        ("626 --", "--", "separator"),
+        ("6205--2RS", "--", "separator"),
+        ("0", "0", "too short"),
+        ("00", "00", "too short"),
+        ("1", "1", "too short"),
+        ("6-0", "0", "too short"),
+    ],
+)
+def test_contradictory_and_junk_designations_are_refused(text: str, part: str,
+                                                         words: str) -> None:
+    with pytest.raises(DesignationError) as err:
+        parse(text)
+    assert err.value.part == part and words in str(err.value)
+
+
+def test_one_shield_and_one_seal_are_still_read() -> None:
+    d = parse("6205 Z RS")  # two sides, two closures: not a contradiction
+    assert d.closures == "unknown"
+
+
+@pytest.mark.parametrize("text", ["6205 ZNR", "6205 NR 2Z", "6205-2ZNR", "6205 NR"])
+def test_snap_ring_stays_in_the_description(text: str) -> None:
+    assert "snap ring" in parse(text).description
+
+
+def test_spherical_213_family_is_read() -> None:
+    d = parse_iso("21305")
+    assert (d.series, d.bearing_type, d.dimension_series, d.bore_mm) == (
+        "213", "spherical_roller", "03", 25.0)

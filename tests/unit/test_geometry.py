@@ -70,9 +70,13 @@ def test_ring_section_matches_rectangle_minus_circular_segment():
 def test_masses():
     b = BallBearing(**CWRU_6205)
     assert b.ball_mass == pytest.approx(7830 * math.pi * 7.94e-3**3 / 6)
-    # a 6205 weighs about 128 g (SKF); rings + 9 balls must land near that
+    # SKF lists 0.128 kg for an open 6205. Rings + 9 balls (we get 44.9 + 64.4 + 18.5 =
+    # 127.8 g) leave out the cage (a pressed-steel one weighs a few grams) and count the
+    # ring corners the chamfers remove; the shoulder height is an estimate
+    # (GROOVE_DEPTH_RATIO), worth ~+-5 % of the ring masses. +-12 % covers these honestly.
     total = b.inner_ring_mass + b.outer_ring_mass + 9 * b.ball_mass
-    assert 0.09 < total < 0.14
+    print(f"6205 rings + balls: {total * 1e3:.1f} g (SKF: 128 g with cage)")
+    assert total == pytest.approx(0.128, rel=0.12)
     s = b.outer_ring_section
     assert 0.5 * b.outer_raceway_diameter < s.mean_radius < 0.5 * b.outside_diameter
 
@@ -97,7 +101,8 @@ def test_hybrid_bearing_modulus():
     ({"pitch_diameter": 5e-3}, "pitch_diameter", "more than the ball diameter"),
     ({"inner_groove_factor": 0.5}, "inner_groove_factor", "(0.5, 1.0]"),
     ({"outer_groove_factor": 0.49}, "outer_groove_factor", "(0.5, 1.0]"),
-    ({"contact_angle": math.pi / 2}, "contact_angle", "[0, 90)"),
+    ({"contact_angle": math.pi / 2 + 1e-9}, "contact_angle", "[0, 90]"),
+    ({"contact_angle": -0.01}, "contact_angle", "[0, 90]"),
     ({"diametral_clearance": 1e-3}, "diametral_clearance", "loose"),
     ({"bore": 60e-3}, "bore", "less than the outside diameter"),
     ({"ball_diameter": 15e-3, "ball_count": 5}, "ball_diameter", "bore"),
@@ -124,3 +129,34 @@ def test_to_dict_has_units_and_sources():
     assert d["ball_diameter_mm"] == pytest.approx(7.94)
     assert d["geometry_source"] == "user"
     assert "outer_ring_mass_g" in d
+
+
+def test_thrust_ball_bearing_at_90_degrees_has_finite_derived_quantities():
+    b = BallBearing(ball_count=15, ball_diameter=6e-3, pitch_diameter=33.5e-3,
+                    contact_angle=math.pi / 2, bore=25e-3, outside_diameter=42e-3, width=11e-3,
+                    bearing_type="thrust_ball")
+    d = b.to_dict()
+    numbers = [v for v in d.values() if isinstance(v, float)]
+    assert numbers and all(math.isfinite(v) for v in numbers)
+    assert d["contact_angle_deg"] == pytest.approx(90.0)
+    assert b.free_contact_angle == pytest.approx(math.pi / 2)
+    assert b.gamma == pytest.approx(0.0, abs=1e-15)
+    for race in ("inner", "outer"):       # R_x = D_w/2 on both washers
+        rx, ry = b.contact_radii(race)
+        assert float(rx) == pytest.approx(3e-3) and math.isfinite(float(ry))
+    # ring cross-sections are modelled for radial rings only
+    assert "outer_ring_mass_g" not in d
+    with pytest.raises(InputError, match="radial"):
+        _ = b.outer_ring_section
+
+
+def test_thrust_balls_must_clear_the_shaft():
+    with pytest.raises(InputError) as err:
+        BallBearing(ball_count=12, ball_diameter=6e-3, pitch_diameter=30e-3,
+                    contact_angle=math.pi / 2, bore=25e-3, outside_diameter=42e-3,
+                    bearing_type="thrust_ball")
+    assert err.value.parameter == "pitch_diameter" and "shaft" in str(err.value)
+    with pytest.raises(InputError, match="less than the outside diameter"):
+        BallBearing(ball_count=12, ball_diameter=6e-3, pitch_diameter=43e-3,
+                    contact_angle=math.pi / 2, bore=25e-3, outside_diameter=42e-3,
+                    bearing_type="thrust_ball")

@@ -15,7 +15,7 @@
 Core API in SI units (m, rad); the CSV files hold millimetres as catalogues print them.
 """
 
-from .build import bearing_from_designation
+from .build import GeometryNeeded, bearing_from_designation
 from .estimate import EstimatedGeometry, estimate_internal_geometry
 from .families import FAMILIES, Family
 from .lookup import (
@@ -29,7 +29,8 @@ from .lookup import (
 )
 
 __all__ = [
-    "FAMILIES", "BoundaryDimensions", "EstimatedGeometry", "Family", "PublishedGeometry",
+    "FAMILIES", "BoundaryDimensions", "EstimatedGeometry", "Family", "GeometryNeeded",
+    "PublishedGeometry",
     "bearing_from_designation", "boundary_dimensions", "catalog_table",
     "estimate_internal_geometry", "published_geometries", "published_geometry",
     "radial_clearance",

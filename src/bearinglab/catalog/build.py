@@ -17,6 +17,15 @@ C2, CN, C3, C4, C5, or P62/P63/P52/P53), CN when none is written, marked
 carry a clearance-group sign in the prefix (``А125-205``: group 2); its correspondence to
 the ISO groups is not verified here, so they get CN and the source says so.
 Angular-contact bearings keep the clearance BallBearing derives from the contact angle.
+
+Contact angle: the designation's (ISO suffix A, B, C, AC...; GOST design variant 36xxx,
+46xxx, 66xxx), else the ISO family default (72/73/70/718/719: 40 deg, the SKF/FAG "B"
+execution; QJ: 35 deg), 90 deg for thrust ball bearings, 0 for deep-groove bearings.  A
+GOST angular contact bearing without a contact-angle variant (e.g. 6205 or 7206 read as
+GOST) gets no default: the ISO family's 40 deg is not a GOST design, so the caller must
+give the angle.  Thrust ball bearings (ISO 511-514, GOST type 8) are built only from
+explicit ball_count, ball_diameter and pitch_diameter, with the catalogue's boundary
+dimensions (d, D and the height T as ``width``) and assumed groove factors.
 """
 
 from __future__ import annotations
@@ -56,7 +65,25 @@ _INTERNAL = ("ball_count", "ball_diameter", "pitch_diameter", "inner_groove_fact
              "outer_groove_factor")
 
 
-def _check_type(des: Any) -> None:
+class GeometryNeeded(CatalogError):
+    """The catalogue cannot give some values; the caller must give them as overrides.
+
+    ``needed`` lists the BallBearing keywords to give (the command line maps them to its
+    options), ``reason`` says why, without the "give ..." clause.
+    """
+
+    def __init__(self, reason: str, needed: tuple[str, ...]) -> None:
+        self.reason = reason
+        self.needed = tuple(needed)
+        super().__init__(f"{reason}; give {', '.join(self.needed)} as overrides")
+
+
+#: What a thrust ball bearing needs from the caller: the catalogue estimates no thrust
+#: geometry, so the balls and pitch circle must be given.
+THRUST_NEEDS = ("ball_count", "ball_diameter", "pitch_diameter")
+
+
+def _check_type(des: Any, overrides: dict) -> None:
     btype = getattr(des, "bearing_type", None)
     text = getattr(des, "text", "?")
     if btype in BALL_TYPES:
@@ -66,13 +93,23 @@ def _check_type(des: Any) -> None:
             raise CatalogError(f"{text!r} is a {fam.rows}-row bearing (family {series}): only "
                                "single-row ball bearings have an internal-geometry model yet")
         return
-    if btype in ("self_aligning_ball", "thrust_ball"):
-        raise CatalogError(f"{text!r} is a {btype.replace('_', ' ')} bearing: only single-row "
-                           "radial and angular-contact ball bearings have an internal-geometry "
-                           "model yet (boundary_dimensions() still gives its dimensions)")
+    if btype == "thrust_ball":
+        if any("double-direction" in meaning for _, meaning in getattr(des, "parts", ())):
+            raise CatalogError(f"{text!r} is a double-direction thrust ball bearing: only "
+                               "single-direction (one row) thrust ball bearings have an "
+                               "internal-geometry model")
+        missing = tuple(k for k in THRUST_NEEDS if k not in overrides)
+        if missing:
+            raise GeometryNeeded(f"{text!r} is a thrust ball bearing: no internal-geometry "
+                                 "model estimates its balls and pitch circle", missing)
+        return
+    if btype == "self_aligning_ball":
+        raise CatalogError(f"{text!r} is a self-aligning (double-row) ball bearing: only "
+                           "single-row radial, angular-contact and four-point ball bearings, and "
+                           "thrust ball bearings with explicit geometry, have an "
+                           "internal-geometry model yet")
     raise CatalogError(f"{text!r} is a {str(btype).replace('_', ' ')} bearing: only ball "
-                       "bearings have an internal-geometry model yet (boundary_dimensions() "
-                       "still gives its dimensions)")
+                       "bearings have an internal-geometry model yet")
 
 
 def _by_name(text: str) -> PublishedGeometry | None:
@@ -88,6 +125,13 @@ def _contact_angle_default(des: Any) -> tuple[float | None, Source | None]:
         return None, None
     if getattr(des, "contact_angle", None) is not None:
         return float(des.contact_angle), Source("catalog", f"designation {des.text!r}")
+    btype = getattr(des, "bearing_type", None)
+    if btype == "thrust_ball":
+        return math.pi / 2, Source("default", "thrust ball bearing: nominal contact angle 90 deg")
+    if btype == "angular_contact_ball" and getattr(des, "system", None) == "gost":
+        # GOST writes the angle as the design variant (36xxx 12, 46xxx 26, 66xxx 36 deg);
+        # without one the ISO family defaults (SKF/FAG 40 deg) would be a guess.
+        return None, None
     fam = FAMILIES.get(getattr(des, "series", None))
     if fam is not None and fam.default_contact_angle is not None:
         return fam.default_contact_angle, Source(
@@ -184,10 +228,15 @@ def bearing_from_designation(text: str, system: str | None = None,
     Raises
     ------
     CatalogError
-        For roller, thrust, self-aligning or double-row bearings (no internal-geometry
-        model yet), when neither the catalogue nor the overrides give enough to build
-        the bearing, or when the designation names a clearance group the ISO 5753-1
-        table has no value for at that bore (C1; C4 or C5 below 6 mm; bores over 140 mm).
+        For roller, self-aligning or double-row bearings (no internal-geometry model
+        yet), or when the designation names a clearance group the ISO 5753-1 table has no
+        value for at that bore (C1; C4 or C5 below 6 mm; bores over 140 mm).
+    GeometryNeeded
+        (a CatalogError) When neither the catalogue nor the overrides give enough to
+        build the bearing: a thrust ball bearing without ball_count, ball_diameter and
+        pitch_diameter overrides; a GOST angular contact bearing without a contact-angle
+        design variant (6205, 7206 read as GOST) and no contact_angle override; a size the
+        estimate cannot reach.  ``needed`` names the overrides to give.
     InputError
         For an unknown override keyword or values the BallBearing refuses.
     """
@@ -203,7 +252,7 @@ def bearing_from_designation(text: str, system: str | None = None,
             des = _parse(named.designation, "iso")
     else:
         des = _parse(text, system)
-        _check_type(des)
+        _check_type(des, overrides)
         row = published_geometry(des)
 
     values: dict[str, Any] = {}
@@ -236,6 +285,11 @@ def bearing_from_designation(text: str, system: str | None = None,
     angle, angle_source = _contact_angle_default(des)
     if angle is not None and angle_source is not None:
         put("contact_angle", angle, angle_source)
+    if ("contact_angle" not in values and getattr(des, "system", None) == "gost"
+            and getattr(des, "bearing_type", None) == "angular_contact_ball"):
+        raise GeometryNeeded(f"{text!r} read as GOST 3189-89 is an angular contact ball bearing "
+                             "without a contact-angle design variant (36xxx = 12, 46xxx = 26, "
+                             "66xxx = 36 deg), so its contact angle is not known", ("contact_angle",))
 
     clearance_default = Source("default", "not published: BallBearing derives it from the "
                                           "contact angle (zero for a radial bearing)")
@@ -253,14 +307,20 @@ def bearing_from_designation(text: str, system: str | None = None,
         if dims is None or "bore" not in values or "outside_diameter" not in values:
             reason = (str(dims_error) if dims_error is not None else
                       "no ISO family and bore to estimate from")
-            raise CatalogError(f"{text!r}: cannot estimate the internal geometry ({reason}); "
-                               f"give {', '.join(missing)} as overrides")
+            raise GeometryNeeded(f"{text!r}: cannot estimate the internal geometry ({reason})",
+                                 tuple(k for k in missing if k in THRUST_NEEDS))
         btype = getattr(des, "bearing_type", "radial_ball")
         est = estimate_internal_geometry(values["bore"], values["outside_diameter"],
                                          dims.dimension_series or "", btype,
                                          values.get("contact_angle"))
         for name, value in est.as_kwargs().items():
             put(name, value, Source("estimated", ESTIMATE_METHOD))
+    if getattr(des, "bearing_type", None) == "thrust_ball":
+        assumed = Source("default", f"deep-groove values f_i = {INNER_GROOVE_FACTOR}, "
+                                    f"f_o = {OUTER_GROOVE_FACTOR} assumed for a thrust ball "
+                                    "bearing (not estimated)")
+        put("inner_groove_factor", INNER_GROOVE_FACTOR, assumed)
+        put("outer_groove_factor", OUTER_GROOVE_FACTOR, assumed)
     put("inner_groove_factor", INNER_GROOVE_FACTOR, Source("estimated", ESTIMATE_METHOD))
     put("outer_groove_factor", OUTER_GROOVE_FACTOR, Source("estimated", ESTIMATE_METHOD))
     if "contact_angle" not in values:

@@ -4,16 +4,25 @@ Layer 3 (analysis): takes the bearing model and a ball load and returns a result
 all physics is in :mod:`bearinglab.contact.hertz` and :mod:`bearinglab.geometry`.
 Source: Harris & Kotzalas, *Essential Concepts of Bearing Technology*, 5th ed., 2007,
 ch. 6 (ball-raceway contacts, K_n for a ball between both races).
+
+Validity: Hertz theory assumes the contact ellipse lies inside the groove.  The result
+warns (``warnings``, also in ``to_dict()``) when the ellipse runs over the groove
+shoulder, by the criterion of the load-distribution model (:mod:`bearinglab.quasistatic`):
+|alpha - alpha_g| + a/(f D_w) > arccos(1 - h/(f D_w)), with a the semi-major axis (across
+the groove), f D_w the groove radius, h = GROOVE_DEPTH_RATIO D_w the groove depth (an
+estimate, see :data:`bearinglab.geometry.GROOVE_DEPTH_RATIO`) and alpha_g the direction of
+the groove bottom: 0 for radial rings, 90 deg for the washers of a thrust bearing.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
 
-from ..geometry import BallBearing
+from ..geometry import GROOVE_DEPTH_RATIO, BallBearing
 from ..materials import effective_modulus
 from . import hertz
 
@@ -39,12 +48,41 @@ class BallContacts:
     ball_constant: float
 
     @property
+    def warnings(self) -> list[str]:
+        """Validity warnings: a contact ellipse that runs over its groove shoulder (see the
+        module docstring for the criterion)."""
+        out = []
+        b = self.bearing
+        axis = 0.5 * math.pi if b.is_thrust else 0.0
+        loads = np.broadcast_to(np.asarray(self.load, dtype=float), np.shape(self.inner.semi_major))
+        for race, c, f in (("inner", self.inner, b.inner_groove_factor),
+                           ("outer", self.outer, b.outer_groove_factor)):
+            radius = f * b.ball_diameter
+            shoulder = math.acos(max(-1.0, min(1.0, 1.0 - GROOVE_DEPTH_RATIO * b.ball_diameter
+                                               / radius)))
+            a = np.asarray(c.semi_major, dtype=float)
+            reach = abs(self.contact_angle - axis) + a / radius
+            angle_text = "|90 deg - alpha|" if b.is_thrust else "|alpha|"
+            over = (loads > 0) & (reach > shoulder)
+            if np.any(over):
+                i = np.flatnonzero(over.ravel())[np.argmin(loads.ravel()[over.ravel()])]
+                out.append(
+                    f"{race} contact: the contact ellipse runs over the groove shoulder at "
+                    f"Q = {loads.ravel()[i]:.4g} N (half-length a = {a.ravel()[i] * 1e3:.3g} mm: "
+                    f"{angle_text} + a/(f D_w) = {math.degrees(reach.ravel()[i]):.3g} deg > shoulder "
+                    f"angle {math.degrees(shoulder):.3g} deg, groove depth "
+                    f"{GROOVE_DEPTH_RATIO:g} D_w assumed); Hertz results are not valid there")
+        return out
+
+    @property
     def total_approach(self):
         """Approach of the two races along the contact line, inner + outer [m]."""
         return self.inner.approach + self.outer.approach
 
     def to_dict(self) -> dict:
-        """JSON-ready dict in engineering units (keys carry the unit)."""
+        """JSON-ready dict in engineering units (keys carry the unit): the geometry used
+        (``ball_count``, ``ball_diameter_mm``, ``pitch_diameter_mm``, ``contact_angle_deg``,
+        ``geometry_source``), ``inner`` and ``outer`` contacts and ``warnings``."""
         def one(c: hertz.PointContact, constant: float) -> dict:
             return {
                 "semi_major_mm": _num(c.semi_major * 1e3),
@@ -56,14 +94,19 @@ class BallContacts:
                 "stiffness_n_per_um": _num(c.stiffness * 1e-6),
                 "load_deflection_constant_n_per_m1_5": float(constant),
             }
+        b = self.bearing
         return {
             "ball_load_n": _num(self.load),
+            "ball_count": int(b.ball_count), "ball_diameter_mm": b.ball_diameter * 1e3,
+            "pitch_diameter_mm": b.pitch_diameter * 1e3,
             "contact_angle_deg": float(np.degrees(self.contact_angle)),
+            "geometry_source": b.geometry_source,
             "method": self.method,
             "inner": one(self.inner, self.inner_constant),
             "outer": one(self.outer, self.outer_constant),
             "total_approach_um": _num(self.total_approach * 1e6),
             "ball_load_deflection_constant_n_per_m1_5": float(self.ball_constant),
+            "warnings": self.warnings,
         }
 
     def plot(self, axes=None):

@@ -55,7 +55,10 @@ def parse(text: str, system: str | None = None) -> Designation:
     Designation
         With ``system=None`` and two differing readings, the ISO one, the GOST reading in
         ``alternatives`` and a note; if both readings are the same bearing ("1205"), the
-        ISO one with the GOST reading in ``alternatives`` and no note.
+        ISO one with the GOST reading in ``alternatives`` and no note.  If only one reader
+        understands the text, its reading with a note naming what the other could not
+        read (``parse("6205 C")`` is GOST type 6 with suffix С, noted "not an ISO
+        designation: cannot read 'C' ...").
 
     Raises
     ------
@@ -100,11 +103,19 @@ def parse(text: str, system: str | None = None) -> Designation:
             )
         return replace(iso, alternatives=(gost,), notes=notes)
     if iso is not None:
-        return iso
+        assert gost_error is not None
+        return replace(iso, notes=iso.notes + (_not_read("a GOST 3189-89", gost_error),))
     if gost is not None:
-        return gost
+        assert iso_error is not None
+        return replace(gost, notes=gost.notes + (_not_read("an ISO", iso_error),))
     assert iso_error is not None and gost_error is not None
     raise gost_error if gost_error.progress > iso_error.progress else iso_error
+
+
+def _not_read(what: str, error: ReadError) -> str:
+    """Note naming what the other reader could not read, e.g. "not an ISO designation:
+    cannot read 'C' (unknown suffix for an ISO 62 bearing)"."""
+    return f"not {what} designation: cannot read {error.part!r} ({error.reason})"
 
 
 def gost_equivalent(text: str, system: str | None = None) -> str | None:

@@ -6,7 +6,13 @@
 
 from __future__ import annotations
 
+import unicodedata
+
 from bearinglab.errors import DesignationError
+
+#: The only digits a designation may use (after NFKC normalisation, which turns
+#: full-width "６２０５" into "6205"); other scripts' digits ("٦٢٠٥") are refused.
+ASCII_DIGITS: str = "0123456789"
 
 #: Characters read as a plain hyphen: hyphen, non-breaking hyphen, figure dash, en dash,
 #: em dash, minus sign (seed 003 writes "6−18030ПР20П" with U+2212, line 319).
@@ -22,6 +28,40 @@ def normalise_dashes(text: str) -> str:
         Designation text [-]
     """
     return "".join("-" if ch in DASHES else ch for ch in text)
+
+
+def _foreign_digit(raw: str) -> bool:
+    return any(ch not in ASCII_DIGITS and unicodedata.category(ch) == "Nd"
+               for ch in unicodedata.normalize("NFKC", raw))
+
+
+def nfkc_chars(text: str) -> list[tuple[int, str]]:
+    """Return (position in ``text``, character) of the NFKC normal form, character by
+    character, so that every normalised character keeps its place in the original.
+
+    Raises a :class:`ReadError` naming the run of characters if the text holds digits
+    that are not ASCII 0-9 after normalisation.
+
+    Parameters
+    ----------
+    text : str
+        Designation as given [-]
+
+    >>> "".join(ch for _, ch in nfkc_chars("\uff16\uff12\uff10\uff15"))
+    '6205'
+    """
+    out: list[tuple[int, str]] = []
+    for i, raw in enumerate(text):
+        for ch in unicodedata.normalize("NFKC", raw):
+            if _foreign_digit(ch):
+                j = i
+                while j < len(text) and _foreign_digit(text[j]):
+                    j += 1
+                raise ReadError(text, text[i:j] or raw,
+                                "digits must be the ASCII digits 0-9 (full-width digits are "
+                                "accepted; other scripts' digits are not)", progress=len(out))
+            out.append((i, ch))
+    return out
 
 
 class ReadError(DesignationError):

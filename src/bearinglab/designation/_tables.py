@@ -333,6 +333,7 @@ def _families() -> dict[str, Family]:
         add(key, "tapered_roller", dims, "3", trb, gost=gost, notes=notes)
     srb = "spherical roller bearing (ISO type 2)"
     for key, dims in (
+        ("213", "03"),  # the 213 key is written for dimension series 03 (maker catalogues)
         ("222", "22"),
         ("223", "23"),
         ("230", "30"),

@@ -25,7 +25,7 @@ from __future__ import annotations
 import math
 import re
 
-from ._common import DASHES, ReadError, format_iso, original_slice
+from ._common import DASHES, ReadError, format_iso, nfkc_chars, original_slice
 from ._suffixes import (
     GOST_CATEGORIES,
     GOST_CLASSES,
@@ -52,34 +52,37 @@ from .model import Designation
 __all__ = ["parse_gost"]
 
 _PREFIX_RE = re.compile(r"(?P<cat>[АВС])?(?P<sep>-)?(?P<pre>[0-9Т]{1,3})?-")
-_DIGITS_RE = re.compile(r"\d+")
-_SLASH_RE = re.compile(r"/(\d+(?:[.,]\d+)?)")
+_DIGITS_RE = re.compile(r"[0-9]+")
+_SLASH_RE = re.compile(r"/([0-9]+(?:[.,][0-9]+)?)")
 _LETTERS = "".join(GOST_SUFFIXES) + "П" + GOST_UNDECODED_LETTERS
-_SUFFIX_RE = re.compile(rf"([{_LETTERS}])(\d[\dО]*)?")
+_SUFFIX_RE = re.compile(rf"([{_LETTERS}])([0-9][0-9О]*)?")
 _ISO_CLOSURES = ("Z", "2Z", "RS", "2RS")
 
 
 def _normalise(text: str) -> tuple[str, list[int], list[str]]:
-    """Upper-case, drop spaces, unify dashes and map Latin look-alikes to Cyrillic."""
-    translit = any(ch in "Rr" for ch in text)
+    """NFKC-normalise, upper-case, drop spaces, unify dashes and map Latin look-alikes to
+    Cyrillic; digits other than ASCII 0-9 are refused (:func:`nfkc_chars`)."""
+    chars = nfkc_chars(text)
+    plain = "".join(ch for _, ch in chars)
+    translit = any(ch in "Rr" for ch in plain)
     out: list[str] = []
     index: list[int] = []
-    for i, ch in enumerate(text):
+    for i, ch in chars:
         if ch.isspace():
             continue
-        up = ch.upper()
-        if ch in DASHES:
-            up = "-"
-        elif up == "R":
-            up = "Р"
-        elif up == "P":
-            up = "П" if translit else "Р"
-        else:
-            up = LATIN_TO_CYRILLIC.get(up, up)
-        out.append(up)
-        index.append(i)
+        for up in ch.upper():
+            if ch in DASHES:
+                up = "-"
+            elif up == "R":
+                up = "Р"
+            elif up == "P":
+                up = "П" if translit else "Р"
+            else:
+                up = LATIN_TO_CYRILLIC.get(up, up)
+            out.append(up)
+            index.append(i)
     notes = []
-    if translit and any(ch in "Pp" for ch in text):
+    if translit and any(ch in "Pp" for ch in plain):
         notes.append(
             "Latin letters read as a transliteration (P = П, R = Р) because 'R' "
             "appears; otherwise a Latin 'P' is read as the look-alike 'Р'"
@@ -230,17 +233,35 @@ def parse_gost(text: str) -> Designation:
             "a GOST 3189-89 basic number has at most seven digits (seed 003 line 135)",
             pos,
         )
-    pos = m.end()
+    basic_start, pos = pos, m.end()
     slash = None
     m = _SLASH_RE.match(norm, pos)
     if m:
         slash, pos = m.group(1), m.end()
+    if slash is None and len(basic.lstrip("0")) < 2:
+        raise ReadError(
+            text,
+            original_slice(text, index, basic_start, pos),
+            "too short for a GOST 3189-89 basic number: it needs at least two significant "
+            "digits (bore code and diameter series, or bore and diameter series of a small "
+            "bore; seed 003 lines 135-141)",
+            pos,
+        )
     tokens: list[tuple[str, str]] = []
     while pos < len(norm):
         m = _SUFFIX_RE.match(norm, pos)
         if not m:
             raise ReadError(
                 text, original_slice(text, index, pos), "not a GOST 3189-89 suffix letter", pos
+            )
+        code = m.group(1) + (m.group(2) or "")
+        if code != "П" and any(letter + digits == code for letter, digits in tokens):
+            raise ReadError(
+                text,
+                original_slice(text, index, m.start(), m.end()),
+                "repeated suffix: the same sign is written twice (only П may appear twice, "
+                "seed 003 lines 321-323)",
+                pos,
             )
         tokens.append((m.group(1), m.group(2) or ""))
         pos = m.end()

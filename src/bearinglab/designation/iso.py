@@ -24,7 +24,7 @@ from __future__ import annotations
 import math
 import re
 
-from ._common import DASHES, ReadError, format_iso, original_slice
+from ._common import DASHES, ReadError, format_iso, nfkc_chars, original_slice
 from ._suffixes import IsoSuffix, suffix_table
 from ._tables import (
     CLOSURE_WORDS,
@@ -43,24 +43,30 @@ from .model import Designation
 
 __all__ = ["parse_iso"]
 
-_BASIC_RE = re.compile(r"(?P<pre>[A-Z]*) ?(?P<digits>\d+)(?:/(?P<d>\d+(?:[.,]\d+)?))?")
+_BASIC_RE = re.compile(
+    r"(?P<pre>[A-Z]*) ?(?P<digits>[0-9]+)(?:/(?P<d>[0-9]+(?:[.,][0-9]+)?))?"
+)
+#: Separators with no suffix between them, or after the last one ("6205--2RS", "6205-").
+_EMPTY_GROUP_RE = re.compile(r"[-/](?: ?[-/])+| ?[-/] ?$")
 _GROUP_RE = re.compile(r"[^-/ ]+")
 _WIDTH_ORDER = "0172345689"
 _BORE_SHAPE = ("K", "K30")
 
 
 def _normalise(text: str) -> tuple[str, list[int]]:
-    """Upper-case, unify dashes, collapse white space; keep the map to the original."""
+    """NFKC-normalise, upper-case, unify dashes, collapse white space; keep the map to the
+    original.  Digits other than ASCII 0-9 are refused (:func:`nfkc_chars`)."""
     out: list[str] = []
     index: list[int] = []
-    for i, ch in enumerate(text):
+    for i, ch in nfkc_chars(text):
         if ch.isspace():
             if out and out[-1] != " ":
                 out.append(" ")
                 index.append(i)
             continue
-        out.append("-" if ch in DASHES else ch.upper())
-        index.append(i)
+        for up in "-" if ch in DASHES else ch.upper():
+            out.append(up)
+            index.append(i)
     while out and out[-1] == " ":
         out.pop()
         index.pop()
@@ -193,8 +199,17 @@ def parse_iso(text: str) -> Designation:
     if not bore_mm > 0.0:
         raise ReadError(text, slash or bore_text, "the bore must be a positive diameter")
 
+    empty = _EMPTY_GROUP_RE.search(norm, end)
+    if empty is not None:
+        raise ReadError(
+            text,
+            original_slice(text, index, empty.start(), empty.end()),
+            "a separator with no suffix after it",
+            empty.start(),
+        )
     table = suffix_table(fam.group)
     groups: list[list[tuple[str, IsoSuffix | None]]] = []
+    seen: set[str] = set()
     for g in _GROUP_RE.finditer(norm, end):
         decoded = _decode_group(g.group(), table)
         if decoded[0][1] is None:
@@ -204,6 +219,11 @@ def parse_iso(text: str) -> Designation:
                 f"unknown suffix for an ISO {fam.key} bearing",
                 g.start(),
             )
+        for code, _ in decoded:
+            if code in seen:
+                raise ReadError(text, code, "repeated suffix: the code is written twice",
+                                g.start())
+            seen.add(code)
         groups.append(decoded)
     return _build(text, fam, pre, digits, slash, bore_text, bore_code, bore_mm, groups)
 
@@ -262,6 +282,14 @@ def _build(
                 notes.append(f"suffix {code}: not decoded (maker-specific)")
                 continue
             if info.kind == "closure":
+                if shields + seals + sum(info.closure) > 2:
+                    raise ReadError(
+                        text,
+                        code,
+                        f"conflicts with {'-'.join(closure_codes)}: closures on more than "
+                        "the two sides of a bearing",
+                        len(text),
+                    )
                 shields += info.closure[0]
                 seals += info.closure[1]
                 closure_codes.append(code)
@@ -276,6 +304,7 @@ def _build(
             if info.angle_deg is not None:
                 angles.append(info.angle_deg)
         other_groups.append(other)
+    true_closures = list(closure_codes)
     if closure_codes:
         closure_codes += snap_codes
     else:
@@ -337,7 +366,7 @@ def _build(
     bits.extend(
         m.split(" (")[0]
         for c, m in suffixes
-        if c not in closure_codes
+        if c not in true_closures
         and not m.endswith("(not decoded)")
         and "contact angle" not in m
         and "tolerance class" not in m
