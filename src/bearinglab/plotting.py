@@ -129,3 +129,74 @@ def frequencies_figure(freqs, harmonics: int = 3, ax=None):
     ax.legend(fontsize=8, ncol=3)
     fig.tight_layout()
     return fig, ax
+
+
+def load_distribution_figure(result, axes=None):
+    """Polar load distribution (ball loads at their azimuths, inner and outer) and the
+    contact angles of every ball.
+
+    Parameters
+    ----------
+    result : bearinglab.quasistatic.LoadDistribution
+        A solved load distribution.
+    axes : pair of matplotlib Axes (the first polar), optional
+        Where to draw.
+    """
+    plt = _pyplot()
+    if axes is None:
+        fig = plt.figure(figsize=(11, 4.6))
+        axes = (fig.add_subplot(1, 2, 1, projection="polar"), fig.add_subplot(1, 2, 2))
+    fig = axes[0].figure
+    table = result.ball_table()
+    angles = np.radians(table["angle_deg"].to_numpy())
+    width = 2 * np.pi / len(angles) * 0.35
+    axes[0].bar(angles - width / 2, table["inner_load_n"], width=width, color="C0",
+                label="inner")
+    axes[0].bar(angles + width / 2, table["outer_load_n"], width=width, color="C1",
+                label="outer")
+    axes[0].set_title("ball loads [N] at their angles", fontsize=10)
+    axes[0].legend(loc="lower left", fontsize=8, bbox_to_anchor=(-0.15, -0.12))
+    order = np.argsort(table["angle_deg"].to_numpy())
+    for name, colour in (("inner", "C0"), ("outer", "C1")):
+        axes[1].plot(table["angle_deg"].to_numpy()[order],
+                     table[f"{name}_contact_angle_deg"].to_numpy()[order], "o-", color=colour,
+                     label=f"{name} contact angle")
+    axes[1].set_xlabel("ball angle [deg]")
+    axes[1].set_ylabel("contact angle [deg]")
+    d = result.to_dict()
+    axes[1].set_title(f"S_r = {d['radial_displacement_um']:.3g} um, S_a = "
+                      f"{d['axial_displacement_um']:.3g} um, C_r = "
+                      f"{d['radial_stiffness_n_per_um']:.3g} N/um", fontsize=10)
+    axes[1].legend(fontsize=8)
+    fig.suptitle(f"{result.bearing.name or 'bearing'}: F_r = {result.condition.radial_load:g} N, "
+                 f"F_a = {result.condition.axial_load:g} N, "
+                 f"{result.condition.shaft_speed * 30 / np.pi:g} rpm")
+    fig.tight_layout()
+    return fig, axes
+
+
+def stiffness_map_figure(table, ax=None):
+    """Radial and axial stiffness over the radial load, one line per (axial load, speed).
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        Rows with radial_load_n, axial_load_n, speed_rpm, radial_stiffness_n_per_um,
+        axial_stiffness_n_per_um.
+    ax : pair of matplotlib Axes, optional
+        Where to draw.
+    """
+    plt = _pyplot()
+    if ax is None:
+        fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
+    fig = ax[0].figure
+    for (fa, rpm), group in table.groupby(["axial_load_n", "speed_rpm"]):
+        label = f"F_a = {fa:g} N, {rpm:g} rpm"
+        ax[0].plot(group["radial_load_n"], group["radial_stiffness_n_per_um"], ".-", label=label)
+        ax[1].plot(group["radial_load_n"], group["axial_stiffness_n_per_um"], ".-", label=label)
+    for a, name in zip(ax, ("radial C_r", "axial C_a")):
+        a.set_xlabel("radial load F_r [N]")
+        a.set_ylabel(f"{name} [N/um]")
+        a.legend(fontsize=7)
+    fig.tight_layout()
+    return fig, ax

@@ -56,7 +56,7 @@ def _save_plot(result, plot: Path) -> None:
 
 
 def _fmt(value, digits: int = 4) -> str:
-    if value is None:
+    if value is None or (isinstance(value, float) and math.isnan(value)):
         return "-"
     if isinstance(value, float):
         return f"{value:.{digits}g}"

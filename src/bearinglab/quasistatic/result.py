@@ -138,9 +138,11 @@ class LoadDistribution:
                 k = int(np.argmax(loads))
                 pressures = np.atleast_2d(hertz_by_race[race].max_pressure)[j]
                 semi = np.atleast_2d(hertz_by_race[race].semi_major)[j]
+                loaded = bool(loads.sum() > 0)   # an unloaded contact has no angle
                 row.update({
                     f"{name}_load_n": float(loads.sum()),
-                    f"{name}_contact_angle_deg": math.degrees(self.contact_angle[j, cols[k]]),
+                    f"{name}_contact_angle_deg": math.degrees(self.contact_angle[j, cols[k]])
+                    if loaded else None,
                     f"{name}_max_pressure_gpa": float(pressures[k]) / 1e9,
                     f"{name}_semi_major_mm": float(semi[k]) * 1e3,
                     f"{name}_approach_um": float(max(self.approach[j, cols[k]], 0.0)) * 1e6,
@@ -157,8 +159,11 @@ class LoadDistribution:
     def to_dict(self) -> dict:
         """JSON-ready summary in engineering units; the stiffness matrix stays SI."""
         table = self.ball_table()
-        balls = [{k: (v.item() if hasattr(v, "item") else v) for k, v in row.items()}
-                 for row in table.to_dict(orient="records")]
+        def plain(v):
+            v = v.item() if hasattr(v, "item") else v
+            return None if isinstance(v, float) and math.isnan(v) else v   # unloaded: no angle
+
+        balls = [{k: plain(v) for k, v in row.items()} for row in table.to_dict(orient="records")]
         residual = self.condition.load_vector() + self.reaction
         solved = np.array([True, True, True, self.condition.tilt_free, self.condition.tilt_free])
         return {

@@ -277,7 +277,7 @@ def _newton(problem: _Problem, tolerance: float, max_iterations: int, initial):
         if limit > 1:
             du /= limit
 
-        def along(lam):
+        def along(lam, u=u, du=du, b=b):
             trial = u.copy()
             trial[free] += lam * du
             try:
@@ -287,7 +287,7 @@ def _newton(problem: _Problem, tolerance: float, max_iterations: int, initial):
             force_t, stiff_t = problem.ring_force_and_stiffness(state_t)
             return trial, b_t, state_t, force_t, stiff_t, (load + force_t) * problem.scale
 
-        def slope(lam):
+        def slope(lam, du=du):
             at = along(lam)
             return -1e30 if at is None else float(at[5][free] @ (du * problem.scale[free]))
 

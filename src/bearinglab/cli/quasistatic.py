@@ -1,0 +1,346 @@
+"""Commands of the load-distribution issue: static, stiffness-map, ring-modes."""
+
+import math
+import os
+import tempfile
+from pathlib import Path
+from typing import Annotated
+
+import numpy as np
+import pandas as pd
+import typer
+from rich.markup import escape
+from rich.progress import Progress
+
+from ..errors import ConvergenceError
+from ..lubrication import LUBRICANTS, ZERO_CELSIUS
+from ..operating import OperatingCondition
+from ..plotting import save_figure, stiffness_map_figure
+from ..quasistatic import solve_load_distribution
+from ..quasistatic.orbit import inner_ring_orbit
+from ..rings import ring_modes
+from ._app import app, console
+from ._inputs import (
+    MAX_SPEED_RPM,
+    OptionError,
+    _geometry_line,
+    _geometry_warnings,
+    _print_warnings,
+    resolve_bearing,
+    with_geometry,
+)
+from ._output import _emit_json, _save_plot, _table
+
+DesignationArg = Annotated[str | None, typer.Argument(
+    help="Bearing designation or catalogue name; optional with explicit geometry.",
+    show_default=False)]
+JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON object instead of tables.")]
+PlotOpt = Annotated[Path | None, typer.Option(
+    "--plot", help="Also draw the result to this .png, .svg or .pdf file.", show_default=False)]
+MAX_LOAD_N = 1e7
+
+
+def _load(flag: str, value: float, signed: bool = False) -> float:
+    low = -MAX_LOAD_N if signed else 0.0
+    if not (math.isfinite(value) and low <= value <= MAX_LOAD_N):
+        raise OptionError(flag, value, f"a load in [{low:g}, {MAX_LOAD_N:g}] N")
+    return float(value)
+
+
+def _speed(value: float) -> float:
+    if not (math.isfinite(value) and 0 <= value <= MAX_SPEED_RPM):
+        raise OptionError("--speed-rpm", value, f"a speed in [0, {MAX_SPEED_RPM:g}] rpm")
+    return value * math.pi / 30
+
+
+def _grid(flag: str, text: str, signed: bool = False, speed: bool = False) -> np.ndarray:
+    """'a:b:n' (n values from a to b), 'a,b,c' or a single value."""
+    try:
+        if ":" in text:
+            a, b, n = text.split(":")
+            values = np.linspace(float(a), float(b), int(n))
+            if int(n) < 1 or int(n) > 10000:
+                raise ValueError
+        else:
+            values = np.array([float(v) for v in text.split(",")])
+    except ValueError:
+        raise OptionError(flag, text, "START:STOP:COUNT (COUNT 1..10000), a list A,B,C or one "
+                          "value") from None
+    for v in values:
+        _speed(v) if speed else _load(flag, v, signed)
+    return values
+
+
+def _condition(radial, axial, speed_rpm, angle_deg, misalignment_mrad):
+    if not math.isfinite(angle_deg):
+        raise OptionError("--radial-load-angle-deg", angle_deg, "a finite angle")
+    if not (math.isfinite(misalignment_mrad) and abs(misalignment_mrad) <= 20):
+        raise OptionError("--misalignment-mrad", misalignment_mrad, "a tilt within +-20 mrad")
+    # the tilt is about the axis perpendicular to the radial load in the radial plane
+    a = math.radians(angle_deg)
+    tilt = misalignment_mrad * 1e-3
+    return OperatingCondition(radial_load=radial, radial_load_angle=a, axial_load=axial,
+                              misalignment=(-tilt * math.sin(a), tilt * math.cos(a)),
+                              shaft_speed=_speed(speed_rpm))
+
+
+def _lubricant(film: bool, name: str, temperature_c: float | None):
+    if not film:
+        return None, None
+    if name not in LUBRICANTS:
+        raise OptionError("--lubricant", name, f"one of {', '.join(LUBRICANTS)}")
+    if temperature_c is not None and not (math.isfinite(temperature_c)
+                                          and -60 <= temperature_c <= 300):
+        raise OptionError("--temperature-c", temperature_c, "a temperature in [-60, 300] degC")
+    return LUBRICANTS[name], None if temperature_c is None else temperature_c + ZERO_CELSIUS
+
+
+@app.command()
+@with_geometry
+def static(designation: DesignationArg = None,
+           radial_load_n: Annotated[float, typer.Option("--radial-load-n",
+                                                        help="Radial load F_r [N].")] = 0.0,
+           axial_load_n: Annotated[float, typer.Option("--axial-load-n",
+                                                       help="Axial load F_a [N].")] = 0.0,
+           speed_rpm: Annotated[float, typer.Option("--speed-rpm",
+                                                    help="Inner-ring speed [rpm].")] = 0.0,
+           radial_load_angle_deg: Annotated[float, typer.Option(
+               "--radial-load-angle-deg", help="Direction of the radial load from +x towards "
+               "+y [deg]; -90 = downwards.")] = -90.0,
+           misalignment_mrad: Annotated[float, typer.Option(
+               "--misalignment-mrad", help="Imposed tilt of the inner ring about the axis "
+               "across the radial load [mrad].")] = 0.0,
+           film: Annotated[bool, typer.Option("--film/--no-film", help="Subtract the "
+                                              "Hamrock-Dowson film from the approaches.")]
+           = False,
+           lubricant: Annotated[str, typer.Option("--lubricant", help="Lubricant for the film: "
+                                                  + ", ".join(LUBRICANTS))] = "iso-vg68",
+           temperature_c: Annotated[float | None, typer.Option(
+               "--temperature-c", help="Lubricant temperature [degC] (default: its "
+               "reference).", show_default=False)] = None,
+           orbit: Annotated[bool, typer.Option("--orbit", help="Also the inner-ring centre "
+                                               "orbit over one ball spacing.")] = False,
+           json_output: JsonOpt = False, plot: PlotOpt = None, *, geometry):
+    """Quasi-static load distribution: per-ball loads and contact angles, ring
+    displacements and the 5x5 stiffness matrix."""
+    fr = _load("--radial-load-n", radial_load_n)
+    fa = _load("--axial-load-n", axial_load_n, signed=True)
+    condition = _condition(fr, fa, speed_rpm, radial_load_angle_deg, misalignment_mrad)
+    oil, temperature = _lubricant(film, lubricant, temperature_c)
+    bearing, _ = resolve_bearing(designation, geometry)
+    result = solve_load_distribution(bearing, condition, lubricant=oil, temperature=temperature)
+    d = result.to_dict()
+    d["warnings"] = _geometry_warnings(bearing) + d["warnings"]
+    out = {"designation": designation, **d}
+    if orbit:
+        o = inner_ring_orbit(bearing, condition)
+        out["orbit"] = o.to_dict()
+        out["orbit_peak_to_peak_um"] = o.peak_to_peak * 1e6
+    if plot is not None:
+        _save_plot(result, plot)
+    if json_output:
+        _emit_json(out)
+        return
+    table = result.ball_table()
+    cols = ["ball", "angle_deg", "inner_load_n", "outer_load_n", "inner_contact_angle_deg",
+            "outer_contact_angle_deg", "inner_max_pressure_gpa", "outer_max_pressure_gpa",
+            "contact_points"]
+    console.print(_table(f"{bearing.name or 'bearing'}: F_r = {fr:g} N, F_a = {fa:g} N, "
+                         f"{speed_rpm:g} rpm" + (", with EHL film" if film else ""),
+                         [c.replace("_", " ") for c in cols],
+                         table[cols].to_numpy().tolist()))
+    console.print(escape(_geometry_line(bearing)))
+    console.print(_table("Inner ring", ["quantity", "value", "unit"], [
+        ["radial displacement S_r", d["radial_displacement_um"], "um"],
+        ["axial displacement S_a", d["axial_displacement_um"], "um"],
+        ["tilt about x, y", ", ".join(f"{t:.4g}" for t in d["tilt_mrad"]), "mrad"],
+        ["max ball load", d["max_ball_load_n"], "N"],
+        ["radial stiffness C_r", d["radial_stiffness_n_per_um"], "N/um"],
+        ["axial stiffness C_a", d["axial_stiffness_n_per_um"], "N/um"],
+    ] + ([["orbit peak to peak", out["orbit_peak_to_peak_um"], "um"]] if orbit else [])))
+    k = np.array(d["stiffness_matrix"])
+    console.print(_table("Stiffness matrix (x, y, z [N/um]; tilts [N m/mrad, N/mrad])",
+                         ["", *d["stiffness_matrix_order"]],
+                         [[name, *(k[i] * np.array([1e-6] * 3 + [1e-3] * 2))]
+                          for i, name in enumerate(d["stiffness_matrix_order"])]))
+    _print_warnings(d["warnings"])
+
+
+@app.command("stiffness-map")
+@with_geometry
+def stiffness_map(designation: DesignationArg = None,
+                  radial_load_n: Annotated[str, typer.Option(
+                      "--radial-load-n", help="Radial loads: START:STOP:COUNT, A,B,C or one "
+                      "value [N].")] = "0:2000:21",
+                  axial_load_n: Annotated[str, typer.Option(
+                      "--axial-load-n", help="Axial loads [N], same forms.")] = "0",
+                  speed_rpm: Annotated[str, typer.Option(
+                      "--speed-rpm", help="Speeds [rpm], same forms.")] = "0",
+                  output: Annotated[Path | None, typer.Option(
+                      "-o", "--output", help="Write the table to this CSV file.",
+                      show_default=False)] = None,
+                  json_output: JsonOpt = False, plot: PlotOpt = None, *, geometry):
+    """Radial and axial stiffness (and displacements) over a grid of loads and speeds."""
+    radial = _grid("--radial-load-n", radial_load_n)
+    axial = _grid("--axial-load-n", axial_load_n, signed=True)
+    speeds = _grid("--speed-rpm", speed_rpm, speed=True)
+    bearing, _ = resolve_bearing(designation, geometry)
+    rows = []
+    total = len(radial) * len(axial) * len(speeds)
+    with Progress(console=console, transient=True, disable=json_output) as progress:
+        task = progress.add_task("solving", total=total)
+        for rpm in speeds:
+            for fa in axial:
+                for fr in radial:
+                    row = {"radial_load_n": fr, "axial_load_n": fa, "speed_rpm": rpm}
+                    if fr == 0 and fa == 0:
+                        row["status"] = "no load"
+                    else:
+                        try:
+                            r = solve_load_distribution(bearing, _condition(
+                                fr, fa, rpm, -90.0, 0.0))
+                            d = r.to_dict()
+                            row.update({k: d[k] for k in (
+                                "radial_displacement_um", "axial_displacement_um",
+                                "radial_stiffness_n_per_um", "axial_stiffness_n_per_um",
+                                "max_ball_load_n")}, status="ok")
+                        except ConvergenceError as exc:
+                            row["status"] = f"not converged: {exc}"
+                    rows.append(row)
+                    progress.advance(task)
+    table = pd.DataFrame(rows)
+    if output is not None:
+        _write_csv(table, output)
+    solved = table[table["status"] == "ok"]
+    if plot is not None and len(solved):
+        try:
+            save_figure(stiffness_map_figure(solved)[0], plot)
+        except OSError as exc:
+            raise OptionError("--plot", str(plot), "a writable file", exc.strerror) from None
+    if json_output:
+        _emit_json({"designation": designation, "cases": total,
+                    "solved": len(solved), "rows": [
+                        {k: (None if isinstance(v, float) and not math.isfinite(v) else v)
+                         for k, v in row.items()} for row in rows]})
+        return
+    shown = ["radial_load_n", "axial_load_n", "speed_rpm", "radial_displacement_um",
+             "axial_displacement_um", "radial_stiffness_n_per_um", "axial_stiffness_n_per_um"]
+    shown = [c for c in shown if c in table]
+    console.print(_table(f"{bearing.name or 'bearing'}: stiffness over {total} cases",
+                         [c.replace("_", " ") for c in shown],
+                         solved[shown].to_numpy().tolist()))
+    failed = total - len(solved) - int((table["status"] == "no load").sum())
+    if failed:
+        console.print(f"[yellow]{failed} case(s) did not converge (see the CSV/JSON "
+                      "status)[/yellow]")
+
+
+def _write_csv(table: pd.DataFrame, path: Path) -> None:
+    """Write atomically: a temporary file in the same directory, then rename."""
+    if path.parent and not path.parent.exists():
+        raise OptionError("--output", str(path), "a path in an existing directory")
+    fd, tmp = tempfile.mkstemp(suffix=".csv", dir=path.parent or ".", prefix=f".{path.stem}-")
+    os.close(fd)
+    try:
+        table.to_csv(tmp, index=False)
+        os.replace(tmp, path)
+    except OSError as exc:
+        raise OptionError("--output", str(path), "a writable file", exc.strerror) from None
+    finally:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+
+
+def _modes(text: str) -> list[int]:
+    try:
+        if ":" in text:
+            a, b = (int(v) for v in text.split(":"))
+            ms = list(range(a, b + 1))
+        else:
+            ms = [int(v) for v in text.split(",")]
+    except ValueError:
+        ms = []
+    if not ms or min(ms) < 1 or max(ms) > 50:
+        raise OptionError("--modes", text, "FIRST:LAST or a list of mode numbers 1..50")
+    return ms
+
+
+def _khz_list(text: str | None) -> list[float] | None:
+    if text is None:
+        return None
+    try:
+        values = [float(v) * 1e3 for v in text.split(",")]
+    except ValueError:
+        values = []
+    if not values or not all(math.isfinite(v) and v > 0 for v in values):
+        raise OptionError("--free-frequencies-khz", text, "positive frequencies f2,f3,... [kHz]")
+    return values
+
+
+@app.command("ring-modes")
+@with_geometry
+def ring_modes_command(
+        designation: DesignationArg = None,
+        axial_load_n: Annotated[float, typer.Option("--axial-load-n",
+                                                    help="Axial load A [N].")] = 200.0,
+        modes: Annotated[str, typer.Option("--modes", help="Modes FIRST:LAST or m1,m2,...; "
+                                           "m = 1 is the rigid-body mode.")] = "2:6",
+        ring_mass_kg: Annotated[float | None, typer.Option(
+            "--ring-mass-kg", help="Vibrating mass of the outer ring incl. sensors [kg].",
+            show_default=False)] = None,
+        radial_stiffness_n_per_m: Annotated[float | None, typer.Option(
+            "--radial-stiffness-n-per-m", help="Radial bearing stiffness K_x [N/m].",
+            show_default=False)] = None,
+        free_frequencies_khz: Annotated[str | None, typer.Option(
+            "--free-frequencies-khz", help="Measured free-ring frequencies f2,f3,... [kHz].",
+            show_default=False)] = None,
+        ball_mass_ratio: Annotated[float | None, typer.Option(
+            "--ball-mass-ratio", help="kappa = n m_b / m_k.", show_default=False)] = None,
+        contact_stiffness_ratio: Annotated[float | None, typer.Option(
+            "--contact-stiffness-ratio", help="K1/K2 (outer over inner contact stiffness).",
+            show_default=False)] = None,
+        json_output: JsonOpt = False, plot: PlotOpt = None, *, geometry):
+    """Natural frequencies of the outer ring in the loaded bearing (seed 000)."""
+    ms = _modes(modes)
+    flexural = [m for m in ms if m >= 2]
+    free = _khz_list(free_frequencies_khz)
+    if free is not None:
+        if len(free) != len(flexural):
+            raise OptionError("--free-frequencies-khz", free_frequencies_khz,
+                              f"{len(flexural)} values, one per flexural mode {flexural}")
+        free = dict(zip(flexural, free))
+    for flag, value in (("--ring-mass-kg", ring_mass_kg),
+                        ("--radial-stiffness-n-per-m", radial_stiffness_n_per_m),
+                        ("--ball-mass-ratio", ball_mass_ratio),
+                        ("--contact-stiffness-ratio", contact_stiffness_ratio)):
+        if value is not None and not (math.isfinite(value) and value >= 0 and value < 1e15):
+            raise OptionError(flag, value, "a finite value >= 0")
+    _load("--axial-load-n", axial_load_n)
+    bearing, _ = resolve_bearing(designation, geometry)
+    result = ring_modes(bearing, axial_load=axial_load_n, modes=flexural or [2],
+                        ring_mass=ring_mass_kg, radial_stiffness=radial_stiffness_n_per_m,
+                        free_frequencies=free, ball_mass_ratio=ball_mass_ratio,
+                        contact_stiffness_ratio=contact_stiffness_ratio)
+    d = result.to_dict()
+    d["modes"] = [m for m in d["modes"] if m["m"] in ms]
+    if 1 in ms:   # the rigid-body mode of the ring on the ball springs, f_1 of eq. (1.7)
+        d["modes"].insert(0, {"m": 1, "free_khz": 0.0, "split": False,
+                              "approx_khz": [d["rigid_body_khz"]], "refined_khz": [],
+                              "epsilon": []})
+    if plot is not None:
+        _save_plot(result, plot)
+    if json_output:
+        _emit_json({"designation": designation, **d})
+        return
+    rows = [[m["m"], m["free_khz"], ", ".join(f"{f:.4g}" for f in m["approx_khz"]),
+             ", ".join(f"{f:.4g}" for f in m["refined_khz"]),
+             ", ".join("-" if e is None else f"{e:.4g}" for e in m["epsilon"])]
+            for m in d["modes"]]
+    console.print(_table(f"{bearing.name or 'bearing'}: outer-ring modes at A = "
+                         f"{axial_load_n:g} N (kHz)",
+                         ["m", "free ring", "approximate", "refined (ball masses)", "epsilon"],
+                         rows))
+    console.print(f"ring mass {d['ring_mass_kg']:.4g} kg, K_x {d['radial_stiffness_n_per_m']:.4g}"
+                  f" N/m, f_1 {d['rigid_body_khz']:.4g} kHz, kappa {d['ball_mass_ratio']:.3g}, "
+                  f"K1/K2 {d['contact_stiffness_ratio']:.3g}")
+    _print_warnings(_geometry_warnings(bearing))

@@ -1,0 +1,96 @@
+"""static, stiffness-map and ring-modes on the command line."""
+
+import json
+
+import numpy as np
+import pytest
+
+from bearinglab.cli import main
+
+BALL_KEYS = {"angle_deg", "inner_load_n", "outer_load_n", "inner_contact_angle_deg",
+             "outer_contact_angle_deg", "inner_max_pressure_gpa", "outer_max_pressure_gpa",
+             "contact_points"}
+
+
+def run_json(capsys, *args):
+    code = main([*args, "--json"])
+    out, err = capsys.readouterr()
+    assert code == 0, err
+    return json.loads(out)
+
+
+def test_static_json_keys_and_equilibrium(capsys):
+    d = run_json(capsys, "static", "6205", "--radial-load-n", "1000", "--axial-load-n", "200",
+                 "--speed-rpm", "3000")
+    for key in ("radial_displacement_um", "axial_displacement_um", "tilt_mrad",
+                "max_ball_load_n", "stiffness_matrix", "stiffness_matrix_order",
+                "radial_stiffness_n_per_um", "axial_stiffness_n_per_um", "balls"):
+        assert key in d
+    assert d["stiffness_matrix_order"] == ["x", "y", "z", "tilt_x", "tilt_y"]
+    assert np.array(d["stiffness_matrix"]).shape == (5, 5)
+    assert len(d["balls"]) == 9 and BALL_KEYS <= d["balls"][0].keys()
+    assert d["equilibrium_residual_n"] < 1e-6 * 1000
+    # the most loaded ball sits under the load (radial load acts downwards by default)
+    top = max(d["balls"], key=lambda b: b["inner_load_n"])
+    assert top["angle_deg"] == pytest.approx(270.0)
+
+
+def test_static_film_and_orbit(capsys):
+    dry = run_json(capsys, "static", "6205", "--radial-load-n", "1000", "--speed-rpm", "6000")
+    wet = run_json(capsys, "static", "6205", "--radial-load-n", "1000", "--speed-rpm", "6000",
+                   "--film", "--orbit")
+    # the film adds to the clearance: the ring moves further for the same load
+    assert wet["radial_displacement_um"] > dry["radial_displacement_um"]
+    assert wet["orbit_peak_to_peak_um"] > 0 and len(wet["orbit"]["x_um"]) > 10
+
+
+def test_static_plot(tmp_path, capsys):
+    out = tmp_path / "s.png"
+    assert main(["static", "6205", "--radial-load-n", "800", "--plot", str(out)]) == 0
+    assert out.read_bytes()[:4] == b"\x89PNG"
+    capsys.readouterr()
+
+
+@pytest.mark.parametrize("args, words", [
+    (["static", "6205", "--radial-load-n", "-5"], "--radial-load-n"),
+    (["static", "6205", "--radial-load-n", "10", "--misalignment-mrad", "50"],
+     "--misalignment-mrad"),
+    (["static", "6205", "--radial-load-n", "10", "--film", "--lubricant", "honey"],
+     "--lubricant"),
+    (["stiffness-map", "6205", "--radial-load-n", "0:100"], "--radial-load-n"),
+    (["stiffness-map", "6205", "--speed-rpm", "abc"], "--speed-rpm"),
+    (["ring-modes", "6310", "--modes", "0:3"], "--modes"),
+    (["ring-modes", "6310", "--free-frequencies-khz", "1.9,x"], "--free-frequencies-khz"),
+    (["ring-modes", "6310", "--modes", "2:4", "--free-frequencies-khz", "1.9"],
+     "--free-frequencies-khz"),
+])
+def test_bad_input(capsys, args, words):
+    assert main(args) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and words in err[0]
+
+
+def test_stiffness_map_csv_and_json(tmp_path, capsys):
+    csv = tmp_path / "m.csv"
+    d = run_json(capsys, "stiffness-map", "6205", "--radial-load-n", "0:1000:3",
+                 "--axial-load-n", "0,200", "-o", str(csv))
+    assert d["cases"] == 6 and d["solved"] == 5                  # (0, 0) has no load
+    rows = [r for r in d["rows"] if r["status"] == "ok"]
+    assert all(r["radial_stiffness_n_per_um"] > 0 for r in rows)
+    assert csv.read_text().startswith("radial_load_n,")
+
+
+def test_ring_modes_json_with_the_paper_overrides(capsys):
+    # seed 000's bearing 310 inputs: n = 8, m_h = 0.6 kg, K_x = 150e6 N/m, kappa = 0.33,
+    # measured free-ring frequencies 1.92 / 5.34 / 10.00 kHz (m = 2, 3, 4)
+    d = run_json(capsys, "ring-modes", "310", "--system", "gost", "--modes", "1:4",
+                 "--ring-mass-kg", "0.6", "--radial-stiffness-n-per-m", "150e6",
+                 "--free-frequencies-khz", "1.92,5.34,10.00", "--ball-mass-ratio", "0.33",
+                 "--contact-stiffness-ratio", "1")
+    modes = {m["m"]: m for m in d["modes"]}
+    assert set(modes) == {1, 2, 3, 4}
+    assert modes[1]["approx_khz"][0] == pytest.approx(2.516, abs=0.01)   # f_1
+    assert modes[3]["approx_khz"][0] == pytest.approx(6.3, abs=0.05)     # seed 000: 6.3
+    assert len(modes[4]["approx_khz"]) == 2                               # 2m = n: split
+    for m in modes.values():
+        assert {"m", "free_khz", "approx_khz", "refined_khz", "epsilon"} <= m.keys()
