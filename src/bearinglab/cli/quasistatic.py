@@ -12,12 +12,12 @@ import typer
 from rich.markup import escape
 from rich.progress import Progress
 
-from ..errors import ConvergenceError
 from ..lubrication import LUBRICANTS, ZERO_CELSIUS
 from ..operating import OperatingCondition
 from ..plotting import save_figure, stiffness_map_figure
 from ..quasistatic import solve_load_distribution
 from ..quasistatic.orbit import inner_ring_orbit
+from ..quasistatic.study import stiffness_map as stiffness_map_study
 from ..rings import ring_modes
 from ._app import app, console
 from ._inputs import (
@@ -176,6 +176,9 @@ def stiffness_map(designation: DesignationArg = None,
                       "--axial-load-n", help="Axial loads [N], same forms.")] = "0",
                   speed_rpm: Annotated[str, typer.Option(
                       "--speed-rpm", help="Speeds [rpm], same forms.")] = "0",
+                  workers: Annotated[int, typer.Option(
+                      "--workers", help="Worker processes (default: all cores).",
+                      show_default=False)] = 0,
                   output: Annotated[Path | None, typer.Option(
                       "-o", "--output", help="Write the table to this CSV file.",
                       show_default=False)] = None,
@@ -184,31 +187,15 @@ def stiffness_map(designation: DesignationArg = None,
     radial = _grid("--radial-load-n", radial_load_n)
     axial = _grid("--axial-load-n", axial_load_n, signed=True)
     speeds = _grid("--speed-rpm", speed_rpm, speed=True)
+    if not 0 <= workers <= 64:
+        raise OptionError("--workers", workers, "0 (all cores) to 64")
     bearing, _ = resolve_bearing(designation, geometry)
-    rows = []
     total = len(radial) * len(axial) * len(speeds)
     with Progress(console=console, transient=True, disable=json_output) as progress:
         task = progress.add_task("solving", total=total)
-        for rpm in speeds:
-            for fa in axial:
-                for fr in radial:
-                    row = {"radial_load_n": fr, "axial_load_n": fa, "speed_rpm": rpm}
-                    if fr == 0 and fa == 0:
-                        row["status"] = "no load"
-                    else:
-                        try:
-                            r = solve_load_distribution(bearing, _condition(
-                                fr, fa, rpm, -90.0, 0.0))
-                            d = r.to_dict()
-                            row.update({k: d[k] for k in (
-                                "radial_displacement_um", "axial_displacement_um",
-                                "radial_stiffness_n_per_um", "axial_stiffness_n_per_um",
-                                "max_ball_load_n")}, status="ok")
-                        except ConvergenceError as exc:
-                            row["status"] = f"not converged: {exc}"
-                    rows.append(row)
-                    progress.advance(task)
-    table = pd.DataFrame(rows)
+        table = stiffness_map_study(bearing, radial, axial, speeds, workers=workers or None,
+                                    progress=lambda n: progress.advance(task, n))
+    rows = table.to_dict(orient="records")
     if output is not None:
         _write_csv(table, output)
     solved = table[table["status"] == "ok"]
@@ -226,9 +213,12 @@ def stiffness_map(designation: DesignationArg = None,
     shown = ["radial_load_n", "axial_load_n", "speed_rpm", "radial_displacement_um",
              "axial_displacement_um", "radial_stiffness_n_per_um", "axial_stiffness_n_per_um"]
     shown = [c for c in shown if c in table]
-    console.print(_table(f"{bearing.name or 'bearing'}: stiffness over {total} cases",
-                         [c.replace("_", " ") for c in shown],
-                         solved[shown].to_numpy().tolist()))
+    shown_rows = solved[shown]
+    if len(shown_rows) > 40:   # a readable sample; the whole grid is in the CSV / JSON
+        shown_rows = shown_rows.iloc[np.linspace(0, len(shown_rows) - 1, 40).astype(int)]
+    console.print(_table(f"{bearing.name or 'bearing'}: stiffness over {total} cases"
+                         + (f" (40 of {len(solved)} shown)" if len(solved) > 40 else ""),
+                         [c.replace("_", " ") for c in shown], shown_rows.to_numpy().tolist()))
     failed = total - len(solved) - int((table["status"] == "no load").sum())
     if failed:
         console.print(f"[yellow]{failed} case(s) did not converge (see the CSV/JSON "

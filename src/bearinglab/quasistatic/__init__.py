@@ -26,7 +26,7 @@ __all__ = ["DOF_NAMES", "LoadDistribution", "centrifugal_force", "solve_load_dis
 def solve_load_distribution(bearing: BallBearing, condition: OperatingCondition, *,
                             ball_phase: float | None = None, ball_diameter_errors=None,
                             film=None, lubricant=None, temperature: float | None = None,
-                            tolerance: float = 1e-9) -> LoadDistribution:
+                            tolerance: float = 1e-9, initial=None) -> LoadDistribution:
     """Quasi-static equilibrium of ``bearing`` under ``condition``.
 
     Parameters
@@ -50,6 +50,8 @@ def solve_load_distribution(bearing: BallBearing, condition: OperatingCondition,
         Lubricant inlet temperature [K]; the lubricant's reference temperature by default.
     tolerance : float
         Ring equilibrium tolerance relative to the load [-].
+    initial : array (5,), optional
+        Starting ring displacement (e.g. the solution of a nearby case) [m, rad].
 
     Returns
     -------
@@ -63,7 +65,8 @@ def solve_load_distribution(bearing: BallBearing, condition: OperatingCondition,
     """
     kwargs = {"ball_phase": ball_phase, "ball_diameter_errors": ball_diameter_errors,
               "tolerance": tolerance}
-    u, b, state, problem, stiffness = solve(bearing, condition, film=film, **kwargs)
+    u, b, state, problem, stiffness = solve(bearing, condition, film=film, initial=initial,
+                                            **kwargs)
     if lubricant is not None and film is None and condition.shaft_speed > 0:
         for _ in range(10):
             film = contact_films(bearing, lubricant, condition.shaft_speed, problem.contacts.ring,
@@ -91,16 +94,6 @@ def solve_load_distribution(bearing: BallBearing, condition: OperatingCondition,
         film=problem.film, stiffness_matrix=stiffness, reaction=force,
         shoulder_angle=problem.contacts.shoulder_angle,
         groove_radius=problem.contacts.groove_radius)
-    warnings = []
-    if np.any(result.truncated):
-        n = int(np.count_nonzero(np.any(result.truncated, axis=1)))
-        warnings.append(f"the contact ellipse of {n} ball(s) runs over the groove shoulder: "
-                        "Hertz theory no longer holds there and the load is beyond what "
-                        "the groove can carry properly")
-    if bearing.diametral_clearance < 0:
-        warnings.append(f"preloaded: diametral clearance {bearing.diametral_clearance * 1e6:.3g}"
-                        " um")
-    object.__setattr__(result, "warnings", tuple(warnings))
     return result
 
 

@@ -20,6 +20,7 @@ A cos(alpha_0) = A - P_d/2.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -80,8 +81,11 @@ def _k_poly(bearing: BallBearing, race: str) -> np.ndarray:
     return coef
 
 
+@functools.lru_cache(maxsize=64)
 def contact_set(bearing: BallBearing) -> ContactSet:
     """Groove halves of both rings for ``bearing`` (see the module docstring).
+
+    Cached per bearing (the Hertz fit is the costly part of a solve).
 
     Parameters
     ----------

@@ -3,7 +3,8 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 import pandas as pd
@@ -64,7 +65,6 @@ class LoadDistribution:
     reaction: np.ndarray
     shoulder_angle: np.ndarray
     groove_radius: np.ndarray
-    warnings: tuple = field(default=())
 
     # ---------------------------------------------------------------- derived
     @property
@@ -102,8 +102,29 @@ class LoadDistribution:
         """Number of loaded contacts of each ball (0-4) [-]."""
         return np.count_nonzero(self.load > 0, axis=1)
 
+    @cached_property
+    def warnings(self) -> tuple[str, ...]:
+        """What the user must know: contacts running over the shoulder, preload."""
+        out = []
+        if np.any(self.truncated):
+            n = int(np.count_nonzero(np.any(self.truncated, axis=1)))
+            out.append(f"the contact ellipse of {n} ball(s) runs over the groove shoulder: "
+                       "Hertz theory no longer holds there and the load is beyond what the "
+                       "groove can carry properly")
+        if self.bearing.diametral_clearance < 0:
+            out.append(f"preloaded: diametral clearance "
+                       f"{self.bearing.diametral_clearance * 1e6:.3g} um")
+        return tuple(out)
+
     def _race_contacts(self, race: int):
-        """Hertz results of every contact of one race (arrays (Z, C_race))."""
+        """Hertz results of every contact of one race (arrays (Z, C_race)), computed once."""
+        return self._hertz[race]
+
+    @cached_property
+    def _hertz(self):
+        return {race: self._compute_race_contacts(race) for race in (0, 1)}
+
+    def _compute_race_contacts(self, race: int):
         cols = self.ring == race
         b = self.bearing
         f = b.inner_groove_factor if race == 0 else b.outer_groove_factor

@@ -99,84 +99,44 @@ class _Problem:
         c_z = self.c0_z + np.where(self.inner, shift[..., 1], 0.0)
         return c_rho, c_z
 
-    def state(self, b, u):
-        c_rho, c_z = self.centres(u)
-        cs = self.contacts
-        return _kernels.contact_state(b[:, 0], b[:, 1], c_rho, c_z, self.free, cs.groove_radius,
-                                      cs.side, cs.z0, cs.k_poly, self.film)
-
-    def ball_residual(self, q, n_rho, n_z):
-        return np.stack([self.fc - np.sum(q * n_rho, axis=1), -np.sum(q * n_z, axis=1)], axis=1)
-
-    def seat_loose_balls(self, b, u, q):
-        """Put balls that do not touch the outer race back onto it, radially outward.
-
-        Without an outer contact a ball cannot be in equilibrium: its centrifugal force
-        and any inner contact both push it outward."""
-        loose = ~np.any(q[:, ~self.inner] > 0, axis=1)
-        if not np.any(loose):
-            return b
-        c_rho, c_z = self.centres(u)
-        outer = ~self.inner
-        target = self.free[:, outer] + (self.fc / np.max(self.contacts.k_radial[outer])) ** (
-            2.0 / 3.0)
-        dz = np.clip(b[:, 1:2] - c_z[:, outer], -0.9 * target, 0.9 * target)
-        rho = c_rho[:, outer] + np.sqrt(target**2 - dz**2)
-        b = b.copy()
-        b[loose, 0] = np.max(rho, axis=1)[loose]
-        return b
-
-    def solve_balls(self, b, u, tol):
-        """Newton's method on every ball's equilibrium for fixed ring displacement u.
+    def solve_balls(self, b, u, tol, compiled: bool | None = None):
+        """Newton's method on every ball's equilibrium for fixed ring displacement u
+        (compiled kernel when numba is available, else its NumPy twin; see _kernels.py).
 
         A ball whose contact loads are all below 10 tol is loose: its position is arbitrary
         within the play (it may rattle between two barely touching contacts), so its
         residual is not required to vanish; what it adds to the ring is below 1e-8 of the
-        load.
+        load. A ball with no outer contact is put back on the outer race: its centrifugal
+        force and any inner contact both push it outward.
         """
         tol = max(tol, 2.0 * CENTRIFUGAL_FLOOR)
-        q, n_rho, n_z, delta, s = self.state(b, u)
-        b = self.seat_loose_balls(b, u, q)
-        q, n_rho, n_z, delta, s = self.state(b, u)
-        g = self.ball_residual(q, n_rho, n_z)
-        for _ in range(100):
-            norm = np.hypot(g[:, 0], g[:, 1])
-            norm[np.max(q, axis=1) <= 10.0 * tol] = 0.0                      # loose balls
-            if np.all(norm <= tol):
-                return b, (q, n_rho, n_z, delta, s)
-            sb = s.sum(axis=1)                                               # (Z, 2, 2)
-            det = sb[:, 0, 0] * sb[:, 1, 1] - sb[:, 0, 1] * sb[:, 1, 0]
-            ok = np.abs(det) > 0
-            step = np.zeros_like(b)
-            step[ok, 0] = (sb[ok, 1, 1] * g[ok, 0] - sb[ok, 0, 1] * g[ok, 1]) / det[ok]
-            step[ok, 1] = (-sb[ok, 1, 0] * g[ok, 0] + sb[ok, 0, 0] * g[ok, 1]) / det[ok]
-            lam = np.ones(len(b))
-            for _ in range(30):                                              # backtracking
-                trial = b + lam[:, None] * step
-                state = self.state(trial, u)
-                g_new = self.ball_residual(*state[:3])
-                worse = (np.hypot(g_new[:, 0], g_new[:, 1]) > (1 - 1e-4 * lam) * norm) & (
-                    norm > tol) & (lam > 1e-6)
-                if not np.any(worse):
-                    break
-                lam = np.where(worse, 0.5 * lam, lam)
-            b = self.seat_loose_balls(trial, u, state[0])
-            q, n_rho, n_z, delta, s = self.state(b, u)
-            g = self.ball_residual(q, n_rho, n_z)
-            stalled = np.max(np.abs(lam[:, None] * step)) < 1e-16
-            if stalled and np.all(np.hypot(g[:, 0], g[:, 1]) <= 1e3 * tol):  # round-off floor
-                return b, (q, n_rho, n_z, delta, s)
-        worst = float(np.max(np.hypot(g[:, 0], g[:, 1])))
-        raise ConvergenceError(f"ball equilibrium did not converge: residual {worst:.3e} N "
-                               f"(tolerance {tol:.1e} N) at ring displacement {u.tolist()}")
+        c_rho, c_z = self.centres(u)
+        cs = self.contacts
+        outer = ~self.inner
+        use_compiled = _kernels.solve_balls_numba is not None if compiled is None else compiled
+        kernel = _kernels.solve_balls_numba if use_compiled else _kernels.solve_balls_numpy
+        b, q, n_rho, n_z, delta, s, worst, ok = kernel(
+            np.ascontiguousarray(b, dtype=float), c_rho, c_z, self.free, cs.groove_radius,
+            cs.side, cs.z0, cs.k_poly, self.film, outer, self.fc,
+            float(np.max(cs.k_radial[outer])), tol)
+        if not ok:
+            raise ConvergenceError(f"ball equilibrium did not converge: residual {worst:.3e} N "
+                                   f"(tolerance {tol:.1e} N) at ring displacement {u.tolist()}")
+        return b, (q, n_rho, n_z, delta, s)
+
+    def ring_force(self, state):
+        """Generalised force (F_x, F_y, F_z, M_x, M_y) of the balls on the inner ring."""
+        q, n_rho, n_z = state[:3]
+        inner = self.inner
+        g_in = np.stack([q[:, inner] * n_rho[:, inner], q[:, inner] * n_z[:, inner]], axis=-1)
+        return np.einsum("jkab,jka->b", self.t[:, inner], g_in)
 
     def ring_force_and_stiffness(self, state):
         """Generalised force of the balls on the inner ring and the condensed stiffness."""
-        q, n_rho, n_z, _, s = state
+        s = state[4]
         inner = self.inner
         t_in = self.t[:, inner]                                              # (Z, Ci, 2, 5)
-        g_in = np.stack([q[:, inner] * n_rho[:, inner], q[:, inner] * n_z[:, inner]], axis=-1)
-        force = np.einsum("jkab,jka->b", t_in, g_in)
+        force = self.ring_force(state)
         s_in = s[:, inner]
         st = np.einsum("jkab,jkbc->jac", s_in, t_in)                          # sum_i S T
         tst = np.einsum("jkba,jkbc,jkcd->ad", t_in, s_in, t_in)
@@ -231,8 +191,8 @@ def solve(bearing: BallBearing, condition: OperatingCondition, *, ball_phase: fl
         guess[2] = 0.0
         radial_only = problem.free_dofs.copy()
         problem.free_dofs = np.array([True, True, False, False, False])
-        try:
-            initial = _newton(problem, tolerance, max_iterations, guess)[0]
+        try:   # a warm start only: a loose tolerance is enough
+            initial = _newton(problem, max(tolerance, 1e-3), 30, guess)[0]
         except ConvergenceError:
             initial = None
         problem.free_dofs = radial_only
@@ -284,18 +244,18 @@ def _newton(problem: _Problem, tolerance: float, max_iterations: int, initial):
                 b_t, state_t = problem.solve_balls(b, trial, ball_tol)
             except ConvergenceError:        # far past contact onset: the step is too long
                 return None
-            force_t, stiff_t = problem.ring_force_and_stiffness(state_t)
-            return trial, b_t, state_t, force_t, stiff_t, (load + force_t) * problem.scale
+            force_t = problem.ring_force(state_t)
+            return trial, b_t, state_t, force_t, (load + force_t) * problem.scale
 
         def slope(lam, du=du):
             at = along(lam)
-            return -1e30 if at is None else float(at[5][free] @ (du * problem.scale[free]))
+            return -1e30 if at is None else float(at[4][free] @ (du * problem.scale[free]))
 
         step = along(1.0)
-        newton_worked = step is not None and np.linalg.norm(step[5][free]) < 0.5 * norm
+        newton_worked = step is not None and np.linalg.norm(step[4][free]) < 0.5 * norm
         damping = 0.0 if newton_worked and damping < 1e-3 else (
             damping * 0.1 if newton_worked else max(1e-3, 10.0 * damping))
-        if step is None or np.linalg.norm(step[5][free]) >= norm:
+        if step is None or np.linalg.norm(step[4][free]) >= norm:
             # Newton overshoots (typically across the onset of contact): go to where the
             # residual turns against the step, i.e. the energy minimum along it.
             if slope(1.0) < 0 < slope(0.0):
@@ -304,7 +264,8 @@ def _newton(problem: _Problem, tolerance: float, max_iterations: int, initial):
             if step is None:
                 raise ConvergenceError(f"ring equilibrium: no admissible step from "
                                        f"{u.tolist()} for F = {load.round(6).tolist()}")
-        u, b, state, force, stiff, r = step
+        u, b, state, force, r = step
+        stiff = problem.ring_force_and_stiffness(state)[1]
     raise ConvergenceError(
         f"ring equilibrium did not converge for F = {load.round(6).tolist()} (N, N m): "
         f"residual {float(np.linalg.norm(r[free])):.3e} (tolerance {target:.1e}) after "

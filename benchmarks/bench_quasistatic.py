@@ -1,0 +1,117 @@
+"""Speed of the quasi-static solver, as ratios against straightforward implementations
+measured in the same run.
+
+1. One combined-load, high-speed solve (6205, F_r = 1000 N, F_a = 300 N, 10 000 rpm):
+   bearinglab (compiled ball kernel, condensed analytic Jacobian) against
+   (a) its own NumPy twin and (b) seed 001's scheme written with scipy.optimize.fsolve
+   (every ball by fsolve inside an outer fsolve on the ring; finite-difference
+   Jacobians), with the same contact law. The answers are compared.
+2. A 10 000-case stiffness map (100 radial x 10 axial loads x 10 speeds) with
+   bearinglab.quasistatic.study.stiffness_map on all cores, against the fsolve
+   implementation timed on a sample of the same cases and scaled to 10 000.
+
+Run: .venv/bin/python benchmarks/bench_quasistatic.py
+"""
+
+import math
+import time
+import warnings
+
+import numpy as np
+from scipy import optimize
+
+from bearinglab.geometry import BallBearing
+from bearinglab.operating import OperatingCondition
+from bearinglab.quasistatic import _kernels, solve_load_distribution
+from bearinglab.quasistatic.solver import _Problem, initial_ring_guess, solve
+from bearinglab.quasistatic.study import stiffness_map
+
+BEARING = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3,
+                      diametral_clearance=15e-6)
+
+
+def fsolve_reference(bearing, condition):
+    """Seed 001's scheme with SciPy: for trial ring displacements (x, y, z), solve every
+    ball's equilibrium with scipy.optimize.fsolve, and the ring's with an outer fsolve
+    (finite-difference Jacobians in both), with the same contact law."""
+    p = _Problem(bearing, condition, condition.radial_load_angle, None, None)
+    cs = p.contacts
+    balls = {"b": None}
+
+    def ball_forces(b, c_rho, c_z, j):
+        q, n_rho, n_z, _, _ = _kernels.contact_state(
+            np.array([b[0]]), np.array([b[1]]), c_rho[j:j + 1], c_z[j:j + 1], p.free[j:j + 1],
+            cs.groove_radius, cs.side, cs.z0, cs.k_poly, p.film[j:j + 1])
+        return q, n_rho, n_z
+
+    def ring_residual(x):
+        u = np.zeros(5)
+        u[:3] = x
+        c_rho, c_z = p.centres(u)
+        b = balls["b"].copy()
+        for j in range(bearing.ball_count):
+            def f(bj, j=j):
+                q, n_rho, n_z = ball_forces(bj, c_rho, c_z, j)
+                return [p.fc - np.sum(q * n_rho), -np.sum(q * n_z)]
+            b[j] = optimize.fsolve(f, b[j], xtol=1e-12)
+        balls["b"] = b
+        state = _kernels.contact_state(b[:, 0], b[:, 1], c_rho, c_z, p.free, cs.groove_radius,
+                                       cs.side, cs.z0, cs.k_poly, p.film)
+        return (p.load + p.ring_force(state))[:3]
+
+    u0 = initial_ring_guess(p)
+    c_rho, c_z = p.centres(u0)
+    inner = p.inner
+    # each ball starts between its groove centres, sharing the overlap
+    mid_rho = 0.5 * (c_rho[:, inner].mean(1) + c_rho[:, ~inner].mean(1))
+    mid_z = 0.5 * (c_z[:, inner].mean(1) + c_z[:, ~inner].mean(1))
+    balls["b"] = np.stack([mid_rho, mid_z], 1)
+    x, info, ier, msg = optimize.fsolve(ring_residual, u0[:3], full_output=True, xtol=1e-9)
+    return x, ier == 1
+
+
+def timed(fn, repeat):
+    fn()
+    t = time.perf_counter()
+    for _ in range(repeat):
+        out = fn()
+    return (time.perf_counter() - t) / repeat, out
+
+
+def main() -> None:
+    c = OperatingCondition(radial_load=1000.0, axial_load=300.0, shaft_speed=10000 * math.pi / 30)
+    t_ours, r = timed(lambda: solve_load_distribution(BEARING, c), 50)
+    compiled = _kernels.solve_balls_numba
+    _kernels.solve_balls_numba = None
+    try:
+        t_numpy, _ = timed(lambda: solve(BEARING, c), 10)
+    finally:
+        _kernels.solve_balls_numba = compiled
+    t_ref, (x, ok) = timed(lambda: fsolve_reference(BEARING, c), 3)
+    diff = np.max(np.abs(x - r.displacement[:3]))
+    print(f"single solve: bearinglab {t_ours * 1e3:.2f} ms, NumPy twin {t_numpy * 1e3:.1f} ms "
+          f"(x{t_numpy / t_ours:.1f}), fsolve {t_ref * 1e3:.1f} ms (x{t_ref / t_ours:.1f}, "
+          f"converged: {ok}); displacement difference {diff * 1e9:.3g} nm")
+
+    radial, axial, speeds = np.linspace(0, 2000, 100), np.linspace(-500, 500, 10), \
+        np.linspace(0, 15000, 10)
+    t = time.perf_counter()
+    table = stiffness_map(BEARING, radial, axial, speeds)
+    t_map = time.perf_counter() - t
+    sample = [(fr, fa, n) for fr in radial[5::30] for fa in axial[::4] for n in speeds[::5]]
+    t = time.perf_counter()
+    failures = 0
+    for fr, fa, n in sample:
+        failures += not fsolve_reference(BEARING, OperatingCondition(
+            radial_load=fr, axial_load=fa, shaft_speed=n * math.pi / 30))[1]
+    t_ref_map = (time.perf_counter() - t) / len(sample) * len(table)
+    print(f"{len(table)}-case map: bearinglab {t_map:.1f} s on all cores "
+          f"({(table.status == 'ok').sum()} solved); fsolve scaled from {len(sample)} cases "
+          f"{t_ref_map:.0f} s (x{t_ref_map / t_map:.0f}; {failures} of the sample did not "
+          f"converge)")
+
+
+if __name__ == "__main__":
+    with warnings.catch_warnings():   # fsolve's "not making good progress" notes
+        warnings.simplefilter("ignore", RuntimeWarning)
+        main()
