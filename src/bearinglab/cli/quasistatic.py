@@ -120,6 +120,9 @@ def static(designation: DesignationArg = None,
                "reference).", show_default=False)] = None,
            orbit: Annotated[bool, typer.Option("--orbit", help="Also the inner-ring centre "
                                                "orbit over one ball spacing.")] = False,
+           stiffness_csv: Annotated[Path | None, typer.Option(
+               "--stiffness-csv", help="Write the 5x5 stiffness matrix (SI) to this CSV.",
+               show_default=False)] = None,
            json_output: JsonOpt = False, plot: PlotOpt = None, *, geometry):
     """Quasi-static load distribution: per-ball loads and contact angles, ring
     displacements and the 5x5 stiffness matrix."""
@@ -138,6 +141,8 @@ def static(designation: DesignationArg = None,
         out["orbit_peak_to_peak_um"] = o.peak_to_peak * 1e6
     if plot is not None:
         _save_plot(result, plot)
+    if stiffness_csv is not None:
+        _write_csv(result.stiffness_frame(), stiffness_csv, index=True, flag="--stiffness-csv")
     if json_output:
         _emit_json(out)
         return
@@ -225,17 +230,18 @@ def stiffness_map(designation: DesignationArg = None,
                       "status)[/yellow]")
 
 
-def _write_csv(table: pd.DataFrame, path: Path) -> None:
+def _write_csv(table: pd.DataFrame, path: Path, index: bool = False,
+               flag: str = "--output") -> None:
     """Write atomically: a temporary file in the same directory, then rename."""
     if path.parent and not path.parent.exists():
-        raise OptionError("--output", str(path), "a path in an existing directory")
+        raise OptionError(flag, str(path), "a path in an existing directory")
     fd, tmp = tempfile.mkstemp(suffix=".csv", dir=path.parent or ".", prefix=f".{path.stem}-")
     os.close(fd)
     try:
-        table.to_csv(tmp, index=False)
+        table.to_csv(tmp, index=index)
         os.replace(tmp, path)
     except OSError as exc:
-        raise OptionError("--output", str(path), "a writable file", exc.strerror) from None
+        raise OptionError(flag, str(path), "a writable file", exc.strerror) from None
     finally:
         if os.path.exists(tmp):
             os.unlink(tmp)

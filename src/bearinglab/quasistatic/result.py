@@ -208,6 +208,41 @@ class LoadDistribution:
             "balls": balls,
         }
 
+    def stiffness_frame(self) -> pd.DataFrame:
+        """The 5x5 stiffness matrix as a table with named rows and columns (SI), for CSV."""
+        return pd.DataFrame(self.stiffness_matrix, index=list(DOF_NAMES),
+                            columns=list(DOF_NAMES))
+
+    def to_ross(self, n: int, damping: float = 0.0, tag: str | None = None):
+        """A ``ross.BearingElement`` with this operating point's stiffness.
+
+        ROSS (Timbo et al., the ``ross-rotordynamics`` package, an optional dependency:
+        ``pip install ross-rotordynamics``) models a bearing as x-y springs at a shaft node:
+        kxx, kxy, kyx, kyy and the axial kzz are taken from the tangent stiffness matrix at
+        this speed (``frequency`` = the shaft speed); the tilt terms have no place in a
+        ROSS bearing element and are left out. Ball bearings have little damping of their
+        own: give ``damping`` [N s/m] if you have a value (default 0).
+
+        Parameters
+        ----------
+        n : int
+            Shaft node of the bearing [-].
+        damping : float
+            Direct damping cxx = cyy [N s/m].
+        tag : str, optional
+            Element name; the bearing's name by default.
+        """
+        try:
+            import ross
+        except ImportError:
+            raise ImportError("to_ross() needs ROSS: pip install ross-rotordynamics") from None
+        k = self.stiffness_matrix
+        return ross.BearingElement(
+            n=n, kxx=float(k[0, 0]), kyy=float(k[1, 1]), kxy=float(k[0, 1]),
+            kyx=float(k[1, 0]), kzz=float(k[2, 2]), cxx=float(damping), cyy=float(damping),
+            frequency=[float(self.condition.shaft_speed)],
+            tag=tag or (self.bearing.name or "ball bearing"))
+
     def plot(self, axes=None):
         """Polar load distribution and contact angles; returns (fig, axes)."""
         from ..plotting import load_distribution_figure
