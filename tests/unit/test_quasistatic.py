@@ -12,7 +12,7 @@ from bearinglab.geometry import BallBearing
 from bearinglab.operating import OperatingCondition
 from bearinglab.quasistatic import centrifugal_force, solve_load_distribution
 
-GEOM = dict(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3)
+GEOM = {"ball_count": 9, "ball_diameter": 7.94e-3, "pitch_diameter": 39.04e-3}
 
 
 def bearing(**kw):
@@ -53,14 +53,14 @@ def test_pure_axial_matches_the_closed_form():
 
 
 @pytest.mark.parametrize("kwargs, cond", [
-    ({"diametral_clearance": 15e-6}, dict(radial_load=800.0, axial_load=300.0)),
-    ({"diametral_clearance": 15e-6}, dict(radial_load=800.0, axial_load=300.0,
-                                          moment=(2.0, -1.0), shaft_speed=1500.0)),
-    ({"contact_angle": math.radians(25)}, dict(radial_load=500.0, axial_load=900.0,
-                                               misalignment=(1e-3, 0.0))),
+    ({"diametral_clearance": 15e-6}, {"radial_load": 800.0, "axial_load": 300.0}),
+    ({"diametral_clearance": 15e-6}, {"radial_load": 800.0, "axial_load": 300.0,
+                                          "moment": (2.0, -1.0), "shaft_speed": 1500.0}),
+    ({"contact_angle": math.radians(25)}, {"radial_load": 500.0, "axial_load": 900.0,
+                                               "misalignment": (1e-3, 0.0)}),
     ({"diametral_clearance": 60e-6, "inner_arch_angle": math.radians(25),
-      "outer_arch_angle": math.radians(25)}, dict(radial_load=1200.0, axial_load=200.0,
-                                                  shaft_speed=2000.0)),
+      "outer_arch_angle": math.radians(25)}, {"radial_load": 1200.0, "axial_load": 200.0,
+                                                  "shaft_speed": 2000.0}),
 ])
 def test_stiffness_matrix_equals_finite_differences(kwargs, cond):
     b = bearing(**kwargs)

@@ -13,12 +13,12 @@ from bearinglab.quasistatic.solver import _Problem
 pytestmark = pytest.mark.skipif(_kernels.solve_balls_numba is None, reason="numba missing")
 
 CASES = [
-    (dict(diametral_clearance=15e-6), dict(radial_load=1000.0, axial_load=300.0,
-                                           shaft_speed=10000 * math.pi / 30)),
-    (dict(diametral_clearance=60e-6, inner_arch_angle=math.radians(25),
-          outer_arch_angle=math.radians(25)), dict(radial_load=1500.0, axial_load=100.0)),
-    (dict(contact_angle=math.radians(25)), dict(radial_load=300.0, axial_load=900.0,
-                                                misalignment=(1e-3, -5e-4))),
+    ({"diametral_clearance": 15e-6}, {"radial_load": 1000.0, "axial_load": 300.0,
+                                           "shaft_speed": 10000 * math.pi / 30}),
+    ({"diametral_clearance": 60e-6, "inner_arch_angle": math.radians(25),
+          "outer_arch_angle": math.radians(25)}, {"radial_load": 1500.0, "axial_load": 100.0}),
+    ({"contact_angle": math.radians(25)}, {"radial_load": 300.0, "axial_load": 900.0,
+                                                "misalignment": (1e-3, -5e-4)}),
 ]
 
 
