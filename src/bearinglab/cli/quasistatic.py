@@ -118,6 +118,9 @@ def static(designation: DesignationArg = None,
            temperature_c: Annotated[float | None, typer.Option(
                "--temperature-c", help="Lubricant temperature [degC] (default: its "
                "reference).", show_default=False)] = None,
+           gyroscopic: Annotated[bool, typer.Option(
+               "--gyroscopic", help="Include ball gyroscopic moments (outer-raceway "
+               "control).")] = False,
            orbit: Annotated[bool, typer.Option("--orbit", help="Also the inner-ring centre "
                                                "orbit over one ball spacing.")] = False,
            stiffness_csv: Annotated[Path | None, typer.Option(
@@ -131,7 +134,8 @@ def static(designation: DesignationArg = None,
     condition = _condition(fr, fa, speed_rpm, radial_load_angle_deg, misalignment_mrad)
     oil, temperature = _lubricant(film, lubricant, temperature_c)
     bearing, _ = resolve_bearing(designation, geometry)
-    result = solve_load_distribution(bearing, condition, lubricant=oil, temperature=temperature)
+    result = solve_load_distribution(bearing, condition, lubricant=oil, temperature=temperature,
+                                     gyroscopic=gyroscopic)
     d = result.to_dict()
     d["warnings"] = _geometry_warnings(bearing) + d["warnings"]
     out = {"designation": designation, **d}
@@ -151,7 +155,8 @@ def static(designation: DesignationArg = None,
             "outer_contact_angle_deg", "inner_max_pressure_gpa", "outer_max_pressure_gpa",
             "contact_points"]
     console.print(_table(f"{bearing.name or 'bearing'}: F_r = {fr:g} N, F_a = {fa:g} N, "
-                         f"{speed_rpm:g} rpm" + (", with EHL film" if film else ""),
+                         f"{speed_rpm:g} rpm" + (", with EHL film" if film else "")
+                         + (", gyroscopic (outer-raceway control)" if gyroscopic else ""),
                          [c.replace("_", " ") for c in cols],
                          table[cols].to_numpy().tolist()))
     console.print(escape(_geometry_line(bearing)))

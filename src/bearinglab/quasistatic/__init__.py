@@ -17,6 +17,7 @@ import numpy as np
 from ..errors import ConvergenceError
 from ..geometry import BallBearing
 from ..operating import OperatingCondition
+from .gyroscopic import gyroscopic_ball_force
 from .result import LoadDistribution
 from .solver import CENTRIFUGAL_FLOOR, DOF_NAMES, centrifugal_force, solve
 
@@ -26,7 +27,8 @@ __all__ = ["DOF_NAMES", "LoadDistribution", "centrifugal_force", "solve_load_dis
 def solve_load_distribution(bearing: BallBearing, condition: OperatingCondition, *,
                             ball_phase: float | None = None, ball_diameter_errors=None,
                             film=None, lubricant=None, temperature: float | None = None,
-                            tolerance: float = 1e-9, initial=None) -> LoadDistribution:
+                            gyroscopic: bool = False, tolerance: float = 1e-9,
+                            initial=None) -> LoadDistribution:
     """Quasi-static equilibrium of ``bearing`` under ``condition``.
 
     Parameters
@@ -48,6 +50,10 @@ def solve_load_distribution(bearing: BallBearing, condition: OperatingCondition,
         the load distribution until it changes by less than 1 nm.
     temperature : float, optional
         Lubricant inlet temperature [K]; the lubricant's reference temperature by default.
+    gyroscopic : bool
+        Include the balls' gyroscopic moments, held by friction at the outer raceway
+        (outer-raceway control, :mod:`bearinglab.quasistatic.gyroscopic`), iterated with
+        the load distribution.
     tolerance : float
         Ring equilibrium tolerance relative to the load [-].
     initial : array (5,), optional
@@ -67,19 +73,32 @@ def solve_load_distribution(bearing: BallBearing, condition: OperatingCondition,
               "tolerance": tolerance}
     u, b, state, problem, stiffness = solve(bearing, condition, film=film, initial=initial,
                                             **kwargs)
-    if lubricant is not None and film is None and condition.shaft_speed > 0:
-        for _ in range(10):
-            film = contact_films(bearing, lubricant, condition.shaft_speed, problem.contacts.ring,
-                                 state, temperature)
-            u, b, state, problem, stiffness = solve(bearing, condition, film=film, initial=u,
-                                                    **kwargs)
-            if np.max(np.abs(problem.film - contact_films(
-                    bearing, lubricant, condition.shaft_speed, problem.contacts.ring, state,
-                    temperature))) < 1e-9:
+    with_film = lubricant is not None and film is None and condition.shaft_speed > 0
+    with_gyro = gyroscopic and condition.shaft_speed > 0
+    if with_film or with_gyro:
+        # film and gyroscopic friction depend on the loads and contact angles they change:
+        # iterate to a fixed point (both depend weakly on them)
+        def couplings(state):
+            h = (contact_films(bearing, lubricant, condition.shaft_speed,
+                               problem.contacts.ring, state, temperature) if with_film else film)
+            f = gyroscopic_forces(bearing, condition.shaft_speed, problem.contacts.ring,
+                                  state) if with_gyro else None
+            return h, f
+
+        h, f = couplings(state)
+        for _ in range(20):
+            u, b, state, problem, stiffness = solve(bearing, condition, film=h, ball_force=f,
+                                                    initial=u, **kwargs)
+            h_new, f_new = couplings(state)
+            settled = (not with_film or np.max(np.abs(h_new - h)) < 1e-9) and (
+                not with_gyro or np.max(np.abs(f_new - f)) <= 1e-6 * max(
+                    1.0, float(np.max(np.abs(f)))))
+            h, f = h_new, f_new
+            if settled:
                 break
         else:
-            raise ConvergenceError("the EHL film and the load distribution did not settle "
-                                   "within 10 passes")
+            raise ConvergenceError("the EHL film / gyroscopic friction and the load "
+                                   "distribution did not settle within 20 passes")
     q, n_rho, n_z, delta, _ = state
     if centrifugal_force(bearing, condition.shaft_speed) < CENTRIFUGAL_FLOOR:
         q = np.where(q <= 10 * CENTRIFUGAL_FLOOR, 0.0, q)   # the floor is not a real load
@@ -131,3 +150,34 @@ def contact_films(bearing: BallBearing, lubricant, shaft_speed: float, ring, sta
                                        shaft_speed, name, temperature=temperature,
                                        contact_angle=angle[:, cols], kind="central")
     return film
+
+
+def gyroscopic_forces(bearing: BallBearing, shaft_speed: float, ring, state) -> np.ndarray:
+    """Gyroscopic friction force on every ball (Z, 2) [N] from its loaded contacts' angles
+    (outer-raceway control); balls without a loaded inner and outer contact get none.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        Geometry and ball material.
+    shaft_speed : float
+        Inner-ring speed [rad/s].
+    ring : array (C,)
+        0 inner, 1 outer for each contact column.
+    state : tuple
+        (loads, n_rho, n_z, ...) of the solver [N, -, -].
+    """
+    q, n_rho, n_z = state[:3]
+    sigma = np.where(ring == 0, -1.0, 1.0)
+    angle = np.arctan2(sigma * n_z, np.abs(n_rho))
+    rows = np.arange(len(q))
+    picks = {}
+    for race in (0, 1):
+        cols = np.flatnonzero(ring == race)
+        k = cols[np.argmax(q[:, cols], axis=1)]
+        picks[race] = (angle[rows, k], q[rows, k] > 0)
+    force = gyroscopic_ball_force(bearing.ball_diameter, bearing.pitch_diameter,
+                                  bearing.ball_material.density, shaft_speed,
+                                  picks[0][0], picks[1][0])
+    force[~(picks[0][1] & picks[1][1])] = 0.0
+    return force

@@ -126,9 +126,11 @@ def seat_loose_balls(b, c_rho, c_z, free, outer, q, fc, k_seat):
 
 
 def solve_balls_numpy(b, c_rho, c_z, free, radius, side, z0, k_poly, film, outer, fc, k_seat,
-                      tol, max_iterations=100):
+                      tol, ext, max_iterations=100):
     """Newton's method on every ball's equilibrium (all balls at once, NumPy).
 
+    ``fc`` is the outward (centrifugal) force and ``ext`` (Z, 2) any further force on each
+    ball held fixed during the solve (the gyroscopic friction force) [N].
     Returns (b, q, n_rho, n_z, delta, s, worst residual [N], converged). A ball whose
     contact loads are all below 10 tol is loose and its residual is not required to vanish.
     """
@@ -137,7 +139,8 @@ def solve_balls_numpy(b, c_rho, c_z, free, radius, side, z0, k_poly, film, outer
                              film)
 
     def residual(q, n_rho, n_z):
-        return np.stack([fc - np.sum(q * n_rho, axis=1), -np.sum(q * n_z, axis=1)], axis=1)
+        return np.stack([fc + ext[:, 0] - np.sum(q * n_rho, axis=1),
+                         ext[:, 1] - np.sum(q * n_z, axis=1)], axis=1)
 
     q = state(b)[0]
     b = seat_loose_balls(b, c_rho, c_z, free, outer, q, fc, k_seat)
@@ -240,7 +243,7 @@ if numba is not None:
 
     @numba.njit(cache=True)
     def solve_balls_numba(b, c_rho, c_z, free, radius, side, z0, k_poly, film, outer, fc,
-                          k_seat, tol, max_iterations=100):
+                          k_seat, tol, ext, max_iterations=100):
         """Compiled twin of :func:`solve_balls_numpy`, one ball at a time."""
         nb, ncon = c_rho.shape
         b = b.copy()
@@ -263,7 +266,8 @@ if numba is not None:
             br = _seat(br, bz, c_rho[j], c_z[j], free[j], outer, q[j], fc, k_seat)
             gr, gz = _one_ball(br, bz, c_rho[j], c_z[j], free[j], radius, side, z0, k_poly,
                                film[j], q[j], nr[j], nz[j], dl[j], s[j])
-            gr += fc
+            gr += fc + ext[j, 0]
+            gz += ext[j, 1]
             done = False
             for _ in range(max_iterations):
                 norm = np.sqrt(gr * gr + gz * gz)
@@ -285,7 +289,8 @@ if numba is not None:
                     nz_t = bz + lam * step_z
                     tgr, tgz = _one_ball(nr_t, nz_t, c_rho[j], c_z[j], free[j], radius, side,
                                          z0, k_poly, film[j], tq, tr, tz, td, ts)
-                    tgr += fc
+                    tgr += fc + ext[j, 0]
+                    tgz += ext[j, 1]
                     if np.sqrt(tgr * tgr + tgz * tgz) <= (1 - 1e-4 * lam) * norm or lam <= 1e-6:
                         break
                     lam *= 0.5
@@ -293,7 +298,8 @@ if numba is not None:
                 bz = nz_t
                 gr, gz = _one_ball(br, bz, c_rho[j], c_z[j], free[j], radius, side, z0, k_poly,
                                    film[j], q[j], nr[j], nz[j], dl[j], s[j])
-                gr += fc
+                gr += fc + ext[j, 0]
+                gz += ext[j, 1]
                 moved = lam * np.sqrt(step_r * step_r + step_z * step_z)
                 if moved < 1e-16 and np.sqrt(gr * gr + gz * gz) <= 1e3 * tol:
                     done = True

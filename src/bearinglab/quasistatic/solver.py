@@ -82,6 +82,7 @@ class _Problem:
         self.film = np.zeros((z, cs.count)) if film is None else np.broadcast_to(
             film, (z, cs.count)).astype(float)
         self.fc = max(centrifugal_force(bearing, condition.shaft_speed), CENTRIFUGAL_FLOOR)
+        self.ball_force = np.zeros((z, 2))     # further fixed forces (gyroscopic friction)
         self.t = _kernels.ring_jacobian(self.psi, cs.rho0, cs.z0)            # (Z, C, 2, 5)
         self.inner = cs.ring == 0
         outer_u = np.array([0, 0, 0, *condition.outer_misalignment], dtype=float)
@@ -118,7 +119,7 @@ class _Problem:
         b, q, n_rho, n_z, delta, s, worst, ok = kernel(
             np.ascontiguousarray(b, dtype=float), c_rho, c_z, self.free, cs.groove_radius,
             cs.side, cs.z0, cs.k_poly, self.film, outer, self.fc,
-            float(np.max(cs.k_radial[outer])), tol)
+            float(np.max(cs.k_radial[outer])), tol, self.ball_force)
         if not ok:
             raise ConvergenceError(f"ball equilibrium did not converge: residual {worst:.3e} N "
                                    f"(tolerance {tol:.1e} N) at ring displacement {u.tolist()}")
@@ -174,7 +175,7 @@ def initial_ring_guess(problem: _Problem) -> np.ndarray:
 
 def solve(bearing: BallBearing, condition: OperatingCondition, *, ball_phase: float | None = None,
           ball_diameter_errors=None, film=None, tolerance: float = 1e-9, max_iterations: int = 100,
-          initial: np.ndarray | None = None):
+          initial: np.ndarray | None = None, ball_force=None):
     """Solve ring and ball equilibrium; returns (u, b, state, problem, stiffness).
 
     Without an initial guess, a combined load is solved in two stages: first the radial
@@ -186,6 +187,8 @@ def solve(bearing: BallBearing, condition: OperatingCondition, *, ball_phase: fl
     if ball_phase is None:
         ball_phase = condition.radial_load_angle
     problem = _Problem(bearing, condition, float(ball_phase), ball_diameter_errors, film)
+    if ball_force is not None:
+        problem.ball_force = np.ascontiguousarray(ball_force, dtype=float)
     if initial is None and condition.radial_load > 0:
         guess = initial_ring_guess(problem)
         guess[2] = 0.0
