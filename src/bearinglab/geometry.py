@@ -30,6 +30,11 @@ Race = Literal["inner", "outer"]
 #: ring shoulders for the ring cross-sections. Estimate: SKF's shoulder diameter
 #: d1 = 34.4 mm of a 6205 (D_w = 7.94 mm, d_m = 39.04 mm) gives a depth of 0.21 D_w.
 GROOVE_DEPTH_RATIO = 0.20
+#: Depth of the high (thrust-side) shoulder of angular-contact bearings, as a fraction of
+#: D_w, for the check that a contact ellipse stays on the groove. Estimate: makers build
+#: that shoulder about twice as high as a deep-groove shoulder so the ellipse is contained
+#: up to roughly the nominal angle plus 30 deg.
+ANGULAR_SHOULDER_DEPTH_RATIO = 0.40
 
 
 class Source(NamedTuple):
@@ -420,6 +425,20 @@ class BallBearing:
     def gamma(self) -> float:
         """D_w cos(alpha) / d_m at the nominal contact angle [-]."""
         return self.ball_diameter * math.cos(self.contact_angle) / self.pitch_diameter
+
+    @property
+    def shoulder_depth(self) -> float:
+        """Groove depth from the groove bottom to the (loaded-side) shoulder [m]: an
+        estimate, GROOVE_DEPTH_RATIO D_w for radial bearings and
+        ANGULAR_SHOULDER_DEPTH_RATIO D_w for angular-contact bearings."""
+        ratio = ANGULAR_SHOULDER_DEPTH_RATIO if self.contact_angle > 0 else GROOVE_DEPTH_RATIO
+        return ratio * self.ball_diameter
+
+    def shoulder_angle(self, race: Race) -> float:
+        """Contact angle, measured at the groove centre from the groove bottom, at which
+        the groove meets its shoulder: arccos(1 - depth / (f D_w)) [rad]."""
+        f = self.inner_groove_factor if race == "inner" else self.outer_groove_factor
+        return math.acos(max(-1.0, min(1.0, 1.0 - self.shoulder_depth / (f * self.ball_diameter))))
 
     def contact_radii(self, race: Race, contact_angle: float | None = None):
         """(R_x, R_y) of the inner or outer contact [m]; see :func:`contact_radii`."""

@@ -9,7 +9,7 @@ Validity: Hertz theory assumes the contact ellipse lies inside the groove.  The 
 warns (``warnings``, also in ``to_dict()``) when the ellipse runs over the groove
 shoulder, by the criterion of the load-distribution model (:mod:`bearinglab.quasistatic`):
 |alpha - alpha_g| + a/(f D_w) > arccos(1 - h/(f D_w)), with a the semi-major axis (across
-the groove), f D_w the groove radius, h = GROOVE_DEPTH_RATIO D_w the groove depth (an
+the groove), f D_w the groove radius, h = BallBearing.shoulder_depth the groove depth (an
 estimate, see :data:`bearinglab.geometry.GROOVE_DEPTH_RATIO`) and alpha_g the direction of
 the groove bottom: 0 for radial rings, 90 deg for the washers of a thrust bearing.
 """
@@ -22,7 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from ..geometry import GROOVE_DEPTH_RATIO, BallBearing
+from ..geometry import BallBearing
 from ..materials import effective_modulus
 from . import hertz
 
@@ -58,8 +58,7 @@ class BallContacts:
         for race, c, f in (("inner", self.inner, b.inner_groove_factor),
                            ("outer", self.outer, b.outer_groove_factor)):
             radius = f * b.ball_diameter
-            shoulder = math.acos(max(-1.0, min(1.0, 1.0 - GROOVE_DEPTH_RATIO * b.ball_diameter
-                                               / radius)))
+            shoulder = b.shoulder_angle(race)
             a = np.asarray(c.semi_major, dtype=float)
             reach = abs(self.contact_angle - axis) + a / radius
             angle_text = "|90 deg - alpha|" if b.is_thrust else "|alpha|"
@@ -71,7 +70,8 @@ class BallContacts:
                     f"Q = {loads.ravel()[i]:.4g} N (half-length a = {a.ravel()[i] * 1e3:.3g} mm: "
                     f"{angle_text} + a/(f D_w) = {math.degrees(reach.ravel()[i]):.3g} deg > shoulder "
                     f"angle {math.degrees(shoulder):.3g} deg, groove depth "
-                    f"{GROOVE_DEPTH_RATIO:g} D_w assumed); Hertz results are not valid there")
+                    f"{b.shoulder_depth / b.ball_diameter:g} D_w assumed); Hertz results are "
+                    "not valid there")
         return out
 
     @property

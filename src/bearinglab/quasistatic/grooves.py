@@ -27,7 +27,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..contact import hertz
-from ..geometry import GROOVE_DEPTH_RATIO, BallBearing
+from ..geometry import BallBearing
 from ..materials import effective_modulus
 
 #: Degree of the polynomial K(|cos alpha|) fitted to the exact Hertz constant.
@@ -102,9 +102,7 @@ def contact_set(bearing: BallBearing) -> ContactSet:
         free = radius - 0.5 * dw
         sign = 1.0 if race == "inner" else -1.0     # inner centres lie outward of the ball
         rho = 0.5 * dm + sign * (free * math.cos(arch) - 0.25 * pd)
-        depth = GROOVE_DEPTH_RATIO * dw
-        # contact angle at which the groove meets its shoulder, `depth` above the bottom
-        shoulder = math.acos(max(-1.0, min(1.0, 1.0 - depth / radius)))
+        shoulder = bearing.shoulder_angle(race)
         poly = _k_poly(bearing, race)
         halves = ((0.0, 0.0),) if arch == 0.0 else ((+1.0, -1.0), (-1.0, +1.0))
         for offset_sign, side in halves:
