@@ -411,15 +411,30 @@ class BallBearing:
 
     @property
     def free_contact_angle(self) -> float:
-        """Free contact angle from the clearance [rad]."""
-        return float(free_contact_angle(self.diametral_clearance, self.ball_diameter,
-                                        self.inner_groove_factor, self.outer_groove_factor))
+        """Free contact angle from the clearance [rad]: arccos(H / A), H the radial distance
+        of the groove centres of a loaded pair (seed 001 eq. 6; for circular grooves
+        H = A - P_d/2, Harris & Kotzalas eq. 2.5)."""
+        h, _ = self._pair_geometry()
+        return math.acos(max(-1.0, min(1.0, h / self.groove_centre_distance)))
 
     @property
     def end_play(self) -> float:
-        """Free end play P_e [m]."""
-        return float(end_play(self.diametral_clearance, self.ball_diameter,
-                              self.inner_groove_factor, self.outer_groove_factor))
+        """Free end play P_e [m]: 2 (A sin(alpha_0) - e_i - e_o), e the axial offsets of
+        gothic-arch groove halves (0 for circular grooves: 2 A sin(alpha_0), Harris &
+        Kotzalas eq. 2.6)."""
+        _, offsets = self._pair_geometry()
+        return 2.0 * max(self.groove_centre_distance * math.sin(self.free_contact_angle)
+                         - offsets, 0.0)
+
+    def _pair_geometry(self) -> tuple[float, float]:
+        """(H, e_i + e_o): radial distance of a pair of groove centres (one per ring) and
+        the sum of their axial offsets from the groove mid-planes, rings centred [m]."""
+        free_i = (self.inner_groove_factor - 0.5) * self.ball_diameter
+        free_o = (self.outer_groove_factor - 0.5) * self.ball_diameter
+        h = (free_i * math.cos(self.inner_arch_angle) + free_o * math.cos(self.outer_arch_angle)
+             - 0.5 * self.diametral_clearance)
+        return h, free_i * math.sin(self.inner_arch_angle) + free_o * math.sin(
+            self.outer_arch_angle)
 
     @property
     def gamma(self) -> float:

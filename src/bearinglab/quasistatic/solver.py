@@ -199,7 +199,42 @@ def solve(bearing: BallBearing, condition: OperatingCondition, *, ball_phase: fl
         except ConvergenceError:
             initial = None
         problem.free_dofs = radial_only
-    return _newton(problem, tolerance, max_iterations, initial)
+    try:
+        return _newton(problem, tolerance, max_iterations, initial)
+    except ConvergenceError as direct:
+        return _continuation(problem, tolerance, max_iterations, direct)
+
+
+def _continuation(problem: _Problem, tolerance: float, max_iterations: int,
+                  failure: ConvergenceError):
+    """Fallback: reach the load in steps from its radial part alone (or a tenth of it),
+    each step starting from the previous solution; steps are halved where Newton fails.
+    Contacts that switch on and off (a ball crossing the cusp of a gothic arch, balls
+    entering the load zone) can stall Newton's method from a distant start."""
+    target = problem.load.copy()
+    start = target.copy()
+    start[2:] = 0.0
+    if not np.any(start):
+        start = 0.1 * target
+    problem.load = start
+    try:
+        u = _newton(problem, tolerance, max_iterations, None)[0]
+        t, step = 0.0, 0.25
+        while t < 1.0:
+            trial = min(1.0, t + step)
+            problem.load = start + trial * (target - start)
+            try:
+                u = _newton(problem, tolerance, max_iterations, u)[0]
+                t, step = trial, min(0.5, 2 * step)
+            except ConvergenceError:
+                step *= 0.5
+                if step < 1e-3:
+                    raise failure from None
+        return _newton(problem, tolerance, max_iterations, u)
+    except ConvergenceError:
+        raise failure from None
+    finally:
+        problem.load = target
 
 
 def _newton(problem: _Problem, tolerance: float, max_iterations: int, initial):
