@@ -20,6 +20,7 @@ demo: setup
 	$(BIN)/bearinglab frequencies 6205-2RS --speed-rpm 1797
 	$(BIN)/bearinglab contact 6205-2RS --ball-load-n 1000
 	$(BIN)/bearinglab info 180205
+	$(BIN)/bearinglab static 6205-2RS --radial-load-n 1000 --speed-rpm 1797
 
 test: setup
 	$(BIN)/python -m pytest -q

@@ -66,7 +66,7 @@ def fsolve_reference(bearing, condition):
     mid_rho = 0.5 * (c_rho[:, inner].mean(1) + c_rho[:, ~inner].mean(1))
     mid_z = 0.5 * (c_z[:, inner].mean(1) + c_z[:, ~inner].mean(1))
     balls["b"] = np.stack([mid_rho, mid_z], 1)
-    x, info, ier, msg = optimize.fsolve(ring_residual, u0[:3], full_output=True, xtol=1e-9)
+    x, _info, ier, _msg = optimize.fsolve(ring_residual, u0[:3], full_output=True, xtol=1e-9)
     return x, ier == 1
 
 
