@@ -165,11 +165,8 @@ def initial_ring_guess(problem: _Problem) -> np.ndarray:
         q = 5.0 * fr / b.ball_count
         u[:2] = load[:2] / fr * (0.5 * b.diametral_clearance + (q / k_n) ** (2 / 3))
     if load[2] != 0:
-        h = float(np.ptp(cs.rho0)) if cs.count > 1 else 0.0
-        a = float(np.max(cs.free_distance[cs.ring == 0]) + np.max(cs.free_distance[cs.ring == 1]))
-        play = math.sqrt(max(a * a - h * h, 0.0))
         q = abs(load[2]) / b.ball_count / 0.5
-        u[2] = math.copysign(play + (q / k_n) ** (2 / 3), load[2])
+        u[2] = math.copysign(0.5 * b.end_play + (q / k_n) ** (2 / 3), load[2])
     return u
 
 
