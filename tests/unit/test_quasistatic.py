@@ -168,3 +168,24 @@ def test_bad_ball_errors():
     with pytest.raises(InputError):
         solve_load_distribution(bearing(), OperatingCondition(radial_load=10.0),
                                 ball_diameter_errors=np.zeros(3))
+
+
+def test_inner_ring_expansion_thin_ring_limit_and_effect():
+    from bearinglab.quasistatic import inner_ring_expansion
+
+    # a ring whose bore is almost its raceway is a thin ring: u = rho omega^2 R^3 / E
+    thin = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3,
+                       bore=31.0e-3, outside_diameter=52e-3, width=15e-3)
+    omega = 30000 * math.pi / 30
+    r = 0.5 * thin.inner_raceway_diameter
+    assert inner_ring_expansion(thin, omega) == pytest.approx(
+        7830 * omega**2 * r**3 / 208e9, rel=0.05)
+    b = bearing(diametral_clearance=20e-6, bore=25e-3, outside_diameter=52e-3, width=15e-3)
+    c = OperatingCondition(radial_load=300.0, shaft_speed=omega)
+    hot = solve_load_distribution(b, c, ring_expansion=True)
+    cold = solve_load_distribution(b, c)
+    shrink = 2 * inner_ring_expansion(b, omega)
+    assert hot.bearing.diametral_clearance == pytest.approx(20e-6 - shrink)
+    assert hot.radial_displacement < cold.radial_displacement
+    with pytest.raises(InputError, match="bore"):
+        solve_load_distribution(bearing(), c, ring_expansion=True)

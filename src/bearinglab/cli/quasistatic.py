@@ -121,6 +121,9 @@ def static(designation: DesignationArg = None,
            gyroscopic: Annotated[bool, typer.Option(
                "--gyroscopic", help="Include ball gyroscopic moments (outer-raceway "
                "control).")] = False,
+           ring_expansion: Annotated[bool, typer.Option(
+               "--ring-expansion", help="Reduce the clearance by the inner ring's "
+               "centrifugal expansion.")] = False,
            orbit: Annotated[bool, typer.Option("--orbit", help="Also the inner-ring centre "
                                                "orbit over one ball spacing.")] = False,
            stiffness_csv: Annotated[Path | None, typer.Option(
@@ -135,7 +138,7 @@ def static(designation: DesignationArg = None,
     oil, temperature = _lubricant(film, lubricant, temperature_c)
     bearing, _ = resolve_bearing(designation, geometry)
     result = solve_load_distribution(bearing, condition, lubricant=oil, temperature=temperature,
-                                     gyroscopic=gyroscopic)
+                                     gyroscopic=gyroscopic, ring_expansion=ring_expansion)
     d = result.to_dict()
     d["warnings"] = _geometry_warnings(bearing) + d["warnings"]
     out = {"designation": designation, **d}

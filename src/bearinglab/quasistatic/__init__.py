@@ -12,6 +12,8 @@ eqs. 1-5, seed 003 noise section eqs. 1-8).
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 
 from ..errors import ConvergenceError
@@ -19,16 +21,23 @@ from ..geometry import BallBearing
 from ..operating import OperatingCondition
 from .gyroscopic import gyroscopic_ball_force
 from .result import LoadDistribution
-from .solver import CENTRIFUGAL_FLOOR, DOF_NAMES, centrifugal_force, solve
+from .solver import (
+    CENTRIFUGAL_FLOOR,
+    DOF_NAMES,
+    centrifugal_force,
+    inner_ring_expansion,
+    solve,
+)
 
-__all__ = ["DOF_NAMES", "LoadDistribution", "centrifugal_force", "solve_load_distribution"]
+__all__ = ["DOF_NAMES", "LoadDistribution", "centrifugal_force", "inner_ring_expansion",
+           "solve_load_distribution"]
 
 
 def solve_load_distribution(bearing: BallBearing, condition: OperatingCondition, *,
                             ball_phase: float | None = None, ball_diameter_errors=None,
                             film=None, lubricant=None, temperature: float | None = None,
-                            gyroscopic: bool = False, tolerance: float = 1e-9,
-                            initial=None) -> LoadDistribution:
+                            gyroscopic: bool = False, ring_expansion: bool = False,
+                            tolerance: float = 1e-9, initial=None) -> LoadDistribution:
     """Quasi-static equilibrium of ``bearing`` under ``condition``.
 
     Parameters
@@ -54,6 +63,10 @@ def solve_load_distribution(bearing: BallBearing, condition: OperatingCondition,
         Include the balls' gyroscopic moments, held by friction at the outer raceway
         (outer-raceway control, :mod:`bearinglab.quasistatic.gyroscopic`), iterated with
         the load distribution.
+    ring_expansion : bool
+        Reduce the clearance by the inner ring's centrifugal expansion at this speed
+        (:func:`bearinglab.quasistatic.solver.inner_ring_expansion`); the result's
+        ``bearing`` then carries the operating clearance.
     tolerance : float
         Ring equilibrium tolerance relative to the load [-].
     initial : array (5,), optional
@@ -69,6 +82,10 @@ def solve_load_distribution(bearing: BallBearing, condition: OperatingCondition,
         When the ball or ring equilibrium cannot be found (e.g. a load the bearing cannot
         carry); the message names the load and the residual.
     """
+    if ring_expansion and condition.shaft_speed > 0:
+        shrink = 2.0 * inner_ring_expansion(bearing, condition.shaft_speed)
+        bearing = dataclasses.replace(bearing, diametral_clearance=bearing.diametral_clearance
+                                      - shrink)
     kwargs = {"ball_phase": ball_phase, "ball_diameter_errors": ball_diameter_errors,
               "tolerance": tolerance}
     u, b, state, problem, stiffness = solve(bearing, condition, film=film, initial=initial,
@@ -153,8 +170,9 @@ def contact_films(bearing: BallBearing, lubricant, shaft_speed: float, ring, sta
 
 
 def gyroscopic_forces(bearing: BallBearing, shaft_speed: float, ring, state) -> np.ndarray:
-    """Gyroscopic friction force on every ball (Z, 2) [N] from its loaded contacts' angles
-    (outer-raceway control); balls without a loaded inner and outer contact get none.
+    """Gyroscopic friction force on every ball (Z, 2) [N] from the load-weighted contact
+    angles of its inner and outer contacts (outer-raceway control); balls without a loaded
+    inner and outer contact get none.
 
     Parameters
     ----------
@@ -170,12 +188,15 @@ def gyroscopic_forces(bearing: BallBearing, shaft_speed: float, ring, state) -> 
     q, n_rho, n_z = state[:3]
     sigma = np.where(ring == 0, -1.0, 1.0)
     angle = np.arctan2(sigma * n_z, np.abs(n_rho))
-    rows = np.arange(len(q))
     picks = {}
     for race in (0, 1):
-        cols = np.flatnonzero(ring == race)
-        k = cols[np.argmax(q[:, cols], axis=1)]
-        picks[race] = (angle[rows, k], q[rows, k] > 0)
+        cols = ring == race
+        total = q[:, cols].sum(axis=1)
+        # load-weighted angle: a ball held in both halves of an arch spins about a nearly
+        # radial-symmetric axis (no gyroscopic moment); the weighting keeps this continuous
+        mean = np.where(total > 0, (q[:, cols] * angle[:, cols]).sum(axis=1)
+                        / np.where(total > 0, total, 1.0), 0.0)
+        picks[race] = (mean, total > 0)
     force = gyroscopic_ball_force(bearing.ball_diameter, bearing.pitch_diameter,
                                   bearing.ball_material.density, shaft_speed,
                                   picks[0][0], picks[1][0])

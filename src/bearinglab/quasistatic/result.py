@@ -202,6 +202,7 @@ class LoadDistribution:
             "reaction_moment_nm": self.reaction[3:].tolist(),
             "equilibrium_residual_n": float(np.linalg.norm(residual[solved])),
             "speed_rpm": self.condition.shaft_speed * 30 / math.pi,
+            "diametral_clearance_um": self.bearing.diametral_clearance * 1e6,
             "radial_load_n": self.condition.radial_load,
             "axial_load_n": self.condition.axial_load,
             "warnings": list(self.warnings),

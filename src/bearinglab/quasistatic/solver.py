@@ -62,6 +62,30 @@ def centrifugal_force(bearing: BallBearing, shaft_speed: float) -> float:
             * bearing.pitch_diameter * omega_c**2 / 12.0)
 
 
+def inner_ring_expansion(bearing: BallBearing, shaft_speed: float) -> float:
+    """Radial growth of the inner raceway by the ring's own centrifugal force [m].
+
+    The inner ring as a rotating annular disc with free edges, plane stress (Timoshenko S.,
+    Goodier J. N., *Theory of Elasticity*, 3rd ed., 1970, sec. 32, rotating disc with a
+    central hole): u(b) = rho omega^2 b / (4 E) ((3 + nu) a^2 + (1 - nu) b^2), a the bore
+    radius, b the raceway (groove-bottom) radius. The fit on the shaft, which expands too,
+    is ignored; the outer ring is fixed. The diametral clearance shrinks by 2 u(b).
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        Geometry (needs the bore) and ring material.
+    shaft_speed : float
+        Inner-ring speed [rad/s].
+    """
+    if bearing.bore is None:
+        raise InputError("bore", None, "a bore [m]", "needed for the inner ring's expansion")
+    m = bearing.ring_material
+    a, b = 0.5 * bearing.bore, 0.5 * bearing.inner_raceway_diameter
+    return (m.density * shaft_speed**2 * b / (4.0 * m.elastic_modulus)
+            * ((3.0 + m.poisson_ratio) * a * a + (1.0 - m.poisson_ratio) * b * b))
+
+
 class _Problem:
     """Everything fixed during one solve: geometry arrays, loads, which DOFs are free."""
 
