@@ -39,8 +39,8 @@ def test_static_film_and_orbit(capsys):
     dry = run_json(capsys, "static", "6205", "--radial-load-n", "1000", "--speed-rpm", "6000")
     wet = run_json(capsys, "static", "6205", "--radial-load-n", "1000", "--speed-rpm", "6000",
                    "--film", "--orbit")
-    # the film adds to the clearance: the ring moves further for the same load
-    assert wet["radial_displacement_um"] > dry["radial_displacement_um"]
+    # the film is a layer between the surfaces: it takes up play, the ring moves less
+    assert wet["radial_displacement_um"] < dry["radial_displacement_um"]
     assert wet["orbit_peak_to_peak_um"] > 0 and len(wet["orbit"]["x_um"]) > 10
 
 

@@ -58,3 +58,20 @@ def test_no_film_at_rest():
     b = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3)
     r = solve_load_distribution(b, OperatingCondition(radial_load=500.0), lubricant=ISO_VG68)
     assert np.all(r.film == 0)
+
+
+def test_a_film_takes_up_play():
+    # seed 001 eq. 2: centre distance = R_e + R_n - D_w + delta_e + delta_n - h_e - h_n. Under
+    # a radial load (contacts along the radius) a film h on both contacts of every ball is
+    # the same as 2h less play per ball, i.e. a diametral clearance smaller by 4h
+    c = OperatingCondition(radial_load=2000.0)
+    geometry = dict(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3)
+    wet = solve_load_distribution(BallBearing(**geometry, diametral_clearance=15e-6), c,
+                                  film=0.5e-6)
+    tight = solve_load_distribution(BallBearing(**geometry, diametral_clearance=13e-6), c)
+    assert wet.radial_displacement == pytest.approx(tight.radial_displacement, rel=1e-6)
+    np.testing.assert_allclose(wet.load, tight.load, rtol=1e-6, atol=1e-6)
+    b = BallBearing(**geometry, diametral_clearance=15e-6)
+    axial = OperatingCondition(axial_load=500.0, shaft_speed=6000 * math.pi / 30)
+    assert (solve_load_distribution(b, axial, lubricant=ISO_VG68).axial_displacement
+            < solve_load_distribution(b, axial).axial_displacement)

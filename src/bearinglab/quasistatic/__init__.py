@@ -52,7 +52,9 @@ def solve_load_distribution(bearing: BallBearing, condition: OperatingCondition,
     ball_diameter_errors : array (Z,), optional
         D_wj - D_w of each ball [m] (seed 003 noise section eq. 7).
     film : float or array (Z, C), optional
-        EHL film thickness subtracted from each contact's approach [m] (seed 001 eq. 2).
+        EHL film thickness of each contact [m]: a layer between the surfaces, so for given
+        groove centres it adds to the elastic approach (seed 001 eq. 2: the centre
+        distance is R_e + R_n - D_w + delta_e + delta_n - h_e - h_n).
     lubricant : bearinglab.lubrication.Lubricant, optional
         When given (and ``film`` is not), the film of every contact is the Hamrock-Dowson
         central film at its own load, contact angle and entrainment speed, iterated with

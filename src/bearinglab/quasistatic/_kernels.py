@@ -2,7 +2,8 @@
 
 Vectorised NumPy over balls j (first axis) and contacts k (second axis). Notation in a
 ball's plane: v = b - c (ball centre minus groove centre), n = v/|v|,
-delta = |v| - (R - D_w/2) - h, c = |n_rho| = |cos alpha|, Q = K(c) max(delta, 0)^1.5,
+delta = |v| - (R - D_w/2) + h (the film is a layer between the surfaces: for given
+centres it adds to the elastic approach, seed 001 eq. 2), c = |n_rho| = |cos alpha|, Q = K(c) max(delta, 0)^1.5,
 force on the ball G = -Q n, and S = -dG/dv = n (dQ/dv)^T + Q (I - n n^T)/|v| with
 dQ/dv = 1.5 K delta^0.5 n + delta^1.5 K'(c) sign(n_rho) (e_rho - n_rho n)/|v|.
 """
@@ -27,7 +28,7 @@ def contact_state(b_rho, b_z, c_rho, c_z, free, radius, side, z0, k_poly, film):
     k_poly : array (C, P)
         K(c) polynomial coefficients, highest power first [N/m^1.5].
     film : array (Z, C)
-        EHL film thickness subtracted from the approach [m].
+        EHL film thickness between the surfaces, added to the approach [m].
 
     Returns
     -------
@@ -38,7 +39,7 @@ def contact_state(b_rho, b_z, c_rho, c_z, free, radius, side, z0, k_poly, film):
     v_z = b_z[:, None] - c_z
     dist = np.hypot(v_rho, v_z)
     n_rho, n_z = v_rho / dist, v_z / dist
-    delta = dist - free - film
+    delta = dist - free + film
     c = np.abs(n_rho)
     k = np.zeros_like(c)
     dk = np.zeros_like(c)
@@ -195,7 +196,7 @@ if numba is not None:
             dist = np.sqrt(v_rho * v_rho + v_z * v_z)
             n_r = v_rho / dist
             n_zz = v_z / dist
-            delta = dist - free[k] - film[k]
+            delta = dist - free[k] + film[k]
             c = abs(n_r)
             kk = 0.0
             dk = 0.0

@@ -4,7 +4,8 @@ Model (seed 001, Balyakin et al. 2010, generalised to five ring degrees of freed
 each ball has two unknowns, its centre (rho, z) in its own plane, and touches up to four
 groove halves (two-, three- or four-point contact, seed 001 figs. 1-3), with the Hertz law
 Q = K(alpha) delta^1.5 (K from the exact Hertz solution at the current contact angle),
-the approach reduced by the EHL film (seed 001 eq. 2) and the ball pressed outward by its
+the EHL film taking up part of the play (seed 001 eq. 2: the centre distance is
+R_e + R_n - D_w + delta_e + delta_n - h_e - h_n) and the ball pressed outward by its
 centrifugal force F_c = pi rho_b D_w^3 d_m omega_c^2 / 12 (seed 001, after eq. 3;
 omega_c the pure-rolling cage speed). The outer ring is fixed (it may be tilted); the
 inner ring moves by u = (x, y, z, tilt_x, tilt_y) (small rotations). Ball equilibrium

@@ -453,9 +453,10 @@ CASES = [
       for fa in (150.0, 350.0, 700.0)],
     *[Case(SOURCE, f"S_r(0 rpm) - S_r(8000 rpm) at F_r = 1000 N, F_a = {fa:g} N (fig. 7)",
            10.0, "um", (lambda fa=fa: speed_difference(1000.0, fa)), 0.7, _DIFFERENCE_REASON,
-           known_failure=("our frictionless quasi-static model gives a LARGER S_r at speed: "
-                          "centrifugal force seats the balls deeper in the outer groove, "
-                          "so the inner ring travels further (see "
+           known_failure=("without a film our model gives a LARGER S_r at speed (centrifugal "
+                          "force seats the balls deeper in the outer groove); the paper's "
+                          "eq. 2 film, whose lubricant it does not give, or the inner ring's "
+                          "expansion give its sign and order at F_a = 0 and 150 N only (see "
                           "docs/capabilities/load_distribution_seed001.md)"))
       for fa in (0.0, 150.0, 350.0)],
 ]
