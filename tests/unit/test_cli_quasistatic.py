@@ -94,3 +94,13 @@ def test_ring_modes_json_with_the_paper_overrides(capsys):
     assert len(modes[4]["approx_khz"]) == 2                               # 2m = n: split
     for m in modes.values():
         assert {"m", "free_khz", "approx_khz", "refined_khz", "epsilon"} <= m.keys()
+
+
+def test_ring_modes_with_the_load_distribution_stiffness(capsys):
+    closed = run_json(capsys, "ring-modes", "6310", "--axial-load-n", "200", "--modes", "2:3")
+    solved = run_json(capsys, "ring-modes", "6310", "--axial-load-n", "200", "--modes", "2:3",
+                      "--stiffness-from", "load-distribution")
+    assert solved["sources"]["radial_stiffness"].startswith("load distribution")
+    # both are the radial stiffness of the same axially loaded bearing: close, not equal
+    ratio = solved["radial_stiffness_n_per_m"] / closed["radial_stiffness_n_per_m"]
+    assert 0.7 < ratio < 1.3 and ratio != 1.0

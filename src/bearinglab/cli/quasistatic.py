@@ -2,6 +2,7 @@
 
 import math
 import os
+from enum import Enum
 import tempfile
 from pathlib import Path
 from typing import Annotated
@@ -255,6 +256,11 @@ def _write_csv(table: pd.DataFrame, path: Path, index: bool = False,
             os.unlink(tmp)
 
 
+class StiffnessSource(str, Enum):
+    closed_form = "closed-form"
+    load_distribution = "load-distribution"
+
+
 def _modes(text: str) -> list[int]:
     try:
         if ":" in text:
@@ -303,6 +309,10 @@ def ring_modes_command(
         contact_stiffness_ratio: Annotated[float | None, typer.Option(
             "--contact-stiffness-ratio", help="K1/K2 (outer over inner contact stiffness).",
             show_default=False)] = None,
+        stiffness_from: Annotated[StiffnessSource, typer.Option(
+            "--stiffness-from", help="K_x from seed 000's closed form (axial load, contact "
+            "angle) or from the load-distribution stiffness at the axial load.")]
+        = StiffnessSource.closed_form,
         json_output: JsonOpt = False, plot: PlotOpt = None, *, geometry):
     """Natural frequencies of the outer ring in the loaded bearing (seed 000)."""
     ms = _modes(modes)
@@ -317,15 +327,23 @@ def ring_modes_command(
                         ("--radial-stiffness-n-per-m", radial_stiffness_n_per_m),
                         ("--ball-mass-ratio", ball_mass_ratio),
                         ("--contact-stiffness-ratio", contact_stiffness_ratio)):
-        if value is not None and not (math.isfinite(value) and value >= 0 and value < 1e15):
-            raise OptionError(flag, value, "a finite value >= 0")
-    _load("--axial-load-n", axial_load_n)
+        if value is not None and not (math.isfinite(value) and 0 < value < 1e15):
+            raise OptionError(flag, value, "a finite value > 0")
+    if not (math.isfinite(axial_load_n) and 0 < axial_load_n <= MAX_LOAD_N):
+        raise OptionError("--axial-load-n", axial_load_n, f"a load in (0, {MAX_LOAD_N:g}] N")
     bearing, _ = resolve_bearing(designation, geometry)
+    if stiffness_from is StiffnessSource.load_distribution and radial_stiffness_n_per_m is None:
+        radial_stiffness_n_per_m = solve_load_distribution(
+            bearing, OperatingCondition(axial_load=axial_load_n)).radial_stiffness
     result = ring_modes(bearing, axial_load=axial_load_n, modes=flexural or [2],
                         ring_mass=ring_mass_kg, radial_stiffness=radial_stiffness_n_per_m,
                         free_frequencies=free, ball_mass_ratio=ball_mass_ratio,
                         contact_stiffness_ratio=contact_stiffness_ratio)
     d = result.to_dict()
+    if stiffness_from is StiffnessSource.load_distribution and "--radial-stiffness" not in str(
+            d["sources"].get("radial_stiffness")):
+        d["sources"]["radial_stiffness"] = ("load distribution: tangent radial stiffness at "
+                                            f"F_a = {axial_load_n:g} N")
     d["modes"] = [m for m in d["modes"] if m["m"] in ms]
     if 1 in ms:   # the rigid-body mode of the ring on the ball springs, f_1 of eq. (1.7)
         d["modes"].insert(0, {"m": 1, "free_khz": 0.0, "split": False,
