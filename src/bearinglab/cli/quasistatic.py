@@ -2,8 +2,8 @@
 
 import math
 import os
-from enum import Enum
 import tempfile
+from enum import Enum
 from pathlib import Path
 from typing import Annotated
 
