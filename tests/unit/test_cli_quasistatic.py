@@ -104,3 +104,15 @@ def test_ring_modes_with_the_load_distribution_stiffness(capsys):
     # both are the radial stiffness of the same axially loaded bearing: close, not equal
     ratio = solved["radial_stiffness_n_per_m"] / closed["radial_stiffness_n_per_m"]
     assert 0.7 < ratio < 1.3 and ratio != 1.0
+
+
+def test_four_point_bearings_get_gothic_arches(capsys):
+    radial = run_json(capsys, "static", "QJ205", "--radial-load-n", "2000")
+    loaded = [b for b in radial["balls"] if b["inner_load_n"] > 0]
+    assert loaded and all(b["contact_points"] == 4 for b in loaded)      # seed 001 fig. 5a
+    axial = run_json(capsys, "static", "QJ205", "--axial-load-n", "2000")
+    assert all(b["contact_points"] == 2 for b in axial["balls"])          # seed 001 fig. 1
+    assert axial["balls"][0]["inner_contact_angle_deg"] > 35.0
+    arches = run_json(capsys, "static", "6205", "--radial-load-n", "2000", "--clearance-um",
+                      "0", "--inner-arch-angle-deg", "20", "--outer-arch-angle-deg", "20")
+    assert max(b["contact_points"] for b in arches["balls"]) == 4

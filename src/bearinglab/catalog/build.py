@@ -59,7 +59,8 @@ from .lookup import (
 #: Keywords of BallBearing a caller may override.
 OVERRIDABLE = ("ball_count", "ball_diameter", "pitch_diameter", "inner_groove_factor",
                "outer_groove_factor", "contact_angle", "diametral_clearance", "bore",
-               "outside_diameter", "width", "ring_material", "ball_material", "name")
+               "outside_diameter", "width", "ring_material", "ball_material", "name",
+               "inner_arch_angle", "outer_arch_angle")
 USER_SOURCE = Source("user", "command line or caller")
 _INTERNAL = ("ball_count", "ball_diameter", "pitch_diameter", "inner_groove_factor",
              "outer_groove_factor")
@@ -333,5 +334,31 @@ def bearing_from_designation(text: str, system: str | None = None,
     name = values.pop("name", None) or (named.name if named is not None else
                                         getattr(des, "text", text))
     btype = getattr(des, "bearing_type", None) or "radial_ball"
+    if btype == "four_point_contact_ball":
+        _four_point_grooves(values, sources)
     bearing = BallBearing(**values, name=name, bearing_type=btype, sources=sources)
     return bearing, des
+
+
+def _four_point_grooves(values: dict, sources: dict) -> None:
+    """Gothic-arch grooves of a four-point bearing (QJ, GOST 176000): both rings get the
+    arch angle alpha_T that gives the nominal contact angle alpha_0 with the clearance,
+    cos(alpha_T) = cos(alpha_0) + P_d / (2 A) (seed 001 eq. 2 with g = P_d, A = (f_i + f_o
+    - 1) D_w); without a clearance the bearing is taken to touch at all four points
+    (P_d = 0, alpha_T = alpha_0), an estimate."""
+    alpha = values.get("contact_angle")
+    if alpha is None or "inner_arch_angle" in values:
+        return
+    if "diametral_clearance" not in values:
+        values["diametral_clearance"] = 0.0
+        sources["diametral_clearance"] = Source(
+            "estimated", "four-point bearing taken to touch at all four points (P_d = 0)")
+    a = (values["inner_groove_factor"] + values["outer_groove_factor"] - 1.0) * values[
+        "ball_diameter"]
+    arch = math.acos(max(-1.0, min(1.0, math.cos(alpha) + values["diametral_clearance"]
+                                   / (2.0 * a))))
+    source = Source("estimated", "gothic arch giving the nominal contact angle with the "
+                                 "clearance (seed 001 eq. 2)")
+    for name in ("inner_arch_angle", "outer_arch_angle"):
+        values[name] = arch
+        sources[name] = source
