@@ -441,19 +441,21 @@ class BallBearing:
         """D_w cos(alpha) / d_m at the nominal contact angle [-]."""
         return self.ball_diameter * math.cos(self.contact_angle) / self.pitch_diameter
 
-    @property
-    def shoulder_depth(self) -> float:
-        """Groove depth from the groove bottom to the (loaded-side) shoulder [m]: an
-        estimate, GROOVE_DEPTH_RATIO D_w for radial bearings and
-        ANGULAR_SHOULDER_DEPTH_RATIO D_w for angular-contact bearings."""
-        ratio = ANGULAR_SHOULDER_DEPTH_RATIO if self.contact_angle > 0 else GROOVE_DEPTH_RATIO
-        return ratio * self.ball_diameter
+    def shoulder_depth(self, side: int = 1) -> float:
+        """Groove depth from the groove bottom to a shoulder [m] (an estimate):
+        GROOVE_DEPTH_RATIO D_w, except the thrust-side (``side`` = +1) shoulder of an
+        angular-contact bearing, ANGULAR_SHOULDER_DEPTH_RATIO D_w. The thrust side is the
+        one a positive contact angle leans to (docs/conventions.md)."""
+        high = self.contact_angle > 0 and side > 0
+        return (ANGULAR_SHOULDER_DEPTH_RATIO if high else GROOVE_DEPTH_RATIO) * self.ball_diameter
 
-    def shoulder_angle(self, race: Race) -> float:
+    def shoulder_angle(self, race: Race, side: int = 1) -> float:
         """Contact angle, measured at the groove centre from the groove bottom, at which
-        the groove meets its shoulder: arccos(1 - depth / (f D_w)) [rad]."""
+        the groove meets its shoulder on ``side`` (+1 thrust side, -1 the other):
+        arccos(1 - depth / (f D_w)) [rad]."""
         f = self.inner_groove_factor if race == "inner" else self.outer_groove_factor
-        return math.acos(max(-1.0, min(1.0, 1.0 - self.shoulder_depth / (f * self.ball_diameter))))
+        return math.acos(max(-1.0, min(1.0, 1.0 - self.shoulder_depth(side)
+                                       / (f * self.ball_diameter))))
 
     def contact_radii(self, race: Race, contact_angle: float | None = None):
         """(R_x, R_y) of the inner or outer contact [m]; see :func:`contact_radii`."""

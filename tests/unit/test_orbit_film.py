@@ -65,7 +65,7 @@ def test_a_film_takes_up_play():
     # a radial load (contacts along the radius) a film h on both contacts of every ball is
     # the same as 2h less play per ball, i.e. a diametral clearance smaller by 4h
     c = OperatingCondition(radial_load=2000.0)
-    geometry = dict(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3)
+    geometry = {"ball_count": 9, "ball_diameter": 7.94e-3, "pitch_diameter": 39.04e-3}
     wet = solve_load_distribution(BallBearing(**geometry, diametral_clearance=15e-6), c,
                                   film=0.5e-6)
     tight = solve_load_distribution(BallBearing(**geometry, diametral_clearance=13e-6), c)

@@ -189,3 +189,12 @@ def test_inner_ring_expansion_thin_ring_limit_and_effect():
     assert hot.radial_displacement < cold.radial_displacement
     with pytest.raises(InputError, match="bore"):
         solve_load_distribution(bearing(), c, ring_expansion=True)
+
+
+def test_angular_contact_low_shoulder_is_checked_on_its_side():
+    acbb = bearing(contact_angle=math.radians(40))
+    seated = solve_load_distribution(acbb, OperatingCondition(axial_load=2000.0))
+    reversed_load = solve_load_distribution(acbb, OperatingCondition(axial_load=-2000.0))
+    assert not seated.warnings                                   # thrust side: high shoulder
+    assert any("shoulder" in w for w in reversed_load.warnings)  # the low side runs over
+    assert acbb.shoulder_angle("inner", 1) > acbb.shoulder_angle("inner", -1)

@@ -9,7 +9,7 @@ Validity: Hertz theory assumes the contact ellipse lies inside the groove.  The 
 warns (``warnings``, also in ``to_dict()``) when the ellipse runs over the groove
 shoulder, by the criterion of the load-distribution model (:mod:`bearinglab.quasistatic`):
 |alpha - alpha_g| + a/(f D_w) > arccos(1 - h/(f D_w)), with a the semi-major axis (across
-the groove), f D_w the groove radius, h = BallBearing.shoulder_depth the groove depth (an
+the groove), f D_w the groove radius, h = BallBearing.shoulder_depth() the groove depth (an
 estimate, see :data:`bearinglab.geometry.GROOVE_DEPTH_RATIO`) and alpha_g the direction of
 the groove bottom: 0 for radial rings, 90 deg for the washers of a thrust bearing.
 """
@@ -58,7 +58,8 @@ class BallContacts:
         for race, c, f in (("inner", self.inner, b.inner_groove_factor),
                            ("outer", self.outer, b.outer_groove_factor)):
             radius = f * b.ball_diameter
-            shoulder = b.shoulder_angle(race)
+            side = 1 if self.contact_angle >= 0 else -1
+            shoulder = b.shoulder_angle(race, side)
             a = np.asarray(c.semi_major, dtype=float)
             reach = abs(self.contact_angle - axis) + a / radius
             angle_text = "|90 deg - alpha|" if b.is_thrust else "|alpha|"
@@ -70,7 +71,7 @@ class BallContacts:
                     f"Q = {loads.ravel()[i]:.4g} N (half-length a = {a.ravel()[i] * 1e3:.3g} mm: "
                     f"{angle_text} + a/(f D_w) = {math.degrees(reach.ravel()[i]):.3g} deg > shoulder "
                     f"angle {math.degrees(shoulder):.3g} deg, groove depth "
-                    f"{b.shoulder_depth / b.ball_diameter:g} D_w assumed); Hertz results are "
+                    f"{b.shoulder_depth(side) / b.ball_diameter:g} D_w assumed); Hertz results are "
                     "not valid there")
         return out
 

@@ -130,7 +130,6 @@ def solve_load_distribution(bearing: BallBearing, condition: OperatingCondition,
         bearing=bearing, condition=condition, displacement=u, ball_angle=problem.psi,
         ball_centre=b, ring=ring, load=q, approach=delta, contact_angle=angle,
         film=problem.film, stiffness_matrix=stiffness, reaction=force,
-        shoulder_angle=problem.contacts.shoulder_angle,
         groove_radius=problem.contacts.groove_radius)
     return result
 

@@ -41,9 +41,8 @@ class ContactSet:
     Attributes: ``ring`` (0 inner, 1 outer), ``rho0``, ``z0`` (centres with rings centred)
     [m], ``free_distance`` R - D_w/2 [m], ``groove_radius`` R [m], ``side`` (+1/-1: the
     half of an arch the contact must lie on, relative to the groove's mid-plane; 0 for a
-    circular groove), ``k_poly`` (coefficients of K(c) = sum a_n c^n, c = |cos alpha|,
-    highest power first [N/m^1.5]) and ``shoulder_angle`` [rad] (contact angle, measured at
-    the groove centre, at which the groove meets the ring's shoulder).
+    circular groove) and ``k_poly`` (coefficients of K(c) = sum a_n c^n, c = |cos alpha|,
+    highest power first [N/m^1.5]).
     """
 
     ring: np.ndarray
@@ -53,7 +52,6 @@ class ContactSet:
     groove_radius: np.ndarray
     side: np.ndarray
     k_poly: np.ndarray
-    shoulder_angle: np.ndarray
 
     @property
     def count(self) -> int:
@@ -102,12 +100,11 @@ def contact_set(bearing: BallBearing) -> ContactSet:
         free = radius - 0.5 * dw
         sign = 1.0 if race == "inner" else -1.0     # inner centres lie outward of the ball
         rho = 0.5 * dm + sign * (free * math.cos(arch) - 0.25 * pd)
-        shoulder = bearing.shoulder_angle(race)
         poly = _k_poly(bearing, race)
         halves = ((0.0, 0.0),) if arch == 0.0 else ((+1.0, -1.0), (-1.0, +1.0))
         for offset_sign, side in halves:
             rows.append((ring, rho, offset_sign * free * math.sin(arch), free, radius, side,
-                         poly, shoulder))
-    ring, rho, z, free, radius, side, poly, shoulder = zip(*rows)
+                         poly))
+    ring, rho, z, free, radius, side, poly = zip(*rows)
     return ContactSet(np.array(ring), np.array(rho), np.array(z), np.array(free),
-                      np.array(radius), np.array(side), np.array(poly), np.array(shoulder))
+                      np.array(radius), np.array(side), np.array(poly))

@@ -47,8 +47,8 @@ class LoadDistribution:
     reaction : array (5,)
         Sum of the ball forces on the inner ring (equal and opposite to the applied load
         for solved DOFs; the reaction to an imposed tilt otherwise) [N, N m].
-    shoulder_angle, groove_radius : arrays (C,)
-        Groove data for the truncation check [rad], [m].
+    groove_radius : array (C,)
+        Groove radius of each contact, for the truncation check [m].
     """
 
     bearing: BallBearing
@@ -63,7 +63,6 @@ class LoadDistribution:
     film: np.ndarray
     stiffness_matrix: np.ndarray
     reaction: np.ndarray
-    shoulder_angle: np.ndarray
     groove_radius: np.ndarray
 
     # ---------------------------------------------------------------- derived
@@ -136,14 +135,18 @@ class LoadDistribution:
 
     @property
     def truncated(self) -> np.ndarray:
-        """(Z, C) True where the contact ellipse runs over the groove shoulder:
-        |alpha| + a/R exceeds the shoulder angle."""
+        """(Z, C) True where the contact ellipse runs over the groove shoulder on the side
+        it leans to: |alpha| + a/R exceeds that shoulder's angle
+        (BallBearing.shoulder_angle: an angular-contact bearing's low side is lower)."""
         out = np.zeros(self.load.shape, dtype=bool)
-        for race in (0, 1):
+        for race, name in ((0, "inner"), (1, "outer")):
             cols = self.ring == race
             a = self._race_contacts(race).semi_major
-            reach = np.abs(self.contact_angle[:, cols]) + a / self.groove_radius[cols]
-            out[:, cols] = (self.load[:, cols] > 0) & (reach > self.shoulder_angle[cols])
+            angle = self.contact_angle[:, cols]
+            shoulder = np.where(angle >= 0, self.bearing.shoulder_angle(name, 1),
+                                self.bearing.shoulder_angle(name, -1))
+            reach = np.abs(angle) + a / self.groove_radius[cols]
+            out[:, cols] = (self.load[:, cols] > 0) & (reach > shoulder)
         return out
 
     def ball_table(self) -> pd.DataFrame:
