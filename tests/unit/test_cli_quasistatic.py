@@ -63,6 +63,13 @@ def test_static_plot(tmp_path, capsys):
     (["ring-modes", "6310", "--free-frequencies-khz", "1.9,x"], "--free-frequencies-khz"),
     (["ring-modes", "6310", "--modes", "2:4", "--free-frequencies-khz", "1.9"],
      "--free-frequencies-khz"),
+    (["ring-modes", "6310", "--axial-load-n", "0"], "--axial-load-n"),
+    (["ring-modes", "6310", "--ring-mass-kg", "0"], "--ring-mass-kg"),
+    (["stiffness-map", "6205", "--radial-load-n", "0:1:10000", "--axial-load-n", "0:1:10000"],
+     "at most"),
+    (["stiffness-map", "6205", "--plot", "/nonexistent/x.png"], "existing directory"),
+    (["static", "6205", "--radial-load-n", "100", "--stiffness-csv", "/nonexistent/k.csv"],
+     "existing directory"),
 ])
 def test_bad_input(capsys, args, words):
     assert main(args) == 2

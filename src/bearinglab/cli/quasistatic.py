@@ -39,6 +39,7 @@ JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON object ins
 PlotOpt = Annotated[Path | None, typer.Option(
     "--plot", help="Also draw the result to this .png, .svg or .pdf file.", show_default=False)]
 MAX_LOAD_N = 1e7
+MAX_CASES = 1_000_000
 
 
 def _load(flag: str, value: float, signed: bool = False) -> float:
@@ -135,6 +136,7 @@ def static(designation: DesignationArg = None,
     displacements and the 5x5 stiffness matrix."""
     fr = _load("--radial-load-n", radial_load_n)
     fa = _load("--axial-load-n", axial_load_n, signed=True)
+    _check_output(("--plot", plot), ("--stiffness-csv", stiffness_csv))
     condition = _condition(fr, fa, speed_rpm, radial_load_angle_deg, misalignment_mrad)
     oil, temperature = _lubricant(film, lubricant, temperature_c)
     bearing, _ = resolve_bearing(designation, geometry)
@@ -144,7 +146,8 @@ def static(designation: DesignationArg = None,
     d["warnings"] = _geometry_warnings(bearing) + d["warnings"]
     out = {"designation": designation, **d}
     if orbit:
-        o = inner_ring_orbit(bearing, condition)
+        o = inner_ring_orbit(bearing, condition, lubricant=oil, temperature=temperature,
+                             gyroscopic=gyroscopic, ring_expansion=ring_expansion)
         out["orbit"] = o.to_dict()
         out["orbit_peak_to_peak_um"] = o.peak_to_peak * 1e6
     if plot is not None:
@@ -203,6 +206,10 @@ def stiffness_map(designation: DesignationArg = None,
     speeds = _grid("--speed-rpm", speed_rpm, speed=True)
     if not 0 <= workers <= 64:
         raise OptionError("--workers", workers, "0 (all cores) to 64")
+    if len(radial) * len(axial) * len(speeds) > MAX_CASES:
+        raise OptionError("--radial-load-n", radial_load_n, f"a grid of at most {MAX_CASES:g} "
+                          "cases in all (radial x axial x speed counts)")
+    _check_output(("--plot", plot), ("--output", output))
     bearing, _ = resolve_bearing(designation, geometry)
     total = len(radial) * len(axial) * len(speeds)
     with Progress(console=console, transient=True, disable=json_output) as progress:
@@ -237,6 +244,13 @@ def stiffness_map(designation: DesignationArg = None,
     if failed:
         console.print(f"[yellow]{failed} case(s) did not converge (see the CSV/JSON "
                       "status)[/yellow]")
+
+
+def _check_output(*flags) -> None:
+    """Refuse output paths in missing directories before any solving."""
+    for flag, path in flags:
+        if path is not None and not Path(path).parent.exists():
+            raise OptionError(flag, str(path), "a path in an existing directory")
 
 
 def _write_csv(table: pd.DataFrame, path: Path, index: bool = False,
@@ -315,6 +329,7 @@ def ring_modes_command(
         = StiffnessSource.closed_form,
         json_output: JsonOpt = False, plot: PlotOpt = None, *, geometry):
     """Natural frequencies of the outer ring in the loaded bearing (seed 000)."""
+    _check_output(("--plot", plot))
     ms = _modes(modes)
     flexural = [m for m in ms if m >= 2]
     free = _khz_list(free_frequencies_khz)

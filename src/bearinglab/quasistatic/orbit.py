@@ -19,7 +19,6 @@ import numpy as np
 from ..errors import InputError
 from ..geometry import BallBearing
 from ..operating import OperatingCondition
-from .solver import solve
 
 
 @dataclass(frozen=True)
@@ -76,7 +75,7 @@ class Orbit:
 
 def inner_ring_orbit(bearing: BallBearing, condition: OperatingCondition, *,
                      ball_diameter_errors=None, points: int = 24,
-                     span: str | None = None) -> Orbit:
+                     span: str | None = None, **options) -> Orbit:
     """Sweep the ball-set angle and solve the equilibrium at each position.
 
     Parameters
@@ -92,6 +91,9 @@ def inner_ring_orbit(bearing: BallBearing, condition: OperatingCondition, *,
     span : {"ball_spacing", "revolution"}, optional
         How far to turn the ball set; by default one ball spacing for uniform balls and a
         whole revolution with ball-size errors.
+    **options
+        Passed to :func:`bearinglab.quasistatic.solve_load_distribution` (``lubricant``,
+        ``gyroscopic``, ``ring_expansion``, ...).
     """
     if isinstance(points, bool) or not isinstance(points, int) or points < 2:
         raise InputError("points", points, "an integer >= 2")
@@ -103,13 +105,16 @@ def inner_ring_orbit(bearing: BallBearing, condition: OperatingCondition, *,
     spacing = 2.0 * math.pi / bearing.ball_count
     count = points if span == "ball_spacing" else points * bearing.ball_count
     phases = condition.radial_load_angle + spacing * np.arange(count + 1) / points
+    from . import solve_load_distribution
+
     u, xs, ys, zs, qmax = None, [], [], [], []
     for phase in phases:
-        u, _, state, _, _ = solve(bearing, condition, ball_phase=float(phase),
-                                  ball_diameter_errors=errors, initial=u)
+        r = solve_load_distribution(bearing, condition, ball_phase=float(phase),
+                                    ball_diameter_errors=errors, initial=u, **options)
+        u = r.displacement
         xs.append(u[0])
         ys.append(u[1])
         zs.append(u[2])
-        qmax.append(float(np.max(state[0])))
+        qmax.append(float(np.max(r.load)))
     return Orbit(bearing, condition, phases, np.array(xs), np.array(ys), np.array(zs),
                  np.array(qmax))
