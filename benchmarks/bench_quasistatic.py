@@ -5,7 +5,8 @@ measured in the same run.
    bearinglab (compiled ball kernel, condensed analytic Jacobian) against
    (a) its own NumPy twin and (b) seed 001's scheme written with scipy.optimize.fsolve
    (every ball by fsolve inside an outer fsolve on the ring; finite-difference
-   Jacobians), with the same contact law. The answers are compared.
+   Jacobians), with the same contact law, and (c) one flat fsolve over all unknowns.
+   The answers are compared.
 2. A 10 000-case stiffness map (100 radial x 10 axial loads x 10 speeds) with
    bearinglab.quasistatic.study.stiffness_map on all cores, against the fsolve
    implementation timed on a sample of the same cases and scaled to 10 000.
@@ -70,6 +71,35 @@ def fsolve_reference(bearing, condition):
     return x, ier == 1
 
 
+def flat_fsolve_reference(bearing, condition):
+    """The most straightforward form: every unknown (ring x, y, z in um, each ball's rho, z
+    offset in um) in one scipy.optimize.fsolve from the same start as ours."""
+    p = _Problem(bearing, condition, condition.radial_load_angle, None, None)
+    cs = p.contacts
+    z = bearing.ball_count
+
+    def residual(x):
+        u = np.zeros(5)
+        u[:3] = x[:3] * 1e-6
+        b = x[3:].reshape(z, 2) * 1e-6 + np.array([0.5 * bearing.pitch_diameter, 0.0])
+        c_rho, c_z = p.centres(u)
+        q, n_rho, n_z, _, _ = _kernels.contact_state(b[:, 0], b[:, 1], c_rho, c_z, p.free,
+                                                      cs.groove_radius, cs.side, cs.z0,
+                                                      cs.k_poly, p.film)
+        balls = np.stack([p.fc - np.sum(q * n_rho, 1), -np.sum(q * n_z, 1)], 1)
+        return np.concatenate([(p.load + p.ring_force((q, n_rho, n_z)))[:3], balls.ravel()])
+
+    u0 = initial_ring_guess(p)[:3]
+    c_rho, c_z = p.centres(np.r_[u0, 0.0, 0.0])
+    inner = p.inner
+    mid = np.stack([0.5 * (c_rho[:, inner].mean(1) + c_rho[:, ~inner].mean(1))
+                    - 0.5 * bearing.pitch_diameter,
+                    0.5 * (c_z[:, inner].mean(1) + c_z[:, ~inner].mean(1))], 1)
+    x, _, ier, _ = optimize.fsolve(residual, np.concatenate([u0 * 1e6, mid.ravel() * 1e6]),
+                                   full_output=True, xtol=1e-10)
+    return x[:3] * 1e-6, ier == 1 and np.max(np.abs(residual(x))) < 1e-3
+
+
 def timed(fn, repeat):
     fn()
     t = time.perf_counter()
@@ -89,6 +119,9 @@ def main() -> None:
         _kernels.solve_balls_numba = compiled
     t_ref, (x, ok) = timed(lambda: fsolve_reference(BEARING, c), 3)
     diff = np.max(np.abs(x - r.displacement[:3]))
+    t_flat, (x_flat, ok_flat) = timed(lambda: flat_fsolve_reference(BEARING, c), 3)
+    print(f"flat fsolve over all unknowns: {t_flat * 1e3:.1f} ms, converged: {ok_flat} "
+          f"(off by {np.max(np.abs(x_flat - r.displacement[:3])) * 1e6:.3g} um)")
     print(f"single solve: bearinglab {t_ours * 1e3:.2f} ms, NumPy twin {t_numpy * 1e3:.1f} ms "
           f"(x{t_numpy / t_ours:.1f}), fsolve {t_ref * 1e3:.1f} ms (x{t_ref / t_ours:.1f}, "
           f"converged: {ok}); displacement difference {diff * 1e9:.3g} nm")
