@@ -112,24 +112,6 @@ def clearance_for_contact_angle(contact_angle, ball_diameter, inner_groove_facto
     return 2.0 * a * (1.0 - np.cos(contact_angle))
 
 
-def end_play(diametral_clearance, ball_diameter, inner_groove_factor, outer_groove_factor):
-    """Free end play P_e = 2 A sin(alpha_0) [m] (Harris & Kotzalas eq. 2.6).
-
-    Parameters
-    ----------
-    diametral_clearance : float or array
-        P_d [m].
-    ball_diameter : float
-        D_w [m].
-    inner_groove_factor, outer_groove_factor : float
-        f_i, f_o [-].
-    """
-    a = (inner_groove_factor + outer_groove_factor - 1.0) * ball_diameter
-    alpha = free_contact_angle(diametral_clearance, ball_diameter, inner_groove_factor,
-                               outer_groove_factor)
-    return 2.0 * a * np.sin(alpha)
-
-
 def contact_radii(ball_diameter, pitch_diameter, groove_factor, contact_angle, race: Race):
     """Effective radii (R_x, R_y) of a ball-raceway contact [m].
 

@@ -7,12 +7,12 @@ writes atomically (temporary file, then rename) so a failed write leaves no half
 from __future__ import annotations
 
 import os
-import tempfile
 from pathlib import Path
 
 import numpy as np
 
 from .errors import InputError
+from .files import write_atomically
 
 
 def _pyplot():
@@ -36,14 +36,7 @@ def save_figure(fig, path: str | Path) -> Path:
         raise InputError("--plot", str(path), "a file name ending in .png, .svg or .pdf")
     if not path.parent.exists():
         raise InputError("--plot", str(path), "a path in an existing directory")
-    fd, tmp = tempfile.mkstemp(suffix=suffix, dir=path.parent, prefix=f".{path.stem}-")
-    os.close(fd)
-    try:
-        fig.savefig(tmp, dpi=120, bbox_inches="tight")
-        os.replace(tmp, path)
-    finally:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
+    write_atomically(path, lambda tmp: fig.savefig(tmp, dpi=120, bbox_inches="tight"))
     _pyplot().close(fig)
     return path
 

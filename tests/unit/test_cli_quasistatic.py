@@ -123,3 +123,13 @@ def test_four_point_bearings_get_gothic_arches(capsys):
     arches = run_json(capsys, "static", "6205", "--radial-load-n", "2000", "--clearance-um",
                       "0", "--inner-arch-angle-deg", "20", "--outer-arch-angle-deg", "20")
     assert max(b["contact_points"] for b in arches["balls"]) == 4
+
+
+def test_stiffness_map_function_refuses_negative_loads():
+    from bearinglab.errors import InputError
+    from bearinglab.geometry import BallBearing
+    from bearinglab.quasistatic.study import stiffness_map
+
+    b = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3)
+    with pytest.raises(InputError, match="radial_loads"):
+        stiffness_map(b, [-1.0, 100.0], [0.0], [0.0], workers=1)

@@ -1,8 +1,6 @@
 """Commands of the load-distribution issue: static, stiffness-map, ring-modes."""
 
 import math
-import os
-import tempfile
 from enum import Enum
 from pathlib import Path
 from typing import Annotated
@@ -13,6 +11,7 @@ import typer
 from rich.markup import escape
 from rich.progress import Progress
 
+from ..files import write_atomically
 from ..lubrication import LUBRICANTS, ZERO_CELSIUS
 from ..operating import OperatingCondition
 from ..plotting import save_figure, stiffness_map_figure
@@ -258,16 +257,10 @@ def _write_csv(table: pd.DataFrame, path: Path, index: bool = False,
     """Write atomically: a temporary file in the same directory, then rename."""
     if path.parent and not path.parent.exists():
         raise OptionError(flag, str(path), "a path in an existing directory")
-    fd, tmp = tempfile.mkstemp(suffix=".csv", dir=path.parent or ".", prefix=f".{path.stem}-")
-    os.close(fd)
     try:
-        table.to_csv(tmp, index=index)
-        os.replace(tmp, path)
+        write_atomically(path, lambda tmp: table.to_csv(tmp, index=index))
     except OSError as exc:
         raise OptionError(flag, str(path), "a writable file", exc.strerror) from None
-    finally:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
 
 
 class StiffnessSource(str, Enum):

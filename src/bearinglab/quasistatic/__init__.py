@@ -123,8 +123,7 @@ def solve_load_distribution(bearing: BallBearing, condition: OperatingCondition,
         q = np.where(q <= 10 * CENTRIFUGAL_FLOOR, 0.0, q)   # the floor is not a real load
     ring = problem.contacts.ring
     # sign: + when the line from the inner to the outer contact leans towards +z
-    sigma = np.where(ring == 0, -1.0, 1.0)
-    angle = np.arctan2(sigma * n_z, np.abs(n_rho)) + 0.0     # + 0.0: no "-0"
+    angle = signed_contact_angles(ring, n_rho, n_z)
     force, _ = problem.ring_force_and_stiffness(state)
     result = LoadDistribution(
         bearing=bearing, condition=condition, displacement=u, ball_angle=problem.psi,
@@ -187,8 +186,7 @@ def gyroscopic_forces(bearing: BallBearing, shaft_speed: float, ring, state) -> 
         (loads, n_rho, n_z, ...) of the solver [N, -, -].
     """
     q, n_rho, n_z = state[:3]
-    sigma = np.where(ring == 0, -1.0, 1.0)
-    angle = np.arctan2(sigma * n_z, np.abs(n_rho))
+    angle = signed_contact_angles(ring, n_rho, n_z)
     picks = {}
     for race in (0, 1):
         cols = ring == race
@@ -203,3 +201,18 @@ def gyroscopic_forces(bearing: BallBearing, shaft_speed: float, ring, state) -> 
                                   picks[0][0], picks[1][0])
     force[~(picks[0][1] & picks[1][1])] = 0.0
     return force
+
+
+def signed_contact_angles(ring, n_rho, n_z) -> np.ndarray:
+    """Contact angles [rad], positive when the line from the inner to the outer contact
+    leans towards +z (docs/conventions.md), from the solver's contact normals n = b - c.
+
+    Parameters
+    ----------
+    ring : array (C,)
+        0 inner, 1 outer for each contact column.
+    n_rho, n_z : arrays (Z, C)
+        Unit normals from the groove centre to the ball centre [-].
+    """
+    sigma = np.where(ring == 0, -1.0, 1.0)
+    return np.arctan2(sigma * n_z, np.abs(n_rho)) + 0.0     # + 0.0: no "-0"

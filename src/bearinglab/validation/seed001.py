@@ -243,6 +243,13 @@ def axial_curve(radial_load: float, speed_rpm: float, axial_loads,
 # ------------------------------------------------------------------- the findings
 
 
+def _converged(loads, values):
+    """The points of a sweep whose solve converged (NaN marks a failed solve)."""
+    f, v = np.asarray(loads, float), np.asarray(values, float)
+    keep = np.isfinite(v)
+    return f[keep], v[keep]
+
+
 def inflection_load(radial_loads, displacements) -> float:
     """F_r of the largest d2 S_r / dF_r2 [N] (the second reading of the knee).
 
@@ -262,10 +269,7 @@ def inflection_load(radial_loads, displacements) -> float:
     >>> float(inflection_load(f, np.maximum(f - 6.0, 0.0) * 5 + 0.1 * f))
     6.0
     """
-    f = np.asarray(radial_loads, float)
-    s = np.asarray(displacements, float)
-    keep = np.isfinite(s)
-    f, s = f[keep], s[keep]
+    f, s = _converged(radial_loads, displacements)
     if f.size < 3:
         raise ValueError("need at least three converged points to find an inflection")
     slope = np.diff(s) / np.diff(f)
@@ -307,10 +311,7 @@ def onset_load(radial_loads, displacements) -> float:
     >>> float(onset_load(f, np.maximum(f - 6.0, 0.0) * 5 + 0.1 * f))
     6.0
     """
-    f = np.asarray(radial_loads, float)
-    s = np.asarray(displacements, float)
-    keep = np.isfinite(s)
-    f, s = f[keep], s[keep]
+    f, s = _converged(radial_loads, displacements)
     if f.size < 2:
         raise ValueError("need at least two converged points to find an onset")
     slope = np.diff(s) / np.diff(f)
@@ -412,10 +413,7 @@ def describe_stiffness_fall(radial_loads, radial_stiffness, axial_load: float,
     e : float
         Axial load factor splitting the F_r axis at F_r = F_a / e [-].
     """
-    f = np.asarray(radial_loads, float)
-    c = np.asarray(radial_stiffness, float)
-    keep = np.isfinite(c)
-    f, c = f[keep], c[keep]
+    f, c = _converged(radial_loads, radial_stiffness)
     k = int(np.argmin(c))
     below = np.flatnonzero(c < 0.95 * c[0])
     start = float(f[below[0]]) if below.size else math.nan
