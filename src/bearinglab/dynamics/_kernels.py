@@ -1,0 +1,187 @@
+"""Hot loops of the rigid-ring defect model (seed 003), each with a NumPy twin.
+
+The loop versions are plain Python that numba compiles (``*_numba`` below); the
+``*_numpy`` twins are vectorised over balls and written independently, and the tests
+check that the two agree. Everything is SI.
+
+Rigid-ring model state (seed 003 sec. 3): y = [x_s, y_s, x_p, y_p, vx_s, vy_s, vx_p, vy_p]
+(shaft with inner ring, pedestal with outer ring). Parameters are packed in one float
+array with the indices below so that numba sees a single, stable signature.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba
+import numpy as np
+
+# ---- packed parameters of the rigid model
+(M_S, M_P, K_S, C_S, K_P, C_P, K_HERTZ, HALF_CLEARANCE, C_BEARING, BALLS, CAGE_SPEED,
+ SPIN_SPEED, SHAFT_SPEED, F_X, F_Y, UNBALANCE, BALL_RADIUS, INNER_RADIUS, OUTER_RADIUS,
+ CAGE_PHASE) = range(20)
+RIGID_PARAMETER_COUNT = 20
+
+
+def surface_deviation(psi, spin, shaft_angle, r_ball, r_in, r_out, table, dev_in, dev_out):
+    """Extra clearance of every ball's inner and outer contact from the surface table [m].
+
+    The one place where surfaces enter the contact deformation (defects.py). Fills
+    ``dev_in`` and ``dev_out`` (Z,) in place.
+
+    Parameters
+    ----------
+    psi : array (Z,)
+        Ball angular positions [rad].
+    spin : array (Z,)
+        Ball spin phases (0 = the marked point faces the outer race) [rad].
+    shaft_angle : float
+        Rotation of the inner ring since time 0 [rad].
+    r_ball, r_in, r_out : float
+        Ball radius, inner and outer groove-bottom radii [m].
+    table : array (n, 5)
+        Rows of defects.pack_defects.
+    """
+    two_pi = 2.0 * math.pi
+    for j in range(psi.shape[0]):
+        dev_in[j] = 0.0
+        dev_out[j] = 0.0
+    for row in range(table.shape[0]):
+        kind = int(table[row, 0])
+        half = 0.5 * table[row, 1]
+        depth = table[row, 2]
+        angle = table[row, 3]
+        for j in range(psi.shape[0]):
+            if kind == 0 or kind == 1:
+                ref = angle if kind == 0 else angle + shaft_angle
+                radius = r_out if kind == 0 else r_in
+                off = (psi[j] - ref + math.pi) % two_pi - math.pi
+                d = half - abs(off) * radius
+                if d > 0.0:
+                    d = min(d, r_ball)
+                    ring = radius - math.sqrt(max(radius * radius - d * d, 0.0))
+                    drop = r_ball - math.sqrt(r_ball * r_ball - d * d)
+                    drop = drop - ring if kind == 0 else drop + ring
+                    drop = min(drop, depth)
+                    if kind == 0:
+                        dev_out[j] += drop
+                    else:
+                        dev_in[j] += drop
+            elif kind == 2 and j == int(table[row, 4]):
+                for face in range(2):             # 0: facing the outer race, 1: the inner
+                    off = (spin[j] - angle - face * math.pi + math.pi) % two_pi - math.pi
+                    d = half - abs(off) * r_ball
+                    if d > 0.0:
+                        d = min(d, r_ball)
+                        radius = r_out if face == 0 else r_in
+                        ring = radius - math.sqrt(max(radius * radius - d * d, 0.0))
+                        drop = r_ball - math.sqrt(r_ball * r_ball - d * d)
+                        drop = min(drop - ring if face == 0 else drop + ring, depth)
+                        if face == 0:
+                            dev_out[j] += drop
+                        else:
+                            dev_in[j] += drop
+
+
+def surface_deviation_numpy(psi, spin, shaft_angle, r_ball, r_in, r_out, table):
+    """NumPy twin of :func:`surface_deviation`; returns (dev_in, dev_out)."""
+    from .defects import edge_drop, wrap_angle
+
+    dev_in = np.zeros_like(psi)
+    dev_out = np.zeros_like(psi)
+    for kind, width, depth, angle, ball in table:
+        if kind in (0, 1):
+            outer = kind == 0
+            radius = r_out if outer else r_in
+            ref = angle if outer else angle + shaft_angle
+            d = 0.5 * width - np.abs(wrap_angle(psi - ref)) * radius
+            drop = np.where(d > 0, np.minimum(edge_drop(d, r_ball, radius,
+                                                        "outer" if outer else "inner"), depth), 0)
+            (dev_out if outer else dev_in)[:] += drop
+        else:
+            j = int(ball)
+            for shift, radius, race, dev in ((0.0, r_out, "outer", dev_out),
+                                             (math.pi, r_in, "inner", dev_in)):
+                d = 0.5 * width - abs(float(wrap_angle(spin[j] - angle - shift))) * r_ball
+                if d > 0:
+                    dev[j] += min(float(edge_drop(d, r_ball, radius, race)), depth)
+    return dev_in, dev_out
+
+
+surface_deviation_numba = numba.njit(cache=True)(surface_deviation)
+
+
+def rigid_rhs(t, y, p, table, dydt):
+    """Right-hand side of the 4-DOF rigid-ring model (seed 003 sec. 3); fills ``dydt``.
+
+    m_s a_s = F + F_unb(t) - k_s x_s - c_s v_s - f_b,   m_p a_p = f_b - k_p x_p - c_p v_p,
+    f_b = sum_j K [delta_j]_+^1.5 e_j + c_b (v_s - v_p),
+    delta_j = (x_s - x_p) cos psi_j + (y_s - y_p) sin psi_j - P_d/2 - lambda_j(t),
+    psi_j = psi_0 + 2 pi j / Z + omega_c t; lambda_j from :func:`surface_deviation`.
+    """
+    z = int(p[BALLS])
+    psi = np.empty(z)
+    spin = np.empty(z)
+    dev_in = np.empty(z)
+    dev_out = np.empty(z)
+    for j in range(z):
+        psi[j] = p[CAGE_PHASE] + 2.0 * math.pi * j / z + p[CAGE_SPEED] * t
+        spin[j] = p[SPIN_SPEED] * t
+    surface_deviation_numba(psi, spin, p[SHAFT_SPEED] * t, p[BALL_RADIUS], p[INNER_RADIUS],
+                      p[OUTER_RADIUS], table, dev_in, dev_out)
+    rx = y[0] - y[2]
+    ry = y[1] - y[3]
+    fx = p[C_BEARING] * (y[4] - y[6])
+    fy = p[C_BEARING] * (y[5] - y[7])
+    for j in range(z):
+        c = math.cos(psi[j])
+        s = math.sin(psi[j])
+        delta = rx * c + ry * s - p[HALF_CLEARANCE] - dev_in[j] - dev_out[j]
+        if delta > 0.0:
+            q = p[K_HERTZ] * delta * math.sqrt(delta)
+            fx += q * c
+            fy += q * s
+    phase = p[SHAFT_SPEED] * t
+    unb = p[UNBALANCE] * p[SHAFT_SPEED] ** 2
+    dydt[0] = y[4]
+    dydt[1] = y[5]
+    dydt[2] = y[6]
+    dydt[3] = y[7]
+    dydt[4] = (p[F_X] + unb * math.cos(phase) - p[K_S] * y[0] - p[C_S] * y[4] - fx) / p[M_S]
+    dydt[5] = (p[F_Y] + unb * math.sin(phase) - p[K_S] * y[1] - p[C_S] * y[5] - fy) / p[M_S]
+    dydt[6] = (fx - p[K_P] * y[2] - p[C_P] * y[6]) / p[M_P]
+    dydt[7] = (fy - p[K_P] * y[3] - p[C_P] * y[7]) / p[M_P]
+
+
+def rigid_rhs_numpy(t, y, p, table):
+    """NumPy twin of :func:`rigid_rhs`; returns dy/dt."""
+    z = int(p[BALLS])
+    psi = p[CAGE_PHASE] + 2.0 * np.pi * np.arange(z) / z + p[CAGE_SPEED] * t
+    spin = np.full(z, p[SPIN_SPEED] * t)
+    dev_in, dev_out = surface_deviation_numpy(psi, spin, p[SHAFT_SPEED] * t, p[BALL_RADIUS],
+                                              p[INNER_RADIUS], p[OUTER_RADIUS], table)
+    rel = y[0:2] - y[2:4]
+    e = np.stack([np.cos(psi), np.sin(psi)])
+    delta = rel @ e - p[HALF_CLEARANCE] - dev_in - dev_out
+    q = p[K_HERTZ] * np.clip(delta, 0.0, None) ** 1.5
+    f = e @ q + p[C_BEARING] * (y[4:6] - y[6:8])
+    phase = p[SHAFT_SPEED] * t
+    unb = p[UNBALANCE] * p[SHAFT_SPEED] ** 2 * np.array([np.cos(phase), np.sin(phase)])
+    a_s = (np.array([p[F_X], p[F_Y]]) + unb - p[K_S] * y[0:2] - p[C_S] * y[4:6] - f) / p[M_S]
+    a_p = (f - p[K_P] * y[2:4] - p[C_P] * y[6:8]) / p[M_P]
+    return np.concatenate([y[4:8], a_s, a_p])
+
+
+rigid_rhs_numba = numba.njit(cache=True)(rigid_rhs)
+
+
+@numba.njit(cache=True)
+def rigid_accelerations(p, table, t_out, states):
+    """Pedestal accelerations (x, y) at the output states [m/s^2]."""
+    out = np.empty((t_out.shape[0], 2))
+    dydt = np.empty(8)
+    for i in range(t_out.shape[0]):
+        rigid_rhs_numba(t_out[i], states[i], p, table, dydt)
+        out[i, 0] = dydt[6]
+        out[i, 1] = dydt[7]
+    return out

@@ -1,0 +1,450 @@
+"""Hot loops of the seed-004 slip model: right-hand side, its NumPy twin, and the stiff
+integrator.
+
+State (SI): global part g = [x_i, y_i, x_o, y_o, vx_i, vy_i, vx_o, vy_o, theta_c, omega_c]
+(inner ring, outer ring, cage angle and speed), then six entries per ball j:
+[rho_j, rho_j', psi_j, omega_m,j, phi_j, omega_r,j] (radial offset of the ball centre from
+the pitch circle, orbital angle and speed, spin phase and spin speed; phi = 0 when a
+marked point faces the outer race; omega_r > 0 in the rolling sense, the inner contact
+point moving forward). The equations are documented in ``slip.py``.
+
+The Jacobian has an arrow structure (a ball's equations involve only its own state, the
+rings and the cage), which :func:`rosenbrock_chunk` uses to difference it with 16 calls
+and to solve with it by block elimination.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba
+import numpy as np
+
+from ._integrate import NOT_FINITE, OK, STEP_TOO_SMALL, TOO_MANY_STEPS, error_norm
+from ._kernels import surface_deviation_numba
+
+NG = 10          # global states
+NB = 6           # states per ball
+(BALLS, M_I, M_O, K_O, C_O, M_B, J_B, J_C, R_M, R_B, R_IN, R_OUT, QUARTER_CLEARANCE,
+ K_IN, K_OUT, H_IN, H_OUT, C_IN, C_OUT, P1_IN, P1_OUT, OMEGA_I, F_X, F_Y, UNBALANCE,
+ GRAVITY, K_CAGE, C_CAGE, POCKET, CAGE_MU, TRACTION, ETA0, ALPHA, MU_LIMIT, FLOW_INDEX,
+ G_OIL, V_REG, DRAG, CAGE_DRAG, IMPACTS, DEFECT_ANGLE) = range(41)
+SLIP_PARAMETER_COUNT = 41
+SEED004, BAIR_WINER = 0, 1
+# Masjedi & Khonsari boundary friction curve, seed 004 eq. 11 (ball-cage contact)
+CAGE_A, CAGE_B, CAGE_C, CAGE_D = -0.1, 22.28, 181.46, 0.1
+# 4-point Gauss-Legendre rule on [0, 1] for the pressure averages of Bair-Winer traction
+_GL_X = np.array([0.0694318442029737, 0.3300094782075719, 0.6699905217924281,
+                  0.9305681557970263])
+_GL_W = np.array([0.1739274225687269, 0.3260725774312731, 0.3260725774312731,
+                  0.1739274225687269])
+
+
+@numba.njit(cache=True)
+def _traction_raw(speed, load, p_1, h, p):
+    """Traction coefficient at sliding speed ``speed`` >= 0 [m/s], Hertz load ``load``."""
+    if load <= 0.0 or speed <= 0.0:
+        return 0.0
+    pmax = p_1 * load ** (1.0 / 3.0)
+    limit = p[MU_LIMIT]
+    alpha = p[ALPHA]
+    if int(p[TRACTION]) == SEED004:
+        # seed 004 eq. 12: power-law shear stress over the Hertz pressure, capped at tau_L/p
+        n = p[FLOW_INDEX]
+        na = n * alpha * pmax
+        bracket = (4.0 / (math.pi * pmax) + n * alpha / 3.0 * (
+            1.866 * math.exp(na * math.sqrt(0.067)) + math.exp(0.707 * na)
+            + 0.134 * math.exp(na * math.sqrt(0.933))))
+        mu = (p[ETA0] * speed / h) ** n * p[G_OIL] ** (1.0 - n) * bracket
+        return min(mu, limit)
+    # Bair & Winer (1979): tau = tau_L (1 - exp(-eta gamma / tau_L)), tau_L = limit * pressure,
+    # averaged over the Hertz ellipse: mu = 3 int_0^1 tau(pmax u)/pmax u du
+    total = 0.0
+    for k in range(4):
+        u = _GL_X[k]
+        pressure = pmax * u
+        eta = p[ETA0] * math.exp(min(alpha * pressure, 600.0))
+        tau_l = limit * pressure
+        total += _GL_W[k] * tau_l * (1.0 - math.exp(-eta * speed / (h * tau_l))) * u
+    return 3.0 * total / pmax
+
+
+@numba.njit(cache=True)
+def traction(dv, load, p_1, h, p):
+    """Signed traction coefficient, linear below the regularisation speed V_REG."""
+    v = abs(dv)
+    reg = p[V_REG]
+    if v < reg:
+        return _traction_raw(reg, load, p_1, h, p) * dv / reg
+    return math.copysign(_traction_raw(v, load, p_1, h, p), dv)
+
+
+@numba.njit(cache=True)
+def cage_friction(speed):
+    """Ball-cage friction coefficient, seed 004 eq. 11, at slide-roll ratio 2 (pure
+    sliding of the ball surface on the pocket) with linear regularisation near 0 speed."""
+    s = 2.0
+    mu = (CAGE_A + CAGE_B * s) * math.exp(-CAGE_C * s) + CAGE_D
+    reg = 1e-3
+    return mu * max(-1.0, min(1.0, speed / reg))
+
+
+@numba.njit(cache=True)
+def slip_rhs(t, y, p, table, dydt, parts):
+    """Right-hand side of the slip model; fills dydt and parts[j] = ball j's share of
+    the global rows (so that the Jacobian can be differenced by ball groups)."""
+    z = int(p[BALLS])
+    psi = np.empty(z)
+    spin = np.empty(z)
+    dev_in = np.empty(z)
+    dev_out = np.empty(z)
+    for j in range(z):
+        psi[j] = y[NG + NB * j + 2]
+        spin[j] = y[NG + NB * j + 4]
+    w_i = p[OMEGA_I]
+    surface_deviation_numba(psi, spin, w_i * t, p[R_B], p[R_IN], p[R_OUT], table,
+                            dev_in, dev_out)
+    for i in range(NG):
+        dydt[i] = 0.0
+    xi, yi, xo, yo = y[0], y[1], y[2], y[3]
+    vxi, vyi, vxo, vyo = y[4], y[5], y[6], y[7]
+    theta_c, w_c = y[8], y[9]
+    r_m, r_b = p[R_M], p[R_B]
+    m_b = p[M_B]
+    g = p[GRAVITY]
+    for j in range(z):
+        b = NG + NB * j
+        rho, vrho, ps, w_m, ph, w_r = y[b], y[b + 1], y[b + 2], y[b + 3], y[b + 4], y[b + 5]
+        c, s = math.cos(ps), math.sin(ps)
+        r = r_m + rho
+        # approaches (seed 004 eq. 2; the film adds to the approach, see slip.py)
+        d_in = xi * c + yi * s - rho - p[QUARTER_CLEARANCE] - dev_in[j] + p[H_IN]
+        d_out = rho - xo * c - yo * s - p[QUARTER_CLEARANCE] - dev_out[j] + p[H_OUT]
+        n_in = 0.0
+        n_out = 0.0
+        if d_in > 0.0:
+            rate = vxi * c + vyi * s - vrho
+            n_in = max(0.0, p[K_IN] * d_in * math.sqrt(d_in) + p[C_IN] * rate)
+        if d_out > 0.0:
+            rate = vrho - vxo * c - vyo * s
+            n_out = max(0.0, p[K_OUT] * d_out * math.sqrt(d_out) + p[C_OUT] * rate)
+        # slip speeds (seed 004 eq. 13) and tractions on the ball, forward positive
+        dv_in = (w_i - w_m) * p[R_IN] - w_r * r_b
+        dv_out = w_r * r_b - w_m * p[R_OUT]
+        f_in = traction(dv_in, n_in, p[P1_IN], p[H_IN], p) * n_in
+        f_out = traction(dv_out, n_out, p[P1_OUT], p[H_OUT], p) * n_out
+        # ball-cage pocket contact (seed 004 eq. 4), with an optional pocket clearance
+        gap = (ps - theta_c - 2.0 * math.pi * j / z) * r_m
+        n_c = 0.0
+        if abs(gap) > p[POCKET]:
+            n_c = p[K_CAGE] * (gap - math.copysign(p[POCKET], gap)) + p[C_CAGE] * r_m * (
+                w_m - w_c)
+        mu_c = cage_friction(w_r * r_b)        # signed with the spin: opposes it
+        # ball drag (seed 004 eq. 14 in SI, mixture mass density)
+        drag = p[DRAG] * abs(2.0 * r_m * w_m) ** 1.95 * math.copysign(1.0, w_m)
+        # ball-defect impacts (seed 004 eqs. 16-19), radial, for a defective ball only
+        f_imp = 0.0
+        if p[IMPACTS] > 0.0:
+            for row in range(table.shape[0]):
+                if int(table[row, 0]) == 2 and int(table[row, 4]) == j:
+                    width = p[DEFECT_ANGLE]
+                    phase_out = (ph - table[row, 3]) % (2.0 * math.pi)
+                    phase_in = (ph - table[row, 3] - math.pi) % (2.0 * math.pi)
+                    if phase_in <= width:
+                        f_imp += m_b * (w_i - w_m) ** 2 * p[R_IN]
+                    if phase_out <= width:
+                        f_imp -= m_b * w_m * w_m * (p[R_OUT] - r_b)
+        radial = n_in - n_out - mu_c * n_c + f_imp - m_b * g * s
+        tangential = f_in + f_out - n_c - drag - m_b * g * c
+        dydt[b] = vrho
+        dydt[b + 1] = radial / m_b + r * w_m * w_m
+        dydt[b + 2] = w_m
+        dydt[b + 3] = (tangential / m_b - 2.0 * vrho * w_m) / r
+        dydt[b + 4] = w_r
+        dydt[b + 5] = (f_in - f_out - mu_c * abs(n_c)) * r_b / p[J_B]
+        # reactions on the rings (inner: -N e_r - F e_t; outer: +N e_r - F e_t), cage torque
+        fx_i = -(n_in + max(f_imp, 0.0)) * c + f_in * s
+        fy_i = -(n_in + max(f_imp, 0.0)) * s - f_in * c
+        fx_o = (n_out - min(f_imp, 0.0)) * c + f_out * s
+        fy_o = (n_out - min(f_imp, 0.0)) * s - f_out * c
+        parts[j, 0] = 0.0
+        parts[j, 1] = 0.0
+        parts[j, 2] = 0.0
+        parts[j, 3] = 0.0
+        parts[j, 4] = fx_i / p[M_I]
+        parts[j, 5] = fy_i / p[M_I]
+        parts[j, 6] = fx_o / p[M_O]
+        parts[j, 7] = fy_o / p[M_O]
+        parts[j, 8] = 0.0
+        parts[j, 9] = r_m * n_c / p[J_C]
+        for i in range(NG):
+            dydt[i] += parts[j, i]
+    unb = p[UNBALANCE] * w_i * w_i
+    dydt[0] = vxi
+    dydt[1] = vyi
+    dydt[2] = vxo
+    dydt[3] = vyo
+    dydt[4] += (p[F_X] + unb * math.cos(w_i * t)) / p[M_I]
+    dydt[5] += (p[F_Y] + unb * math.sin(w_i * t)) / p[M_I]
+    dydt[6] += (-p[K_O] * xo - p[C_O] * vxo) / p[M_O]
+    dydt[7] += (-p[K_O] * yo - p[C_O] * vyo) / p[M_O]
+    dydt[8] = w_c
+    dydt[9] += -p[CAGE_DRAG] * w_c * abs(w_c) / p[J_C]
+
+
+def _traction_numpy(dv, load, p_1, h, p):
+    """Vectorised twin of :func:`traction`."""
+    reg = p[V_REG]
+    speed = np.maximum(np.abs(dv), reg)
+    load = np.asarray(load, dtype=float)
+    safe = np.where(load > 0, load, 1.0)
+    pmax = p_1 * safe ** (1.0 / 3.0)
+    if int(p[TRACTION]) == SEED004:
+        n = p[FLOW_INDEX]
+        na = n * p[ALPHA] * pmax
+        bracket = 4.0 / (np.pi * pmax) + n * p[ALPHA] / 3.0 * (
+            1.866 * np.exp(na * np.sqrt(0.067)) + np.exp(0.707 * na)
+            + 0.134 * np.exp(na * np.sqrt(0.933)))
+        mu = np.minimum((p[ETA0] * speed / h) ** n * p[G_OIL] ** (1.0 - n) * bracket,
+                        p[MU_LIMIT])
+    else:
+        pressure = pmax[..., None] * _GL_X
+        eta = p[ETA0] * np.exp(np.minimum(p[ALPHA] * pressure, 600.0))
+        tau_l = p[MU_LIMIT] * pressure
+        tau = tau_l * (1.0 - np.exp(-eta * speed[..., None] / (h * tau_l)))
+        mu = 3.0 * np.sum(_GL_W * tau * _GL_X, axis=-1) / pmax
+    mu = np.where(load > 0, mu, 0.0)
+    return np.where(np.abs(dv) < reg, mu * dv / reg, np.sign(dv) * mu)
+
+
+def slip_rhs_numpy(t, y, p, table):
+    """NumPy twin of :func:`slip_rhs` (vectorised over balls); returns dy/dt."""
+    from ._kernels import surface_deviation_numpy
+
+    z = int(p[BALLS])
+    balls = y[NG:].reshape(z, NB)
+    rho, vrho, psi, w_m, phi, w_r = balls.T
+    w_i = p[OMEGA_I]
+    dev_in, dev_out = surface_deviation_numpy(psi, phi, w_i * t, p[R_B], p[R_IN], p[R_OUT],
+                                              table)
+    e = np.stack([np.cos(psi), np.sin(psi)])            # (2, Z)
+    tang = np.stack([-np.sin(psi), np.cos(psi)])
+    u_i, u_o, v_i, v_o = y[0:2], y[2:4], y[4:6], y[6:8]
+    theta_c, w_c = y[8], y[9]
+    d_in = u_i @ e - rho - p[QUARTER_CLEARANCE] - dev_in + p[H_IN]
+    d_out = rho - u_o @ e - p[QUARTER_CLEARANCE] - dev_out + p[H_OUT]
+    n_in = np.where(d_in > 0, np.maximum(
+        0.0, p[K_IN] * np.clip(d_in, 0, None) ** 1.5 + p[C_IN] * (v_i @ e - vrho)), 0.0)
+    n_out = np.where(d_out > 0, np.maximum(
+        0.0, p[K_OUT] * np.clip(d_out, 0, None) ** 1.5 + p[C_OUT] * (vrho - v_o @ e)), 0.0)
+    dv_in = (w_i - w_m) * p[R_IN] - w_r * p[R_B]
+    dv_out = w_r * p[R_B] - w_m * p[R_OUT]
+    f_in = _traction_numpy(dv_in, n_in, p[P1_IN], p[H_IN], p) * n_in
+    f_out = _traction_numpy(dv_out, n_out, p[P1_OUT], p[H_OUT], p) * n_out
+    gap = (psi - theta_c - 2 * np.pi * np.arange(z) / z) * p[R_M]
+    n_c = np.where(np.abs(gap) > p[POCKET], p[K_CAGE] * (gap - np.sign(gap) * p[POCKET])
+                   + p[C_CAGE] * p[R_M] * (w_m - w_c), 0.0)
+    s = 2.0
+    mu_c = ((CAGE_A + CAGE_B * s) * np.exp(-CAGE_C * s) + CAGE_D) * np.clip(
+        w_r * p[R_B] / 1e-3, -1, 1)
+    drag = p[DRAG] * np.abs(2 * p[R_M] * w_m) ** 1.95 * np.where(w_m >= 0, 1.0, -1.0)
+    f_imp = np.zeros(z)
+    if p[IMPACTS] > 0:
+        for kind, _, _, angle, ball in table:
+            if kind == 2:
+                j = int(ball)
+                if (phi[j] - angle - np.pi) % (2 * np.pi) <= p[DEFECT_ANGLE]:
+                    f_imp[j] += p[M_B] * (w_i - w_m[j]) ** 2 * p[R_IN]
+                if (phi[j] - angle) % (2 * np.pi) <= p[DEFECT_ANGLE]:
+                    f_imp[j] -= p[M_B] * w_m[j] ** 2 * (p[R_OUT] - p[R_B])
+    m_b, r = p[M_B], p[R_M] + rho
+    radial = n_in - n_out - mu_c * n_c + f_imp - m_b * p[GRAVITY] * np.sin(psi)
+    tangential = f_in + f_out - n_c - drag - m_b * p[GRAVITY] * np.cos(psi)
+    dballs = np.stack([vrho, radial / m_b + r * w_m**2, w_m,
+                       (tangential / m_b - 2 * vrho * w_m) / r, w_r,
+                       (f_in - f_out - mu_c * np.abs(n_c)) * p[R_B] / p[J_B]], axis=1)
+    # ring reactions: inner -N e_r - F e_t, outer +N e_r - F e_t (impacts split by sign)
+    force_i = -(e @ (n_in + np.maximum(f_imp, 0))) - tang @ f_in
+    force_o = e @ (n_out - np.minimum(f_imp, 0)) - tang @ f_out
+    unb = p[UNBALANCE] * w_i**2 * np.array([np.cos(w_i * t), np.sin(w_i * t)])
+    a_i = (force_i + np.array([p[F_X], p[F_Y]]) + unb) / p[M_I]
+    a_o = (force_o - p[K_O] * u_o - p[C_O] * v_o) / p[M_O]
+    cage = (p[R_M] * n_c.sum() - p[CAGE_DRAG] * w_c * abs(w_c)) / p[J_C]
+    return np.concatenate([v_i, v_o, a_i, a_o, [w_c, cage], dballs.ravel()])
+
+
+@numba.njit(cache=True)
+def _jacobian(t, y, f0, parts0, p, table, jac_g, jac_gb, jac_bg, jac_b):
+    """Difference the Jacobian in arrow blocks: jac_g (NG, NG), jac_gb (Z, NG, NB)
+    (global rows, ball columns), jac_bg (Z, NB, NG), jac_b (Z, NB, NB)."""
+    n = y.shape[0]
+    z = (n - NG) // NB
+    yp = y.copy()
+    f1 = np.empty(n)
+    parts1 = np.empty((z, NG))
+    for col in range(NG):
+        eps = 1e-7 * max(abs(y[col]), 1e-6 if col < 4 else 1e-3)
+        yp[col] = y[col] + eps
+        slip_rhs(t, yp, p, table, f1, parts1)
+        yp[col] = y[col]
+        for i in range(NG):
+            jac_g[i, col] = (f1[i] - f0[i]) / eps
+        for j in range(z):
+            for i in range(NB):
+                jac_bg[j, i, col] = (f1[NG + NB * j + i] - f0[NG + NB * j + i]) / eps
+    for m in range(NB):
+        steps = np.empty(z)
+        for j in range(z):
+            k = NG + NB * j + m
+            steps[j] = 1e-7 * max(abs(y[k]), 1e-6 if m < 2 else 1e-2)
+            yp[k] = y[k] + steps[j]
+        slip_rhs(t, yp, p, table, f1, parts1)
+        for j in range(z):
+            k = NG + NB * j + m
+            yp[k] = y[k]
+            for i in range(NB):
+                jac_b[j, i, m] = (f1[NG + NB * j + i] - f0[NG + NB * j + i]) / steps[j]
+            for i in range(NG):
+                jac_gb[j, i, m] = (parts1[j, i] - parts0[j, i]) / steps[j]
+
+
+@numba.njit(cache=True)
+def _factor(gh, jac_g, jac_gb, jac_bg, jac_b, inv_b, m_bg, s_inv):
+    """Factor W = I - gh J by block elimination (Schur complement on the global block)."""
+    z = jac_b.shape[0]
+    s = np.eye(NG) - gh * jac_g
+    for j in range(z):
+        inv_b[j] = np.linalg.inv(np.eye(NB) - gh * jac_b[j])
+        m_bg[j] = inv_b[j] @ (-gh * jac_bg[j])          # D_j^-1 W_bg,j
+        s -= (-gh * jac_gb[j]) @ m_bg[j]
+    s_inv[:, :] = np.linalg.inv(s)
+
+
+@numba.njit(cache=True)
+def _solve(gh, jac_gb, inv_b, m_bg, s_inv, rhs, out):
+    """Solve W x = rhs with the factors of :func:`_factor`."""
+    z = inv_b.shape[0]
+    r_g = rhs[:NG].copy()
+    tmp = np.empty((z, NB))
+    for j in range(z):
+        tmp[j] = inv_b[j] @ rhs[NG + NB * j:NG + NB * (j + 1)]
+        r_g -= (-gh * jac_gb[j]) @ tmp[j]
+    x_g = s_inv @ r_g
+    out[:NG] = x_g
+    for j in range(z):
+        out[NG + NB * j:NG + NB * (j + 1)] = tmp[j] - m_bg[j] @ x_g
+
+
+@numba.njit(cache=True)
+def rosenbrock_chunk(p, table, t, y, h, t_out, rtol, atol, h_max, max_steps):
+    """Integrate the slip model over the output times ``t_out`` with the modified
+    Rosenbrock 2(3) pair of Shampine & Reichelt (SIAM J. Sci. Comput. 18 (1997) 1-22,
+    MATLAB's ode23s): L-stable, one Jacobian per step, its own continuous extension for
+    the output. Returns (Y, t, y, h, steps, rejected, status) like dopri_chunk."""
+    n = y.shape[0]
+    z = (n - NG) // NB
+    d = 1.0 / (2.0 + math.sqrt(2.0))
+    e32 = 6.0 + math.sqrt(2.0)
+    out = np.empty((t_out.shape[0], n))
+    f0 = np.empty(n)
+    f1 = np.empty(n)
+    f2 = np.empty(n)
+    ft = np.empty(n)
+    parts0 = np.empty((z, NG))
+    parts = np.empty((z, NG))
+    jac_g = np.empty((NG, NG))
+    jac_gb = np.empty((z, NG, NB))
+    jac_bg = np.empty((z, NB, NG))
+    jac_b = np.empty((z, NB, NB))
+    inv_b = np.empty((z, NB, NB))
+    m_bg = np.empty((z, NB, NG))
+    s_inv = np.empty((NG, NG))
+    k1 = np.empty(n)
+    k2 = np.empty(n)
+    k3 = np.empty(n)
+    rhs = np.empty(n)
+    ynew = np.empty(n)
+    err = np.empty(n)
+    steps = 0
+    rejected = 0
+    i_out = 0
+    while i_out < t_out.shape[0] and t_out[i_out] <= t:
+        out[i_out] = y
+        i_out += 1
+    slip_rhs(t, y, p, table, f0, parts0)
+    need_jacobian = True
+    while i_out < t_out.shape[0]:
+        if steps + rejected >= max_steps:
+            return out, t, y, h, steps, rejected, TOO_MANY_STEPS
+        h = min(h, h_max)
+        if h < 1e-14:
+            return out, t, y, h, steps, rejected, STEP_TOO_SMALL
+        if need_jacobian:
+            _jacobian(t, y, f0, parts0, p, table, jac_g, jac_gb, jac_bg, jac_b)
+            dt = 1e-7 * max(abs(t), 1e-3)
+            slip_rhs(t + dt, y, p, table, ft, parts)
+            for i in range(n):
+                ft[i] = (ft[i] - f0[i]) / dt
+            need_jacobian = False
+        gh = d * h
+        _factor(gh, jac_g, jac_gb, jac_bg, jac_b, inv_b, m_bg, s_inv)
+        for i in range(n):
+            rhs[i] = f0[i] + h * d * ft[i]
+        _solve(gh, jac_gb, inv_b, m_bg, s_inv, rhs, k1)
+        for i in range(n):
+            ynew[i] = y[i] + 0.5 * h * k1[i]
+        slip_rhs(t + 0.5 * h, ynew, p, table, f1, parts)
+        for i in range(n):
+            rhs[i] = f1[i] - k1[i]
+        _solve(gh, jac_gb, inv_b, m_bg, s_inv, rhs, k2)
+        for i in range(n):
+            k2[i] += k1[i]
+            ynew[i] = y[i] + h * k2[i]
+        slip_rhs(t + h, ynew, p, table, f2, parts)
+        for i in range(n):
+            rhs[i] = f2[i] - e32 * (k2[i] - f1[i]) - 2.0 * (k1[i] - f0[i]) + h * d * ft[i]
+        _solve(gh, jac_gb, inv_b, m_bg, s_inv, rhs, k3)
+        for i in range(n):
+            err[i] = h / 6.0 * (k1[i] - 2.0 * k2[i] + k3[i])
+        norm = error_norm(err, y, ynew, rtol, atol)
+        if not np.isfinite(norm):
+            if h < 1e-12:
+                return out, t, y, h, steps, rejected, NOT_FINITE
+            h *= 0.25
+            rejected += 1
+            continue
+        if norm <= 1.0:
+            t_new = t + h
+            while i_out < t_out.shape[0] and t_out[i_out] <= t_new:
+                s = (t_out[i_out] - t) / h
+                a1 = s * (1.0 - s) / (1.0 - 2.0 * d)
+                a2 = s * (s - 2.0 * d) / (1.0 - 2.0 * d)
+                for i in range(n):
+                    out[i_out, i] = y[i] + h * (a1 * k1[i] + a2 * k2[i])
+                i_out += 1
+            t = t_new
+            y = ynew.copy()
+            f0[:] = f2
+            parts0[:, :] = parts
+            steps += 1
+            need_jacobian = True
+            h *= min(5.0, 0.8 * (1.0 / max(norm, 1e-10)) ** (1.0 / 3.0))
+        else:
+            rejected += 1
+            h *= max(0.1, 0.8 * (1.0 / norm) ** (1.0 / 3.0))
+    return out, t, y, h, steps, rejected, OK
+
+
+@numba.njit(cache=True)
+def slip_accelerations(p, table, t_out, states):
+    """Outer-ring accelerations (x, y) at the output states [m/s^2]."""
+    n = states.shape[1]
+    z = (n - NG) // NB
+    out = np.empty((t_out.shape[0], 2))
+    dydt = np.empty(n)
+    parts = np.empty((z, NG))
+    for i in range(t_out.shape[0]):
+        slip_rhs(t_out[i], states[i], p, table, dydt, parts)
+        out[i, 0] = dydt[6]
+        out[i, 1] = dydt[7]
+    return out

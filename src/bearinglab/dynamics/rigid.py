@@ -1,0 +1,174 @@
+"""The rigid-ring defect model of seed 003 (4 degrees of freedom).
+
+Seed 003, part 7 ("a 4-DOF dynamic model of a deep-groove ball bearing with a compound
+fault", after Sawalhi & Randall 2008 and Patel et al. 2010): the shaft with the inner
+ring (x_s, y_s) and the pedestal with the outer ring (x_p, y_p) are rigid masses; the
+balls are massless Hertz springs between them, equally spaced and moving with the cage
+at the pure-rolling speed; a ball carries load only when its approach is positive
+(load-zone switch); localised defects open extra clearance lambda_j(t) as a ball crosses
+them (:mod:`bearinglab.dynamics.defects`). Equations (seed 003 eq. 21, rebuilt):
+
+    m_s x_s'' + c_s x_s' + k_s x_s + f_x = F_x + m_u e omega^2 cos(omega t)
+    m_p x_p'' + c_p x_p' + k_p x_p - f_x = 0           (and the same in y)
+    f = sum_j K [delta_j]_+^1.5 (cos psi_j, sin psi_j) + c_b (v_s - v_p)
+    delta_j = (x_s - x_p) cos psi_j + (y_s - y_p) sin psi_j - P_d/2 - lambda_j(t)
+
+K is the series constant of the inner and outer Hertz contacts
+(:func:`bearinglab.contact.hertz.series_constant`). Assumptions (seed 003 sec. 2):
+Hertz contacts without plastic flow; balls equally spaced; ball inertia and gyroscopic
+moments neglected (moderate speed); defect edges sharp; no slip (the cage turns at the
+kinematic speed; see the slip model for what lubricated bearings really do).
+
+Parameters the seed does not print (its Table of model parameters was lost in
+translation) are documented on :class:`RigidParameters` with their sources.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import asdict, dataclass
+
+import numpy as np
+from scipy.optimize import brentq
+
+from ..contact import hertz
+from ..errors import InputError
+from ..materials import effective_modulus
+from . import _kernels as kern
+
+
+@dataclass(frozen=True)
+class RigidParameters:
+    """Masses, supports and damping of the rigid-ring model (SI).
+
+    Defaults follow Sawalhi N., Randall R. B., "Simulating gear and bearing interactions
+    in the presence of faults: Part I", *Mech. Syst. Signal Process.* 22 (2008)
+    1924-1951 (bearing-pedestal model, as used for the seed-003 4-DOF model):
+    see docs/capabilities/dynamics.md for the table and what was chosen where the
+    sources are silent.
+
+    Parameters
+    ----------
+    shaft_mass : float
+        m_s, shaft and inner ring [kg].
+    pedestal_mass : float
+        m_p, pedestal and outer ring [kg].
+    shaft_stiffness, shaft_damping : float
+        k_s [N/m], c_s [N s/m]: the shaft's own support to ground besides this bearing.
+    pedestal_stiffness, pedestal_damping : float
+        k_p [N/m], c_p [N s/m]: pedestal to ground.
+    bearing_damping : float
+        c_b, viscous damping across the bearing [N s/m].
+    unbalance : float
+        m_u e, rotating unbalance of the shaft [kg m].
+    """
+
+    shaft_mass: float = 1.0
+    pedestal_mass: float = 1.0
+    shaft_stiffness: float = 0.0
+    shaft_damping: float = 0.0
+    pedestal_stiffness: float = 7.42e7
+    pedestal_damping: float = 1376.8
+    bearing_damping: float = 200.0
+    unbalance: float = 0.0
+
+    def __post_init__(self) -> None:
+        for name, value in asdict(self).items():
+            positive = name.endswith("mass")
+            if (isinstance(value, bool) or not isinstance(value, (int, float, np.floating))
+                    or not math.isfinite(value) or value < 0 or (positive and value == 0)):
+                raise InputError(name, value, "a positive value" if positive else
+                                 "a value >= 0 (SI units)")
+
+    def to_dict(self) -> dict:
+        """JSON-ready values (SI, with units in the keys)."""
+        return {"shaft_mass_kg": self.shaft_mass, "pedestal_mass_kg": self.pedestal_mass,
+                "shaft_stiffness_n_per_m": self.shaft_stiffness,
+                "shaft_damping_n_s_per_m": self.shaft_damping,
+                "pedestal_stiffness_n_per_m": self.pedestal_stiffness,
+                "pedestal_damping_n_s_per_m": self.pedestal_damping,
+                "bearing_damping_n_s_per_m": self.bearing_damping,
+                "unbalance_kg_m": self.unbalance}
+
+
+def hertz_constant(bearing) -> float:
+    """Series load-deflection constant K of one ball's inner and outer contacts [N/m^1.5]."""
+    e = effective_modulus(bearing.ball_material, bearing.ring_material)
+    k_in = hertz.load_deflection_constant(*bearing.contact_radii("inner"), e)
+    k_out = hertz.load_deflection_constant(*bearing.contact_radii("outer"), e)
+    return float(hertz.series_constant(k_in, k_out))
+
+
+def pack(bearing, condition, params: RigidParameters, table, cage_phase: float = 0.0):
+    """The kernel's parameter array for ``bearing`` under ``condition``."""
+    from ..kinematics import frequency_orders
+
+    orders = frequency_orders(bearing.ball_count, bearing.ball_diameter,
+                              bearing.pitch_diameter, bearing.contact_angle)
+    w = condition.shaft_speed
+    load = condition.load_vector()
+    p = np.zeros(kern.RIGID_PARAMETER_COUNT)
+    p[kern.M_S], p[kern.M_P] = params.shaft_mass, params.pedestal_mass
+    p[kern.K_S], p[kern.C_S] = params.shaft_stiffness, params.shaft_damping
+    p[kern.K_P], p[kern.C_P] = params.pedestal_stiffness, params.pedestal_damping
+    p[kern.K_HERTZ] = hertz_constant(bearing)
+    p[kern.HALF_CLEARANCE] = 0.5 * bearing.diametral_clearance
+    p[kern.C_BEARING] = params.bearing_damping
+    p[kern.BALLS] = bearing.ball_count
+    p[kern.CAGE_SPEED] = float(orders["ftf"]) * w
+    p[kern.SPIN_SPEED] = float(orders["bsf"]) * w      # ball spin relative to the cage
+    p[kern.SHAFT_SPEED] = w
+    p[kern.F_X], p[kern.F_Y] = load[0], load[1]
+    p[kern.UNBALANCE] = params.unbalance
+    p[kern.BALL_RADIUS] = 0.5 * bearing.ball_diameter
+    p[kern.INNER_RADIUS] = 0.5 * bearing.inner_raceway_diameter
+    p[kern.OUTER_RADIUS] = 0.5 * bearing.outer_raceway_diameter
+    p[kern.CAGE_PHASE] = cage_phase
+    return p
+
+
+def static_offset(k, psi, force, half_clearance, theta) -> np.ndarray:
+    """Displacement of the inner ring relative to the outer at static equilibrium [m].
+
+    Solves F = sum_j K [u cos(psi_j - theta) - P_d/2]_+^1.5 cos(psi_j - theta) for the
+    approach u along the load direction theta, balls frozen at ``psi`` (the transverse
+    force is small and is left to the settling time).
+    """
+    if force == 0.0:
+        return np.zeros(2)
+    cosines = np.cos(np.asarray(psi) - theta)
+
+    def residual(u):
+        d = np.clip(u * cosines - half_clearance, 0.0, None)
+        return float(k * np.sum(d**1.5 * cosines)) - force
+
+    lo = max(half_clearance, 0.0)
+    hi = lo + 1e-6
+    while residual(hi) < 0:
+        hi *= 2.0
+    u = brentq(residual, lo, hi, xtol=1e-13)
+    return u * np.array([math.cos(theta), math.sin(theta)])
+
+
+def static_state(p) -> np.ndarray:
+    """Initial state at the static equilibrium of the defect-free bearing: the bearing
+    carries the load, the pedestal spring (and the shaft spring, if any) share it."""
+    force = math.hypot(p[kern.F_X], p[kern.F_Y])
+    y = np.zeros(8)
+    if force == 0.0:
+        return y
+    theta = math.atan2(p[kern.F_Y], p[kern.F_X])
+    z = int(p[kern.BALLS])
+    psi = p[kern.CAGE_PHASE] + 2 * np.pi * np.arange(z) / z
+    k_s, k_p = p[kern.K_S], p[kern.K_P]
+    share = 1.0 if k_s == 0.0 else k_p / (k_p + k_s)     # approximate when k_s > 0
+    u = static_offset(p[kern.K_HERTZ], psi, force * share, p[kern.HALF_CLEARANCE], theta)
+    x_p = (force * share / k_p if k_p > 0 else 0.0) * np.array([math.cos(theta),
+                                                                 math.sin(theta)])
+    y[2:4] = x_p
+    y[0:2] = x_p + u
+    return y
+
+
+#: Absolute tolerances of the state: displacements [m] and velocities [m/s].
+ATOL = np.array([1e-11] * 4 + [1e-8] * 4)

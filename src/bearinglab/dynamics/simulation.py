@@ -1,0 +1,231 @@
+"""Running a dynamic model: time integration in chunks, resampling, the result object.
+
+Layer 3. :func:`simulate` takes a bearing, an operating condition and defects, runs the
+rigid-ring model (seed 003, :mod:`.rigid`) or the slip model (seed 004, :mod:`.slip`)
+with a compiled integrator (:mod:`._integrate`, ``_slip_kernels.rosenbrock_chunk``),
+drops the settling time and returns a :class:`Simulation` whose signal is sampled at the
+user's rate. The same inputs give the same signal (the integrators are deterministic and
+the optional measurement noise is drawn from ``seed``).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..errors import ConvergenceError, InputError
+from ..kinematics import DefectFrequencies, defect_frequencies
+from ..signal import Signal
+from . import _integrate, _kernels, _slip_kernels, rigid, slip
+from .defects import Defect, pack_defects
+
+MODELS = ("rigid", "slip")
+MAX_STEPS_PER_CHUNK = 2_000_000
+CHUNKS = 40
+
+
+@dataclass(frozen=True)
+class Simulation:
+    """A simulated vibration record and what produced it.
+
+    Attributes: ``model`` ("rigid" or "slip"), ``bearing``, ``condition``, ``defects``,
+    ``signal`` (:class:`bearinglab.signal.Signal`: ``acc_x``, ``acc_y`` [m/s^2] of the
+    outer ring/pedestal, ``disp_x``, ``disp_y`` [m] of the inner ring relative to the
+    outer; the slip model adds ``cage_speed`` [rad/s]), ``kinematic``
+    (:class:`~bearinglab.kinematics.DefectFrequencies`), ``ball_orbital_speed`` and
+    ``ball_spin_speed`` (Z, n) [rad/s] and ``slip_inner``, ``slip_outer`` (Z, n) [m/s]
+    (slip model, eq. 13), ``parameters`` and ``stats`` (steps, rejected steps, settle
+    time).
+    """
+
+    model: str
+    bearing: object
+    condition: object
+    defects: tuple
+    signal: Signal
+    kinematic: DefectFrequencies
+    parameters: object
+    stats: dict
+    ball_orbital_speed: np.ndarray | None = None
+    ball_spin_speed: np.ndarray | None = None
+    slip_inner: np.ndarray | None = None
+    slip_outer: np.ndarray | None = None
+    extra: dict = field(default_factory=dict)
+
+    @property
+    def cage_speed_ratio(self) -> float | None:
+        """Mean cage speed over its pure-rolling value (slip model; None for rigid)."""
+        if "cage_speed" not in self.signal.channels:
+            return None
+        pure = self.kinematic.orders["ftf"] * self.kinematic.shaft_speed
+        return float(np.mean(self.signal.channels["cage_speed"]) / pure)
+
+    @property
+    def spin_speed_ratio(self) -> float | None:
+        """Mean ball spin speed over its pure-rolling value (slip model; None for rigid)."""
+        if self.ball_spin_speed is None:
+            return None
+        pure = self.kinematic.orders["bsf"] * self.kinematic.shaft_speed
+        return float(np.mean(self.ball_spin_speed) / pure)
+
+
+def _check_number(name, value, allowed, low=0.0, inclusive=False):
+    if (isinstance(value, bool) or not isinstance(value, (int, float, np.floating))
+            or not math.isfinite(value) or value < low or (value == low and not inclusive)):
+        raise InputError(name, value, allowed)
+    return float(value)
+
+
+def simulate(bearing, condition, defects=(), *, model: str = "rigid",
+             duration: float = 1.0, sample_rate: float = 50e3, parameters=None,
+             lubricant=None, settle: float | None = None, rtol: float | None = None,
+             noise: float = 0.0, seed: int | None = None,
+             progress: Callable[[float], None] | None = None) -> Simulation:
+    """Simulate the vibration of ``bearing`` under ``condition`` with ``defects``.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        Geometry and materials.
+    condition : OperatingCondition
+        Radial load (direction included) and shaft speed [rad/s] (inner ring turning).
+    defects : sequence of Defect
+        Localised defects; empty for a healthy bearing.
+    model : {"rigid", "slip"}
+        Seed 003's rigid-ring model or seed 004's slip model.
+    duration : float
+        Length of the recorded signal [s], after ``settle``.
+    sample_rate : float
+        Output sampling rate [Hz].
+    parameters : RigidParameters or SlipParameters, optional
+        Model values; defaults documented on the classes.
+    lubricant : Lubricant, optional
+        Slip model only; default the seed-004 grease.
+    settle : float, optional
+        Time simulated and discarded before recording [s]; default 0.05 s (rigid) or
+        two cage revolutions (slip).
+    rtol : float, optional
+        Relative tolerance of the integrator; default 1e-6 (rigid), 1e-3 (slip).
+    noise : float
+        RMS of white measurement noise added to the accelerations [m/s^2].
+    seed : int, optional
+        Seed of the noise generator.
+    progress : callable, optional
+        Called with the fraction done (0..1) between integration chunks.
+    """
+    if model not in MODELS:
+        raise InputError("model", model, f"one of {MODELS}")
+    duration = _check_number("duration", duration, "a duration > 0 [s]")
+    sample_rate = _check_number("sample_rate", sample_rate, "a rate > 0 [Hz]")
+    if duration * sample_rate < 64:
+        raise InputError("duration", duration, f"at least {64 / sample_rate:g} s "
+                         "(64 samples)")
+    if duration * sample_rate > 5e7:
+        raise InputError("duration", duration, "at most 5e7 samples in one record")
+    noise = _check_number("noise", noise, "an RMS >= 0 [m/s^2]", inclusive=True)
+    if condition.shaft_speed <= 0:
+        raise InputError("shaft_speed", condition.shaft_speed, "a speed > 0 [rad/s]")
+    defects = tuple(defects)
+    table = pack_defects(defects, bearing)
+    kin = defect_frequencies(bearing, condition.shaft_speed)
+    if model == "rigid":
+        params = parameters or rigid.RigidParameters()
+        if not isinstance(params, rigid.RigidParameters):
+            raise InputError("parameters", type(params).__name__, "RigidParameters")
+        p = rigid.pack(bearing, condition, params, table)
+        y0 = rigid.static_state(p)
+        atol = rigid.ATOL
+        settle = 0.05 if settle is None else settle
+        rtol = 1e-6 if rtol is None else rtol
+    else:
+        params = parameters or slip.SlipParameters()
+        if not isinstance(params, slip.SlipParameters):
+            raise InputError("parameters", type(params).__name__, "SlipParameters")
+        widths = [d.width for d in defects if d.location == "ball"]
+        p = slip.pack(bearing, condition, params, table, lubricant, max(widths, default=0.0))
+        y0 = slip.initial_state(p)
+        atol = slip.atol(bearing.ball_count)
+        ftf_hz = kin.hz("ftf")
+        settle = 2.0 / ftf_hz if settle is None else settle
+        rtol = 1e-3 if rtol is None else rtol
+    settle = _check_number("settle", settle, "a time >= 0 [s]", inclusive=True)
+    rtol = _check_number("rtol", rtol, "a tolerance in (0, 0.1]")
+    if rtol > 0.1:
+        raise InputError("rtol", rtol, "a tolerance in (0, 0.1]")
+
+    n = int(round(duration * sample_rate))
+    t_out = settle + np.arange(n) / sample_rate
+    states, stats = _integrate_chunks(model, p, table, y0, t_out, rtol, atol,
+                                      1.0 / sample_rate, progress)
+    stats["settle_s"] = settle
+    return _result(model, bearing, condition, defects, params, kin, p, table, t_out, states,
+                   stats, noise, seed, sample_rate)
+
+
+def _integrate_chunks(model, p, table, y0, t_out, rtol, atol, h_max, progress):
+    """Run the integrator chunk by chunk (progress between chunks); raise if it fails."""
+    t, y, h = 0.0, y0.copy(), 1e-6
+    pieces = []
+    steps = rejected = 0
+    bounds = np.linspace(0, t_out.size, min(CHUNKS, t_out.size) + 1).astype(int)
+    for k in range(bounds.size - 1):
+        chunk = t_out[bounds[k]:bounds[k + 1]]
+        if model == "rigid":
+            out, t, y, h, s, r, status = _integrate.dopri_chunk(
+                _kernels.rigid_rhs_numba, p, table, t, y, h, chunk, rtol, atol, h_max,
+                MAX_STEPS_PER_CHUNK)
+        else:
+            out, t, y, h, s, r, status = _slip_kernels.rosenbrock_chunk(
+                p, table, t, y, h, chunk, rtol, atol, h_max, MAX_STEPS_PER_CHUNK)
+        steps += s
+        rejected += r
+        if status != _integrate.OK:
+            raise ConvergenceError(
+                f"{model} model: integration stopped at t = {t:.6g} s: "
+                f"{_integrate.STATUS_TEXT[status]} (steps {steps}, rejected {rejected}); "
+                "try a smaller load step, a looser rtol or check the inputs")
+        pieces.append(out)
+        if progress is not None:
+            progress(bounds[k + 1] / t_out.size)
+    states = np.concatenate(pieces)
+    if not np.all(np.isfinite(states)):
+        raise ConvergenceError(f"{model} model: the state became non-finite")
+    return states, {"steps": int(steps), "rejected_steps": int(rejected)}
+
+
+def _result(model, bearing, condition, defects, params, kin, p, table, t_out, states, stats,
+            noise, seed, sample_rate):
+    if model == "rigid":
+        acc = _kernels.rigid_accelerations(p, table, t_out, states)
+        disp = states[:, 0:2] - states[:, 2:4]
+    else:
+        acc = _slip_kernels.slip_accelerations(p, table, t_out, states)
+        disp = states[:, 0:2] - states[:, 2:4]
+    if noise > 0:
+        acc = acc + np.random.default_rng(seed).normal(0.0, noise, acc.shape)
+    channels = {"acc_x": acc[:, 0], "acc_y": acc[:, 1], "disp_x": disp[:, 0],
+                "disp_y": disp[:, 1]}
+    extra = {}
+    if model == "slip":
+        z = bearing.ball_count
+        balls = states[:, _slip_kernels.NG:].reshape(t_out.size, z, _slip_kernels.NB)
+        channels["cage_speed"] = states[:, 9]
+        w_m = balls[:, :, 3].T
+        w_r = balls[:, :, 5].T
+        r_b, r_in, r_out = p[_slip_kernels.R_B], p[_slip_kernels.R_IN], p[_slip_kernels.R_OUT]
+        extra = {"ball_orbital_speed": w_m, "ball_spin_speed": w_r,
+                 "slip_inner": (p[_slip_kernels.OMEGA_I] - w_m) * r_in - w_r * r_b,
+                 "slip_outer": w_r * r_b - w_m * r_out}
+    metadata = {"source": f"bearinglab {model} model", "model": model,
+                "speed_rpm": condition.shaft_speed * 30.0 / math.pi,
+                "radial_load_n": condition.radial_load, "bearing": bearing.name or "",
+                "defects": [d.to_dict() for d in defects], "start_time_s": float(t_out[0])}
+    signal = Signal(channels, sample_rate, metadata)
+    return Simulation(model, bearing, condition, tuple(defects), signal, kin, params, stats,
+                      **extra)
+
+
+__all__ = ["MODELS", "Defect", "Simulation", "simulate"]

@@ -1,0 +1,272 @@
+"""The seed-004 slip model: balls free to slide under EHL, with a cage.
+
+Hou X., Fan J., Ma J., Fu X., "Influence of sliding effect on frequency of rolling
+element defect in ball bearing", *J. Mech. Electr. Eng.* 41(2) (2024) 271-279 (seed
+004). Each ball j has radial (rho_j), orbital (psi_j) and spin (phi_j) freedom, the
+cage its own rotation (theta_c), the inner ring (turning at a constant speed) and the
+outer ring translate in the radial plane. In the notation of ``_slip_kernels``:
+
+- approaches (eq. 2): delta_i = u_i . e_j - rho_j - P_d/4 - lambda_i + h_i,
+  delta_o = rho_j - u_o . e_j - P_d/4 - lambda_o + h_o; lambda from the surface table
+  (defects); the film h is a layer between the surfaces, so for given centres it adds
+  to the approach (the seed prints -h, which would make the film open clearance);
+- normal forces (eq. 3 with eqs. 7-9): N = [K delta^1.5 + C delta']_+ with the Hertz
+  constant K and the film damping C of eq. 8, C = 6 pi eta_0 R_x^1.5 a / (1.414 h^1.5);
+  the film's normal stiffness (eqs. 7, 9) is in series with Hertz' and >100 times
+  stiffer at these loads, so it is represented by the film thickness alone;
+- slip speeds (eq. 13): dV_i = (omega_i - omega_m) d_i/2 - omega_r D_w/2,
+  dV_o = omega_r D_w/2 - omega_m d_o/2; tractions F = mu(dV) N (eq. 10) with mu from
+  eq. 12 (``traction="seed004"``, a power-law shear stress averaged over the Hertz
+  pressure and capped at the lubricant's limiting shear coefficient) or the Bair-Winer
+  limiting-shear model (``traction="bair_winer"``: Bair S., Winer W. O., *J. Lubr.
+  Technol.* 101 (1979) 258-265, tau = tau_L (1 - exp(-eta gamma'/tau_L)),
+  tau_L = (tau_L/p) p, eta = eta_0 exp(alpha p), averaged over the Hertz pressure);
+- ball-cage contact (eq. 4): N_c = K_c (psi_j - theta_c - 2 pi j/Z) d_m/2 + C_c V_c
+  (with an optional pocket clearance), friction mu_c N_c from eq. 11 (Masjedi-Khonsari
+  boundary curve) at the slide-roll ratio 2 of a pure-sliding pocket contact;
+- ball drag (eq. 14): F = pi rho_e C_d R_b^2 (2 R_m omega_m)^1.95 / 8, rho_e the mass
+  density of the oil-air mixture (the seed's rho_e/g, a weight density over g);
+- cage drag (eq. 15): M = 0.5 rho_e C_b R_co^3 (R_co^2 - R_ci^2) omega_c^2
+  + 0.125 mu_e rho_e A_c R_ci^3 omega_c^2, opposing the rotation;
+- ball-defect impacts (eqs. 16-19): while a ball defect faces the inner race (spin
+  phase within [pi, pi + theta_d]) the force m_b (omega_i - omega_m)^2 d_i/2 pushes the
+  ball out and the inner ring in; facing the outer race, m_b omega_m^2 (d_o - D_w)/2
+  (the printed forms with cos(theta) ~ 1 for defects of a few degrees);
+- equations of motion (eqs. 20-24) in polar form: m_b (rho'' - r omega_m^2) = radial
+  forces, m_b (r omega_m' + 2 rho' omega_m) = tangential forces, J_b omega_r' =
+  (F_i - F_o - mu_c |N_c|) D_w/2; J_c omega_c' = (d_m/2) sum N_c - M_e; rings
+  m a = sum of reactions + loads; gravity acts on the balls.
+
+Departures from the print, each stated where it is made: J_b = (2/5) m_b R_b^2 (the
+seed prints m_b R_b^2, the inertia of a thin ring); the outer ring sits on a housing
+spring k_o, c_o (the seed's eq. 21 has none, and a free outer ring would drift); the
+film and its damping are evaluated once, at the largest Stribeck ball load and the
+pure-rolling entrainment speed. Values the seed does not give are in
+:class:`SlipParameters` with their sources.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import asdict, dataclass
+from typing import Literal
+
+import numpy as np
+
+from ..contact import hertz
+from ..errors import InputError
+from ..lubrication import LUBRICANTS, Lubricant
+from ..lubrication.ehl import entrainment_speed, hamrock_dowson_film
+from ..materials import effective_modulus
+from . import _slip_kernels as sk
+
+Traction = Literal["seed004", "bair_winer"]
+TRACTIONS = ("seed004", "bair_winer")
+GRAVITY = 9.81
+
+
+@dataclass(frozen=True)
+class SlipParameters:
+    """Values of the slip model that the bearing and lubricant do not give (SI).
+
+    Parameters
+    ----------
+    traction : {"seed004", "bair_winer"}
+        Race traction model [-].
+    flow_index : float
+        n of eq. 12 [-]; 1 (Newtonian, then G_oil drops out) because seed 004 gives none.
+    oil_shear_modulus : float
+        G_oil of eq. 12 [Pa] (only used when flow_index < 1); 0.5 GPa, a typical
+        limiting elastic shear modulus (Johnson & Tevaarwerk 1977 range 0.5-1 GPa).
+    regularisation_speed : float
+        Slip speed below which the traction coefficient is taken linear in it [m/s]: a
+        numerical device (the traction curve is nearly vertical at zero slip); the
+        tests show the ball speeds do not depend on it below 1e-3 m/s.
+    cage_stiffness, cage_damping : float
+        K_c [N/m], C_c [N s/m] of the ball-pocket contact (eq. 4, "equivalent stiffness
+        under lubrication"); not given by the seed: 1e6 N/m (a ball pressing a
+        lubricated pressed-steel or polymer pocket with a few newtons) and 10 N s/m
+        (about 10 % of critical for one ball).
+    pocket_clearance : float
+        Play of a ball in its pocket along the orbit [m]; 0 as in eq. 4.
+    oil_fraction : float
+        Volume fraction of lubricant in the oil-air mixture [-] (rho_e = fraction rho);
+        0.03 (Harris & Kotzalas: 1-5 % in jet- or grease-lubricated bearings).
+    ball_drag_coefficient, cage_drag_coefficient : float
+        C_d of eq. 14 (0.5, a sphere at Re 1e3-1e5) and C_b of eq. 15 (5e-3) [-].
+    cage_mass_ratio : float
+        Cage mass over ball-set mass [-]; 0.35 (pressed-steel cage of a 62-series
+        bearing, e.g. about 6 g for the 19 g ball set of a 6205); the cage's radius of
+        gyration is d_m/2.
+    housing_stiffness, housing_damping : float
+        k_o [N/m], c_o [N s/m] between outer ring and ground; 1e8 N/m and 2000 N s/m.
+    inner_mass, outer_mass : float or None
+        Ring masses [kg]; None takes the rings' own masses from the bearing's section.
+    unbalance : float
+        m_u e [kg m]; seed 004: 0.5 g, at the bore radius of a 6205 (12.5 mm, a choice).
+    impact_forces : bool
+        Add the ball-defect impact forces of eqs. 16-19 to the contact geometry.
+    """
+
+    traction: Traction = "seed004"
+    flow_index: float = 1.0
+    oil_shear_modulus: float = 0.5e9
+    regularisation_speed: float = 1e-3
+    cage_stiffness: float = 1e6
+    cage_damping: float = 10.0
+    pocket_clearance: float = 0.0
+    oil_fraction: float = 0.03
+    ball_drag_coefficient: float = 0.5
+    cage_drag_coefficient: float = 5e-3
+    cage_mass_ratio: float = 0.35
+    housing_stiffness: float = 1e8
+    housing_damping: float = 2000.0
+    inner_mass: float | None = None
+    outer_mass: float | None = None
+    unbalance: float = 0.5e-3 * 12.5e-3
+    impact_forces: bool = True
+
+    def __post_init__(self) -> None:
+        if self.traction not in TRACTIONS:
+            raise InputError("traction", self.traction, f"one of {TRACTIONS}")
+        if not isinstance(self.impact_forces, bool):
+            raise InputError("impact_forces", self.impact_forces, "True or False")
+        for name, value in asdict(self).items():
+            if name in ("traction", "impact_forces") or value is None:
+                continue
+            if (isinstance(value, bool) or not isinstance(value, (int, float, np.floating))
+                    or not math.isfinite(value) or value < 0):
+                raise InputError(name, value, "a finite value >= 0 (SI units)")
+        for name in ("flow_index", "regularisation_speed", "cage_stiffness",
+                     "cage_mass_ratio", "inner_mass", "outer_mass"):
+            if getattr(self, name) == 0:
+                raise InputError(name, 0, "a positive value")
+        if self.flow_index > 1:
+            raise InputError("flow_index", self.flow_index, "a value in (0, 1]")
+        if self.oil_fraction > 1:
+            raise InputError("oil_fraction", self.oil_fraction, "a fraction in [0, 1]")
+
+    def to_dict(self) -> dict:
+        """JSON-ready values (SI, units in the keys where they have one)."""
+        units = {"oil_shear_modulus": "_pa", "regularisation_speed": "_m_per_s",
+                 "cage_stiffness": "_n_per_m", "cage_damping": "_n_s_per_m",
+                 "pocket_clearance": "_m", "housing_stiffness": "_n_per_m",
+                 "housing_damping": "_n_s_per_m", "inner_mass": "_kg", "outer_mass": "_kg",
+                 "unbalance": "_kg_m"}
+        return {k + units.get(k, ""): v for k, v in asdict(self).items()}
+
+
+def _ring_mass(bearing, which: str, given):
+    if given is not None:
+        return given
+    try:
+        return getattr(bearing, f"{which}_ring_mass")
+    except InputError as exc:
+        raise InputError(f"{which}_mass", None, "a ring mass [kg]",
+                         f"the bearing has no boundary dimensions to compute it ({exc})") from None
+
+
+def pack(bearing, condition, params: SlipParameters, table, lubricant: Lubricant | None = None,
+         defect_width: float = 0.0):
+    """The kernel's parameter array for ``bearing`` under ``condition``."""
+    lub = lubricant or LUBRICANTS["seed004-grease"]
+    if lub.limiting_shear_coefficient is None:
+        raise InputError("lubricant", lub.name, "a lubricant with a limiting_shear_coefficient",
+                         "the traction models need tau_L/p")
+    if bearing.contact_angle > math.radians(1.0):
+        raise InputError("contact_angle", math.degrees(bearing.contact_angle),
+                         "0 deg (the slip model is planar: deep-groove bearings, radial load)")
+    if condition.shaft_speed <= 0:
+        raise InputError("shaft_speed", condition.shaft_speed, "a speed > 0 [rad/s]",
+                         "the slip model needs the inner ring turning")
+    z = bearing.ball_count
+    dw = bearing.ball_diameter
+    e_prime = effective_modulus(bearing.ball_material, bearing.ring_material)
+    load = condition.load_vector()
+    q_max = max(5.0 * condition.radial_load / z, 1.0)           # Stribeck's estimate
+    u = float(entrainment_speed(bearing, condition.shaft_speed))
+    eta = lub.dynamic_viscosity
+    p = np.zeros(sk.SLIP_PARAMETER_COUNT)
+    for race, k_i, h_i, c_i, p1_i in (("inner", sk.K_IN, sk.H_IN, sk.C_IN, sk.P1_IN),
+                                      ("outer", sk.K_OUT, sk.H_OUT, sk.C_OUT, sk.P1_OUT)):
+        rx, ry = bearing.contact_radii(race)
+        p[k_i] = float(hertz.load_deflection_constant(rx, ry, e_prime))
+        h = float(hamrock_dowson_film(q_max, u, rx, ry, e_prime, eta,
+                                      lub.pressure_viscosity_coefficient))
+        p[h_i] = h
+        contact = hertz.point_contact(q_max, rx, ry, e_prime)
+        p[c_i] = 6 * math.pi * eta * rx**1.5 * float(contact.semi_major) / (1.414 * h**1.5)
+        p[p1_i] = float(hertz.point_contact(1.0, rx, ry, e_prime).max_pressure)
+    m_b = bearing.ball_mass
+    r_m = 0.5 * bearing.pitch_diameter
+    m_c = params.cage_mass_ratio * z * m_b
+    rho_e = params.oil_fraction * lub.density
+    r_co, r_ci = r_m + 0.25 * dw, r_m - 0.25 * dw
+    p[sk.BALLS] = z
+    p[sk.M_I] = _ring_mass(bearing, "inner", params.inner_mass)
+    p[sk.M_O] = _ring_mass(bearing, "outer", params.outer_mass)
+    p[sk.K_O], p[sk.C_O] = params.housing_stiffness, params.housing_damping
+    p[sk.M_B] = m_b
+    p[sk.J_B] = 0.4 * m_b * (0.5 * dw) ** 2
+    p[sk.J_C] = m_c * r_m**2
+    p[sk.R_M], p[sk.R_B] = r_m, 0.5 * dw
+    p[sk.R_IN] = 0.5 * bearing.inner_raceway_diameter
+    p[sk.R_OUT] = 0.5 * bearing.outer_raceway_diameter
+    p[sk.QUARTER_CLEARANCE] = 0.25 * bearing.diametral_clearance
+    p[sk.OMEGA_I] = condition.shaft_speed
+    p[sk.F_X], p[sk.F_Y] = load[0], load[1]
+    p[sk.UNBALANCE] = params.unbalance
+    p[sk.GRAVITY] = GRAVITY
+    p[sk.K_CAGE], p[sk.C_CAGE] = params.cage_stiffness, params.cage_damping
+    p[sk.POCKET] = params.pocket_clearance
+    p[sk.TRACTION] = TRACTIONS.index(params.traction)
+    p[sk.ETA0] = eta
+    p[sk.ALPHA] = lub.pressure_viscosity_coefficient
+    p[sk.MU_LIMIT] = lub.limiting_shear_coefficient
+    p[sk.FLOW_INDEX] = params.flow_index
+    p[sk.G_OIL] = params.oil_shear_modulus
+    p[sk.V_REG] = params.regularisation_speed
+    p[sk.DRAG] = math.pi * rho_e * params.ball_drag_coefficient * (0.5 * dw) ** 2 / 8.0
+    p[sk.CAGE_DRAG] = (0.5 * rho_e * params.cage_drag_coefficient * r_co**3
+                       * (r_co**2 - r_ci**2)
+                       + 0.125 * sk.CAGE_D * rho_e * (2 * math.pi * r_co * 0.5 * dw) * r_ci**3)
+    p[sk.IMPACTS] = 1.0 if params.impact_forces else 0.0
+    # seed 004 eq. 17: the defect subtends theta_d at the ball centre, sin theta_d = w / D_w
+    p[sk.DEFECT_ANGLE] = math.asin(min(defect_width / dw, 1.0))
+    return p
+
+
+def initial_state(p, cage_phase: float = 0.0) -> np.ndarray:
+    """Pure-rolling speeds, balls evenly spaced and the inner ring at its static offset."""
+    from .rigid import static_offset
+
+    z = int(p[sk.BALLS])
+    y = np.zeros(sk.NG + sk.NB * z)
+    w_i = p[sk.OMEGA_I]
+    r_in, r_out, r_b = p[sk.R_IN], p[sk.R_OUT], p[sk.R_B]
+    w_c = w_i * r_in / (r_in + r_out)                   # eq. 13 with zero slip
+    w_r = w_c * r_out / r_b
+    psi = cage_phase + 2 * np.pi * np.arange(z) / z
+    force = math.hypot(p[sk.F_X], p[sk.F_Y])
+    k = float(hertz.series_constant(p[sk.K_IN], p[sk.K_OUT]))
+    offset = static_offset(k, psi, force, 2 * p[sk.QUARTER_CLEARANCE] - p[sk.H_IN]
+                           - p[sk.H_OUT], math.atan2(p[sk.F_Y], p[sk.F_X]))
+    y[0:2] = offset
+    y[8], y[9] = cage_phase, w_c
+    balls = y[sk.NG:].reshape(z, sk.NB)
+    balls[:, 0] = 0.5 * (offset[0] * np.cos(psi) + offset[1] * np.sin(psi))
+    balls[:, 2] = psi
+    balls[:, 3] = w_c
+    balls[:, 5] = w_r
+    return y
+
+
+def atol(z: int) -> np.ndarray:
+    """Absolute tolerances: positions 1e-9 m (1/10000 of a contact deflection),
+    velocities 1e-5 m/s, angles 1e-5 rad, angular speeds 0.1 rad/s (1/1000 of the cage
+    speed of the seed-004 case: the slip ratios come out to 1e-3). Tighter values
+    multiply the step count by ten without changing the ball speeds beyond 1e-4
+    (tests/unit/test_dynamics_slip.py)."""
+    g = np.array([1e-9] * 4 + [1e-5] * 4 + [1e-5, 1e-1])
+    ball = np.array([1e-9, 1e-5, 1e-5, 1e-1, 1e-5, 1e-1])
+    return np.concatenate([g, np.tile(ball, z)])

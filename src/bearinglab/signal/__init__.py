@@ -1,0 +1,28 @@
+"""Signal analysis for bearing diagnostics: records and their files, spectra, envelope
+analysis with a spectral-kurtosis band, peak matching to defect frequencies, coherence.
+
+Sources are cited in each module: Randall & Antoni 2011 (envelope analysis), Antoni 2006
+and 2007 (spectral kurtosis, kurtogram), SciPy (scipy.signal, scipy.io).
+"""
+
+from .coherence import Coherence, coherence
+from .io import SUFFIXES, read_signal, write_signal
+from .peaks import diagnose, find_peaks, match_peaks
+from .record import Signal
+from .spectra import (
+    EnvelopeSpectrum,
+    KurtogramBand,
+    Spectrum,
+    amplitude_spectrum,
+    envelope,
+    envelope_spectrum,
+    spectral_kurtosis,
+    spectral_kurtosis_band,
+)
+
+__all__ = [
+    "SUFFIXES", "Coherence", "EnvelopeSpectrum", "KurtogramBand", "Signal", "Spectrum",
+    "amplitude_spectrum", "coherence", "diagnose", "envelope", "envelope_spectrum",
+    "find_peaks", "match_peaks", "read_signal", "spectral_kurtosis",
+    "spectral_kurtosis_band", "write_signal",
+]
