@@ -57,6 +57,6 @@ class CaseResult:
 
 def all_cases() -> list[Case]:
     """Every published case, in source order."""
-    from . import datasets, seed001, seed003, seed004
+    from . import datasets, dynamics, seed001, seed003, seed004
 
-    return [*seed001.CASES, *seed003.CASES, *seed004.CASES, *datasets.CASES]
+    return [*seed001.CASES, *seed003.CASES, *seed004.CASES, *dynamics.CASES, *datasets.CASES]
