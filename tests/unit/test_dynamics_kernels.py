@@ -6,8 +6,15 @@ import math
 import numpy as np
 import pytest
 
-from bearinglab.dynamics import Defect, SlipParameters, _integrate, _kernels, _slip_kernels
-from bearinglab.dynamics import rigid, slip
+from bearinglab.dynamics import (
+    Defect,
+    SlipParameters,
+    _integrate,
+    _kernels,
+    _slip_kernels,
+    rigid,
+    slip,
+)
 from bearinglab.dynamics.defects import edge_drop, pack_defects
 from bearinglab.errors import InputError
 from bearinglab.geometry import BallBearing

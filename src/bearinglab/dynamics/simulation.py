@@ -156,7 +156,7 @@ def simulate(bearing, condition, defects=(), *, model: str = "rigid",
     if rtol > 0.1:
         raise InputError("rtol", rtol, "a tolerance in (0, 0.1]")
 
-    n = int(round(duration * sample_rate))
+    n = round(duration * sample_rate)
     t_out = settle + np.arange(n) / sample_rate
     states, stats = _integrate_chunks(model, p, table, y0, t_out, rtol, atol,
                                       1.0 / sample_rate, progress)

@@ -17,7 +17,7 @@ docs/capabilities/dynamics.md for what we get and why.
 from __future__ import annotations
 
 import math
-from functools import lru_cache
+from functools import cache
 
 from ..geometry import BallBearing
 from ..operating import OperatingCondition
@@ -31,7 +31,7 @@ SKF6205 = BallBearing(ball_count=9, ball_diameter=8e-3, pitch_diameter=39e-3, bo
 SEED004_DEFECT_WIDTH = 30.6e-3 * math.sin(math.radians(0.5))
 
 
-@lru_cache(maxsize=None)
+@cache
 def seed003_line(defects: str, target: str) -> float:
     """Envelope-spectrum line nearest the kinematic ``target`` frequency [Hz] (within
     3 %) of the rigid model's ER-16K signal with ``defects`` ("ball" or "compound")."""
@@ -52,7 +52,7 @@ def seed003_line(defects: str, target: str) -> float:
     return float(max(peaks, key=lambda p: p["amplitude"])["frequency_hz"])
 
 
-@lru_cache(maxsize=None)
+@cache
 def seed004_ball_line(load: float) -> float:
     """Ball-defect line of the slip model [Hz]: mean ball spin speed / 2 pi."""
     from ..dynamics import Defect, simulate
