@@ -221,7 +221,7 @@ def main() -> None:
     print(f"  simulate: {s['duration']:g} s of signal (+{s['settle']:.4f} s settling) in "
           f"{s['wall']:.3f} s, {s['steps']} steps ({s['rejected']} rejected): "
           f"{s['steps'] / s['simulated']:.0f} steps per simulated s; cage speed ratio "
-          f"{s['cage_ratio']:.4f}")
+          f"{s['cage_ratio']:.5f}")
     print(f"  same span as the references ({s['ref_span']:g} s from the initial state): "
           f"{s['same_wall'] * 1e3:.1f} ms, {s['same_steps']} steps "
           f"({s['same_rejected']} rejected)")
@@ -234,8 +234,8 @@ def main() -> None:
               f"{ref['wall']:.2f} s, {ref['steps']} steps, {per_sim:.0f} s per simulated s: "
               f"x{ratios[name][0]:.0f} (long run), x{ratios[name][1]:.0f} (same span); "
               f"vs ours over {ref['samples']} samples: max |disp_y diff| / range "
-              f"{ref['disp_y']:.2e}, mean cage speed {ref['cage'] * 100:.3f} %, mean ball "
-              f"orbital speed max {ref['orbital'] * 100:.3f} %")
+              f"{ref['disp_y']:.2e}, relative difference of the mean cage speed "
+              f"{ref['cage']:.1e}, of the balls' mean orbital speed (max) {ref['orbital']:.1e}")
 
     best = min(ratios, key=lambda k: ratios[k][0])
     rows = [

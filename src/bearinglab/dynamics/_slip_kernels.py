@@ -31,6 +31,7 @@ NB = 6           # states per ball
  G_OIL, V_REG, DRAG, CAGE_DRAG, IMPACTS, DEFECT_ANGLE) = range(41)
 SLIP_PARAMETER_COUNT = 41
 SEED004, BAIR_WINER = 0, 1
+JACOBIAN_AGE = 4          # steps a Jacobian is reused for (see rosenbrock_chunk)
 # Masjedi & Khonsari boundary friction curve, seed 004 eq. 11 (ball-cage contact)
 CAGE_A, CAGE_B, CAGE_C, CAGE_D = -0.1, 22.28, 181.46, 0.1
 # 4-point Gauss-Legendre rule on [0, 1] for the pressure averages of Bair-Winer traction
@@ -373,6 +374,7 @@ def rosenbrock_chunk(p, table, t, y, h, t_out, rtol, atol, h_max, max_steps):
         i_out += 1
     slip_rhs(t, y, p, table, f0, parts0)
     need_jacobian = True
+    age = 0
     while i_out < t_out.shape[0]:
         if steps + rejected >= max_steps:
             return out, t, y, h, steps, rejected, TOO_MANY_STEPS
@@ -386,6 +388,7 @@ def rosenbrock_chunk(p, table, t, y, h, t_out, rtol, atol, h_max, max_steps):
             for i in range(n):
                 ft[i] = (ft[i] - f0[i]) / dt
             need_jacobian = False
+            age = 0
         gh = d * h
         _factor(gh, jac_g, jac_gb, jac_bg, jac_b, inv_b, m_bg, s_inv)
         for i in range(n):
@@ -427,10 +430,14 @@ def rosenbrock_chunk(p, table, t, y, h, t_out, rtol, atol, h_max, max_steps):
             f0[:] = f2
             parts0[:, :] = parts
             steps += 1
-            need_jacobian = True
+            age += 1
+            # a stale Jacobian keeps the formula's order (ode23s is a W-method) and the
+            # error control rejects what it spoils: renew it every few steps only
+            need_jacobian = age >= JACOBIAN_AGE
             h *= min(5.0, 0.8 * (1.0 / max(norm, 1e-10)) ** (1.0 / 3.0))
         else:
             rejected += 1
+            need_jacobian = age > 0
             h *= max(0.1, 0.8 * (1.0 / norm) ** (1.0 / 3.0))
     return out, t, y, h, steps, rejected, OK
 
