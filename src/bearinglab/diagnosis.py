@@ -208,10 +208,14 @@ class Diagnosis:
         ax.set_ylabel("envelope amplitude")
         ax.set_xlim(0, self.max_frequency)
         ax.set_ylim(0, 1.25 * top)
-        ax.legend(fontsize=7, loc="upper right")
+        ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
         fig.tight_layout()
         if path is not None:
-            save_figure(fig, path)
+            try:
+                save_figure(fig, path)  # closes the figure
+            except Exception:
+                plt.close(fig)
+                raise
         return fig, ax
 
 

@@ -18,7 +18,7 @@ from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
 from ..diagnosis import analyze_signal, peak_label
 from ..dynamics import Defect, simulate
-from ..errors import InputError
+from ..errors import BearinglabError, InputError
 from ..kinematics import FREQUENCY_NAMES, LONG_NAMES, defect_frequencies
 from ..operating import OperatingCondition
 from ..signal import SUFFIXES, read_signal, write_signal
@@ -83,7 +83,7 @@ def parse_defect(text: str) -> Defect:
     for item in rest.split(","):
         key, eq, value = (s.strip() for s in item.partition("="))
         if key not in _DEFECT_KEYS[location]:
-            raise _bad_defect(text, f"unknown key {key!r} for a {location} defect (keys: "
+            raise _bad_defect(text, f"unknown key {key!r} for {location} defects (keys: "
                               f"{', '.join(_DEFECT_KEYS[location])})")
         if not eq or not value:
             raise _bad_defect(text, f"{key} has no value")
@@ -253,7 +253,7 @@ def simulate_command(
                            seed=seed,
                            progress=lambda f: progress.update(task, completed=f))
         except InputError as exc:
-            raise _simulate_error(exc) from None
+            raise _simulate_error(exc, bearing) from None
     diag = analyze_signal(sim.signal, None, sim.kinematic, channel="acc_y")
     if output is not None:
         _write(output, sim.signal)
@@ -319,8 +319,16 @@ _SIMULATE_FLAGS = {"duration": "--duration-s", "sample_rate": "--sample-rate-hz"
                    "radial_load": "--radial-load-n", "axial_load": "--axial-load-n"}
 
 
-def _simulate_error(exc: InputError) -> InputError:
+def _simulate_error(exc: InputError, bearing) -> BearinglabError:
     """An error of simulate() in the options' terms, where one option is to blame."""
+    name = bearing.name or "the bearing"
+    if exc.parameter in ("inner_mass", "outer_mass") and exc.value is None:
+        return BearinglabError(f"--model slip needs the ring masses, which follow from the "
+                               f"boundary dimensions {name} lacks: give --bore-mm, "
+                               "--outside-diameter-mm and --width-mm")
+    if exc.parameter == "contact_angle":
+        return OptionError("--model", "slip", "rigid for this bearing (the slip model is "
+                           f"planar: contact angle 0; {name} has {exc.value:g} deg)")
     flag = _SIMULATE_FLAGS.get(exc.parameter)
     if flag is None or flag == "--speed-rpm":
         return exc
@@ -393,6 +401,9 @@ def analyze_command(
         if channel is not None:
             signal.channel(channel)
     except InputError as exc:
+        if exc.parameter == "sample_rate_hz" and sample_rate_hz is None:
+            raise BearinglabError("--sample-rate-hz is required: the file does not store its "
+                                  "sample rate (CWRU records are 12000 or 48000 Hz)") from None
         flag = _READ_FLAGS.get(exc.parameter)
         if flag is None:
             raise
@@ -402,8 +413,8 @@ def analyze_command(
     if speed_rpm is None:
         recorded = signal.metadata.get("speed_rpm")
         if not isinstance(recorded, (int, float)) or isinstance(recorded, bool):
-            raise OptionError("--speed-rpm", None, "the shaft speed in rpm (the file does not "
-                              "record it)")
+            raise BearinglabError("--speed-rpm is required: the file does not record the "
+                                  "shaft speed")
         speed_rpm = float(recorded)
     shaft_speed = _speed(speed_rpm)
     bearing, _ = resolve_bearing(designation, geometry)

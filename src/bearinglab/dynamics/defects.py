@@ -61,7 +61,7 @@ def edge_drop(distance, ball_radius, race_radius, race: Literal["inner", "outer"
         Which race the pit is on, or faces (for a ball defect).
 
     >>> round(float(edge_drop(0.6e-3, 3.97e-3, 23.235e-3, "outer")) * 1e6, 2)  # ER-16K, 1.2 mm
-    37.86
+    37.85
     """
     d = np.clip(np.asarray(distance, dtype=float), 0.0, None)
     d = np.minimum(d, ball_radius)

@@ -1,0 +1,189 @@
+"""simulate and analyze on the command line (rigid model, 0.5 s at 20 kHz: fast)."""
+
+import json
+import math
+
+import pytest
+
+from bearinglab.cli import main
+from bearinglab.cli.dynamics import parse_defect
+from bearinglab.errors import InputError
+
+SIM = ["simulate", "ER-16K", "--speed-rpm", "1750", "--radial-load-n", "50",
+       "--duration-s", "0.5", "--sample-rate-hz", "20000"]
+OUTER = ["--defect", "outer:width_mm=1.2,depth_mm=0.25"]
+ANALYZE = ["--designation", "ER-16K", "--speed-rpm", "1750"]
+BPFO_HZ = 104.19
+
+
+def run_json(capsys, *args):
+    code = main([*args, "--json"])
+    out, err = capsys.readouterr()
+    assert code == 0, err
+    return json.loads(out)
+
+
+def run_error(capsys, *args):
+    code = main(list(args))
+    out, err = capsys.readouterr()
+    assert code == 2, (out, err)
+    assert err.startswith("error: ") and err.count("\n") == 1, err
+    return err
+
+
+def test_simulate_outer_race_json(capsys):
+    d = run_json(capsys, *SIM, *OUTER)
+    for key in ("model", "sample_rate_hz", "duration_s", "kinematic", "peaks", "likely_fault",
+                "band_hz", "cage_speed_ratio", "spin_speed_ratio", "ball_defect_frequency_hz",
+                "defects", "output", "stats"):
+        assert key in d, key
+    assert d["model"] == "rigid" and d["sample_rate_hz"] == 20000.0 and d["duration_s"] == 0.5
+    assert d["kinematic"]["bpfo_hz"] == pytest.approx(BPFO_HZ, abs=0.01)
+    assert d["likely_fault"] == "outer race"
+    bpfo = [p for p in d["peaks"] if p["matched"] == "bpfo" and p["harmonic"] == 1]
+    assert bpfo and bpfo[0]["frequency_hz"] == pytest.approx(BPFO_HZ, abs=2.0)  # 2 Hz bins
+    assert {"frequency_hz", "amplitude", "matched", "harmonic"} <= d["peaks"][0].keys()
+    assert d["cage_speed_ratio"] is None and d["spin_speed_ratio"] is None  # rigid: no slip
+    assert d["ball_defect_frequency_hz"] is None  # no ball defect simulated
+    assert d["defects"] == [{"location": "outer", "width_mm": 1.2, "depth_mm": 0.25,
+                             "angle_deg": -90.0}]
+    assert d["output"] is None and d["stats"]["steps"] > 0
+    low, high = d["band_hz"]
+    assert 0 < low < high <= 10000
+
+
+@pytest.mark.parametrize("suffix, extra", [
+    (".npz", []),
+    (".wav", ["--channel", "channel_1", "--sample-rate-hz", "20000"]),  # WAV: no names
+    (".mat", []),
+    (".csv", []),
+])
+def test_simulate_output_then_analyze(tmp_path, capsys, suffix, extra):
+    path = tmp_path / f"signal{suffix}"
+    d = run_json(capsys, *SIM, *OUTER, "-o", str(path))
+    assert d["output"] == str(path) and path.is_file()
+    a = run_json(capsys, "analyze", str(path), *ANALYZE, *extra)
+    for key in ("file", "channel", "sample_rate_hz", "kinematic", "peaks", "likely_fault",
+                "scores", "band_hz", "ball_defect_frequency_hz"):
+        assert key in a, key
+    assert a["file"] == str(path)
+    assert a["channel"] == ("channel_1" if suffix == ".wav" else "acc_y")
+    assert a["sample_rate_hz"] == pytest.approx(20000.0)
+    assert a["likely_fault"] == "outer race"
+    assert a["scores"]["outer race"] > a["scores"]["inner race"]
+    assert any(p["matched"] == "bpfo" and abs(p["frequency_hz"] - BPFO_HZ) <= 2.0
+               for p in a["peaks"])
+
+
+def test_analyze_reads_the_speed_from_the_file(tmp_path, capsys):
+    path = tmp_path / "s.npz"
+    run_json(capsys, *SIM, *OUTER, "-o", str(path))
+    a = run_json(capsys, "analyze", str(path), "--designation", "ER-16K")
+    assert a["kinematic"]["speed_rpm"] == pytest.approx(1750.0)
+    assert a["likely_fault"] == "outer race"
+    # a WAV file records no speed
+    wav = tmp_path / "s.wav"
+    run_json(capsys, *SIM, *OUTER, "-o", str(wav))
+    assert "--speed-rpm" in run_error(capsys, "analyze", str(wav), "--designation", "ER-16K")
+
+
+def test_inner_race_is_diagnosed(capsys):
+    d = run_json(capsys, *SIM, "--defect", "inner:width_mm=1.2,depth_mm=0.25")
+    assert d["likely_fault"] == "inner race"
+    assert any(p["matched"] == "bpfi" for p in d["peaks"])
+
+
+def test_ball_defect_is_found(capsys):
+    # rigid model, 0.5 s: the ball-defect line (2 x BSF, 135.45 Hz) and its cage sidebands
+    d = run_json(capsys, *SIM, "--defect", "ball:width_mm=1.2")
+    assert d["likely_fault"] == "ball"
+    assert d["ball_defect_frequency_hz"] == pytest.approx(d["kinematic"]["ball_defect_hz"],
+                                                          abs=2.0)
+    assert d["defects"][0]["ball"] == 0
+
+
+def test_human_output_and_plots(tmp_path, capsys):
+    sim_png, an_png, npz = tmp_path / "sim.png", tmp_path / "an.png", tmp_path / "s.npz"
+    assert main([*SIM, *OUTER, "-o", str(npz), "--plot", str(sim_png)]) == 0
+    out = capsys.readouterr().out
+    assert "likely fault: outer race" in out and "1x bpfo" in out and "BPFO" in out
+    assert sim_png.read_bytes()[:4] == b"\x89PNG"
+    assert main(["analyze", str(npz), *ANALYZE, "--band-hz", "3000,7000",
+                 "--plot", str(an_png)]) == 0
+    out = capsys.readouterr().out
+    assert "likely fault: outer race" in out and "3000 - 7000 Hz" in out
+    assert an_png.read_bytes()[:4] == b"\x89PNG"
+
+
+def test_analyze_band_options(tmp_path, capsys):
+    npz = tmp_path / "s.npz"
+    run_json(capsys, *SIM, *OUTER, "-o", str(npz))
+    assert run_json(capsys, "analyze", str(npz), *ANALYZE, "--band-hz", "none")["band_hz"] is None
+    assert run_json(capsys, "analyze", str(npz), *ANALYZE,
+                    "--band-hz", "2000,6000")["band_hz"] == [2000.0, 6000.0]
+    for bad in ("2000", "6000,2000", "fast"):
+        assert "--band-hz" in run_error(capsys, "analyze", str(npz), *ANALYZE, "--band-hz", bad)
+    err = run_error(capsys, "analyze", str(npz), *ANALYZE, "--band-hz", "2000,15000")
+    assert "--band-hz" in err and "Nyquist" in err
+    assert "--channel" in run_error(capsys, "analyze", str(npz), *ANALYZE, "--channel", "DE")
+
+
+@pytest.mark.parametrize("spec, why", [
+    ("outer", "width_mm is required"),
+    ("outer:width_mm=-1", "width_mm must be > 0"),
+    ("core:width_mm=1", "unknown location 'core'"),
+    ("outer:foo=1", "unknown key 'foo'"),
+    ("outer:width_mm=1,width_mm=2", "given twice"),
+    ("outer:width_mm=abc", "not a number"),
+    ("ball:width_mm=1,ball=1.5", "not a whole number"),
+    ("inner:width_mm=1,ball=0", "unknown key 'ball'"),
+    ("outer:width_mm=9", "less than the ball diameter"),
+    ("ball:width_mm=1,ball=9", "a ball index in [0, 8]"),
+])
+def test_bad_defect_specs(capsys, spec, why):
+    err = run_error(capsys, *SIM, "--defect", spec)
+    assert err.startswith("error: --defect = ") and repr(spec) in err
+    assert "outer, inner or ball" in err and why in err
+
+
+def test_defect_spec_units_and_angles():
+    d = parse_defect("outer:width_mm=1.2,depth_mm=0.25,angle_deg=270")
+    assert d.width == pytest.approx(1.2e-3) and d.depth == pytest.approx(0.25e-3)
+    assert d.angle == pytest.approx(-math.pi / 2)
+    assert parse_defect("outer:width_mm=1").angle == pytest.approx(-math.pi / 2)  # bottom
+    assert parse_defect("outer:width_mm=1,angle_deg=90").angle == pytest.approx(math.pi / 2)
+    ball = parse_defect(" Ball : width_mm=1.2 , ball=3 ")
+    assert ball.location == "ball" and ball.ball == 3 and ball.depth is None
+    with pytest.raises(InputError):
+        parse_defect("outer:width_mm=inf")
+
+
+@pytest.mark.parametrize("args, flag", [
+    (["--duration-s", "0"], "--duration-s"),
+    (["--duration-s", "0.001"], "--duration-s"),
+    (["--sample-rate-hz", "-5"], "--sample-rate-hz"),
+    (["--noise-ms2", "-1"], "--noise-ms2"),
+    (["--speed-rpm", "0"], "--speed-rpm"),
+    (["--radial-load-n", "-3"], "--radial-load-n"),
+    (["-o", "signal.txt"], "--output"),
+    (["-o", "no/such/dir/signal.npz"], "--output"),
+    (["--plot", "plot.txt"], "--plot"),
+    (["--sample-rate-hz", "20000.5", "-o", "s.wav"], "--sample-rate-hz"),
+])
+def test_bad_simulate_options(tmp_path, monkeypatch, capsys, args, flag):
+    monkeypatch.chdir(tmp_path)
+    assert flag in run_error(capsys, *SIM, *OUTER, *args)
+    assert not list(tmp_path.iterdir())
+
+
+def test_slip_model_needs_ring_dimensions(capsys):
+    err = run_error(capsys, *SIM, "--model", "slip")
+    assert "--bore-mm" in err and "--outside-diameter-mm" in err
+
+
+def test_analyze_missing_file(tmp_path, capsys):
+    missing = tmp_path / "missing.npz"
+    err = run_error(capsys, "analyze", str(missing), *ANALYZE)
+    assert "SIGNAL_FILE" in err and str(missing) in err
+    assert "--sample-rate-hz" in run_error(capsys, "analyze", str(missing), *ANALYZE,
+                                           "--sample-rate-hz", "-1")
