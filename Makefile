@@ -21,6 +21,9 @@ demo: setup
 	$(BIN)/bearinglab contact 6205-2RS --ball-load-n 1000
 	$(BIN)/bearinglab info 180205
 	$(BIN)/bearinglab static 6205-2RS --radial-load-n 1000 --speed-rpm 1797
+	$(BIN)/bearinglab simulate ER-16K --speed-rpm 1750 --radial-load-n 50 \
+	    --defect outer:width_mm=1.2,depth_mm=0.25 --defect ball:width_mm=1.2 \
+	    --duration-s 2 --sample-rate-hz 20000
 
 test: setup
 	$(BIN)/python -m pytest -q
