@@ -99,6 +99,8 @@ _RANGES = {
 #: Limits of the analysis options, in their units.
 MAX_BALL_LOAD_N = 1e7
 MAX_SPEED_RPM = 1e6
+MAX_LOAD_N = 1e7
+JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON object instead of tables.")]
 
 #: BallBearing / Material keyword -> option name, to put errors in the user's terms.
 _KEYWORD_OPTION = {spec[4]: name for name, spec in _GEOMETRY_OPTIONS.items() if spec[4]}

@@ -24,7 +24,9 @@ from ..operating import OperatingCondition
 from ..signal import SUFFIXES, read_signal, write_signal
 from ._app import app, console
 from ._inputs import (
+    MAX_LOAD_N,
     MAX_SPEED_RPM,
+    JsonOpt,
     OptionError,
     _geometry_line,
     _geometry_warnings,
@@ -37,11 +39,9 @@ from ._output import _emit_json, _save_plot, _table
 DesignationArg = Annotated[str | None, typer.Argument(
     help="Bearing designation or catalogue name (e.g. ER-16K); optional with explicit "
          "geometry.", show_default=False)]
-JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON object instead of tables.")]
 PlotOpt = Annotated[Path | None, typer.Option(
     "--plot", help="Also draw the envelope spectrum to this .png, .svg or .pdf file.",
     show_default=False)]
-MAX_LOAD_N = 1e7
 #: What a --defect specification may hold.
 DEFECT_ALLOWED = ("LOCATION:KEY=VALUE,... with LOCATION outer, inner or ball and keys "
                   "width_mm (> 0, required), depth_mm (> 0), angle_deg (outer: position from "

@@ -20,6 +20,7 @@ from ._app import HertzMethod, app, console
 from ._inputs import (
     MAX_BALL_LOAD_N,
     MAX_SPEED_RPM,
+    JsonOpt,
     OptionError,
     _catalog_message,
     _check_designation_text,
@@ -44,7 +45,6 @@ DesignationArg = Annotated[str | None, typer.Argument(
     help="Bearing designation (GOST 3189-89 or ISO, e.g. 6205-2RS, 180205) or catalogue "
          "name (e.g. ER-16K). Optional when the geometry is given explicitly.",
     show_default=False)]
-JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON object instead of tables.")]
 PlotOpt = Annotated[Path | None, typer.Option(
     "--plot", help="Also draw the result to this .png, .svg or .pdf file.", show_default=False)]
 

@@ -21,7 +21,9 @@ from ..quasistatic.study import stiffness_map as stiffness_map_study
 from ..rings import ring_modes
 from ._app import app, console
 from ._inputs import (
+    MAX_LOAD_N,
     MAX_SPEED_RPM,
+    JsonOpt,
     OptionError,
     _geometry_line,
     _geometry_warnings,
@@ -34,10 +36,8 @@ from ._output import _emit_json, _save_plot, _table
 DesignationArg = Annotated[str | None, typer.Argument(
     help="Bearing designation or catalogue name; optional with explicit geometry.",
     show_default=False)]
-JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON object instead of tables.")]
 PlotOpt = Annotated[Path | None, typer.Option(
     "--plot", help="Also draw the result to this .png, .svg or .pdf file.", show_default=False)]
-MAX_LOAD_N = 1e7
 MAX_CASES = 1_000_000
 
 

@@ -23,6 +23,17 @@ import numpy as np
 RIGID_PARAMETER_COUNT = 20
 
 
+@numba.njit(cache=True)
+def _pit_drop(d, r_ball, radius, outer, depth):
+    """lambda(d) of defects.edge_drop for one contact, limited by ``depth``; 0 if d <= 0."""
+    if d <= 0.0:
+        return 0.0
+    d = min(d, r_ball)
+    ring = radius - math.sqrt(max(radius * radius - d * d, 0.0))
+    ball = r_ball - math.sqrt(r_ball * r_ball - d * d)
+    return min(ball - ring if outer else ball + ring, depth)
+
+
 def surface_deviation(psi, spin, shaft_angle, r_ball, r_in, r_out, table, dev_in, dev_out):
     """Extra clearance of every ball's inner and outer contact from the surface table [m].
 
@@ -53,34 +64,21 @@ def surface_deviation(psi, spin, shaft_angle, r_ball, r_in, r_out, table, dev_in
         angle = table[row, 3]
         for j in range(psi.shape[0]):
             if kind == 0 or kind == 1:
-                ref = angle if kind == 0 else angle + shaft_angle
-                radius = r_out if kind == 0 else r_in
+                outer = kind == 0
+                ref = angle if outer else angle + shaft_angle
+                radius = r_out if outer else r_in
                 off = (psi[j] - ref + math.pi) % two_pi - math.pi
-                d = half - abs(off) * radius
-                if d > 0.0:
-                    d = min(d, r_ball)
-                    ring = radius - math.sqrt(max(radius * radius - d * d, 0.0))
-                    drop = r_ball - math.sqrt(r_ball * r_ball - d * d)
-                    drop = drop - ring if kind == 0 else drop + ring
-                    drop = min(drop, depth)
-                    if kind == 0:
-                        dev_out[j] += drop
-                    else:
-                        dev_in[j] += drop
+                drop = _pit_drop(half - abs(off) * radius, r_ball, radius, outer, depth)
+                if outer:
+                    dev_out[j] += drop
+                else:
+                    dev_in[j] += drop
             elif kind == 2 and j == int(table[row, 4]):
-                for face in range(2):             # 0: facing the outer race, 1: the inner
-                    off = (spin[j] - angle - face * math.pi + math.pi) % two_pi - math.pi
-                    d = half - abs(off) * r_ball
-                    if d > 0.0:
-                        d = min(d, r_ball)
-                        radius = r_out if face == 0 else r_in
-                        ring = radius - math.sqrt(max(radius * radius - d * d, 0.0))
-                        drop = r_ball - math.sqrt(r_ball * r_ball - d * d)
-                        drop = min(drop - ring if face == 0 else drop + ring, depth)
-                        if face == 0:
-                            dev_out[j] += drop
-                        else:
-                            dev_in[j] += drop
+                # the marked point faces the outer race at spin phase 0, the inner at pi
+                off = (spin[j] - angle + math.pi) % two_pi - math.pi
+                dev_out[j] += _pit_drop(half - abs(off) * r_ball, r_ball, r_out, True, depth)
+                off = (spin[j] - angle) % two_pi - math.pi
+                dev_in[j] += _pit_drop(half - abs(off) * r_ball, r_ball, r_in, False, depth)
 
 
 def surface_deviation_numpy(psi, spin, shaft_angle, r_ball, r_in, r_out, table):

@@ -27,13 +27,15 @@ NG = 10          # global states
 NB = 6           # states per ball
 (BALLS, M_I, M_O, K_O, C_O, M_B, J_B, J_C, R_M, R_B, R_IN, R_OUT, QUARTER_CLEARANCE,
  K_IN, K_OUT, H_IN, H_OUT, C_IN, C_OUT, P1_IN, P1_OUT, OMEGA_I, F_X, F_Y, UNBALANCE,
- GRAVITY, K_CAGE, C_CAGE, POCKET, CAGE_MU, TRACTION, ETA0, ALPHA, MU_LIMIT, FLOW_INDEX,
- G_OIL, V_REG, DRAG, CAGE_DRAG, IMPACTS, DEFECT_ANGLE) = range(41)
-SLIP_PARAMETER_COUNT = 41
+ GRAVITY, K_CAGE, C_CAGE, POCKET, TRACTION, ETA0, ALPHA, MU_LIMIT, FLOW_INDEX,
+ G_OIL, V_REG, DRAG, CAGE_DRAG, IMPACTS, DEFECT_ANGLE) = range(40)
+SLIP_PARAMETER_COUNT = 40
 SEED004, BAIR_WINER = 0, 1
 JACOBIAN_AGE = 4          # steps a Jacobian is reused for (see rosenbrock_chunk)
 # Masjedi & Khonsari boundary friction curve, seed 004 eq. 11 (ball-cage contact)
 CAGE_A, CAGE_B, CAGE_C, CAGE_D = -0.1, 22.28, 181.46, 0.1
+#: ... at the slide-roll ratio 2 of a pocket contact (the ball surface slides on the pocket)
+CAGE_SLIDING_MU = (CAGE_A + CAGE_B * 2.0) * math.exp(-CAGE_C * 2.0) + CAGE_D
 # 4-point Gauss-Legendre rule on [0, 1] for the pressure averages of Bair-Winer traction
 _GL_X = np.array([0.0694318442029737, 0.3300094782075719, 0.6699905217924281,
                   0.9305681557970263])
@@ -84,10 +86,7 @@ def traction(dv, load, p_1, h, p):
 def cage_friction(speed):
     """Ball-cage friction coefficient, seed 004 eq. 11, at slide-roll ratio 2 (pure
     sliding of the ball surface on the pocket) with linear regularisation near 0 speed."""
-    s = 2.0
-    mu = (CAGE_A + CAGE_B * s) * math.exp(-CAGE_C * s) + CAGE_D
-    reg = 1e-3
-    return mu * max(-1.0, min(1.0, speed / reg))
+    return CAGE_SLIDING_MU * max(-1.0, min(1.0, speed / 1e-3))
 
 
 @numba.njit(cache=True)
@@ -245,9 +244,7 @@ def slip_rhs_numpy(t, y, p, table):
     gap = (psi - theta_c - 2 * np.pi * np.arange(z) / z) * p[R_M]
     n_c = np.where(np.abs(gap) > p[POCKET], p[K_CAGE] * (gap - np.sign(gap) * p[POCKET])
                    + p[C_CAGE] * p[R_M] * (w_m - w_c), 0.0)
-    s = 2.0
-    mu_c = ((CAGE_A + CAGE_B * s) * np.exp(-CAGE_C * s) + CAGE_D) * np.clip(
-        w_r * p[R_B] / 1e-3, -1, 1)
+    mu_c = CAGE_SLIDING_MU * np.clip(w_r * p[R_B] / 1e-3, -1, 1)
     drag = p[DRAG] * np.abs(2 * p[R_M] * w_m) ** 1.95 * np.where(w_m >= 0, 1.0, -1.0)
     f_imp = np.zeros(z)
     if p[IMPACTS] > 0:

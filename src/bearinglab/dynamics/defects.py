@@ -128,21 +128,6 @@ class Defect:
         if self.location == "ball" and self.ball >= bearing.ball_count:
             raise InputError("ball", self.ball, f"a ball index in [0, {bearing.ball_count - 1}]")
 
-    def maximum_drop(self, bearing) -> float:
-        """Largest displacement lambda of the ball centre into the defect [m].
-
-        For a ball defect, the larger of the values against the two races.
-        """
-        r = 0.5 * bearing.ball_diameter
-        half = 0.5 * self.width
-        if self.location == "outer":
-            drop = edge_drop(half, r, 0.5 * bearing.outer_raceway_diameter, "outer")
-        elif self.location == "inner":
-            drop = edge_drop(half, r, 0.5 * bearing.inner_raceway_diameter, "inner")
-        else:
-            drop = edge_drop(half, r, 0.5 * bearing.inner_raceway_diameter, "inner")
-        return float(drop if self.depth is None else min(drop, self.depth))
-
     def to_dict(self) -> dict:
         """JSON-ready description in engineering units."""
         out = {"location": self.location, "width_mm": self.width * 1e3,

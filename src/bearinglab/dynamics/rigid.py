@@ -33,6 +33,7 @@ from scipy.optimize import brentq
 
 from ..contact import hertz
 from ..errors import InputError
+from ..kinematics import frequency_orders
 from ..materials import effective_modulus
 from . import _kernels as kern
 
@@ -101,8 +102,6 @@ def hertz_constant(bearing) -> float:
 
 def pack(bearing, condition, params: RigidParameters, table, cage_phase: float = 0.0):
     """The kernel's parameter array for ``bearing`` under ``condition``."""
-    from ..kinematics import frequency_orders
-
     orders = frequency_orders(bearing.ball_count, bearing.ball_diameter,
                               bearing.pitch_diameter, bearing.contact_angle)
     w = condition.shaft_speed

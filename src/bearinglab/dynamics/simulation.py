@@ -198,12 +198,10 @@ def _integrate_chunks(model, p, table, y0, t_out, rtol, atol, h_max, progress):
 
 def _result(model, bearing, condition, defects, params, kin, p, table, t_out, states, stats,
             noise, seed, sample_rate):
-    if model == "rigid":
-        acc = _kernels.rigid_accelerations(p, table, t_out, states)
-        disp = states[:, 0:2] - states[:, 2:4]
-    else:
-        acc = _slip_kernels.slip_accelerations(p, table, t_out, states)
-        disp = states[:, 0:2] - states[:, 2:4]
+    accelerations = (_kernels.rigid_accelerations if model == "rigid"
+                     else _slip_kernels.slip_accelerations)
+    acc = accelerations(p, table, t_out, states)
+    disp = states[:, 0:2] - states[:, 2:4]      # both models start with (x_i, y_i, x_o, y_o)
     if noise > 0:
         acc = acc + np.random.default_rng(seed).normal(0.0, noise, acc.shape)
     channels = {"acc_x": acc[:, 0], "acc_y": acc[:, 1], "disp_x": disp[:, 0],

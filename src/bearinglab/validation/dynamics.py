@@ -22,11 +22,10 @@ from functools import cache
 from ..geometry import BallBearing
 from ..operating import OperatingCondition
 from . import Case
+from .seed004 import SKF6205
 
 ER16K = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=38.51e-3,
                     diametral_clearance=90e-6, name="ER-16K")
-SKF6205 = BallBearing(ball_count=9, ball_diameter=8e-3, pitch_diameter=39e-3, bore=25e-3,
-                      outside_diameter=52e-3, width=15e-3, name="6205 (seed 004)")
 #: seed 004's 1 deg defect read as the chord it subtends on the inner race, d_i sin(0.5 deg)
 SEED004_DEFECT_WIDTH = 30.6e-3 * math.sin(math.radians(0.5))
 

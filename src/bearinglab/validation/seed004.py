@@ -14,7 +14,9 @@ from ..geometry import BallBearing
 from ..kinematics import defect_frequencies
 from . import Case
 
-SKF6205 = BallBearing(ball_count=9, ball_diameter=8e-3, pitch_diameter=39e-3, name="6205 (seed 004)")
+# d 25 and D 52 mm from the seed's table 1; the width 15 mm is ISO 15's for a 6205
+SKF6205 = BallBearing(ball_count=9, ball_diameter=8e-3, pitch_diameter=39e-3, bore=25e-3,
+                      outside_diameter=52e-3, width=15e-3, name="6205 (seed 004)")
 
 CASES = [
     Case("seed 004 (6205, eq. 25)", "ball spin frequency 1xBSF at 2400 rpm", 93.40, "Hz",
