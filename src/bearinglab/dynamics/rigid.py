@@ -42,11 +42,11 @@ from . import _kernels as kern
 class RigidParameters:
     """Masses, supports and damping of the rigid-ring model (SI).
 
-    Defaults follow Sawalhi N., Randall R. B., "Simulating gear and bearing interactions
-    in the presence of faults: Part I", *Mech. Syst. Signal Process.* 22 (2008)
-    1924-1951 (bearing-pedestal model, as used for the seed-003 4-DOF model):
-    see docs/capabilities/dynamics.md for the table and what was chosen where the
-    sources are silent.
+    Seed 003 prints none of these values. The pedestal stiffness and damping are the
+    shaft-support values circulated as those of Sawalhi N., Randall R. B., "Simulating
+    gear and bearing interactions in the presence of faults: Part I", *Mech. Syst.
+    Signal Process.* 22 (2008) 1924-1951 (not checked against the paper); the masses
+    and the bearing damping are chosen. docs/capabilities/dynamics.md has the table.
 
     Parameters
     ----------
