@@ -135,6 +135,36 @@ def test_grouped_jacobian_equals_a_dense_difference():
     assert np.max(np.abs(grouped - dense) / scale) < 1e-3
 
 
+def _arrow_blocks(n, ng, nb, z, rng):
+    blocks = (rng.normal(size=(ng, ng)), rng.normal(size=(z, ng, nb)),
+              rng.normal(size=(z, nb, ng)), rng.normal(size=(z, nb, nb)))
+    dense = np.zeros((n, n))
+    dense[:ng, :ng] = blocks[0]
+    for j in range(z):
+        cols = slice(ng + nb * j, ng + nb * (j + 1))
+        dense[:ng, cols], dense[cols, :ng], dense[cols, cols] = (blocks[1][j], blocks[2][j],
+                                                                   blocks[3][j])
+    return blocks, dense
+
+
+@pytest.mark.parametrize("gh", [1e-3, 0.3, 40.0])
+def test_block_elimination_solves_the_dense_system(gh):
+    """W = I - gh J solved by the hand-written block LU equals a dense solve, also when
+    gh J dominates the identity (pivoting needed)."""
+    ng, nb, z = _slip_kernels.NG, _slip_kernels.NB, 9
+    n = ng + nb * z
+    rng = np.random.default_rng(7)
+    (jg, jgb, jbg, jb), dense = _arrow_blocks(n, ng, nb, z, rng)
+    lu_b, piv_b = np.empty((z, nb, nb)), np.empty((z, nb), dtype=np.int64)
+    m_bg, lu_s, piv_s = np.empty((z, nb, ng)), np.empty((ng, ng)), np.empty(ng, dtype=np.int64)
+    _slip_kernels._factor(gh, jg, jgb, jbg, jb, lu_b, piv_b, m_bg, lu_s, piv_s)
+    rhs = rng.normal(size=n)
+    out = np.empty(n)
+    _slip_kernels._solve(gh, jgb, lu_b, piv_b, m_bg, lu_s, piv_s, rhs, out)
+    expected = np.linalg.solve(np.eye(n) - gh * dense, rhs)
+    np.testing.assert_allclose(out, expected, rtol=1e-9, atol=1e-12 * np.abs(expected).max())
+
+
 def test_dopri_matches_a_damped_oscillator():
     # x'' + 2 z w x' + w^2 x = 0 through the rigid kernel's signature
     import numba

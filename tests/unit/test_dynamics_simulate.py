@@ -90,7 +90,9 @@ def test_slip_model_outputs():
 def test_slip_tolerances_do_not_move_the_ball_speeds():
     cond = OperatingCondition(radial_load=500.0, shaft_speed=2400 * math.pi / 30)
     runs = [simulate(SKF6205, cond, model="slip", duration=0.005, sample_rate=20e3,
-                     settle=0.01, rtol=rtol, parameters=SlipParameters(regularisation_speed=v))
-            for rtol, v in ((1e-3, 1e-3), (1e-4, 1e-3), (1e-3, 5e-4))]
+                     settle=0.01, rtol=rtol,
+                     parameters=SlipParameters(regularisation_speed=v, damping_onset=onset))
+            for rtol, v, onset in ((1e-3, 1e-3, 1e-8), (1e-4, 1e-3, 1e-8), (1e-3, 5e-4, 1e-8),
+                                   (1e-3, 1e-3, 1e-9))]
     ratios = [r.spin_speed_ratio for r in runs]
     assert max(ratios) - min(ratios) < 1e-3, ratios

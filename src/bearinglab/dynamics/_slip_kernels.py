@@ -28,10 +28,10 @@ NB = 6           # states per ball
 (BALLS, M_I, M_O, K_O, C_O, M_B, J_B, J_C, R_M, R_B, R_IN, R_OUT, QUARTER_CLEARANCE,
  K_IN, K_OUT, H_IN, H_OUT, C_IN, C_OUT, P1_IN, P1_OUT, OMEGA_I, F_X, F_Y, UNBALANCE,
  GRAVITY, K_CAGE, C_CAGE, POCKET, TRACTION, ETA0, ALPHA, MU_LIMIT, FLOW_INDEX,
- G_OIL, V_REG, DRAG, CAGE_DRAG, IMPACTS, DEFECT_ANGLE) = range(40)
-SLIP_PARAMETER_COUNT = 40
+ G_OIL, V_REG, DRAG, CAGE_DRAG, IMPACTS, DEFECT_ANGLE, ONSET) = range(41)
+SLIP_PARAMETER_COUNT = 41
 SEED004, BAIR_WINER = 0, 1
-JACOBIAN_AGE = 4          # steps a Jacobian is reused for (see rosenbrock_chunk)
+JACOBIAN_AGE = 8          # steps a Jacobian is reused for (see rosenbrock_chunk)
 # Masjedi & Khonsari boundary friction curve, seed 004 eq. 11 (ball-cage contact)
 CAGE_A, CAGE_B, CAGE_C, CAGE_D = -0.1, 22.28, 181.46, 0.1
 #: ... at the slide-roll ratio 2 of a pocket contact (the ball surface slides on the pocket)
@@ -123,10 +123,10 @@ def slip_rhs(t, y, p, table, dydt, parts):
         n_in = 0.0
         n_out = 0.0
         if d_in > 0.0:
-            rate = vxi * c + vyi * s - vrho
+            rate = (vxi * c + vyi * s - vrho) * min(1.0, d_in / p[ONSET])
             n_in = max(0.0, p[K_IN] * d_in * math.sqrt(d_in) + p[C_IN] * rate)
         if d_out > 0.0:
-            rate = vrho - vxo * c - vyo * s
+            rate = (vrho - vxo * c - vyo * s) * min(1.0, d_out / p[ONSET])
             n_out = max(0.0, p[K_OUT] * d_out * math.sqrt(d_out) + p[C_OUT] * rate)
         # slip speeds (seed 004 eq. 13) and tractions on the ball, forward positive
         dv_in = (w_i - w_m) * p[R_IN] - w_r * r_b
@@ -233,10 +233,10 @@ def slip_rhs_numpy(t, y, p, table):
     theta_c, w_c = y[8], y[9]
     d_in = u_i @ e - rho - p[QUARTER_CLEARANCE] - dev_in + p[H_IN]
     d_out = rho - u_o @ e - p[QUARTER_CLEARANCE] - dev_out + p[H_OUT]
-    n_in = np.where(d_in > 0, np.maximum(
-        0.0, p[K_IN] * np.clip(d_in, 0, None) ** 1.5 + p[C_IN] * (v_i @ e - vrho)), 0.0)
-    n_out = np.where(d_out > 0, np.maximum(
-        0.0, p[K_OUT] * np.clip(d_out, 0, None) ** 1.5 + p[C_OUT] * (vrho - v_o @ e)), 0.0)
+    d_in, d_out = np.clip(d_in, 0, None), np.clip(d_out, 0, None)
+    onset_in, onset_out = np.minimum(1, d_in / p[ONSET]), np.minimum(1, d_out / p[ONSET])
+    n_in = np.maximum(0.0, p[K_IN] * d_in**1.5 + p[C_IN] * (v_i @ e - vrho) * onset_in)
+    n_out = np.maximum(0.0, p[K_OUT] * d_out**1.5 + p[C_OUT] * (vrho - v_o @ e) * onset_out)
     dv_in = (w_i - w_m) * p[R_IN] - w_r * p[R_B]
     dv_out = w_r * p[R_B] - w_m * p[R_OUT]
     f_in = _traction_numpy(dv_in, n_in, p[P1_IN], p[H_IN], p) * n_in
@@ -307,30 +307,100 @@ def _jacobian(t, y, f0, parts0, p, table, jac_g, jac_gb, jac_bg, jac_b):
 
 
 @numba.njit(cache=True)
-def _factor(gh, jac_g, jac_gb, jac_bg, jac_b, inv_b, m_bg, s_inv):
-    """Factor W = I - gh J by block elimination (Schur complement on the global block)."""
-    z = jac_b.shape[0]
-    s = np.eye(NG) - gh * jac_g
-    for j in range(z):
-        inv_b[j] = np.linalg.inv(np.eye(NB) - gh * jac_b[j])
-        m_bg[j] = inv_b[j] @ (-gh * jac_bg[j])          # D_j^-1 W_bg,j
-        s -= (-gh * jac_gb[j]) @ m_bg[j]
-    s_inv[:, :] = np.linalg.inv(s)
+def _lu(a, piv):
+    """LU factors of the small square matrix ``a`` in place, partial pivoting.
+
+    Hand-written because LAPACK through ``np.linalg`` costs more in call overhead and
+    allocation than the arithmetic of a 6x6 or 10x10 matrix."""
+    n = a.shape[0]
+    for k in range(n):
+        big = k
+        for i in range(k + 1, n):
+            if abs(a[i, k]) > abs(a[big, k]):
+                big = i
+        piv[k] = big
+        if big != k:
+            for c in range(n):
+                a[k, c], a[big, c] = a[big, c], a[k, c]
+        inv = 1.0 / a[k, k]
+        for i in range(k + 1, n):
+            a[i, k] *= inv
+            f = a[i, k]
+            for c in range(k + 1, n):
+                a[i, c] -= f * a[k, c]
 
 
 @numba.njit(cache=True)
-def _solve(gh, jac_gb, inv_b, m_bg, s_inv, rhs, out):
+def _lu_solve(lu, piv, x):
+    """Overwrite ``x`` (n,) or (n, m) with the solution of A x = x, A given by
+    :func:`_lu`; the column loop is innermost so that m right-hand sides vectorise."""
+    n = lu.shape[0]
+    for k in range(n):
+        p = piv[k]
+        if p != k:
+            for c in range(x.shape[1]):
+                x[k, c], x[p, c] = x[p, c], x[k, c]
+    for i in range(1, n):
+        for k in range(i):
+            f = lu[i, k]
+            for c in range(x.shape[1]):
+                x[i, c] -= f * x[k, c]
+    for i in range(n - 1, -1, -1):
+        for k in range(i + 1, n):
+            f = lu[i, k]
+            for c in range(x.shape[1]):
+                x[i, c] -= f * x[k, c]
+        inv = 1.0 / lu[i, i]
+        for c in range(x.shape[1]):
+            x[i, c] *= inv
+
+
+@numba.njit(cache=True)
+def _factor(gh, jac_g, jac_gb, jac_bg, jac_b, lu_b, piv_b, m_bg, lu_s, piv_s):
+    """Factor W = I - gh J by block elimination: D_j = I - gh J_b,j (lu_b), m_bg,j =
+    D_j^-1 (-gh J_bg,j), and the Schur complement on the global block (lu_s)."""
+    z = jac_b.shape[0]
+    for r in range(NG):
+        for c in range(NG):
+            lu_s[r, c] = (1.0 if r == c else 0.0) - gh * jac_g[r, c]
+    for j in range(z):
+        for r in range(NB):
+            for c in range(NB):
+                lu_b[j, r, c] = (1.0 if r == c else 0.0) - gh * jac_b[j, r, c]
+        _lu(lu_b[j], piv_b[j])
+        for r in range(NB):
+            for c in range(NG):
+                m_bg[j, r, c] = -gh * jac_bg[j, r, c]
+        _lu_solve(lu_b[j], piv_b[j], m_bg[j])
+        # S -= W_gb,j m_bg,j with W_gb,j = -gh J_gb,j
+        for r in range(NG):
+            for k in range(NB):
+                w = gh * jac_gb[j, r, k]
+                if w != 0.0:
+                    for c in range(NG):
+                        lu_s[r, c] += w * m_bg[j, k, c]
+    _lu(lu_s, piv_s)
+
+
+@numba.njit(cache=True)
+def _solve(gh, jac_gb, lu_b, piv_b, m_bg, lu_s, piv_s, rhs, out):
     """Solve W x = rhs with the factors of :func:`_factor`."""
-    z = inv_b.shape[0]
-    r_g = rhs[:NG].copy()
-    tmp = np.empty((z, NB))
+    z = lu_b.shape[0]
+    for i in range(rhs.shape[0]):
+        out[i] = rhs[i]
+    column = out.reshape((out.shape[0], 1))
     for j in range(z):
-        tmp[j] = inv_b[j] @ rhs[NG + NB * j:NG + NB * (j + 1)]
-        r_g -= (-gh * jac_gb[j]) @ tmp[j]
-    x_g = s_inv @ r_g
-    out[:NG] = x_g
+        b = NG + NB * j
+        _lu_solve(lu_b[j], piv_b[j], column[b:b + NB])    # D_j^-1 r_j
+        for r in range(NG):
+            for k in range(NB):
+                out[r] += gh * jac_gb[j, r, k] * out[b + k]
+    _lu_solve(lu_s, piv_s, column[:NG])
     for j in range(z):
-        out[NG + NB * j:NG + NB * (j + 1)] = tmp[j] - m_bg[j] @ x_g
+        b = NG + NB * j
+        for r in range(NB):
+            for c in range(NG):
+                out[b + r] -= m_bg[j, r, c] * out[c]
 
 
 @numba.njit(cache=True)
@@ -354,9 +424,11 @@ def rosenbrock_chunk(p, table, t, y, h, t_out, rtol, atol, h_max, max_steps):
     jac_gb = np.empty((z, NG, NB))
     jac_bg = np.empty((z, NB, NG))
     jac_b = np.empty((z, NB, NB))
-    inv_b = np.empty((z, NB, NB))
+    lu_b = np.empty((z, NB, NB))
+    piv_b = np.empty((z, NB), dtype=np.int64)
     m_bg = np.empty((z, NB, NG))
-    s_inv = np.empty((NG, NG))
+    lu_s = np.empty((NG, NG))
+    piv_s = np.empty(NG, dtype=np.int64)
     k1 = np.empty(n)
     k2 = np.empty(n)
     k3 = np.empty(n)
@@ -387,23 +459,23 @@ def rosenbrock_chunk(p, table, t, y, h, t_out, rtol, atol, h_max, max_steps):
             need_jacobian = False
             age = 0
         gh = d * h
-        _factor(gh, jac_g, jac_gb, jac_bg, jac_b, inv_b, m_bg, s_inv)
+        _factor(gh, jac_g, jac_gb, jac_bg, jac_b, lu_b, piv_b, m_bg, lu_s, piv_s)
         for i in range(n):
             rhs[i] = f0[i] + h * d * ft[i]
-        _solve(gh, jac_gb, inv_b, m_bg, s_inv, rhs, k1)
+        _solve(gh, jac_gb, lu_b, piv_b, m_bg, lu_s, piv_s, rhs, k1)
         for i in range(n):
             ynew[i] = y[i] + 0.5 * h * k1[i]
         slip_rhs(t + 0.5 * h, ynew, p, table, f1, parts)
         for i in range(n):
             rhs[i] = f1[i] - k1[i]
-        _solve(gh, jac_gb, inv_b, m_bg, s_inv, rhs, k2)
+        _solve(gh, jac_gb, lu_b, piv_b, m_bg, lu_s, piv_s, rhs, k2)
         for i in range(n):
             k2[i] += k1[i]
             ynew[i] = y[i] + h * k2[i]
         slip_rhs(t + h, ynew, p, table, f2, parts)
         for i in range(n):
             rhs[i] = f2[i] - e32 * (k2[i] - f1[i]) - 2.0 * (k1[i] - f0[i]) + h * d * ft[i]
-        _solve(gh, jac_gb, inv_b, m_bg, s_inv, rhs, k3)
+        _solve(gh, jac_gb, lu_b, piv_b, m_bg, lu_s, piv_s, rhs, k3)
         for i in range(n):
             err[i] = h / 6.0 * (k1[i] - 2.0 * k2[i] + k3[i])
         norm = error_norm(err, y, ynew, rtol, atol)
