@@ -50,8 +50,13 @@ MAX_FREQUENCY_FACTOR = 5.5
 #: Narrowest automatic demodulation band, in multiples of the largest defect frequency:
 #: the band must pass the defect's modulation sidebands (Randall & Antoni 2011, sec. 3.3).
 MIN_BAND_FACTOR = 3.0
-#: Highest harmonic order matched by default.
-HARMONICS = 5
+#: Envelope lines kept by default: room for the 8 harmonics of one fault with their
+#: sidebands and for the lines of a second fault (a compound fault).
+COUNT = 24
+#: Highest harmonic order matched by default: BPFO is about 0.6-0.7 BPFI in ball
+#: bearings, so its 8th harmonic reaches the default search limit (5.5 x BPFI); with
+#: fewer orders 6-8 x BPFO would take the label of a BPFI line or stay unlabelled.
+HARMONICS = 8
 
 
 @dataclass(frozen=True)
@@ -75,8 +80,8 @@ class Diagnosis:
         ((f - n f_kin)/(n f_kin), or None) and, for sidebands, ``sideband_of``,
         ``sideband_harmonic``, ``sideband_order`` and ``modulation``.
     diagnosis : dict
-        :func:`bearinglab.signal.diagnose`'s ``likely_fault``, ``scores``, ``lines`` and
-        ``reason``.
+        :func:`bearinglab.signal.diagnose`'s ``likely_fault``, ``primary_fault``,
+        ``faults``, ``scores``, ``lines`` and ``reason``.
     frequencies : DefectFrequencies
         The kinematic frequencies the lines were matched to.
     sample_rate : float
@@ -114,6 +119,16 @@ class Diagnosis:
         return self.diagnosis["likely_fault"]
 
     @property
+    def primary_fault(self) -> str | None:
+        """The best-supported fault: "outer race", "inner race", "ball", "cage" or None."""
+        return self.diagnosis["primary_fault"]
+
+    @property
+    def faults(self) -> list[str]:
+        """Every fault found, the primary first (see ``diagnose``)."""
+        return list(self.diagnosis["faults"])
+
+    @property
     def scores(self) -> dict:
         """Score of each fault (sum of A/n over its lines; see ``diagnose``)."""
         return self.diagnosis["scores"]
@@ -142,6 +157,8 @@ class Diagnosis:
             "kinematic": self.frequencies.to_dict(),
             "peaks": [dict(p) for p in self.peaks],
             "likely_fault": self.likely_fault,
+            "primary_fault": self.primary_fault,
+            "faults": self.faults,
             "scores": dict(self.scores),
             "lines": dict(self.diagnosis["lines"]),
             "reason": self.reason,
@@ -275,7 +292,7 @@ def _band(x, fs, band, fmax):
 
 
 def analyze_signal(signal_or_array, sample_rate, frequencies: DefectFrequencies, *,
-                   channel: str | None = None, band="auto", count: int = 12,
+                   channel: str | None = None, band="auto", count: int = COUNT,
                    slip_tolerance: float = 0.08, max_frequency: float | None = None,
                    tolerance: float = 0.02, harmonics: int = HARMONICS) -> Diagnosis:
     """Envelope analysis of a vibration record: lines, their labels, the likely fault.
@@ -285,10 +302,11 @@ def analyze_signal(signal_or_array, sample_rate, frequencies: DefectFrequencies,
     3 x the largest defect frequency wide so that the modulation sidebands pass, at most
     f_s/8); take the envelope spectrum over the whole record (resolution f_s/n = 1/T);
     pick the ``count`` largest lines up to ``max_frequency``
-    (:func:`bearinglab.signal.find_peaks`); label them as harmonics n = 1..5 of the shaft
-    and defect frequencies or as modulation sidebands
-    (:func:`bearinglab.signal.match_peaks`); score the faults
-    (:func:`bearinglab.signal.diagnose`).
+    (:func:`bearinglab.signal.find_peaks`); label them as harmonics n = 1..8 of the shaft
+    and defect frequencies or as modulation sidebands, within a window of at least one
+    bin of the spectrum (:func:`bearinglab.signal.match_peaks`); find the faults
+    (:func:`bearinglab.signal.diagnose`): the primary one and every other one whose
+    lines stand on their own (a compound fault).
 
     Parameters
     ----------
@@ -305,7 +323,8 @@ def analyze_signal(signal_or_array, sample_rate, frequencies: DefectFrequencies,
     band : (float, float) or "auto" or None
         Demodulation band (low, high) [Hz], ``"auto"`` or None (no band-pass).
     count : int
-        Most envelope lines kept.
+        Most envelope lines kept (24 by default: a strong fault's harmonics and
+        sidebands fill a dozen, and a second fault's lines must still find room).
     slip_tolerance : float
         How far below n f_kin the line of a slip-affected frequency may sit [-, fraction];
         8 % by default after seed 004 (module docstring).
@@ -315,8 +334,8 @@ def analyze_signal(signal_or_array, sample_rate, frequencies: DefectFrequencies,
     tolerance : float
         Relative match tolerance either side of n f_kin [-].
     harmonics : int
-        Highest harmonic order n matched (lines of higher orders of a low frequency,
-        e.g. 6 x BPFO below 5.5 x BPFI, stay unlabelled or take another label).
+        Highest harmonic order n matched (8 by default: room for the BPFO harmonics
+        below the default ``max_frequency``).
 
     Returns
     -------
@@ -357,10 +376,13 @@ def analyze_signal(signal_or_array, sample_rate, frequencies: DefectFrequencies,
     used_band, kurtogram = _band(x, fs, band, fmax)
     spectrum = envelope_spectrum(x, fs, band=used_band)
     peaks = find_peaks(spectrum, count=count, max_frequency=max_frequency)
+    # the resolution widens the match window to a bin on short records (the FTF line)
     matched = match_peaks(peaks, freqs, harmonics=harmonics, tolerance=tolerance,
-                          slip_tolerance=slip_tolerance)
+                          slip_tolerance=slip_tolerance, resolution=spectrum.resolution)
     return Diagnosis(spectrum=spectrum, band=spectrum.band, kurtogram=kurtogram,
-                     peaks=tuple(matched), diagnosis=diagnose(matched),
+                     peaks=tuple(matched),
+                     diagnosis=diagnose(matched, tolerance=tolerance,
+                                        resolution=spectrum.resolution),
                      frequencies=frequencies, sample_rate=fs, channel=channel,
                      max_frequency=max_frequency, slip_tolerance=float(slip_tolerance),
                      harmonics=int(harmonics),

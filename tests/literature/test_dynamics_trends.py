@@ -54,3 +54,22 @@ def test_seed004_more_load_less_slip():
     kinematic = 93.40
     low, high = seed004_ball_line(500.0), seed004_ball_line(1000.0)
     assert low < high < kinematic
+
+
+def test_seed004_slip_model_ball_line_in_the_envelope_spectrum():
+    """Seed 004 fig. 7: the ball-defect line of the slip model, read off the envelope
+    spectrum of a 1 s record (1 Hz bins) by the same diagnosis a measured signal gets,
+    sits where the balls' mean spin speed puts it (2 BSF x spin ratio, within one bin)
+    and below the kinematic 2 BSF = 186.8 Hz, whose nearest bin would be 187 Hz."""
+    from bearinglab.diagnosis import analyze_signal, measured_ball_defect_frequency
+    from bearinglab.validation.dynamics import SEED004_DEFECT_WIDTH, SKF6205
+
+    cond = OperatingCondition(radial_load=500.0, shaft_speed=2400 * math.pi / 30)
+    sim = simulate(SKF6205, cond, [Defect("ball", SEED004_DEFECT_WIDTH)], model="slip",
+                   duration=1.0, sample_rate=20e3)
+    diagnosis = analyze_signal(sim.signal, None, sim.kinematic)
+    assert diagnosis.primary_fault == "ball"
+    measured = measured_ball_defect_frequency(diagnosis.to_dict()["peaks"])
+    kinematic = sim.kinematic.hz("ball_defect")
+    assert measured == pytest.approx(kinematic * sim.spin_speed_ratio, abs=1.0)
+    assert measured < round(kinematic)

@@ -39,7 +39,7 @@ def test_simulate_outer_race_json(capsys):
         assert key in d, key
     assert d["model"] == "rigid" and d["sample_rate_hz"] == 20000.0 and d["duration_s"] == 0.5
     assert d["kinematic"]["bpfo_hz"] == pytest.approx(BPFO_HZ, abs=0.01)
-    assert d["likely_fault"] == "outer race"
+    assert d["likely_fault"] == "outer race" and d["faults"] == ["outer race"]
     bpfo = [p for p in d["peaks"] if p["matched"] == "bpfo" and p["harmonic"] == 1]
     assert bpfo and bpfo[0]["frequency_hz"] == pytest.approx(BPFO_HZ, abs=2.0)  # 2 Hz bins
     assert {"frequency_hz", "amplitude", "matched", "harmonic"} <= d["peaks"][0].keys()

@@ -41,6 +41,18 @@ def impacts(rate_hz, seconds=1.0, noise=0.2, seed=0):
     return x + noise * np.random.default_rng(seed).standard_normal(t.size)
 
 
+def modulated(x, rate_hz, depth=0.5):
+    """``x`` amplitude-modulated at ``rate_hz`` (a load zone passing the defect)."""
+    t = np.arange(x.size) / FS
+    return x * (1.0 + depth * np.cos(2 * np.pi * rate_hz * t))
+
+
+def labels_near(d, frequency_hz):
+    """Labels of the envelope lines within a bin of ``frequency_hz``."""
+    return [peak_label(p) for p in d.peaks
+            if abs(p["frequency_hz"] - frequency_hz) <= d.resolution]
+
+
 @pytest.fixture(scope="module")
 def simulated(er16k):
     """Rigid-model records (0.5 s at 20 kHz, ER-16K, 1750 rpm, 50 N), one per location."""
@@ -83,14 +95,66 @@ def test_to_dict_units_and_pandas(kin):
     out = d.to_dict()
     for key in ("channel", "sample_rate_hz", "band_hz", "band_kurtosis", "resolution_hz",
                 "max_frequency_hz", "slip_tolerance", "harmonics", "kinematic", "peaks",
-                "likely_fault", "scores", "lines", "reason", "ball_defect_frequency_hz"):
+                "likely_fault", "primary_fault", "faults", "scores", "lines", "reason",
+                "ball_defect_frequency_hz"):
         assert key in out
+    assert out["primary_fault"] == "outer race" and out["faults"] == ["outer race"]
     assert out["kinematic"]["bpfo_hz"] == pytest.approx(kin.hz("bpfo"))
     assert len(out["peaks"]) <= 6
     assert {"frequency_hz", "amplitude", "matched", "harmonic"} <= out["peaks"][0].keys()
     assert out["max_frequency_hz"] == pytest.approx(MAX_FREQUENCY_FACTOR * kin.hz("bpfi"))
     table = d.to_pandas()
     assert list(table["frequency_hz"]) == [p["frequency_hz"] for p in d.peaks]
+
+
+# ------------------------------------------------------------------ matching rules
+# Each test below failed before the rule it names (synthetic impact trains, ER-16K).
+
+def test_high_bpfo_harmonics_stay_bpfo(kin):
+    # 6, 7 and 8 x BPFO lie in the search range; they were labelled 4 and 5 x BPFI
+    # (or left unlabelled) when only 5 harmonics were matched
+    d = analyze_signal(impacts(kin.hz("bpfo")), FS, kin)
+    for n in (6, 7, 8):
+        assert labels_near(d, n * kin.hz("bpfo")) == [f"{n}x bpfo"]
+    assert d.scores["inner race"] == 0 and d.faults == ["outer race"]
+
+
+def test_stronger_line_is_not_a_sideband_of_a_weaker_one(kin):
+    # inner race (strong) and ball (weak), both 1 % slow: BPFI lies 0.2 % from ball
+    # defect + 2 FTF, and the BPFI line was taken for the weak ball line's sideband
+    inner = modulated(impacts(0.99 * kin.hz("bpfi")), kin.shaft_hz)
+    ball = modulated(impacts(0.99 * kin.hz("ball_defect"), noise=0.0), 0.99 * kin.hz("ftf"))
+    d = analyze_signal(inner + 0.3 * ball, FS, kin, band=(3000.0, 5000.0))
+    assert labels_near(d, 0.99 * kin.hz("bpfi")) == ["1x bpfi"]
+    assert labels_near(d, 2 * 0.99 * kin.hz("bpfi")) == ["2x bpfi"]  # not 3x bpfo
+    assert d.primary_fault == "inner race"
+
+
+def test_cage_lines_on_a_coarse_spectrum(kin):
+    # 0.5 s: 2 Hz bins put the FTF line (11.58 Hz) at 12 Hz, 3.6 % high, outside the
+    # 2 % window; the window is now at least one bin
+    t = np.arange(int(0.5 * FS)) / FS
+    ftf = kin.hz("ftf")
+    x = (1.0 + 0.6 * np.cos(2 * np.pi * ftf * t) + 0.3 * np.cos(4 * np.pi * ftf * t)) \
+        * np.sin(2 * np.pi * 4e3 * t) + 0.05 * np.random.default_rng(0).standard_normal(t.size)
+    d = analyze_signal(x, FS, kin, band=(3000.0, 5000.0))
+    assert d.resolution == pytest.approx(2.0)
+    assert labels_near(d, ftf) == ["1x ftf"] and labels_near(d, 2 * ftf) == ["2x ftf"]
+    assert d.likely_fault == "cage"
+
+
+def test_weak_ball_fault_next_to_an_outer_race_fault(kin):
+    # compound fault: the ball lines score less than half the BPFO series, which hid
+    # them; each fault's own 1x and 2x lines now stand for it
+    t = np.arange(int(FS)) / FS
+    ball = impacts(0.99 * kin.hz("ball_defect"), noise=0.0, seed=1) \
+        * (1.0 + 0.5 * np.cos(2 * np.pi * 0.99 * kin.hz("ftf") * t))
+    d = analyze_signal(impacts(kin.hz("bpfo")) + 0.5 * ball, FS, kin)
+    assert d.scores["ball"] < 0.5 * d.scores["outer race"]
+    assert d.likely_fault == "compound: outer race + ball"
+    assert d.primary_fault == "outer race" and d.faults == ["outer race", "ball"]
+    out = d.to_dict()
+    assert out["primary_fault"] == "outer race" and out["faults"] == ["outer race", "ball"]
 
 
 def test_plot_saves_png(kin, tmp_path):

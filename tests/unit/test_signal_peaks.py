@@ -3,17 +3,31 @@
 from __future__ import annotations
 
 import json
+import math
 
 import numpy as np
 import pytest
 
+from bearinglab.catalog import bearing_from_designation
 from bearinglab.errors import InputError
+from bearinglab.kinematics import defect_frequencies
 from bearinglab.signal import Spectrum, diagnose, find_peaks, match_peaks
 
 # CWRU drive-end 6205 at 1797 rpm: orders 0.39828, 3.5848, 5.4152, 2 BSF 4.7135
 SHAFT = 1797.0 / 60.0
 FREQS = {"shaft": SHAFT, "ftf": 0.39828 * SHAFT, "bpfo": 3.5848 * SHAFT,
          "bpfi": 5.4152 * SHAFT, "bsf": 4.7135 / 2 * SHAFT, "ball_defect": 4.7135 * SHAFT}
+
+
+# ER-16K at 1750 rpm (seed 003): BPFO 104.19, BPFI 158.31, ball defect 135.45, FTF 11.58 Hz.
+# BPFI lies 0.2 % from ball defect + 2 FTF, 6 BPFO 1.3 % below 4 BPFI, 3 BPFO 1.3 % below 2 BPFI.
+_ER16K = defect_frequencies(bearing_from_designation("ER-16K")[0], 1750 * math.pi / 30)
+ER16K = {name: _ER16K.hz(name) for name in FREQS}
+
+
+def _labels(matched):
+    return [(p["matched"], p["harmonic"]) if p["matched"] else
+            (p.get("sideband_of"), p.get("sideband_order")) for p in matched]
 
 
 def _spectrum(lines, noise=0.01, seed=0):
@@ -91,12 +105,70 @@ def test_slip_window_is_one_sided():
     assert shaft["matched"] is None  # the shaft does not slip
 
 
-def test_nearest_candidate_then_lowest_harmonic_wins():
-    # 2 x 50 = 100 (exact) beats 1 x 101 (1 % off); 2 bsf ties with 1 ball_defect
+def test_candidate_choice_family_then_distance_then_order():
+    # alone, 100 Hz is BPFO 1 % slow rather than a lone 2x shaft (no 50 Hz line) ...
     m = match_peaks([(100.0, 1.0)], {"shaft": 50.0, "bpfo": 101.0})[0]
+    assert (m["matched"], m["harmonic"]) == ("bpfo", 1)
+    # ... but with a stronger 50 Hz line both families are present, and 2 x 50 is exact
+    m = match_peaks([(50.0, 2.0), (100.0, 1.0)], {"shaft": 50.0, "bpfo": 101.0})[1]
     assert (m["matched"], m["harmonic"]) == ("shaft", 2)
+    # 2 bsf ties with 1 ball_defect: the lower order wins
     m = match_peaks([(2 * FREQS["bsf"], 1.0)], FREQS)[0]
     assert (m["matched"], m["harmonic"]) == ("ball_defect", 1)
+
+
+def test_bpfo_series_keeps_its_high_harmonics():
+    # issue: 6 x BPFO (625.1 Hz) sits 1.3 % below 4 x BPFI and took its label; 3 x BPFO
+    # likewise 2 x BPFI once the BPFO line slips 1 %
+    for slip in (1.0, 0.99):
+        lines = [(n * slip * ER16K["bpfo"], 1.0 / n) for n in range(1, 9)]
+        m = match_peaks(lines, ER16K, harmonics=8)
+        assert _labels(m) == [("bpfo", n) for n in range(1, 9)], slip
+    # a lone line 0.6 % above 6 BPFO is 0.7 % below 4 BPFI: relatively nearer to 6 BPFO,
+    # but nearer to 4 BPFI in units of the fundamental (4 x 0.7 % < 6 x 0.6 %)
+    m = match_peaks([(1.006 * 6 * ER16K["bpfo"], 1.0)], ER16K, harmonics=8)
+    assert _labels(m) == [("bpfi", 4)] and m[0]["deviation"] == pytest.approx(-0.0068, abs=1e-4)
+
+
+def test_one_slip_per_family():
+    # the strongest BPFI line is at the kinematic value: a weaker line 7 % below 2 BPFI
+    # (inside the slip window) cannot be its 2nd harmonic
+    lines = [(ER16K["bpfi"], 1.0), (0.93 * 2 * ER16K["bpfi"], 0.5)]
+    assert _labels(match_peaks(lines, ER16K))[1] != ("bpfi", 2)
+    lines = [(0.95 * ER16K["bpfi"], 1.0), (0.95 * 2 * ER16K["bpfi"], 0.5)]  # same slip
+    assert _labels(match_peaks(lines, ER16K)) == [("bpfi", 1), ("bpfi", 2)]
+
+
+def test_a_weak_line_does_not_claim_a_stronger_harmonic():
+    # issue: a strong BPFI line (1 % slow) sat nearer to ball defect + 2 FTF of a weaker
+    # ball line than to BPFI, and became its sideband (and 2 BPFI became 3 BPFO)
+    s = 0.99
+    lines = [(s * ER16K["bpfi"], 1.0), (2 * s * ER16K["bpfi"], 0.5),
+             (s * ER16K["ball_defect"], 0.3), (2 * s * ER16K["ball_defect"], 0.2),
+             (s * ER16K["ball_defect"] - ER16K["ftf"], 0.1)]
+    assert _labels(match_peaks(lines, ER16K)) == [
+        ("bpfi", 1), ("bpfi", 2), ("ball_defect", 1), ("ball_defect", 2), ("ball_defect", -1)]
+
+
+def test_a_sideband_may_outgrow_its_carrier_if_it_matches_nothing_well():
+    # a cage-modulated ball defect: the -1 FTF sideband is stronger than the carrier
+    ball = ER16K["ball_defect"]
+    lines = [(ball - ER16K["ftf"], 1.0), (ball, 0.8), (ball + ER16K["ftf"], 0.7)]
+    assert _labels(match_peaks(lines, ER16K)) == [
+        ("ball_defect", -1), ("ball_defect", 1), ("ball_defect", 1)]
+
+
+def test_resolution_widens_the_match_window():
+    # issue: with 2 Hz bins (0.5 s) the FTF line (11.58 Hz) shows at 12 Hz, 3.6 % high,
+    # outside the 2 % window; one bin of slack takes it
+    f = np.arange(0.0, 200.0, 2.0)
+    ftf_bin, ftf2_bin = (float(f[np.argmin(np.abs(f - k * ER16K["ftf"]))]) for k in (1, 2))
+    lines = [(ftf_bin, 1.0), (ftf2_bin, 0.5)]
+    assert _labels(match_peaks(lines, ER16K)) == [(None, None), (None, None)]
+    assert _labels(match_peaks(lines, ER16K, resolution=2.0)) == [("ftf", 1), ("ftf", 2)]
+    # the relative window still rules where it is wider than a bin
+    m = match_peaks([(1.015 * ER16K["bpfi"], 1.0)], ER16K, resolution=0.1)
+    assert _labels(m) == [("bpfi", 1)]
 
 
 def test_inner_race_sidebands_around_the_observed_carrier():
@@ -129,6 +201,7 @@ def test_match_keeps_the_peak_keys_and_order():
     ({"harmonics": 0}, "harmonics"),
     ({"tolerance": 0.0}, "tolerance"),
     ({"slip_tolerance": -0.1}, "slip_tolerance"),
+    ({"resolution": -0.5}, "resolution"),
     ({"peaks": [(-5.0, 1.0)]}, "peaks"),
     ({"peaks": [{"amplitude": 1.0}]}, "peaks"),
 ])
@@ -142,7 +215,6 @@ def test_match_bad_inputs(kwargs, parameter):
 # ---------------------------------------------------------------- diagnose
 
 def test_bpfo_series_is_an_outer_race_fault():
-    # at the kinematic BPFO: with 1 % slip, 2 BPFO of this bearing is nearer to 3 BSF
     s = _spectrum([(SHAFT, 0.3)] + [(n * FREQS["bpfo"], 1.0 / n) for n in (1, 2, 3, 4)])
     d = diagnose(match_peaks(find_peaks(s), FREQS))
     assert d["likely_fault"] == "outer race"
@@ -163,6 +235,40 @@ def test_compound_fault():
                    (FREQS["bpfi"], 0.9), (2 * FREQS["bpfi"], 0.5)])
     d = diagnose(match_peaks(find_peaks(s), FREQS))
     assert d["likely_fault"] == "compound: outer race + inner race"
+    assert d["primary_fault"] == "outer race"
+    assert d["faults"] == ["outer race", "inner race"]
+
+
+def test_a_weak_second_fault_is_reported():
+    # issue: the ball scored less than half the BPFO series and was dropped
+    s = _spectrum([(n * FREQS["bpfo"], 1.0 / n) for n in (1, 2, 3, 4)]
+                  + [(FREQS["ball_defect"], 0.2), (2 * FREQS["ball_defect"], 0.1)])
+    d = diagnose(match_peaks(find_peaks(s), FREQS), resolution=0.25)
+    assert d["scores"]["ball"] < 0.5 * d["scores"]["outer race"]
+    assert d["likely_fault"] == "compound: outer race + ball"
+    assert (d["primary_fault"], d["faults"]) == ("outer race", ["outer race", "ball"])
+
+
+def test_sidebands_or_slip_window_lines_make_no_second_fault():
+    bpfo = [(n * FREQS["bpfo"], 1.0 / n) for n in (1, 2, 3)]
+    # a weak BPFI line with its shaft sidebands: no harmonic of its own
+    inner = [(FREQS["bpfi"], 0.2), (FREQS["bpfi"] - SHAFT, 0.1), (FREQS["bpfi"] + SHAFT, 0.1)]
+    # ball lines 5 % slow: inside the slip window only
+    ball = [(0.95 * FREQS["ball_defect"], 0.2), (0.95 * 2 * FREQS["ball_defect"], 0.1)]
+    for extra in (inner, ball):
+        d = diagnose(match_peaks(bpfo + extra, FREQS))
+        assert d["faults"] == ["outer race"], d["reason"]
+    # alone, the same slow ball lines are the (primary) fault
+    assert diagnose(match_peaks(ball, FREQS))["likely_fault"] == "ball"
+
+
+def test_ftf_lines_next_to_ball_lines_are_its_modulation():
+    ball = [(FREQS["ball_defect"], 1.0), (2 * FREQS["ball_defect"], 0.5)]
+    cage = [(FREQS["ftf"], 0.8), (2 * FREQS["ftf"], 0.4)]
+    d = diagnose(match_peaks(ball + cage, FREQS))
+    assert d["faults"] == ["ball"] and d["lines"] == {
+        "outer race": 0, "inner race": 0, "ball": 4, "cage": 0}
+    assert diagnose(match_peaks(cage, FREQS))["likely_fault"] == "cage"
 
 
 def test_shaft_lines_alone_are_no_fault():
@@ -180,9 +286,11 @@ def test_one_line_is_not_enough():
 
 
 def test_diagnose_bad_inputs():
-    with pytest.raises(InputError) as err:
-        diagnose([], compound_ratio=0.0)
-    assert err.value.parameter == "compound_ratio"
+    for kwargs, parameter in (({"min_lines": 0}, "min_lines"), ({"tolerance": 0.0}, "tolerance"),
+                              ({"resolution": -1.0}, "resolution")):
+        with pytest.raises(InputError) as err:
+            diagnose([], **kwargs)
+        assert err.value.parameter == parameter
     with pytest.raises(InputError) as err:
         diagnose([{"frequency_hz": 1.0}])
     assert err.value.parameter == "matched_peaks"

@@ -5,7 +5,9 @@ Layer 3 (see docs/architecture.md): :func:`find_peaks` picks the lines of a spec
 estimate of the noise floor); :func:`match_peaks` labels each line as a harmonic n f of
 a shaft or defect frequency (names as in :data:`bearinglab.kinematics.FREQUENCY_NAMES`,
 values in Hz from :func:`bearinglab.kinematics.defect_frequencies`) or as a modulation
-sideband n f_d +- k f_m; :func:`diagnose` turns the labels into the likely fault.
+sideband n f_d +- k f_m; :func:`diagnose` turns the labels into the faults: a primary
+one and every other one whose own lines are significant (a compound fault). The rules
+are in those functions' docstrings and in docs/capabilities/signal.md.
 
 Sources: the fault signatures (outer race: harmonics of BPFO; inner race: harmonics of
 BPFI with shaft-rate sidebands; ball: harmonics of the ball defect rate 2 BSF with cage-
@@ -33,6 +35,9 @@ SLIP_AFFECTED = ("ftf", "bpfo", "bpfi", "bsf", "ball_defect")
 #: Defect -> the frequency that modulates it (the load zone seen by the defect turns
 #: with the shaft for an inner-race defect, with the cage for a ball defect).
 MODULATION = {"bpfi": "shaft", "ball_defect": "ftf", "bsf": "ftf"}
+#: Frequencies that are harmonics of another (name -> (family, multiple)): the
+#: ball-defect rate is 2 BSF, so both are one family with one slip.
+FAMILIES = {"ball_defect": ("bsf", 2)}
 #: Sideband orders k looked for in n f_d +- k f_m.
 SIDEBAND_ORDERS = 2
 #: Defect frequency name -> fault.
@@ -40,6 +45,9 @@ FAULTS = {"bpfo": "outer race", "bpfi": "inner race", "bsf": "ball", "ball_defec
           "ftf": "cage"}
 _FAULT_ORDER = ("outer race", "inner race", "ball", "cage")
 _SIDEBAND_WEIGHT = 0.5  # a sideband supports its carrier's fault, less than a harmonic does
+#: Least match window, in bins of the spectrum: the bin holding a line is within half a
+#: bin of it, and noise can tip the maximum into the next bin.
+RESOLUTION_BINS = 1.0
 
 
 def _positive_int(name: str, value, minimum: int = 1) -> int:
@@ -143,22 +151,38 @@ def _peak(p) -> dict:
 
 def match_peaks(peaks, frequencies: dict[str, float], harmonics: int = 5,
                 tolerance: float = 0.02, slip_tolerance: float = 0.08,
-                sidebands: bool = True) -> list[dict]:
+                sidebands: bool = True, resolution: float = 0.0) -> list[dict]:
     """Label each peak as a harmonic n f of a shaft or defect frequency, or a sideband.
 
-    A peak at f_p matches n f (n = 1 .. ``harmonics``) when
-    -tolerance <= (f_p - n f)/(n f) <= tolerance, and, for the frequencies the slip of
-    the rolling elements lowers (ftf, bpfo, bpfi, bsf, ball_defect), also when
-    -slip_tolerance <= (f_p - n f)/(n f) <= tolerance. Of several matches the smallest
-    relative distance wins, then the lowest harmonic (so 2 bsf is labelled
-    ``ball_defect`` 1x).
+    Window: a peak at f_p is a candidate for n f (n = 1 .. ``harmonics``) when
+    -below <= f_p - n f <= above, with above = max(``tolerance`` n f, RESOLUTION_BINS x
+    ``resolution``) and below the same, but with ``slip_tolerance`` instead of
+    ``tolerance`` (if larger) for the frequencies the slip of the rolling elements
+    lowers (ftf, bpfo, bpfi, bsf, ball_defect). The resolution term keeps low lines (the
+    cage's) matchable on coarse spectra, where the bin holding a line can be a bin off.
 
-    With ``sidebands``, a peak is labelled a sideband n f_d +- k f_m (k = 1, 2) of an
-    inner-race line (f_m = shaft) or a ball line (f_m = ftf) when it lies within
-    ``tolerance`` x (n f_d +- k f_m) and f_m/4 of it, relatively nearer than to any
-    harmonic. The carrier n f_d must be among the peaks (matched as a harmonic; the
-    largest if several), and its measured frequency is used, so the slip is accounted
-    for.
+    Harmonics (pass 1), strongest peak first:
+
+    1. one slip per family: once a family (a frequency; bsf and ball_defect = 2 bsf are
+       one) labels a line, a weaker candidate must imply the same fundamental, f_p / n
+       within max(``tolerance`` f, one bin) of the strongest line's;
+    2. a candidate whose family already labels a stronger line, or with n = 1, beats an
+       unsupported higher harmonic (so 6 x BPFO in a BPFO series is not a lone 4 x BPFI);
+    3. then the smallest n |deviation| = |f_p - n f| / f, the distance in units of the
+       fundamental: it favours low orders, whose windows are narrower and catch
+       unrelated lines less often;
+    4. then the lowest n (so 2 bsf is labelled ``ball_defect`` 1x).
+
+    Sidebands (pass 2, with ``sidebands``), strongest peak first: a peak becomes a
+    sideband n f_d +- k f_m (k = 1, 2) of an inner-race line (f_m = shaft) or a ball
+    line (f_m = ftf) when
+
+    - the carrier is a peak labelled n f_d (its measured frequency is used, so the slip
+      is accounted for), and stronger than the peak if the peak matches a harmonic well
+      (within max(``tolerance`` n f, one bin), without the slip allowance): a weak line
+      never claims a well-matched stronger one; a carrier keeps its label;
+    - the peak lies within max(min(``tolerance`` x target, f_m/4), one bin) of the
+      target n f_d +- k f_m, relatively nearer than to its own harmonic, if any.
 
     Parameters
     ----------
@@ -174,6 +198,8 @@ def match_peaks(peaks, frequencies: dict[str, float], harmonics: int = 5,
         How far below n f a slip-affected line may sit [-, fraction], in [0, 0.5).
     sidebands : bool
         Look for modulation sidebands.
+    resolution : float
+        Bin spacing of the spectrum the peaks come from [Hz] (0: ignore).
 
     Returns
     -------
@@ -185,9 +211,15 @@ def match_peaks(peaks, frequencies: dict[str, float], harmonics: int = 5,
 
     Examples
     --------
-    >>> m = match_peaks([(215.0, 1.0), (201.0, 0.5)], {"bpfo": 107.4})
+    >>> m = match_peaks([(201.0, 1.0), (301.5, 0.5)], {"bpfo": 107.4})  # 6.4 % slip
     >>> [(p["matched"], p["harmonic"]) for p in m]
-    [('bpfo', 2), ('bpfo', 2)]
+    [('bpfo', 2), ('bpfo', 3)]
+    >>> m = match_peaks([(215.0, 1.0), (201.0, 0.5)], {"bpfo": 107.4})  # two slips
+    >>> [(p["matched"], p["harmonic"]) for p in m]
+    [('bpfo', 2), (None, None)]
+    >>> m = match_peaks([(12.0, 1.0)], {"ftf": 11.58}, resolution=2.0)  # 3.6 %: one bin
+    >>> (m[0]["matched"], m[0]["harmonic"])
+    ('ftf', 1)
     """
     if not isinstance(frequencies, dict) or not frequencies:
         raise InputError("frequencies", frequencies, f"a dict with keys among {list(NAMES)}")
@@ -205,65 +237,103 @@ def match_peaks(peaks, frequencies: dict[str, float], harmonics: int = 5,
     harmonics = _positive_int("harmonics", harmonics)
     tolerance = _fraction("tolerance", tolerance, 0.0, 0.5, closed_low=False)
     slip_tolerance = _fraction("slip_tolerance", slip_tolerance, 0.0, 0.5, closed_low=True)
+    resolution = _fraction("resolution", resolution, 0.0, math.inf, closed_low=True)
     out = [_peak(p) for p in peaks]
+    slack = RESOLUTION_BINS * resolution  # [Hz]
 
-    # pass 1: harmonics; key (|deviation|, n, name order) so ties go to the lowest n
+    # pass 1: harmonics, strongest peak first: a family's strongest line fixes its slip
     order = {name: i for i, name in enumerate(NAMES)}
-    for p in out:
+    fundamentals: dict[str, float] = {}  # family -> f_p / order of its strongest line [Hz]
+    for p in sorted(out, key=lambda p: -p["amplitude"]):
         fp, best = p["frequency_hz"], None
         for name, f in freqs.items():
-            lower = -max(tolerance, slip_tolerance) if name in SLIP_AFFECTED else -tolerance
+            family, multiple = FAMILIES.get(name, (name, 1))
+            below = max(tolerance, slip_tolerance) if name in SLIP_AFFECTED else tolerance
             for n in range(1, harmonics + 1):
-                deviation = (fp - n * f) / (n * f)
-                if lower <= deviation <= tolerance:
-                    key = (abs(deviation), n, order[name])
-                    if best is None or key < best[0]:
-                        best = (key, name, n, deviation)
+                line = n * f
+                if not -max(below * line, slack) <= fp - line <= max(tolerance * line, slack):
+                    continue
+                # one slip per family: the fundamental this line implies must agree
+                reference = fundamentals.get(family)
+                implied = fp / (n * multiple)
+                if reference is not None and \
+                        abs(implied - reference) > max(tolerance * f / multiple, slack):
+                    continue
+                deviation = (fp - line) / line
+                key = (n > 1 and reference is None, n * abs(deviation), n, order[name])
+                if best is None or key < best[0]:
+                    best = (key, name, n, deviation)
         p["matched"], p["harmonic"], p["deviation"] = (best[1], best[2], best[3]) if best \
             else (None, None, None)
+        if best:
+            family, multiple = FAMILIES.get(best[1], (best[1], 1))
+            fundamentals.setdefault(family, fp / (best[2] * multiple))
     if sidebands:
-        _label_sidebands(out, freqs, harmonics, tolerance)
+        _label_sidebands(out, freqs, tolerance, slack)
     return out
 
 
-def _label_sidebands(out: list[dict], freqs: dict, harmonics: int, tolerance: float) -> None:
+def _well_matched(p: dict, tolerance: float, slack: float) -> bool:
+    """Whether a labelled peak lies within +-max(tolerance n f, slack) of its harmonic
+    n f: inside the match window without the slip allowance."""
+    if p.get("deviation") is None:
+        return False
+    line = p["frequency_hz"] / (1.0 + p["deviation"])
+    return abs(p["frequency_hz"] - line) <= max(tolerance * line, slack)
+
+
+def _label_sidebands(out: list[dict], freqs: dict, tolerance: float, slack: float) -> None:
     """Pass 2 of :func:`match_peaks`: relabel peaks that are nearer a sideband."""
-    carriers = []  # (defect, n, carrier frequency [Hz], modulation name, f_m [Hz])
-    for defect, modulation in MODULATION.items():
-        if defect not in freqs or modulation not in freqs:
+    carriers: set[int] = set()  # ids of the lines sidebands were given to: they stay
+    for p in sorted(out, key=lambda p: -p["amplitude"]):  # strongest first
+        if id(p) in carriers:
             continue
-        for n in range(1, harmonics + 1):
-            seen = [p for p in out if p["matched"] == defect and p["harmonic"] == n]
-            if seen:  # a sideband without its carrier line is too weak a clue
-                fc = max(seen, key=lambda p: p["amplitude"])["frequency_hz"]
-                carriers.append((defect, n, fc, modulation, freqs[modulation]))
-    for p in out:
         fp, best = p["frequency_hz"], None
-        for defect, n, fc, modulation, fm in carriers:
+        good = _well_matched(p, tolerance, slack)
+        for c in out:
+            modulation = MODULATION.get(c["matched"])
+            if modulation not in freqs or c is p or (good and c["amplitude"] <= p["amplitude"]):
+                continue  # a line that matches well is claimed by a stronger line only
+            fm = freqs[modulation]
             for k in range(1, SIDEBAND_ORDERS + 1):
                 for sign in (-1, 1):
-                    target = fc + sign * k * fm
+                    target = c["frequency_hz"] + sign * k * fm
                     if target <= 0:
                         continue
                     distance = abs(fp - target)
-                    if distance <= min(tolerance * target, 0.25 * fm):
-                        key = (distance / target, k, n)
+                    if distance <= max(min(tolerance * target, 0.25 * fm), slack):
+                        key = (distance / target, k, c["harmonic"])
                         if best is None or key < best[0]:
-                            best = (key, defect, n, sign * k, modulation)
+                            best = (key, c, sign * k, modulation)
         if best is not None and (p["deviation"] is None or best[0][0] < abs(p["deviation"])):
-            p.update(matched=None, harmonic=None, deviation=None, sideband_of=best[1],
-                     sideband_harmonic=best[2], sideband_order=best[3], modulation=best[4])
+            c = best[1]
+            carriers.add(id(c))
+            p.update(matched=None, harmonic=None, deviation=None, sideband_of=c["matched"],
+                     sideband_harmonic=c["harmonic"], sideband_order=best[2],
+                     modulation=best[3])
 
 
-def diagnose(matched_peaks, min_lines: int = 2, compound_ratio: float = 0.5) -> dict:
-    """The likely bearing fault from peaks labelled by :func:`match_peaks`.
+def diagnose(matched_peaks, min_lines: int = 2, tolerance: float = 0.02,
+             resolution: float = 0.0) -> dict:
+    """The bearing faults shown by peaks labelled by :func:`match_peaks`.
 
     Each fault scores sum(A / n) over its harmonic lines (amplitude A, order n: high
     orders are likelier coincidences, as the match window widens with n) plus
-    0.5 sum(A / n) over its sidebands. A fault needs at least ``min_lines`` lines; the
-    best-scoring one is reported, or ``"compound: a + b"`` when another also qualifies
-    with at least ``compound_ratio`` times its score. Shaft lines make no fault (they
-    point to unbalance, misalignment or looseness).
+    0.5 sum(A / n) over its sidebands, and needs at least ``min_lines`` lines
+    (harmonics and sidebands). FTF lines next to ball lines (``min_lines`` or more) are
+    the cage-rate modulation of the ball defect, which the cage carries (Randall &
+    Antoni 2011, sec. 2): they count for the ball, as sidebands, not as a cage fault.
+    Reported are:
+
+    - the primary fault: the best-scoring one;
+    - every other fault whose own lines are significant, however weak next to the
+      primary: its 1x or 2x line and at least one more harmonic line, each well
+      matched (within max(``tolerance`` n f, one bin of ``resolution``) of n f, not
+      only inside the slip allowance). The peaks already stand out of the noise floor
+      (:func:`find_peaks`); sidebands and slip-window lines alone are too easily the
+      primary fault's intermodulation products.
+
+    Shaft lines make no fault (they point to unbalance, misalignment or looseness).
 
     Parameters
     ----------
@@ -271,14 +341,18 @@ def diagnose(matched_peaks, min_lines: int = 2, compound_ratio: float = 0.5) -> 
         Output of :func:`match_peaks`.
     min_lines : int
         Fewest lines (harmonics and sidebands) that make a fault.
-    compound_ratio : float
-        Score ratio, in (0, 1], above which a second fault is reported too.
+    tolerance : float
+        Relative tolerance of a well-matched line [-], as in :func:`match_peaks`.
+    resolution : float
+        Bin spacing of the spectrum [Hz] (0: ignore), as in :func:`match_peaks`.
 
     Returns
     -------
     dict
-        ``likely_fault`` ("outer race", "inner race", "ball", "cage", "compound: ..." or
-        None), ``scores`` and ``lines`` per fault, and a one-line ``reason``.
+        ``likely_fault`` (the one fault, ``"compound: a + b"`` for several, or None),
+        ``primary_fault`` ("outer race", "inner race", "ball", "cage" or None),
+        ``faults`` (every fault found, primary first, then by score), ``scores`` and
+        ``lines`` per fault, and a one-line ``reason``.
 
     Examples
     --------
@@ -287,15 +361,13 @@ def diagnose(matched_peaks, min_lines: int = 2, compound_ratio: float = 0.5) -> 
     'outer race'
     """
     min_lines = _positive_int("min_lines", min_lines)
-    try:
-        ratio = float(compound_ratio)
-    except (TypeError, ValueError):
-        ratio = math.nan
-    if not 0.0 < ratio <= 1.0:
-        raise InputError("compound_ratio", compound_ratio, "a number in (0, 1]")
+    tolerance = _fraction("tolerance", tolerance, 0.0, 0.5, closed_low=False)
+    slack = RESOLUTION_BINS * _fraction("resolution", resolution, 0.0, math.inf,
+                                        closed_low=True)
     scores = dict.fromkeys(_FAULT_ORDER, 0.0)
     lines = dict.fromkeys(_FAULT_ORDER, 0)
     evidence: dict[str, list[str]] = {f: [] for f in _FAULT_ORDER}
+    well_matched: dict[str, set] = {f: set() for f in _FAULT_ORDER}  # {(name, n)}
     shaft = 0
     for p in matched_peaks:
         try:
@@ -305,6 +377,8 @@ def diagnose(matched_peaks, min_lines: int = 2, compound_ratio: float = 0.5) -> 
                 fault = FAULTS[name]
                 scores[fault] += amplitude / p["harmonic"]
                 evidence[fault].append(f"{p['harmonic']}x {name}")
+                if _well_matched(p, tolerance, slack):
+                    well_matched[fault].add((name, int(p["harmonic"])))
             elif sideband_of in FAULTS:
                 fault = FAULTS[sideband_of]
                 scores[fault] += _SIDEBAND_WEIGHT * amplitude / p["sideband_harmonic"]
@@ -316,13 +390,23 @@ def diagnose(matched_peaks, min_lines: int = 2, compound_ratio: float = 0.5) -> 
         except (AttributeError, KeyError, TypeError, ValueError, ZeroDivisionError):
             raise InputError("matched_peaks", p, "dicts from match_peaks") from None
         lines[fault] += 1
+    if lines["ball"] >= min_lines and lines["cage"]:  # the ball's cage-rate modulation
+        scores["ball"] += _SIDEBAND_WEIGHT * scores["cage"]
+        lines["ball"] += lines["cage"]
+        evidence["ball"] += evidence["cage"]
+        scores["cage"], lines["cage"], evidence["cage"] = 0.0, 0, []
+
+    def significant(fault: str) -> bool:  # a well-matched 1x or 2x line and another
+        found = well_matched[fault]
+        return len(found) >= 2 and min(n for _, n in found) <= 2
+
     ranked = sorted((f for f in _FAULT_ORDER if lines[f] >= min_lines and scores[f] > 0),
                     key=lambda f: -scores[f])
-    if ranked:
-        chosen = [f for f in ranked if scores[f] >= ratio * scores[ranked[0]]]
-        likely = chosen[0] if len(chosen) == 1 else "compound: " + " + ".join(chosen)
+    faults = [f for i, f in enumerate(ranked) if i == 0 or significant(f)]
+    if faults:
+        likely = faults[0] if len(faults) == 1 else "compound: " + " + ".join(faults)
         reason = "; ".join(f"{f}: {', '.join(evidence[f])} (score {scores[f]:.3g})"
-                           for f in chosen)
+                           for f in faults)
     else:
         likely = None
         if any(lines.values()):
@@ -333,4 +417,5 @@ def diagnose(matched_peaks, min_lines: int = 2, compound_ratio: float = 0.5) -> 
                       "not a bearing defect")
         else:
             reason = "no line matches a defect frequency"
-    return {"likely_fault": likely, "scores": scores, "lines": lines, "reason": reason}
+    return {"likely_fault": likely, "primary_fault": faults[0] if faults else None,
+            "faults": faults, "scores": scores, "lines": lines, "reason": reason}
