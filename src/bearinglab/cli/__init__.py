@@ -5,7 +5,13 @@ TOML file), prints readable tables, and with ``--json`` one JSON object whose ke
 their units. Bad input exits with code 2 and one line on stderr.
 """
 
-from . import dynamics, foundation, quasistatic  # noqa: F401  (register the commands)
+from . import (  # noqa: F401  (register the commands)
+    dynamics,
+    foundation,
+    friction,
+    life,
+    quasistatic,
+)
 from ._app import app, main
 
 __all__ = ["app", "main"]

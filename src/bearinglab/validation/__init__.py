@@ -57,6 +57,7 @@ class CaseResult:
 
 def all_cases() -> list[Case]:
     """Every published case, in source order."""
-    from . import datasets, dynamics, seed001, seed003, seed004
+    from . import datasets, dynamics, friction, ratings, seed001, seed003, seed004
 
-    return [*seed001.CASES, *seed003.CASES, *seed004.CASES, *dynamics.CASES, *datasets.CASES]
+    return [*seed001.CASES, *seed003.CASES, *seed004.CASES, *dynamics.CASES, *datasets.CASES,
+            *friction.CASES, *ratings.CASES]

@@ -1,0 +1,528 @@
+"""The SKF four-component model of the frictional moment (layer 1).
+
+Source: SKF, *Rolling bearings* (catalogue 10000 EN), chapter "Friction", section "The SKF
+model for calculating the frictional moment" (the same model, introduced as "the new SKF
+model", is in the SKF General Catalogue 6000 EN and on skf.com):
+
+    M = phi_ish phi_rs M_rr + M_sl + M_seal + M_drag
+
+- rolling:  M_rr = G_rr (nu n)^0.6
+- sliding:  M_sl = G_sl mu_sl,  mu_sl = phi_bl mu_bl + (1 - phi_bl) mu_EHL,
+  phi_bl = 1 / e^(2.6e-8 (n nu)^1.4 d_m), mu_bl ~ 0.15 (additive package), mu_EHL = 0.05
+  (mineral oil), 0.04 (synthetic oil), 0.1 (transmission fluid) for ball bearings
+  (0.02 cylindrical, 0.002 tapered roller bearings).
+- geometric and load variables (catalogue Table 2a, radial bearings):
+  deep-groove ball bearings, F_a = 0: G_rr = R1 d_m^1.96 F_r^0.54,
+  G_sl = S1 d_m^-0.26 F_r^(5/3); F_a > 0: G_rr = R1 d_m^1.96 (F_r + R2/sin(alpha_F) F_a)^0.54,
+  G_sl = S1 d_m^-0.145 (F_r^5 + S2 d_m^1.5 / sin(alpha_F) F_a^4)^(1/3),
+  alpha_F = 24.6 (F_a/C_0)^0.24 [deg];
+  angular-contact (and four-point) ball bearings: G_rr = R1 d_m^1.97 (F_r + F_g + R2 F_a)^0.54,
+  F_g = R3 d_m^4 n^2; G_sl = S1 d_m^0.26 ((F_r + F_g)^(4/3) + S2 F_a^(4/3)), F_g = S3 d_m^4 n^2.
+- inlet shear heating: phi_ish = 1 / (1 + 1.84e-9 (n d_m)^1.28 nu^0.64).
+- kinematic replenishment / starvation: phi_rs = 1 / e^(K_rs nu n (d + D) sqrt(K_Z / (2 (D - d)))),
+  K_rs = 3e-8 (low-level oil bath, oil jet), 6e-8 (grease, oil-air); K_Z = 3.1 (deep-groove),
+  4.4 (single-row angular-contact ball bearings).
+- seals: M_seal = K_S1 d_s^beta + K_S2 (d_s the seal counterface diameter).
+
+The model works in SKF's engineering units: n [r/min], nu [mm^2/s] (operating viscosity of
+the oil or the grease's base oil), d, D, d_m = 0.5 (d + D) [mm] (the bearing MEAN
+diameter, not the ball pitch diameter), F [N], M [N mm]. The functions here take SI
+(rad/s, m^2/s, m, N) and return N m; they convert at the edge.
+
+What was checked against stored copies of the source, and what was not
+(see docs/capabilities/friction.md):
+
+- checked: the total-moment structure and the G_rr, G_sl forms for deep-groove and
+  angular-contact ball bearings including alpha_F (catalogue 10000 EN, Table 2a, as
+  stored at yumpu.com, document 55668573 page 106); M_sl, mu_sl, phi_bl, mu_bl = 0.15 and
+  the mu_EHL values (same document, page 105); d_m = 0.5 (d + D) and the symbols of
+  phi_ish (skf.com, "Inlet shear heating reduction factor").
+- not checked against a stored primary copy (the pages with these numbers are images or
+  were not stored): the constants of phi_ish (1.84e-9, 1.28, 0.64) and of phi_rs, the
+  K_rs and K_Z values, and the per-series geometry constants R1, R2, S1, S2 of
+  :data:`DEEP_GROOVE_CONSTANTS`. They are SKF's published values as given in the task
+  brief and as transcribed in independent public implementations of the model, which
+  agree with each other; treat them as secondary until checked against the catalogue.
+  Every result says so (``SkfGeometryConstants.verified``).
+- not shipped: angular-contact geometry constants (R1..R3, S1..S3 by series) and the
+  seal constants K_S1, K_S2, beta (catalogue tables not available in stored sources):
+  the caller supplies them. Drag losses in an oil bath (M_drag) need the catalogue's
+  diagram of the oil-level variable V_M, which is not available as numbers: M_drag is a
+  caller-supplied moment, zero by default.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+from typing import NamedTuple
+
+import numpy as np
+
+from ..errors import InputError
+
+#: Conversions: SI -> SKF engineering units.
+RPM_PER_RAD_S = 30.0 / math.pi
+MM2_S_PER_M2_S = 1e6
+MM_PER_M = 1e3
+#: Boundary-layer sliding friction coefficient mu_bl, "generally ~ 0.15" [-].
+MU_BL = 0.15
+#: mu_EHL of ball bearings (catalogue: "other bearings") by lubricant kind [-].
+MU_EHL = {"mineral": 0.05, "synthetic": 0.04, "transmission-fluid": 0.1}
+#: K_rs by lubrication method: 3e-8 low-level oil bath and oil jet, 6e-8 grease and
+#: oil-air [-] (secondary, see the module docstring).
+K_RS = {"grease": 6e-8, "oil-air": 6e-8, "oil-jet": 3e-8, "low-oil-bath": 3e-8}
+#: K_Z, the bearing-type geometry constant of phi_rs [-] (secondary).
+K_Z = {"radial_ball": 3.1, "angular_contact_ball": 4.4}
+#: Types the SKF model of this module covers.
+SKF_BEARING_TYPES = ("radial_ball", "angular_contact_ball", "four_point_contact_ball")
+
+SKF_SOURCE = ("SKF Rolling bearings, catalogue 10000 EN, 'The SKF model for calculating "
+              "the frictional moment'")
+_SECONDARY = ("SKF catalogue 10000 EN, geometry constants for deep groove ball bearings by "
+              "series; transcribed from secondary public sources (not checked against a "
+              "stored copy of the catalogue table)")
+
+
+@dataclass(frozen=True)
+class SkfGeometryConstants:
+    """Geometry constants of the SKF model for one bearing series.
+
+    Parameters
+    ----------
+    r1, r2 : float
+        Rolling-moment constants R1, R2 [SKF units: M_rr in N mm with d_m in mm, F in N].
+    s1, s2 : float
+        Sliding-moment constants S1, S2 [SKF units].
+    r3, s3 : float or None
+        Centrifugal-load constants of angular-contact bearings (F_g = R3 d_m^4 n^2,
+        S3 d_m^4 n^2) [SKF units]; None for deep-groove bearings.
+    source : str
+        Where the numbers come from [-].
+    verified : bool
+        True only if checked against a stored copy of the primary source [-].
+
+    >>> SkfGeometryConstants(3.9e-7, 1.7, 3.23e-3, 36.5).r3 is None
+    True
+    """
+
+    r1: float
+    r2: float
+    s1: float
+    s2: float
+    r3: float | None = None
+    s3: float | None = None
+    source: str = "user"
+    verified: bool = False
+
+    def __post_init__(self) -> None:
+        for name in ("r1", "r2", "s1", "s2", "r3", "s3"):
+            v = getattr(self, name)
+            if v is None and name in ("r3", "s3"):
+                continue
+            if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)) \
+                    or not math.isfinite(v) or v < 0:
+                raise InputError(name, v, "a finite constant >= 0 (SKF units)")
+
+
+def _dgbb(r1, r2, s1, s2):
+    return SkfGeometryConstants(r1, r2, s1, s2, source=_SECONDARY, verified=False)
+
+
+#: Deep-groove ball bearing geometry constants by ISO series (SKF catalogue table of
+#: geometry constants; secondary transcription, see the module docstring). 42 and 43 are
+#: double-row deep-groove bearings.
+DEEP_GROOVE_CONSTANTS: dict[str, SkfGeometryConstants] = {
+    **dict.fromkeys(("42", "43"), _dgbb(5.4e-7, 0.96, 3.00e-3, 40.0)),
+    **dict.fromkeys(("60", "630"), _dgbb(4.1e-7, 1.7, 3.73e-3, 14.6)),
+    **dict.fromkeys(("62", "622"), _dgbb(3.9e-7, 1.7, 3.23e-3, 36.5)),
+    **dict.fromkeys(("63", "623"), _dgbb(3.7e-7, 1.7, 2.84e-3, 92.8)),
+    "64": _dgbb(3.6e-7, 1.7, 2.43e-3, 198.0),
+    **dict.fromkeys(("160", "161"), _dgbb(4.3e-7, 1.7, 4.63e-3, 4.25)),
+    **dict.fromkeys(("617", "618", "628", "637", "638"), _dgbb(4.7e-7, 1.7, 6.50e-3, 0.78)),
+    **dict.fromkeys(("619", "639"), _dgbb(4.3e-7, 1.7, 4.75e-3, 3.6)),
+}
+
+
+def deep_groove_constants(series: str) -> SkfGeometryConstants:
+    """Geometry constants of a deep-groove ball bearing series (``"62"``, ``"618"``) [-].
+
+    Parameters
+    ----------
+    series : str
+        ISO series of the designation (:attr:`Designation.series`) [-].
+
+    >>> deep_groove_constants("62").r1
+    3.9e-07
+    """
+    if series not in DEEP_GROOVE_CONSTANTS:
+        raise InputError("series", series, "a deep-groove series with SKF constants: "
+                         + ", ".join(DEEP_GROOVE_CONSTANTS),
+                         "give the constants R1, R2, S1, S2 (command line: --skf-constants)")
+    return DEEP_GROOVE_CONSTANTS[series]
+
+
+# ------------------------------------------------------------------ input checks
+def _out(a):
+    """A 0-d result as a Python float, an array as it is."""
+    a = np.asarray(a, dtype=float)
+    return float(a) if a.ndim == 0 else a
+
+
+def _array(name: str, value, unit: str, positive: bool = False) -> np.ndarray:
+    a = np.asarray(value, dtype=float)
+    bad = (a <= 0) if positive else (a < 0)
+    if a.size == 0 or np.any(~np.isfinite(a)) or np.any(bad):
+        raise InputError(name, value, f"finite values {'>' if positive else '>='} 0 [{unit}]")
+    return a
+
+
+def _rpm(shaft_speed) -> np.ndarray:
+    return _array("shaft_speed", shaft_speed, "rad/s") * RPM_PER_RAD_S
+
+
+def _mm2_s(viscosity) -> np.ndarray:
+    return _array("viscosity", viscosity, "m^2/s", positive=True) * MM2_S_PER_M2_S
+
+
+def _mm(name: str, value) -> np.ndarray:
+    return _array(name, value, "m", positive=True) * MM_PER_M
+
+
+# ------------------------------------------------------------------ lubrication condition
+def viscosity_ratio(viscosity, shaft_speed, mean_diameter) -> float:
+    """Viscosity ratio kappa = nu / nu_1 (ISO 281) [-].
+
+    nu_1 is ISO 281's rated viscosity, :func:`bearinglab.life.rated_viscosity`
+    (45000 n^-0.83 d_m^-0.5 below 1000 r/min, else 4500 n^-0.5 d_m^-0.5, in mm^2/s with n
+    in r/min and d_m in mm), here with SKF's mean diameter d_m = 0.5 (d + D).
+
+    Parameters
+    ----------
+    viscosity : float
+        Operating kinematic viscosity nu [m^2/s].
+    shaft_speed : float
+        [rad/s], > 0.
+    mean_diameter : float
+        d_m = 0.5 (d + D) [m].
+
+    >>> round(viscosity_ratio(20e-6, 3000 * math.pi / 30, 0.0385), 3)
+    1.51
+    """
+    from ..life import rated_viscosity
+
+    nu = float(_mm2_s(viscosity)) / MM2_S_PER_M2_S
+    return nu / rated_viscosity(float(shaft_speed), float(mean_diameter))
+
+
+def inlet_shear_heating_factor(shaft_speed, mean_diameter, viscosity):
+    """phi_ish = 1 / (1 + 1.84e-9 (n d_m)^1.28 nu^0.64) [-] (n r/min, d_m mm, nu mm^2/s).
+
+    Parameters
+    ----------
+    shaft_speed : float or array
+        [rad/s].
+    mean_diameter : float or array
+        d_m = 0.5 (d + D) [m].
+    viscosity : float or array
+        Operating viscosity nu [m^2/s].
+
+    >>> round(float(inlet_shear_heating_factor(3000 * 3.141592653589793 / 30, 0.0385, 20e-6)), 4)
+    0.9636
+    """
+    n = _rpm(shaft_speed)
+    dm = _mm("mean_diameter", mean_diameter)
+    nu = _mm2_s(viscosity)
+    return _out(1.0 / (1.0 + 1.84e-9 * (n * dm) ** 1.28 * nu ** 0.64))
+
+
+def replenishment_factor(shaft_speed, viscosity, bore, outside_diameter, k_rs, k_z):
+    """phi_rs = 1 / e^(K_rs nu n (d + D) sqrt(K_Z / (2 (D - d)))) [-] (SKF units inside).
+
+    Parameters
+    ----------
+    shaft_speed : float or array
+        [rad/s].
+    viscosity : float or array
+        Operating viscosity nu [m^2/s].
+    bore, outside_diameter : float or array
+        d, D [m], D > d.
+    k_rs : float
+        Replenishment/starvation constant K_rs [-] (:data:`K_RS`).
+    k_z : float
+        Bearing-type geometry constant K_Z [-] (:data:`K_Z`).
+
+    >>> round(float(replenishment_factor(3000 * 3.141592653589793 / 30, 20e-6, 0.025, 0.052,
+    ...                                  6e-8, 3.1)), 4)
+    0.9357
+    """
+    n = _rpm(shaft_speed)
+    nu = _mm2_s(viscosity)
+    d = _mm("bore", bore)
+    big_d = _mm("outside_diameter", outside_diameter)
+    if np.any(big_d <= d):
+        raise InputError("outside_diameter", outside_diameter, "more than the bore [m]")
+    krs = float(_array("k_rs", k_rs, "-", positive=True))
+    kz = float(_array("k_z", k_z, "-", positive=True))
+    return _out(np.exp(-krs * nu * n * (d + big_d) * np.sqrt(kz / (2.0 * (big_d - d)))))
+
+
+def sliding_weighting_factor(shaft_speed, viscosity, mean_diameter):
+    """phi_bl = 1 / e^(2.6e-8 (n nu)^1.4 d_m) [-]: 1 at rest (boundary), -> 0 in full film.
+
+    Parameters
+    ----------
+    shaft_speed : float or array
+        [rad/s].
+    viscosity : float or array
+        [m^2/s].
+    mean_diameter : float or array
+        d_m = 0.5 (d + D) [m].
+
+    >>> sliding_weighting_factor(0.0, 20e-6, 0.0385)
+    1.0
+    """
+    n = _rpm(shaft_speed)
+    nu = _mm2_s(viscosity)
+    dm = _mm("mean_diameter", mean_diameter)
+    return _out(np.exp(-2.6e-8 * (n * nu) ** 1.4 * dm))
+
+
+def sliding_friction_coefficient(weighting_factor, mu_bl=MU_BL, mu_ehl=MU_EHL["mineral"]):
+    """mu_sl = phi_bl mu_bl + (1 - phi_bl) mu_EHL [-].
+
+    Parameters
+    ----------
+    weighting_factor : float or array
+        phi_bl [-], in [0, 1].
+    mu_bl : float
+        Boundary coefficient [-] (0.15 generally).
+    mu_ehl : float
+        Full-film coefficient [-] (:data:`MU_EHL`).
+
+    >>> sliding_friction_coefficient(1.0)
+    0.15
+    """
+    w = _array("weighting_factor", weighting_factor, "-")
+    if np.any(w > 1):
+        raise InputError("weighting_factor", weighting_factor, "values in [0, 1]")
+    bl = float(_array("mu_bl", mu_bl, "-"))
+    ehl = float(_array("mu_ehl", mu_ehl, "-"))
+    return _out(w * bl + (1.0 - w) * ehl)
+
+
+# ------------------------------------------------------------------ load variables
+def deep_groove_load_angle(axial_load, static_load_rating):
+    """alpha_F = 24.6 (F_a / C_0)^0.24 [rad] (catalogue: degrees), deep-groove bearings.
+
+    Parameters
+    ----------
+    axial_load : float or array
+        F_a [N], >= 0.
+    static_load_rating : float
+        Basic static load rating C_0 [N], > 0; F_a <= C_0.
+
+    >>> round(math.degrees(deep_groove_load_angle(1000.0, 10000.0)), 3)
+    14.156
+    """
+    fa = _array("axial_load", axial_load, "N")
+    c0 = float(_array("static_load_rating", static_load_rating, "N", positive=True))
+    if np.any(fa > c0):
+        raise InputError("axial_load", axial_load,
+                         f"at most the static load rating C_0 = {c0:.6g} N")
+    return _out(np.radians(24.6 * (fa / c0) ** 0.24))
+
+
+def deep_groove_load_variables(mean_diameter, radial_load, axial_load, constants,
+                               static_load_rating=None):
+    """(G_rr, G_sl) of a deep-groove ball bearing, catalogue Table 2a [SKF units].
+
+    Returned in SKF's units: M_rr [N mm] = G_rr (nu[mm^2/s] n[r/min])^0.6 and
+    M_sl [N mm] = G_sl mu_sl. With F_a > 0, C_0 is needed for alpha_F. The F_a > 0 form
+    does not tend to the F_a = 0 form of G_sl as F_a -> 0 (d_m^-0.145 against
+    d_m^-0.26, as printed).
+
+    Parameters
+    ----------
+    mean_diameter : float
+        d_m = 0.5 (d + D) [m].
+    radial_load, axial_load : float
+        F_r, F_a [N], >= 0.
+    constants : SkfGeometryConstants
+        R1, R2, S1, S2 of the series.
+    static_load_rating : float or None
+        C_0 [N]; needed when F_a > 0.
+
+    >>> g = deep_groove_load_variables(0.0385, 1000.0, 0.0, deep_groove_constants("62"))
+    >>> round(g[0], 5), round(g[1], 2)
+    (0.02082, 125.02)
+    """
+    dm = float(_mm("mean_diameter", mean_diameter))
+    fr = float(_array("radial_load", radial_load, "N"))
+    fa = float(_array("axial_load", axial_load, "N"))
+    c = constants
+    if fa == 0.0:
+        return (c.r1 * dm ** 1.96 * fr ** 0.54, c.s1 * dm ** -0.26 * fr ** (5.0 / 3.0))
+    if static_load_rating is None:
+        raise InputError("static_load_rating", None,
+                         "the basic static load rating C_0 [N] when F_a > 0",
+                         "SKF's alpha_F = 24.6 (F_a/C_0)^0.24 needs it (command line: "
+                         "--static-load-rating-kn)")
+    sin_a = math.sin(float(deep_groove_load_angle(fa, static_load_rating)))
+    g_rr = c.r1 * dm ** 1.96 * (fr + c.r2 / sin_a * fa) ** 0.54
+    g_sl = c.s1 * dm ** -0.145 * (fr ** 5 + c.s2 * dm ** 1.5 / sin_a * fa ** 4) ** (1.0 / 3.0)
+    return g_rr, g_sl
+
+
+def angular_contact_load_variables(mean_diameter, radial_load, axial_load, shaft_speed,
+                                   constants):
+    """(G_rr, G_sl) of an angular-contact (or four-point) ball bearing [SKF units].
+
+    G_rr = R1 d_m^1.97 (F_r + F_g + R2 F_a)^0.54 with F_g = R3 d_m^4 n^2;
+    G_sl = S1 d_m^0.26 ((F_r + F_g)^(4/3) + S2 F_a^(4/3)) with F_g = S3 d_m^4 n^2
+    (catalogue Table 2a; d_m mm, n r/min, F N).
+
+    Parameters
+    ----------
+    mean_diameter : float
+        d_m [m].
+    radial_load, axial_load : float
+        F_r, F_a [N].
+    shaft_speed : float
+        [rad/s].
+    constants : SkfGeometryConstants
+        With r3 and s3 given.
+    """
+    c = constants
+    if c.r3 is None or c.s3 is None:
+        raise InputError("constants", c, "angular-contact constants with R3 and S3")
+    dm = float(_mm("mean_diameter", mean_diameter))
+    fr = float(_array("radial_load", radial_load, "N"))
+    fa = float(_array("axial_load", axial_load, "N"))
+    n = float(_rpm(shaft_speed))
+    g_rr = c.r1 * dm ** 1.97 * (fr + c.r3 * dm ** 4 * n ** 2 + c.r2 * fa) ** 0.54
+    g_sl = c.s1 * dm ** 0.26 * ((fr + c.s3 * dm ** 4 * n ** 2) ** (4.0 / 3.0)
+                                + c.s2 * fa ** (4.0 / 3.0))
+    return g_rr, g_sl
+
+
+def seal_moment(k_s1, k_s2, beta, seal_diameter):
+    """M_seal = K_S1 d_s^beta + K_S2 [N m] (SKF units inside: d_s mm, M N mm).
+
+    The constants come from the maker's table for the seal type and size (not shipped:
+    see the module docstring); that table says whether the value is per bearing.
+
+    Parameters
+    ----------
+    k_s1, k_s2 : float
+        Seal constants [SKF units], >= 0.
+    beta : float
+        Exponent [-], >= 0.
+    seal_diameter : float
+        Seal counterface diameter d_s [m].
+
+    >>> round(seal_moment(0.02, 2.0, 2.25, 0.0313) * 1e3, 3)
+    48.345
+    """
+    ks1 = float(_array("k_s1", k_s1, "SKF units"))
+    ks2 = float(_array("k_s2", k_s2, "SKF units"))
+    b = float(_array("beta", beta, "-"))
+    ds = float(_mm("seal_diameter", seal_diameter))
+    return (ks1 * ds ** b + ks2) * 1e-3
+
+
+class SkfMoment(NamedTuple):
+    """Components of the SKF frictional moment [N m] and the factors used [-]."""
+
+    rolling: float          # phi_ish phi_rs M_rr [N m]
+    sliding: float          # M_sl [N m]
+    seal: float             # M_seal [N m]
+    drag: float             # M_drag [N m]
+    inlet_shear_factor: float
+    replenishment_factor: float
+    sliding_weighting_factor: float
+    sliding_friction_coefficient: float
+    rolling_variable: float   # G_rr [SKF units]
+    sliding_variable: float   # G_sl [SKF units]
+
+    @property
+    def total(self) -> float:
+        """M = phi_ish phi_rs M_rr + M_sl + M_seal + M_drag [N m]."""
+        return self.rolling + self.sliding + self.seal + self.drag
+
+
+def skf_frictional_moment(bearing_type: str, bore: float, outside_diameter: float,
+                          radial_load: float, axial_load: float, shaft_speed: float,
+                          viscosity: float, constants: SkfGeometryConstants, *,
+                          static_load_rating: float | None = None, k_rs: float = K_RS["grease"],
+                          k_z: float | None = None, mu_bl: float = MU_BL,
+                          mu_ehl: float = MU_EHL["mineral"], seal: float = 0.0,
+                          drag: float = 0.0) -> SkfMoment:
+    """Total frictional moment of a ball bearing by the SKF model [N m, components].
+
+    Parameters
+    ----------
+    bearing_type : str
+        ``"radial_ball"`` (deep-groove), ``"angular_contact_ball"`` or
+        ``"four_point_contact_ball"`` [-].
+    bore, outside_diameter : float
+        d, D [m]; d_m = 0.5 (d + D).
+    radial_load, axial_load : float
+        F_r, F_a [N], >= 0.
+    shaft_speed : float
+        Speed of the rotating ring [rad/s], >= 0.
+    viscosity : float
+        Operating kinematic viscosity of the oil or the grease's base oil [m^2/s].
+    constants : SkfGeometryConstants
+        Geometry constants of the bearing's series.
+    static_load_rating : float or None
+        C_0 [N]; needed for a deep-groove bearing with F_a > 0.
+    k_rs : float
+        K_rs [-] (:data:`K_RS`).
+    k_z : float or None
+        K_Z [-]; None takes :data:`K_Z` of the type.
+    mu_bl, mu_ehl : float
+        Sliding friction coefficients [-].
+    seal : float
+        Seal moment M_seal [N m] (:func:`seal_moment`), >= 0.
+    drag : float
+        Drag moment M_drag [N m], >= 0 (not modelled here; 0 for grease, oil-air, oil jet).
+
+    >>> m = skf_frictional_moment("radial_ball", 0.025, 0.052, 1000.0, 0.0,
+    ...                           3000 * 3.141592653589793 / 30, 20e-6,
+    ...                           deep_groove_constants("62"))
+    >>> round(m.total * 1e3, 2)
+    20.16
+    """
+    if bearing_type not in SKF_BEARING_TYPES:
+        raise InputError("bearing_type", bearing_type, "one of " + ", ".join(SKF_BEARING_TYPES),
+                         "the SKF model is implemented for ball bearings only")
+    if not isinstance(constants, SkfGeometryConstants):
+        raise InputError("constants", constants, "an SkfGeometryConstants")
+    d = float(_array("bore", bore, "m", positive=True))
+    big_d = float(_array("outside_diameter", outside_diameter, "m", positive=True))
+    if big_d <= d:
+        raise InputError("outside_diameter", outside_diameter, f"more than the bore {d:.6g} m")
+    if k_z is None:
+        if bearing_type not in K_Z:
+            raise InputError("k_z", None, "the geometry constant K_Z of this bearing type",
+                             f"no K_Z is shipped for {bearing_type}")
+        k_z = K_Z[bearing_type]
+    seal = float(_array("seal", seal, "N m"))
+    drag = float(_array("drag", drag, "N m"))
+    dm = 0.5 * (d + big_d)
+    if bearing_type == "radial_ball":
+        g_rr, g_sl = deep_groove_load_variables(dm, radial_load, axial_load, constants,
+                                                static_load_rating)
+    else:
+        g_rr, g_sl = angular_contact_load_variables(dm, radial_load, axial_load, shaft_speed,
+                                                    constants)
+    n = float(_rpm(shaft_speed))
+    nu = float(_mm2_s(viscosity))
+    ish = float(inlet_shear_heating_factor(shaft_speed, dm, viscosity))
+    rs = float(replenishment_factor(shaft_speed, viscosity, d, big_d, k_rs, k_z))
+    bl = float(sliding_weighting_factor(shaft_speed, viscosity, dm))
+    mu_sl = float(sliding_friction_coefficient(bl, mu_bl, mu_ehl))
+    m_rr = g_rr * (nu * n) ** 0.6 * 1e-3
+    m_sl = g_sl * mu_sl * 1e-3
+    return SkfMoment(ish * rs * m_rr, m_sl, seal, drag, ish, rs, bl, mu_sl, g_rr, g_sl)

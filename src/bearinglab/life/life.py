@@ -1,0 +1,488 @@
+"""Rating life of ball bearings: basic L10 = (C/P)^3, modified L_nm = a_1 a_ISO L10
+(ISO 281:2007 sections 7 and 9), or the reference life of ISO/TS 16281 from the internal
+load distribution (:mod:`bearinglab.life.iso16281`).
+
+Layer 1: :func:`reliability_factor` (a_1, Table 12), :func:`rated_viscosity` (nu_1),
+:func:`contamination_factor` (e_C, Table 13 guide values), :func:`life_modification_factor`
+(a_ISO of radial ball bearings). Layer 3: :func:`rating_life` returns a
+:class:`LifeResult`.
+
+a_ISO = 0.1 [1 - (2.5671 - c / kappa^p)^0.83 (e_C C_u / P)^(1/3)]^-9.3, capped at 50, with
+(c, p) = (2.2649, 0.054381) for 0.1 <= kappa < 0.4, (1.9987, 0.19087) for 0.4 <= kappa < 1
+and (1.9987, 0.071739) for 1 <= kappa <= 4; kappa = nu / nu_1 above 4 counts as 4, below
+0.1 the standard gives no value. nu_1 = 45000 n^-0.83 D_pw^-0.5 (n < 1000 r/min) or
+4500 n^-0.5 D_pw^-0.5 [mm^2/s, r/min, mm]. Sources: :mod:`bearinglab.life.tables`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+import pandas as pd
+
+from ..errors import InputError
+from ..geometry import BallBearing
+from ..operating import OperatingCondition
+from . import tables as T
+from .equivalent import LoadFactors, equivalent_dynamic_load, equivalent_static_load
+from .ratings import LoadRatings, load_ratings
+
+METHODS = ("iso281", "iso16281")
+_MM = 1e-3
+
+
+def reliability_factor(reliability_percent: float) -> float:
+    """Life modification factor for reliability a_1, ISO 281:2007 Table 12, interpolated
+    linearly between the tabulated reliabilities 90 ... 99.95 %.
+
+    Parameters
+    ----------
+    reliability_percent : float
+        Reliability (probability of survival) [%].
+
+    >>> reliability_factor(90), reliability_factor(99), reliability_factor(99.95)
+    (1.0, 0.25, 0.077)
+    """
+    r = reliability_percent
+    if not (isinstance(r, (int, float, np.floating)) and math.isfinite(r)
+            and T.A1_RELIABILITY[0] <= r <= T.A1_RELIABILITY[-1]):
+        raise InputError("reliability_percent", r, "a reliability in [90, 99.95] %",
+                         "ISO 281 Table 12")
+    return float(np.interp(r, T.A1_RELIABILITY, T.A1_FACTOR))
+
+
+def rated_viscosity(shaft_speed: float, pitch_diameter: float) -> float:
+    """Rated (reference) kinematic viscosity nu_1 of ISO 281:2007 [m^2/s]:
+    45000 n^-0.83 D_pw^-0.5 for n < 1000 r/min, else 4500 n^-0.5 D_pw^-0.5 (mm^2/s with n
+    in r/min and D_pw in mm).
+
+    Parameters
+    ----------
+    shaft_speed : float
+        Speed of the rotating ring [rad/s], > 0.
+    pitch_diameter : float
+        D_pw [m].
+
+    >>> round(rated_viscosity(3000 * math.pi / 30, 0.039) * 1e6, 2)   # mm^2/s
+    13.16
+    """
+    for name, value in (("shaft_speed", shaft_speed), ("pitch_diameter", pitch_diameter)):
+        if not (isinstance(value, (int, float, np.floating)) and math.isfinite(value)
+                and value > 0):
+            raise InputError(name, value, "a value > 0")
+    n = shaft_speed * 30.0 / math.pi
+    d_pw = pitch_diameter / _MM
+    if n < T.NU1_SWITCH_RPM:
+        nu1 = 45000.0 * n ** -0.83 * d_pw ** -0.5
+    else:
+        nu1 = 4500.0 * n ** -0.5 * d_pw ** -0.5
+    return nu1 * 1e-6
+
+
+def contamination_factor(contamination, pitch_diameter: float) -> tuple[float, str]:
+    """Contamination factor e_C: a number in [0, 1], or a level of ISO 281:2007 Table 13
+    (extreme-cleanliness, high-cleanliness, normal-cleanliness, slight-contamination,
+    typical-contamination, severe-contamination, very-severe-contamination, or the first
+    word alone), which gives the middle of the table's range for the bearing size
+    (D_pw below or from 100 mm).
+
+    Parameters
+    ----------
+    contamination : float or str
+        e_C, or a level name [-].
+    pitch_diameter : float
+        D_pw [m].
+
+    Returns
+    -------
+    tuple
+        (e_C [-], description of where it came from).
+
+    >>> contamination_factor("normal", 0.039)[0], contamination_factor(0.3, 0.039)[0]
+    (0.55, 0.3)
+    """
+    if isinstance(contamination, str):
+        key = contamination.strip().lower().replace("_", "-").replace(" ", "-")
+        key = T.CONTAMINATION_ALIASES.get(key, key)
+        if key not in T.CONTAMINATION_LEVELS:
+            raise InputError("contamination", contamination,
+                             "a number in [0, 1] or one of "
+                             + ", ".join(T.CONTAMINATION_LEVELS))
+        large = pitch_diameter / _MM >= T.CONTAMINATION_SIZE_MM
+        low, high = T.CONTAMINATION_LEVELS[key][1 if large else 0]
+        where = (f"ISO 281 Table 13 '{key}', D_pw {'>=' if large else '<'} 100 mm: "
+                 f"{low:g}-{high:g}, middle used")
+        return 0.5 * (low + high), where
+    if isinstance(contamination, bool) or not (
+            isinstance(contamination, (int, float, np.floating)) and math.isfinite(contamination)
+            and 0.0 <= contamination <= 1.0):
+        raise InputError("contamination", contamination, "a number in [0, 1] or a level name")
+    return float(contamination), "given"
+
+
+def life_modification_factor(kappa: float, load_ratio: float, *,
+                             ep_additives: bool = False, contamination: float = 1.0) -> float:
+    """Life modification factor a_ISO of radial ball bearings, ISO 281:2007 [-].
+
+    Parameters
+    ----------
+    kappa : float
+        Viscosity ratio nu / nu_1, >= 0.1 (values above 4 count as 4) [-].
+    load_ratio : float
+        e_C C_u / P, >= 0 [-].
+    ep_additives : bool
+        The lubricant has proven EP additives: for kappa < 1 and e_C >= 0.2, kappa = 1
+        is used and a_ISO is limited to 3 (ISO 281 9.3.3.4 as quoted by bb_core).
+    contamination : float
+        e_C, needed only for the EP rule [-].
+
+    Returns
+    -------
+    float
+        a_ISO in [0.1, 50].
+
+    >>> life_modification_factor(1.0, 0.0)
+    0.1
+    >>> round(life_modification_factor(2.0, 0.3), 3)
+    41.752
+    """
+    if not (isinstance(kappa, (int, float, np.floating)) and math.isfinite(kappa)
+            and kappa >= T.KAPPA_MIN):
+        raise InputError("kappa", kappa, f"a viscosity ratio >= {T.KAPPA_MIN}",
+                         "ISO 281 gives no a_ISO below 0.1")
+    if not (isinstance(load_ratio, (int, float, np.floating)) and math.isfinite(load_ratio)
+            and load_ratio >= 0.0):
+        raise InputError("load_ratio", load_ratio, "e_C C_u / P, a finite value >= 0")
+    cap = T.A_ISO_CAP
+    if ep_additives and kappa < 1.0 and contamination >= T.EP_KAPPA_EC_MIN:
+        kappa, cap = 1.0, T.EP_A_ISO_CAP
+    k = min(float(kappa), T.KAPPA_MAX)
+    c, p = next((c, p) for low, c, p in reversed(T.A_ISO_BANDS) if k >= low)
+    base = max(T.A_ISO_BASE - c / k ** p, 0.0)       # 0 at kappa = 0.1 (rounding aside)
+    bracket = 1.0 - base ** T.A_ISO_EXPONENT * load_ratio ** (1.0 / 3.0)
+    if bracket <= 0.0:
+        return cap
+    return float(min(0.1 * bracket ** -T.A_ISO_SLOPE, cap))
+
+
+def basic_rating_life(dynamic_rating: float, equivalent_load: float) -> float:
+    """Basic rating life of a ball bearing L10 = (C/P)^3 [million revolutions].
+
+    Parameters
+    ----------
+    dynamic_rating : float
+        C [N].
+    equivalent_load : float
+        P > 0 [N].
+
+    >>> basic_rating_life(14000.0, 1400.0)
+    1000.0
+    """
+    for name, value in (("dynamic_rating", dynamic_rating), ("equivalent_load", equivalent_load)):
+        if not (isinstance(value, (int, float, np.floating)) and math.isfinite(value)
+                and value > 0):
+            raise InputError(name, value, "a load > 0 [N]")
+    return float((dynamic_rating / equivalent_load) ** 3)
+
+
+def _hours(million_rev: float, shaft_speed: float) -> float:
+    return million_rev * 1e6 / (shaft_speed / (2.0 * math.pi)) / 3600.0
+
+
+@dataclass(frozen=True)
+class LifeResult:
+    """Rating life of one bearing under one operating condition.
+
+    Attributes
+    ----------
+    bearing, condition : the inputs.
+    method : str
+        ``iso281`` or ``iso16281``.
+    ratings : LoadRatings
+        C, C_0, C_u and the factors used.
+    equivalent_load : float
+        P of ISO 281 [N] (``iso16281``: the dynamic equivalent reference load P_ref).
+    factors : LoadFactors
+        X, Y, e used for the ISO 281 P.
+    static_equivalent_load : float
+        P_0 [N].
+    l10 : float
+        Basic rating life L10 (``iso16281``: the basic reference rating life L10r)
+        [million revolutions].
+    reliability_percent, a1 : float
+        Reliability [%] and its factor a_1 [-].
+    viscosity, rated_viscosity : float or None
+        nu and nu_1 [m^2/s] (None when no viscosity was given).
+    kappa, a_iso : float or None
+        nu/nu_1 and a_ISO [-].
+    contamination : float or None
+        e_C [-]; ``contamination_source`` says where it came from.
+    lnm : float or None
+        Modified rating life a_1 a_ISO L10 at the chosen reliability [million revolutions].
+    reference : dict or None
+        ISO/TS 16281 details: contact ratings Q_ci, Q_ce, equivalent loads Q_ei, Q_ee [N],
+        the per-ball inner and outer contact loads [N] and the rotating ring.
+    warnings : tuple of str
+    """
+
+    bearing: BallBearing
+    condition: OperatingCondition
+    method: str
+    ratings: LoadRatings
+    equivalent_load: float
+    factors: LoadFactors
+    static_equivalent_load: float
+    l10: float
+    reliability_percent: float
+    a1: float
+    viscosity: float | None = None
+    rated_viscosity: float | None = None
+    kappa: float | None = None
+    contamination: float | None = None
+    contamination_source: str | None = None
+    a_iso: float | None = None
+    lnm: float | None = None
+    iso281_equivalent_load: float | None = None
+    reference: dict | None = field(default=None, repr=False)
+    warnings: tuple[str, ...] = ()
+
+    @property
+    def shaft_speed(self) -> float:
+        """Speed of the rotating ring [rad/s]."""
+        return self.condition.shaft_speed
+
+    @property
+    def static_safety_factor(self) -> float:
+        """s_0 = C_0 / P_0 [-]."""
+        return self.ratings.static / self.static_equivalent_load
+
+    @property
+    def l10_hours(self) -> float:
+        """L10 at the operating speed [h]."""
+        return _hours(self.l10, self.shaft_speed)
+
+    @property
+    def lnm_hours(self) -> float | None:
+        """L_nm at the operating speed [h], None without a viscosity."""
+        return None if self.lnm is None else _hours(self.lnm, self.shaft_speed)
+
+    def to_dict(self) -> dict:
+        """JSON-ready summary in engineering units (keys carry their unit)."""
+        def mm2(v):
+            return None if v is None else v * 1e6
+
+        out = {
+            "method": self.method,
+            **self.ratings.to_dict(),
+            "radial_load_n": self.condition.radial_load,
+            "axial_load_n": self.condition.axial_load,
+            "speed_rpm": self.shaft_speed * 30.0 / math.pi,
+            "equivalent_load_n": self.equivalent_load,
+            "x_factor": self.factors.x, "y_factor": self.factors.y,
+            "e_limit": self.factors.e,
+            "static_equivalent_load_n": self.static_equivalent_load,
+            "static_safety_factor": self.static_safety_factor,
+            "l10_million_rev": self.l10, "l10_hours": self.l10_hours,
+            "reliability_percent": self.reliability_percent, "a1": self.a1,
+            "viscosity_mm2_s": mm2(self.viscosity),
+            "rated_viscosity_mm2_s": mm2(self.rated_viscosity),
+            "kappa": self.kappa, "contamination_factor": self.contamination,
+            "contamination_source": self.contamination_source,
+            "a_iso": self.a_iso,
+            "l10m_million_rev": self.lnm, "l10m_hours": self.lnm_hours,
+            "warnings": list(self.warnings),
+        }
+        if self.reference is not None:
+            ref = self.reference
+            out.update({
+                "iso281_equivalent_load_n": self.iso281_equivalent_load,
+                "reference_load_n": self.equivalent_load,
+                "inner_contact_rating_n": ref["inner_rating"],
+                "outer_contact_rating_n": ref["outer_rating"],
+                "inner_equivalent_ball_load_n": ref["inner_equivalent"],
+                "outer_equivalent_ball_load_n": ref["outer_equivalent"],
+                "rotating_ring": ref["rotating"],
+                "inner_ball_loads_n": [float(q) for q in ref["inner_loads"]],
+                "outer_ball_loads_n": [float(q) for q in ref["outer_loads"]],
+            })
+        return out
+
+    def to_pandas(self) -> pd.DataFrame:
+        """The main results as a table: quantity, value, unit."""
+        d = self.to_dict()
+        rows = [("basic dynamic load rating C", "dynamic_rating_n", "N"),
+                ("basic static load rating C0", "static_rating_n", "N"),
+                ("fatigue load limit Cu", "fatigue_load_limit_n", "N"),
+                ("equivalent dynamic load P" if self.method == "iso281"
+                 else "dynamic equivalent reference load P_ref", "equivalent_load_n", "N"),
+                ("equivalent static load P0", "static_equivalent_load_n", "N"),
+                ("static safety factor s0", "static_safety_factor", "-"),
+                ("basic rating life L10" if self.method == "iso281"
+                 else "basic reference rating life L10r", "l10_million_rev", "1e6 rev"),
+                ("  in hours", "l10_hours", "h"),
+                ("viscosity ratio kappa", "kappa", "-"),
+                ("contamination factor e_C", "contamination_factor", "-"),
+                ("life modification factor a_ISO", "a_iso", "-"),
+                (f"modified rating life at {self.reliability_percent:g} %", "l10m_million_rev",
+                 "1e6 rev"),
+                ("  in hours", "l10m_hours", "h")]
+        return pd.DataFrame([{"quantity": q, "value": d[k], "unit": u} for q, k, u in rows])
+
+    def plot(self, ax=None):
+        """Basic rating life against the equivalent load (log-log), with the operating
+        point and, when known, the modified life; returns (fig, ax)."""
+        from ..plotting import _pyplot
+
+        if ax is None:
+            fig, ax = _pyplot().subplots(figsize=(7, 4.5))
+        else:
+            fig = ax.figure
+        c = self.ratings.dynamic
+        p = np.geomspace(0.02 * c, c, 100)
+        ax.loglog(p, _hours((c / p) ** 3, self.shaft_speed), color="C0",
+                  label="L10 = (C/P)^3")
+        ax.loglog([self.equivalent_load], [self.l10_hours], "o", color="C0",
+                  label=f"operating point ({self.method})")
+        if self.lnm_hours is not None:
+            ax.loglog([self.equivalent_load], [self.lnm_hours], "s", color="C1",
+                      label=f"modified life (a1 a_ISO = {self.a1 * self.a_iso:.3g})")
+        ax.set_xlabel("equivalent load P [N]")
+        ax.set_ylabel(f"life at {self.shaft_speed * 30 / math.pi:g} rpm [h]")
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend()
+        return fig, ax
+
+
+def _check_condition(condition: OperatingCondition, method: str) -> None:
+    if not isinstance(condition, OperatingCondition):
+        raise InputError("condition", condition, "an OperatingCondition")
+    if not condition.shaft_speed > 0:
+        raise InputError("shaft_speed", condition.shaft_speed, "a speed > 0 [rad/s]",
+                         "life in hours and the rated viscosity need it")
+    if method == "iso281" and (condition.moment is not None
+                               or any(condition.misalignment)
+                               or any(condition.outer_misalignment)):
+        raise InputError("condition", "moment or misalignment",
+                         "none for method 'iso281' (use 'iso16281', which solves the load "
+                         "distribution)")
+
+
+def rating_life(bearing: BallBearing, condition: OperatingCondition, *,
+                reliability_percent: float = 90.0, viscosity: float | None = None,
+                contamination=None, method: str = "iso281", rotating: str = "inner",
+                ep_additives: bool = False) -> LifeResult:
+    """Rating life of a single-row ball bearing, ISO 281:2007 or ISO/TS 16281.
+
+    ``iso281``: L10 = (C/P)^3 with P from Table 3 (normal clearance, rigid rings, no
+    misalignment). ``iso16281``: the basic reference rating life L10r from the per-ball
+    contact loads of :func:`bearinglab.quasistatic.solve_load_distribution` (so clearance,
+    speed, moment and misalignment count), P_ref = C / L10r^(1/3) in place of P.
+    With a ``viscosity`` the modified life a_1 a_ISO L10 follows.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        Geometry; deep-groove, angular-contact, or (``iso281`` only) thrust ball bearing.
+    condition : OperatingCondition
+        Loads on the inner ring and the speed of the rotating ring (> 0).
+    reliability_percent : float
+        90 ... 99.95 [%].
+    viscosity : float, optional
+        Operating kinematic viscosity of the lubricant [m^2/s].
+    contamination : float or str, optional
+        e_C or a Table 13 level; with a viscosity and no contamination, normal
+        cleanliness is assumed (and said).
+    method : {"iso281", "iso16281"}
+    rotating : {"inner", "outer"}
+        The rotating ring (``iso16281``: which ring's equivalent load has exponent 3).
+    ep_additives : bool
+        Apply ISO 281's EP-additive rule to a_ISO.
+
+    Returns
+    -------
+    LifeResult
+
+    Raises
+    ------
+    InputError
+        Bad inputs: unsupported bearing type, no load, zero speed, kappa below 0.1, a
+        moment or misalignment with ``iso281``, ...
+
+    >>> from bearinglab.catalog import bearing_from_designation
+    >>> b, _ = bearing_from_designation("6205")
+    >>> r = rating_life(b, OperatingCondition(radial_load=1400.0, shaft_speed=1500 * math.pi / 30))
+    >>> round(r.l10), round(r.l10_hours)
+    (1006, 11176)
+    """
+    if method not in METHODS:
+        raise InputError("method", method, "one of " + ", ".join(METHODS))
+    if rotating not in ("inner", "outer"):
+        raise InputError("rotating", rotating, "'inner' or 'outer'")
+    _check_condition(condition, method)
+    a1 = reliability_factor(reliability_percent)
+    ratings = load_ratings(bearing)
+    warnings = list(ratings.warnings)
+    radial, axial = condition.radial_load, condition.axial_load
+    p, factors = equivalent_dynamic_load(bearing, radial, axial)
+    if factors.clamped:
+        warnings.append("the relative axial load F_a/(Z D_w^2) is beyond ISO 281 Table 3: "
+                        "its last X, Y, e were used")
+    p0 = equivalent_static_load(bearing, radial, axial)
+    reference = None
+    iso281_p = None
+    if method == "iso16281":
+        from .iso16281 import reference_rating_life
+
+        ref = reference_rating_life(bearing, condition, ratings.dynamic, rotating=rotating)
+        l10 = ref["l10r"]
+        iso281_p, p = p, ref["reference_load"]
+        reference = ref
+        warnings.extend(ref["warnings"])
+    else:
+        l10 = basic_rating_life(ratings.dynamic, p)
+    if ratings.static / p0 < 1.0:
+        warnings.append(f"static safety factor s0 = {ratings.static / p0:.3g} < 1: the most "
+                        "loaded contact exceeds 4200 MPa (ISO 76 permanent deformation)")
+    kwargs = {}
+    if viscosity is not None:
+        if not (isinstance(viscosity, (int, float, np.floating)) and math.isfinite(viscosity)
+                and viscosity > 0):
+            raise InputError("viscosity", viscosity, "a kinematic viscosity > 0 [m^2/s]")
+        nu1 = rated_viscosity(condition.shaft_speed, bearing.pitch_diameter)
+        kappa = viscosity / nu1
+        if kappa < T.KAPPA_MIN:
+            raise InputError("viscosity", viscosity,
+                             f"at least {T.KAPPA_MIN * nu1:.3g} m^2/s at this speed and size",
+                             f"kappa = nu/nu_1 = {kappa:.3g} is below 0.1, where ISO 281 "
+                             "gives no a_ISO")
+        if contamination is None:
+            contamination = "normal-cleanliness"
+            warnings.append("contamination not given: normal cleanliness (ISO 281 Table 13) "
+                            "assumed")
+        e_c, e_source = contamination_factor(contamination, bearing.pitch_diameter)
+        if bearing.is_thrust:
+            warnings.append("a_ISO of thrust ball bearings (ISO 281 uses 3 P_a there) is not "
+                            "implemented: no modified life")
+            a_iso = lnm = None
+        else:
+            a_iso = life_modification_factor(kappa, e_c * ratings.fatigue_limit / p,
+                                             ep_additives=ep_additives, contamination=e_c)
+            lnm = a1 * a_iso * l10
+            if a_iso >= T.A_ISO_CAP:
+                warnings.append("a_ISO reached ISO 281's limit of 50")
+        kwargs = {"viscosity": float(viscosity), "rated_viscosity": nu1, "kappa": kappa,
+                  "contamination": e_c, "contamination_source": e_source, "a_iso": a_iso,
+                  "lnm": lnm}
+    elif contamination is not None:
+        contamination_factor(contamination, bearing.pitch_diameter)   # validate it anyway
+        warnings.append("contamination given without a viscosity: a_ISO needs both")
+    else:
+        warnings.append("no viscosity given: kappa, a_ISO and the modified life are not "
+                        "computed")
+    return LifeResult(bearing=bearing, condition=condition, method=method, ratings=ratings,
+                      equivalent_load=float(p), factors=factors, static_equivalent_load=p0,
+                      l10=l10, reliability_percent=float(reliability_percent), a1=a1,
+                      iso281_equivalent_load=iso281_p, reference=reference,
+                      warnings=tuple(warnings), **kwargs)
