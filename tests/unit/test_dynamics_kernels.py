@@ -67,6 +67,48 @@ def test_surface_deviation_twins_agree():
     assert np.any(na > 0) and np.any(nb > 0)        # the sample reached the defects
 
 
+def _imperfections():
+    from bearinglab.imperfections import BallSizeErrors, Imperfections, RandomSurface, Waviness
+
+    return Imperfections(
+        [Waviness("outer", 10, 0.4e-6, 0.3), Waviness("inner", 8, 0.2e-6, -1.0),
+         Waviness("ball", 2, 0.1e-6, 0.5, ball=4), Waviness("ball", 4, 0.05e-6)],
+        ball_size_errors=BallSizeErrors.random(9, 2e-6, seed=3),
+        surfaces=[RandomSurface.for_bearing(ER16K, "outer", 0.1e-6, 5e-3, 0.4e-3, seed=1,
+                                            points_circumferential=64)])
+
+
+def test_imperfection_rows_twins_agree_and_equal_the_approach_changes():
+    """Waviness, ball-size and sampled-track rows: the kernel equals its twin, and both
+    equal minus the approach changes of Imperfections (written independently)."""
+    imp = _imperfections()
+    table = pack_defects(DEFECTS[:1], ER16K, imp)
+    bare = pack_defects(DEFECTS[:1], ER16K)
+    r_b, r_i, r_o = 0.5 * ER16K.ball_diameter, 0.5 * ER16K.inner_raceway_diameter, \
+        0.5 * ER16K.outer_raceway_diameter
+    rng = np.random.default_rng(2)
+    for _ in range(100):
+        psi, spin, shaft = rng.uniform(-7, 7, 9), rng.uniform(-7, 7, 9), rng.uniform(0, 20)
+        a, b = np.empty(9), np.empty(9)
+        _kernels.surface_deviation_numba(psi, spin, shaft, r_b, r_i, r_o, table, a, b)
+        na, nb = _kernels.surface_deviation_numpy(psi, spin, shaft, r_b, r_i, r_o, table)
+        np.testing.assert_allclose(a, na, atol=1e-18)
+        np.testing.assert_allclose(b, nb, atol=1e-18)
+        pit_in, pit_out = _kernels.surface_deviation_numpy(psi, spin, shaft, r_b, r_i, r_o, bare)
+        change = imp.approach_change(ER16K, psi, shaft, spin)
+        np.testing.assert_allclose(a - pit_in, -change.inner, atol=1e-18)
+        np.testing.assert_allclose(b - pit_out, -change.outer, atol=1e-18)
+
+
+def test_imperfections_are_checked_against_the_bearing():
+    from bearinglab.imperfections import Imperfections, Waviness
+
+    with pytest.raises(InputError, match="ball"):
+        pack_defects([], ER16K, Imperfections([Waviness("ball", 2, 1e-7, ball=9)]))
+    with pytest.raises(InputError, match="imperfections"):
+        pack_defects([], ER16K, [Waviness("outer", 2, 1e-7)])
+
+
 def test_rigid_rhs_twins_agree():
     table = pack_defects(DEFECTS, ER16K)
     cond = OperatingCondition(radial_load=50.0, shaft_speed=183.0)

@@ -37,8 +37,11 @@ def _pit_drop(d, r_ball, radius, outer, depth):
 def surface_deviation(psi, spin, shaft_angle, r_ball, r_in, r_out, table, dev_in, dev_out):
     """Extra clearance of every ball's inner and outer contact from the surface table [m].
 
-    The one place where surfaces enter the contact deformation (defects.py). Fills
-    ``dev_in`` and ``dev_out`` (Z,) in place.
+    The one place where surfaces enter the contact deformation (defects.py: pits;
+    waviness, ball-size errors and sampled raceway tracks from
+    :class:`bearinglab.imperfections.Imperfections`, with the approach changes of
+    seed 003 eqs. 14-17 taken with the opposite sign: clearance). Fills ``dev_in`` and
+    ``dev_out`` (Z,) in place.
 
     Parameters
     ----------
@@ -51,34 +54,68 @@ def surface_deviation(psi, spin, shaft_angle, r_ball, r_in, r_out, table, dev_in
     r_ball, r_in, r_out : float
         Ball radius, inner and outer groove-bottom radii [m].
     table : array (n, 5)
-        Rows of defects.pack_defects.
+        Rows of defects.pack_defects (the row kinds are listed there).
     """
     two_pi = 2.0 * math.pi
-    for j in range(psi.shape[0]):
+    z = psi.shape[0]
+    for j in range(z):
         dev_in[j] = 0.0
         dev_out[j] = 0.0
-    for row in range(table.shape[0]):
+    row = 0
+    while row < table.shape[0]:
         kind = int(table[row, 0])
-        half = 0.5 * table[row, 1]
-        depth = table[row, 2]
-        angle = table[row, 3]
-        for j in range(psi.shape[0]):
-            if kind == 0 or kind == 1:
-                outer = kind == 0
-                ref = angle if outer else angle + shaft_angle
-                radius = r_out if outer else r_in
-                off = (psi[j] - ref + math.pi) % two_pi - math.pi
-                drop = _pit_drop(half - abs(off) * radius, r_ball, radius, outer, depth)
+        if kind <= 2:                          # pits
+            half = 0.5 * table[row, 1]
+            depth = table[row, 2]
+            angle = table[row, 3]
+            for j in range(z):
+                if kind == 0 or kind == 1:
+                    outer = kind == 0
+                    ref = angle if outer else angle + shaft_angle
+                    radius = r_out if outer else r_in
+                    off = (psi[j] - ref + math.pi) % two_pi - math.pi
+                    drop = _pit_drop(half - abs(off) * radius, r_ball, radius, outer, depth)
+                    if outer:
+                        dev_out[j] += drop
+                    else:
+                        dev_in[j] += drop
+                elif j == int(table[row, 4]):
+                    # the marked point faces the outer race at spin phase 0, the inner at pi
+                    off = (spin[j] - angle + math.pi) % two_pi - math.pi
+                    dev_out[j] += _pit_drop(half - abs(off) * r_ball, r_ball, r_out, True, depth)
+                    off = (spin[j] - angle) % two_pi - math.pi
+                    dev_in[j] += _pit_drop(half - abs(off) * r_ball, r_ball, r_in, False, depth)
+        elif kind <= 5:                        # waviness A cos(q angle + phase)
+            order, amplitude, phase = table[row, 1], table[row, 2], table[row, 3]
+            ball = int(table[row, 4])
+            for j in range(z):
+                if kind == 3:                  # outer race: a larger radius opens the contact
+                    dev_out[j] += amplitude * math.cos(order * psi[j] + phase)
+                elif kind == 4:                # inner race, in the turning ring's frame
+                    dev_in[j] -= amplitude * math.cos(order * (psi[j] - shaft_angle) + phase)
+                elif ball < 0 or ball == j:    # ball: the points facing each race
+                    dev_out[j] -= amplitude * math.cos(order * spin[j] + phase)
+                    dev_in[j] -= amplitude * math.cos(order * (spin[j] + math.pi) + phase)
+        elif kind == 6:                        # ball-size error D_wj - D_w
+            j = int(table[row, 4])
+            dev_in[j] -= 0.5 * table[row, 1]
+            dev_out[j] -= 0.5 * table[row, 1]
+        elif kind == 7:                        # sampled track: ``count`` rows of heights follow
+            outer = table[row, 1] == 0.0
+            count = int(table[row, 2])
+            for j in range(z):
+                angle = psi[j] if outer else psi[j] - shaft_angle
+                u = (angle % two_pi) / two_pi * count
+                k = min(int(u), count - 1)
+                frac = u - k
+                height = ((1.0 - frac) * table[row + 1 + k, 1]
+                          + frac * table[row + 1 + (k + 1) % count, 1])
                 if outer:
-                    dev_out[j] += drop
+                    dev_out[j] += height
                 else:
-                    dev_in[j] += drop
-            elif kind == 2 and j == int(table[row, 4]):
-                # the marked point faces the outer race at spin phase 0, the inner at pi
-                off = (spin[j] - angle + math.pi) % two_pi - math.pi
-                dev_out[j] += _pit_drop(half - abs(off) * r_ball, r_ball, r_out, True, depth)
-                off = (spin[j] - angle) % two_pi - math.pi
-                dev_in[j] += _pit_drop(half - abs(off) * r_ball, r_ball, r_in, False, depth)
+                    dev_in[j] -= height
+            row += count
+        row += 1
 
 
 def surface_deviation_numpy(psi, spin, shaft_angle, r_ball, r_in, r_out, table):
@@ -87,8 +124,12 @@ def surface_deviation_numpy(psi, spin, shaft_angle, r_ball, r_in, r_out, table):
 
     dev_in = np.zeros_like(psi)
     dev_out = np.zeros_like(psi)
-    for kind, width, depth, angle, ball in table:
+    balls = np.arange(psi.size)
+    row = 0
+    while row < len(table):
+        kind, a, b, c, ball = table[row]
         if kind in (0, 1):
+            width, depth, angle = a, b, c
             outer = kind == 0
             radius = r_out if outer else r_in
             ref = angle if outer else angle + shaft_angle
@@ -96,13 +137,35 @@ def surface_deviation_numpy(psi, spin, shaft_angle, r_ball, r_in, r_out, table):
             drop = np.where(d > 0, np.minimum(edge_drop(d, r_ball, radius,
                                                         "outer" if outer else "inner"), depth), 0)
             (dev_out if outer else dev_in)[:] += drop
-        else:
-            j = int(ball)
+        elif kind == 2:
+            width, depth, angle, j = a, b, c, int(ball)
             for shift, radius, race, dev in ((0.0, r_out, "outer", dev_out),
                                              (math.pi, r_in, "inner", dev_in)):
                 d = 0.5 * width - abs(float(wrap_angle(spin[j] - angle - shift))) * r_ball
                 if d > 0:
                     dev[j] += min(float(edge_drop(d, r_ball, radius, race)), depth)
+        elif kind == 3:
+            dev_out += b * np.cos(a * psi + c)
+        elif kind == 4:
+            dev_in -= b * np.cos(a * (psi - shaft_angle) + c)
+        elif kind == 5:
+            mine = (balls == int(ball)) | (ball < 0)
+            dev_out -= np.where(mine, b * np.cos(a * spin + c), 0.0)
+            dev_in -= np.where(mine, b * np.cos(a * (spin + np.pi) + c), 0.0)
+        elif kind == 6:
+            dev_in[int(ball)] -= 0.5 * a
+            dev_out[int(ball)] -= 0.5 * a
+        elif kind == 7:
+            count = int(b)
+            heights = table[row + 1:row + 1 + count, 1]
+            grid = 2 * np.pi * np.arange(count + 1) / count
+            if a == 0:
+                dev_out += np.interp(np.mod(psi, 2 * np.pi), grid, np.append(heights, heights[0]))
+            else:
+                dev_in -= np.interp(np.mod(psi - shaft_angle, 2 * np.pi), grid,
+                                    np.append(heights, heights[0]))
+            row += count
+        row += 1
     return dev_in, dev_out
 
 

@@ -11,6 +11,10 @@ point moving forward). The equations are documented in ``slip.py``.
 The Jacobian has an arrow structure (a ball's equations involve only its own state, the
 rings and the cage), which :func:`rosenbrock_chunk` uses to difference it with 16 calls
 and to solve with it by block elimination.
+
+Numba's on-disk cache (``cache=True``) is keyed on this file alone: after editing
+``_kernels.py`` (the surface function), delete the cached ``*.nbi``/``*.nbc`` files in
+``__pycache__``, or the slip kernels keep the old surface function.
 """
 
 from __future__ import annotations

@@ -38,7 +38,7 @@ Location = Literal["outer", "inner", "ball"]
 LOCATIONS = ("outer", "inner", "ball")
 #: Row kinds of the packed surface table (see :func:`pack_defects`).
 KIND = {"outer": 0, "inner": 1, "ball": 2}
-#: Columns of a packed row: kind, width [m], depth [m], angle [rad], ball index.
+#: Columns of a packed row (see :func:`pack_defects`).
 ROW_SIZE = 5
 
 
@@ -138,16 +138,50 @@ class Defect:
         return out
 
 
-def pack_defects(defects, bearing) -> np.ndarray:
-    """The surface table the kernels read: one row per defect (see :data:`ROW_SIZE`).
+def pack_defects(defects, bearing, imperfections=None) -> np.ndarray:
+    """The surface table the kernels read (``_kernels.surface_deviation``), one row of
+    :data:`ROW_SIZE` columns per feature:
 
-    An absent depth is stored as +inf (no limit).
+    ====  =========================================  ==========================================
+    kind  feature                                    columns 1-4
+    ====  =========================================  ==========================================
+    0-2   pit on the outer race, inner race, ball    width, depth (+inf: none), angle, ball
+    3, 4  outer, inner raceway waviness              order, amplitude, phase, -
+    5     ball waviness                              order, amplitude, phase, ball (-1: all)
+    6     ball-size error                            D_wj - D_w, -, -, ball
+    7     raceway track sampled at the groove's      race (0 outer, 1 inner), count n, -, -;
+          mid-plane (a random 3-D surface)           then n rows of kind 8 with the heights
+    ====  =========================================  ==========================================
+
+    Waviness, ball-size errors and random surfaces come from ``imperfections``
+    (:class:`bearinglab.imperfections.Imperfections`); a random surface enters the planar
+    dynamic models along its mid-plane track, sampled at its own circumferential grid
+    and interpolated linearly (the ball's axial shift of seed 002 eqs. 7-9 is the
+    quasi-static orbit's).
     """
-    rows = np.zeros((len(defects), ROW_SIZE))
-    for i, d in enumerate(defects):
+    rows = []
+    for d in defects:
         if not isinstance(d, Defect):
             raise InputError("defects", d, "Defect objects")
         d.check(bearing)
-        rows[i] = (KIND[d.location], d.width, math.inf if d.depth is None else d.depth,
-                   d.angle, d.ball)
-    return rows
+        rows.append((KIND[d.location], d.width, math.inf if d.depth is None else d.depth,
+                     d.angle, d.ball))
+    if imperfections is not None:
+        from ..imperfections import Imperfections
+
+        if not isinstance(imperfections, Imperfections):
+            raise InputError("imperfections", type(imperfections).__name__, "Imperfections")
+        imperfections.check(bearing)
+        for w in imperfections.waviness:
+            kind = {"outer": 3, "inner": 4, "ball": 5}[w.race]
+            rows.append((kind, w.order, w.amplitude, w.phase,
+                         -1 if w.ball is None else w.ball))
+        errors = imperfections.ball_size_errors
+        if errors is not None:
+            rows += [(6, e, 0.0, 0.0, j) for j, e in enumerate(errors.errors) if e]
+        for surface in imperfections.surfaces:
+            count = surface.heights.shape[0]
+            track = surface.height(2 * np.pi * np.arange(count) / count, 0.0)
+            rows.append((7, 0 if surface.race == "outer" else 1, count, 0.0, 0.0))
+            rows += [(8, h, 0.0, 0.0, 0.0) for h in track]
+    return np.array(rows, dtype=float).reshape(len(rows), ROW_SIZE)

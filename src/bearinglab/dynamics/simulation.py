@@ -82,7 +82,7 @@ def _check_number(name, value, allowed, low=0.0, inclusive=False):
 def simulate(bearing, condition, defects=(), *, model: str = "rigid",
              duration: float = 1.0, sample_rate: float = 50e3, parameters=None,
              lubricant=None, settle: float | None = None, rtol: float | None = None,
-             noise: float = 0.0, seed: int | None = None,
+             noise: float = 0.0, seed: int | None = None, imperfections=None,
              progress: Callable[[float], None] | None = None) -> Simulation:
     """Simulate the vibration of ``bearing`` under ``condition`` with ``defects``.
 
@@ -113,6 +113,10 @@ def simulate(bearing, condition, defects=(), *, model: str = "rigid",
         RMS of white measurement noise added to the accelerations [m/s^2].
     seed : int, optional
         Seed of the noise generator.
+    imperfections : Imperfections, optional
+        Raceway and ball waviness, ball-size errors and random raceway surfaces
+        (:class:`bearinglab.imperfections.Imperfections`), through the same surface table
+        as the defects (:func:`.defects.pack_defects`).
     progress : callable, optional
         Called with the fraction done (0..1) between integration chunks.
     """
@@ -129,7 +133,7 @@ def simulate(bearing, condition, defects=(), *, model: str = "rigid",
     if condition.shaft_speed <= 0:
         raise InputError("shaft_speed", condition.shaft_speed, "a speed > 0 [rad/s]")
     defects = tuple(defects)
-    table = pack_defects(defects, bearing)
+    table = pack_defects(defects, bearing, imperfections)
     kin = defect_frequencies(bearing, condition.shaft_speed)
     if model == "rigid":
         params = parameters or rigid.RigidParameters()
