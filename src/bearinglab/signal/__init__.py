@@ -5,6 +5,7 @@ Sources are cited in each module: Randall & Antoni 2011 (envelope analysis), Ant
 and 2007 (spectral kurtosis, kurtogram), SciPy (scipy.signal, scipy.io).
 """
 
+from .bands import ISO15242_BANDS, VelocityBands, iso15242_bands, velocity_bands
 from .coherence import Coherence, coherence
 from .io import SUFFIXES, read_signal, write_signal
 from .peaks import diagnose, find_peaks, match_peaks
@@ -21,8 +22,8 @@ from .spectra import (
 )
 
 __all__ = [
-    "SUFFIXES", "Coherence", "EnvelopeSpectrum", "KurtogramBand", "Signal", "Spectrum",
-    "amplitude_spectrum", "coherence", "diagnose", "envelope", "envelope_spectrum",
-    "find_peaks", "match_peaks", "read_signal", "spectral_kurtosis",
-    "spectral_kurtosis_band", "write_signal",
+    "ISO15242_BANDS", "SUFFIXES", "Coherence", "EnvelopeSpectrum", "KurtogramBand", "Signal",
+    "Spectrum", "VelocityBands", "amplitude_spectrum", "coherence", "diagnose", "envelope",
+    "envelope_spectrum", "find_peaks", "iso15242_bands", "match_peaks", "read_signal",
+    "spectral_kurtosis", "spectral_kurtosis_band", "velocity_bands", "write_signal",
 ]

@@ -1,0 +1,228 @@
+"""Result objects of the noise model: :class:`SoundPressure` and :class:`Directivity`
+(layer 3 results; seed 003 eqs. 24-27 and figs. 12-14, seed 002 directivity).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+import scipy.signal
+
+from ..errors import InputError
+from .model import Air, FieldPoint
+from .sources import effective_pressure, sound_pressure_level
+
+#: Floor of the envelope in the SPL(t) curve, so that its log stays finite [Pa].
+ENVELOPE_FLOOR = 1e-12
+
+
+@dataclass(frozen=True)
+class Directivity:
+    """SPL (eq. 27) round the bearing at one distance (seed 002: the radiation is
+    directional). ``angle`` [rad]; ``levels`` part name -> SPL at each angle [dB]."""
+
+    angle: np.ndarray
+    distance: float
+    levels: dict
+
+    def to_dict(self) -> dict:
+        """JSON-ready: angles in degrees, levels in dB (None where a part is silent)."""
+        return {"angle_deg": np.degrees(self.angle).tolist(), "distance_mm": self.distance * 1e3,
+                **{f"spl_{k}_db": [_finite_or_none(v) for v in lv]
+                   for k, lv in self.levels.items()}}
+
+    def plot(self, ax=None):
+        """Polar plot of the levels [dB]; returns (fig, ax)."""
+        from ..plotting import _pyplot
+
+        plt = _pyplot()
+        if ax is None:
+            fig, ax = plt.subplots(subplot_kw={"projection": "polar"}, figsize=(5.5, 5.5))
+        else:
+            fig = ax.figure
+        closed = np.append(self.angle, self.angle[0])
+        for name, lv in self.levels.items():
+            ax.plot(closed, np.append(lv, lv[0]), label=name)
+        ax.set_title(f"SPL [dB] at {self.distance * 1e3:g} mm")
+        ax.legend(fontsize=8, loc="lower right")
+        return fig, ax
+
+
+def _finite_or_none(value) -> float | None:
+    v = float(value)
+    return v if math.isfinite(v) else None
+
+
+@dataclass(frozen=True, eq=False)
+class SoundPressure:
+    """Sound pressure at a field point and what produced it.
+
+    Attributes: ``time`` [s]; ``parts`` part name -> pressure series [Pa]: ``inner_ring``,
+    ``balls`` and ``total`` (eq. 26), and the contributions of the x and y velocity
+    components (``inner_ring_x``, ``inner_ring_y``, ``balls_x``, ``balls_y``, the seed's
+    figures 12-13 A/B) when they exist; ``point``, ``medium``, ``options`` (radii [m],
+    models) and the input velocities (for :meth:`directivity`).
+
+    Levels:
+
+    * :meth:`spl` -- eq. 27 with p_e the RMS over the whole record (the equivalent level);
+    * :meth:`spl_time` -- the level as it changes in time (the seed's figures 12-14 plot
+      SPL against time over one cycle): by default from the instantaneous amplitude
+      |p + j H[p]| / sqrt(2) (Hilbert envelope; for a pure tone it is the RMS level at
+      every instant), or from a sliding RMS window;
+    * ``spl_mean_db`` / ``spl_max_db`` of :meth:`to_dict` -- the time average and the
+      maximum of that curve: the seed's "mean SPL" (29.832 dB for its 608) is read as the
+      mean of the SPL-time curve of its figure 14.
+    """
+
+    time: np.ndarray
+    parts: dict
+    point: FieldPoint
+    medium: Air
+    options: dict
+    inputs: dict = field(repr=False)
+
+    @property
+    def sample_rate(self) -> float:
+        """1 / time step [Hz]."""
+        return float((self.time.size - 1) / (self.time[-1] - self.time[0]))
+
+    def pressure(self, part: str = "total") -> np.ndarray:
+        """Pressure series of ``part`` [Pa]."""
+        if part not in self.parts:
+            raise InputError("part", part, f"one of {list(self.parts)}")
+        return self.parts[part]
+
+    def effective_pressure(self, part: str = "total") -> float:
+        """p_e = sqrt(1/T int p^2 dt) (seed 003, after eq. 27) [Pa]."""
+        return effective_pressure(self.pressure(part))
+
+    def spl(self, part: str = "total") -> float:
+        """SPL = 20 lg(p_e / p_ref) over the whole record (eq. 27) [dB]; -inf if silent."""
+        return sound_pressure_level(self.effective_pressure(part))
+
+    def spl_time(self, part: str = "total", window: float | None = None) -> np.ndarray:
+        """SPL against time [dB].
+
+        Parameters
+        ----------
+        part : str
+            A key of ``parts``.
+        window : float, optional
+            Length of a centred sliding RMS window [s] (the record is periodic, so the
+            window wraps round); None: the Hilbert envelope |p + j H[p]| / sqrt(2),
+            floored at ENVELOPE_FLOOR.
+        """
+        p = self.pressure(part)
+        n = p.size
+        if window is None:
+            level = np.abs(scipy.signal.hilbert(p)) / math.sqrt(2.0)
+            return sound_pressure_level(np.maximum(level, ENVELOPE_FLOOR))
+        try:
+            w = round(float(window) * self.sample_rate)
+        except (TypeError, ValueError):
+            w = -1
+        if not 1 <= w <= n:
+            raise InputError("window", window,
+                             f"a length in [{1 / self.sample_rate:g}, {n / self.sample_rate:g}] s")
+        h = w // 2
+        ext = np.take(p**2, np.arange(-h, n - h + w - 1), mode="wrap")
+        c = np.concatenate([[0.0], np.cumsum(ext)])
+        mean_square = np.maximum((c[w:w + n] - c[:n]) / w, 0.0)
+        return sound_pressure_level(np.sqrt(mean_square))
+
+    def spectrum(self, part: str = "total", window="hann", segment_length=None):
+        """Single-sided amplitude spectrum of the pressure [Pa]
+        (:func:`bearinglab.signal.amplitude_spectrum`)."""
+        from ..signal import amplitude_spectrum
+
+        return amplitude_spectrum(self.pressure(part), self.sample_rate, window=window,
+                                  segment_length=segment_length)
+
+    def directivity(self, angles=None, distance: float | None = None) -> Directivity:
+        """SPL (eq. 27) of the inner ring, the balls and the total at points round the
+        bearing at one distance (seed 002).
+
+        Parameters
+        ----------
+        angles : array_like, optional
+            Directions from +x towards +y [rad]; default 72 steps of 5 deg.
+        distance : float, optional
+            Distance from the bearing centre [m]; default the result's point distance.
+        """
+        angles = (np.linspace(0.0, 2 * math.pi, 72, endpoint=False) if angles is None
+                  else np.atleast_1d(np.asarray(angles, dtype=float)))
+        if angles.ndim != 1 or angles.size == 0 or not np.all(np.isfinite(angles)):
+            raise InputError("angles", angles, "a 1-D array of finite angles [rad]")
+        from .radiation import _pressures
+
+        d = self.point.distance if distance is None else distance
+        levels: dict[str, list] = {}
+        for a in angles:
+            parts = _pressures(self.inputs, FieldPoint(d, float(a)), self.medium, self.options)
+            for name in ("inner_ring", "balls", "total"):
+                if name in parts:
+                    levels.setdefault(name, []).append(
+                        sound_pressure_level(effective_pressure(parts[name])))
+        return Directivity(angles, float(FieldPoint(d).distance),
+                           {k: np.array(v) for k, v in levels.items()})
+
+    def to_dict(self) -> dict:
+        """JSON-ready summary: levels in dB (None for a silent part), pressures in Pa."""
+        total_t = self.spl_time("total")
+        out = {"spl_db": _finite_or_none(self.spl("total")),
+               "spl_mean_db": _finite_or_none(np.mean(total_t)),
+               "spl_max_db": _finite_or_none(np.max(total_t))}
+        for name in self.parts:
+            if name != "total":
+                out[f"spl_{name}_db"] = _finite_or_none(self.spl(name))
+        out.update({
+            "effective_pressure_pa": self.effective_pressure("total"),
+            "peak_pressure_pa": float(np.max(np.abs(self.parts["total"]))),
+            "distance_mm": self.point.distance * 1e3,
+            "angle_deg": math.degrees(self.point.angle),
+            "sample_rate_hz": self.sample_rate,
+            "duration_s": self.time.size / self.sample_rate,
+            "density_kg_m3": self.medium.density, "sound_speed_m_per_s": self.medium.sound_speed,
+            "ring_model": self.options["ring_model"], "ball_source": self.options["ball_source"],
+        })
+        for key in ("ring_radius", "ball_radius", "pitch_radius"):
+            if self.options.get(key) is not None:
+                out[f"{key}_mm"] = self.options[key] * 1e3
+        return out
+
+    def to_pandas(self):
+        """One row per sample: ``time_s`` and ``p_<part>_pa`` for every part."""
+        import pandas as pd
+
+        return pd.DataFrame({"time_s": self.time,
+                             **{f"p_{k}_pa": v for k, v in self.parts.items()}})
+
+    def plot(self, axes=None):
+        """Pressure against time (ring, balls, total) and SPL(t) with its mean; returns
+        (fig, axes)."""
+        from ..plotting import _pyplot
+
+        plt = _pyplot()
+        if axes is None:
+            fig, axes = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
+        else:
+            fig = axes[0].figure
+        t = self.time - self.time[0]
+        for name in ("inner_ring", "balls", "total"):
+            if name in self.parts:
+                axes[0].plot(t, self.parts[name], lw=0.8, label=name)
+                level = self.spl_time(name)
+                axes[1].plot(t, level, lw=0.8, label=f"{name}: mean {np.mean(level):.1f} dB")
+        axes[0].set_ylabel("sound pressure [Pa]")
+        axes[1].set_ylabel("SPL [dB re 20 uPa]")
+        axes[1].set_xlabel("time [s]")
+        axes[0].set_title(f"point at {self.point.distance * 1e3:g} mm, "
+                          f"{math.degrees(self.point.angle):g} deg: SPL {self.spl():.1f} dB")
+        for ax in axes:
+            ax.legend(fontsize=8)
+            ax.grid(alpha=0.3)
+        fig.tight_layout()
+        return fig, axes
