@@ -24,4 +24,4 @@ def test_published_case(case):
 
 def test_case_list_is_not_trivially_small():
     # seed 001 (6), the kinematic cases of seeds 003/004 (3), CWRU (8) and IMS (4)
-    assert len(CASES) >= 21
+    assert len(CASES) >= 76

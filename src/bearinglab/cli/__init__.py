@@ -11,6 +11,8 @@ from . import (  # noqa: F401  (register the commands)
     friction,
     life,
     quasistatic,
+    report,
+    validate,
 )
 from ._app import app, main
 

@@ -57,7 +57,17 @@ class CaseResult:
 
 def all_cases() -> list[Case]:
     """Every published case, in source order."""
-    from . import datasets, dynamics, friction, ratings, seed001, seed003, seed004
+    from . import (
+        datasets,
+        dynamics,
+        friction,
+        ratings,
+        seed000,
+        seed001,
+        seed003,
+        seed003_noise,
+        seed004,
+    )
 
-    return [*seed001.CASES, *seed003.CASES, *seed004.CASES, *dynamics.CASES, *datasets.CASES,
-            *friction.CASES, *ratings.CASES]
+    return [*seed000.CASES, *seed001.CASES, *seed003.CASES, *seed004.CASES, *dynamics.CASES,
+            *seed003_noise.CASES, *datasets.CASES, *friction.CASES, *ratings.CASES]

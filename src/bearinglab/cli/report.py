@@ -1,0 +1,157 @@
+"""The ``report`` command: one self-contained HTML page about a bearing at an operating
+point (:func:`bearinglab.report.build_report`)."""
+
+import math
+from pathlib import Path
+from typing import Annotated
+
+import typer
+from rich.console import Console
+from rich.markup import escape
+from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+
+from ..errors import InputError
+from ..operating import OperatingCondition
+from ._app import app, console
+from ._inputs import (
+    MAX_LOAD_N,
+    MAX_SPEED_RPM,
+    JsonOpt,
+    OptionError,
+    _geometry_warnings,
+    _print_warnings,
+    resolve_bearing,
+    with_geometry,
+)
+from ._output import _emit_json
+from .dynamics import DEFECT_ALLOWED, parse_defect
+
+DesignationArg = Annotated[str | None, typer.Argument(
+    help="Bearing designation or catalogue name (e.g. 6205, 180205, ER-16K); optional with "
+         "explicit geometry.", show_default=False)]
+
+
+def _check(speed_rpm, radial, axial, duration, slip_duration, sample_rate, viscosity, output):
+    if not (math.isfinite(speed_rpm) and 0 < speed_rpm <= MAX_SPEED_RPM):
+        raise OptionError("--speed-rpm", speed_rpm, f"a speed in (0, {MAX_SPEED_RPM:g}] rpm")
+    if not (math.isfinite(radial) and 0 <= radial <= MAX_LOAD_N):
+        raise OptionError("--radial-load-n", radial, f"a load in [0, {MAX_LOAD_N:g}] N")
+    if not (math.isfinite(axial) and abs(axial) <= MAX_LOAD_N):
+        raise OptionError("--axial-load-n", axial, f"a load in [{-MAX_LOAD_N:g}, "
+                          f"{MAX_LOAD_N:g}] N")
+    if radial == 0 and axial == 0:
+        raise OptionError("--radial-load-n", radial, "a load > 0 N (or an --axial-load-n)",
+                          "an unloaded bearing has no load distribution or life")
+    if not (math.isfinite(duration) and 0 < duration <= 60):
+        raise OptionError("--duration-s", duration, "a duration in (0, 60] s")
+    if not (math.isfinite(slip_duration) and 0 <= slip_duration <= 10):
+        raise OptionError("--slip-duration-s", slip_duration, "a duration in [0, 10] s")
+    if sample_rate is not None and not (math.isfinite(sample_rate) and 0 < sample_rate <= 1e7):
+        raise OptionError("--sample-rate-hz", sample_rate, "a rate in (0, 1e7] Hz")
+    if viscosity is not None and not (math.isfinite(viscosity) and 0 < viscosity <= 1e6):
+        raise OptionError("--viscosity-mm2-s", viscosity, "a viscosity in (0, 1e6] mm^2/s")
+    if output.suffix.lower() not in (".html", ".htm"):
+        raise OptionError("--output", str(output), "a file name ending in .html or .htm")
+    if not output.parent.is_dir():
+        raise OptionError("--output", str(output), "a path in an existing directory")
+
+
+@app.command("report")
+@with_geometry
+def report_command(
+        designation: DesignationArg = None,
+        speed_rpm: Annotated[float, typer.Option("--speed-rpm",
+                                                 help="Shaft (inner-ring) speed [rpm].")] = ...,
+        radial_load_n: Annotated[float, typer.Option(
+            "--radial-load-n", help="Radial load F_r on the shaft, downwards [N].")] = ...,
+        axial_load_n: Annotated[float, typer.Option(
+            "--axial-load-n", help="Axial load F_a on the inner ring [N].")] = 0.0,
+        lubricant: Annotated[str, typer.Option(
+            "--lubricant", help="Built-in lubricant for the viscosity (friction, a_ISO), at "
+            "its reference temperature: iso-vg68 or seed004-grease.")] = "iso-vg68",
+        viscosity_mm2_s: Annotated[float | None, typer.Option(
+            "--viscosity-mm2-s", help="Operating kinematic viscosity [mm^2/s] instead of "
+            "--lubricant.", show_default=False)] = None,
+        defect: Annotated[list[str] | None, typer.Option(
+            "--defect", help="A defect to simulate, repeatable, as for 'simulate': "
+            "outer:width_mm=1.2,depth_mm=0.25[,angle_deg=270], inner:..., "
+            "ball:width_mm=1.2[,ball=0]. Default: an example outer-race defect (said so in "
+            "the report).", show_default=False)] = None,
+        duration_s: Annotated[float, typer.Option(
+            "--duration-s", help="Length of the simulated vibration record (rigid model) "
+            "[s].")] = 1.0,
+        slip_duration_s: Annotated[float, typer.Option(
+            "--slip-duration-s", help="Length of the slip-model run for the defect "
+            "frequencies with slip [s] (about 5 s of computing per simulated second); 0 "
+            "skips it.")] = 0.1,
+        sample_rate_hz: Annotated[float | None, typer.Option(
+            "--sample-rate-hz", help="Sample rate of the simulated record [Hz] (default: "
+            "25.6 kHz, more at high speed so the ISO 15242 bands are resolved).",
+            show_default=False)] = None,
+        output: Annotated[Path, typer.Option(
+            "-o", "--output", help="The HTML file to write.")] = ...,
+        json_output: JsonOpt = False, *, geometry):
+    """Write an engineer's report of a bearing at an operating point to one self-contained
+    HTML page: geometry and sources, load distribution, contact, stiffness, ring
+    resonances, defect frequencies, simulated envelope spectrum, vibration bands, sound,
+    friction and life. A section whose analysis fails shows its error in the page and is
+    listed on stderr (the report is still written, exit code 0)."""
+    from ..report import build_report
+
+    _check(speed_rpm, radial_load_n, axial_load_n, duration_s, slip_duration_s, sample_rate_hz,
+           viscosity_mm2_s, output)
+    specs = list(defect or [])
+    defects = [parse_defect(text) for text in specs]
+    bearing, decoded = resolve_bearing(designation, geometry)
+    for text, d in zip(specs, defects, strict=True):
+        try:
+            d.check(bearing)
+        except InputError as exc:
+            shown = (f"width_mm = {exc.value * 1e3:g}" if exc.parameter == "width"
+                     else f"{exc.parameter} = {exc.value!r}")
+            raise OptionError("--defect", text, DEFECT_ALLOWED,
+                              f"for {bearing.name or 'this bearing'}: {shown} must be "
+                              f"{exc.allowed}") from None
+    if viscosity_mm2_s is None:
+        from ..lubrication import LUBRICANTS
+
+        if lubricant not in LUBRICANTS:
+            raise OptionError("--lubricant", lubricant, f"one of {', '.join(LUBRICANTS)}")
+    condition = OperatingCondition(radial_load=radial_load_n, axial_load=axial_load_n,
+                                   shaft_speed=speed_rpm * math.pi / 30)
+    err = Console(stderr=True)
+    with Progress(TextColumn("report: {task.description:<40}"), BarColumn(),
+                  TextColumn("{task.completed}/{task.total}"), TimeElapsedColumn(), console=err,
+                  transient=True, disable=not err.is_terminal) as progress:
+        task = progress.add_task("starting", total=1)
+
+        def step(title: str, done: int, total: int) -> None:
+            progress.update(task, description=title, completed=done, total=total)
+
+        report = build_report(bearing, condition, designation=decoded, defects=defects,
+                              lubricant=None if viscosity_mm2_s is not None else lubricant,
+                              viscosity=None if viscosity_mm2_s is None
+                              else viscosity_mm2_s * 1e-6,
+                              duration=duration_s, sample_rate=sample_rate_hz,
+                              slip_duration=slip_duration_s, progress=step)
+    try:
+        report.write(output)
+    except OSError as exc:
+        raise OptionError("--output", str(output), "a writable file",
+                          exc.strerror or type(exc).__name__) from None
+    failed = [{"section": s.key, "title": s.title, "error": s.error} for s in report.failed]
+    warnings = _geometry_warnings(bearing)
+    for f in failed:
+        err.print(f"[yellow]warning:[/yellow] section {escape(f['title'])!s} failed: "
+                  f"{escape(f['error'])}", highlight=False, soft_wrap=True)
+    if json_output:
+        _emit_json({"designation": designation, "output": str(output),
+                    "sections": [s.key for s in report.sections],
+                    "failed_sections": failed, "warnings": warnings})
+        return
+    ok = len(report.sections) - len(failed)
+    console.print(f"report written to [bold]{escape(str(output))}[/bold] ({ok} of "
+                  f"{len(report.sections)} sections"
+                  + (f"; failed: {escape(', '.join(f['title'] for f in failed))})" if failed
+                     else ")"))
+    _print_warnings(warnings)

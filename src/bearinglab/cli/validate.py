@@ -1,0 +1,169 @@
+"""The ``validate`` command: run every published case bearinglab reproduces
+(:func:`bearinglab.validation.all_cases`, the same list tests/literature runs) and show
+source, published and computed value, error and verdict."""
+
+import datetime
+import math
+import time
+from pathlib import Path
+from typing import Annotated
+
+import typer
+from rich.console import Console
+from rich.markup import escape
+from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+from rich.table import Table
+
+from ._app import app, console
+from ._inputs import JsonOpt, OptionError
+from ._output import _emit_json
+
+#: Verdicts that leave the exit code at 0.
+GOOD_VERDICTS = ("pass", "known failure")
+
+
+def verdict(passed: bool | None, known_failure: str | None) -> str:
+    """pass, fail, known failure (documented, fails as expected) or unexpected pass; a
+    case whose computation raised is "error" (``passed`` None).
+
+    >>> verdict(True, None), verdict(False, "why"), verdict(True, "why")
+    ('pass', 'known failure', 'unexpected pass')
+    """
+    if passed is None:
+        return "error"
+    if known_failure:
+        return "unexpected pass" if passed else "known failure"
+    return "pass" if passed else "fail"
+
+
+def _finite(value):
+    return value if isinstance(value, float) and math.isfinite(value) else None
+
+
+def run_case(case) -> dict:
+    """One case as a JSON-ready dict with its ``verdict`` (an exception is an "error")."""
+    out = {"source": case.source, "quantity": case.quantity, "published": case.published,
+           "computed": None, "unit": case.unit, "error_percent": None, "passed": False,
+           "known_failure": case.known_failure, "tolerance_percent": case.rel_tol * 100.0,
+           "tolerance_reason": case.tolerance_reason, "error": None}
+    try:
+        result = case.run()
+    except Exception as exc:  # noqa: BLE001 - a broken case is reported, the others still run
+        out["error"] = f"{type(exc).__name__}: {exc}"
+        out["verdict"] = verdict(None, case.known_failure)
+        return out
+    out.update(computed=_finite(result.computed), error_percent=_finite(result.error_percent),
+               passed=bool(result.passed))
+    out["verdict"] = verdict(result.passed, case.known_failure)
+    return out
+
+
+def summarize(results: list[dict], seconds: float) -> dict:
+    """Counts by verdict and ``ok`` (every case passed or failed as documented)."""
+    count = {v: sum(r["verdict"] == v for r in results)
+             for v in ("pass", "known failure", "fail", "unexpected pass", "error")}
+    return {"total": len(results), "passed": count["pass"],
+            "known_failures": count["known failure"], "failed": count["fail"],
+            "unexpected_passes": count["unexpected pass"], "errors": count["error"],
+            "ok": all(r["verdict"] in GOOD_VERDICTS for r in results),
+            "duration_s": seconds}
+
+
+def _cell(value, digits: int = 5) -> str:
+    return "-" if value is None else f"{value:.{digits}g}"
+
+
+def _print(results: list[dict], summary: dict) -> None:
+    """One table per source, numbered reasons of the known failures and errors below."""
+    styles = {"pass": "green", "known failure": "yellow", "fail": "bold red",
+              "unexpected pass": "bold red", "error": "bold red"}
+    reasons: list[str] = []
+    sources: dict[str, list[dict]] = {}
+    for r in results:
+        sources.setdefault(r["source"], []).append(r)
+    for source, group in sources.items():
+        table = Table(title=escape(source), title_justify="left", title_style="bold",
+                      header_style="bold")
+        for name, justify in (("quantity", "left"), ("published", "right"),
+                              ("computed", "right"), ("unit", "left"), ("error %", "right"),
+                              ("tol. %", "right"), ("verdict", "left")):
+            table.add_column(name, justify=justify, overflow="fold",
+                             no_wrap=name in ("verdict", "published", "computed"))
+        for r in group:
+            note = r["known_failure"] if r["verdict"] == "known failure" else r["error"]
+            text = r["verdict"]
+            if note:
+                if note not in reasons:
+                    reasons.append(note)
+                text += f" [{reasons.index(note) + 1}]"
+            table.add_row(escape(r["quantity"]), _cell(r["published"]), _cell(r["computed"]),
+                          escape(r["unit"]), _cell(r["error_percent"], 3),
+                          _cell(r["tolerance_percent"], 3),
+                          f"[{styles[r['verdict']]}]{escape(text)}[/]")
+        console.print(table)
+    for i, text in enumerate(reasons, start=1):
+        console.print(f"[dim]\\[{i}] {escape(text)}[/dim]")
+    s = summary
+    line = (f"{s['total']} cases: {s['passed']} pass, {s['known_failures']} known failures "
+            f"(documented), {s['failed']} fail, {s['unexpected_passes']} unexpected passes, "
+            f"{s['errors']} errors ({s['duration_s']:.1f} s)")
+    console.print(f"[{'green' if s['ok'] else 'bold red'}]{escape(line)}[/]")
+
+
+@app.command("validate")
+def validate_command(
+        json_output: JsonOpt = False,
+        html: Annotated[Path | None, typer.Option(
+            "--html", help="Also write the table as one self-contained HTML page.",
+            show_default=False)] = None):
+    """Run every published case bearinglab reproduces (seed papers, data-set frequency
+    factors, textbook examples, catalogue ratings) and show published and computed
+    values, error and verdict: pass, fail, or known failure (a documented
+    non-reproduction, with its reason). Exit code 0 when every case passes or fails as
+    documented; 1 when a case that should pass fails (or raises), or a known failure
+    unexpectedly passes. Some cases run simulations: expect a minute or two."""
+    from .. import validation
+
+    if html is not None and (html.suffix.lower() not in (".html", ".htm")
+                             or not html.parent.is_dir()):
+        raise OptionError("--html", str(html), "a file name ending in .html or .htm in an "
+                          "existing directory")
+    cases = validation.all_cases()
+    err = Console(stderr=True)
+    start = time.perf_counter()
+    results = []
+    with Progress(TextColumn("validate"), BarColumn(), TextColumn("{task.completed}/"
+                                                                  "{task.total}"),
+                  TimeElapsedColumn(), TextColumn("{task.description}"), console=err,
+                  transient=True, disable=not err.is_terminal) as progress:
+        task = progress.add_task("", total=len(cases))
+        for case in cases:
+            progress.update(task, description=escape(f"{case.source}: {case.quantity}"[:60]))
+            results.append(run_case(case))
+            progress.advance(task)
+    summary = summarize(results, time.perf_counter() - start)
+    if html is not None:
+        _write_html(html, results, summary)
+    if json_output:
+        _emit_json({"cases": results, "summary": summary})
+    else:
+        _print(results, summary)
+        if html is not None:
+            console.print(f"HTML written to {escape(str(html))}")
+    if not summary["ok"]:
+        raise typer.Exit(code=1)
+
+
+def _write_html(path: Path, results: list[dict], summary: dict) -> None:
+    from .. import __version__
+    from ..files import write_atomically
+    from ..report import validation_page
+
+    now = datetime.datetime.now().strftime("%Y-%m-%d %H:%M")
+    text = validation_page(results, summary, f"generated {now} by bearinglab {__version__} "
+                                             f"in {summary['duration_s']:.1f} s")
+    try:
+        write_atomically(path, lambda tmp: Path(tmp).write_text(text, encoding="utf-8"))
+    except OSError as exc:
+        raise OptionError("--html", str(path), "a writable file",
+                          exc.strerror or type(exc).__name__) from None

@@ -1,0 +1,157 @@
+"""Build an engineer's report of one bearing at one operating point."""
+
+from __future__ import annotations
+
+import datetime
+import math
+from collections.abc import Callable
+
+from ..errors import InputError
+from ..geometry import BallBearing
+from ..operating import OperatingCondition
+from . import mechanics, operation, vibration
+from .context import Context
+from .document import Report, Section
+
+#: The sections in page order: key, title, function(Context) -> (html, highlights).
+SECTIONS = (
+    ("identity", "Identity and geometry", mechanics.identity),
+    ("load-distribution", "Load distribution", mechanics.load_distribution),
+    ("contact", "Contact pressures and ellipses", mechanics.contact),
+    ("stiffness", "Stiffness and its variation with load", mechanics.stiffness),
+    ("ring-resonances", "Ring resonances", mechanics.rings),
+    ("defect-frequencies", "Defect frequencies", vibration.frequencies),
+    ("envelope-spectrum", "Simulated envelope spectrum", vibration.envelope),
+    ("vibration-bands", "Vibration bands (ISO 15242)", vibration.bands),
+    ("noise", "Sound pressure level", vibration.noise),
+    ("friction", "Friction torque and power loss", operation.friction),
+    ("life", "Rating life", operation.life),
+)
+#: ISO 15242's top band edge at 1800 rpm [Hz]; the default sample rate resolves it.
+_TOP_BAND_HZ = 10e3
+
+
+def default_sample_rate(shaft_speed: float) -> float:
+    """Sample rate for the simulated signal [Hz]: at least 25.6 kHz and 2.56 times the top
+    ISO 15242 band edge at this speed, so the velocity bands can be read from it.
+
+    >>> default_sample_rate(1800 * math.pi / 30)
+    25600.0
+    """
+    top = _TOP_BAND_HZ * shaft_speed * 30.0 / math.pi / 1800.0
+    return float(max(25.6e3, math.ceil(2.56 * top / 100.0) * 100.0))
+
+
+def _viscosity(lubricant, viscosity):
+    from ..lubrication import LUBRICANTS, ZERO_CELSIUS, Lubricant
+
+    if viscosity is not None:
+        if not (math.isfinite(viscosity) and viscosity > 0):
+            raise InputError("viscosity", viscosity, "a kinematic viscosity > 0 [m^2/s]")
+        return float(viscosity), "given"
+    if lubricant is None:
+        return None, ""
+    if isinstance(lubricant, str):
+        if lubricant not in LUBRICANTS:
+            raise InputError("lubricant", lubricant, "one of " + ", ".join(LUBRICANTS))
+        lubricant = LUBRICANTS[lubricant]
+    if not isinstance(lubricant, Lubricant):
+        raise InputError("lubricant", lubricant, "a Lubricant or a built-in lubricant's name")
+    t = lubricant.reference_temperature
+    return (float(lubricant.kinematic_viscosity(t)),
+            f"{lubricant.name} at its reference temperature {t - ZERO_CELSIUS:.4g} degC")
+
+
+def build_report(bearing: BallBearing, condition: OperatingCondition, *, designation=None,
+                 defects=None, lubricant="iso-vg68", viscosity: float | None = None,
+                 duration: float = 1.0, sample_rate: float | None = None,
+                 slip_duration: float = 0.1,
+                 progress: Callable[[str, int, int], None] | None = None) -> Report:
+    """An HTML report of ``bearing`` under ``condition``: geometry and its sources, load
+    distribution, contact, stiffness, ring resonances, defect frequencies, a simulated
+    envelope spectrum, vibration bands, sound, friction and life.
+
+    Each section's analysis runs on its own: one that fails shows its error in the page
+    (``Report.failed`` lists them) and the others still run.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing (e.g. from :func:`bearinglab.catalog.bearing_from_designation`).
+    condition : OperatingCondition
+        Loads and the shaft speed (> 0) [N, rad/s].
+    designation : bearinglab.designation.Designation, optional
+        The decoded designation, shown in the identity section.
+    defects : sequence of Defect, optional
+        Defects to simulate; None or empty: an example outer-race defect, said so.
+    lubricant : str or Lubricant or None
+        For the viscosity of the SKF friction model and a_ISO (at its reference
+        temperature); a built-in name (``bearinglab.lubrication.LUBRICANTS``).
+    viscosity : float, optional
+        Operating kinematic viscosity instead [m^2/s].
+    duration : float
+        Length of the simulated vibration record (rigid model) [s].
+    sample_rate : float, optional
+        Its sample rate [Hz]; default :func:`default_sample_rate`.
+    slip_duration : float
+        Length of the slip-model run for the frequencies with slip [s]; 0 skips it.
+    progress : callable, optional
+        Called as ``progress(title, done, total)`` before each section.
+
+    Returns
+    -------
+    Report
+    """
+    if not isinstance(bearing, BallBearing):
+        raise InputError("bearing", bearing, "a BallBearing")
+    if not condition.shaft_speed > 0:
+        raise InputError("shaft_speed", condition.shaft_speed, "a speed > 0 [rad/s]")
+    for name, value, zero in (("duration", duration, False), ("slip_duration", slip_duration,
+                                                              True)):
+        if not (math.isfinite(value) and (value >= 0 if zero else value > 0)):
+            raise InputError(name, value, "a duration >= 0 [s]" if zero
+                             else "a duration > 0 [s]")
+    rate = default_sample_rate(condition.shaft_speed) if sample_rate is None else sample_rate
+    nu, nu_source = _viscosity(lubricant, viscosity)
+    given = bool(defects)
+    chosen = tuple(defects) if given else (vibration.example_defect(bearing),)
+    for d in chosen:
+        d.check(bearing)
+    ctx = Context(bearing=bearing, condition=condition, designation=designation,
+                  defects=chosen, defects_given=given, viscosity=nu, viscosity_source=nu_source,
+                  duration=float(duration), sample_rate=float(rate),
+                  slip_duration=float(slip_duration))
+    sections = []
+    for i, (key, title, build) in enumerate(SECTIONS):
+        if progress is not None:
+            progress(title, i, len(SECTIONS))
+        try:
+            body, highlights = build(ctx)
+            sections.append(Section(key, title, body, highlights=list(highlights)))
+        except Exception as exc:  # noqa: BLE001 - one failed analysis must not sink the report
+            sections.append(Section(key, title, error=f"{type(exc).__name__}: {exc}"))
+    if progress is not None:
+        progress("done", len(SECTIONS), len(SECTIONS))
+    return _report(ctx, sections)
+
+
+def _report(ctx: Context, sections: list[Section]) -> Report:
+    from .. import __version__
+
+    b, c = ctx.bearing, ctx.condition
+    des = ctx.designation
+    name = b.name or (des.text if des is not None else "") or "ball bearing"
+    what = des.description if des is not None else b.bearing_type.replace("_", " ")
+    lines = [f"{what}",
+             f"{ctx.speed_rpm:g} rpm (inner ring), F_r = {c.radial_load:g} N, "
+             f"F_a = {c.axial_load:g} N"
+             + (f"; lubricant viscosity {ctx.viscosity * 1e6:.4g} mm2/s ({ctx.viscosity_source})"
+                if ctx.viscosity is not None else "")]
+    intro = ('<p class="small">Every number comes from a published method with stated '
+             "assumptions (each section names its model and source); values marked "
+             "<em>estimated</em> in the geometry are not the maker's. Run "
+             "<code>bearinglab validate</code> to see how bearinglab reproduces the published "
+             f"cases. Simulated record: {ctx.duration:g} s at {ctx.sample_rate:g} Hz.</p>")
+    now = datetime.datetime.now().strftime("%Y-%m-%d %H:%M")
+    return Report(title=f"bearinglab report: {name}", subtitle=lines, sections=sections,
+                  generated=now, version=__version__, intro=intro)

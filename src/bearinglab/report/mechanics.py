@@ -1,0 +1,249 @@
+"""Report sections of the bearing's mechanics: identity and geometry, load distribution,
+contact, stiffness and ring resonances. Each function takes the :class:`.Context` and
+returns ``(body_html, highlights)``; an exception fails only its own section."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..contact.ball_race import ball_contacts
+from ..operating import OperatingCondition
+from ..quasistatic import DOF_NAMES, solve_load_distribution
+from ..rings import ring_modes
+from .context import Context
+from .document import Raw, esc, figure, notes, number, paragraph, table
+
+#: Loads of the stiffness curve, as multiples of the operating load [-].
+LOAD_FACTORS = (0.25, 0.5, 0.75, 1.0, 1.25, 1.5, 2.0)
+#: Ring modes shown [-].
+RING_MODES = range(2, 7)
+
+_GEOMETRY = (  # field, label, symbol, SI -> shown factor, unit
+    ("bore", "bore", "d", 1e3, "mm"),
+    ("outside_diameter", "outside diameter", "D", 1e3, "mm"),
+    ("width", "width", "B", 1e3, "mm"),
+    ("ball_count", "number of balls", "Z", 1, "-"),
+    ("ball_diameter", "ball diameter", "D_w", 1e3, "mm"),
+    ("pitch_diameter", "pitch diameter", "d_m", 1e3, "mm"),
+    ("contact_angle", "nominal contact angle", "alpha", 180 / math.pi, "deg"),
+    ("inner_groove_factor", "inner groove factor", "f_i", 1, "-"),
+    ("outer_groove_factor", "outer groove factor", "f_o", 1, "-"),
+    ("diametral_clearance", "diametral clearance", "P_d", 1e6, "um"),
+)
+
+
+class _References:
+    """Numbers each distinct source reference once: cells read "catalog [1]"."""
+
+    def __init__(self) -> None:
+        self.refs: list[str] = []
+
+    def cell(self, source) -> str:
+        if source is None:
+            return "default"
+        if not source.reference:
+            return source.kind
+        if source.reference not in self.refs:
+            self.refs.append(source.reference)
+        return f"{source.kind} [{self.refs.index(source.reference) + 1}]"
+
+    def html(self) -> str:
+        if not self.refs:
+            return ""
+        items = "".join(f"<li>{esc(r)}</li>" for r in self.refs)
+        return f'<h3>Sources</h3><ol class="small">{items}</ol>'
+
+
+def identity(ctx: Context):
+    """The designation decoded and every geometry value with where it came from."""
+    b, des, parts = ctx.bearing, ctx.designation, []
+    if des is not None:
+        rows = [["designation", des.text], ["read as", f"{des.system.upper()}: {des.description}"]]
+        if des.iso_equivalent:
+            rows.append(["ISO equivalent", des.iso_equivalent])
+        if des.gost_equivalent:
+            rows.append(["GOST equivalent", des.gost_equivalent])
+        rows += [[f"part '{text}'", meaning] for text, meaning in des.parts]
+        parts.append(table(["", "meaning"], rows, "Designation", numeric=()))
+        parts.append(notes(list(des.notes), "About the designation"))
+    refs = _References()
+    rows = []
+    for name, label, symbol, factor, unit in _GEOMETRY:
+        value = getattr(b, name)
+        shown = None if value is None else (int(value) if name == "ball_count"
+                                            else float(value) * factor)
+        rows.append([label, symbol, shown, unit, Raw(esc(refs.cell(b.sources.get(name))))])
+    derived = [("inner raceway diameter", "d_i", b.inner_raceway_diameter * 1e3, "mm"),
+               ("outer raceway diameter", "d_o", b.outer_raceway_diameter * 1e3, "mm"),
+               ("free contact angle", "alpha_0", math.degrees(b.free_contact_angle), "deg"),
+               ("ball mass", "m_b", b.ball_mass * 1e3, "g")]
+    if None not in (b.bore, b.outside_diameter, b.width) and not b.is_thrust:
+        derived.append(("outer ring mass", "m_k", b.outer_ring_mass * 1e3, "g"))
+    rows += [[label, symbol, value, unit, "derived"] for label, symbol, value, unit in derived]
+    for name, label in (("ring_material", "ring material"), ("ball_material", "ball material")):
+        m = getattr(b, name)
+        rows.append([label, "E, nu, rho", (f"{m.elastic_modulus / 1e9:.4g} GPa, "
+                                           f"{m.poisson_ratio:.3g}, {m.density:.5g} kg/m3"), "",
+                     Raw(esc(refs.cell(b.sources.get(name))))])
+    parts.append(table(["quantity", "symbol", "value", "unit", "source"], rows,
+                       f"Geometry and materials (geometry source: {b.geometry_source})",
+                       numeric=(2,)))
+    parts.append(refs.html())
+    label = b.name or (des.text if des is not None else "bearing")
+    highlights = [("Bearing", label), ("Geometry", b.geometry_source)]
+    return "".join(parts), highlights
+
+
+def load_distribution(ctx: Context):
+    """Quasi-static load distribution at the operating point (polar plot of ball loads)."""
+    r = solve_load_distribution(ctx.bearing, ctx.condition)
+    ctx.results["load"] = r
+    d = r.to_dict()
+    balls = r.ball_table()
+    loaded = int((balls["inner_load_n"] > 0).sum())
+    summary = [["radial displacement S_r", d["radial_displacement_um"], "um"],
+               ["axial displacement S_a", d["axial_displacement_um"], "um"],
+               ["largest ball load Q_max", d["max_ball_load_n"], "N"],
+               ["balls loaded at the inner ring", loaded, f"of {ctx.bearing.ball_count}"],
+               ["radial stiffness C_r = dF_r/dS_r", d["radial_stiffness_n_per_um"], "N/um"],
+               ["axial stiffness C_a = dF_a/dS_a", d["axial_stiffness_n_per_um"], "N/um"],
+               ["diametral clearance P_d", d["diametral_clearance_um"], "um"],
+               ["equilibrium residual", d["equilibrium_residual_n"], "N"]]
+    rows = [[int(row.ball), row.angle_deg, row.inner_load_n, row.outer_load_n,
+             row.inner_contact_angle_deg, row.inner_max_pressure_gpa, row.outer_max_pressure_gpa]
+            for row in balls.itertuples(index=False)]
+    body = [paragraph("Quasi-static equilibrium of the inner ring under the applied loads, "
+                      "with clearance and the balls' centrifugal force (seed 001's model; "
+                      "bearinglab.quasistatic.solve_load_distribution). Ball 1 sits under "
+                      "the radial load, which acts downwards (-y)."),
+            table(["quantity", "value", "unit"], [*summary], "Operating point", numeric=(1,)),
+            figure(r.plot()[0], "Ball loads at their angular positions (polar) and the "
+                                "contact angle of each ball"),
+            table(["ball", "angle [deg]", "inner load [N]", "outer load [N]",
+                   "inner contact angle [deg]", "inner p_max [GPa]", "outer p_max [GPa]"],
+                  rows, "Per ball"),
+            notes(list(r.warnings), "Warnings")]
+    highlights = [("Largest ball load", f"{number(d['max_ball_load_n'], 3)} N"),
+                  ("Radial stiffness", f"{number(d['radial_stiffness_n_per_um'], 3)} N/um")]
+    return "".join(body), highlights
+
+
+def contact(ctx: Context):
+    """Hertz contact of the most loaded ball with both raceways."""
+    r = ctx.need("load", "load distribution")
+    q = float(np.max(r.load))
+    if q <= 0:
+        raise ValueError("no ball carries load at this operating point")
+    c = ball_contacts(ctx.bearing, q)
+    d = c.to_dict()
+    keys = (("semi-major axis a", "semi_major_mm", "mm"), ("semi-minor axis b", "semi_minor_mm",
+                                                          "mm"),
+            ("ellipticity k = a/b", "ellipticity", "-"),
+            ("maximum pressure p_max", "max_pressure_gpa", "GPa"),
+            ("mean pressure", "mean_pressure_gpa", "GPa"),
+            ("approach delta", "approach_um", "um"),
+            ("contact stiffness dQ/d(delta)", "stiffness_n_per_um", "N/um"))
+    rows = [[label, d["inner"][k], d["outer"][k], unit] for label, k, unit in keys]
+    body = [paragraph(f"Hertz point contact of the most loaded ball (Q = {q:.4g} N) with the "
+                      f"inner and outer raceways at the nominal contact angle "
+                      f"{d['contact_angle_deg']:.3g} deg (exact elliptic integrals; "
+                      "bearinglab.contact.ball_contacts)."),
+            table(["quantity", "inner", "outer", "unit"], rows, f"Contacts at Q = {q:.4g} N",
+                  numeric=(1, 2)),
+            figure(c.plot()[0], "Maximum pressure and approach against ball load, and the "
+                                "contact ellipses at the largest ball load"),
+            notes(list(c.warnings), "Warnings")]
+    p = max(d["inner"]["max_pressure_gpa"], d["outer"]["max_pressure_gpa"])
+    return "".join(body), [("Max contact pressure", f"{number(p, 3)} GPa")]
+
+
+def _condition(ctx: Context, factor: float, along: str) -> OperatingCondition:
+    c = ctx.condition
+    kwargs = {"radial_load": c.radial_load, "axial_load": c.axial_load,
+              "shaft_speed": c.shaft_speed, "radial_load_angle": c.radial_load_angle}
+    kwargs[along] = factor * kwargs[along]
+    return OperatingCondition(**kwargs)
+
+
+def stiffness(ctx: Context):
+    """Stiffness at the operating point (5x5) and its variation with the load."""
+    r = ctx.need("load", "load distribution")
+    along = "radial_load" if ctx.condition.radial_load > 0 else "axial_load"
+    symbol = "F_r" if along == "radial_load" else "F_a"
+    rows, loads, cr, ca, sr = [], [], [], [], []
+    guess = None
+    for k in LOAD_FACTORS:
+        cond = _condition(ctx, k, along)
+        s = r if k == 1.0 else solve_load_distribution(ctx.bearing, cond, initial=guess)
+        guess = s.displacement
+        d = s.to_dict()
+        load = getattr(cond, along)
+        loads.append(load)
+        cr.append(d["radial_stiffness_n_per_um"])
+        ca.append(d["axial_stiffness_n_per_um"])
+        sr.append(d["radial_displacement_um"] if along == "radial_load"
+                  else d["axial_displacement_um"])
+        rows.append([k, load, sr[-1], cr[-1], ca[-1], d["max_ball_load_n"]])
+    from ..plotting import _pyplot
+
+    fig, ax = _pyplot().subplots(1, 2, figsize=(11, 3.8))
+    ax[0].plot(loads, cr, "o-", label="radial C_r")
+    ax[0].plot(loads, ca, "s--", label="axial C_a")
+    ax[0].set_ylabel("stiffness [N/um]")
+    ax[1].plot(loads, sr, "o-", color="C2")
+    ax[1].set_ylabel(f"{'radial S_r' if along == 'radial_load' else 'axial S_a'} [um]")
+    for a in ax:
+        a.axvline(getattr(ctx.condition, along), color="0.6", ls=":", lw=1)
+        a.set_xlabel(f"{symbol} [N] (dotted: operating load)")
+        a.grid(alpha=0.3)
+    ax[0].legend(fontsize=8)
+    fig.tight_layout()
+    names = list(DOF_NAMES)
+    k = np.asarray(r.stiffness_matrix, dtype=float)
+    k = np.where(np.abs(k) < 1e-9 * np.max(np.abs(k)), 0.0, k)   # solver round-off
+    matrix = [[n, *[float(v) for v in row]] for n, row in zip(names, k)]
+    body = [paragraph(f"Tangent stiffness of the bearing at {symbol} from "
+                      f"{LOAD_FACTORS[0]:g} to {LOAD_FACTORS[-1]:g} times the operating load "
+                      "(other loads and the speed held). Ball bearings stiffen as the load "
+                      "grows (Q ~ delta^1.5) and more balls take load."),
+            figure(fig, f"Stiffness and displacement against {symbol}"),
+            table(["x operating load", f"{symbol} [N]",
+                   "S_r [um]" if along == "radial_load" else "S_a [um]",
+                   "C_r [N/um]", "C_a [N/um]", "Q_max [N]"], rows, "Stiffness against load"),
+            table(["", *names], matrix, "5x5 tangent stiffness matrix at the operating point "
+                  "(SI: N/m, N/rad, N m/m, N m/rad)")]
+    return "".join(body), []
+
+
+def rings(ctx: Context):
+    """Natural frequencies of the outer ring in the loaded bearing (seed 000)."""
+    r = ctx.need("load", "load distribution")
+    k = float(r.radial_stiffness)
+    if not k > 0:
+        raise ValueError(f"the radial stiffness at the operating point is {k:g} N/m: the ring "
+                         "is not supported by the balls in the radial direction")
+    m = ring_modes(ctx.bearing, radial_stiffness=k, modes=RING_MODES)
+    d = m.to_dict()
+    rows = [[1, None, d["rigid_body_khz"], None, "ring as a rigid body on the ball springs"]]
+    for mode in d["modes"]:
+        rows.append([mode["m"], mode["free_khz"], ", ".join(f"{f:.4g}" for f in
+                                                           mode["approx_khz"]),
+                     ", ".join(f"{f:.4g}" for f in mode["refined_khz"]),
+                     "balls at nodes / antinodes" if mode["split"] else ""])
+    body = [paragraph("Flexural modes of the outer ring supported by the loaded balls "
+                      "(seed 000, Balmont & Varlamov 1986): the free-ring frequency f*_m of "
+                      "our ring section, eq. (1.9)'s approximate loaded frequency and the "
+                      "refined solution with the balls' mass (eqs. 3.3-3.10). The ball "
+                      f"springs' radial stiffness K_x = {k / 1e6:.4g} N/um is the tangent "
+                      "radial stiffness of the load distribution at the operating point; the "
+                      f"vibrating mass is the bare outer ring ({d['ring_mass_kg'] * 1e3:.4g} "
+                      f"g, no housing or sensors), kappa = {d['ball_mass_ratio']:.3g}."),
+            table(["mode m", "free f*_m [kHz]", "approximate [kHz]", "refined [kHz]", "note"],
+                  rows, "Outer-ring natural frequencies", numeric=(1, 2, 3)),
+            figure(m.plot()[0], "Ring natural frequencies by mode number", 80),
+            notes([("The outer ring vibrates on the balls alone, as in the paper's test (a "
+                    "ring hung free): a ring pressed into a housing vibrates with the housing, "
+                    "and its resonances are then those of the assembly.")], "Assumptions")]
+    return "".join(body), [("Ring mode m=2", f"{number(d['modes'][0]['approx_khz'][0], 3)} kHz")]

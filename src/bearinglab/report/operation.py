@@ -1,0 +1,76 @@
+"""Report sections of running the bearing: friction torque and power loss, rating life.
+Each function takes the :class:`.Context` and returns ``(body_html, highlights)``."""
+
+from __future__ import annotations
+
+from ..friction import bearing_friction
+from ..life import rating_life
+from .context import Context
+from .document import figure, notes, number, paragraph, table
+
+
+def friction(ctx: Context):
+    """Friction torque and power loss: seed 003's constant coefficient and the SKF model."""
+    c, b = ctx.condition, ctx.bearing
+    fa = abs(c.axial_load)
+    constant = bearing_friction(b, c.shaft_speed, c.radial_load, fa, model="constant")
+    rows = [["constant coefficient (seed 003, M = mu P d_m / 2)",
+             constant.torque * 1e3, constant.power_loss]]
+    said, skf = list(constant.warnings), None
+    if ctx.viscosity is None:
+        said.append("SKF model not run: no lubricant viscosity.")
+    else:
+        try:
+            skf = bearing_friction(b, c.shaft_speed, c.radial_load, fa, model="skf",
+                                   viscosity=ctx.viscosity)
+        except Exception as exc:  # noqa: BLE001 - e.g. no SKF constants for this type: keep the other
+            said.append(f"SKF model not run: {type(exc).__name__}: {exc}")
+    body = [paragraph(f"Friction at {ctx.speed_rpm:g} rpm, F_r = {c.radial_load:g} N, "
+                      f"F_a = {c.axial_load:g} N (bearinglab.friction.bearing_friction).")]
+    if skf is not None:
+        d = skf.to_dict()
+        rows.append(["SKF four-component model", skf.torque * 1e3, skf.power_loss])
+        said += list(skf.warnings)
+        parts = [[k.replace("_", " "), v * 1e3, 100.0 * v / skf.torque if skf.torque else None]
+                 for k, v in skf.components.items()]
+        body.append(table(["model", "friction torque [N mm]", "power loss [W]"], rows,
+                          "Friction torque and power loss"))
+        body.append(paragraph(f"SKF model with the viscosity {d['viscosity_mm2_s']:.4g} mm2/s "
+                              f"({ctx.viscosity_source or 'given'}): viscosity ratio kappa = "
+                              f"{d['viscosity_ratio']:.3g}."))
+        body.append('<div class="two">' + table(
+            ["SKF component", "torque [N mm]", "share [%]"], parts, "SKF model components")
+            + figure(skf.plot()[0], "SKF friction torque by component") + "</div>")
+    else:
+        body.append(table(["model", "friction torque [N mm]", "power loss [W]"], rows,
+                          "Friction torque and power loss"))
+    body.append(notes(said, "Notes"))
+    best = skf or constant
+    return "".join(body), [("Friction torque", f"{number(best.torque * 1e3, 3)} N mm"),
+                           ("Power loss", f"{number(best.power_loss, 3)} W")]
+
+
+def life(ctx: Context):
+    """Load ratings and rating life (ISO 281, modified with a_ISO when the viscosity is
+    known)."""
+    r = rating_life(ctx.bearing, ctx.condition, viscosity=ctx.viscosity)
+    table_ = r.to_pandas()
+    rows = [[q, v, u] for q, v, u in table_[["quantity", "value", "unit"]]
+            .itertuples(index=False)]
+    d = r.to_dict()
+    said = list(r.warnings)
+    if ctx.viscosity is not None:
+        said.append(f"Viscosity {ctx.viscosity * 1e6:.4g} mm2/s: {ctx.viscosity_source}.")
+    body = [paragraph("Basic dynamic and static load ratings from the internal geometry "
+                      "(ISO 281:2007, ISO 76:2006), the equivalent loads with ISO 281's X "
+                      "and Y, the basic rating life L10 = (C/P)^3 and, with the lubricant's "
+                      "viscosity, the modified life a_1 a_ISO L10 (bearinglab.life)."),
+            '<div class="two">' + table(["quantity", "value", "unit"], rows, "Rating life",
+                                        numeric=(1,))
+            + figure(r.plot()[0], "Basic rating life against the equivalent load") + "</div>",
+            notes(said, "Notes")]
+    out = [("L10 life", f"{number(d['l10_hours'], 3)} h")]
+    if d.get("l10m_hours") is not None:
+        out.append(("Modified life L10m", f"{number(d['l10m_hours'], 3)} h"))
+    out.append(("Static safety s0", number(d["static_safety_factor"], 3)))
+    return "".join(body), out

@@ -1,0 +1,28 @@
+"""Atomic writes: a whole file with an ordinary file's mode, or none."""
+
+import os
+import stat
+
+import pytest
+
+from bearinglab.files import write_atomically
+
+
+def test_written_file_has_the_umask_mode(tmp_path):
+    old = os.umask(0o022)
+    try:
+        path = write_atomically(tmp_path / "out.txt", lambda tmp: open(tmp, "w").close())
+    finally:
+        os.umask(old)
+    assert stat.S_IMODE(path.stat().st_mode) == 0o644
+
+
+def test_failed_write_leaves_no_file(tmp_path):
+    def fail(tmp):
+        with open(tmp, "w") as f:
+            f.write("half")
+        raise RuntimeError("disk full")
+
+    with pytest.raises(RuntimeError):
+        write_atomically(tmp_path / "out.txt", fail)
+    assert list(tmp_path.iterdir()) == []
