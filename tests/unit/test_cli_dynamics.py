@@ -187,3 +187,79 @@ def test_analyze_missing_file(tmp_path, capsys):
     assert "SIGNAL_FILE" in err and str(missing) in err
     assert "--sample-rate-hz" in run_error(capsys, "analyze", str(missing), *ANALYZE,
                                            "--sample-rate-hz", "-1")
+
+
+# ------------------------------------------------------------------ form errors (issue 5)
+ER16K_BPFI_HZ = 158.31
+
+
+def _line(peaks, name, harmonic=1):
+    found = [p for p in peaks if p.get("matched") == name and p.get("harmonic") == harmonic]
+    return max(found, key=lambda p: p["amplitude"]) if found else None
+
+
+def test_simulate_with_inner_waviness_shows_its_line_in_the_plain_spectrum(capsys):
+    """Inner-race waviness of order Z = 9 under a radial load moves the ring at
+    Z (f_i - f_c) = BPFI: a line of the plain displacement spectrum (spectrum_peaks),
+    absent from the healthy bearing's."""
+    wavy = run_json(capsys, *SIM, "--waviness", "inner:order=9,amplitude_um=1")
+    healthy = run_json(capsys, *SIM)
+    for d in (wavy, healthy):
+        assert d["spectrum_channel"] == "disp_y" and d["spectrum_resolution_hz"] == 2.0
+        assert d["spectrum_peaks"]
+        assert {"frequency_hz", "amplitude", "matched", "harmonic"} <= d["spectrum_peaks"][0].keys()
+    line = _line(wavy["spectrum_peaks"], "bpfi")
+    assert line is not None and line["frequency_hz"] == pytest.approx(ER16K_BPFI_HZ, abs=2.0)
+    assert line["amplitude"] == max(p["amplitude"] for p in wavy["spectrum_peaks"])
+    assert _line(healthy["spectrum_peaks"], "bpfi") is None
+    assert wavy["imperfections"]["waviness"] == [
+        {"race": "inner", "order": 9, "amplitude_um": 1.0, "phase_deg": 0.0}]
+    assert healthy["imperfections"] is None
+    assert any("form errors" in w for w in wavy["warnings"])
+
+
+def test_outer_waviness_q_z_plus_1_raises_the_bpfo_line(capsys):
+    """Outer-race order q = kZ + 1 = 10 excites k Z f_c = BPFO, where the healthy
+    bearing's ball-pass line already is: match_peaks labels it bpfo, and it grows."""
+    wavy = run_json(capsys, *SIM, "--waviness", "outer:order=10,amplitude_um=1")
+    healthy = run_json(capsys, *SIM)
+    grown = _line(wavy["spectrum_peaks"], "bpfo")
+    plain = _line(healthy["spectrum_peaks"], "bpfo")
+    assert grown["frequency_hz"] == pytest.approx(BPFO_HZ, abs=2.0)
+    assert grown["amplitude"] > 1.5 * plain["amplitude"]
+
+
+def test_simulate_ball_size_errors_are_seeded(capsys):
+    one = run_json(capsys, *SIM, "--ball-size-error-um", "4", "--seed", "3")
+    again = run_json(capsys, *SIM, "--ball-size-error-um", "4", "--seed", "3")
+    errors = one["imperfections"]["ball_size_errors"]["ball_size_errors_um"]
+    assert len(errors) == 9 and errors == again["imperfections"]["ball_size_errors"][
+        "ball_size_errors_um"]
+    assert max(errors) - min(errors) <= 4.0 and max(abs(e) for e in errors) <= 2.0
+    assert one["spectrum_peaks"] == again["spectrum_peaks"]
+    # the errors turn with the cage: a line at the cage frequency (the healthy bearing
+    # has none there)
+    assert _line(one["spectrum_peaks"], "ftf") is not None
+    assert _line(run_json(capsys, *SIM)["spectrum_peaks"], "ftf") is None
+
+
+def test_simulate_plots_both_spectra(tmp_path, capsys):
+    png = tmp_path / "spectra.png"
+    assert main([*SIM, "--waviness", "outer:order=10,amplitude_um=1", "--plot", str(png)]) == 0
+    out = capsys.readouterr().out
+    assert "plain spectrum lines" in out and "form errors" in out
+    assert png.read_bytes()[:4] == b"\x89PNG"
+
+
+@pytest.mark.parametrize("args, words", [
+    (["--waviness", "ball:order=2,amplitude_um=0.1,ball=9"], ["a ball index in [0, 8]"]),
+    (["--waviness", "outer:amplitude_um=1"], ["--waviness", "order is required"]),
+    (["--surface3d", "outer:amplitude_um=0.1,length_circ_mm=-1,length_axial_mm=1"],
+     ["--surface3d", "length_circ_mm must be > 0"]),
+    (["--ball-size-error-um", "1,x"], ["--ball-size-error-um"]),
+    (["--spectrum-channel", "cage_speed"], ["--spectrum-channel"]),
+])
+def test_bad_form_error_options(capsys, args, words):
+    err = run_error(capsys, *SIM, *args)
+    for word in words:
+        assert word in err, err

@@ -133,3 +133,57 @@ def test_stiffness_map_function_refuses_negative_loads():
     b = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3)
     with pytest.raises(InputError, match="radial_loads"):
         stiffness_map(b, [-1.0, 100.0], [0.0], [0.0], workers=1)
+
+
+# ------------------------------------------------------------------ orbits (issue 5)
+B608 = ["static", "608", "--radial-load-n", "50"]
+
+
+def test_static_orbit_over_one_ball_spacing(capsys):
+    d = run_json(capsys, *B608, "--orbit")
+    assert d["orbit_kind"] == "ball_set"
+    assert len(d["orbit"]["x_um"]) == 25                    # 24 steps, both ends
+    assert d["orbit"]["ball_phase_deg"][-1] - d["orbit"]["ball_phase_deg"][0] == \
+        pytest.approx(360 / 7)
+    assert 0 < d["orbit_peak_to_peak_um"] == pytest.approx(d["orbit"]["orbit_peak_to_peak_um"])
+
+
+def test_static_orbit_with_waviness_runs_in_time(tmp_path, capsys):
+    plain = run_json(capsys, *B608, "--speed-rpm", "720", "--orbit")
+    png = tmp_path / "orbit.png"
+    d = run_json(capsys, *B608, "--speed-rpm", "720", "--waviness",
+                 "outer:order=8,amplitude_um=0.5", "--orbit-points", "64", "--orbit-plot",
+                 str(png))
+    assert d["orbit_kind"] == "time" and len(d["orbit"]["time_s"]) == 64
+    assert d["orbit"]["cage_hz"] == pytest.approx(4.46, abs=0.01)
+    # q = Z + 1 on the outer race moves the ring at Z f_c, more than a perfect bearing's
+    # ball passage does (0.77 um: the ball-set orbit)
+    assert d["orbit_peak_to_peak_um"] > 1.3 * plain["orbit_peak_to_peak_um"]
+    assert d["imperfections"]["waviness"][0]["order"] == 8
+    assert len(d["effective_diameter_error_um"]) == 7 and d["seed"] == 0
+    assert png.read_bytes()[:4] == b"\x89PNG"
+
+
+def test_static_with_form_errors_changes_the_load_distribution(capsys):
+    plain = run_json(capsys, *B608)
+    wavy = run_json(capsys, *B608, "--waviness", "inner:order=7,amplitude_um=2,phase_deg=90")
+    # order Z on the inner race: at t = 0 (ball 0 at -90 deg, under the load) every ball
+    # sits in a trough, cos(7 (-90 deg) + 90 deg) = -1: the ring drops by about 2 um
+    assert wavy["effective_diameter_error_um"] == pytest.approx([-2.0] * 7)
+    shift = wavy["radial_displacement_um"] - plain["radial_displacement_um"]
+    assert shift == pytest.approx(2.0, abs=0.5)
+    assert "orbit" not in wavy
+
+
+@pytest.mark.parametrize("args, flag", [
+    (["--waviness", "inner:order=7,amplitude_um=0.5", "--orbit"], "--speed-rpm"),
+    (["--orbit-points", "1", "--orbit"], "--orbit-points"),
+    (["--orbit-plot", "orbit.txt"], "--orbit-plot"),
+    (["--waviness", "outer:order=7"], "--waviness"),
+    (["--ball-size-error-um", "-2"], "--ball-size-error-um"),
+])
+def test_bad_orbit_and_form_error_options(tmp_path, monkeypatch, capsys, args, flag):
+    monkeypatch.chdir(tmp_path)
+    code = main([*B608, *args])
+    err = capsys.readouterr().err
+    assert code == 2 and err.startswith("error: ") and flag in err and err.count("\n") == 1

@@ -10,6 +10,7 @@ from . import (  # noqa: F401  (register the commands)
     foundation,
     friction,
     life,
+    noise,
     quasistatic,
     report,
     validate,

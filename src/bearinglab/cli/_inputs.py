@@ -405,3 +405,109 @@ def _geometry_line(bearing: BallBearing, contact_angle: float | None = None) -> 
 def _print_warnings(warnings: list[str]) -> None:
     for text in warnings:
         console.print(f"[yellow]warning:[/yellow] {escape(text)}")
+
+
+# ------------------------------------------------------------------ KEY=VALUE specifications
+#: Kinds of value a specification key takes: kind -> what it must be.
+_SPEC_KINDS = ("number", "positive", "nonnegative", "index", "order")
+
+
+def parse_spec(text: str, flag: str, allowed: str, keys: dict[str, dict[str, str]], *,
+               noun: str, word: str = "location",
+               required: tuple[str, ...] = ()) -> tuple[str, dict]:
+    """Read one ``PREFIX:KEY=VALUE,...`` specification (--defect, --waviness, --surface3d).
+
+    Parameters
+    ----------
+    text : str
+        The specification as typed.
+    flag : str
+        The option, for the error (e.g. ``--defect``).
+    allowed : str
+        What the option accepts (the error's "expected ...").
+    keys : dict
+        Prefix (lower case) -> {key: kind}; kinds: ``number`` (finite), ``positive``
+        (> 0), ``nonnegative`` (>= 0), ``index`` (whole number >= 0), ``order`` (whole
+        number >= 1).
+    noun : str
+        What the prefix qualifies, for "unknown key 'x' for outer {noun}".
+    word : str
+        What the prefix is called ("location", "race").
+    required : tuple of str
+        Keys that must be given.
+
+    Returns
+    -------
+    (prefix, {key: int or float})
+        In the option's units (no conversion).
+
+    Raises
+    ------
+    OptionError
+        One line naming the option, the specification and the part that is wrong.
+
+    >>> parse_spec("Inner : order=7, amplitude_um=0.5", "--waviness", "...",
+    ...            {"inner": {"order": "order", "amplitude_um": "nonnegative"}},
+    ...            noun="waviness", word="race")
+    ('inner', {'order': 7, 'amplitude_um': 0.5})
+    """
+    def bad(hint: str) -> OptionError:
+        return OptionError(flag, text, allowed, hint)
+
+    prefix, sep, rest = text.strip().partition(":")
+    prefix = prefix.strip().lower()
+    if prefix not in keys:
+        raise bad(f"unknown {word} {prefix!r}")
+    if not sep or not rest.strip():
+        need = (f"; {', '.join(required)} {'is' if len(required) == 1 else 'are'} required"
+                if required else "")
+        raise bad(f"no KEY=VALUE given{need}")
+    values: dict = {}
+    for item in rest.split(","):
+        key, eq, value = (s.strip() for s in item.partition("="))
+        kind = keys[prefix].get(key)
+        if kind is None:
+            raise bad(f"unknown key {key!r} for {prefix} {noun} (keys: "
+                      f"{', '.join(keys[prefix])})")
+        if not eq or not value:
+            raise bad(f"{key} has no value")
+        if key in values:
+            raise bad(f"{key} given twice")
+        if kind in ("index", "order"):
+            try:
+                number = int(value)
+            except ValueError:
+                raise bad(f"{key} = {value!r} is not a whole number") from None
+            least = 0 if kind == "index" else 1
+            if number < least:
+                raise bad(f"{key} must be >= {least}")
+        else:
+            try:
+                number = float(value)
+            except ValueError:
+                raise bad(f"{key} = {value!r} is not a number") from None
+            if not math.isfinite(number):
+                raise bad(f"{key} must be finite")
+            if kind == "positive" and number <= 0:
+                raise bad(f"{key} must be > 0")
+            if kind == "nonnegative" and number < 0:
+                raise bad(f"{key} must be >= 0")
+        values[key] = number
+    for key in required:
+        if key not in values:
+            raise bad(f"{key} is required")
+    return prefix, values
+
+
+def save_plot_figure(fig, path: Path, flag: str = "--plot") -> None:
+    """Save a composed figure atomically (bearinglab.plotting.save_figure); an unwritable
+    path is a one-line error naming ``flag``."""
+    from ..plotting import save_figure
+
+    try:
+        save_figure(fig, path)
+    except OSError as exc:
+        raise OptionError(flag, str(path), "a writable file",
+                          exc.strerror or type(exc).__name__) from None
+    except InputError as exc:
+        raise OptionError(flag, str(path), exc.allowed) from None

@@ -11,18 +11,28 @@ from enum import Enum
 from pathlib import Path
 from typing import Annotated
 
+import numpy as np
 import typer
 from rich.console import Console
 from rich.markup import escape
 from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
-from ..diagnosis import analyze_signal, peak_label
+from ..diagnosis import COUNT, HARMONICS, analyze_signal, peak_label
 from ..dynamics import Defect, simulate
 from ..errors import BearinglabError, InputError
 from ..kinematics import FREQUENCY_NAMES, LONG_NAMES, defect_frequencies
 from ..operating import OperatingCondition
-from ..signal import SUFFIXES, read_signal, write_signal
+from ..signal import (
+    SUFFIXES,
+    amplitude_spectrum,
+    find_peaks,
+    match_peaks,
+    read_signal,
+    write_signal,
+)
+from ..signal.peaks import NAMES
 from ._app import app, console
+from ._forms import BallErrorOpt, FormErrors, Surface3dOpt, WavinessOpt
 from ._inputs import (
     MAX_LOAD_N,
     MAX_SPEED_RPM,
@@ -31,7 +41,9 @@ from ._inputs import (
     _geometry_line,
     _geometry_warnings,
     _print_warnings,
+    parse_spec,
     resolve_bearing,
+    save_plot_figure,
     with_geometry,
 )
 from ._output import _emit_json, _save_plot, _table
@@ -42,15 +54,18 @@ DesignationArg = Annotated[str | None, typer.Argument(
 PlotOpt = Annotated[Path | None, typer.Option(
     "--plot", help="Also draw the envelope spectrum to this .png, .svg or .pdf file.",
     show_default=False)]
+#: Channels whose plain spectrum ``simulate`` can read (both models have them).
+SPECTRUM_CHANNELS = ("disp_y", "disp_x", "acc_y", "acc_x")
 #: What a --defect specification may hold.
 DEFECT_ALLOWED = ("LOCATION:KEY=VALUE,... with LOCATION outer, inner or ball and keys "
                   "width_mm (> 0, required), depth_mm (> 0), angle_deg (outer: position from "
                   "+x towards +y, 270 = bottom; inner: position at t = 0; ball: spin phase) "
                   "and ball (ball index, ball defects only), e.g. "
                   "outer:width_mm=1.2,depth_mm=0.25")
-_DEFECT_KEYS = {"outer": ("width_mm", "depth_mm", "angle_deg"),
-                "inner": ("width_mm", "depth_mm", "angle_deg"),
-                "ball": ("width_mm", "depth_mm", "angle_deg", "ball")}
+_DEFECT_KEYS = {"outer": {"width_mm": "positive", "depth_mm": "positive", "angle_deg": "number"},
+                "inner": {"width_mm": "positive", "depth_mm": "positive", "angle_deg": "number"},
+                "ball": {"width_mm": "positive", "depth_mm": "positive", "angle_deg": "number",
+                         "ball": "index"}}
 
 
 class Model(str, Enum):
@@ -73,41 +88,8 @@ def parse_defect(text: str) -> Defect:
     >>> parse_defect("outer:width_mm=1.2,depth_mm=0.25").to_dict()["angle_deg"]
     -90.0
     """
-    location, sep, rest = text.strip().partition(":")
-    location = location.strip().lower()
-    if location not in _DEFECT_KEYS:
-        raise _bad_defect(text, f"unknown location {location!r}")
-    if not sep or not rest.strip():
-        raise _bad_defect(text, "no KEY=VALUE given; width_mm is required")
-    values: dict = {}
-    for item in rest.split(","):
-        key, eq, value = (s.strip() for s in item.partition("="))
-        if key not in _DEFECT_KEYS[location]:
-            raise _bad_defect(text, f"unknown key {key!r} for {location} defects (keys: "
-                              f"{', '.join(_DEFECT_KEYS[location])})")
-        if not eq or not value:
-            raise _bad_defect(text, f"{key} has no value")
-        if key in values:
-            raise _bad_defect(text, f"{key} given twice")
-        if key == "ball":
-            try:
-                number = int(value)
-            except ValueError:
-                raise _bad_defect(text, f"ball = {value!r} is not a whole number") from None
-            if number < 0:
-                raise _bad_defect(text, "ball must be >= 0")
-        else:
-            try:
-                number = float(value)
-            except ValueError:
-                raise _bad_defect(text, f"{key} = {value!r} is not a number") from None
-            if not math.isfinite(number):
-                raise _bad_defect(text, f"{key} must be finite")
-            if key in ("width_mm", "depth_mm") and number <= 0:
-                raise _bad_defect(text, f"{key} must be > 0")
-        values[key] = number
-    if "width_mm" not in values:
-        raise _bad_defect(text, "width_mm is required")
+    location, values = parse_spec(text, "--defect", DEFECT_ALLOWED, _DEFECT_KEYS,
+                                  noun="defects", required=("width_mm",))
     kwargs = {"width": values["width_mm"] * 1e-3,
               "depth": values["depth_mm"] * 1e-3 if "depth_mm" in values else None}
     if "angle_deg" in values:  # into [-pi, pi): 270 deg is -90 deg, the bottom
@@ -143,8 +125,12 @@ def _check_path(flag: str, path: Path | None, suffixes: tuple[str, ...]) -> None
 
 # ------------------------------------------------------------------ output
 def _peak_rows(diag) -> list[list]:
+    return _peak_rows_of(diag.peaks)
+
+
+def _peak_rows_of(peaks) -> list[list]:
     rows = []
-    for p in diag.peaks:
+    for p in peaks:
         deviation = p.get("deviation")
         rows.append([p["frequency_hz"], p["amplitude"], peak_label(p),
                      None if deviation is None else 100.0 * deviation])
@@ -173,9 +159,58 @@ def _print_diagnosis(diag, title: str) -> None:
 
 
 def _peaks_json(diag) -> list[dict]:
+    return peaks_json(diag.peaks)
+
+
+def peaks_json(peaks) -> list[dict]:
+    """Labelled lines (:func:`bearinglab.signal.match_peaks`) in the JSON form of
+    ``peaks``: frequency_hz, amplitude, matched, harmonic, deviation and sideband keys."""
     keys = ("frequency_hz", "amplitude", "matched", "harmonic", "deviation", "sideband_of",
             "sideband_harmonic", "sideband_order", "modulation")
-    return [{k: p[k] for k in keys if k in p} for p in diag.peaks]
+    return [{k: p[k] for k in keys if k in p} for p in peaks]
+
+
+def spectrum_lines(x, sample_rate: float, kin, max_frequency: float, *,
+                   count: int = COUNT, harmonics: int = HARMONICS, prominence: float = 4.0,
+                   slip_tolerance: float = 0.08):
+    """The plain (Hann, whole-record) amplitude spectrum of ``x`` and its largest lines up
+    to ``max_frequency`` matched to the shaft and defect frequencies of ``kin`` as in the
+    envelope analysis (:func:`bearinglab.signal.find_peaks`, :func:`match_peaks` with a
+    window of at least one bin). Returns (Spectrum, labelled lines)."""
+    spec = amplitude_spectrum(x, sample_rate)
+    lines = find_peaks(spec, count=count, max_frequency=max_frequency, prominence=prominence)
+    matched = match_peaks(lines, {name: kin.hz(name) for name in NAMES}, harmonics=harmonics,
+                          slip_tolerance=slip_tolerance, resolution=spec.resolution)
+    return spec, matched
+
+
+def draw_spectrum(ax, spec, lines, kin, max_frequency: float, *, title: str, ylabel: str,
+                  names=("shaft", "ftf", "bpfo", "bpfi", "ball_defect"),
+                  harmonics: int = HARMONICS) -> None:
+    """A plain spectrum up to ``max_frequency`` with the kinematic lines and their
+    harmonics marked and the labelled peaks annotated."""
+    f, a = spec.frequency, spec.amplitude
+    shown = f <= max_frequency
+    ax.plot(f[shown], a[shown], color="0.3", lw=0.8, label="spectrum")
+    top = float(np.max(a[shown])) if np.any(shown) else 1.0
+    for i, name in enumerate(names):
+        base = kin.hz(name)
+        marks = np.arange(1, harmonics + 1) * base
+        marks = marks[marks <= max_frequency]
+        if marks.size:
+            ax.vlines(marks, 0, 1.05 * top, colors=f"C{i}", linestyles="--", lw=0.8, alpha=0.7,
+                      label=f"{name.upper()} {base:.2f} Hz and harmonics")
+    for p in lines:
+        label = peak_label(p)
+        ax.plot(p["frequency_hz"], p["amplitude"], "o", ms=4, color="k" if label == "-" else "C3")
+        ax.annotate(label, (p["frequency_hz"], p["amplitude"]), textcoords="offset points",
+                    xytext=(2, 4), fontsize=7, rotation=60)
+    ax.set_title(title)
+    ax.set_xlabel("frequency [Hz]")
+    ax.set_ylabel(ylabel)
+    ax.set_xlim(0, max_frequency)
+    ax.set_ylim(0, 1.25 * top)
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
 
 
 # ------------------------------------------------------------------ simulate
@@ -206,14 +241,27 @@ def simulate_command(
             "rigid, two cage revolutions slip).", show_default=False)] = None,
         noise_ms2: Annotated[float, typer.Option(
             "--noise-ms2", help="RMS white noise added to the accelerations [m/s^2].")] = 0.0,
+        waviness: WavinessOpt = None, ball_size_error_um: BallErrorOpt = None,
+        surface3d: Surface3dOpt = None,
         seed: Annotated[int | None, typer.Option(
-            "--seed", help="Seed of the noise.", show_default=False)] = None,
+            "--seed", help="Seed of the noise (default: fresh noise) and of the random "
+            "form errors (--ball-size-error-um, --surface3d; default 0 for those).",
+            show_default=False)] = None,
+        spectrum_channel: Annotated[str, typer.Option(
+            "--spectrum-channel", help="Channel of the plain spectrum (spectrum_peaks): "
+            "disp_y, disp_x (inner ring relative to the outer: the form-error lines stand "
+            "out), acc_y or acc_x (the resonances dominate).")] = "disp_y",
         output: Annotated[Path | None, typer.Option(
             "-o", "--output", help="Write the signal to this .npz, .csv, .wav or .mat file.",
             show_default=False)] = None,
-        json_output: JsonOpt = False, plot: PlotOpt = None, *, geometry):
-    """Simulate the vibration of a bearing with defects (seed 003 rigid model or seed 004
-    slip model) and diagnose it by envelope analysis."""
+        json_output: JsonOpt = False,
+        plot: Annotated[Path | None, typer.Option(
+            "--plot", help="Also draw the envelope spectrum (acc_y) and the plain spectrum "
+            "(--spectrum-channel) to this .png, .svg or .pdf file.",
+            show_default=False)] = None, *, geometry):
+    """Simulate the vibration of a bearing with defects and form errors (seed 003 rigid
+    model or seed 004 slip model), diagnose it by envelope analysis and list the lines of
+    its plain spectrum."""
     shaft_speed = _speed(speed_rpm)
     for flag, value, signed in (("--radial-load-n", radial_load_n, False),
                                 ("--axial-load-n", axial_load_n, True)):
@@ -231,9 +279,14 @@ def simulate_command(
     if output is not None and output.suffix.lower() == ".wav" and \
             sample_rate_hz != round(sample_rate_hz):
         raise OptionError("--sample-rate-hz", sample_rate_hz, "a whole number of Hz for .wav")
+    if spectrum_channel not in SPECTRUM_CHANNELS:
+        raise OptionError("--spectrum-channel", spectrum_channel,
+                          f"one of {', '.join(SPECTRUM_CHANNELS)}")
     specs = list(defect or [])
     defects = [parse_defect(text) for text in specs]
+    forms = FormErrors(waviness, ball_size_error_um, surface3d)
     bearing, _ = resolve_bearing(designation, geometry)
+    imperfections = forms.build(bearing, seed)
     for text, d in zip(specs, defects, strict=True):
         try:
             d.check(bearing)
@@ -250,20 +303,27 @@ def simulate_command(
         try:
             sim = simulate(bearing, condition, defects, model=model.value, duration=duration_s,
                            sample_rate=sample_rate_hz, settle=settle_s, noise=noise_ms2,
-                           seed=seed,
+                           seed=seed, imperfections=imperfections,
                            progress=lambda f: progress.update(task, completed=f))
         except InputError as exc:
             raise _simulate_error(exc, bearing) from None
     diag = analyze_signal(sim.signal, None, sim.kinematic, channel="acc_y")
+    spec, spectrum_peaks = spectrum_lines(sim.signal.channel(spectrum_channel),
+                                          sim.signal.sample_rate, sim.kinematic,
+                                          diag.max_frequency)
     if output is not None:
         _write(output, sim.signal)
     if plot is not None:
-        _save_plot(diag, plot)
+        _plot_spectra(diag, spec, spectrum_peaks, spectrum_channel, plot)
     has_ball = any(d.location == "ball" for d in defects)
     warnings = _geometry_warnings(bearing)
     if axial_load_n:
         warnings.append(f"--axial-load-n {axial_load_n:g} N does not enter the {model.value} "
                         "model (it is planar: radial load only)")
+    if imperfections is not None and not defects:
+        warnings.append("no defects were simulated: the lines at the defect frequencies come "
+                        "from the form errors (e.g. outer-race waviness of order kZ +- 1 "
+                        "gives k x BPFO), so the 'likely fault' is not a defect")
     out = {"designation": designation, "model": model.value,
            "sample_rate_hz": sim.signal.sample_rate, "duration_s": sim.signal.duration,
            "speed_rpm": speed_rpm, "radial_load_n": radial_load_n,
@@ -274,7 +334,11 @@ def simulate_command(
            "band_hz": None if diag.band is None else list(diag.band),
            "cage_speed_ratio": sim.cage_speed_ratio, "spin_speed_ratio": sim.spin_speed_ratio,
            "ball_defect_frequency_hz": diag.ball_defect_frequency_hz if has_ball else None,
+           "spectrum_channel": spectrum_channel, "spectrum_resolution_hz": spec.resolution,
+           "spectrum_peaks": peaks_json(spectrum_peaks),
            "defects": [d.to_dict() for d in defects],
+           "imperfections": None if imperfections is None else imperfections.to_dict(),
+           "seed": seed,
            "output": None if output is None else str(output), "stats": dict(sim.stats),
            "warnings": warnings}
     if json_output:
@@ -284,6 +348,7 @@ def simulate_command(
             ["sample rate", f"{sim.signal.sample_rate:g} Hz"],
             ["speed, radial load", f"{speed_rpm:g} rpm, {radial_load_n:g} N"],
             ["defects", "; ".join(_defect_text(d) for d in defects) or "none (healthy)"],
+            ["form errors", form_errors_text(imperfections)],
             ["integration", (f"{sim.stats.get('steps')} steps, "
                              f"{sim.stats.get('rejected_steps')} rejected, settle "
                              f"{sim.stats.get('settle_s', 0):g} s")]]
@@ -296,7 +361,40 @@ def simulate_command(
     console.print(_table(f"{bearing.name or 'bearing'}: simulation", ["", "value"], rows))
     console.print(escape(_geometry_line(bearing)))
     _print_diagnosis(diag, "acc_y")
+    console.print(_table(f"{spectrum_channel}: plain spectrum lines (resolution "
+                         f"{spec.resolution:.3g} Hz)", ["Hz", "amplitude", "matched",
+                                                        "deviation %"],
+                         _peak_rows_of(spectrum_peaks)))
     _print_warnings(warnings)
+
+
+def form_errors_text(imperfections) -> str:
+    """One line describing the form errors (or "none")."""
+    if imperfections is None or imperfections.is_empty:
+        return "none"
+    parts = []
+    for w in imperfections.waviness:
+        where = w.race + (f" {w.ball}" if w.ball is not None else "")
+        parts.append(f"{where} waviness q = {w.order}, {w.amplitude * 1e6:g} um")
+    if imperfections.ball_size_errors is not None:
+        parts.append(f"ball sizes within {imperfections.ball_size_errors.band * 1e6:.3g} um")
+    for srf in imperfections.surfaces:
+        parts.append(f"{srf.race} 3-D surface {srf.amplitude * 1e6:g} um RMS")
+    return "; ".join(parts)
+
+
+def _plot_spectra(diag, spec, lines, channel: str, path: Path) -> None:
+    """Envelope spectrum (top) and plain spectrum (bottom) in one figure."""
+    from ..plotting import _pyplot
+
+    plt = _pyplot()
+    fig, axes = plt.subplots(2, 1, figsize=(11, 8))
+    diag.plot(ax=axes[0])
+    draw_spectrum(axes[1], spec, lines, diag.frequencies, diag.max_frequency,
+                  title=f"plain spectrum of {channel} (resolution {spec.resolution:.3g} Hz)",
+                  ylabel=f"amplitude [{'m' if channel.startswith('disp') else 'm/s^2'}]")
+    fig.tight_layout()
+    save_plot_figure(fig, path)
 
 
 def _defect_text(d: Defect) -> str:

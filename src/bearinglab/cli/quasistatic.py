@@ -20,6 +20,7 @@ from ..quasistatic.orbit import inner_ring_orbit
 from ..quasistatic.study import stiffness_map as stiffness_map_study
 from ..rings import ring_modes
 from ._app import app, console
+from ._forms import BallErrorOpt, FormErrors, SeedOpt, Surface3dOpt, WavinessOpt
 from ._inputs import (
     MAX_LOAD_N,
     MAX_SPEED_RPM,
@@ -29,6 +30,7 @@ from ._inputs import (
     _geometry_warnings,
     _print_warnings,
     resolve_bearing,
+    save_plot_figure,
     with_geometry,
 )
 from ._output import _emit_json, _save_plot, _table
@@ -125,32 +127,72 @@ def static(designation: DesignationArg = None,
            ring_expansion: Annotated[bool, typer.Option(
                "--ring-expansion", help="Reduce the clearance by the inner ring's "
                "centrifugal expansion.")] = False,
-           orbit: Annotated[bool, typer.Option("--orbit", help="Also the inner-ring centre "
-                                               "orbit over one ball spacing.")] = False,
+           orbit: Annotated[bool, typer.Option(
+               "--orbit", help="Also the inner-ring centre orbit: over one ball spacing "
+               "(uniform balls), or, with form errors, in time over one cage revolution "
+               "(seed 003 eqs. 14-18; needs --speed-rpm > 0).")] = False,
+           orbit_points: Annotated[int | None, typer.Option(
+               "--orbit-points", help="Orbit positions: per ball spacing (default 24) or "
+               "instants in time (default 64 per shaft revolution).",
+               show_default=False)] = None,
+           orbit_plot: Annotated[Path | None, typer.Option(
+               "--orbit-plot", help="Draw the orbit, the displacements and the ball centres "
+               "to this .png, .svg or .pdf file (implies --orbit).", show_default=False)]
+           = None,
+           waviness: WavinessOpt = None, ball_size_error_um: BallErrorOpt = None,
+           surface3d: Surface3dOpt = None, seed: SeedOpt = None,
            stiffness_csv: Annotated[Path | None, typer.Option(
                "--stiffness-csv", help="Write the 5x5 stiffness matrix (SI) to this CSV.",
                show_default=False)] = None,
            json_output: JsonOpt = False, plot: PlotOpt = None, *, geometry):
     """Quasi-static load distribution: per-ball loads and contact angles, ring
-    displacements and the 5x5 stiffness matrix."""
+    displacements and the 5x5 stiffness matrix; with form errors (waviness, ball-size
+    errors, 3-D surfaces) at the instant the shaft angle is 0, and with --orbit the
+    inner-ring centre orbit."""
     fr = _load("--radial-load-n", radial_load_n)
     fa = _load("--axial-load-n", axial_load_n, signed=True)
-    _check_output(("--plot", plot), ("--stiffness-csv", stiffness_csv))
+    _check_output(("--plot", plot), ("--stiffness-csv", stiffness_csv),
+                  ("--orbit-plot", orbit_plot))
+    for flag, path in (("--plot", plot), ("--orbit-plot", orbit_plot)):
+        if path is not None and path.suffix.lower() not in (".png", ".svg", ".pdf"):
+            raise OptionError(flag, str(path), "a file name ending in .png, .svg or .pdf")
+    orbit = orbit or orbit_plot is not None
+    if orbit_points is not None and not 2 <= orbit_points <= 100_000:
+        raise OptionError("--orbit-points", orbit_points, "an integer in [2, 100000]")
     condition = _condition(fr, fa, speed_rpm, radial_load_angle_deg, misalignment_mrad)
     oil, temperature = _lubricant(film, lubricant, temperature_c)
+    forms = FormErrors(waviness, ball_size_error_um, surface3d)
+    if orbit and forms.given and condition.shaft_speed <= 0:
+        raise OptionError("--speed-rpm", speed_rpm, "a speed > 0 rpm with --orbit and form "
+                          "errors (the orbit then runs in time)")
     bearing, _ = resolve_bearing(designation, geometry)
-    result = solve_load_distribution(bearing, condition, lubricant=oil, temperature=temperature,
-                                     gyroscopic=gyroscopic, ring_expansion=ring_expansion)
+    imperfections = forms.build(bearing, seed)
+    options = {"lubricant": oil, "temperature": temperature, "gyroscopic": gyroscopic,
+               "ring_expansion": ring_expansion}
+    errors = None
+    if imperfections is not None:   # the form errors at t = 0, ball 0 under the load
+        z = bearing.ball_count
+        psi = condition.radial_load_angle + 2.0 * math.pi * np.arange(z) / z
+        errors = imperfections.approach_change(bearing, psi).total
+    result = solve_load_distribution(bearing, condition, ball_diameter_errors=errors, **options)
     d = result.to_dict()
     d["warnings"] = _geometry_warnings(bearing) + d["warnings"]
     out = {"designation": designation, **d}
+    if imperfections is not None:
+        out["imperfections"] = imperfections.to_dict()
+        out["seed"] = 0 if seed is None else seed
+        out["effective_diameter_error_um"] = (errors * 1e6).tolist()
+    o = None
     if orbit:
-        o = inner_ring_orbit(bearing, condition, lubricant=oil, temperature=temperature,
-                             gyroscopic=gyroscopic, ring_expansion=ring_expansion)
+        o = inner_ring_orbit(bearing, condition, imperfections=imperfections,
+                             points=orbit_points, **options)
+        out["orbit_kind"] = "time" if o.time is not None else "ball_set"
         out["orbit"] = o.to_dict()
         out["orbit_peak_to_peak_um"] = o.peak_to_peak * 1e6
     if plot is not None:
         _save_plot(result, plot)
+    if orbit_plot is not None:
+        _plot_orbit(o, orbit_plot)
     if stiffness_csv is not None:
         _write_csv(result.stiffness_frame(), stiffness_csv, index=True, flag="--stiffness-csv")
     if json_output:
@@ -166,6 +208,11 @@ def static(designation: DesignationArg = None,
                          [c.replace("_", " ") for c in cols],
                          table[cols].to_numpy().tolist()))
     console.print(escape(_geometry_line(bearing)))
+    if imperfections is not None:
+        from .dynamics import form_errors_text
+
+        console.print(escape(f"form errors: {form_errors_text(imperfections)} (the load "
+                             "distribution at shaft angle 0, ball 0 under the load)"))
     console.print(_table("Inner ring", ["quantity", "value", "unit"], [
         ["radial displacement S_r", d["radial_displacement_um"], "um"],
         ["axial displacement S_a", d["axial_displacement_um"], "um"],
@@ -173,13 +220,36 @@ def static(designation: DesignationArg = None,
         ["max ball load", d["max_ball_load_n"], "N"],
         ["radial stiffness C_r", d["radial_stiffness_n_per_um"], "N/um"],
         ["axial stiffness C_a", d["axial_stiffness_n_per_um"], "N/um"],
-    ] + ([["orbit peak to peak", out["orbit_peak_to_peak_um"], "um"]] if orbit else [])))
+    ] + ([["orbit peak to peak", out["orbit_peak_to_peak_um"], "um"],
+          ["orbit", _orbit_text(o), ""]] if orbit else [])))
     k = np.array(d["stiffness_matrix"])
     console.print(_table("Stiffness matrix (x, y, z [N/um]; tilts [N m/mrad, N/mrad])",
                          ["", *d["stiffness_matrix_order"]],
                          [[name, *(k[i] * np.array([1e-6] * 3 + [1e-3] * 2))]
                           for i, name in enumerate(d["stiffness_matrix_order"])]))
     _print_warnings(d["warnings"])
+
+
+def _orbit_text(o) -> str:
+    if o.time is None:
+        return (f"{o.x.size} positions over "
+                f"{np.degrees(o.ball_phase[-1] - o.ball_phase[0]):.4g} deg of the ball set")
+    return f"{o.time.size} instants over {o.time.size * (o.time[1] - o.time[0]):.4g} s"
+
+
+def _plot_orbit(o, path: Path) -> None:
+    """Orbit (left), inner-ring displacements and ball-centre radii against time or the
+    ball-set angle (right)."""
+    from ..plotting import _pyplot
+
+    plt = _pyplot()
+    fig = plt.figure(figsize=(12, 5.5))
+    grid = fig.add_gridspec(2, 2, width_ratios=(1, 1.4))
+    o.plot(ax=fig.add_subplot(grid[:, 0]))
+    right = fig.add_subplot(grid[0, 1])
+    o.plot_history(axes=[right, fig.add_subplot(grid[1, 1], sharex=right)])
+    fig.tight_layout()
+    save_plot_figure(fig, path, "--orbit-plot")
 
 
 @app.command("stiffness-map")

@@ -1,0 +1,188 @@
+"""Command-line form errors (issue 5): --waviness, --ball-size-error-um, --surface3d and
+--seed, parsed into one :class:`~bearinglab.imperfections.Imperfections`."""
+
+import math
+from typing import Annotated
+
+import numpy as np
+import typer
+
+from ..errors import InputError
+from ._inputs import OptionError, parse_spec
+
+WAVINESS_ALLOWED = ("RACE:KEY=VALUE,... with RACE inner, outer or ball and keys order (waves "
+                    "round the circumference, >= 1) and amplitude_um (>= 0, half the peak to "
+                    "peak), both required, phase_deg (r = A cos(order theta + phase), default "
+                    "0) and ball (ball index, ball waviness only; default every ball), e.g. "
+                    "inner:order=7,amplitude_um=0.5")
+SURFACE_ALLOWED = ("RACE:KEY=VALUE,... with RACE inner or outer and keys amplitude_um (RMS "
+                   "height >= 0), length_circ_mm and length_axial_mm (correlation lengths > 0 "
+                   "of seed 002 eq. 6), all required, e.g. "
+                   "outer:amplitude_um=0.2,length_circ_mm=0.5,length_axial_mm=0.5")
+BALL_ERROR_ALLOWED = ("a band width >= 0 um (ball diameter errors uniform in [-BAND/2, +BAND/2] "
+                      "um about the nominal diameter) or LOW,HIGH um with LOW <= HIGH (uniform "
+                      "in [LOW, HIGH])")
+_WAVINESS_KEYS = {race: {"order": "order", "amplitude_um": "nonnegative", "phase_deg": "number"}
+                  for race in ("inner", "outer")}
+_WAVINESS_KEYS["ball"] = {**_WAVINESS_KEYS["inner"], "ball": "index"}
+_SURFACE_KEYS = {race: {"amplitude_um": "nonnegative", "length_circ_mm": "positive",
+                        "length_axial_mm": "positive"} for race in ("inner", "outer")}
+#: Largest random-surface grid (points round x across, with the generating margin): the
+#: generator holds a few arrays of this size (complex FFTs).
+MAX_SURFACE_POINTS = 1 << 22
+#: Largest form-error amplitude, as a fraction of D_w (the load-distribution solver's limit
+#: on an approach change).
+MAX_FORM_ERROR = 0.05
+
+WavinessOpt = Annotated[list[str] | None, typer.Option(
+    "--waviness", help="Sinusoidal waviness, repeatable: RACE:order=7,amplitude_um=0.5"
+    "[,phase_deg=0][,ball=N] with RACE inner, outer or ball; r = A cos(order theta + phase) "
+    "in the ring's (or ball's) own frame.", show_default=False)]
+BallErrorOpt = Annotated[str | None, typer.Option(
+    "--ball-size-error-um", help="Random ball diameter errors: BAND (uniform in "
+    "[-BAND/2, +BAND/2] um about the nominal diameter: BAND is the lot's largest minus "
+    "smallest ball) or LOW,HIGH [um]; drawn with --seed.", show_default=False)]
+Surface3dOpt = Annotated[list[str] | None, typer.Option(
+    "--surface3d", help="Random 3-D raceway surface (seed 002 eq. 6), repeatable: "
+    "RACE:amplitude_um=..,length_circ_mm=..,length_axial_mm=.. with RACE inner or outer "
+    "(RMS height, circumferential and axial correlation lengths).", show_default=False)]
+SeedOpt = Annotated[int | None, typer.Option(
+    "--seed", help="Seed of the random ball-size errors and surfaces (default 0: the same "
+    "command gives the same bearing; surface i in the order given uses SEED + 1 + i).",
+    show_default=False)]
+
+
+def parse_waviness(text: str):
+    """A :class:`~bearinglab.imperfections.Waviness` (SI) from a --waviness specification.
+
+    >>> w = parse_waviness("ball:order=2,amplitude_um=0.5,phase_deg=90,ball=3")
+    >>> w.race, w.order, round(w.amplitude * 1e6, 9), round(w.phase, 6), w.ball
+    ('ball', 2, 0.5, 1.570796, 3)
+    """
+    from ..imperfections import Waviness
+
+    race, v = parse_spec(text, "--waviness", WAVINESS_ALLOWED, _WAVINESS_KEYS, noun="waviness",
+                         word="race", required=("order", "amplitude_um"))
+    return Waviness(race, v["order"], v["amplitude_um"] * 1e-6,
+                    math.radians(v.get("phase_deg", 0.0)), v.get("ball"))
+
+
+def parse_ball_band(text: str):
+    """--ball-size-error-um: a band width [m] or a pair (low, high) [m].
+
+    >>> parse_ball_band("2"), parse_ball_band("0, 3")
+    (2e-06, (0.0, 3e-06))
+    """
+    parts = [p.strip() for p in text.split(",")]
+    try:
+        values = [float(p) for p in parts]
+    except ValueError:
+        values = []
+    if len(values) not in (1, 2) or not all(math.isfinite(v) for v in values):
+        raise OptionError("--ball-size-error-um", text, BALL_ERROR_ALLOWED)
+    if len(values) == 1:
+        if values[0] < 0:
+            raise OptionError("--ball-size-error-um", text, BALL_ERROR_ALLOWED,
+                              "the band must be >= 0")
+        return values[0] * 1e-6
+    if values[0] > values[1]:
+        raise OptionError("--ball-size-error-um", text, BALL_ERROR_ALLOWED, "LOW > HIGH")
+    return values[0] * 1e-6, values[1] * 1e-6
+
+
+def parse_surface(text: str) -> tuple[str, dict]:
+    """(race, {amplitude_um, length_circ_mm, length_axial_mm}) from a --surface3d
+    specification (the surface itself needs the bearing: :meth:`FormErrors.build`)."""
+    return parse_spec(text, "--surface3d", SURFACE_ALLOWED, _SURFACE_KEYS, noun="surfaces",
+                      word="race", required=("amplitude_um", "length_circ_mm",
+                                             "length_axial_mm"))
+
+
+class FormErrors:
+    """The form-error options as typed and parsed (before the bearing is known):
+    --waviness, --ball-size-error-um, --surface3d. :meth:`build` makes the
+    :class:`~bearinglab.imperfections.Imperfections` for a bearing and a seed."""
+
+    def __init__(self, waviness: list[str] | None = None, ball_size_error_um: str | None = None,
+                 surface3d: list[str] | None = None) -> None:
+        self.waviness = [(text, parse_waviness(text)) for text in waviness or ()]
+        self.band_text = ball_size_error_um
+        self.band = None if ball_size_error_um is None else parse_ball_band(ball_size_error_um)
+        self.surfaces = [(text, *parse_surface(text)) for text in surface3d or ()]
+
+    @property
+    def given(self) -> bool:
+        """True when any form error was asked for."""
+        return bool(self.waviness or self.surfaces or self.band is not None)
+
+    def build(self, bearing, seed: int | None = None):
+        """The Imperfections on ``bearing`` (None when none were given); errors name the
+        option and the specification."""
+        from ..imperfections import BallSizeErrors, Imperfections, RandomSurface
+
+        if not self.given:
+            return None
+        if seed is not None and seed < 0:
+            raise OptionError("--seed", seed, "an integer >= 0")
+        seed = 0 if seed is None else int(seed)
+        name = bearing.name or "this bearing"
+        limit = MAX_FORM_ERROR * bearing.ball_diameter
+        for text, w in self.waviness:
+            try:
+                w.check(bearing)
+            except InputError as exc:
+                raise OptionError("--waviness", text, WAVINESS_ALLOWED,
+                                  f"for {name}: {exc.parameter} = {exc.value!r} must be "
+                                  f"{exc.allowed}") from None
+            if w.amplitude > limit:
+                raise OptionError("--waviness", text, WAVINESS_ALLOWED,
+                                  f"amplitude_um must be at most {limit * 1e6:.4g} for {name} "
+                                  f"({MAX_FORM_ERROR:.0%} of the ball diameter)")
+        errors = None
+        if self.band is not None:
+            errors = BallSizeErrors.random(bearing.ball_count, self.band, seed=seed)
+            if np.max(np.abs(errors.errors)) > limit:
+                raise OptionError("--ball-size-error-um", self.band_text, BALL_ERROR_ALLOWED,
+                                  f"errors must stay within +-{limit * 1e6:.4g} um for {name} "
+                                  f"({MAX_FORM_ERROR:.0%} of the ball diameter)")
+        surfaces = []
+        for i, (text, race, v) in enumerate(self.surfaces):
+            if v["amplitude_um"] * 1e-6 > limit / 3:
+                raise OptionError("--surface3d", text, SURFACE_ALLOWED,
+                                  f"amplitude_um must be at most {limit / 3 * 1e6:.4g} for "
+                                  f"{name} (its peaks reach about 3 RMS; "
+                                  f"{MAX_FORM_ERROR:.0%} of the ball diameter)")
+            length_r, length_z = v["length_circ_mm"] * 1e-3, v["length_axial_mm"] * 1e-3
+            radius = 0.5 * (bearing.inner_raceway_diameter if race == "inner"
+                            else bearing.outer_raceway_diameter)
+            if length_r > math.pi * radius:
+                raise OptionError("--surface3d", text, SURFACE_ALLOWED,
+                                  f"length_circ_mm must be at most {math.pi * radius * 1e3:.4g} "
+                                  f"for {name} (half the {race} raceway's circumference)")
+            points = _surface_points(bearing, race, length_r, length_z)
+            if points > MAX_SURFACE_POINTS:
+                raise OptionError("--surface3d", text, SURFACE_ALLOWED,
+                                  f"the correlation lengths need a grid of {points:.3g} points "
+                                  f"on {name}, more than {MAX_SURFACE_POINTS:.3g}: give longer "
+                                  "length_circ_mm or length_axial_mm")
+            try:
+                surfaces.append(RandomSurface.for_bearing(bearing, race, v["amplitude_um"] * 1e-6,
+                                                          length_r, length_z, seed + 1 + i))
+            except InputError as exc:
+                raise OptionError("--surface3d", text, SURFACE_ALLOWED,
+                                  f"for {name}: {exc}") from None
+        return Imperfections([w for _, w in self.waviness], ball_size_errors=errors,
+                             surfaces=surfaces)
+
+
+def _surface_points(bearing, race: str, length_r: float, length_z: float) -> int:
+    """Grid points RandomSurface.for_bearing generates (round x across with its margin)."""
+    from ..imperfections.surface import AXIAL_MARGIN
+
+    radius = 0.5 * (bearing.inner_raceway_diameter if race == "inner"
+                    else bearing.outer_raceway_diameter)
+    width = bearing.ball_diameter
+    n_r = max(256, 1 << max(0, math.ceil(math.log2(8 * math.pi * radius / length_r))))
+    n_z = max(17, math.ceil(4 * width / length_z) + 1)
+    margin = math.ceil(AXIAL_MARGIN * length_z / (width / (n_z - 1)))
+    return n_r * (n_z + margin)
