@@ -91,7 +91,10 @@ def velocity_bands(signal, sample_rate, quantity: str = "acceleration",
         Sample rate f_s [Hz]; it must exceed twice the top edge of the high band (20 kHz
         at 1800 min^-1).
     quantity : {"displacement", "velocity", "acceleration"}
-        What ``signal`` holds.
+        What ``signal`` holds. A displacement is differentiated in the frequency
+        domain, which multiplies by f: the jump between the two ends of a record that is
+        not a whole number of periods then inflates the high band. Detrend such a record
+        or differentiate it in time and pass the velocity.
     speed_rpm : float, optional
         Inner-ring speed; the band edges scale with it from the 1800 min^-1 values
         (default: those values).
