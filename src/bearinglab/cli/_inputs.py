@@ -102,6 +102,34 @@ MAX_SPEED_RPM = 1e6
 MAX_LOAD_N = 1e7
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON object instead of tables.")]
 
+
+def speed_rad_s(speed_rpm: float, *, zero: bool = False) -> float:
+    """Speed [rad/s] from --speed-rpm, which must lie in (0, MAX_SPEED_RPM] rpm ([0, ...]
+    with ``zero``)."""
+    low_ok = speed_rpm >= 0 if zero else speed_rpm > 0
+    if not (math.isfinite(speed_rpm) and low_ok and speed_rpm <= MAX_SPEED_RPM):
+        raise OptionError("--speed-rpm", speed_rpm,
+                          f"a speed in {'[' if zero else '('}0, {MAX_SPEED_RPM:g}] rpm")
+    return speed_rpm * math.pi / 30
+
+
+def load_n(flag: str, value: float, signed: bool = False) -> float:
+    """A load option [N] in [0, MAX_LOAD_N] ([-MAX_LOAD_N, MAX_LOAD_N] when ``signed``)."""
+    low = -MAX_LOAD_N if signed else 0.0
+    if not (math.isfinite(value) and low <= value <= MAX_LOAD_N):
+        raise OptionError(flag, value, f"a load in [{low:g}, {MAX_LOAD_N:g}] N")
+    return float(value)
+
+
+def check_loads(radial: float, axial: float, unloaded: str | None = None) -> None:
+    """--radial-load-n in [0, max], --axial-load-n signed; with ``unloaded`` (the reason
+    a load is needed) at least one of them nonzero."""
+    load_n("--radial-load-n", radial)
+    load_n("--axial-load-n", axial, signed=True)
+    if unloaded and radial == 0 and axial == 0:
+        raise OptionError("--radial-load-n", radial, "a load > 0 N (or an --axial-load-n)",
+                          unloaded)
+
 #: BallBearing / Material keyword -> option name, to put errors in the user's terms.
 _KEYWORD_OPTION = {spec[4]: name for name, spec in _GEOMETRY_OPTIONS.items() if spec[4]}
 _KEYWORD_OPTION.update({"elastic_modulus": "elastic_modulus_gpa", "density": "density_kg_m3",

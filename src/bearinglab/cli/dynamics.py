@@ -34,16 +34,16 @@ from ..signal.peaks import NAMES
 from ._app import app, console
 from ._forms import BallErrorOpt, FormErrors, Surface3dOpt, WavinessOpt
 from ._inputs import (
-    MAX_LOAD_N,
-    MAX_SPEED_RPM,
     JsonOpt,
     OptionError,
     _geometry_line,
     _geometry_warnings,
     _print_warnings,
+    check_loads,
     parse_spec,
     resolve_bearing,
     save_plot_figure,
+    speed_rad_s,
     with_geometry,
 )
 from ._output import _emit_json, _save_plot, _table
@@ -97,13 +97,6 @@ def parse_defect(text: str) -> Defect:
     if "ball" in values:
         kwargs["ball"] = values["ball"]
     return Defect(location, **kwargs)
-
-
-def _speed(value: float) -> float:
-    """Shaft speed [rad/s] from --speed-rpm (> 0)."""
-    if not (math.isfinite(value) and 0 < value <= MAX_SPEED_RPM):
-        raise OptionError("--speed-rpm", value, f"a speed in (0, {MAX_SPEED_RPM:g}] rpm")
-    return value * math.pi / 30
 
 
 def _positive(flag: str, value, allowed: str, zero: bool = False):
@@ -262,12 +255,8 @@ def simulate_command(
     """Simulate the vibration of a bearing with defects and form errors (seed 003 rigid
     model or seed 004 slip model), diagnose it by envelope analysis and list the lines of
     its plain spectrum."""
-    shaft_speed = _speed(speed_rpm)
-    for flag, value, signed in (("--radial-load-n", radial_load_n, False),
-                                ("--axial-load-n", axial_load_n, True)):
-        low = -MAX_LOAD_N if signed else 0.0
-        if not (math.isfinite(value) and low <= value <= MAX_LOAD_N):
-            raise OptionError(flag, value, f"a load in [{low:g}, {MAX_LOAD_N:g}] N")
+    shaft_speed = speed_rad_s(speed_rpm)
+    check_loads(radial_load_n, axial_load_n)
     _positive("--duration-s", duration_s, "a duration > 0 s")
     _positive("--sample-rate-hz", sample_rate_hz, "a sample rate > 0 Hz")
     _positive("--settle-s", settle_s, "a time >= 0 s", zero=True)
@@ -493,7 +482,7 @@ def analyze_command(
     band = _band(band_hz)
     _positive("--sample-rate-hz", sample_rate_hz, "a sample rate > 0 Hz")
     if speed_rpm is not None:
-        _speed(speed_rpm)
+        speed_rad_s(speed_rpm)
     _check_path("--plot", plot, (".png", ".svg", ".pdf"))
     try:
         signal = read_signal(signal_file, sample_rate=sample_rate_hz)
@@ -515,7 +504,7 @@ def analyze_command(
             raise BearinglabError("--speed-rpm is required: the file does not record the "
                                   "shaft speed")
         speed_rpm = float(recorded)
-    shaft_speed = _speed(speed_rpm)
+    shaft_speed = speed_rad_s(speed_rpm)
     bearing, _ = resolve_bearing(designation, geometry)
     kin = defect_frequencies(bearing, shaft_speed)
     try:

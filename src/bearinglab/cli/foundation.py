@@ -19,7 +19,6 @@ from ..kinematics import FREQUENCY_NAMES, LONG_NAMES, defect_frequencies
 from ._app import HertzMethod, app, console
 from ._inputs import (
     MAX_BALL_LOAD_N,
-    MAX_SPEED_RPM,
     JsonOpt,
     OptionError,
     _catalog_message,
@@ -30,6 +29,7 @@ from ._inputs import (
     _print_warnings,
     _resolve,
     resolve_bearing,
+    speed_rad_s,
     with_geometry,
 )
 from ._output import (
@@ -192,10 +192,9 @@ def frequencies(designation: DesignationArg = None,
                 = False,
                 json_output: JsonOpt = False, plot: PlotOpt = None, *, geometry):
     """Kinematic defect frequencies (pure rolling) in Hz and as orders."""
-    if not (math.isfinite(speed_rpm) and 0 <= speed_rpm <= MAX_SPEED_RPM):
-        raise OptionError("--speed-rpm", speed_rpm, f"a speed in [0, {MAX_SPEED_RPM:g}] rpm")
+    shaft_speed = speed_rad_s(speed_rpm, zero=True)
     bearing, _ = resolve_bearing(designation, geometry)
-    f = defect_frequencies(bearing, speed_rpm * math.pi / 30, outer_rotating=outer_rotating)
+    f = defect_frequencies(bearing, shaft_speed, outer_rotating=outer_rotating)
     warnings = _geometry_warnings(bearing)
     out = {"designation": designation, **f.to_dict(), "warnings": warnings}
     if plot is not None:

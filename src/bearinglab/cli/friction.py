@@ -27,12 +27,13 @@ from ..lubrication import LUBRICANTS, ZERO_CELSIUS
 from ._app import app, console
 from ._inputs import (
     MAX_LOAD_N,
-    MAX_SPEED_RPM,
     JsonOpt,
     OptionError,
     _geometry_warnings,
     _print_warnings,
+    load_n,
     resolve_bearing,
+    speed_rad_s,
     with_geometry,
 )
 from ._output import _emit_json, _table
@@ -210,8 +211,7 @@ def _constant(b: _Bearing, omega, fr, fa, type_option, equivalent_load_n):
         raise OptionError("--type", kind, "for the constant model one of "
                           + ", ".join(SEED003_COEFFICIENTS))
     if equivalent_load_n is not None:
-        p = _finite("--equivalent-load-n", equivalent_load_n, 0.0, MAX_LOAD_N,
-                    f"a load in [0, {MAX_LOAD_N:g}] N")
+        p = load_n("--equivalent-load-n", equivalent_load_n)
         how = "given (--equivalent-load-n)"
     elif fa == 0.0:
         p, how = fr, "P = F_r (no axial load)"
@@ -341,10 +341,8 @@ def friction_command(
             show_default=False)] = None,
         json_output: JsonOpt = False, *, geometry):
     """Friction torque and power loss: seed 003's constant coefficient or the SKF model."""
-    omega = _finite("--speed-rpm", speed_rpm, 0.0, MAX_SPEED_RPM,
-                    f"a speed in [0, {MAX_SPEED_RPM:g}] rpm") * math.pi / 30
-    fr = _finite("--radial-load-n", radial_load_n, 0.0, MAX_LOAD_N,
-                 f"a load in [0, {MAX_LOAD_N:g}] N")
+    omega = speed_rad_s(speed_rpm, zero=True)
+    fr = load_n("--radial-load-n", radial_load_n)
     fa = _finite("--axial-load-n", axial_load_n, 0.0, MAX_LOAD_N,
                  f"a load in [0, {MAX_LOAD_N:g}] N (a magnitude)")
     if static_load_rating_kn is not None:

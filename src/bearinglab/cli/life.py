@@ -15,14 +15,14 @@ from ..life.tables import CONTAMINATION_ALIASES, CONTAMINATION_LEVELS
 from ..operating import OperatingCondition
 from ._app import app, console
 from ._inputs import (
-    MAX_LOAD_N,
-    MAX_SPEED_RPM,
     JsonOpt,
     OptionError,
     _geometry_line,
     _geometry_warnings,
     _print_warnings,
+    check_loads,
     resolve_bearing,
+    speed_rad_s,
     with_geometry,
 )
 from ._output import _check_finite, _emit_json, _save_plot, _table
@@ -58,16 +58,8 @@ def _contamination(text: str | None):
 
 
 def _check(speed_rpm, radial, axial, reliability, viscosity, misalignment, method):
-    if not (math.isfinite(speed_rpm) and 0 < speed_rpm <= MAX_SPEED_RPM):
-        raise OptionError("--speed-rpm", speed_rpm, f"a speed in (0, {MAX_SPEED_RPM:g}] rpm")
-    if not (math.isfinite(radial) and 0 <= radial <= MAX_LOAD_N):
-        raise OptionError("--radial-load-n", radial, f"a load in [0, {MAX_LOAD_N:g}] N")
-    if not (math.isfinite(axial) and abs(axial) <= MAX_LOAD_N):
-        raise OptionError("--axial-load-n", axial, f"a load in [{-MAX_LOAD_N:g}, "
-                          f"{MAX_LOAD_N:g}] N")
-    if radial == 0 and axial == 0:
-        raise OptionError("--radial-load-n", radial, "a load > 0 N (or an --axial-load-n)",
-                          "an unloaded bearing has no rating life")
+    speed_rad_s(speed_rpm)
+    check_loads(radial, axial, unloaded="an unloaded bearing has no rating life")
     if not (math.isfinite(reliability) and 90 <= reliability <= 99.95):
         raise OptionError("--reliability-percent", reliability, "a reliability in [90, 99.95] %")
     if viscosity is not None and not (math.isfinite(viscosity) and 0 < viscosity <= 1e6):

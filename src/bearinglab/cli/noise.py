@@ -39,6 +39,7 @@ from ._inputs import (
     _print_warnings,
     resolve_bearing,
     save_plot_figure,
+    speed_rad_s,
     with_geometry,
 )
 from ._output import _emit_json, _table
@@ -47,7 +48,6 @@ from .dynamics import (
     _check_path,
     _peak_rows_of,
     _positive,
-    _speed,
     draw_spectrum,
     form_errors_text,
     peaks_json,
@@ -117,7 +117,7 @@ def noise_command(
     """Noise of a running ball bearing with waviness, ball-size errors and random
     surfaces (seed 003 part 4, seed 002): SPL at a point, pressure spectrum lines, and the
     ISO 15242 vibration velocity bands."""
-    shaft_speed = _speed(speed_rpm)
+    shaft_speed = speed_rad_s(speed_rpm)
     if not (math.isfinite(radial_load_n) and 0 < radial_load_n <= MAX_LOAD_N):
         raise OptionError("--radial-load-n", radial_load_n,
                           f"a load in (0, {MAX_LOAD_N:g}] N (the orbit needs a load)")

@@ -23,14 +23,15 @@ from ._app import app, console
 from ._forms import BallErrorOpt, FormErrors, SeedOpt, Surface3dOpt, WavinessOpt
 from ._inputs import (
     MAX_LOAD_N,
-    MAX_SPEED_RPM,
     JsonOpt,
     OptionError,
     _geometry_line,
     _geometry_warnings,
     _print_warnings,
+    load_n,
     resolve_bearing,
     save_plot_figure,
+    speed_rad_s,
     with_geometry,
 )
 from ._output import _emit_json, _save_plot, _table
@@ -41,19 +42,6 @@ DesignationArg = Annotated[str | None, typer.Argument(
 PlotOpt = Annotated[Path | None, typer.Option(
     "--plot", help="Also draw the result to this .png, .svg or .pdf file.", show_default=False)]
 MAX_CASES = 1_000_000
-
-
-def _load(flag: str, value: float, signed: bool = False) -> float:
-    low = -MAX_LOAD_N if signed else 0.0
-    if not (math.isfinite(value) and low <= value <= MAX_LOAD_N):
-        raise OptionError(flag, value, f"a load in [{low:g}, {MAX_LOAD_N:g}] N")
-    return float(value)
-
-
-def _speed(value: float) -> float:
-    if not (math.isfinite(value) and 0 <= value <= MAX_SPEED_RPM):
-        raise OptionError("--speed-rpm", value, f"a speed in [0, {MAX_SPEED_RPM:g}] rpm")
-    return value * math.pi / 30
 
 
 def _grid(flag: str, text: str, signed: bool = False, speed: bool = False) -> np.ndarray:
@@ -70,7 +58,7 @@ def _grid(flag: str, text: str, signed: bool = False, speed: bool = False) -> np
         raise OptionError(flag, text, "START:STOP:COUNT (COUNT 1..10000), a list A,B,C or one "
                           "value") from None
     for v in values:
-        _speed(v) if speed else _load(flag, v, signed)
+        speed_rad_s(v, zero=True) if speed else load_n(flag, v, signed)
     return values
 
 
@@ -84,7 +72,7 @@ def _condition(radial, axial, speed_rpm, angle_deg, misalignment_mrad):
     tilt = misalignment_mrad * 1e-3
     return OperatingCondition(radial_load=radial, radial_load_angle=a, axial_load=axial,
                               misalignment=(-tilt * math.sin(a), tilt * math.cos(a)),
-                              shaft_speed=_speed(speed_rpm))
+                              shaft_speed=speed_rad_s(speed_rpm, zero=True))
 
 
 def _lubricant(film: bool, name: str, temperature_c: float | None):
@@ -149,8 +137,8 @@ def static(designation: DesignationArg = None,
     displacements and the 5x5 stiffness matrix; with form errors (waviness, ball-size
     errors, 3-D surfaces) at the instant the shaft angle is 0, and with --orbit the
     inner-ring centre orbit."""
-    fr = _load("--radial-load-n", radial_load_n)
-    fa = _load("--axial-load-n", axial_load_n, signed=True)
+    fr = load_n("--radial-load-n", radial_load_n)
+    fa = load_n("--axial-load-n", axial_load_n, signed=True)
     _check_output(("--plot", plot), ("--stiffness-csv", stiffness_csv),
                   ("--orbit-plot", orbit_plot))
     for flag, path in (("--plot", plot), ("--orbit-plot", orbit_plot)):

@@ -14,13 +14,13 @@ from ..errors import InputError
 from ..operating import OperatingCondition
 from ._app import app, console
 from ._inputs import (
-    MAX_LOAD_N,
-    MAX_SPEED_RPM,
     JsonOpt,
     OptionError,
     _geometry_warnings,
     _print_warnings,
+    check_loads,
     resolve_bearing,
+    speed_rad_s,
     with_geometry,
 )
 from ._output import _emit_json
@@ -32,16 +32,8 @@ DesignationArg = Annotated[str | None, typer.Argument(
 
 
 def _check(speed_rpm, radial, axial, duration, slip_duration, sample_rate, viscosity, output):
-    if not (math.isfinite(speed_rpm) and 0 < speed_rpm <= MAX_SPEED_RPM):
-        raise OptionError("--speed-rpm", speed_rpm, f"a speed in (0, {MAX_SPEED_RPM:g}] rpm")
-    if not (math.isfinite(radial) and 0 <= radial <= MAX_LOAD_N):
-        raise OptionError("--radial-load-n", radial, f"a load in [0, {MAX_LOAD_N:g}] N")
-    if not (math.isfinite(axial) and abs(axial) <= MAX_LOAD_N):
-        raise OptionError("--axial-load-n", axial, f"a load in [{-MAX_LOAD_N:g}, "
-                          f"{MAX_LOAD_N:g}] N")
-    if radial == 0 and axial == 0:
-        raise OptionError("--radial-load-n", radial, "a load > 0 N (or an --axial-load-n)",
-                          "an unloaded bearing has no load distribution or life")
+    speed_rad_s(speed_rpm)
+    check_loads(radial, axial, unloaded="an unloaded bearing has no load distribution or life")
     if not (math.isfinite(duration) and 0 < duration <= 60):
         raise OptionError("--duration-s", duration, "a duration in (0, 60] s")
     if not (math.isfinite(slip_duration) and 0 <= slip_duration <= 10):
