@@ -17,7 +17,7 @@ import numpy as np
 
 from ..errors import InputError
 from .model import FieldPoint
-from .radiation import sound_pressure, velocity_from_positions
+from .radiation import sound_pressure
 from .result import SoundPressure
 
 #: How the balls radiate in :func:`bearing_noise`: name -> description.
@@ -106,31 +106,20 @@ def bearing_noise(bearing, condition, imperfections=None, *, duration: float | N
     jumps, the pressure (~ d v/dt at low frequency) spikes there and ``spl_max_db`` grows
     with ``points``; the mean SPL (the seed's figure-14 value) does not.
     """
-    from ..kinematics import defect_frequencies
-    from ..quasistatic.orbit import inner_ring_orbit
+    from ..quasistatic.orbit import inner_ring_orbit, record_length
 
     if ball_model not in BALL_MODELS:
         raise InputError("ball_model", ball_model, f"one of {tuple(BALL_MODELS)}")
     if condition.shaft_speed <= 0:
         raise InputError("shaft_speed", condition.shaft_speed, "a speed > 0 [rad/s]")
-    if duration is not None and revolutions is not None:
-        raise InputError("duration", duration, "None when revolutions is given")
-    if revolutions is not None:
-        length = float(revolutions) * 2.0 * math.pi / condition.shaft_speed
-    elif duration is not None:
-        length = float(duration)
-    else:
-        length = 1.0 / defect_frequencies(bearing, condition.shaft_speed).hz("ftf")
-    if not (math.isfinite(length) and length > 0):
-        raise InputError("duration", duration if revolutions is None else revolutions,
-                         "a length > 0 [s] (or revolutions > 0)")
+    length = record_length(bearing, condition, revolutions, duration,
+                           orbit_options.get("contact_angle"))
     if points is None:
         points = max(256, math.ceil(SAMPLE_RATE * length))
     orbit = inner_ring_orbit(bearing, condition, imperfections=imperfections,
                              duration=length, points=points, **orbit_options)
     t = orbit.time
-    ring = velocity_from_positions(t, np.stack([orbit.x, orbit.y], axis=1))
-    radial = velocity_from_positions(t, orbit.ball_centre[..., 0])
+    ring, radial = orbit.ring_velocity, orbit.ball_radial_velocity
     if ball_model == "radial":
         balls, source = radial, "pulsating"
     else:

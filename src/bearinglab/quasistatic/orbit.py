@@ -130,13 +130,13 @@ class Orbit:
         """Inner-ring centre velocity (dx/dt, dy/dt), (N, 2), central differences [m/s]
         (seed 003 fig. 9e-f)."""
         t = self._needs_time()
-        return np.stack([np.gradient(self.x, t), np.gradient(self.y, t)], axis=1)
+        return np.gradient(np.stack([self.x, self.y], axis=1), t, axis=0, edge_order=2)
 
     @property
     def ball_radial_velocity(self) -> np.ndarray:
         """d/dt of each ball centre's radius, (N, Z), central differences [m/s] (the
         pulsating-sphere source velocity; seed 003 fig. 11)."""
-        return np.gradient(self.ball_centre[..., 0], self._needs_time(), axis=0)
+        return np.gradient(self.ball_centre[..., 0], self._needs_time(), axis=0, edge_order=2)
 
     def to_dict(self) -> dict:
         """JSON-ready orbit in um, degrees, seconds."""
@@ -323,6 +323,22 @@ def _ball_set_sweep(bearing, condition, ball_diameter_errors, points, span, opti
                  effective_diameter_error=eff)
 
 
+def record_length(bearing, condition, revolutions=None, duration=None,
+                  contact_angle=None) -> float:
+    """Length of a time sweep [s]: ``revolutions`` of the shaft, or ``duration``, or by
+    default one cage revolution (each ball carries its size error round once)."""
+    from ..kinematics import defect_frequencies
+
+    if revolutions is not None and duration is not None:
+        raise InputError("duration", duration, "None when revolutions is given")
+    freq = defect_frequencies(bearing, condition.shaft_speed, contact_angle=contact_angle)
+    if revolutions is not None:
+        return _positive_number("revolutions", revolutions, "a number > 0") / freq.shaft_hz
+    if duration is not None:
+        return _positive_number("duration", duration, "a duration > 0 [s]")
+    return 1.0 / freq.hz("ftf")
+
+
 def _time_sweep(bearing, condition, imperfections, extra, points, revolutions, duration,
                 contact_angle, surface_contact, options) -> Orbit:
     from ..imperfections import ball_axial_shift
@@ -331,14 +347,7 @@ def _time_sweep(bearing, condition, imperfections, extra, points, revolutions, d
 
     freq = defect_frequencies(bearing, condition.shaft_speed, contact_angle=contact_angle)
     f_shaft, f_cage, f_spin = freq.shaft_hz, freq.hz("ftf"), freq.hz("bsf")
-    if revolutions is not None and duration is not None:
-        raise InputError("duration", duration, "None when revolutions is given")
-    if revolutions is not None:
-        length = _positive_number("revolutions", revolutions, "a number > 0") / f_shaft
-    elif duration is not None:
-        length = _positive_number("duration", duration, "a duration > 0 [s]")
-    else:
-        length = 1.0 / f_cage
+    length = record_length(bearing, condition, revolutions, duration, contact_angle)
     if points is None:
         points = max(64, math.ceil(64 * length * f_shaft))
     if isinstance(points, bool) or not isinstance(points, int) or points < 2:

@@ -121,11 +121,8 @@ def envelope(ctx: Context):
 
 def bands(ctx: Context):
     """RMS vibration velocity in the ISO 15242 bands of the simulated signal."""
-    try:
-        from ..signal import velocity_bands
-    except ImportError:
-        return notes([("Not available: this bearinglab has no ISO 15242 band analysis "
-                       "(bearinglab.signal.velocity_bands).")], "Not available"), []
+    from ..signal import velocity_bands
+
     sim = ctx.need("simulation", "simulation (envelope section)")
     acc = sim.signal.channels["acc_y"]
     vb = velocity_bands(acc, sim.signal.sample_rate, "acceleration", speed_rpm=ctx.speed_rpm)
@@ -157,11 +154,8 @@ def bands(ctx: Context):
 
 def noise(ctx: Context):
     """Sound pressure level of the running bearing (seed 003 part 4 chain)."""
-    try:
-        from ..noise import FieldPoint, bearing_noise
-    except ImportError:
-        return notes([("Not available: this bearinglab has no noise model "
-                       "(bearinglab.noise.bearing_noise).")], "Not available"), []
+    from ..noise import FieldPoint, bearing_noise
+
     b = ctx.bearing
     if b.outside_diameter is None:
         raise ValueError("the sound field point is placed outside the outer ring: the "
