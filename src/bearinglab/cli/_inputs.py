@@ -101,6 +101,9 @@ MAX_BALL_LOAD_N = 1e7
 MAX_SPEED_RPM = 1e6
 MAX_LOAD_N = 1e7
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON object instead of tables.")]
+DesignationArg = Annotated[str | None, typer.Argument(
+    help="Bearing designation or catalogue name; optional with explicit geometry.",
+    show_default=False)]
 
 
 def speed_rad_s(speed_rpm: float, *, zero: bool = False) -> float:

@@ -15,6 +15,7 @@ from ..life.tables import CONTAMINATION_ALIASES, CONTAMINATION_LEVELS
 from ..operating import OperatingCondition
 from ._app import app, console
 from ._inputs import (
+    DesignationArg,
     JsonOpt,
     OptionError,
     _geometry_line,
@@ -27,9 +28,6 @@ from ._inputs import (
 )
 from ._output import _check_finite, _emit_json, _save_plot, _table
 
-DesignationArg = Annotated[str | None, typer.Argument(
-    help="Bearing designation or catalogue name; optional with explicit geometry.",
-    show_default=False)]
 PlotOpt = Annotated[Path | None, typer.Option(
     "--plot", help="Also draw life against load to this .png, .svg or .pdf file.",
     show_default=False)]

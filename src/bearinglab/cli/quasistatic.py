@@ -23,6 +23,7 @@ from ._app import app, console
 from ._forms import BallErrorOpt, FormErrors, SeedOpt, Surface3dOpt, WavinessOpt
 from ._inputs import (
     MAX_LOAD_N,
+    DesignationArg,
     JsonOpt,
     OptionError,
     _geometry_line,
@@ -36,9 +37,6 @@ from ._inputs import (
 )
 from ._output import _emit_json, _save_plot, _table
 
-DesignationArg = Annotated[str | None, typer.Argument(
-    help="Bearing designation or catalogue name; optional with explicit geometry.",
-    show_default=False)]
 PlotOpt = Annotated[Path | None, typer.Option(
     "--plot", help="Also draw the result to this .png, .svg or .pdf file.", show_default=False)]
 MAX_CASES = 1_000_000
