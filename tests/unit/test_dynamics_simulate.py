@@ -32,6 +32,9 @@ def test_parameters_are_checked():
         RigidParameters(shaft_mass=0.0)
     with pytest.raises(InputError, match="traction"):
         SlipParameters(traction="coulomb")
+    for onset in (0.0, -1e-8, float("nan")):     # the ramp divides by it
+        with pytest.raises(InputError, match="damping_onset"):
+            SlipParameters(damping_onset=onset)
     with pytest.raises(InputError, match="shaft_speed"):
         simulate(ER16K, OperatingCondition(radial_load=50.0), duration=0.01)
     with pytest.raises(InputError, match="contact_angle"):
