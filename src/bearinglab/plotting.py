@@ -193,3 +193,35 @@ def stiffness_map_figure(table, ax=None):
         a.legend(fontsize=7)
     fig.tight_layout()
     return fig, ax
+
+
+def draw_spectrum(ax, spec, lines, kin, max_frequency: float, *, title: str, ylabel: str,
+                  names=("shaft", "ftf", "bpfo", "bpfi", "ball_defect"),
+                  harmonics: int = 8) -> None:
+    """A plain spectrum up to ``max_frequency`` with the kinematic lines and their
+    harmonics marked and the labelled peaks annotated (the lines of
+    :func:`bearinglab.signal.lines.spectrum_lines`)."""
+    from .diagnosis import peak_label
+
+    f, a = spec.frequency, spec.amplitude
+    shown = f <= max_frequency
+    ax.plot(f[shown], a[shown], color="0.3", lw=0.8, label="spectrum")
+    top = float(np.max(a[shown])) if np.any(shown) else 1.0
+    for i, name in enumerate(names):
+        base = kin.hz(name)
+        marks = np.arange(1, harmonics + 1) * base
+        marks = marks[marks <= max_frequency]
+        if marks.size:
+            ax.vlines(marks, 0, 1.05 * top, colors=f"C{i}", linestyles="--", lw=0.8, alpha=0.7,
+                      label=f"{name.upper()} {base:.2f} Hz and harmonics")
+    for p in lines:
+        label = peak_label(p)
+        ax.plot(p["frequency_hz"], p["amplitude"], "o", ms=4, color="k" if label == "-" else "C3")
+        ax.annotate(label, (p["frequency_hz"], p["amplitude"]), textcoords="offset points",
+                    xytext=(2, 4), fontsize=7, rotation=60)
+    ax.set_title(title)
+    ax.set_xlabel("frequency [Hz]")
+    ax.set_ylabel(ylabel)
+    ax.set_xlim(0, max_frequency)
+    ax.set_ylim(0, 1.25 * top)
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))

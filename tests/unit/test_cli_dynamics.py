@@ -6,7 +6,7 @@ import math
 import pytest
 
 from bearinglab.cli import main
-from bearinglab.cli.dynamics import parse_defect
+from bearinglab.cli._forms import parse_defect
 from bearinglab.errors import InputError
 
 SIM = ["simulate", "ER-16K", "--speed-rpm", "1750", "--radial-load-n", "50",

@@ -1,21 +1,115 @@
-"""The typer application, the shared enums and the entry point (one line per user error)."""
+"""The typer application, its lazily loaded commands and the entry point (one line per
+user error).
 
+Start-up matters: ``bearinglab --help`` must not import the analyses. Each command lives
+in a module of its own with its own ``app = command_app()``; :data:`COMMANDS` names the
+module and the one-line help of every command, so the top-level help and the command
+lookup import nothing until a command runs (``tests/unit/test_cli_startup.py`` checks
+that the table agrees with the commands' docstrings).
+"""
+
+import importlib
 import os
 import sys
+from collections.abc import Mapping
 from enum import Enum
-from typing import Annotated
 
 import typer
-from rich.console import Console
+from typer.core import TyperGroup
 
 from .. import __version__
 from ..errors import BearinglabError
 
-app = typer.Typer(add_completion=False, no_args_is_help=True, pretty_exceptions_enable=False,
-                  rich_markup_mode=None,
+#: command name -> (module in bearinglab.cli, one-line help: how its docstring begins)
+COMMANDS: dict[str, tuple[str, str]] = {
+    "info": ("foundation", ("Decode a designation; show dimensions, internal geometry (with "
+                           "sources) and frequency factors.")),
+    "frequencies": ("foundation", ("Kinematic defect frequencies (pure rolling) in Hz and as "
+                                  "orders.")),
+    "contact": ("foundation", "Hertz contact of one ball with the inner and outer raceway."),
+    "static": ("quasistatic", ("Quasi-static load distribution: per-ball loads and contact "
+                              "angles, ring displacements and the 5x5 stiffness matrix.")),
+    "stiffness-map": ("quasistatic", ("Radial and axial stiffness (and displacements) over a "
+                                     "grid of loads and speeds.")),
+    "ring-modes": ("quasistatic", ("Natural frequencies of the outer ring in the loaded bearing "
+                                  "(seed 000).")),
+    "simulate": ("simulate", ("Simulate the vibration of a bearing with defects and form errors "
+                             "(seed 003 rigid model or seed 004 slip model).")),
+    "analyze": ("analyze", "Diagnose a vibration record by envelope analysis."),
+    "noise": ("noise", ("Noise of a running ball bearing with waviness, ball-size errors and "
+                       "random surfaces (seed 003 part 4, seed 002).")),
+    "friction": ("friction", ("Friction torque and power loss: seed 003's constant coefficient "
+                             "or the SKF model.")),
+    "life": ("life", ("Load ratings C, C0, Cu, equivalent loads, basic and modified rating "
+                     "life.")),
+    "validate": ("validate", "Run every published case bearinglab reproduces."),
+    "report": ("report", ("Write an engineer's report of a bearing at an operating point to one "
+                         "self-contained HTML page.")),
+}
+
+
+def command_app() -> typer.Typer:
+    """The typer app a command module registers its command(s) on."""
+    return typer.Typer(add_completion=False, pretty_exceptions_enable=False,
+                       rich_markup_mode=None)
+
+
+class _LazyCommands(Mapping):
+    """name -> click command, importing a command's module the first time it is asked."""
+
+    def __init__(self) -> None:
+        self._loaded: dict = {}
+
+    def __getitem__(self, name: str):
+        if name not in COMMANDS:
+            raise KeyError(name)
+        if name not in self._loaded:
+            module = importlib.import_module(f"{__package__}.{COMMANDS[name][0]}")
+            self._loaded.update(typer.main.get_group(module.app).commands)
+        return self._loaded[name]
+
+    def __iter__(self):
+        return iter(COMMANDS)
+
+    def __len__(self) -> int:
+        return len(COMMANDS)
+
+
+class LazyGroup(TyperGroup):
+    """A typer group whose commands are imported only when one is run or asked for help."""
+
+    def __init__(self, **kwargs) -> None:
+        super().__init__(**kwargs)
+        self.commands = _LazyCommands()
+
+    def list_commands(self, ctx) -> list[str]:
+        return list(COMMANDS)
+
+    def format_commands(self, ctx, formatter) -> None:
+        with formatter.section("Commands"):
+            formatter.write_dl([(name, help_) for name, (_, help_) in COMMANDS.items()])
+
+
+app = typer.Typer(cls=LazyGroup, add_completion=False, no_args_is_help=True,
+                  pretty_exceptions_enable=False, rich_markup_mode=None,
                   help="Rolling-bearing mechanics, vibration and diagnostics from published "
                        "methods. Run 'bearinglab COMMAND --help' for a command's options.")
-console = Console()
+
+
+class _LazyConsole:
+    """The rich console of stdout, made on first use (rich's import is not free)."""
+
+    _console = None
+
+    def __getattr__(self, name):
+        if _LazyConsole._console is None:
+            from rich.console import Console
+
+            _LazyConsole._console = Console()
+        return getattr(_LazyConsole._console, name)
+
+
+console = _LazyConsole()
 
 
 class System(str, Enum):
@@ -35,8 +129,8 @@ def _version(value: bool):
 
 
 @app.callback()
-def _main(version: Annotated[bool, typer.Option("--version", callback=_version, is_eager=True,
-                                                help="Show the version and exit.")] = False):
+def _main(version: bool = typer.Option(False, "--version", callback=_version, is_eager=True,
+                                       help="Show the version and exit.")):
     """Rolling-bearing mechanics, vibration and diagnostics from published methods."""
 
 

@@ -1,5 +1,7 @@
-"""Command-line form errors (issue 5): --waviness, --ball-size-error-um, --surface3d and
---seed, parsed into one :class:`~bearinglab.imperfections.Imperfections`."""
+"""Command-line specifications of what is wrong with a bearing: --defect (localised pits,
+issue 4) and the form errors --waviness, --ball-size-error-um, --surface3d and --seed
+(issue 5), parsed into :class:`~bearinglab.dynamics.Defect` and one
+:class:`~bearinglab.imperfections.Imperfections`."""
 
 import math
 from typing import Annotated
@@ -7,6 +9,7 @@ from typing import Annotated
 import numpy as np
 import typer
 
+from ..dynamics.defects import Defect
 from ..errors import InputError
 from ._inputs import OptionError, parse_spec
 
@@ -50,6 +53,72 @@ SeedOpt = Annotated[int | None, typer.Option(
     "--seed", help="Seed of the random ball-size errors and surfaces (default 0: the same "
     "command gives the same bearing; surface i in the order given uses SEED + 1 + i).",
     show_default=False)]
+
+#: What a --defect specification may hold.
+DEFECT_ALLOWED = ("LOCATION:KEY=VALUE,... with LOCATION outer, inner or ball and keys "
+                  "width_mm (> 0, required), depth_mm (> 0), angle_deg (outer: position from "
+                  "+x towards +y, 270 = bottom; inner: position at t = 0; ball: spin phase) "
+                  "and ball (ball index, ball defects only), e.g. "
+                  "outer:width_mm=1.2,depth_mm=0.25")
+_DEFECT_KEYS = {"outer": {"width_mm": "positive", "depth_mm": "positive", "angle_deg": "number"},
+                "inner": {"width_mm": "positive", "depth_mm": "positive", "angle_deg": "number"},
+                "ball": {"width_mm": "positive", "depth_mm": "positive", "angle_deg": "number",
+                         "ball": "index"}}
+
+
+def bad_defect(text: str, hint: str) -> OptionError:
+    return OptionError("--defect", text, DEFECT_ALLOWED, hint)
+
+
+def parse_defect(text: str) -> Defect:
+    """A :class:`~bearinglab.dynamics.Defect` (SI) from a --defect specification.
+
+    ``outer:width_mm=1.2,depth_mm=0.25[,angle_deg=270]``, ``inner:...`` or
+    ``ball:width_mm=1.2[,ball=0]``; widths and depths in mm, angles in degrees (for the
+    outer race from +x towards +y, default 270 = the bottom of the load zone).
+
+    >>> parse_defect("outer:width_mm=1.2,depth_mm=0.25").to_dict()["angle_deg"]
+    -90.0
+    """
+    location, values = parse_spec(text, "--defect", DEFECT_ALLOWED, _DEFECT_KEYS,
+                                  noun="defects", required=("width_mm",))
+    kwargs = {"width": values["width_mm"] * 1e-3,
+              "depth": values["depth_mm"] * 1e-3 if "depth_mm" in values else None}
+    if "angle_deg" in values:  # into [-pi, pi): 270 deg is -90 deg, the bottom
+        kwargs["angle"] = (math.radians(values["angle_deg"]) + math.pi) % (2 * math.pi) - math.pi
+    if "ball" in values:
+        kwargs["ball"] = values["ball"]
+    return Defect(location, **kwargs)
+
+
+def form_errors_text(imperfections) -> str:
+    """One line describing the form errors (or "none")."""
+    if imperfections is None or imperfections.is_empty:
+        return "none"
+    parts = []
+    for w in imperfections.waviness:
+        where = w.race + (f" {w.ball}" if w.ball is not None else "")
+        parts.append(f"{where} waviness q = {w.order}, {w.amplitude * 1e6:g} um")
+    if imperfections.ball_size_errors is not None:
+        parts.append(f"ball sizes within {imperfections.ball_size_errors.band * 1e6:.3g} um")
+    for srf in imperfections.surfaces:
+        parts.append(f"{srf.race} 3-D surface {srf.amplitude * 1e6:g} um RMS")
+    return "; ".join(parts)
+
+def defect_text(d: Defect) -> str:
+    x = d.to_dict()
+    text = f"{d.location}: width {x['width_mm']:g} mm"
+    if x["depth_mm"] is not None:
+        text += f", depth {x['depth_mm']:g} mm"
+    text += f", angle {x['angle_deg'] % 360:g} deg"
+    return text + (f", ball {d.ball}" if d.location == "ball" else "")
+
+
+def defect_reason(exc: InputError) -> str:
+    """Defect.check's error in the --defect spec's units."""
+    if exc.parameter == "width":
+        return f"width_mm = {exc.value * 1e3:g} must be {exc.allowed}"
+    return f"{exc.parameter} = {exc.value!r} must be {exc.allowed}"
 
 
 def parse_waviness(text: str):

@@ -542,3 +542,20 @@ def save_plot_figure(fig, path: Path, flag: str = "--plot") -> None:
                           exc.strerror or type(exc).__name__) from None
     except InputError as exc:
         raise OptionError(flag, str(path), exc.allowed) from None
+
+
+def positive(flag: str, value, allowed: str, zero: bool = False):
+    if value is not None and not (math.isfinite(value) and (value >= 0 if zero else value > 0)):
+        raise OptionError(flag, value, allowed)
+    return value
+
+
+def check_path(flag: str, path: Path | None, suffixes: tuple[str, ...]) -> None:
+    """Refuse an output path with an unknown suffix or in a missing directory, before
+    any simulating."""
+    if path is None:
+        return
+    if path.suffix.lower() not in suffixes:
+        raise OptionError(flag, str(path), f"a file name ending in {', '.join(suffixes)}")
+    if not path.parent.is_dir():
+        raise OptionError(flag, str(path), "a path in an existing directory")

@@ -92,3 +92,47 @@ class _References:
     def print(self) -> None:
         for i, ref in enumerate(self.refs, start=1):
             console.print(f"[dim]\\[{i}] {escape(ref)}[/dim]")
+
+
+# ------------------------------------------------------------------ diagnosis
+def peak_rows(peaks) -> list[list]:
+    """Table rows (Hz, amplitude, label, deviation %) of labelled lines."""
+    from ..diagnosis import peak_label
+
+    rows = []
+    for p in peaks:
+        deviation = p.get("deviation")
+        rows.append([p["frequency_hz"], p["amplitude"], peak_label(p),
+                     None if deviation is None else 100.0 * deviation])
+    return rows
+
+
+def print_diagnosis(diag, title: str) -> None:
+    """The kinematic frequencies, the envelope lines and the verdict, as tables."""
+    from ..kinematics import FREQUENCY_NAMES, LONG_NAMES
+
+    kin = diag.frequencies
+    console.print(_table(f"Kinematic frequencies at {kin.shaft_hz * 60:g} rpm",
+                         ["frequency", "Hz", "order", "meaning"],
+                         [["shaft", kin.shaft_hz, 1.0, LONG_NAMES["shaft"]]]
+                         + [[n.upper() if n != "ball_defect" else "BALL DEFECT", kin.hz(n),
+                             kin.orders[n], LONG_NAMES[n]] for n in FREQUENCY_NAMES]))
+    band = ("none (no band-pass)" if diag.band is None
+            else f"{diag.band[0]:.6g} - {diag.band[1]:.6g} Hz")
+    console.print(_table(f"{title}: envelope lines (band {band}, resolution "
+                         f"{diag.resolution:.3g} Hz)",
+                         ["Hz", "amplitude", "matched", "deviation %"], peak_rows(diag.peaks)))
+    fault = diag.likely_fault or "none found"
+    console.print(f"likely fault: [bold]{escape(fault)}[/bold]")
+    console.print(f"[dim]{escape(diag.reason)}[/dim]")
+    if diag.ball_defect_frequency_hz is not None:
+        console.print(f"ball defect line measured at {diag.ball_defect_frequency_hz:.5g} Hz "
+                      f"(kinematic {kin.hz('ball_defect'):.5g} Hz)")
+
+
+def peaks_json(peaks) -> list[dict]:
+    """Labelled lines (:func:`bearinglab.signal.match_peaks`) in the JSON form of
+    ``peaks``: frequency_hz, amplitude, matched, harmonic, deviation and sideband keys."""
+    keys = ("frequency_hz", "amplitude", "matched", "harmonic", "deviation", "sideband_of",
+            "sideband_harmonic", "sideband_order", "modulation")
+    return [{k: p[k] for k in keys if k in p} for p in peaks]

@@ -16,7 +16,7 @@ from ..designation import parse
 from ..errors import CatalogError, DesignationError, InputError
 from ..geometry import BallBearing
 from ..kinematics import FREQUENCY_NAMES, LONG_NAMES, defect_frequencies
-from ._app import HertzMethod, app, console
+from ._app import HertzMethod, command_app, console
 from ._inputs import (
     MAX_BALL_LOAD_N,
     JsonOpt,
@@ -39,6 +39,8 @@ from ._output import (
     _save_plot,
     _table,
 )
+
+app = command_app()
 
 # ------------------------------------------------------------------ commands
 DesignationArg = Annotated[str | None, typer.Argument(

@@ -24,7 +24,7 @@ from ..friction import (
 )
 from ..life import equivalent_dynamic_load, load_ratings
 from ..lubrication import LUBRICANTS, ZERO_CELSIUS
-from ._app import app, console
+from ._app import command_app, console
 from ._inputs import (
     MAX_LOAD_N,
     JsonOpt,
@@ -37,6 +37,8 @@ from ._inputs import (
     with_geometry,
 )
 from ._output import _emit_json, _table
+
+app = command_app()
 
 DesignationArg = Annotated[str | None, typer.Argument(
     help="Bearing designation or catalogue name; optional with --bore-mm and "

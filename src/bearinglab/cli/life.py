@@ -13,7 +13,7 @@ from ..errors import InputError
 from ..life import rating_life
 from ..life.tables import CONTAMINATION_ALIASES, CONTAMINATION_LEVELS
 from ..operating import OperatingCondition
-from ._app import app, console
+from ._app import command_app, console
 from ._inputs import (
     DesignationArg,
     JsonOpt,
@@ -27,6 +27,8 @@ from ._inputs import (
     with_geometry,
 )
 from ._output import _check_finite, _emit_json, _save_plot, _table
+
+app = command_app()
 
 PlotOpt = Annotated[Path | None, typer.Option(
     "--plot", help="Also draw life against load to this .png, .svg or .pdf file.",

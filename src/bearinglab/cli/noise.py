@@ -28,31 +28,34 @@ from ..noise import FieldPoint, bearing_noise, velocity_from_positions
 from ..operating import OperatingCondition
 from ..signal import iso15242_bands, velocity_bands
 from ..signal.bands import MIN_PERIODS
-from ._app import app, console
-from ._forms import BallErrorOpt, FormErrors, SeedOpt, Surface3dOpt, WavinessOpt
+from ..signal.lines import spectrum_lines
+from ._app import command_app, console
+from ._forms import (
+    BallErrorOpt,
+    FormErrors,
+    SeedOpt,
+    Surface3dOpt,
+    WavinessOpt,
+    form_errors_text,
+)
 from ._inputs import (
     MAX_LOAD_N,
+    DesignationArg,
     JsonOpt,
     OptionError,
     _geometry_line,
     _geometry_warnings,
     _print_warnings,
+    check_path,
+    positive,
     resolve_bearing,
     save_plot_figure,
     speed_rad_s,
     with_geometry,
 )
-from ._output import _emit_json, _table
-from .dynamics import (
-    DesignationArg,
-    _check_path,
-    _peak_rows_of,
-    _positive,
-    draw_spectrum,
-    form_errors_text,
-    peaks_json,
-    spectrum_lines,
-)
+from ._output import _emit_json, _table, peak_rows, peaks_json
+
+app = command_app()
 
 #: Sample rate of the velocity-band record over the top band edge (the usual analyser
 #: ratio: 25.6 kHz for the 10 kHz edge).
@@ -121,15 +124,15 @@ def noise_command(
     if not (math.isfinite(radial_load_n) and 0 < radial_load_n <= MAX_LOAD_N):
         raise OptionError("--radial-load-n", radial_load_n,
                           f"a load in (0, {MAX_LOAD_N:g}] N (the orbit needs a load)")
-    _positive("--distance-mm", distance_mm, "a distance > 0 mm")
+    positive("--distance-mm", distance_mm, "a distance > 0 mm")
     if not math.isfinite(angle_deg):
         raise OptionError("--angle-deg", angle_deg, "a finite angle [deg]")
-    _positive("--duration-s", duration_s, "a duration > 0 s")
+    positive("--duration-s", duration_s, "a duration > 0 s")
     if points is not None and not 16 <= points <= MAX_POINTS:
         raise OptionError("--points", points, f"an integer in [16, {MAX_POINTS}]")
     if seed is not None and seed < 0:
         raise OptionError("--seed", seed, "an integer >= 0")
-    _check_path("--plot", plot, (".png", ".svg", ".pdf"))
+    check_path("--plot", plot, (".png", ".svg", ".pdf"))
     forms = FormErrors(waviness, ball_size_error_um, surface3d)
     bearing, _ = resolve_bearing(designation, geometry)
     _check_point(bearing, distance_mm)
@@ -308,7 +311,7 @@ def _print(out: dict, bearing, imperfections, spec, peaks) -> None:
     console.print(f"[dim]{escape(out['velocity_bands_note'])}[/dim]")
     console.print(_table(f"Sound-pressure spectrum lines (resolution {spec.resolution:.3g} Hz)",
                          ["Hz", "amplitude [Pa]", "matched", "deviation %"],
-                         _peak_rows_of(peaks)))
+                         peak_rows(peaks)))
     kin = out["kinematic"]
     console.print(f"BPFO {kin['bpfo_hz']:.4g} Hz, BPFI {kin['bpfi_hz']:.4g} Hz, FTF "
                   f"{kin['ftf_hz']:.4g} Hz, shaft {out['speed_rpm'] / 60:.4g} Hz")
@@ -321,7 +324,7 @@ def _db(value) -> str:
 
 def _plot(noise, spec, peaks, kin, max_frequency: float, path: Path) -> None:
     """Pressure and SPL over time (left), pressure spectrum and directivity (right)."""
-    from ..plotting import _pyplot
+    from ..plotting import _pyplot, draw_spectrum
 
     plt = _pyplot()
     fig = plt.figure(figsize=(14, 8.5))

@@ -19,7 +19,7 @@ from ..quasistatic import solve_load_distribution
 from ..quasistatic.orbit import inner_ring_orbit
 from ..quasistatic.study import stiffness_map as stiffness_map_study
 from ..rings import ring_modes
-from ._app import app, console
+from ._app import command_app, console
 from ._forms import BallErrorOpt, FormErrors, SeedOpt, Surface3dOpt, WavinessOpt
 from ._inputs import (
     MAX_LOAD_N,
@@ -36,6 +36,8 @@ from ._inputs import (
     with_geometry,
 )
 from ._output import _emit_json, _save_plot, _table
+
+app = command_app()
 
 PlotOpt = Annotated[Path | None, typer.Option(
     "--plot", help="Also draw the result to this .png, .svg or .pdf file.", show_default=False)]
@@ -195,7 +197,7 @@ def static(designation: DesignationArg = None,
                          table[cols].to_numpy().tolist()))
     console.print(escape(_geometry_line(bearing)))
     if imperfections is not None:
-        from .dynamics import form_errors_text
+        from ._forms import form_errors_text
 
         console.print(escape(f"form errors: {form_errors_text(imperfections)} (the load "
                              "distribution at shaft angle 0, ball 0 under the load)"))

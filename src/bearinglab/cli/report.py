@@ -12,7 +12,8 @@ from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
 from ..errors import InputError
 from ..operating import OperatingCondition
-from ._app import app, console
+from ._app import command_app, console
+from ._forms import DEFECT_ALLOWED, parse_defect
 from ._inputs import (
     JsonOpt,
     OptionError,
@@ -24,7 +25,8 @@ from ._inputs import (
     with_geometry,
 )
 from ._output import _emit_json
-from .dynamics import DEFECT_ALLOWED, parse_defect
+
+app = command_app()
 
 DesignationArg = Annotated[str | None, typer.Argument(
     help="Bearing designation or catalogue name (e.g. 6205, 180205, ER-16K); optional with "

@@ -14,9 +14,11 @@ from rich.markup import escape
 from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
-from ._app import app, console
+from ._app import command_app, console
 from ._inputs import JsonOpt, OptionError
 from ._output import _emit_json
+
+app = command_app()
 
 #: Verdicts that leave the exit code at 0.
 GOOD_VERDICTS = ("pass", "known failure")
