@@ -160,3 +160,39 @@ def test_thrust_balls_must_clear_the_shaft():
         BallBearing(ball_count=12, ball_diameter=6e-3, pitch_diameter=43e-3,
                     contact_angle=math.pi / 2, bore=25e-3, outside_diameter=42e-3,
                     bearing_type="thrust_ball")
+
+
+@pytest.mark.parametrize("args", [
+    (0.0215, 0.026, 0.015, 0.00413, 0.0234, "outer"),
+    (0.0125, 0.0165, 0.015, 0.0041, 0.0155, "inner"),
+    (0.02, 0.03, 0.01, 0.004, 0.022, "outer"),
+    (0.0125, 0.0140, 0.015, 0.0041, 0.0155, "inner"),  # groove cut off by the shoulder
+])
+def test_ring_section_closed_form_matches_quadrature(args):
+    """The closed-form moments of the grooved section against scipy's adaptive quadrature
+    with the groove edges as break points."""
+    import math
+
+    from scipy import integrate
+
+    from bearinglab.geometry import grooved_ring_section
+
+    inner, outer, width, big_r, bottom, race = args
+    centre = bottom + (big_r if race == "inner" else -big_r)
+
+    def w(r):
+        return width - 2.0 * math.sqrt(max(big_r**2 - (r - centre) ** 2, 0.0))
+
+    pts = [p for p in (centre - big_r, centre + big_r) if inner < p < outer]
+
+    def quad(f):
+        return integrate.quad(f, inner, outer, points=pts or None, epsabs=0, epsrel=1e-13,
+                              limit=200)[0]
+
+    area = quad(w)
+    mean = quad(lambda r: r * w(r)) / area
+    second = quad(lambda r: (r - mean) ** 2 * w(r))
+    got = grooved_ring_section(*args)
+    assert got.area == pytest.approx(area, rel=1e-11)
+    assert got.mean_radius == pytest.approx(mean, rel=1e-11)
+    assert got.second_moment == pytest.approx(second, rel=1e-9)

@@ -2,16 +2,16 @@
 
 Each CSV names its standard and source in ``# source:`` comment lines and holds lengths in
 millimetres (clearance in micrometres, angles in degrees), as printed in the catalogues it
-comes from; the functions here read them with pandas and keep them in those units.  The
-conversion to SI happens where a value leaves the catalogue (:mod:`.lookup`).
+comes from; the functions here read them (with the standard csv module, so that a
+look-up does not pay for importing pandas) and keep them in those units.  The conversion
+to SI happens where a value leaves the catalogue (:mod:`.lookup`).
 """
 
 from __future__ import annotations
 
+import csv
 from functools import cache
 from importlib import resources
-
-import pandas as pd
 
 #: The shipped tables: file name -> (what it holds, string columns).
 TABLES: dict[str, tuple[str, tuple[str, ...]]] = {
@@ -44,20 +44,37 @@ def source_lines(name: str) -> list[str]:
             if line.startswith("# source:")]
 
 
-@cache
-def _read(name: str) -> pd.DataFrame:
+def _open(name: str):
     if name not in TABLES:
         raise KeyError(f"no shipped table {name!r}; known: {sorted(TABLES)}")
-    dtypes = {col: str for col in TABLES[name][1]}
-    with resources.files(__package__).joinpath("data").joinpath(name).open("r", encoding="utf-8") as fh:
-        frame = pd.read_csv(fh, comment="#", dtype=dtypes)
-    for col in TABLES[name][1]:
-        frame[col] = frame[col].fillna("")
-    return frame
+    return resources.files(__package__).joinpath("data").joinpath(name).open("r",
+                                                                          encoding="utf-8")
 
 
-def read_table(name: str) -> pd.DataFrame:
-    """A copy of one shipped table, in the units of the file (mm, um, deg).
+@cache
+def rows(name: str) -> tuple[dict, ...]:
+    """The rows of one shipped table as dicts, in the units of the file (mm, um, deg).
+
+    Text columns (:data:`TABLES`) are strings (``""`` when empty); the others are floats,
+    or None for an empty cell.  Cached: do not modify the dicts.
+
+    Parameters
+    ----------
+    name : str
+        File name in ``catalog/data``, one of :data:`TABLES` [-].
+
+    >>> rows("iso104_thrust.csv")[0]["series"]
+    '511'
+    """
+    text_cols = TABLES[name][1] if name in TABLES else ()
+    with _open(name) as fh:
+        reader = csv.DictReader(line for line in fh if not line.startswith("#"))
+        return tuple({k: (v if k in text_cols else (float(v) if v.strip() else None))
+                      for k, v in row.items()} for row in reader)
+
+
+def read_table(name: str):
+    """One shipped table as a pandas DataFrame, in the units of the file (mm, um, deg).
 
     Empty numeric cells become NaN; empty text cells become ``""``.
 
@@ -70,4 +87,11 @@ def read_table(name: str) -> pd.DataFrame:
     >>> float(t.query("series == '511' and bore_mm == 10")["height_mm"].iloc[0])
     9.0
     """
-    return _read(name).copy()
+    import pandas as pd
+
+    dtypes = {col: str for col in TABLES.get(name, ((), ()))[1]}
+    with _open(name) as fh:
+        frame = pd.read_csv(fh, comment="#", dtype=dtypes)
+    for col in TABLES[name][1]:
+        frame[col] = frame[col].fillna("")
+    return frame

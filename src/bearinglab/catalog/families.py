@@ -20,7 +20,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-import pandas as pd
 
 #: Shipped table of each standard.
 TABLE_FILES = {"iso15": "iso15_radial.csv", "iso355": "iso355_tapered.csv",
@@ -108,12 +107,14 @@ def _families() -> dict[str, Family]:
 FAMILIES: dict[str, Family] = _families()
 
 
-def families_table() -> pd.DataFrame:
-    """The family table as a DataFrame (one row per family; contact angle in degrees).
+def families_table():
+    """The family table as a pandas DataFrame (one row per family; contact angle in degrees).
 
     >>> families_table().set_index("family").loc["NU22", "dimension_series"]
     '22'
     """
+    import pandas as pd
+
     rows = [{"family": f.key, "bearing_type": f.bearing_type,
              "dimension_series": f.dimension_series, "standard": f.standard,
              "table": TABLE_FILES[f.table], "rows": f.rows,

@@ -16,8 +16,6 @@ from dataclasses import dataclass
 from functools import lru_cache
 from typing import Any
 
-import pandas as pd
-
 from ..errors import CatalogError, DesignationError, InputError
 from . import _data
 from .families import FAMILIES, TABLE_FILES, Family, families_table
@@ -99,7 +97,7 @@ def _as_designation(designation: Any, system: str | None = None):
     return designation
 
 
-def _bore_list(bores: pd.Series) -> str:
+def _bore_list(bores) -> str:
     values = sorted({float(b) for b in bores})
     return ", ".join(f"{b:g}" for b in values) if values else "none"
 
@@ -147,19 +145,16 @@ def boundary_dimensions(designation: Any, system: str | None = None) -> Boundary
                            f"({getattr(des, 'bearing_type', 'unknown type')}); the catalogue holds "
                            f"ISO 15 radial, ISO 355 tapered (302, 303, 320, 322, 323) and ISO 104 "
                            "thrust ball (511-514) bearings")
-    table = _data.read_table(TABLE_FILES[fam.table])
-    if fam.table == "iso15":
-        rows = table[table["dimension_series"] == fam.dimension_series]
-        where = f"dimension series {fam.dimension_series}"
-    else:
-        rows = table[table["series"] == fam.key]
-        where = f"series {fam.key}"
-    hit = rows[(rows["bore_mm"] - bore_mm).abs() < 1e-6]
-    if hit.empty:
+    column, wanted, where = (("dimension_series", fam.dimension_series,
+                              f"dimension series {fam.dimension_series}")
+                             if fam.table == "iso15" else ("series", fam.key, f"series {fam.key}"))
+    rows = [r for r in _data.rows(TABLE_FILES[fam.table]) if r[column] == wanted]
+    hit = [r for r in rows if abs(r["bore_mm"] - bore_mm) < 1e-6]
+    if not hit:
         raise CatalogError(f"{text!r}: family {fam.key} ({where}, {fam.standard}) has no "
                            f"bore {bore_mm:g} mm in the catalogue; bores there [mm]: "
-                           f"{_bore_list(rows['bore_mm'])}")
-    r = hit.iloc[0]
+                           f"{_bore_list(r['bore_mm'] for r in rows)}")
+    r = hit[0]
     common = {"bore": float(r["bore_mm"]) * _MM,
               "outside_diameter": float(r["outside_diameter_mm"]) * _MM,
               "family": fam.key, "dimension_series": fam.dimension_series}
@@ -169,7 +164,7 @@ def boundary_dimensions(designation: Any, system: str | None = None) -> Boundary
             width=float(r["width_mm"]) * _MM,
             standard=f"{fam.standard} dimension series {fam.dimension_series} "
                      f"({TABLE_FILES[fam.table]})",
-            chamfer_min=None if pd.isna(chamfer) else float(chamfer) * _MM, **common)
+            chamfer_min=None if chamfer is None else float(chamfer) * _MM, **common)
     if fam.table == "iso355":
         return BoundaryDimensions(
             width=float(r["total_width_mm"]) * _MM,
@@ -211,16 +206,16 @@ def _clearance_band(bore: Any, group: Any = "CN") -> tuple[str, float, float, fl
             or bore <= 0.0):
         raise InputError("bore", bore, "a positive length [m]")
     d_mm = round(float(bore) / _MM, 6)
-    table = _data.read_table(CLEARANCE_TABLE)
-    rows = table[table["group"] == key]
-    hit = rows[(rows["bore_over_mm"] < d_mm) & (d_mm <= rows["bore_incl_mm"])]
-    if hit.empty:
-        low, high = float(rows["bore_over_mm"].min()), float(rows["bore_incl_mm"].max())
+    rows = [r for r in _data.rows(CLEARANCE_TABLE) if r["group"] == key]
+    hit = [r for r in rows if r["bore_over_mm"] < d_mm <= r["bore_incl_mm"]]
+    if not hit:
+        low = min(r["bore_over_mm"] for r in rows)
+        high = max(r["bore_incl_mm"] for r in rows)
         hint = " (the bore is in metres: 25 mm is 0.025)" if d_mm >= 1000.0 else ""
         raise CatalogError(f"bore {d_mm:g} mm{hint} is outside the ISO 5753-1 table of "
                            f"radial internal clearance group {key} of deep-groove ball bearings "
                            f"({CLEARANCE_TABLE}): it covers bores over {low:g} incl {high:g} mm")
-    r = hit.iloc[0]
+    r = hit[0]
     return (key, float(r["bore_over_mm"]), float(r["bore_incl_mm"]), float(r["min_um"]),
             float(r["max_um"]))
 
@@ -329,14 +324,14 @@ class PublishedGeometry:
 
 
 def _opt(value: Any, scale: float = 1.0) -> float | None:
-    return None if pd.isna(value) else float(value) * scale
+    return None if value is None else float(value) * scale
 
 
-def _row_to_geometry(r: pd.Series) -> PublishedGeometry:
+def _row_to_geometry(r: dict) -> PublishedGeometry:
     angle = _opt(r["contact_angle_deg"])
     return PublishedGeometry(
         name=str(r["name"]), designation=str(r["designation"]),
-        ball_count=None if pd.isna(r["ball_count"]) else int(r["ball_count"]),
+        ball_count=None if r["ball_count"] is None else int(r["ball_count"]),
         ball_diameter=_opt(r["ball_diameter_mm"], _MM),
         pitch_diameter=_opt(r["pitch_diameter_mm"], _MM),
         inner_groove_factor=_opt(r["inner_groove_factor"]),
@@ -350,7 +345,7 @@ def _row_to_geometry(r: pd.Series) -> PublishedGeometry:
 
 def published_geometries() -> list[PublishedGeometry]:
     """All shipped published geometries, in file order (SI units)."""
-    return [_row_to_geometry(r) for _, r in _data.read_table("internal_geometry.csv").iterrows()]
+    return [_row_to_geometry(r) for r in _data.rows("internal_geometry.csv")]
 
 
 def _norm(text: str) -> str:
@@ -422,7 +417,7 @@ def published_geometry(name_or_designation: Any, system: str | None = None,
     return None
 
 
-def catalog_table(kind: str = "dimensions") -> pd.DataFrame:
+def catalog_table(kind: str = "dimensions"):
     """The shipped catalogue data as one DataFrame, in the units of the files (mm, um, deg).
 
     Parameters
@@ -437,6 +432,8 @@ def catalog_table(kind: str = "dimensions") -> pd.DataFrame:
     >>> float(row["width_mm"].iloc[0])
     15.0
     """
+    import pandas as pd
+
     if kind == "families":
         return families_table()
     if kind == "geometry":

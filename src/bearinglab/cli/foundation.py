@@ -11,7 +11,6 @@ from ..catalog import (
     boundary_dimensions,
     published_geometry,
 )
-from ..contact.ball_race import ball_contacts
 from ..designation import parse
 from ..errors import CatalogError, DesignationError, InputError
 from ..geometry import BallBearing
@@ -232,6 +231,8 @@ def contact(designation: DesignationArg = None,
         raise OptionError("--ball-load-n", ball_load_n,
                           f"a load in (0, {MAX_BALL_LOAD_N:g}] N")
     bearing, _ = resolve_bearing(designation, geometry)
+    from ..contact.ball_race import ball_contacts  # scipy.special: only this command
+
     result = ball_contacts(bearing, ball_load_n, method=method.value.replace("-", "_"))
     d = result.to_dict()
     d["warnings"] = _geometry_warnings(bearing) + d["warnings"]

@@ -20,7 +20,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-import pandas as pd
 
 from ..geometry import BallBearing
 from ..materials import effective_modulus
@@ -116,8 +115,10 @@ class BallContacts:
 
         return ball_contacts_figure(self, axes)
 
-    def to_pandas(self) -> pd.DataFrame:
+    def to_pandas(self):
         """One row per (contact, load), engineering units."""
+        import pandas as pd
+
         rows = []
         loads = np.atleast_1d(self.load)
         for race, c in (("inner", self.inner), ("outer", self.outer)):
