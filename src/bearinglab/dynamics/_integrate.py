@@ -9,9 +9,10 @@
 
 Both integrate one *chunk* of output times and return the state and step size to carry
 into the next, so that the caller can show progress between chunks. Between accepted
-steps the output is interpolated by the cubic Hermite polynomial through the states and
-derivatives at both ends (third order; the step never exceeds ``h_max``, which the
-callers tie to the output interval). Step control: the error norm is the RMS of
+steps the output is interpolated: by Dormand-Prince's own 4th-order continuous extension
+(:func:`dopri_dense`), or by the cubic Hermite polynomial through the states and
+derivatives at both ends (:func:`hermite`, third order). The step never exceeds
+``h_max``, which the callers tie to the output interval. Step control: the error norm is the RMS of
 err_i / (atol_i + rtol max(|y_i|, |y_new,i|)); a step is accepted when it is <= 1 and the
 next step is h * clip(0.9 norm^(-1/5), 0.2, 5) (Hairer, Norsett & Wanner, *Solving
 Ordinary Differential Equations I*, 2nd ed., 1993, sec. II.4).
@@ -21,6 +22,8 @@ from __future__ import annotations
 
 import numba
 import numpy as np
+
+from . import _kernels
 
 OK, TOO_MANY_STEPS, STEP_TOO_SMALL, NOT_FINITE = 0, 1, 2, 3
 STATUS_TEXT = {TOO_MANY_STEPS: "the step limit was reached",
@@ -38,6 +41,18 @@ _A = np.array([
     [9017 / 3168, -355 / 33, 46732 / 5247, 49 / 176, -5103 / 18656, 0],
     [35 / 384, 0, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84]])
 _E = np.array([71 / 57600, 0, -71 / 16695, 71 / 1920, -17253 / 339200, 22 / 525, -1 / 40])
+# Dormand-Prince continuous extension of order 4 (Dormand & Prince 1986; Hairer, Norsett &
+# Wanner sec. II.6; the coefficients of SciPy's RK45.P): y(t + x h) = y + h sum_k K_k
+# (P_k1 x + P_k2 x^2 + P_k3 x^3 + P_k4 x^4)
+_P = np.array([
+    [1, -8048581381 / 2820520608, 8663915743 / 2820520608, -12715105075 / 11282082432],
+    [0, 0, 0, 0],
+    [0, 131558114200 / 32700410799, -68118460800 / 10900136933, 87487479700 / 32700410799],
+    [0, -1754552775 / 470086768, 14199869525 / 1410260304, -10690763975 / 1880347072],
+    [0, 127303824393 / 49829197408, -318862633887 / 49829197408,
+     701980252875 / 199316789632],
+    [0, -282668133 / 205662961, 2019193451 / 616988883, -1453857185 / 822651844],
+    [0, 40617522 / 29380423, -110615467 / 29380423, 69997945 / 29380423]])
 
 
 @numba.njit(cache=True)
@@ -51,6 +66,21 @@ def hermite(t0, y0, f0, t1, y1, f1, t, out):
     h11 = s * s * (s - 1.0)
     for i in range(y0.shape[0]):
         out[i] = h00 * y0[i] + h10 * h * f0[i] + h01 * y1[i] + h11 * h * f1[i]
+
+
+@numba.njit(cache=True)
+def dopri_dense(t0, y0, h, k, t, out):
+    """The Dormand-Prince 4th-order continuous extension of the step (t0, y0, h) with
+    stages ``k`` (7 x n), at t in [t0, t0 + h]."""
+    x = (t - t0) / h
+    w = np.empty(7)
+    for m in range(7):
+        w[m] = x * (_P[m, 0] + x * (_P[m, 1] + x * (_P[m, 2] + x * _P[m, 3])))
+    for i in range(y0.shape[0]):
+        acc = 0.0
+        for m in range(7):
+            acc += w[m] * k[m, i]
+        out[i] = y0[i] + h * acc
 
 
 @numba.njit(cache=True)
@@ -111,7 +141,7 @@ def dopri_chunk(rhs, p, table, t, y, h, t_out, rtol, atol, h_max, max_steps):
         if norm <= 1.0:
             t_new = t + h
             while i_out < t_out.shape[0] and t_out[i_out] <= t_new:
-                hermite(t, y, k[0], t_new, ynew, k[6], t_out[i_out], out[i_out])
+                dopri_dense(t, y, h, k, t_out[i_out], out[i_out])
                 i_out += 1
             t = t_new
             y = ynew.copy()
@@ -123,3 +153,16 @@ def dopri_chunk(rhs, p, table, t, y, h, t_out, rtol, atol, h_max, max_steps):
             rejected += 1
             h *= max(0.2, 0.9 * norm ** -0.2)
     return out, t, y, h, steps, rejected, OK
+
+
+@numba.njit(cache=True)
+def dopri_chunk_rigid(p, table, t, y, h, t_out, rtol, atol, h_max, max_steps):
+    """:func:`dopri_chunk` with the rigid-ring model's right-hand side bound.
+
+    The right-hand side is read as the module attribute ``_kernels.rigid_rhs_numba`` so that
+    numba's on-disk cache can key this function; a compiled function passed in as an
+    argument (or a name imported with ``from ... import``) cannot be cached, and every new
+    process would compile the integrator again (several seconds).
+    """
+    return dopri_chunk(_kernels.rigid_rhs_numba, p, table, t, y, h, t_out, rtol, atol, h_max,
+                       max_steps)
