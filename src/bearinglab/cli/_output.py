@@ -3,6 +3,7 @@
 import json
 import math
 import sys
+from contextlib import contextmanager
 from pathlib import Path
 
 from rich.markup import escape
@@ -136,3 +137,34 @@ def peaks_json(peaks) -> list[dict]:
     keys = ("frequency_hz", "amplitude", "matched", "harmonic", "deviation", "sideband_of",
             "sideband_harmonic", "sideband_order", "modulation")
     return [{k: p[k] for k in keys if k in p} for p in peaks]
+
+
+# ------------------------------------------------------------------ progress
+@contextmanager
+def progress_bar(description: str, *, enabled: bool = True):
+    """A transient progress bar on stderr (shown only on a terminal and when ``enabled``).
+
+    Yields ``update(fraction=None, description=None)``; either may be left out."""
+    from rich.console import Console
+    from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+
+    err = Console(stderr=True)
+    with Progress(TextColumn("{task.description}"), BarColumn(),
+                  TextColumn("{task.percentage:>3.0f}%"), TimeElapsedColumn(), console=err,
+                  transient=True, disable=not enabled or not err.is_terminal) as progress:
+        task = progress.add_task(description, total=1.0)
+
+        def update(fraction: float | None = None, description: str | None = None) -> None:
+            progress.update(task, completed=fraction, description=description)
+
+        yield update
+
+
+def simulation_stage(model: str) -> str:
+    """What a progress bar says before a simulation starts: that the first run in this
+    install compiles the model (numba), when it will."""
+    from ..dynamics import needs_compiling
+
+    if needs_compiling(model):
+        return f"compiling the {model} model (first run only; later runs load it)"
+    return f"simulating ({model} model)"

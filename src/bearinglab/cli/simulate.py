@@ -7,9 +7,7 @@ from pathlib import Path
 from typing import Annotated
 
 import typer
-from rich.console import Console
 from rich.markup import escape
-from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
 from ..diagnosis import analyze_signal
 from ..dynamics import simulate
@@ -44,7 +42,15 @@ from ._inputs import (
     speed_rad_s,
     with_geometry,
 )
-from ._output import _emit_json, _table, peak_rows, peaks_json, print_diagnosis
+from ._output import (
+    _emit_json,
+    _table,
+    peak_rows,
+    peaks_json,
+    print_diagnosis,
+    progress_bar,
+    simulation_stage,
+)
 
 app = command_app()
 #: Channels whose plain spectrum ``simulate`` can read (both models have them).
@@ -133,16 +139,13 @@ def simulate_command(
                               f"{defect_reason(exc)}") from None
     condition = OperatingCondition(radial_load=radial_load_n, axial_load=axial_load_n,
                                    shaft_speed=shaft_speed)
-    err = Console(stderr=True)
-    with Progress(TextColumn(f"simulating ({model.value} model)"), BarColumn(),
-                  TextColumn("{task.percentage:>3.0f}%"), TimeElapsedColumn(), console=err,
-                  transient=True, disable=json_output or not err.is_terminal) as progress:
-        task = progress.add_task("simulate", total=1.0)
+    running = f"simulating ({model.value} model)"
+    with progress_bar(simulation_stage(model.value), enabled=not json_output) as update:
         try:
             sim = simulate(bearing, condition, defects, model=model.value, duration=duration_s,
                            sample_rate=sample_rate_hz, settle=settle_s, noise=noise_ms2,
                            seed=seed, imperfections=imperfections,
-                           progress=lambda f: progress.update(task, completed=f))
+                           progress=lambda f: update(f, running))
         except InputError as exc:
             raise _simulate_error(exc, bearing) from None
     diag = analyze_signal(sim.signal, None, sim.kinematic, channel="acc_y")

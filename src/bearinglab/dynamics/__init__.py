@@ -8,7 +8,10 @@
 
 from .defects import Defect
 from .rigid import RigidParameters
-from .simulation import MODELS, Simulation, simulate
+from .simulation import MODELS, Simulation, needs_compiling, simulate
 from .slip import SlipParameters
 
-__all__ = ["MODELS", "Defect", "RigidParameters", "Simulation", "SlipParameters", "simulate"]
+__all__ = [
+    "MODELS", "Defect", "RigidParameters", "Simulation", "SlipParameters", "needs_compiling",
+    "simulate",
+]

@@ -166,3 +166,13 @@ def dopri_chunk_rigid(p, table, t, y, h, t_out, rtol, atol, h_max, max_steps):
     """
     return dopri_chunk(_kernels.rigid_rhs_numba, p, table, t, y, h, t_out, rtol, atol, h_max,
                        max_steps)
+
+
+def cached_on_disk(dispatcher) -> bool:
+    """Whether numba's on-disk cache holds code for ``dispatcher`` that matches its source,
+    so that a new process loads it instead of compiling it (reads numba's cache index, a
+    private interface: False when it cannot tell)."""
+    try:
+        return bool(dispatcher._cache._cache_file._load_index())
+    except Exception:  # noqa: BLE001 - any change in numba's internals means "cannot tell"
+        return False

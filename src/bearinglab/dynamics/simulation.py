@@ -41,6 +41,12 @@ class Simulation:
     ``ball_spin_speed`` (Z, n) [rad/s] and ``slip_inner``, ``slip_outer`` (Z, n) [m/s]
     (slip model, eq. 13), ``parameters`` and ``stats`` (steps, rejected steps, settle
     time).
+
+    Slip model only (None for the rigid one): ``ball_spin_phase`` (Z, n) [rad], the
+    balls' continuous spin phases phi_j, and ``cage_angle`` (n,) [rad], from which
+    ``spin_speed_ratio`` and ``cage_speed_ratio`` are measured; ``halves``, the two
+    ratios over each half of the record (:func:`.slip.halves_check`); ``warnings``,
+    plain-language notes on the record (not settled, halves disagree).
     """
 
     model: str
@@ -56,22 +62,35 @@ class Simulation:
     slip_inner: np.ndarray | None = None
     slip_outer: np.ndarray | None = None
     extra: dict = field(default_factory=dict)
+    # --- slip model: angles, halves check, warnings (issue 14) ---
+    ball_spin_phase: np.ndarray | None = None
+    cage_angle: np.ndarray | None = None
+    halves: dict | None = None
+    warnings: tuple = ()
+
+    def _angle_ratio(self, angle, order) -> float:
+        # advance of a continuous angle over the record / (pure-rolling speed x span)
+        span = (self.signal.n_samples - 1) / self.signal.sample_rate
+        pure = self.kinematic.orders[order] * self.kinematic.shaft_speed
+        return float(np.mean(angle[..., -1] - angle[..., 0]) / span / pure)
 
     @property
     def cage_speed_ratio(self) -> float | None:
-        """Mean cage speed over its pure-rolling value (slip model; None for rigid)."""
-        if "cage_speed" not in self.signal.channels:
+        """Mean cage speed over its pure-rolling value, from the advance of the cage
+        angle over the record (slip model; None for rigid)."""
+        if self.cage_angle is None:
             return None
-        pure = self.kinematic.orders["ftf"] * self.kinematic.shaft_speed
-        return float(np.mean(self.signal.channels["cage_speed"]) / pure)
+        return self._angle_ratio(self.cage_angle, "ftf")
 
     @property
     def spin_speed_ratio(self) -> float | None:
-        """Mean ball spin speed over its pure-rolling value (slip model; None for rigid)."""
-        if self.ball_spin_speed is None:
+        """Mean ball spin speed over its pure-rolling value, from the advance of the
+        balls' unwrapped spin phases over the record, not from the sampled speeds (whose
+        mean is biased when the spin varies round the orbit faster than the sampling
+        resolves; see :func:`.slip.phase_ratios`). Slip model; None for rigid."""
+        if self.ball_spin_phase is None:
             return None
-        pure = self.kinematic.orders["bsf"] * self.kinematic.shaft_speed
-        return float(np.mean(self.ball_spin_speed) / pure)
+        return self._angle_ratio(self.ball_spin_phase, "bsf")
 
 
 def _check_number(name, value, allowed, low=0.0, inclusive=False):
@@ -154,29 +173,52 @@ def simulate(bearing, condition, defects=(), *, model: str = "rigid",
         p = slip.pack(bearing, condition, params, table, lubricant, max(widths, default=0.0))
         y0 = slip.initial_state(p)
         atol = slip.atol(bearing.ball_count)
-        ftf_hz = kin.hz("ftf")
-        settle = 2.0 / ftf_hz if settle is None else settle
         rtol = 1e-3 if rtol is None else rtol
-    settle = _check_number("settle", settle, "a time >= 0 [s]", inclusive=True)
+    if settle is not None:      # slip default: detected below (slip.settle)
+        settle = _check_number("settle", settle, "a time >= 0 [s]", inclusive=True)
     rtol = _check_number("rtol", rtol, "a tolerance in (0, 0.1]")
     if rtol > 0.1:
         raise InputError("rtol", rtol, "a tolerance in (0, 0.1]")
 
+    start, notes, settle_turns = (0.0, 1e-6), [], None
+    if model == "slip" and settle is None:
+        # settled when the cage and spin ratios stop changing from turn to turn
+        t_s, y0, h_s, info = slip.settle(p, table, y0, rtol, atol, 1.0 / sample_rate)
+        start, settle = (t_s, h_s), t_s
+        settle_turns = info["turns"]
+        if not info["settled"]:
+            notes.append(f"not settled after {info['turns']} cage revolutions "
+                         f"({settle:.3g} s): the speed ratios still change by "
+                         f"{info['change']:.2g} per revolution (rule: "
+                         f"{slip.SETTLE_TOLERANCE:g}); give a longer settle")
     n = round(duration * sample_rate)
     t_out = settle + np.arange(n) / sample_rate
     # the rigid model's dense output is 4th order, so its step may span two samples (30 %
     # fewer step attempts at equal accuracy, benchmarks/README.md); the slip model
     # interpolates by cubic Hermite and keeps one
     h_max = (RIGID_STEPS_PER_SAMPLE if model == "rigid" else 1.0) / sample_rate
-    states, stats = _integrate_chunks(model, p, table, y0, t_out, rtol, atol, h_max, progress)
+    states, stats = _integrate_chunks(model, p, table, y0, t_out, rtol, atol, h_max, progress,
+                                      start)
     stats["settle_s"] = settle
+    if settle_turns is not None:
+        stats["settle_turns"] = settle_turns
     return _result(model, bearing, condition, defects, params, kin, p, table, t_out, states,
-                   stats, noise, seed, sample_rate)
+                   stats, noise, seed, sample_rate, notes)
 
 
-def _integrate_chunks(model, p, table, y0, t_out, rtol, atol, h_max, progress):
-    """Run the integrator chunk by chunk (progress between chunks); raise if it fails."""
-    t, y, h = 0.0, y0.copy(), 1e-6
+def needs_compiling(model: str = "rigid") -> bool:
+    """True when the integrator of ``model`` is not yet in numba's on-disk cache: the first
+    simulation in this install will compile it (several seconds; later ones load it)."""
+    kernel = (_integrate.dopri_chunk_rigid if model == "rigid"
+              else _slip_kernels.rosenbrock_chunk)
+    return not _integrate.cached_on_disk(kernel)
+
+
+def _integrate_chunks(model, p, table, y0, t_out, rtol, atol, h_max, progress,
+                      start=(0.0, 1e-6)):
+    """Run the integrator chunk by chunk (progress between chunks) from the time and
+    step ``start``; raise if it fails."""
+    (t, h), y = start, y0.copy()
     pieces = []
     steps = rejected = 0
     bounds = np.linspace(0, t_out.size, min(CHUNKS, t_out.size) + 1).astype(int)
@@ -205,7 +247,7 @@ def _integrate_chunks(model, p, table, y0, t_out, rtol, atol, h_max, progress):
 
 
 def _result(model, bearing, condition, defects, params, kin, p, table, t_out, states, stats,
-            noise, seed, sample_rate):
+            noise, seed, sample_rate, notes=()):
     accelerations = (_kernels.rigid_accelerations if model == "rigid"
                      else _slip_kernels.slip_accelerations)
     acc = accelerations(p, table, t_out, states)
@@ -225,6 +267,20 @@ def _result(model, bearing, condition, defects, params, kin, p, table, t_out, st
         extra = {"ball_orbital_speed": w_m, "ball_spin_speed": w_r,
                  "slip_inner": (p[_slip_kernels.OMEGA_I] - w_m) * r_in - w_r * r_b,
                  "slip_outer": w_r * r_b - w_m * r_out}
+        # the continuous spin phases and cage angle carry the speed ratios and the check
+        # that the record's two halves agree
+        extra["ball_spin_phase"] = balls[:, :, 4].T
+        extra["cage_angle"] = states[:, 8]
+        halves = slip.halves_check(t_out, extra["cage_angle"], extra["ball_spin_phase"], p)
+        extra["halves"] = halves
+        notes = list(notes)
+        if not halves["agree"]:
+            (c1, c2), (s1, s2) = halves["cage_speed_ratio"], halves["spin_speed_ratio"]
+            notes.append(f"the two halves of the record disagree: spin ratio {s1:.4f} / "
+                         f"{s2:.4f}, cage speed ratio {c1:.4f} / {c2:.4f} (allowed "
+                         f"difference {halves['tolerance']:g}); the record is not "
+                         "stationary: settle longer or record longer")
+        extra["warnings"] = tuple(notes)
     metadata = {"source": f"bearinglab {model} model", "model": model,
                 "speed_rpm": condition.shaft_speed * 30.0 / math.pi,
                 "radial_load_n": condition.radial_load, "bearing": bearing.name or "",
@@ -234,4 +290,4 @@ def _result(model, bearing, condition, defects, params, kin, p, table, t_out, st
                       **extra)
 
 
-__all__ = ["MODELS", "Defect", "Simulation", "simulate"]
+__all__ = ["MODELS", "Defect", "Simulation", "needs_compiling", "simulate"]
