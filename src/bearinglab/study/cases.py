@@ -1,0 +1,313 @@
+"""The cases of a study: a grid of option values or a table read from CSV/Parquet.
+
+A grid is the Cartesian product of its options' value lists (the last option varies
+fastest, as in :func:`itertools.product`), repeated ``repeats`` times; options given as a
+random range (``"uniform:LOW:HIGH"``) are drawn for each case from a generator seeded by
+the study seed and the case index alone (:func:`case_rng`), so a case's inputs never
+depend on the partitioning, the workers or the order in which cases run. The inputs of
+cases ``start..stop`` are computed from their indices (:meth:`Grid.rows`): a study of
+10^6 cases never holds its whole input table.
+
+Value forms (Python values or the command line's text):
+
+- a number, a text, or a list of them: those values;
+- ``"A,B,C"``: a list;
+- ``"START:STOP:COUNT"``: COUNT values evenly spaced from START to STOP (both included);
+- ``"log:START:STOP:COUNT"``: COUNT values evenly spaced in log scale (START, STOP > 0);
+- ``"uniform:LOW:HIGH"``: a random value in [LOW, HIGH) for each case.
+"""
+
+from __future__ import annotations
+
+import difflib
+import hashlib
+import json
+import math
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from ..errors import InputError
+
+#: Kinds of option value: what each holds.
+KINDS = {"number": "a number", "integer": "a whole number", "text": "a text",
+         "bool": "true or false"}
+RANGE_FORMS = ("A,B,C", "START:STOP:COUNT", "log:START:STOP:COUNT", "uniform:LOW:HIGH")
+
+
+@dataclass(frozen=True)
+class Option:
+    """One input of an analysis: its kind, default (None: not used unless given) and help."""
+
+    kind: str
+    default: object
+    help: str
+    choices: tuple = ()
+
+
+@dataclass(frozen=True)
+class Uniform:
+    """A random value in [low, high) drawn for every case (:func:`case_rng`)."""
+
+    low: float
+    high: float
+
+    def to_json(self) -> str:
+        return f"uniform:{self.low!r}:{self.high!r}"
+
+
+def case_rng(seed: int, case: int, stream: int = 0) -> np.random.Generator:
+    """The random generator of one case: from (study seed, case index, stream) only.
+
+    Stream 0 draws the random options, stream 1 seeds the analysis' own random inputs
+    (ball-size errors, measurement noise), so adding a random option never changes them.
+
+    >>> float(case_rng(1, 7).random()) == float(case_rng(1, 7).random())
+    True
+    """
+    return np.random.default_rng(np.random.SeedSequence([int(seed), int(case), int(stream)]))
+
+
+def case_seed(seed: int, case: int) -> int:
+    """An integer seed for the analysis' random inputs of one case (stream 1)."""
+    return int(np.random.SeedSequence([int(seed), int(case), 1]).generate_state(1)[0])
+
+
+def _number(name: str, text: str, kind: str):
+    try:
+        value = float(text)
+    except ValueError:
+        raise InputError(name, text, KINDS[kind]) from None
+    if not math.isfinite(value):
+        raise InputError(name, text, "a finite number")
+    if kind == "integer":
+        if value != int(value):
+            raise InputError(name, text, "a whole number")
+        return int(value)
+    return value
+
+
+def _scalar(name: str, value, option: Option):
+    """One value of ``option`` checked for its kind (text parsed)."""
+    kind = option.kind
+    if kind == "text":
+        if not isinstance(value, str) or not value.strip():
+            raise InputError(name, value, "a non-empty text")
+        value = value.strip()
+    elif kind == "bool":
+        if isinstance(value, str):
+            low = value.strip().lower()
+            if low not in ("true", "false", "yes", "no", "1", "0"):
+                raise InputError(name, value, "true or false")
+            value = low in ("true", "yes", "1")
+        elif not isinstance(value, (bool, np.bool_)):
+            raise InputError(name, value, "true or false")
+        value = bool(value)
+    else:
+        if isinstance(value, str):
+            value = _number(name, value.strip(), kind)
+        elif isinstance(value, (bool, np.bool_)) or not isinstance(
+                value, (int, float, np.integer, np.floating)):
+            raise InputError(name, value, KINDS[kind])
+        elif not math.isfinite(value):
+            raise InputError(name, value, "a finite number")
+        elif kind == "integer":
+            if value != int(value):
+                raise InputError(name, value, "a whole number")
+            value = int(value)
+        else:
+            value = float(value)
+    if option.choices and value not in option.choices:
+        raise InputError(name, value, "one of " + ", ".join(map(str, option.choices)))
+    return value
+
+
+def _count(name: str, text: str, whole: str) -> int:
+    try:
+        count = int(text)
+    except ValueError:
+        raise InputError(name, whole, "START:STOP:COUNT with a whole COUNT") from None
+    if count < 1:
+        raise InputError(name, whole, "a range with COUNT >= 1", "the range is empty")
+    return count
+
+
+def parse_values(name: str, value, option: Option) -> list | Uniform:
+    """The value list (or random range) of one option from a Python value or its text.
+
+    >>> parse_values("speed_rpm", "1000:3000:3", Option("number", None, ""))
+    [1000.0, 2000.0, 3000.0]
+    >>> parse_values("designation", "6205,6206", Option("text", None, ""))
+    ['6205', '6206']
+    """
+    if isinstance(value, Uniform):
+        return value
+    if isinstance(value, str):
+        text = value.strip()
+        if option.kind in ("number", "integer") and ":" in text:
+            parts = [p.strip() for p in text.split(":")]
+            head = parts[0].lower()
+            if head == "uniform":
+                if len(parts) != 3:
+                    raise InputError(name, value, "uniform:LOW:HIGH")
+                low, high = (_number(name, p, "number") for p in parts[1:])
+                if not low < high:
+                    raise InputError(name, value, "uniform:LOW:HIGH with LOW < HIGH",
+                                     "the range is empty")
+                return Uniform(low, high)
+            log = head == "log"
+            parts = parts[1:] if log else parts
+            if len(parts) != 3:
+                raise InputError(name, value, "one of the forms " + ", ".join(RANGE_FORMS))
+            start, stop = (_number(name, p, "number") for p in parts[:2])
+            count = _count(name, parts[2], value)
+            if log:
+                if start <= 0 or stop <= 0:
+                    raise InputError(name, value, "log:START:STOP:COUNT with START, STOP > 0")
+                values = np.geomspace(start, stop, count)
+            else:
+                values = np.linspace(start, stop, count)
+            return [_scalar(name, float(v), option) if option.kind == "number"
+                    else _scalar(name, round(float(v)), option) for v in values]
+        items = [t for t in text.split(",")] if "," in text else [text]
+        if any(not t.strip() for t in items):
+            raise InputError(name, value, "a value or a list A,B,C without empty items",
+                             "the list is empty" if not text else "")
+        return [_scalar(name, t, option) for t in items]
+    if isinstance(value, (list, tuple, np.ndarray, range)):
+        values = list(value)
+        if not values:
+            raise InputError(name, value, "at least one value", "the list is empty")
+        return [_scalar(name, v.item() if hasattr(v, "item") else v, option) for v in values]
+    return [_scalar(name, value, option)]
+
+
+def unknown_option(name: str, options: dict, analysis: str) -> InputError:
+    """The error for an option ``analysis`` does not have, with the nearest names."""
+    close = difflib.get_close_matches(name, list(options), n=3, cutoff=0.6)
+    hint = f"did you mean {', '.join(close)}?" if close else ""
+    return InputError("option", name, f"an option of '{analysis}': " + ", ".join(options), hint)
+
+
+class Grid:
+    """Cases of a Cartesian grid (module docstring); ``rows(start, stop)`` makes them.
+
+    Parameters
+    ----------
+    values : dict
+        Option name -> list of values or :class:`Uniform` (checked, see parse_values).
+    repeats : int
+        Times each grid point is repeated (with fresh random options).
+    seed : int
+        Study seed.
+    """
+
+    def __init__(self, values: dict, repeats: int, seed: int) -> None:
+        self.values = values
+        self.repeats = repeats
+        self.seed = seed
+        self.fixed = {k: v for k, v in values.items() if not isinstance(v, Uniform)}
+        self.random = {k: v for k, v in values.items() if isinstance(v, Uniform)}
+        self.shape = tuple(len(v) for v in self.fixed.values())
+        self.count = int(np.prod(self.shape, dtype=np.int64)) * repeats
+        self.columns = list(values)
+
+    def rows(self, start: int, stop: int) -> list[dict]:
+        """Inputs of cases start..stop-1 (``case`` first)."""
+        index = np.arange(start, stop)
+        point = index // self.repeats
+        coords = np.unravel_index(point, self.shape) if self.shape else ()
+        out = []
+        for i, case in enumerate(index):
+            row = {"case": int(case)}
+            for (name, vals), c in zip(self.fixed.items(), coords):
+                row[name] = vals[int(c[i])]
+            if self.random:
+                rng = case_rng(self.seed, int(case))
+                for name in sorted(self.random):
+                    u = self.random[name]
+                    row[name] = float(rng.uniform(u.low, u.high))
+            out.append({"case": row["case"], **{k: row[k] for k in self.columns}})
+        return out
+
+    def identity(self) -> dict:
+        """JSON-ready description (what makes two studies the same)."""
+        return {"grid": {k: (v.to_json() if isinstance(v, Uniform) else v)
+                         for k, v in self.values.items()}, "repeats": self.repeats}
+
+
+class CaseTable:
+    """Cases read from a CSV or Parquet file: one row per case, columns = option names.
+
+    Empty cells take the option's default. The file's SHA-256 is part of the study's
+    identity, so a changed file is a different study.
+    """
+
+    def __init__(self, path, options: dict, analysis: str) -> None:
+        import pandas as pd
+
+        path = Path(path)
+        if not path.is_file():
+            raise InputError("cases", str(path), "an existing .csv or .parquet file")
+        suffix = path.suffix.lower()
+        try:
+            if suffix == ".csv":
+                frame = pd.read_csv(path)
+            elif suffix in (".parquet", ".pq"):
+                frame = pd.read_parquet(path)
+            else:
+                raise InputError("cases", str(path), "a .csv or .parquet file")
+        except InputError:
+            raise
+        except Exception as exc:  # noqa: BLE001 - any unreadable file: say why in one line
+            raise InputError("cases", str(path), "a readable .csv or .parquet table",
+                             " ".join(str(exc).split())[:200]) from None
+        if frame.empty:
+            raise InputError("cases", str(path), "a table with at least one case",
+                             "the table is empty")
+        for name in frame.columns:
+            if name not in options:
+                raise unknown_option(str(name), options, analysis)
+        self.columns = [str(c) for c in frame.columns]
+        records = []
+        for i, row in enumerate(frame.to_dict(orient="records")):
+            clean = {}
+            for k, v in row.items():
+                if v is None or (isinstance(v, float) and math.isnan(v)):
+                    clean[k] = options[k].default
+                else:
+                    try:
+                        clean[k] = _scalar(k, v.item() if hasattr(v, "item") else v,
+                                           options[k])
+                    except InputError as exc:
+                        raise InputError(f"{k} (row {i + 1} of {path.name})", exc.value,
+                                         exc.allowed) from None
+            records.append(clean)
+        self.records = records
+        self.count = len(records)
+        self.digest = hashlib.sha256(path.read_bytes()).hexdigest()
+        self.path = path
+
+    def rows(self, start: int, stop: int) -> list[dict]:
+        return [{"case": i, **self.records[i]} for i in range(start, stop)]
+
+    def identity(self) -> dict:
+        return {"cases_file": self.path.name, "cases_sha256": self.digest}
+
+
+def partitions(count: int, size: int) -> list[tuple[int, int]]:
+    """(start, stop) of each partition of ``count`` cases, ``size`` each (last shorter)."""
+    return [(s, min(s + size, count)) for s in range(0, count, size)]
+
+
+def default_partition_size(count: int, largest: int) -> int:
+    """Cases per partition: at most ``largest`` (a few seconds of work), and small enough
+    that a study has at least 64 partitions to spread; it depends on the case count only,
+    so the partitioning (and so a resumed study) is the same on any cluster."""
+    return max(1, min(largest, math.ceil(count / 64)))
+
+
+def canonical(obj) -> str:
+    """Stable JSON text of a study's identity (sorted keys)."""
+    return json.dumps(obj, sort_keys=True, default=str)
