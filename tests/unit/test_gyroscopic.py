@@ -40,9 +40,13 @@ def test_balls_are_in_equilibrium_with_the_gyroscopic_friction():
     omega = 20000 * math.pi / 30
     r = solve_load_distribution(ACBB, OperatingCondition(axial_load=1000.0, shaft_speed=omega),
                                 gyroscopic=True)
-    fc = centrifugal_force(ACBB, omega)
     qi, qo = r.load[0, 0], r.load[0, 1]
     ai, ao = r.contact_angle[0]
+    # one cage speed (Jones's, outer raceway control) for F_c and for M_g
+    _, orbit, _ = outer_control_kinematics(ai, ao, ACBB.ball_diameter / ACBB.pitch_diameter)
+    fc = 0.5 * ACBB.ball_mass * ACBB.pitch_diameter * (orbit * omega) ** 2
+    assert r.ball_centrifugal_force[0] == pytest.approx(fc, rel=1e-9)
+    assert fc > centrifugal_force(ACBB, omega)           # the nominal-angle value is lower
     f = gyroscopic_ball_force(ACBB.ball_diameter, ACBB.pitch_diameter, 7830.0, omega,
                               np.array([ai]), np.array([ao]))[0]
     # inner pushes out and towards +z, outer in and towards -z; plus F_c and friction

@@ -97,9 +97,17 @@ def test_centrifugal_force_balance_at_speed():
     b = bearing(contact_angle=math.radians(40))
     omega = 20000 * math.pi / 30
     r = solve_load_distribution(b, OperatingCondition(axial_load=500.0, shaft_speed=omega))
-    fc = centrifugal_force(b, omega)
     qi, qo = r.load[:, r.ring == 0][:, 0], r.load[:, r.ring == 1][:, 0]
     ai, ao = r.contact_angle[:, r.ring == 0][:, 0], r.contact_angle[:, r.ring == 1][:, 0]
+    # F_c at Jones's orbital speed under outer raceway control, at the ball's own angles:
+    # omega_m / omega = (1 - g cos a_i) / (1 + cos(a_i - a_o)) (Harris & Kotzalas)
+    g = b.ball_diameter / b.pitch_diameter
+    wm = omega * (1 - g * np.cos(ai)) / (1 + np.cos(ai - ao))
+    fc = 0.5 * b.ball_mass * b.pitch_diameter * wm**2
+    np.testing.assert_allclose(r.ball_centrifugal_force, fc, rtol=1e-9)
+    np.testing.assert_allclose(r.orbital_speed, wm, rtol=1e-9)
+    # with equal angles it is seed 001's pure-rolling F_c; here a_o < a_i makes it larger
+    assert np.all(fc > centrifugal_force(b, omega))
     # seed 001 eq. 3: Q_o cos(a_o) = Q_i cos(a_i) + F_c, Q_o sin(a_o) = Q_i sin(a_i) = F_a/Z
     np.testing.assert_allclose(qo * np.cos(ao) - qi * np.cos(ai), fc, rtol=1e-6)
     np.testing.assert_allclose(qi * np.sin(ai), 500.0 / 9, rtol=1e-6)

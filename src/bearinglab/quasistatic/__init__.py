@@ -13,31 +13,47 @@ eqs. 1-5, seed 003 noise section eqs. 1-8).
 from __future__ import annotations
 
 import dataclasses
+import math
 
 import numpy as np
 
-from ..errors import ConvergenceError
+from ..errors import ConvergenceError, InputError
 from ..geometry import BallBearing
 from ..operating import OperatingCondition
-from .gyroscopic import gyroscopic_ball_force
 from .result import LoadDistribution
 from .solver import (
     CENTRIFUGAL_FLOOR,
     DOF_NAMES,
+    RACE_CONTROLS,
+    _Problem,
     centrifugal_force,
     inner_ring_expansion,
     solve,
 )
 
-__all__ = ["DOF_NAMES", "LoadDistribution", "centrifugal_force", "inner_ring_expansion",
-           "solve_load_distribution"]
+__all__ = ["DOF_NAMES", "MAX_SPEED_FACTOR", "RACE_CONTROLS", "LoadDistribution",
+           "centrifugal_force", "inner_ring_expansion", "solve_load_distribution",
+           "speed_limit"]
+
+
+#: Highest n d_m the model is validated for [mm/min] (Harris's 218 bearing, 20 000 rpm, is
+#: 2.5e6; the property tests run to this limit). Above it the balls' centrifugal force
+#: swamps the contact loads and the quasi-static model gives balls flipped to the unloaded
+#: side instead of an answer.
+MAX_SPEED_FACTOR = 3.0e6
+
+
+def speed_limit(bearing: BallBearing) -> float:
+    """Highest shaft speed this model answers for, n d_m = MAX_SPEED_FACTOR [rad/s]."""
+    return MAX_SPEED_FACTOR / (bearing.pitch_diameter * 1e3) * math.pi / 30.0
 
 
 def solve_load_distribution(bearing: BallBearing, condition: OperatingCondition, *,
                             ball_phase: float | None = None, ball_diameter_errors=None,
                             film=None, lubricant=None, temperature: float | None = None,
                             gyroscopic: bool = False, ring_expansion: bool = False,
-                            tolerance: float = 1e-9, initial=None) -> LoadDistribution:
+                            tolerance: float = 1e-9, initial=None,
+                            race_control: str = "outer") -> LoadDistribution:
     """Quasi-static equilibrium of ``bearing`` under ``condition``.
 
     Parameters
@@ -45,7 +61,7 @@ def solve_load_distribution(bearing: BallBearing, condition: OperatingCondition,
     bearing : BallBearing
         Geometry, clearance (P_d < 0 is a preload), arch angles of four-point bearings.
     condition : OperatingCondition
-        Loads, imposed misalignments and shaft speed.
+        Loads, imposed misalignments and shaft speed (n d_m up to 3e6 mm/min).
     ball_phase : float, optional
         Azimuth of ball 1 [rad]; by default the direction of the radial load (a ball
         under the load, seed 001's phi_0 = 0). Sweep it over 2 pi / Z for the orbit.
@@ -62,9 +78,8 @@ def solve_load_distribution(bearing: BallBearing, condition: OperatingCondition,
     temperature : float, optional
         Lubricant inlet temperature [K]; the lubricant's reference temperature by default.
     gyroscopic : bool
-        Include the balls' gyroscopic moments, held by friction at the outer raceway
-        (outer-raceway control, :mod:`bearinglab.quasistatic.gyroscopic`), iterated with
-        the load distribution.
+        Include the balls' gyroscopic moments, held by friction at the controlling raceway
+        (:mod:`bearinglab.quasistatic.gyroscopic`).
     ring_expansion : bool
         Reduce the clearance by the inner ring's centrifugal expansion at this speed
         (:func:`bearinglab.quasistatic.solver.inner_ring_expansion`); the result's
@@ -73,6 +88,11 @@ def solve_load_distribution(bearing: BallBearing, condition: OperatingCondition,
         Ring equilibrium tolerance relative to the load [-].
     initial : array (5,), optional
         Starting ring displacement (e.g. the solution of a nearby case) [m, rad].
+    race_control : {"outer", "inner", "hybrid"}
+        Jones's raceway control that sets each ball's orbital speed (centrifugal force)
+        and spin (gyroscopic moment): the ball rolls without spinning on the outer or the
+        inner race; "hybrid" picks the race per ball by Jones's criterion and shares the
+        friction as Harris does (gyroscopic.py) [-].
 
     Returns
     -------
@@ -80,57 +100,147 @@ def solve_load_distribution(bearing: BallBearing, condition: OperatingCondition,
 
     Raises
     ------
+    InputError
+        For a speed above :func:`speed_limit` or an unknown ``race_control``.
     ConvergenceError
-        When the ball or ring equilibrium cannot be found (e.g. a load the bearing cannot
-        carry); the message names the load and the residual.
+        When the ball or ring equilibrium cannot be found; for a load the contacts cannot
+        carry, the message gives the load against the static rating C0 (ISO 76).
     """
+    if race_control not in RACE_CONTROLS:
+        raise InputError("race_control", race_control, " or ".join(map(repr, RACE_CONTROLS)))
+    limit = speed_limit(bearing)
+    if condition.shaft_speed > limit * (1 + 1e-12):
+        rpm, top = condition.shaft_speed * 30 / math.pi, limit * 30 / math.pi
+        raise InputError("shaft_speed", f"{rpm:.6g} rpm",
+                         f"at most {top:.6g} rpm for this bearing (n d_m <= "
+                         f"{MAX_SPEED_FACTOR:.0e} mm/min with d_m = "
+                         f"{bearing.pitch_diameter * 1e3:.4g} mm)",
+                         "beyond it the quasi-static model is not valid: centrifugal force "
+                         "swamps the contact loads")
     if ring_expansion and condition.shaft_speed > 0:
         shrink = 2.0 * inner_ring_expansion(bearing, condition.shaft_speed)
         bearing = dataclasses.replace(bearing, diametral_clearance=bearing.diametral_clearance
                                       - shrink)
-    kwargs = {"ball_phase": ball_phase, "ball_diameter_errors": ball_diameter_errors,
-              "tolerance": tolerance}
-    u, b, state, problem, stiffness = solve(bearing, condition, film=film, initial=initial,
-                                            **kwargs)
-    with_film = lubricant is not None and film is None and condition.shaft_speed > 0
-    with_gyro = gyroscopic and condition.shaft_speed > 0
-    if with_film or with_gyro:
-        # film and gyroscopic friction depend on the loads and contact angles they change:
-        # iterate to a fixed point (both depend weakly on them)
-        def couplings(state):
-            h = (contact_films(bearing, lubricant, condition.shaft_speed,
-                               problem.contacts.ring, state, temperature) if with_film else film)
-            f = gyroscopic_forces(bearing, condition.shaft_speed, problem.contacts.ring,
-                                  state) if with_gyro else None
-            return h, f
-
-        h, f = couplings(state)
-        for _ in range(20):
-            u, b, state, problem, stiffness = solve(bearing, condition, film=h, ball_force=f,
-                                                    initial=u, **kwargs)
-            h_new, f_new = couplings(state)
-            settled = (not with_film or np.max(np.abs(h_new - h)) < 1e-9) and (
-                not with_gyro or np.max(np.abs(f_new - f)) <= 1e-6 * max(
-                    1.0, float(np.max(np.abs(f)))))
-            h, f = h_new, f_new
-            if settled:
-                break
-        else:
-            raise ConvergenceError("the EHL film / gyroscopic friction and the load "
-                                   "distribution did not settle within 20 passes")
-    q, n_rho, n_z, delta, _ = state
-    if centrifugal_force(bearing, condition.shaft_speed) < CENTRIFUGAL_FLOOR:
+    try:
+        u, b, state, problem = _solve_coupled(bearing, condition, ball_phase,
+                                              ball_diameter_errors, film, lubricant,
+                                              temperature, gyroscopic, tolerance, initial,
+                                              race_control)
+    except ConvergenceError as exc:
+        raise _in_user_terms(exc, bearing, condition) from None
+    q, n_rho, n_z, delta, speed, force, stiffness = state
+    if problem.spd[0] <= 0:
         q = np.where(q <= 10 * CENTRIFUGAL_FLOOR, 0.0, q)   # the floor is not a real load
     ring = problem.contacts.ring
     # sign: + when the line from the inner to the outer contact leans towards +z
     angle = signed_contact_angles(ring, n_rho, n_z)
-    force, _ = problem.ring_force_and_stiffness(state)
-    result = LoadDistribution(
+    return LoadDistribution(
         bearing=bearing, condition=condition, displacement=u, ball_angle=problem.psi,
         ball_centre=b, ring=ring, load=q, approach=delta, contact_angle=angle,
         film=problem.film, stiffness_matrix=stiffness, reaction=force,
-        groove_radius=problem.contacts.groove_radius)
-    return result
+        groove_radius=problem.contacts.groove_radius, orbital_speed=speed[:, 4].copy(),
+        ball_centrifugal_force=np.where(problem.spd[0] > 0, speed[:, 6], 0.0),
+        gyroscopic_moment=speed[:, 5].copy(), race_control=race_control,
+        outer_controlled=problem.control == 0)
+
+
+def _solve_coupled(bearing, condition, ball_phase, ball_diameter_errors, film, lubricant,
+                   temperature, gyroscopic, tolerance, initial, race_control):
+    """The solve, repeated until what depends on its result settles: the film (at its
+    loads), the cage speed of balls not driven by both races (the mean orbital speed of
+    those that are) and, for ``hybrid``, which race controls each ball."""
+    if ball_phase is None:
+        ball_phase = condition.radial_load_angle
+    problem = _Problem(bearing, condition, float(ball_phase), ball_diameter_errors, film,
+                       gyroscopic=gyroscopic, race_control=race_control)
+    kwargs = {"tolerance": tolerance, "problem": problem}
+    u, b, state, problem, _ = solve(bearing, condition, initial=initial, **kwargs)
+    if condition.shaft_speed <= 0:
+        return u, b, state, problem
+    with_film = lubricant is not None and film is None
+    for _ in range(30):
+        changed = False
+        if with_film:
+            h = contact_films(bearing, lubricant, condition.shaft_speed, problem.contacts.ring,
+                              state, temperature)
+            changed |= bool(np.max(np.abs(h - problem.film)) >= 1e-9)
+            problem.film = np.ascontiguousarray(h)
+        driven = _driven(problem, state)
+        if np.any(driven) and not np.all(driven):
+            wm = float(np.mean(state[4][driven, 4]))
+            changed |= abs(wm - problem.spd[6]) > 1e-9 * problem.spd[0]
+            problem.spd[6] = wm
+        if race_control == "hybrid":
+            outer = outer_raceway_controls(bearing, problem, state) | ~driven
+            changed |= bool(np.any(outer != (problem.control == 0)))
+            problem.set_control(outer)
+        if not changed:
+            return u, b, state, problem
+        u, b, state, problem, _ = solve(bearing, condition, initial=u, **kwargs)
+    raise ConvergenceError("the EHL film / cage speed / raceway control and the load "
+                           "distribution did not settle within 30 passes")
+
+
+def _driven(problem, state) -> np.ndarray:
+    """Balls that touch both races (Z,)."""
+    q = state[0]
+    return np.any(q[:, problem.inner] > 0, axis=1) & np.any(q[:, ~problem.inner] > 0, axis=1)
+
+
+def outer_raceway_controls(bearing: BallBearing, problem, state) -> np.ndarray:
+    """Jones's criterion per ball (Harris & Kotzalas, *Advanced Concepts*, ch. 3): outer
+    raceway control where Q_o a_o E(k_o) cos(alpha_i - alpha_o) > Q_i a_i E(k_i) (Z,).
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        Geometry and materials.
+    problem : solver._Problem
+        The solve's problem (contact columns).
+    state : tuple
+        (loads, n_rho, n_z, ...) of the solver [N, -, -].
+    """
+    from ..contact import hertz
+    from ..geometry import contact_radii
+    from ..materials import effective_modulus
+
+    q, n_rho, n_z = state[:3]
+    angle = signed_contact_angles(problem.contacts.ring, n_rho, n_z)
+    e_prime = effective_modulus(bearing.ball_material, bearing.ring_material)
+    moment, mean = {}, {}
+    for race, name, f in ((0, "inner", bearing.inner_groove_factor),
+                          (1, "outer", bearing.outer_groove_factor)):
+        cols = problem.contacts.ring == race
+        load = q[:, cols].sum(axis=1)
+        a = np.where(load > 0, (q[:, cols] * angle[:, cols]).sum(axis=1)
+                     / np.where(load > 0, load, 1.0), 0.0)
+        rx, ry = contact_radii(bearing.ball_diameter, bearing.pitch_diameter, f, np.abs(a),
+                               name)
+        c = hertz.point_contact(np.maximum(load, 1e-9), rx, np.full_like(rx, ry), e_prime)
+        moment[race] = load * c.semi_major * c.second_kind
+        mean[race] = a
+    return moment[1] * np.cos(mean[0] - mean[1]) > moment[0]
+
+
+def _in_user_terms(exc: ConvergenceError, bearing: BallBearing,
+                   condition: OperatingCondition) -> ConvergenceError:
+    """A solver failure for a load beyond the static rating, told as that load against C0
+    (ISO 76, life/ratings.py); other failures keep the solver's words."""
+    try:
+        from ..life.equivalent import equivalent_static_load
+        from ..life.ratings import load_ratings
+
+        c0 = load_ratings(bearing).static
+        p0 = equivalent_static_load(bearing, condition.radial_load, abs(condition.axial_load))
+    except (InputError, ValueError):    # no rating for this geometry: keep the solver's
+        return exc
+    if p0 <= c0:
+        return exc
+    return ConvergenceError(
+        f"the contacts cannot carry this load: F_r = {condition.radial_load:.6g} N, "
+        f"F_a = {condition.axial_load:.6g} N give a static equivalent load P0 = {p0:.6g} N, "
+        f"{p0 / c0:.3g} times the static rating C0 = {c0:.6g} N (ISO 76; s0 = "
+        f"{c0 / p0:.3g}); no equilibrium was found ({exc})")
 
 
 def contact_films(bearing: BallBearing, lubricant, shaft_speed: float, ring, state,
@@ -167,40 +277,6 @@ def contact_films(bearing: BallBearing, lubricant, shaft_speed: float, ring, sta
                                        shaft_speed, name, temperature=temperature,
                                        contact_angle=angle[:, cols], kind="central")
     return film
-
-
-def gyroscopic_forces(bearing: BallBearing, shaft_speed: float, ring, state) -> np.ndarray:
-    """Gyroscopic friction force on every ball (Z, 2) [N] from the load-weighted contact
-    angles of its inner and outer contacts (outer-raceway control); balls without a loaded
-    inner and outer contact get none.
-
-    Parameters
-    ----------
-    bearing : BallBearing
-        Geometry and ball material.
-    shaft_speed : float
-        Inner-ring speed [rad/s].
-    ring : array (C,)
-        0 inner, 1 outer for each contact column.
-    state : tuple
-        (loads, n_rho, n_z, ...) of the solver [N, -, -].
-    """
-    q, n_rho, n_z = state[:3]
-    angle = signed_contact_angles(ring, n_rho, n_z)
-    picks = {}
-    for race in (0, 1):
-        cols = ring == race
-        total = q[:, cols].sum(axis=1)
-        # load-weighted angle: a ball held in both halves of an arch spins about a nearly
-        # radial-symmetric axis (no gyroscopic moment); the weighting keeps this continuous
-        mean = np.where(total > 0, (q[:, cols] * angle[:, cols]).sum(axis=1)
-                        / np.where(total > 0, total, 1.0), 0.0)
-        picks[race] = (mean, total > 0)
-    force = gyroscopic_ball_force(bearing.ball_diameter, bearing.pitch_diameter,
-                                  bearing.ball_material.density, shaft_speed,
-                                  picks[0][0], picks[1][0])
-    force[~(picks[0][1] & picks[1][1])] = 0.0
-    return force
 
 
 def signed_contact_angles(ring, n_rho, n_z) -> np.ndarray:

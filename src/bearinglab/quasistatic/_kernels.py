@@ -1,4 +1,5 @@
-"""Per-ball contact forces and their derivatives (the hot loop of the quasi-static model).
+"""Per-ball contact forces and their derivatives (the hot loop of the quasi-static model):
+the NumPy twin of the compiled kernels in _compiled.py.
 
 Vectorised NumPy over balls j (first axis) and contacts k (second axis). Notation in a
 ball's plane: v = b - c (ball centre minus groove centre), n = v/|v|,
@@ -6,6 +7,15 @@ delta = |v| - (R - D_w/2) + h (the film is a layer between the surfaces: for giv
 centres it adds to the elastic approach, seed 001 eq. 2), c = |n_rho| = |cos alpha|, Q = K(c) max(delta, 0)^1.5,
 force on the ball G = -Q n, and S = -dG/dv = n (dQ/dv)^T + Q (I - n n^T)/|v| with
 dQ/dv = 1.5 K delta^0.5 n + delta^1.5 K'(c) sign(n_rho) (e_rho - n_rho n)/|v|.
+
+Speed forces (centrifugal force and gyroscopic friction, gyroscopic.py) depend on the
+ball's contact angles; their derivatives D_l (total) and E_l (inner friction) with respect
+to each contact vector v_l are taken by central differences. With P_l = -S_l + D_l (how
+the ball's total force changes with v_l) and Phi'_l = [l inner] (-T_l^T S_l) +
+Tbar^T E_l (how the ball's push on the inner ring changes; Tbar the load-weighted T of
+the inner contacts, where the inner friction's reaction acts), the condensed stiffness of
+ball j is K_j = (sum_l Phi'_l) (sum_l P_l)^-1 (sum_in P_l T_l) - sum_in Phi'_l T_l,
+which without speed forces is sum T^T S T - (sum T^T S)(sum S)^-1 (sum S T).
 """
 
 from __future__ import annotations
@@ -96,8 +106,10 @@ def ring_jacobian(psi, rho, z):
 
 #: A full Newton step is accepted unless it multiplies the ball's residual by more than this.
 NONMONOTONE_FACTOR = 1000.0
-# The NumPy solver iterates all balls together; the compiled twin below iterates each
-# ball on its own. tests/unit/test_quasistatic_kernels.py checks that they agree.
+#: Relative finite-difference step of the speed-force derivatives (times R - D_w/2).
+FD_STEP = 1e-6
+# The NumPy solver iterates all balls together; the compiled twin (_compiled.py) iterates
+# each ball on its own. tests/unit/test_quasistatic_kernels.py checks that they agree.
 
 
 def seat_loose_balls(b, c_rho, c_z, free, outer, q, fc, k_seat):
@@ -129,47 +141,147 @@ def seat_loose_balls(b, c_rho, c_z, free, outer, q, fc, k_seat):
     return b
 
 
-def solve_balls_numpy(b, c_rho, c_z, free, radius, side, z0, k_poly, film, outer, fc, k_seat,
-                      tol, ext, max_iterations=100):
-    """Newton's method on every ball's equilibrium (all balls at once, NumPy).
+def speed_forces(q, n_rho, n_z, ring, control, lam_i, spd):
+    """Speed forces on every ball (Z, 7): total F_rho, F_z, inner-friction F_rho, F_z,
+    omega_m [rad/s], M_g [N m], F_c [N] (gyroscopic.py; ``spd`` as in _compiled.py)."""
+    from .gyroscopic import raceway_control_kinematics
 
-    ``fc`` is the outward (centrifugal) force and ``ext`` (Z, 2) any further force on each
-    ball held fixed during the solve (the gyroscopic friction force) [N].
-    Returns (b, q, n_rho, n_z, delta, s, worst residual [N], converged). A ball whose
-    contact loads are all below 10 tol is loose and its residual is not required to vanish.
+    omega, g, hmd, inertia, dw, gyro, wm0, floor = spd
+    inner = ring == 0
+    angle = np.arctan2(np.where(inner, -n_z, n_z), np.abs(n_rho))
+    loaded = q > 0
+    qi = np.where(loaded & inner, q, 0.0).sum(axis=1)
+    qo = np.where(loaded & ~inner, q, 0.0).sum(axis=1)
+    ai = np.where(loaded & inner, q * angle, 0.0).sum(axis=1) / np.where(qi > 0, qi, 1.0)
+    ao = np.where(loaded & ~inner, q * angle, 0.0).sum(axis=1) / np.where(qo > 0, qo, 1.0)
+    both = (qi > 0) & (qo > 0) & (omega > 0)
+    s = np.where(ao > 0, 1.0, np.where(ao < 0, -1.0, np.where(ai >= 0, 1.0, -1.0)))
+    a_i, a_o = s * ai, s * ao
+    out = np.zeros((len(q), 7))
+    wm = np.full(len(q), wm0)
+    mg = np.zeros(len(q))
+    for code, name in ((0, "outer"), (1, "inner")):
+        sel = both & (control == code)
+        if np.any(sel):
+            beta, orbit, spin = raceway_control_kinematics(a_i[sel], a_o[sel], g, name)
+            wm[sel] = omega * orbit
+            if gyro > 0:
+                mg[sel] = inertia * np.abs(spin) * omega * wm[sel] * np.sin(beta)
+    lo = 2.0 - lam_i
+    out[:, 2] = -lam_i * mg / dw * np.sin(a_i)
+    out[:, 3] = s * lam_i * mg / dw * np.cos(a_i)
+    fc = np.maximum(hmd * wm * wm, floor)
+    out[:, 0] = fc + lo * mg / dw * np.sin(a_o) + out[:, 2]
+    out[:, 1] = -s * lo * mg / dw * np.cos(a_o) + out[:, 3]
+    out[:, 4], out[:, 5], out[:, 6] = wm, mg, fc
+    return out
+
+
+def _speed_derivatives(b, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, control,
+                       lam_i, spd, state):
+    """D (Z, C, 2, 2) and E (Z, C, 2, 2): central differences of the total speed force and
+    of the inner friction with respect to each contact vector v_l = b - c_l."""
+    q, n_rho, n_z = state[:3]
+    nb, ncon = q.shape
+    d = np.zeros((nb, ncon, 2, 2))
+    e = np.zeros((nb, ncon, 2, 2))
+    for col in range(ncon):
+        h = FD_STEP * free[:, col]
+        for a in range(2):
+            for sign in (1.0, -1.0):
+                shift = np.zeros((nb, 2))
+                shift[:, a] = sign * h
+                one = contact_state(b[:, 0] + shift[:, 0], b[:, 1] + shift[:, 1],
+                                    c_rho[:, col:col + 1], c_z[:, col:col + 1],
+                                    free[:, col:col + 1], radius[col:col + 1],
+                                    side[col:col + 1], z0[col:col + 1], k_poly[col:col + 1],
+                                    film[:, col:col + 1])
+                qq, rr, zz = q.copy(), n_rho.copy(), n_z.copy()
+                qq[:, col], rr[:, col], zz[:, col] = one[0][:, 0], one[1][:, 0], one[2][:, 0]
+                sp = speed_forces(qq, rr, zz, ring, control, lam_i, spd)
+                w = (sign / (2.0 * h))[:, None]
+                d[:, col, :, a] += w * sp[:, 0:2]
+                e[:, col, :, a] += w * sp[:, 2:4]
+    return d, e
+
+
+def condense(t, inner, state, sp, d, e):
+    """Force of the balls on the inner ring (5,) and the condensed stiffness (5, 5)."""
+    q, n_rho, n_z, _, s = state
+    t_in = t[:, inner]
+    qi = np.where(inner, q, 0.0).sum(axis=1)
+    w = np.where(inner[None, :], q, 0.0) / np.where(qi > 0, qi, 1.0)[:, None]
+    tbar = np.einsum("jk,jkab->jab", w, t)                                   # (Z, 2, 5)
+    p = d - s                                                                 # (Z, C, 2, 2)
+    phi = np.einsum("jad,jkab->jkdb", tbar, e)                                # (Z, C, 5, 2)
+    phi[:, inner] -= np.einsum("jkad,jkab->jkdb", t_in, s[:, inner])
+    psum = p.sum(axis=1)
+    det = psum[:, 0, 0] * psum[:, 1, 1] - psum[:, 0, 1] * psum[:, 1, 0]
+    safe = np.where(det != 0, det, 1.0)
+    inv = np.empty_like(psum)
+    inv[:, 0, 0], inv[:, 1, 1] = psum[:, 1, 1] / safe, psum[:, 0, 0] / safe
+    inv[:, 0, 1], inv[:, 1, 0] = -psum[:, 0, 1] / safe, -psum[:, 1, 0] / safe
+    inv[det == 0] = 0.0
+    a5 = phi.sum(axis=1)
+    bm = np.einsum("jkab,jkbd->jad", p[:, inner], t_in)
+    cm = np.einsum("jkab,jkbd->ad", phi[:, inner], t_in)
+    stiffness = np.einsum("jab,jbc,jcd->ad", a5, inv, bm) - cm
+    g_in = np.stack([q[:, inner] * n_rho[:, inner], q[:, inner] * n_z[:, inner]], axis=-1)
+    force = np.einsum("jkab,jka->b", t_in, g_in) - np.einsum("jab,ja->b", tbar, sp[:, 2:4])
+    return force, stiffness
+
+
+def solve_balls_numpy(b, c_rho, c_z, t, inner, free, radius, side, z0, k_poly, film, ring,
+                      control, lam_i, spd, k_seat, tol, max_iterations=100):
+    """Newton's method on every ball's equilibrium (all balls at once, NumPy twin of
+    _compiled.solve_balls, same arguments and returns: b, q, n_rho, n_z, delta, speed
+    (Z, 7), force (5,), stiffness (5, 5), worst residual [N], converged).
+
+    A ball whose contact loads are all below 10 tol is loose and its residual is not
+    required to vanish; every other ball must be in equilibrium to ``tol``.
     """
+    outer = ~inner
+    fc_seat = max(spd[2] * spd[6] ** 2, spd[7])
+
     def state(bb):
         return contact_state(bb[:, 0], bb[:, 1], c_rho, c_z, free, radius, side, z0, k_poly,
                              film)
 
-    def residual(q, n_rho, n_z):
-        return np.stack([fc + ext[:, 0] - np.sum(q * n_rho, axis=1),
-                         ext[:, 1] - np.sum(q * n_z, axis=1)], axis=1)
+    def residual(st):
+        sp = speed_forces(st[0], st[1], st[2], ring, control, lam_i, spd)
+        g = np.stack([sp[:, 0] - np.sum(st[0] * st[1], axis=1),
+                      sp[:, 1] - np.sum(st[0] * st[2], axis=1)], axis=1)
+        return g, sp
 
-    q = state(b)[0]
-    b = seat_loose_balls(b, c_rho, c_z, free, outer, q, fc, k_seat)
-    q, n_rho, n_z, delta, s = state(b)
-    g = residual(q, n_rho, n_z)
+    def derivatives(bb, st, sp):
+        if spd[0] > 0:
+            return _speed_derivatives(bb, c_rho, c_z, free, radius, side, z0, k_poly, film,
+                                      ring, control, lam_i, spd, st)
+        zero = np.zeros(st[4].shape)
+        return zero, zero
+
+    b = seat_loose_balls(b, c_rho, c_z, free, outer, state(b)[0], fc_seat, k_seat)
+    st = state(b)
+    g, sp = residual(st)
+    converged = False
     for _ in range(max_iterations):
         norm = np.hypot(g[:, 0], g[:, 1])
-        norm[np.max(q, axis=1) <= 10.0 * tol] = 0.0                          # loose balls
-        # a ball on the outer race alone exerts nothing on the inner ring: 10 % of its own
-        # force is close enough (it rides a tilted groove on a weak tangential stiffness)
-        free_ball = ~np.any(q[:, ~outer] > 0, axis=1) & (norm <= 0.1 * (fc + q.sum(axis=1)))
-        norm[free_ball] = 0.0
+        norm[np.max(st[0], axis=1) <= 10.0 * tol] = 0.0                      # loose balls
         if np.all(norm <= tol):
-            return b, q, n_rho, n_z, delta, s, float(np.max(norm)), True
-        sb = s.sum(axis=1)
-        det = sb[:, 0, 0] * sb[:, 1, 1] - sb[:, 0, 1] * sb[:, 1, 0]
+            converged = True
+            break
+        d, _ = derivatives(b, st, sp)
+        jb = (d - st[4]).sum(axis=1)                                         # sum_l P_l
+        det = jb[:, 0, 0] * jb[:, 1, 1] - jb[:, 0, 1] * jb[:, 1, 0]
         ok = np.abs(det) > 0
         step = np.zeros_like(b)
-        step[ok, 0] = (sb[ok, 1, 1] * g[ok, 0] - sb[ok, 0, 1] * g[ok, 1]) / det[ok]
-        step[ok, 1] = (-sb[ok, 1, 0] * g[ok, 0] + sb[ok, 0, 0] * g[ok, 1]) / det[ok]
+        step[ok, 0] = -(jb[ok, 1, 1] * g[ok, 0] - jb[ok, 0, 1] * g[ok, 1]) / det[ok]
+        step[ok, 1] = -(-jb[ok, 1, 0] * g[ok, 0] + jb[ok, 0, 0] * g[ok, 1]) / det[ok]
         lam = np.ones(len(b))
         for _ in range(30):                                                  # backtracking
             trial = b + lam[:, None] * step
             trial_state = state(trial)
-            g_new = residual(*trial_state[:3])
+            g_new = residual(trial_state)[0]
             # a full Newton step may raise the residual of a Hertz contact approached from
             # the soft side before it converges: accept it unless it grows 1000-fold
             allowed = np.where(lam == 1.0, NONMONOTONE_FACTOR, 1 - 1e-4 * lam) * norm
@@ -177,159 +289,16 @@ def solve_balls_numpy(b, c_rho, c_z, free, radius, side, z0, k_poly, film, outer
             if not np.any(worse):
                 break
             lam = np.where(worse, 0.5 * lam, lam)
-        b = seat_loose_balls(trial, c_rho, c_z, free, outer, trial_state[0], fc, k_seat)
-        q, n_rho, n_z, delta, s = state(b)
-        g = residual(q, n_rho, n_z)
+        b = seat_loose_balls(trial, c_rho, c_z, free, outer, trial_state[0], fc_seat, k_seat)
+        st = state(b)
+        g, sp = residual(st)
         if np.max(np.abs(lam[:, None] * step)) < 1e-16 and np.all(
                 np.hypot(g[:, 0], g[:, 1]) <= 1e3 * tol):                     # round-off floor
-            return b, q, n_rho, n_z, delta, s, float(np.max(np.hypot(g[:, 0], g[:, 1]))), True
-    return b, q, n_rho, n_z, delta, s, float(np.max(np.hypot(g[:, 0], g[:, 1]))), False
-
-
-try:  # the compiled twin; the NumPy version above is the reference and the fallback
-    import numba
-except ImportError:  # pragma: no cover - numba is a dependency, but keep working without
-    numba = None
-
-if numba is not None:
-    @numba.njit(cache=True)
-    def _one_ball(br, bz, c_rho, c_z, free, radius, side, z0, k_poly, film, q, nr, nz, dl, s):
-        """Contacts of one ball (the loop body of contact_state); returns (g_rho, g_z)
-        without the centrifugal force."""
-        ncon, npoly = k_poly.shape
-        g_rho = 0.0
-        g_z = 0.0
-        for k in range(ncon):
-            v_rho = br - c_rho[k]
-            v_z = bz - c_z[k]
-            dist = np.sqrt(v_rho * v_rho + v_z * v_z)
-            n_r = v_rho / dist
-            n_zz = v_z / dist
-            delta = dist - free[k] + film[k]
-            c = abs(n_r)
-            kk = 0.0
-            dk = 0.0
-            for p in range(npoly):
-                kk = kk * c + k_poly[k, p]
-                if p < npoly - 1:
-                    dk = dk * c + k_poly[k, p] * (npoly - 1 - p)
-            valid = side[k] == 0 or side[k] * (z0[k] + radius[k] * n_zz) > 0
-            nr[k] = n_r
-            nz[k] = n_zz
-            dl[k] = delta
-            if delta > 0 and valid:
-                root = np.sqrt(delta)
-                qk = kk * delta * root
-                sgn = 1.0 if n_r > 0 else (-1.0 if n_r < 0 else 0.0)
-                dq_dn = 1.5 * kk * root
-                dq_dc = dk * delta * root
-                gr = dq_dn * n_r + dq_dc * sgn * (1.0 - n_r * n_r) / dist
-                gz = dq_dn * n_zz + dq_dc * sgn * (-n_r * n_zz) / dist
-                t = qk / dist
-                s[k, 0, 0] = n_r * gr + t * (1.0 - n_r * n_r)
-                s[k, 0, 1] = n_r * gz - t * n_r * n_zz
-                s[k, 1, 0] = n_zz * gr - t * n_zz * n_r
-                s[k, 1, 1] = n_zz * gz + t * (1.0 - n_zz * n_zz)
-                q[k] = qk
-                g_rho -= qk * n_r
-                g_z -= qk * n_zz
-            else:
-                q[k] = 0.0
-                s[k, :, :] = 0.0
-        return g_rho, g_z
-
-    @numba.njit(cache=True)
-    def _outer_only(q, outer):
-        for k in range(len(outer)):
-            if not outer[k] and q[k] > 0:
-                return False
-        return True
-
-    @numba.njit(cache=True)
-    def _seat(br, bz, c_rho, c_z, free, outer, q, fc, k_seat):
-        for k in range(len(outer)):
-            if outer[k] and q[k] > 0:
-                return br
-        best = -1e300
-        for k in range(len(outer)):
-            if outer[k]:
-                target = free[k] + (fc / k_seat) ** (2.0 / 3.0)
-                dz = min(max(bz - c_z[k], -0.9 * target), 0.9 * target)
-                best = max(best, c_rho[k] + np.sqrt(target * target - dz * dz))
-        return best
-
-    @numba.njit(cache=True)
-    def solve_balls_numba(b, c_rho, c_z, free, radius, side, z0, k_poly, film, outer, fc,
-                          k_seat, tol, ext, max_iterations=100):
-        """Compiled twin of :func:`solve_balls_numpy`, one ball at a time."""
-        nb, ncon = c_rho.shape
-        b = b.copy()
-        q = np.zeros((nb, ncon))
-        nr = np.zeros((nb, ncon))
-        nz = np.zeros((nb, ncon))
-        dl = np.zeros((nb, ncon))
-        s = np.zeros((nb, ncon, 2, 2))
-        tq = np.zeros(ncon)
-        tr = np.zeros(ncon)
-        tz = np.zeros(ncon)
-        td = np.zeros(ncon)
-        ts = np.zeros((ncon, 2, 2))
-        worst = 0.0
-        converged = True
-        for j in range(nb):
-            br, bz = b[j, 0], b[j, 1]
-            _one_ball(br, bz, c_rho[j], c_z[j], free[j], radius, side, z0, k_poly, film[j],
-                      q[j], nr[j], nz[j], dl[j], s[j])
-            br = _seat(br, bz, c_rho[j], c_z[j], free[j], outer, q[j], fc, k_seat)
-            gr, gz = _one_ball(br, bz, c_rho[j], c_z[j], free[j], radius, side, z0, k_poly,
-                               film[j], q[j], nr[j], nz[j], dl[j], s[j])
-            gr += fc + ext[j, 0]
-            gz += ext[j, 1]
-            done = False
-            for _ in range(max_iterations):
-                norm = np.sqrt(gr * gr + gz * gz)
-                if norm <= tol or np.max(q[j]) <= 10.0 * tol or (
-                        _outer_only(q[j], outer) and norm <= 0.1 * (fc + q[j].sum())):
-                    done = True
-                    break
-                a = s[j, :, 0, 0].sum()
-                bb = s[j, :, 0, 1].sum()
-                c = s[j, :, 1, 0].sum()
-                d = s[j, :, 1, 1].sum()
-                det = a * d - bb * c
-                if det == 0.0:
-                    break
-                step_r = (d * gr - bb * gz) / det
-                step_z = (-c * gr + a * gz) / det
-                lam = 1.0
-                for _ in range(30):
-                    nr_t = br + lam * step_r
-                    nz_t = bz + lam * step_z
-                    tgr, tgz = _one_ball(nr_t, nz_t, c_rho[j], c_z[j], free[j], radius, side,
-                                         z0, k_poly, film[j], tq, tr, tz, td, ts)
-                    tgr += fc + ext[j, 0]
-                    tgz += ext[j, 1]
-                    allowed = (NONMONOTONE_FACTOR if lam == 1.0 else 1 - 1e-4 * lam) * norm
-                    if np.sqrt(tgr * tgr + tgz * tgz) <= allowed or lam <= 1e-6:
-                        break
-                    lam *= 0.5
-                br = _seat(nr_t, nz_t, c_rho[j], c_z[j], free[j], outer, tq, fc, k_seat)
-                bz = nz_t
-                gr, gz = _one_ball(br, bz, c_rho[j], c_z[j], free[j], radius, side, z0, k_poly,
-                                   film[j], q[j], nr[j], nz[j], dl[j], s[j])
-                gr += fc + ext[j, 0]
-                gz += ext[j, 1]
-                moved = lam * np.sqrt(step_r * step_r + step_z * step_z)
-                if moved < 1e-16 and np.sqrt(gr * gr + gz * gz) <= 1e3 * tol:
-                    done = True
-                    break
-            b[j, 0] = br
-            b[j, 1] = bz
-            res = np.sqrt(gr * gr + gz * gz) if np.max(q[j]) > 10.0 * tol else 0.0
-            if _outer_only(q[j], outer) and res <= 0.1 * (fc + q[j].sum()):
-                res = 0.0
-            worst = max(worst, res)
-            converged = converged and done
-        return b, q, nr, nz, dl, s, worst, converged
-else:  # pragma: no cover
-    solve_balls_numba = None
+            converged = True
+            break
+    norm = np.hypot(g[:, 0], g[:, 1])
+    norm[np.max(st[0], axis=1) <= 10.0 * tol] = 0.0
+    d, e = derivatives(b, st, sp)
+    force, stiffness = condense(t, inner, st, sp, d, e)
+    return (b, st[0], st[1], st[2], st[3], sp, force, stiffness, float(np.max(norm)),
+            converged)

@@ -1,4 +1,4 @@
-"""Gyroscopic moment of the balls under the outer-raceway-control hypothesis (layer 1).
+"""Ball kinematics under raceway control, cage speed, gyroscopic moment (layer 1).
 
 Source: Harris T. A., Kotzalas M. N., *Advanced Concepts of Bearing Technology*, 5th ed.,
 2007, ch. 3 (high-speed ball bearings; Jones' raceway control). With the outer raceway
@@ -22,6 +22,28 @@ omega_m e_z x J omega_R = M_g e_psi. A friction force F t at the outer contact p
 -(D_w/2) F e_psi, so F = -2 M_g / D_w: the force on the ball is
 (2 M_g / D_w) (sin(alpha_o) e_rho - cos(alpha_o) e_z), outward and away from the side the
 outer contact leans to.
+
+Other raceway controls (the same source; derived here in the ball's plane with the spin
+axis at the attitude beta and pure rolling at both contact centres):
+- inner raceway control: tan(beta) = sin(alpha_i) / (cos(alpha_i) - gamma');
+- any beta: omega_m / omega = A / (A + B), omega_R / omega = -1 / (gamma' (A + B)) with
+  A = cos(alpha_o - beta) / (1 + gamma' cos(alpha_o)), B = cos(alpha_i - beta) /
+  (1 - gamma' cos(alpha_i)) (Jones's cage speed; with the outer-control beta this is the
+  orbital-speed formula above);
+- the friction that holds M_g is shared lambda_i at the inner and lambda_o = 2 - lambda_i
+  at the outer contact: (lambda_o M_g / D_w) (sin(alpha_o) e_rho - cos(alpha_o) e_z) on
+  the ball at the outer contact and (lambda_i M_g / D_w) (-sin(alpha_i) e_rho +
+  cos(alpha_i) e_z) at the inner one (its reaction acts on the inner ring). Harris's
+  choice: lambda_o = 2 under outer raceway control, lambda_i = lambda_o = 1 otherwise;
+  pure inner raceway control is lambda_i = 2.
+- Which race controls (``race_control="hybrid"``): Jones's criterion as Harris & Kotzalas
+  give it, outer raceway control where Q_o a_o E(k_o) cos(alpha_i - alpha_o) >
+  Q_i a_i E(k_i) (a the semi-major axis, E(k) the elliptic integral of the second kind),
+  inner raceway control elsewhere.
+
+The ball's centrifugal force F_c = m d_m omega_m^2 / 2 uses the same orbital speed
+omega_m (Jones's, at the ball's own contact angles), so the centrifugal force and the
+gyroscopic moment see one cage speed.
 
 Assumes the friction available at the outer contact is enough to stop gyroscopic spinning
 (Jones's criterion); the inner contact then spins. These are the classical hypotheses of
@@ -57,6 +79,36 @@ def outer_control_kinematics(inner_angle, outer_angle, gamma_prime):
     spin = -1.0 / (((np.cos(ao) + tb * np.sin(ao)) / (1.0 + g * np.cos(ao))
                     + (np.cos(ai) + tb * np.sin(ai)) / (1.0 - g * np.cos(ai))) * g * np.cos(beta))
     return beta, orbit, spin
+
+
+def raceway_control_kinematics(inner_angle, outer_angle, gamma_prime, control="outer"):
+    """Ball attitude beta [rad], orbital and spin speed ratios omega_m/omega, omega_R/omega
+    under outer or inner raceway control (Jones; see the module docstring).
+
+    Parameters
+    ----------
+    inner_angle, outer_angle : float or array
+        Contact angles alpha_i, alpha_o (magnitudes) [rad].
+    gamma_prime : float
+        D_w / d_m [-].
+    control : {"outer", "inner"}
+        The race at which the ball rolls without spinning [-].
+
+    >>> b, om, orr = raceway_control_kinematics(0.7, 0.7, 0.2, "inner")
+    >>> round(float(om), 6) == round((1 - 0.2 * math.cos(0.7)) / 2, 6)
+    True
+    """
+    ai, ao = np.asarray(inner_angle, float), np.asarray(outer_angle, float)
+    g = gamma_prime
+    if control == "outer":
+        beta = np.arctan2(np.sin(ao), np.cos(ao) + g)
+    elif control == "inner":
+        beta = np.arctan2(np.sin(ai), np.cos(ai) - g)
+    else:
+        raise ValueError(f"control must be 'outer' or 'inner', not {control!r}")
+    a = np.cos(ao - beta) / (1.0 + g * np.cos(ao))
+    b = np.cos(ai - beta) / (1.0 - g * np.cos(ai))
+    return beta, a / (a + b), -1.0 / (g * (a + b))
 
 
 def gyroscopic_ball_force(ball_diameter, pitch_diameter, density, shaft_speed, inner_angle,

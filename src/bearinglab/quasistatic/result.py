@@ -49,6 +49,16 @@ class LoadDistribution:
         for solved DOFs; the reaction to an imposed tilt otherwise) [N, N m].
     groove_radius : array (C,)
         Groove radius of each contact, for the truncation check [m].
+    orbital_speed : array (Z,), optional
+        Each ball's orbital (cage) speed omega_m, Jones's at its own contact angles [rad/s].
+    ball_centrifugal_force : array (Z,), optional
+        F_c = m d_m omega_m^2 / 2 of each ball [N].
+    gyroscopic_moment : array (Z,), optional
+        M_g of each ball (0 without ``gyroscopic``) [N m].
+    race_control : str
+        "outer", "inner" or "hybrid" [-].
+    outer_controlled : bool array (Z,), optional
+        Balls under outer raceway control [-].
     """
 
     bearing: BallBearing
@@ -64,6 +74,18 @@ class LoadDistribution:
     stiffness_matrix: np.ndarray
     reaction: np.ndarray
     groove_radius: np.ndarray
+    orbital_speed: np.ndarray | None = None
+    ball_centrifugal_force: np.ndarray | None = None
+    gyroscopic_moment: np.ndarray | None = None
+    race_control: str = "outer"
+    outer_controlled: np.ndarray | None = None
+
+    @property
+    def cage_speed(self) -> float:
+        """Mean orbital speed of the balls [rad/s] (the cage speed)."""
+        if self.orbital_speed is None:
+            return math.nan
+        return float(np.mean(self.orbital_speed))
 
     # ---------------------------------------------------------------- derived
     @property
@@ -171,6 +193,11 @@ class LoadDistribution:
                     f"{name}_semi_major_mm": float(semi[k]) * 1e3,
                     f"{name}_approach_um": float(max(self.approach[j, cols[k]], 0.0)) * 1e6,
                 })
+            if self.orbital_speed is not None:
+                row["orbital_speed_rpm"] = float(self.orbital_speed[j]) * 30 / math.pi
+                row["centrifugal_force_n"] = float(self.ball_centrifugal_force[j])
+                row["gyroscopic_moment_n_m"] = float(self.gyroscopic_moment[j])
+                row["outer_raceway_control"] = bool(self.outer_controlled[j])
             row["contact_points"] = int(self.contact_points[j])
             row["truncated"] = bool(np.any(self.truncated[j]))
             rows.append(row)
@@ -205,6 +232,8 @@ class LoadDistribution:
             "reaction_moment_nm": self.reaction[3:].tolist(),
             "equilibrium_residual_n": float(np.linalg.norm(residual[solved])),
             "speed_rpm": self.condition.shaft_speed * 30 / math.pi,
+            "cage_speed_rpm": self.cage_speed * 30 / math.pi,
+            "race_control": self.race_control,
             "diametral_clearance_um": self.bearing.diametral_clearance * 1e6,
             "radial_load_n": self.condition.radial_load,
             "axial_load_n": self.condition.axial_load,

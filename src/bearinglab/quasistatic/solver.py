@@ -6,8 +6,12 @@ groove halves (two-, three- or four-point contact, seed 001 figs. 1-3), with the
 Q = K(alpha) delta^1.5 (K from the exact Hertz solution at the current contact angle),
 the EHL film taking up part of the play (seed 001 eq. 2: the centre distance is
 R_e + R_n - D_w + delta_e + delta_n - h_e - h_n) and the ball pressed outward by its
-centrifugal force F_c = pi rho_b D_w^3 d_m omega_c^2 / 12 (seed 001, after eq. 3;
-omega_c the pure-rolling cage speed). The outer ring is fixed (it may be tilted); the
+centrifugal force F_c = pi rho_b D_w^3 d_m omega_m^2 / 12 (seed 001, after eq. 3), with
+omega_m Jones's orbital speed at the ball's own inner and outer contact angles under the
+chosen raceway control, the same speed that sets the gyroscopic moment when it is
+included (gyroscopic.py; Harris & Kotzalas, *Advanced Concepts of Bearing Technology*,
+5th ed., 2007, ch. 3). A ball that does not touch both races orbits at the mean orbital
+speed of those that do (the cage carries it). The outer ring is fixed (it may be tilted); the
 inner ring moves by u = (x, y, z, tilt_x, tilt_y) (small rotations). Ball equilibrium
 (seed 001 eqs. 5, 9, 11) is solved by Newton's method for all balls at once; ring
 equilibrium (seed 001 eqs. 8, 12) by Newton's method on u with the analytic Jacobian
@@ -19,8 +23,11 @@ which is also the 5x5 tangent stiffness matrix of the bearing (i: inner contacts
 j, S = -dG/dv the contact's tangent matrix, T the ring kinematics; see _kernels.py).
 
 Per-ball diameter errors (seed 003 noise section eq. 7) change each ball's free distance
-to the groove centres. Not modelled: gyroscopic moments and friction (balls are
-frictionless), ring deformation, thermal expansion.
+to the groove centres. Not modelled: friction other than what holds the gyroscopic moment
+(no traction calculation), ring deformation, thermal expansion.
+
+The ring iteration runs compiled (_ring.ring_newton); :func:`_newton` below is its
+Python reference, kept for the tests and the benchmark (``COMPILED_RING = False``).
 
 A ball that touches nothing has no defined position; it is held on the outer race by a
 floor of 1e-9 N on its centrifugal force, negligible against any carried load (this is
@@ -42,6 +49,11 @@ from .grooves import ContactSet, contact_set
 
 #: Floor of the outward force on every ball [N] (see the module docstring).
 CENTRIFUGAL_FLOOR = 1e-9
+#: Run the ring iteration compiled (False: the Python reference :func:`_newton`).
+COMPILED_RING = True
+#: Raceway controls: the race at which balls roll without spinning, and the share
+#: lambda_i of the gyroscopic friction held at the inner contact (gyroscopic.py).
+RACE_CONTROLS = ("outer", "inner", "hybrid")
 DOF_NAMES = ("x", "y", "z", "tilt_x", "tilt_y")
 
 
@@ -88,10 +100,12 @@ def inner_ring_expansion(bearing: BallBearing, shaft_speed: float) -> float:
 
 
 class _Problem:
-    """Everything fixed during one solve: geometry arrays, loads, which DOFs are free."""
+    """Everything fixed during one solve: geometry arrays, loads, which DOFs are free,
+    the speed-force parameters."""
 
     def __init__(self, bearing: BallBearing, condition: OperatingCondition, ball_phase: float,
-                 ball_diameter_errors, film) -> None:
+                 ball_diameter_errors, film, *, gyroscopic: bool = False,
+                 race_control: str = "outer") -> None:
         self.bearing, self.condition = bearing, condition
         z = bearing.ball_count
         self.contacts: ContactSet = contact_set(bearing)
@@ -104,10 +118,8 @@ class _Problem:
             raise InputError("ball_diameter_errors", ball_diameter_errors,
                              f"{z} finite values within +-5 % of D_w [m]")
         self.free = cs.free_distance[None, :] - 0.5 * errors[:, None]        # (Z, C)
-        self.film = np.zeros((z, cs.count)) if film is None else np.broadcast_to(
-            film, (z, cs.count)).astype(float)
-        self.fc = max(centrifugal_force(bearing, condition.shaft_speed), CENTRIFUGAL_FLOOR)
-        self.ball_force = np.zeros((z, 2))     # further fixed forces (gyroscopic friction)
+        self.film = np.zeros((z, cs.count)) if film is None else np.ascontiguousarray(
+            np.broadcast_to(film, (z, cs.count)), dtype=float)
         self.t = _kernels.ring_jacobian(self.psi, cs.rho0, cs.z0)            # (Z, C, 2, 5)
         self.inner = cs.ring == 0
         outer_u = np.array([0, 0, 0, *condition.outer_misalignment], dtype=float)
@@ -118,6 +130,33 @@ class _Problem:
         self.free_dofs = np.array([True, True, True, condition.tilt_free, condition.tilt_free])
         self.u_fixed = np.array([0, 0, 0, *condition.misalignment], dtype=float)
         self.scale = np.array([1, 1, 1, 2 / bearing.pitch_diameter, 2 / bearing.pitch_diameter])
+        if race_control not in RACE_CONTROLS:
+            raise InputError("race_control", race_control, " or ".join(RACE_CONTROLS))
+        self.race_control = race_control
+        omega = condition.shaft_speed
+        dw, dm = bearing.ball_diameter, bearing.pitch_diameter
+        rho_b = bearing.ball_material.density
+        # cage speed of balls that do not touch both races: pure rolling at the nominal
+        # angle until the solve gives the mean of the driven balls (solve updates spd[6])
+        wm0 = 0.5 * omega * (1.0 - bearing.gamma)
+        self.spd = np.array([omega, dw / dm, 0.5 * rho_b * math.pi * dw**3 / 6.0 * dm,
+                             rho_b * math.pi * dw**5 / 60.0, dw, float(gyroscopic), wm0,
+                             CENTRIFUGAL_FLOOR])
+        self.control = np.full(z, 1 if race_control == "inner" else 0, dtype=np.int64)
+        self.lam_i = np.full(z, 2.0 if race_control == "inner" else 0.0)
+        self.k_seat = float(np.max(cs.k_radial[~self.inner]))
+
+    @property
+    def fc(self) -> float:
+        """Outward force on a ball orbiting at the cage speed of undriven balls [N]."""
+        return max(self.spd[2] * self.spd[6] ** 2, CENTRIFUGAL_FLOOR)
+
+    def set_control(self, outer_controlled) -> None:
+        """Raceway control per ball (``hybrid``): outer where True, else inner with the
+        gyroscopic friction shared lambda_i = lambda_o = 1 (Harris)."""
+        outer_controlled = np.asarray(outer_controlled, bool)
+        self.control = np.where(outer_controlled, 0, 1).astype(np.int64)
+        self.lam_i = np.where(outer_controlled, 0.0, 1.0)
 
     def centres(self, u):
         shift = self.t @ u                                                   # (Z, C, 2)
@@ -125,57 +164,48 @@ class _Problem:
         c_z = self.c0_z + np.where(self.inner, shift[..., 1], 0.0)
         return c_rho, c_z
 
+    def kernel_arguments(self):
+        cs = self.contacts
+        return (self.t, self.inner, self.free, cs.groove_radius, cs.side.astype(float), cs.z0,
+                cs.k_poly, self.film, cs.ring.astype(np.int64), self.control, self.lam_i,
+                self.spd, self.k_seat)
+
     def solve_balls(self, b, u, tol, compiled: bool | None = None):
         """Newton's method on every ball's equilibrium for fixed ring displacement u
-        (compiled kernel when numba is available, else its NumPy twin; see _kernels.py).
+        (compiled kernel, or its NumPy twin with ``compiled=False``; see _kernels.py).
 
         A ball whose contact loads are all below 10 tol is loose: its position is arbitrary
         within the play (it may rattle between two barely touching contacts), so its
         residual is not required to vanish; what it adds to the ring is below 1e-8 of the
-        load. A ball with no outer contact is put back on the outer race: its centrifugal
-        force and any inner contact both push it outward.
+        load. Every other ball must be in equilibrium within ``tol``. A ball with no outer
+        contact is put back on the outer race: its centrifugal force and any inner contact
+        both push it outward. Returns (b, state), state = (q, n_rho, n_z, delta, speed
+        (Z, 7), force of the balls on the inner ring, condensed stiffness).
         """
         tol = max(tol, 2.0 * CENTRIFUGAL_FLOOR)
         c_rho, c_z = self.centres(u)
-        cs = self.contacts
-        outer = ~self.inner
-        use_compiled = _kernels.solve_balls_numba is not None if compiled is None else compiled
-        kernel = _kernels.solve_balls_numba if use_compiled else _kernels.solve_balls_numpy
-        b, q, n_rho, n_z, delta, s, worst, ok = kernel(
-            np.ascontiguousarray(b, dtype=float), c_rho, c_z, self.free, cs.groove_radius,
-            cs.side, cs.z0, cs.k_poly, self.film, outer, self.fc,
-            float(np.max(cs.k_radial[outer])), tol, self.ball_force)
+        kernel = _kernels.solve_balls_numpy if compiled is False else _solve_balls_compiled()
+        b, q, n_rho, n_z, delta, speed, force, stiffness, worst, ok = kernel(
+            np.ascontiguousarray(b, dtype=float), c_rho, c_z, *self.kernel_arguments()[:-1],
+            self.k_seat, tol)
         if not ok:
             raise ConvergenceError(f"ball equilibrium did not converge: residual {worst:.3e} N "
                                    f"(tolerance {tol:.1e} N) at ring displacement {u.tolist()}")
-        return b, (q, n_rho, n_z, delta, s)
+        return b, (q, n_rho, n_z, delta, speed, force, stiffness)
 
     def ring_force(self, state):
         """Generalised force (F_x, F_y, F_z, M_x, M_y) of the balls on the inner ring."""
-        q, n_rho, n_z = state[:3]
-        inner = self.inner
-        g_in = np.stack([q[:, inner] * n_rho[:, inner], q[:, inner] * n_z[:, inner]], axis=-1)
-        return np.einsum("jkab,jka->b", self.t[:, inner], g_in)
+        return state[5]
 
     def ring_force_and_stiffness(self, state):
         """Generalised force of the balls on the inner ring and the condensed stiffness."""
-        s = state[4]
-        inner = self.inner
-        t_in = self.t[:, inner]                                              # (Z, Ci, 2, 5)
-        force = self.ring_force(state)
-        s_in = s[:, inner]
-        st = np.einsum("jkab,jkbc->jac", s_in, t_in)                          # sum_i S T
-        tst = np.einsum("jkba,jkbc,jkcd->ad", t_in, s_in, t_in)
-        ts = np.einsum("jkba,jkbc->jac", t_in, s_in)                          # sum_i T^T S
-        sb = s.sum(axis=1)
-        det = sb[:, 0, 0] * sb[:, 1, 1] - sb[:, 0, 1] * sb[:, 1, 0]
-        inv = np.empty_like(sb)
-        safe = np.where(np.abs(det) > 0, det, 1.0)
-        inv[:, 0, 0], inv[:, 1, 1] = sb[:, 1, 1] / safe, sb[:, 0, 0] / safe
-        inv[:, 0, 1], inv[:, 1, 0] = -sb[:, 0, 1] / safe, -sb[:, 1, 0] / safe
-        inv[np.abs(det) == 0] = 0.0
-        stiffness = tst - np.einsum("jab,jbc,jcd->ad", ts, inv, st)
-        return force, stiffness
+        return state[5], state[6]
+
+
+def _solve_balls_compiled():
+    from . import _compiled
+
+    return _compiled.solve_balls
 
 
 def initial_ring_guess(problem: _Problem) -> np.ndarray:
@@ -197,34 +227,73 @@ def initial_ring_guess(problem: _Problem) -> np.ndarray:
 
 def solve(bearing: BallBearing, condition: OperatingCondition, *, ball_phase: float | None = None,
           ball_diameter_errors=None, film=None, tolerance: float = 1e-9, max_iterations: int = 100,
-          initial: np.ndarray | None = None, ball_force=None):
+          initial: np.ndarray | None = None, gyroscopic: bool = False,
+          race_control: str = "outer", problem: _Problem | None = None):
     """Solve ring and ball equilibrium; returns (u, b, state, problem, stiffness).
 
     Without an initial guess, a combined load is solved in two stages: first the radial
     displacement with the axial one held at zero (the balls then touch), then all free
     degrees of freedom from there; starting both at once from a guess can leave a
-    four-point or clearance bearing with no loaded ball and no useful Jacobian.
+    four-point or clearance bearing with no loaded ball and no useful Jacobian. When that
+    fails, the load is reached in steps (:func:`_continuation`) and, at speed, the speed
+    is raised in steps from rest (:func:`_speed_continuation`).
     See :func:`bearinglab.quasistatic.solve_load_distribution` for the public interface.
     """
     if ball_phase is None:
         ball_phase = condition.radial_load_angle
-    problem = _Problem(bearing, condition, float(ball_phase), ball_diameter_errors, film)
-    if ball_force is not None:
-        problem.ball_force = np.ascontiguousarray(ball_force, dtype=float)
+    if problem is None:
+        problem = _Problem(bearing, condition, float(ball_phase), ball_diameter_errors, film,
+                           gyroscopic=gyroscopic, race_control=race_control)
     if initial is None and condition.radial_load > 0:
         guess = initial_ring_guess(problem)
         guess[2] = 0.0
         radial_only = problem.free_dofs.copy()
         problem.free_dofs = np.array([True, True, False, False, False])
         try:   # a warm start only: a loose tolerance is enough
-            initial = _newton(problem, max(tolerance, 1e-3), 30, guess)[0]
+            initial = _ring(problem, max(tolerance, 1e-3), 30, guess)[0]
         except ConvergenceError:
             initial = None
         problem.free_dofs = radial_only
     try:
-        return _newton(problem, tolerance, max_iterations, initial)
+        return _ring(problem, tolerance, max_iterations, initial)
     except ConvergenceError as direct:
-        return _continuation(problem, tolerance, max_iterations, direct)
+        try:
+            return _continuation(problem, tolerance, max_iterations, direct)
+        except ConvergenceError:
+            if problem.spd[0] <= 0:
+                raise
+            return _speed_continuation(problem, tolerance, max_iterations, direct)
+
+
+def _speed_continuation(problem: _Problem, tolerance: float, max_iterations: int,
+                        failure: ConvergenceError):
+    """Fallback at speed: solve at rest, then raise the speed in steps, each starting from
+    the previous solution (ring and balls); steps are halved where Newton fails. At light
+    thrust and high speed the balls roll far up the inner groove (alpha_i ~ 60 deg against
+    alpha_o ~ 5 deg) and Newton's method cannot reach that state from a cold start."""
+    target = problem.spd.copy()
+    problem.spd[0] = 0.0
+    problem.spd[6] = 0.0
+    try:
+        u = _ring(problem, tolerance, max_iterations, None)[0]
+        t, step = 0.0, 0.25
+        while t < 1.0:
+            trial = min(1.0, t + step)
+            problem.spd[0] = trial * target[0]
+            problem.spd[6] = trial * target[6]
+            try:
+                u = _ring(problem, tolerance, max_iterations, u)[0]
+                t, step = trial, min(0.5, 2 * step)
+            except ConvergenceError:
+                step *= 0.5
+                if step < 1e-3:
+                    raise failure from None
+        problem.spd[:] = target
+        return _ring(problem, tolerance, max_iterations, u)
+    except ConvergenceError:
+        raise failure from None
+    finally:
+        problem.spd[:] = target
 
 
 def _continuation(problem: _Problem, tolerance: float, max_iterations: int,
@@ -240,42 +309,77 @@ def _continuation(problem: _Problem, tolerance: float, max_iterations: int,
         start = 0.1 * target
     problem.load = start
     try:
-        u = _newton(problem, tolerance, max_iterations, None)[0]
+        u = _ring(problem, tolerance, max_iterations, None)[0]
         t, step = 0.0, 0.25
         while t < 1.0:
             trial = min(1.0, t + step)
             problem.load = start + trial * (target - start)
             try:
-                u = _newton(problem, tolerance, max_iterations, u)[0]
+                u = _ring(problem, tolerance, max_iterations, u)[0]
                 t, step = trial, min(0.5, 2 * step)
             except ConvergenceError:
                 step *= 0.5
                 if step < 1e-3:
                     raise failure from None
-        return _newton(problem, tolerance, max_iterations, u)
+        return _ring(problem, tolerance, max_iterations, u)
     except ConvergenceError:
         raise failure from None
     finally:
         problem.load = target
 
 
-def _newton(problem: _Problem, tolerance: float, max_iterations: int, initial):
-    """Newton's method with damping and an exact line search on the free ring DOFs."""
+def _setup(problem: _Problem, tolerance: float, initial):
     bearing = problem.bearing
-    load = problem.load
-    load_norm = float(np.linalg.norm(load * problem.scale))
-    ball_tol = tolerance * max(load_norm, 1.0) / bearing.ball_count
+    load_norm = float(np.linalg.norm(problem.load * problem.scale))
+    ball_tol = max(tolerance * max(load_norm, 1.0) / bearing.ball_count, 2 * CENTRIFUGAL_FLOOR)
     u = initial_ring_guess(problem) if initial is None else np.asarray(initial, float).copy()
     b = np.stack([np.full(bearing.ball_count, 0.5 * bearing.pitch_diameter),
                   np.zeros(bearing.ball_count)], axis=1)
-    free = problem.free_dofs
-    target = tolerance * max(load_norm, 1.0)
-    b, state = problem.solve_balls(b, u, ball_tol)
-    force, stiff = problem.ring_force_and_stiffness(state)
-    r = (load + force) * problem.scale
     # steps of the order of the play plus Hertz approaches; tilts a few mrad
     play = max(bearing.diametral_clearance, 0.0) + 0.005 * bearing.ball_diameter
     max_step = np.array([play, play, 4 * play, 0.005, 0.005])
+    return u, b, ball_tol, tolerance * max(load_norm, 1.0), max_step
+
+
+def _not_converged(problem: _Problem, residual: float, target: float, max_iterations: int):
+    return ConvergenceError(
+        f"ring equilibrium did not converge for F = {problem.load.round(6).tolist()} (N, N m): "
+        f"residual {residual:.3e} (tolerance {target:.1e}) after "
+        f"{max_iterations} iterations; the bearing may not carry this load")
+
+
+def _ring(problem: _Problem, tolerance: float, max_iterations: int, initial):
+    """The ring iteration: compiled (COMPILED_RING) or the Python reference."""
+    if not COMPILED_RING:
+        return _newton(problem, tolerance, max_iterations, initial)
+    from . import _ring as compiled
+
+    u, b, ball_tol, target, max_step = _setup(problem, tolerance, initial)
+    c0_rho, c0_z = np.ascontiguousarray(problem.c0_rho), np.ascontiguousarray(problem.c0_z)
+    args = problem.kernel_arguments()
+    u, b, q, n_rho, n_z, delta, speed, force, stiff, status, residual = compiled.ring_newton(
+        u, b, problem.free_dofs, problem.load, problem.scale, max_step, args[0], c0_rho, c0_z,
+        *args[1:], ball_tol, target, max_iterations)
+    if status == 3:
+        raise ConvergenceError(f"ball equilibrium did not converge at ring displacement "
+                               f"{u.tolist()}")
+    if status == 2:
+        raise ConvergenceError(f"ring equilibrium: no admissible step from {u.tolist()} for "
+                               f"F = {problem.load.round(6).tolist()}")
+    if status == 1:
+        raise _not_converged(problem, residual, target, max_iterations)
+    return u, b, (q, n_rho, n_z, delta, speed, force, stiff), problem, stiff
+
+
+def _newton(problem: _Problem, tolerance: float, max_iterations: int, initial):
+    """Newton's method with damping and an exact line search on the free ring DOFs (the
+    Python reference of _compiled.ring_newton)."""
+    load = problem.load
+    u, b, ball_tol, target, max_step = _setup(problem, tolerance, initial)
+    free = problem.free_dofs
+    b, state = problem.solve_balls(b, u, ball_tol)
+    force, stiff = problem.ring_force_and_stiffness(state)
+    r = (load + force) * problem.scale
     damping = 0.0
     for iteration in range(max_iterations + 1):
         norm = float(np.linalg.norm(r[free]))
@@ -326,7 +430,4 @@ def _newton(problem: _Problem, tolerance: float, max_iterations: int, initial):
                                        f"{u.tolist()} for F = {load.round(6).tolist()}")
         u, b, state, force, r = step
         stiff = problem.ring_force_and_stiffness(state)[1]
-    raise ConvergenceError(
-        f"ring equilibrium did not converge for F = {load.round(6).tolist()} (N, N m): "
-        f"residual {float(np.linalg.norm(r[free])):.3e} (tolerance {target:.1e}) after "
-        f"{max_iterations} iterations; the bearing may not carry this load")
+    raise _not_converged(problem, float(np.linalg.norm(r[free])), target, max_iterations)

@@ -1,0 +1,359 @@
+"""Compiled quasi-static kernels: ball equilibrium with the speed forces and the condensed
+ring force and stiffness (numba, ``cache=True``); the ring iteration is in _ring.py.
+
+The NumPy twins are :func:`bearinglab.quasistatic._kernels.solve_balls_numpy` (ball
+equilibrium, speed forces, condensation) and :func:`bearinglab.quasistatic.solver._newton`
+(the ring iteration); tests/unit/test_quasistatic_kernels.py checks that they agree.
+Notation as in _kernels.py; the speed forces are those of
+:mod:`bearinglab.quasistatic.speed` (Jones's raceway control, Harris's friction split).
+
+Every function here is a module-level ``numba.njit(cache=True)`` function that calls only
+other module-level compiled functions (no function arguments), so that a new process loads
+them all from numba's on-disk cache.
+
+Speed parameters ``spd`` (float array): shaft speed omega [rad/s], gamma' = D_w/d_m [-],
+m d_m / 2 [kg m], ball inertia J [kg m^2], D_w [m], gyroscopic (1/0), the cage speed of
+balls not driven by both races omega_c0 [rad/s], the floor of the outward force [N].
+Per ball: ``control`` (0 outer, 1 inner raceway control) and ``lam_i`` (share lambda_i of
+the gyroscopic friction held at the inner contact; lambda_o = 2 - lambda_i).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numba
+import numpy as np
+
+#: Relative finite-difference step of the speed-force derivatives (times R - D_w/2).
+FD_STEP = 1e-6
+#: A full Newton step is accepted unless it multiplies the ball's residual by this.
+NONMONOTONE_FACTOR = 1000.0
+
+
+@numba.njit(cache=True)
+def _contact(v_rho, v_z, free, radius, side, z0, kp, film, out):
+    """One contact: out = (q, n_rho, n_z, delta, s00, s01, s10, s11)."""
+    npoly = kp.shape[0]
+    dist = math.sqrt(v_rho * v_rho + v_z * v_z)
+    n_r = v_rho / dist
+    n_z = v_z / dist
+    delta = dist - free + film
+    c = abs(n_r)
+    kk = 0.0
+    dk = 0.0
+    for p in range(npoly):
+        kk = kk * c + kp[p]
+        if p < npoly - 1:
+            dk = dk * c + kp[p] * (npoly - 1 - p)
+    valid = side == 0 or side * (z0 + radius * n_z) > 0
+    out[1] = n_r
+    out[2] = n_z
+    out[3] = delta
+    if delta > 0 and valid:
+        root = math.sqrt(delta)
+        qk = kk * delta * root
+        sgn = 1.0 if n_r > 0 else (-1.0 if n_r < 0 else 0.0)
+        dq_dn = 1.5 * kk * root
+        dq_dc = dk * delta * root
+        gr = dq_dn * n_r + dq_dc * sgn * (1.0 - n_r * n_r) / dist
+        gz = dq_dn * n_z + dq_dc * sgn * (-n_r * n_z) / dist
+        t = qk / dist
+        out[0] = qk
+        out[4] = n_r * gr + t * (1.0 - n_r * n_r)
+        out[5] = n_r * gz - t * n_r * n_z
+        out[6] = n_z * gr - t * n_z * n_r
+        out[7] = n_z * gz + t * (1.0 - n_z * n_z)
+    else:
+        out[0] = 0.0
+        out[4] = 0.0
+        out[5] = 0.0
+        out[6] = 0.0
+        out[7] = 0.0
+
+
+@numba.njit(cache=True)
+def speed_force(q, nr, nz, ring, control, lam_i, spd, out):
+    """Speed forces on one ball from its contacts (see speed.py):
+    out = (F_rho, F_z total, inner-friction F_rho, F_z, omega_m, M_g, F_c)."""
+    omega, g, hmd, inertia, dw, gyro, wm0, floor = (spd[0], spd[1], spd[2], spd[3], spd[4],
+                                                     spd[5], spd[6], spd[7])
+    qi = 0.0
+    qo = 0.0
+    ai = 0.0
+    ao = 0.0
+    for k in range(q.shape[0]):
+        if q[k] > 0:
+            if ring[k] == 0:
+                qi += q[k]
+                ai += q[k] * math.atan2(-nz[k], abs(nr[k]))
+            else:
+                qo += q[k]
+                ao += q[k] * math.atan2(nz[k], abs(nr[k]))
+    wm = wm0
+    mg = 0.0
+    fir = 0.0
+    fiz = 0.0
+    for_r = 0.0
+    for_z = 0.0
+    if qi > 0 and qo > 0 and omega > 0:
+        ai /= qi
+        ao /= qo
+        s = 1.0 if ao > 0 else (-1.0 if ao < 0 else (1.0 if ai >= 0 else -1.0))
+        a_i = s * ai
+        a_o = s * ao
+        if control == 0:
+            beta = math.atan2(math.sin(a_o), math.cos(a_o) + g)
+        else:
+            beta = math.atan2(math.sin(a_i), math.cos(a_i) - g)
+        big_a = math.cos(a_o - beta) / (1.0 + g * math.cos(a_o))
+        big_b = math.cos(a_i - beta) / (1.0 - g * math.cos(a_i))
+        wm = omega * big_a / (big_a + big_b)
+        if gyro > 0:
+            spin = omega / (g * (big_a + big_b))
+            mg = inertia * spin * wm * math.sin(beta)
+            lo = 2.0 - lam_i
+            for_r = lo * mg / dw * math.sin(a_o)
+            for_z = -s * lo * mg / dw * math.cos(a_o)
+            fir = -lam_i * mg / dw * math.sin(a_i)
+            fiz = s * lam_i * mg / dw * math.cos(a_i)
+    fc = max(hmd * wm * wm, floor)
+    out[0] = fc + for_r + fir
+    out[1] = for_z + fiz
+    out[2] = fir
+    out[3] = fiz
+    out[4] = wm
+    out[5] = mg
+    out[6] = fc
+
+
+@numba.njit(cache=True)
+def _ball(br, bz, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, control, lam_i,
+          spd, q, nr, nz, dl, s, sp):
+    """All contacts of one ball at (br, bz) into q, nr, nz, dl, s; speed forces into sp;
+    returns the total force on the ball (g_rho, g_z)."""
+    ncon = c_rho.shape[0]
+    tmp = np.empty(8)
+    g_rho = 0.0
+    g_z = 0.0
+    for k in range(ncon):
+        _contact(br - c_rho[k], bz - c_z[k], free[k], radius[k], side[k], z0[k], k_poly[k],
+                 film[k], tmp)
+        q[k] = tmp[0]
+        nr[k] = tmp[1]
+        nz[k] = tmp[2]
+        dl[k] = tmp[3]
+        s[k, 0, 0] = tmp[4]
+        s[k, 0, 1] = tmp[5]
+        s[k, 1, 0] = tmp[6]
+        s[k, 1, 1] = tmp[7]
+        g_rho -= tmp[0] * tmp[1]
+        g_z -= tmp[0] * tmp[2]
+    speed_force(q, nr, nz, ring, control, lam_i, spd, sp)
+    return g_rho + sp[0], g_z + sp[1]
+
+
+@numba.njit(cache=True)
+def _speed_derivatives(br, bz, c_rho, c_z, free, radius, side, z0, k_poly, film, ring,
+                       control, lam_i, spd, q, nr, nz, dmat, emat):
+    """Central differences of the speed forces on the ball per contact vector v_l = b - c_l:
+    dmat[l] = d(total speed force)/dv_l, emat[l] = d(inner friction)/dv_l (2 x 2 each)."""
+    ncon = c_rho.shape[0]
+    tmp = np.empty(8)
+    sp = np.empty(7)
+    qq = q.copy()
+    rr = nr.copy()
+    zz = nz.copy()
+    for l in range(ncon):
+        h = FD_STEP * free[l]
+        for a in range(2):
+            for sign in (1.0, -1.0):
+                vr = br - c_rho[l] + (sign * h if a == 0 else 0.0)
+                vz = bz - c_z[l] + (sign * h if a == 1 else 0.0)
+                _contact(vr, vz, free[l], radius[l], side[l], z0[l], k_poly[l], film[l], tmp)
+                qq[l] = tmp[0]
+                rr[l] = tmp[1]
+                zz[l] = tmp[2]
+                speed_force(qq, rr, zz, ring, control, lam_i, spd, sp)
+                w = sign / (2.0 * h)
+                dmat[l, 0, a] += w * sp[0]
+                dmat[l, 1, a] += w * sp[1]
+                emat[l, 0, a] += w * sp[2]
+                emat[l, 1, a] += w * sp[3]
+        qq[l] = q[l]
+        rr[l] = nr[l]
+        zz[l] = nz[l]
+
+
+@numba.njit(cache=True)
+def _seat(br, bz, c_rho, c_z, free, ring, q, fc, k_seat):
+    """A ball with no loaded outer contact, put radially onto the outer race."""
+    for k in range(ring.shape[0]):
+        if ring[k] == 1 and q[k] > 0:
+            return br
+    best = -1e300
+    for k in range(ring.shape[0]):
+        if ring[k] == 1:
+            target = free[k] + (fc / k_seat) ** (2.0 / 3.0)
+            dz = min(max(bz - c_z[k], -0.9 * target), 0.9 * target)
+            best = max(best, c_rho[k] + math.sqrt(target * target - dz * dz))
+    return best
+
+
+@numba.njit(cache=True)
+def _jacobian(s, dmat):
+    """Sum over contacts of P_l = -S_l + D_l (d force on the ball / d b)."""
+    a = 0.0
+    b = 0.0
+    c = 0.0
+    d = 0.0
+    for l in range(s.shape[0]):
+        a += dmat[l, 0, 0] - s[l, 0, 0]
+        b += dmat[l, 0, 1] - s[l, 0, 1]
+        c += dmat[l, 1, 0] - s[l, 1, 0]
+        d += dmat[l, 1, 1] - s[l, 1, 1]
+    return a, b, c, d
+
+
+@numba.njit(cache=True)
+def solve_ball(b, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, control, lam_i,
+               spd, k_seat, tol, max_iterations, q, nr, nz, dl, s, sp):
+    """Newton's method on one ball's equilibrium; b (2,) is updated in place. Returns
+    (residual [N], converged). A ball whose loads are all below 10 tol is loose."""
+    ncon = c_rho.shape[0]
+    tq = np.empty(ncon)
+    tr = np.empty(ncon)
+    tz = np.empty(ncon)
+    td = np.empty(ncon)
+    ts = np.empty((ncon, 2, 2))
+    tsp = np.empty(7)
+    dmat = np.zeros((ncon, 2, 2))
+    emat = np.zeros((ncon, 2, 2))
+    br, bz = b[0], b[1]
+    fc_seat = max(spd[2] * spd[6] * spd[6], spd[7])
+    _ball(br, bz, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, control, lam_i,
+          spd, q, nr, nz, dl, s, sp)
+    br = _seat(br, bz, c_rho, c_z, free, ring, q, fc_seat, k_seat)
+    gr, gz = _ball(br, bz, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, control,
+                   lam_i, spd, q, nr, nz, dl, s, sp)
+    done = False
+    for _ in range(max_iterations):
+        norm = math.sqrt(gr * gr + gz * gz)
+        if norm <= tol or np.max(q) <= 10.0 * tol:
+            done = True
+            break
+        dmat[:] = 0.0
+        emat[:] = 0.0
+        if spd[0] > 0:
+            _speed_derivatives(br, bz, c_rho, c_z, free, radius, side, z0, k_poly, film, ring,
+                               control, lam_i, spd, q, nr, nz, dmat, emat)
+        a, bb, c, d = _jacobian(s, dmat)
+        det = a * d - bb * c
+        if det == 0.0:
+            break
+        step_r = -(d * gr - bb * gz) / det
+        step_z = -(-c * gr + a * gz) / det
+        lam = 1.0
+        nr_t = br
+        nz_t = bz
+        for _ in range(30):
+            nr_t = br + lam * step_r
+            nz_t = bz + lam * step_z
+            tgr, tgz = _ball(nr_t, nz_t, c_rho, c_z, free, radius, side, z0, k_poly, film,
+                             ring, control, lam_i, spd, tq, tr, tz, td, ts, tsp)
+            allowed = (NONMONOTONE_FACTOR if lam == 1.0 else 1 - 1e-4 * lam) * norm
+            if math.sqrt(tgr * tgr + tgz * tgz) <= allowed or lam <= 1e-6:
+                break
+            lam *= 0.5
+        br = _seat(nr_t, nz_t, c_rho, c_z, free, ring, tq, fc_seat, k_seat)
+        bz = nz_t
+        gr, gz = _ball(br, bz, c_rho, c_z, free, radius, side, z0, k_poly, film, ring,
+                       control, lam_i, spd, q, nr, nz, dl, s, sp)
+        moved = lam * math.sqrt(step_r * step_r + step_z * step_z)
+        if moved < 1e-16 and math.sqrt(gr * gr + gz * gz) <= 1e3 * tol:
+            done = True
+            break
+    b[0] = br
+    b[1] = bz
+    res = math.sqrt(gr * gr + gz * gz) if np.max(q) > 10.0 * tol else 0.0
+    return res, done
+
+
+@numba.njit(cache=True)
+def _condense(j, t, inner, s, q, nr, nz, dmat, emat, sp, force, stiff):
+    """Add ball j's force on the inner ring and its condensed stiffness (see _kernels.py):
+    K_j = (sum_l Phi'_l) (sum_l P_l)^-1 (sum_in P_l T_l) - sum_in Phi'_l T_l."""
+    ncon = q.shape[0]
+    qi = 0.0
+    for k in range(ncon):
+        if inner[k]:
+            qi += q[k]
+    tbar = np.zeros((2, 5))
+    if qi > 0:
+        for k in range(ncon):
+            if inner[k]:
+                tbar += (q[k] / qi) * t[j, k]
+    sp_sum = np.zeros((2, 2))
+    a5 = np.zeros((5, 2))
+    bm = np.zeros((2, 5))
+    cm = np.zeros((5, 5))
+    for l in range(ncon):
+        p = dmat[l] - s[l]
+        sp_sum += p
+        phi = tbar.T @ emat[l]
+        if inner[l]:
+            phi -= t[j, l].T @ s[l]
+            bm += p @ t[j, l]
+            cm += phi @ t[j, l]
+        a5 += phi
+    det = sp_sum[0, 0] * sp_sum[1, 1] - sp_sum[0, 1] * sp_sum[1, 0]
+    if det != 0.0:
+        inv = np.empty((2, 2))
+        inv[0, 0] = sp_sum[1, 1] / det
+        inv[1, 1] = sp_sum[0, 0] / det
+        inv[0, 1] = -sp_sum[0, 1] / det
+        inv[1, 0] = -sp_sum[1, 0] / det
+        stiff += a5 @ inv @ bm
+    stiff -= cm
+    for k in range(ncon):
+        if inner[k] and q[k] > 0:
+            for d in range(5):
+                force[d] += t[j, k, 0, d] * q[k] * nr[k] + t[j, k, 1, d] * q[k] * nz[k]
+    for d in range(5):
+        force[d] -= tbar[0, d] * sp[2] + tbar[1, d] * sp[3]
+
+
+@numba.njit(cache=True)
+def solve_balls(b, c_rho, c_z, t, inner, free, radius, side, z0, k_poly, film, ring,
+                control, lam_i, spd, k_seat, tol, max_iterations=100):
+    """Every ball's equilibrium for given groove centres, the force of the balls on the
+    inner ring (5,) and the condensed stiffness (5, 5). Returns (b, q, n_rho, n_z, delta,
+    speed (Z, 7), force, stiffness, worst residual [N], converged)."""
+    nb, ncon = c_rho.shape
+    b = b.copy()
+    q = np.zeros((nb, ncon))
+    nr = np.zeros((nb, ncon))
+    nz = np.zeros((nb, ncon))
+    dl = np.zeros((nb, ncon))
+    sp = np.zeros((nb, 7))
+    s = np.zeros((ncon, 2, 2))
+    dmat = np.zeros((ncon, 2, 2))
+    emat = np.zeros((ncon, 2, 2))
+    force = np.zeros(5)
+    stiff = np.zeros((5, 5))
+    worst = 0.0
+    converged = True
+    for j in range(nb):
+        res, done = solve_ball(b[j], c_rho[j], c_z[j], free[j], radius, side, z0, k_poly,
+                               film[j], ring, control[j], lam_i[j], spd, k_seat, tol,
+                               max_iterations, q[j], nr[j], nz[j], dl[j], s, sp[j])
+        worst = max(worst, res)
+        converged = converged and done
+        dmat[:] = 0.0
+        emat[:] = 0.0
+        if spd[0] > 0:
+            _speed_derivatives(b[j, 0], b[j, 1], c_rho[j], c_z[j], free[j], radius, side, z0,
+                               k_poly, film[j], ring, control[j], lam_i[j], spd, q[j], nr[j],
+                               nz[j], dmat, emat)
+        _condense(j, t, inner, s, q[j], nr[j], nz[j], dmat, emat, sp[j], force, stiff)
+    return b, q, nr, nz, dl, sp, force, stiff, worst, converged
