@@ -61,6 +61,7 @@ def all_cases() -> list[Case]:
         datasets,
         dynamics,
         friction,
+        harris218,
         ratings,
         seed000,
         seed001,
@@ -70,4 +71,5 @@ def all_cases() -> list[Case]:
     )
 
     return [*seed000.CASES, *seed001.CASES, *seed003.CASES, *seed004.CASES, *dynamics.CASES,
-            *seed003_noise.CASES, *datasets.CASES, *friction.CASES, *ratings.CASES]
+            *seed003_noise.CASES, *datasets.CASES, *friction.CASES, *ratings.CASES,
+            *harris218.CASES]
