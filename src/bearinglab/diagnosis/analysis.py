@@ -1,0 +1,357 @@
+"""analyze_signal: diagnosis of one vibration record (layer 3).
+
+Steps: read the samples; check the speed the signal shows against the speed given (or
+take it from the signal, ``shaft_speed="auto"``); check that the record is long enough and
+sampled fast enough for the bearing; compute the squared envelope spectrum by each method
+asked for (:mod:`.methods`); test each fault family's harmonic series with its sidebands
+against the local noise floor (:mod:`.statistics`) and decide (:mod:`.verdict`).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..errors import InputError
+from ..geometry import BallBearing
+from ..kinematics import DefectFrequencies, defect_frequencies
+from ..signal import EnvelopeSpectrum, Signal
+from .families import FAMILIES, FREQUENCY, families, tolerances
+from .methods import DESCRIPTIONS, METHODS, method_spectrum, parse_methods
+from .result import Diagnosis
+from .speed import SEARCH, shaft_frequency
+from .verdict import LINE_ALPHA, NO_FAULT, decide, discrete_mask, label_peaks, significance, with_z
+
+#: Channels preferred when none is named: the vertical (load-direction) acceleration of
+#: a simulated record, the drive-end accelerometer of a CWRU record, MFPT's ``gs``.
+PREFERRED_CHANNELS = ("acc_y", "DE", "gs", "bearing.gs")
+#: Upper end of the line search, in multiples of the largest defect frequency.
+MAX_FREQUENCY_FACTOR = 5.5
+#: Envelope lines listed in ``peaks`` [-].
+COUNT = 24
+#: Highest harmonic order tested per family [-].
+HARMONICS = 8
+#: Default probability of a false alarm on a record with no fault [-].
+FALSE_ALARM = 0.01
+#: Default methods (chosen by measurement on real records: docs/capabilities/diagnosis.md).
+DEFAULT_METHODS = ("raw", "cpw", "drs-sk")
+#: Fewest cage revolutions a record must hold: below that the cage line is not a line.
+MIN_CAGE_REVOLUTIONS = 3.0
+#: Cage revolutions below which the resolution is called coarse for the cage line
+#: (the FTF line fewer than 10 bins from 0 Hz, its sidebands fewer than 10 bins apart).
+COARSE_CAGE_REVOLUTIONS = 10.0
+#: Resolution of the envelope spectra, as a fraction of FTF (ten bins between the cage
+#: sidebands of a ball line), unless the record is shorter.
+RESOLUTION_FTF = 0.1
+#: Speed disagreement that is warned about [-, fraction]: the race lines' tolerance.
+SPEED_WARNING = 0.02
+
+
+def _samples(signal_or_array, sample_rate, channel):
+    """(samples, sample rate [Hz], channel name or None) from a Signal or an array."""
+    if isinstance(signal_or_array, Signal):
+        signal = signal_or_array
+        if sample_rate is not None:
+            try:
+                fs = float(sample_rate)
+            except (TypeError, ValueError):
+                fs = math.nan
+            if not math.isclose(fs, signal.sample_rate, rel_tol=1e-9):
+                raise InputError("sample_rate", sample_rate,
+                                 f"None or the record's own rate {signal.sample_rate:g} Hz")
+        if channel is None:
+            channel = next((c for c in PREFERRED_CHANNELS if c in signal.channels),
+                           signal.names[0])
+        return signal.channel(channel), signal.sample_rate, channel
+    if channel is not None:
+        raise InputError("channel", channel, "None for a bare array (name channels of a "
+                         "Signal)")
+    if sample_rate is None:
+        raise InputError("sample_rate", None, "the sample rate in Hz of the array")
+    from ..signal.spectra import rate, samples
+
+    return samples(signal_or_array, "signal_or_array"), rate(sample_rate), None
+
+
+def _positive(name: str, value, allowed: str, optional: bool = True) -> float | None:
+    if value is None and optional:
+        return None
+    try:
+        v = float(value)
+    except (TypeError, ValueError):
+        v = math.nan
+    if isinstance(value, bool) or not (math.isfinite(v) and v > 0):
+        raise InputError(name, value, allowed)
+    return v
+
+
+def _speed(frequencies, shaft_speed, speed_range, x, fs, warnings):
+    """(DefectFrequencies at the speed used, the speed record)."""
+    if isinstance(frequencies, DefectFrequencies):
+        bearing, nominal = frequencies.bearing, frequencies.shaft_speed
+        outer, alpha = frequencies.outer_rotating, frequencies.contact_angle
+    elif isinstance(frequencies, BallBearing):
+        bearing, nominal, outer, alpha = frequencies, None, False, None
+    else:
+        raise InputError("frequencies", type(frequencies).__name__,
+                         "bearinglab.kinematics.DefectFrequencies (defect_frequencies()) or "
+                         "a BallBearing with shaft_speed")
+    auto = isinstance(shaft_speed, str)
+    if auto and shaft_speed.strip().lower() != "auto":
+        raise InputError("shaft_speed", shaft_speed, 'a speed > 0 rad/s or "auto"')
+    if shaft_speed is not None and not auto:
+        nominal = _positive("shaft_speed", shaft_speed, 'a speed > 0 rad/s or "auto"')
+    if nominal is not None and not nominal > 0:
+        raise InputError("shaft_speed", nominal, 'a speed > 0 rad/s or "auto"')
+    if nominal is None and not auto:
+        raise InputError("shaft_speed", None, 'a speed > 0 rad/s or "auto" with a BallBearing')
+    if speed_range is not None:
+        try:
+            low, high = (float(v) / (2 * math.pi) for v in speed_range)
+        except (TypeError, ValueError):
+            low = high = math.nan
+        if not (0 < low < high):
+            raise InputError("speed_range", speed_range, "(low, high) in rad/s, 0 < low < high")
+    elif nominal is not None:
+        low, high = (nominal / (2 * math.pi) * (1 + s) for s in (-SEARCH, SEARCH))
+    else:
+        raise InputError("speed_range", None, 'a (low, high) range in rad/s for shaft_speed="auto"'
+                         " without a nominal speed")
+    if high >= fs / 2:
+        raise InputError("speed_range", speed_range, f"speeds below Nyquist ({fs / 2:g} Hz)")
+    found = shaft_frequency(x, fs, low, high)
+    record = {"given_rpm": None if nominal is None else nominal * 30 / math.pi,
+              **found.to_dict()}
+    if auto:
+        if found.frequency is None:
+            raise InputError("shaft_speed", "auto",
+                             f"a record whose shaft line stands out between {60 * low:.6g} and "
+                             f"{60 * high:.6g} rpm, or a speed", hint="no shaft line found")
+        used, record["source"] = 2 * math.pi * found.frequency, "signal"
+    else:
+        used, record["source"] = nominal, "given"
+        if found.frequency is None:
+            warnings.append(f"no shaft line found within {100 * SEARCH:g} % of the given "
+                            f"{nominal * 30 / math.pi:.6g} rpm: the speed is not checked")
+        elif abs(found.frequency / (nominal / (2 * math.pi)) - 1) > SPEED_WARNING:
+            warnings.append(f"the signal shows the shaft at {60 * found.frequency:.6g} rpm, "
+                            f"{100 * (found.frequency / (nominal / (2 * math.pi)) - 1):+.1f} % "
+                            f"from the given {nominal * 30 / math.pi:.6g} rpm (tolerance "
+                            f"{100 * SPEED_WARNING:g} %): check the speed and the sample rate")
+    record["used_rpm"] = used * 30 / math.pi
+    kin = defect_frequencies(bearing, used, outer_rotating=outer, contact_angle=alpha)
+    measured = found.frequency if found.frequency is not None else kin.shaft_hz
+    return kin, record, measured
+
+
+def _checks(kin, n, fs, max_frequency, harmonics, warnings):
+    """Record length and sample rate against the bearing's frequencies."""
+    nyquist = fs / 2
+    ftf, bpfo = kin.hz("ftf"), kin.hz("bpfo")
+    duration = n / fs
+    if duration * ftf < MIN_CAGE_REVOLUTIONS:
+        raise InputError("signal_or_array", f"{n} samples ({duration:.4g} s)",
+                         f"at least {MIN_CAGE_REVOLUTIONS / ftf:.4g} s "
+                         f"({MIN_CAGE_REVOLUTIONS:g} cage revolutions at FTF = {ftf:.4g} Hz)")
+    if bpfo >= nyquist:
+        raise InputError("sample_rate", fs, f"a sample rate above 2 x BPFO = {2 * bpfo:.6g} Hz "
+                         f"(BPFO {bpfo:.6g} Hz is above the Nyquist frequency {nyquist:g} Hz)")
+    if duration * ftf < COARSE_CAGE_REVOLUTIONS:
+        warnings.append(f"the record holds {duration * ftf:.3g} cage revolutions: the "
+                        f"resolution {1 / duration:.3g} Hz is coarse for the cage line "
+                        f"(FTF {ftf:.4g} Hz) and the cage sidebands of ball lines")
+    for name in ("bpfo", "bpfi", "ball_defect"):
+        f = kin.hz(name)
+        wanted = min(harmonics, 3) * f + (2 * kin.shaft_hz if name == "bpfi" else 0.0)
+        if wanted > nyquist:
+            warnings.append(f"{name.upper()} ({f:.5g} Hz): fewer than 3 harmonics with their "
+                            f"sidebands lie below the Nyquist frequency {nyquist:g} Hz")
+        elif wanted > max_frequency:
+            warnings.append(f"{name.upper()} ({f:.5g} Hz): fewer than 3 harmonics lie below the "
+                            f"search limit {max_frequency:.5g} Hz")
+
+
+def analyze_signal(signal_or_array, sample_rate, frequencies, *, channel: str | None = None,
+                   methods=DEFAULT_METHODS, band=None, tolerances=None,
+                   false_alarm: float = FALSE_ALARM, shaft_speed=None, speed_range=None,
+                   supply_frequency: float | None = None, mesh_frequency: float | None = None,
+                   max_frequency: float | None = None, resolution: float | None = None,
+                   count: int = COUNT, harmonics: int = HARMONICS) -> Diagnosis:
+    """Diagnose a vibration record: which fault families stand out of the noise.
+
+    See the package docstring (:mod:`bearinglab.diagnosis`) for the method and its
+    sources.
+
+    Parameters
+    ----------
+    signal_or_array : Signal or array_like
+        The record; an array is one channel of samples (any unit, e.g. m/s^2 or g).
+    sample_rate : float or None
+        Sample rate [Hz]; required for an array; None (or the same rate) for a Signal.
+    frequencies : DefectFrequencies or BallBearing
+        Kinematic frequencies at the nominal speed (:func:`~bearinglab.kinematics.
+        defect_frequencies`), or the bearing when ``shaft_speed`` is given.
+    channel : str, optional
+        Channel of a Signal; default ``acc_y``, ``DE`` or ``gs`` if present, else the first.
+    methods : str or sequence of str
+        ``raw``, ``cpw``, ``drs-sk`` (Smith & Randall's Methods 1-3), several, or "all".
+    band : (float, float) or "auto", optional
+        Demodulation band [Hz] for every method instead of its own (None: whole band for
+        ``raw`` and ``cpw``, the fast kurtogram's for ``drs-sk``); "auto": the fast
+        kurtogram's band for every method.
+    tolerances : dict, optional
+        Per-family tolerance overrides (fraction or (below, above)); defaults in
+        :data:`bearinglab.diagnosis.families.TOLERANCES`.
+    false_alarm : float
+        Largest probability of calling a fault on a record without one, in (0, 0.5).
+    shaft_speed : float or "auto", optional
+        Shaft speed [rad/s] replacing the one of ``frequencies``, or "auto": the speed the
+        signal shows (searched in ``speed_range``, or +-5 % of the nominal speed).
+    speed_range : (float, float), optional
+        Speed search range [rad/s].
+    supply_frequency, mesh_frequency : float, optional
+        Electrical supply and gear-mesh frequencies [Hz]: their harmonics are masked.
+    max_frequency : float, optional
+        Upper end of the line search [Hz]; default 5.5 x the largest defect frequency, at
+        most Nyquist.
+    resolution : float, optional
+        Resolution of the envelope spectra [Hz]; default max(FTF / 10, 1 / T).
+    count : int
+        Envelope lines listed in ``peaks``.
+    harmonics : int
+        Highest harmonic order tested per family.
+
+    Returns
+    -------
+    Diagnosis
+
+    Examples
+    --------
+    Impacts ringing at 4 kHz at the BPFO of an ER-16K turning at 1750 rpm, in noise:
+
+    >>> from bearinglab.catalog import bearing_from_designation
+    >>> from bearinglab.kinematics import defect_frequencies
+    >>> bearing, _ = bearing_from_designation("ER-16K")
+    >>> kin = defect_frequencies(bearing, 1750 * math.pi / 30)
+    >>> fs = 20000.0
+    >>> t = np.arange(int(fs)) / fs                      # 1 s
+    >>> since = t % (1.0 / kin.hz("bpfo"))               # time since the last impact [s]
+    >>> x = np.exp(-since / 2e-3) * np.sin(2 * np.pi * 4e3 * t)
+    >>> x = x + 0.2 * np.random.default_rng(0).standard_normal(t.size)
+    >>> d = analyze_signal(x, fs, kin)
+    >>> d.verdict, d.families["outer race"]["passed"], d.families["inner race"]["passed"]
+    ('outer race', True, False)
+    >>> analyze_signal(np.random.default_rng(1).standard_normal(t.size), fs, kin).verdict
+    'no fault detected'
+    """
+    x, fs, channel = _samples(signal_or_array, sample_rate, channel)
+    names = parse_methods(methods)
+    windows = tolerances_ = _tolerances(tolerances)
+    pfa = _positive("false_alarm", false_alarm, "a probability in (0, 0.5)", optional=False)
+    if not pfa < 0.5:
+        raise InputError("false_alarm", false_alarm, "a probability in (0, 0.5)")
+    if isinstance(harmonics, bool) or not isinstance(harmonics, (int, np.integer)) \
+            or not 1 <= harmonics <= 50:
+        raise InputError("harmonics", harmonics, "an integer from 1 to 50")
+    if isinstance(count, bool) or not isinstance(count, (int, np.integer)) or count < 1:
+        raise InputError("count", count, "an integer >= 1")
+    supply = _positive("supply_frequency", supply_frequency, "a frequency > 0 Hz")
+    mesh = _positive("mesh_frequency", mesh_frequency, "a frequency > 0 Hz")
+    warnings: list[str] = []
+    kin, speed, shaft_hz = _speed(frequencies, shaft_speed, speed_range, x, fs, warnings)
+    nyquist = fs / 2
+    freqs = {name: kin.hz(name) for name in ("shaft", "ftf", "bpfo", "bpfi", "ball_defect")}
+    largest = max(freqs.values())
+    if max_frequency is None:
+        max_frequency = min(MAX_FREQUENCY_FACTOR * largest, nyquist)
+    else:
+        max_frequency = _positive("max_frequency", max_frequency,
+                                  f"a frequency in (0, {nyquist:g}] Hz (Nyquist)", False)
+        if max_frequency > nyquist:
+            raise InputError("max_frequency", max_frequency,
+                             f"a frequency in (0, {nyquist:g}] Hz (Nyquist)")
+    _checks(kin, x.size, fs, max_frequency, harmonics, warnings)
+    if isinstance(band, str):
+        if band.strip().lower() != "auto":
+            raise InputError("band", band, '(low, high) in Hz, "auto" or None')
+        band = "auto"
+    elif band is not None:
+        from ..signal.spectra import band_limits
+
+        band = band_limits(band, fs)
+    floor_res = fs / x.size
+    if resolution is None:
+        resolution = max(RESOLUTION_FTF * freqs["ftf"], floor_res)
+    else:
+        resolution = _positive("resolution", resolution, f"a resolution >= {floor_res:.4g} "
+                               "Hz (1 / record length)", False)
+        if resolution < floor_res * (1 - 1e-9):
+            raise InputError("resolution", resolution,
+                             f"a resolution >= {floor_res:.4g} Hz (1 / record length)")
+    spectra = [with_z(method_spectrum(m, x, fs, resolution, band, largest)) for m in names]
+    fams = families(freqs, windows)
+    valid, masked = discrete_mask(spectra, {"shaft": shaft_hz, "supply": supply,
+                                            "mesh": mesh}, max_frequency)
+    decision = decide(spectra, fams, valid, max_frequency, harmonics, pfa)
+    faults = tuple(decision["faults"])
+    verdict = NO_FAULT if not faults else (faults[0] if len(faults) == 1
+                                           else "compound: " + " + ".join(faults))
+    table = {}
+    for fam in fams:
+        method, test = decision["tests"][fam.name]
+        table[fam.name] = {
+            "p_value": test.p_value, "significance": test.significance,
+            "support_significance": -test.support_log_p / math.log(10.0),
+            "passed": fam.name in faults,
+            "method": method, "fundamental_hz": test.fundamental_hz, "slip": test.slip,
+            "kinematic_hz": fam.frequency, "tolerance_below": fam.below,
+            "tolerance_above": fam.above,
+            "lines": [{"kind": ln.kind, "n": ln.n, "k": ln.k, "expected_hz": ln.expected_hz,
+                       "frequency_hz": ln.frequency_hz, "z": ln.z,
+                       "significance": -ln.log_p / math.log(10.0)}
+                      for ln in test.lines if ln.log_p < math.log(LINE_ALPHA)],
+        }
+    shown_method = table[faults[0]]["method"] if faults else names[0]
+    shown = next(s for s in spectra if s.method == shown_method)
+    peaks = label_peaks(shown, decision, fams, masked, count, max_frequency)
+    reason = _reason(faults, table, decision, pfa)
+    return Diagnosis(
+        verdict=verdict, faults=faults, families=table, false_alarm=pfa,
+        alpha=decision["alpha"],
+        spectrum=EnvelopeSpectrum(shown.frequency, shown.amplitude, shown.band),
+        spectra={s.method: s for s in spectra}, peaks=tuple(peaks), frequencies=kin,
+        speed=speed, sample_rate=fs, channel=channel, max_frequency=float(max_frequency),
+        methods=names, tolerances=windows, harmonics=int(harmonics),
+        warnings=tuple(warnings), reason=reason, modulation=tuple(decision["modulation"]))
+
+
+def _tolerances(overrides):
+    return tolerances(overrides)
+
+
+def _reason(faults, table, decision, pfa) -> str:
+    """One line: what the verdict rests on."""
+    threshold = significance(decision["alpha"])
+    if not faults:
+        best = max(FAMILIES, key=lambda f: table[f]["significance"])
+        return (f"no family's harmonic series stands out of the noise floor at a false-alarm "
+                f"probability of {pfa:g} (threshold {threshold:.3g}; best: {best} "
+                f"{table[best]['significance']:.3g} by {table[best]['method']})")
+    parts = []
+    for f in faults:
+        t = table[f]
+        found = t["lines"]
+        harm = sorted({ln["n"] for ln in found if ln["kind"] == "harmonic"})
+        side = sum(ln["kind"] == "sideband" for ln in found)
+        parts.append(f"{f}: harmonics {harm} of {FREQUENCY[f]} {t['fundamental_hz']:.5g} Hz "
+                     f"({100 * t['slip']:+.2f} %), {side} sidebands, significance "
+                     f"{t['significance']:.3g} > {threshold:.3g} ({t['method']}, "
+                     f"{DESCRIPTIONS[t['method']].split(' (')[0]})")
+    if decision["modulation"]:
+        parts.append("FTF lines counted as the cage-rate modulation of the fault")
+    return "; ".join(parts)
+
+
+__all__ = ["COUNT", "DEFAULT_METHODS", "FALSE_ALARM", "HARMONICS", "MAX_FREQUENCY_FACTOR",
+           "METHODS", "analyze_signal"]

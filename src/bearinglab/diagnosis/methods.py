@@ -1,0 +1,170 @@
+"""The three routes to a squared envelope spectrum of Smith & Randall's benchmark study.
+
+Smith W. A., Randall R. B., "Rolling element bearing diagnostics using the Case Western
+Reserve University data: a benchmark study", MSSP 64-65 (2015) 100-131, sec. 3:
+
+- ``raw`` (their Method 1): the squared envelope of the raw signal, whole band;
+- ``cpw`` (Method 2): cepstral pre-whitening, then the squared envelope, whole band
+  (:func:`bearinglab.signal.preprocess.cepstral_prewhitening`);
+- ``drs-sk`` (Method 3): discrete/random separation, then the band of largest spectral
+  kurtosis of the random part (fast kurtogram), band-pass, squared envelope
+  (:func:`~bearinglab.signal.preprocess.discrete_random_separation`,
+  :func:`~bearinglab.signal.kurtogram.fast_kurtogram`).
+
+A band given by the user replaces each method's own (whole band, or the kurtogram's);
+``band="auto"`` uses the fast kurtogram's band in every method.
+Every route ends in the same estimate: the Welch-averaged power spectrum of the squared
+envelope (Hann segments, 50 % overlap) at the resolution the analysis asks for, with its
+equivalent degrees of freedom (:func:`bearinglab.diagnosis.statistics.welch_dof`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..errors import InputError
+
+#: Method names, in Smith & Randall's order.
+METHODS = ("raw", "cpw", "drs-sk")
+#: What each method does, in words.
+DESCRIPTIONS = {
+    "raw": "squared envelope of the raw signal (Smith & Randall Method 1)",
+    "cpw": "cepstral pre-whitening, then squared envelope (Method 2)",
+    "drs-sk": "discrete/random separation, fast-kurtogram band, squared envelope (Method 3)",
+}
+#: Narrowest kurtogram band, in multiples of the largest defect frequency: the band must
+#: pass a fault's first harmonics and their sidebands (Randall & Antoni 2011, sec. 3.3).
+MIN_BAND_FACTOR = 3.0
+
+
+@dataclass(frozen=True)
+class MethodSpectrum:
+    """Squared envelope spectrum of one method: ``frequency`` [Hz], ``power`` (Welch power
+    of each line, in the squared envelope's unit squared), equivalent degrees of freedom
+    ``nu``, demodulation ``band`` (None: whole band) and the ``kurtogram`` that chose it
+    (``drs-sk`` only)."""
+
+    method: str
+    frequency: np.ndarray
+    power: np.ndarray
+    nu: float
+    band: tuple[float, float] | None
+    kurtogram: object | None
+
+    @property
+    def amplitude(self) -> np.ndarray:
+        """Amplitude of each line sqrt(2 P) (a sinusoid of amplitude A in the squared
+        envelope reads A) [unit of the samples squared]."""
+        return np.sqrt(2.0 * self.power)
+
+    @property
+    def resolution(self) -> float:
+        """Bin spacing [Hz]."""
+        return float(self.frequency[1] - self.frequency[0])
+
+
+def parse_methods(methods) -> tuple[str, ...]:
+    """``methods`` as a tuple of names: a name, "all", a comma-separated string or a
+    sequence of names.
+
+    >>> parse_methods("raw,cpw"), parse_methods("all")
+    (('raw', 'cpw'), ('raw', 'cpw', 'drs-sk'))
+    """
+    if isinstance(methods, str):
+        methods = METHODS if methods.strip().lower() == "all" else methods.split(",")
+    try:
+        names = tuple(dict.fromkeys(str(m).strip().lower() for m in methods))
+    except TypeError:
+        names = ()
+    if not names or any(m not in METHODS for m in names):
+        raise InputError("methods", methods, f"one or more of {list(METHODS)} (or 'all')")
+    return names
+
+
+def segment_length(n: int, sample_rate: float, resolution: float) -> int:
+    """Welch segment [samples]: the longest fast FFT length (2, 3, 5-smooth) at most
+    f_s / ``resolution`` and at most ``n``."""
+    import scipy.fft
+
+    target = int(min(n, max(16, round(sample_rate / resolution))))
+    prev = getattr(scipy.fft, "prev_fast_len", None)
+    if prev is not None:
+        return int(prev(target, real=True))
+    m = target
+    while scipy.fft.next_fast_len(m, real=True) != m:
+        m -= 1
+    return m
+
+
+def squared_envelope_power(x: np.ndarray, sample_rate: float, resolution: float,
+                           band=None):
+    """(frequency [Hz], Welch power of the squared envelope, nu) at ``resolution`` [Hz]."""
+    import scipy.signal
+
+    from ..signal.spectra import envelope
+    from .statistics import welch_dof
+
+    env = envelope(x, sample_rate, band=band, squared=True)
+    nperseg = segment_length(env.size, sample_rate, resolution)
+    noverlap = nperseg // 2
+    frequency, power = scipy.signal.welch(env, fs=sample_rate, window="hann", nperseg=nperseg,
+                                          noverlap=noverlap, detrend="constant",
+                                          scaling="spectrum")
+    return frequency, power, welch_dof(nperseg, noverlap, env.size)
+
+
+def _inside(band, sample_rate: float):
+    """A kurtogram band made usable by a band-pass: None for the whole band, the upper
+    edge kept below Nyquist."""
+    low, high = band
+    nyquist = sample_rate / 2.0
+    if low <= 0.0 and high >= nyquist:
+        return None
+    return max(low, 1e-3 * nyquist), min(high, 0.98 * nyquist)
+
+
+def method_spectrum(method: str, x: np.ndarray, sample_rate: float, resolution: float,
+                    band=None, largest_defect: float = 0.0) -> MethodSpectrum:
+    """The squared envelope spectrum of ``x`` by ``method`` (see the module docstring).
+
+    Parameters
+    ----------
+    method : str
+        One of :data:`METHODS`.
+    x : numpy.ndarray
+        Samples (1-D), any unit.
+    sample_rate : float
+        Sample rate [Hz].
+    resolution : float
+        Bin spacing wanted [Hz] (at least f_s / n).
+    band : (float, float) or "auto", optional
+        Demodulation band [Hz] replacing the method's own; "auto": the fast kurtogram's
+        band of the method's pre-processed signal, for every method.
+    largest_defect : float
+        Largest defect frequency [Hz]: the kurtogram band is at least MIN_BAND_FACTOR
+        times as wide.
+
+    Returns
+    -------
+    MethodSpectrum
+    """
+    from ..signal.kurtogram import fast_kurtogram
+    from ..signal.preprocess import cepstral_prewhitening, discrete_random_separation
+
+    kurtogram = None
+    if method == "raw":
+        y = x
+    elif method == "cpw":
+        y = cepstral_prewhitening(x)
+    elif method == "drs-sk":
+        y, _ = discrete_random_separation(x, sample_rate)
+    else:
+        raise InputError("method", method, f"one of {list(METHODS)}")
+    if band == "auto" or (band is None and method == "drs-sk"):
+        min_bw = min(MIN_BAND_FACTOR * largest_defect, sample_rate / 8.0)
+        kurtogram = fast_kurtogram(y, sample_rate, min_bandwidth=min_bw)
+        band = _inside(kurtogram.band, sample_rate)
+    frequency, power, nu = squared_envelope_power(y, sample_rate, resolution, band)
+    return MethodSpectrum(method, frequency, power, nu, band, kurtogram)

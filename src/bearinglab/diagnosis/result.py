@@ -1,0 +1,258 @@
+"""The result of a diagnosis: :class:`Diagnosis` (to_dict, to_pandas, plot)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from ..kinematics import DefectFrequencies
+from ..signal import EnvelopeSpectrum
+from .families import FREQUENCY
+from .verdict import NO_FAULT, significance
+
+
+@dataclass(frozen=True)
+class Diagnosis:
+    """What envelope analysis finds in a vibration record.
+
+    Attributes
+    ----------
+    verdict : str
+        ``"no fault detected"``, a fault (``"outer race"``, ``"inner race"``, ``"ball"``,
+        ``"cage"``) or ``"compound: a + b"``.
+    faults : tuple of str
+        The faults found, most significant first.
+    families : dict
+        Per family: ``p_value`` (upper bound of the chance that noise alone shows the
+        series), ``significance`` (-log10 p), ``passed``, the ``method`` that showed it
+        best, the fitted ``fundamental_hz`` and ``slip`` and its ``lines``.
+    false_alarm : float
+        Probability of a false alarm on a record with no fault, at most [-].
+    alpha : float
+        Level of each family test: ``false_alarm`` / (families x methods) [-].
+    spectrum : EnvelopeSpectrum
+        Squared envelope spectrum of the method that showed the primary fault (else the
+        first method): ``frequency`` [Hz], ``amplitude`` [unit of the samples squared],
+        ``band`` [Hz] or None.
+    spectra : dict
+        Method -> its MethodSpectrum (with the normalised power ``z``).
+    peaks : tuple of dict
+        The most significant envelope lines, labelled: ``frequency_hz``, ``amplitude``,
+        ``z``, ``significance``, ``matched`` (``bpfo``, ``bpfi``, ``ball_defect``, ``ftf``,
+        ``shaft``, ``supply``, ``mesh`` or None), ``harmonic``, ``deviation`` and for
+        sidebands ``sideband_of``, ``sideband_harmonic``, ``sideband_order``,
+        ``modulation``.
+    frequencies : DefectFrequencies
+        Kinematic frequencies at the speed used.
+    speed : dict
+        ``given_rpm``, ``used_rpm``, ``source`` ("given" or "signal") and the search.
+    sample_rate, channel, max_frequency, resolution, methods, tolerances, warnings
+        As their names say (Hz, fractions).
+    """
+
+    verdict: str
+    faults: tuple
+    families: dict
+    false_alarm: float
+    alpha: float
+    spectrum: EnvelopeSpectrum
+    spectra: dict = field(repr=False)
+    peaks: tuple
+    frequencies: DefectFrequencies
+    speed: dict
+    sample_rate: float
+    channel: str | None
+    max_frequency: float
+    methods: tuple
+    tolerances: dict
+    harmonics: int
+    warnings: tuple
+    reason: str
+    modulation: tuple = ()
+
+    # ---------------------------------------------------------- verdict views
+    @property
+    def likely_fault(self) -> str | None:
+        """The verdict, or None when no fault was detected."""
+        return None if self.verdict == NO_FAULT else self.verdict
+
+    @property
+    def primary_fault(self) -> str | None:
+        """The most significant fault, or None."""
+        return self.faults[0] if self.faults else None
+
+    @property
+    def scores(self) -> dict:
+        """Family -> significance -log10 p [-]."""
+        return {name: f["significance"] for name, f in self.families.items()}
+
+    @property
+    def threshold(self) -> float:
+        """Significance a family must exceed: -log10 ``alpha`` [-]."""
+        return significance(self.alpha)
+
+    @property
+    def band(self):
+        """Demodulation band of the spectrum shown (None: whole band) [Hz]."""
+        return self.spectrum.band
+
+    @property
+    def kurtogram(self):
+        """The fast kurtogram of the ``drs-sk`` method, when it ran (else None)."""
+        spec = self.spectra.get("drs-sk")
+        return None if spec is None else spec.kurtogram
+
+    @property
+    def resolution(self) -> float:
+        """Bin spacing of the envelope spectra [Hz]."""
+        return float(self.spectrum.frequency[1] - self.spectrum.frequency[0])
+
+    @property
+    def ball_defect_frequency_hz(self) -> float | None:
+        """Ball-defect frequency fitted to the ball series when a ball fault was found
+        [Hz], else None."""
+        if "ball" not in self.faults:
+            return None
+        return self.families["ball"]["fundamental_hz"]
+
+    # ---------------------------------------------------------- exports
+    def to_dict(self) -> dict:
+        """JSON-ready dict in engineering units (Hz, rpm; amplitudes in the squared
+        envelope's unit)."""
+        return {
+            "verdict": self.verdict, "likely_fault": self.likely_fault,
+            "primary_fault": self.primary_fault, "faults": list(self.faults),
+            "false_alarm_probability": self.false_alarm, "test_level": self.alpha,
+            "threshold_significance": self.threshold,
+            "families": {k: dict(v) for k, v in self.families.items()},
+            "scores": self.scores, "reason": self.reason,
+            "cage_modulation_of": list(self.modulation),
+            "channel": self.channel, "sample_rate_hz": self.sample_rate,
+            "methods": list(self.methods),
+            "method_shown": next(iter(self.spectra)) if not self.faults
+            else self.families[self.faults[0]]["method"],
+            "band_hz": None if self.band is None else [float(b) for b in self.band],
+            "bands_hz": {m: None if s.band is None else [float(b) for b in s.band]
+                         for m, s in self.spectra.items()},
+            "band_kurtosis": None if self.kurtogram is None else self.kurtogram.kurtosis,
+            "resolution_hz": self.resolution, "max_frequency_hz": self.max_frequency,
+            "harmonics": self.harmonics,
+            "tolerances": {k: {"below": v[0], "above": v[1]} for k, v in self.tolerances.items()},
+            "speed": dict(self.speed), "kinematic": self.frequencies.to_dict(),
+            "peaks": [dict(p) for p in self.peaks],
+            "ball_defect_frequency_hz": self.ball_defect_frequency_hz,
+            "warnings": list(self.warnings),
+        }
+
+    def to_pandas(self):
+        """Table of the labelled envelope lines (one row per peak, most significant first)."""
+        import pandas as pd
+
+        columns = ["frequency_hz", "amplitude", "z", "significance", "matched", "harmonic",
+                   "deviation", "sideband_of", "sideband_harmonic", "sideband_order",
+                   "modulation"]
+        return pd.DataFrame([{c: p.get(c) for c in columns} for p in self.peaks],
+                            columns=columns)
+
+    def families_table(self):
+        """Table of the family tests: family, method, significance, threshold, passed,
+        fundamental_hz, slip, lines."""
+        import pandas as pd
+
+        rows = [{"family": k, "method": v["method"], "significance": v["significance"],
+                 "threshold": self.threshold, "passed": v["passed"],
+                 "fundamental_hz": v["fundamental_hz"], "slip": v["slip"],
+                 "lines": len(v["lines"])} for k, v in self.families.items()]
+        return pd.DataFrame(rows)
+
+    def plot(self, path=None, ax=None):
+        """Squared envelope spectrum with the kinematic lines and the lines found.
+
+        Parameters
+        ----------
+        path : str or Path, optional
+            Also save the figure there (.png, .svg or .pdf; atomically; the figure is
+            closed).
+        ax : matplotlib Axes, optional
+            Where to draw; a new figure otherwise.
+
+        Returns
+        -------
+        (figure, axes)
+        """
+        from ..plotting import _pyplot, save_figure
+
+        plt = _pyplot()
+        if ax is None:
+            fig, ax = plt.subplots(figsize=(11, 4.5))
+        else:
+            fig = ax.figure
+        f, a = self.spectrum.frequency, self.spectrum.amplitude
+        shown = (f > 0) & (f <= self.max_frequency)
+        ax.plot(f[shown], a[shown], color="0.3", lw=0.8, label="squared envelope spectrum")
+        top = float(np.max(a[shown])) if np.any(shown) else 1.0
+        for i, name in enumerate(("shaft", "ftf", "bpfo", "bpfi", "ball_defect")):
+            base = self.frequencies.hz(name)
+            marks = np.arange(1, self.harmonics + 1) * base
+            marks = marks[marks <= self.max_frequency]
+            if marks.size:
+                ax.vlines(marks, 0, 1.05 * top, colors=f"C{i}", linestyles="--", lw=0.7,
+                          alpha=0.6, label=f"{name.upper()} {base:.2f} Hz and harmonics")
+        for p in self.peaks:
+            label = peak_label(p)
+            ours = p.get("matched") in FREQUENCY.values() or p.get("sideband_of")
+            ax.plot(p["frequency_hz"], p["amplitude"], "o", ms=4, color="C3" if ours else "k")
+            ax.annotate(label, (p["frequency_hz"], p["amplitude"]), textcoords="offset points",
+                        xytext=(2, 4), fontsize=7, rotation=60)
+        method = self.to_dict()["method_shown"]
+        band = ("whole band" if self.band is None
+                else f"band {self.band[0]:.0f}-{self.band[1]:.0f} Hz")
+        ax.set_title(f"{self.frequencies.bearing.name or 'bearing'} at "
+                     f"{self.frequencies.shaft_hz * 60:.6g} rpm, channel "
+                     f"{self.channel or '-'}, {method}, {band}: {self.verdict}")
+        ax.set_xlabel("f [Hz]")
+        ax.set_ylabel("squared envelope amplitude")
+        ax.set_xlim(0, self.max_frequency)
+        ax.set_ylim(0, 1.25 * top)
+        ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+        fig.tight_layout()
+        if path is not None:
+            try:
+                save_figure(fig, path)  # closes the figure
+            except Exception:
+                plt.close(fig)
+                raise
+        return fig, ax
+
+
+def peak_label(p: dict) -> str:
+    """Short label of a labelled line: "2x bpfo", "1x bpfi -1 shaft", "10x shaft" or "-".
+
+    >>> peak_label({"matched": "bpfo", "harmonic": 2})
+    '2x bpfo'
+    """
+    if p.get("matched"):
+        return f"{p['harmonic']}x {p['matched']}"
+    if p.get("sideband_of"):
+        return (f"{p['sideband_harmonic']}x {p['sideband_of']} {p['sideband_order']:+d} "
+                f"{p['modulation']}")
+    return "-"
+
+
+def measured_ball_defect_frequency(matched_peaks) -> float | None:
+    """Ball-defect frequency read off labelled envelope lines [Hz].
+
+    The strongest line matched to ``ball_defect`` at harmonic 1; if there is none, half
+    the strongest matched at harmonic 2; else None. Sidebands are not used.
+
+    >>> measured_ball_defect_frequency([
+    ...     {"frequency_hz": 270.0, "amplitude": 1.0, "matched": "ball_defect", "harmonic": 2}])
+    135.0
+    """
+    for n in (1, 2):
+        lines = [p for p in matched_peaks
+                 if p.get("matched") == "ball_defect" and p.get("harmonic") == n]
+        if lines:
+            return float(max(lines, key=lambda p: p["amplitude"])["frequency_hz"]) / n
+    return None

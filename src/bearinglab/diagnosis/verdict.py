@@ -1,0 +1,222 @@
+"""The verdict: which fault families stand out of the noise, and which lines they explain.
+
+1. Discrete lines that are not the bearing's - the shaft frequency and its harmonics, of
+   any order, and the harmonics of the supply and gear-mesh frequencies when given - are
+   masked (one bin either side) in every method's spectrum.
+2. Every family is tested in every method (:func:`series_test`). With F families and M
+   methods the level of each test is P_FA / (F M) (Bonferroni), so that the chance of
+   any false alarm on a record with no fault is at most P_FA.
+3. The most significant family that passes (its p-value below that level, and still
+   significant without its strongest line) is accepted; its lines are masked and the
+   others are tested again: a second fault is reported only with lines of its own
+   (a compound fault), never with lines the first one explains (3 x BPFO of a 6205 lies
+   0.7 % from 2 x BPFI).
+4. FTF lines beside an accepted ball or outer-race series are that fault's cage-rate
+   modulation, not a cage fault.
+
+``no fault detected`` is the verdict when no family passes.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .families import FREQUENCY, Family
+from .statistics import SUPPORT_ALPHA, normalised, series_test
+
+#: Verdict when no family passes.
+NO_FAULT = "no fault detected"
+#: Level at which a line of an accepted family is listed as one of its lines [-].
+LINE_ALPHA = 0.01
+
+
+#: Widest mask either side of a line [bins].
+MAX_MASK_BINS = 12
+
+
+def leakage_halfwidth(z_peak: float) -> int:
+    """Bins either side of a line of normalised power ``z_peak`` within which its Hann
+    leakage can still exceed the mean noise level [bins, 1 .. MAX_MASK_BINS].
+
+    The Hann window's power response d bins from a line falls as
+    1 / (pi d (d^2 - 1))^2 (d >= 2; Harris F. J., Proc. IEEE 66 (1978) 51-83, the Hann
+    kernel); the mask reaches the first d where z_peak times that is below 1.
+
+    >>> leakage_halfwidth(5.0), leakage_halfwidth(1e6)
+    (2, 7)
+    """
+    if not z_peak > 1.0:
+        return 1
+    for d in range(2, MAX_MASK_BINS + 1):
+        if z_peak / (math.pi * d * (d * d - 1)) ** 2 < 1.0:
+            return d
+    return MAX_MASK_BINS
+
+
+def mask_line(valid: np.ndarray, z: np.ndarray, i: int) -> None:
+    """Mask bin ``i`` and the bins its leakage reaches (in place)."""
+    lo, hi = max(i - 1, 0), min(i + 2, z.size)
+    if lo >= hi:
+        return
+    d = leakage_halfwidth(float(np.max(z[lo:hi])))
+    valid[max(i - d, 0):min(i + d + 1, valid.size)] = False
+
+
+def discrete_mask(spectra, lines: dict[str, float | None],
+                  max_frequency: float) -> tuple[dict, dict]:
+    """Per method, the bins that may be read (True) once the harmonics of each frequency
+    in ``lines`` (name -> Hz: shaft, supply, mesh) are masked with their leakage; and the
+    harmonics masked, name -> list of (order, Hz)."""
+    valid = {s.method: np.ones(s.frequency.size, bool) for s in spectra}
+    resolution = spectra[0].resolution
+    masked: dict[str, list] = {}
+    for name, f in lines.items():
+        if not f or f <= 0:
+            continue
+        orders = np.arange(1, int(max_frequency / f) + 2)
+        for spec in spectra:
+            for k in orders:
+                i = int(round(k * f / resolution))
+                if i < spec.z.size:
+                    mask_line(valid[spec.method], spec.z, i)
+        masked[name] = [(int(k), float(k * f)) for k in orders if k * f <= max_frequency]
+    return valid, masked
+
+
+def test_all(spectra, fams: list[Family], valid: dict, max_frequency: float,
+             harmonics: int) -> dict:
+    """(method, family) -> SeriesTest for every method spectrum and family."""
+    out = {}
+    for spec in spectra:
+        z = spec.z
+        for fam in fams:
+            out[spec.method, fam.name] = series_test(
+                z, spec.resolution, spec.nu, fam.frequency, fam.below, fam.above, harmonics,
+                max_frequency, fam.modulation, fam.orders, valid[spec.method])
+    return out
+
+
+def decide(spectra, fams: list[Family], base_valid: dict, max_frequency: float,
+           harmonics: int, false_alarm: float) -> dict:
+    """The greedy verdict over all methods (see the module docstring).
+
+    Returns a dict with ``faults`` (accepted, most significant first), ``tests``
+    (family -> its best SeriesTest and method, from the round that accepted it or, for
+    the others, the last round), ``alpha`` (level of each test) and ``modulation``
+    (FTF lines counted as the cage-rate modulation of an accepted fault).
+    """
+    alpha = false_alarm / (len(fams) * len(spectra))
+    log_alpha, log_support = math.log(alpha), math.log(SUPPORT_ALPHA)
+    valid = {m: v.copy() for m, v in base_valid.items()}
+    accepted: list[str] = []
+    best: dict[str, tuple] = {}
+    remaining = [f.name for f in fams]
+    while remaining:
+        tests = test_all(spectra, [f for f in fams if f.name in remaining], valid,
+                         max_frequency, harmonics)
+        for name in remaining:
+            method, test = min(((m, t) for (m, f), t in tests.items() if f == name),
+                               key=lambda mt: (mt[1].log_p, mt[1].support_log_p))
+            best[name] = (method, test)
+        passing = [n for n in remaining if best[n][1].log_p < log_alpha
+                   and best[n][1].support_log_p < log_support]
+        if not passing:
+            break
+        winner = min(passing, key=lambda n: (best[n][1].log_p, best[n][1].support_log_p))
+        accepted.append(winner)
+        remaining.remove(winner)
+        resolution = spectra[0].resolution
+        for line in best[winner][1].lines:
+            i = int(round(line.frequency_hz / resolution))
+            for spec in spectra:
+                mask_line(valid[spec.method], spec.z, i)
+    modulation = []
+    if "cage" in accepted and ({"ball", "outer race"} & set(accepted)):
+        accepted.remove("cage")
+        modulation = ["cage"]
+    return {"faults": accepted, "tests": best, "alpha": alpha, "modulation": modulation}
+
+
+def with_z(spec):
+    """Attach the normalised spectrum ``z`` to a MethodSpectrum (a light wrapper)."""
+    return _Normalised(spec, normalised(spec.power, spec.nu))
+
+
+class _Normalised:
+    """A MethodSpectrum with its normalised power ``z`` [-]."""
+
+    def __init__(self, spec, z):
+        self.spec, self.z = spec, z
+
+    def __getattr__(self, name):
+        return getattr(self.spec, name)
+
+
+def label_peaks(spec, decision: dict, fams: list[Family], masked: dict, count: int,
+                max_frequency: float) -> list[dict]:
+    """The ``count`` most significant local maxima of ``spec`` up to ``max_frequency``,
+    labelled by the accepted families' lines or as a masked discrete line (shaft,
+    supply, mesh harmonic of any order)."""
+    import scipy.signal
+
+    from .statistics import bin_logp
+
+    z, f = spec.z, spec.frequency
+    res = spec.resolution
+    inside = np.flatnonzero((f > 0) & (f <= max_frequency))
+    if inside.size < 3:
+        return []
+    zi = z[inside]
+    index, _ = scipy.signal.find_peaks(zi)
+    logp = bin_logp(zi[index], spec.nu)
+    keep = set(index[logp + math.log(inside.size) < math.log(0.01)].tolist())
+    by_name = {fam.name: fam for fam in fams}
+    known = {}
+    for name in decision["faults"]:
+        test = decision["tests"][name][1]
+        fam = by_name[name]
+        for line in test.lines:
+            i = int(round(line.frequency_hz / res))
+            known[i] = (fam, line)
+            if line.log_p < math.log(LINE_ALPHA) and i <= inside[-1]:
+                keep.add(i - int(inside[0]))  # the fault's own lines are listed too
+    keep = np.array(sorted(keep), dtype=int)
+    keep = keep[np.argsort(zi[keep])[::-1][:count]]
+    amplitude = spec.amplitude
+    out = []
+    for j in keep:
+        i = int(inside[j])
+        peak = {"frequency_hz": float(f[i]), "amplitude": float(amplitude[i]),
+                "z": float(z[i]),
+                "significance": float(-bin_logp(z[i], spec.nu) / math.log(10.0)),
+                "matched": None, "harmonic": None, "deviation": None}
+        hit = next((known[k] for k in (i, i - 1, i + 1) if k in known), None)
+        if hit is not None:
+            fam, line = hit
+            name = FREQUENCY[fam.name]
+            if line.kind == "harmonic":
+                peak.update(matched=name, harmonic=line.n,
+                            deviation=float(f[i] / (line.n * fam.frequency) - 1.0))
+            else:
+                peak.update(sideband_of=name, sideband_harmonic=line.n,
+                            sideband_order=int(round(line.k)),
+                            modulation="shaft" if fam.name in ("outer race", "inner race")
+                            else "ftf")
+        else:
+            for name, orders in masked.items():
+                near = [k for k, fk in orders if abs(f[i] - fk) <= 1.5 * res]
+                if near:
+                    k = near[0]
+                    base = orders[0][1]
+                    peak.update(matched=name, harmonic=k,
+                                deviation=float(f[i] / (k * base) - 1.0))
+                    break
+        out.append(peak)
+    return out
+
+
+def significance(p: float) -> float:
+    """-log10 p [-]."""
+    return -math.log10(max(p, 1e-300))

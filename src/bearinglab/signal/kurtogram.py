@@ -1,0 +1,153 @@
+"""The fast kurtogram: the band of largest spectral kurtosis on Antoni's 1/3-binary tree.
+
+Layer 1. Antoni J., "Fast computation of the kurtogram for the detection of transient
+faults", MSSP 21(1) (2007) 108-124: the kurtosis of the complex envelope of the signal in
+the bands of a 1/3-binary tree - level k (k = 0, 1, 2, ...) splits [0, f_s/2] into 2^k
+bands of width f_s/2^(k+1), the levels k + log2(3) - 1 (shown as 1.6, 2.6, ...) into
+3 x 2^(k-1) bands of width f_s/(3 x 2^k) - and the band of largest kurtosis is where the
+impacts of a fault excite the structure most clearly above the background (sec. 3).
+
+Here the complex envelope of each band is computed in the frequency domain (the signal's
+FFT restricted to the band, tapered at its edges by a Tukey window, inverse-transformed
+at the band's own, decimated, length) instead of by Antoni's cascade of quasi-analytic
+FIR filters: the same grid of bands and the same kurtosis K = <|c|^4> / <|c|^2>^2 - 2
+(0 for complex Gaussian noise), at a cost of one FFT per level.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+import scipy.fft
+import scipy.signal
+
+from ..errors import InputError
+from .spectra import rate, samples
+
+#: Fewest envelope samples a band's kurtosis is estimated from: the kurtosis of Gaussian
+#: noise estimated from m samples scatters by about sqrt(24/m)... 0.2 at m = 600 (complex
+#: envelope: about 2/sqrt(m)); bands with fewer samples are not considered.
+MIN_BAND_SAMPLES = 128
+#: Relative width of the cosine taper at each edge of a band (Tukey window parameter).
+TAPER = 0.25
+
+
+class Kurtogram(NamedTuple):
+    """The fast kurtogram and its best band.
+
+    ``band`` (low, high), ``centre`` and ``bandwidth`` [Hz] and ``kurtosis`` [-] of the
+    band of largest kurtosis, its ``level``; ``levels`` [-], and per level the band
+    ``centres`` [Hz] and ``values`` (kurtosis) as tuples of arrays.
+    """
+
+    band: tuple[float, float]
+    centre: float
+    bandwidth: float
+    kurtosis: float
+    level: float
+    levels: tuple
+    centres: tuple
+    values: tuple
+
+
+def kurtogram_levels(max_level: int) -> list[tuple[float, int]]:
+    """(level, number of bands) of the 1/3-binary tree up to ``max_level``.
+
+    >>> kurtogram_levels(2)
+    [(0.0, 1), (1.0, 2), (1.6, 3), (2.0, 4)]
+    """
+    out = [(0.0, 1)]
+    for k in range(1, max_level + 1):
+        out.append((float(k), 2**k))
+        if k < max_level:
+            out.append((round(k + math.log2(3) - 1, 1), 3 * 2 ** (k - 1)))
+    return out
+
+
+def fast_kurtogram(x, sample_rate, max_level: int | None = None,
+                   min_bandwidth: float = 0.0) -> Kurtogram:
+    """Fast kurtogram of ``x`` and its band of largest kurtosis (Antoni 2007).
+
+    Parameters
+    ----------
+    x : array_like
+        Samples (1-D, >= 2 x MIN_BAND_SAMPLES), any unit.
+    sample_rate : float
+        Sample rate [Hz].
+    max_level : int, optional
+        Deepest level; default the deepest whose bands keep MIN_BAND_SAMPLES envelope
+        samples (at most 10).
+    min_bandwidth : float
+        Narrowest band to consider [Hz], e.g. wide enough to pass a fault's modulation
+        sidebands; deeper levels are skipped.
+
+    Returns
+    -------
+    Kurtogram
+
+    Examples
+    --------
+    Impacts ringing at 3 kHz, 50 times a second, in white noise: the best band holds 3 kHz.
+
+    >>> fs = 12000.0
+    >>> t = np.arange(2**15) / fs
+    >>> x = np.exp(-(t % 0.02) / 1e-3) * np.sin(2 * np.pi * 3000.0 * t)
+    >>> x = x + 0.3 * np.random.default_rng(1).standard_normal(t.size)
+    >>> k = fast_kurtogram(x, fs)
+    >>> bool(k.band[0] < 3000.0 < k.band[1]), bool(k.kurtosis > 1.0)
+    (True, True)
+    """
+    x = samples(x)
+    fs = rate(sample_rate)
+    n = x.size
+    if n < 2 * MIN_BAND_SAMPLES:
+        raise InputError("x", f"{n} samples", f"at least {2 * MIN_BAND_SAMPLES} samples for "
+                         "a kurtogram")
+    try:
+        min_bw = float(min_bandwidth)
+    except (TypeError, ValueError):
+        min_bw = math.nan
+    if not 0.0 <= min_bw < fs / 2:
+        raise InputError("min_bandwidth", min_bandwidth, f"a number in [0, {fs / 2:g}) Hz")
+    deepest = int(math.floor(math.log2(n / (2 * MIN_BAND_SAMPLES))))
+    if max_level is None:
+        max_level = min(deepest, 10)
+    elif (isinstance(max_level, bool) or not isinstance(max_level, (int, np.integer))
+          or not 0 <= max_level <= deepest):
+        raise InputError("max_level", max_level, f"an integer in [0, {deepest}]")
+    nfft = scipy.fft.next_fast_len(n, real=True)
+    spectrum = scipy.fft.rfft(x - x.mean(), n=nfft)
+    df = fs / nfft
+    best = None
+    levels, centres, values = [], [], []
+    for level, count in kurtogram_levels(int(max_level)):
+        width = fs / 2 / count
+        if width < min_bw and level > 0:
+            break
+        edges = np.arange(count + 1) * width
+        kurt = np.empty(count)
+        for i in range(count):
+            lo, hi = int(round(edges[i] / df)), int(round(edges[i + 1] / df))
+            band = spectrum[lo:hi]
+            m = band.size
+            if m < 8:
+                kurt[i] = -2.0
+                continue
+            c = scipy.fft.ifft(band * scipy.signal.windows.tukey(m, TAPER))
+            power = np.abs(c) ** 2
+            mean = float(power.mean())
+            kurt[i] = float(np.mean(power**2)) / mean**2 - 2.0 if mean > 0 else -2.0
+        mid = edges[:-1] + width / 2
+        levels.append(level)
+        centres.append(mid)
+        values.append(kurt)
+        # the bands touching 0 Hz hold the mean and the low-frequency shaft lines: skip them
+        usable = np.arange(count) > 0 if count > 1 else np.ones(1, bool)
+        k = int(np.argmax(np.where(usable, kurt, -np.inf)))
+        if best is None or kurt[k] > best[0]:
+            best = (float(kurt[k]), level, float(mid[k]), width)
+    kurtosis, level, centre, width = best
+    return Kurtogram((centre - width / 2, centre + width / 2), centre, width, kurtosis, level,
+                     tuple(levels), tuple(centres), tuple(values))
