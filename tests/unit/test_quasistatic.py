@@ -206,3 +206,49 @@ def test_angular_contact_low_shoulder_is_checked_on_its_side():
     assert not seated.warnings                                   # thrust side: high shoulder
     assert any("shoulder" in w for w in reversed_load.warnings)  # the low side runs over
     assert acbb.shoulder_angle("inner", 1) > acbb.shoulder_angle("inner", -1)
+
+
+def test_overload_is_told_against_the_static_rating():
+    from bearinglab.catalog import bearing_from_designation
+    from bearinglab.errors import ConvergenceError
+
+    b, _ = bearing_from_designation("6205")
+    with pytest.raises(ConvergenceError, match=r"cannot carry this load: F_r = 1e\+06 N.*"
+                       r"P0 = 1e\+06 N, 127 times the static rating C0 = 78\d\d(\.\d+)? N"
+                       r" \(ISO 76; s0 = 0.00789\)") as info:
+        solve_load_distribution(b, OperatingCondition(radial_load=1e6))
+    assert "residual" not in str(info.value)
+    # a load the bearing carries is solved as before
+    solve_load_distribution(b, OperatingCondition(radial_load=3e4))
+
+
+def test_unknown_race_control_is_refused():
+    with pytest.raises(InputError, match="race_control = 'middle'.*'outer' or 'inner' or "
+                                         "'hybrid'"):
+        solve_load_distribution(bearing(), OperatingCondition(radial_load=100.0),
+                                race_control="middle")
+
+
+def test_hybrid_control_follows_jones_criterion():
+    # a heavily thrust-loaded 40 deg bearing at speed: the outer contact carries more, its
+    # spin-resisting moment wins and every ball is outer-raceway controlled; the answer is
+    # then that of race_control="outer"
+    b = bearing(contact_angle=math.radians(40))
+    c = OperatingCondition(axial_load=3000.0, shaft_speed=15000 * math.pi / 30)
+    hybrid = solve_load_distribution(b, c, race_control="hybrid", gyroscopic=True)
+    outer = solve_load_distribution(b, c, race_control="outer", gyroscopic=True)
+    assert np.all(hybrid.outer_controlled)
+    np.testing.assert_allclose(hybrid.displacement, outer.displacement, atol=1e-13)
+    inner = solve_load_distribution(b, c, race_control="inner", gyroscopic=True)
+    assert not np.any(inner.outer_controlled)
+    # inner raceway control: Jones's orbital speed with tan(beta) = sin a_i/(cos a_i - g)
+    from bearinglab.quasistatic.gyroscopic import raceway_control_kinematics
+
+    ai, ao = inner.contact_angle[0]
+    orbit = raceway_control_kinematics(ai, ao, b.ball_diameter / b.pitch_diameter, "inner")[1]
+    assert inner.orbital_speed[0] == pytest.approx(orbit * c.shaft_speed, rel=1e-12)
+    assert inner.cage_speed != pytest.approx(outer.cage_speed, rel=1e-4)
+    d = inner.to_dict()
+    assert d["race_control"] == "inner" and d["cage_speed_rpm"] > 0
+    assert {"orbital_speed_rpm", "centrifugal_force_n", "gyroscopic_moment_n_m",
+            "outer_raceway_control"} <= set(d["balls"][0])

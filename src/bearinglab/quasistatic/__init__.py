@@ -127,7 +127,13 @@ def solve_load_distribution(bearing: BallBearing, condition: OperatingCondition,
                                               temperature, gyroscopic, tolerance, initial,
                                               race_control)
     except ConvergenceError as exc:
-        raise _in_user_terms(exc, bearing, condition) from None
+        told = _in_user_terms(exc, bearing, condition)
+        if told is exc and gyroscopic and condition.shaft_speed > 0:
+            told = ConvergenceError(f"{exc}; with the gyroscopic moment held by friction "
+                                    f"({race_control} raceway control) there may be no "
+                                    "equilibrium at this speed: the friction needed can "
+                                    "exceed what a lightly loaded contact holds")
+        raise told from exc
     q, n_rho, n_z, delta, speed, force, stiffness = state
     if problem.spd[0] <= 0:
         q = np.where(q <= 10 * CENTRIFUGAL_FLOOR, 0.0, q)   # the floor is not a real load
@@ -240,7 +246,7 @@ def _in_user_terms(exc: ConvergenceError, bearing: BallBearing,
         f"the contacts cannot carry this load: F_r = {condition.radial_load:.6g} N, "
         f"F_a = {condition.axial_load:.6g} N give a static equivalent load P0 = {p0:.6g} N, "
         f"{p0 / c0:.3g} times the static rating C0 = {c0:.6g} N (ISO 76; s0 = "
-        f"{c0 / p0:.3g}); no equilibrium was found ({exc})")
+        f"{c0 / p0:.3g}): no equilibrium exists for it")
 
 
 def contact_films(bearing: BallBearing, lubricant, shaft_speed: float, ring, state,
