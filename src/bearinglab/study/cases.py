@@ -252,8 +252,9 @@ class CaseTable:
             raise InputError("cases", str(path), "an existing .csv or .parquet file")
         suffix = path.suffix.lower()
         try:
-            if suffix == ".csv":
-                frame = pd.read_csv(path)
+            if suffix == ".csv":   # designations such as 6205 stay text
+                frame = pd.read_csv(path, dtype={k: str for k, o in options.items()
+                                                 if o.kind == "text"})
             elif suffix in (".parquet", ".pq"):
                 frame = pd.read_parquet(path)
             else:

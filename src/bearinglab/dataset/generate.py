@@ -1,0 +1,309 @@
+"""make_dataset: labelled synthetic vibration records, made on dask, in the
+bearing-datasets layout (:mod:`.layout`).
+
+A record is the acceleration of bearinglab's dynamic model (:func:`bearinglab.dynamics.
+simulate`, rigid or slip) with the record's defects and raceway waviness / ball-size
+errors, passed through the transfer path (:mod:`.path`) and given white measurement noise.
+Records are made a partition at a time on the workers; each partition's signals and
+metadata are written as they arrive (never the whole set in memory); a rerun makes only the
+missing partitions, and metadata.parquet and manifest.json are written once all are there.
+A record that fails is left out and listed (``failed.csv`` in ``_bearinglab/``).
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from .. import __version__
+from ..errors import InputError
+from ..files import write_atomically
+from ..study import execute
+from ..study.cases import canonical, default_partition_size, partitions
+from . import layout
+from .sampling import DatasetSpec, draw_record
+
+OWN = "_bearinglab"
+MARKER = "dataset.json"
+#: Hard ceiling on the records of one set.
+MAX_RECORDS = 10**7
+#: Largest partition [records]: about a few seconds of the rigid model at 1 s, 20 kHz.
+LARGEST_PARTITION = 20
+
+
+def make_record(spec: DatasetSpec, seed: int, index: int) -> tuple[np.ndarray, dict, dict]:
+    """(samples float32, record inputs, kinematic frequencies object) of record ``index``."""
+    from ..dynamics import Defect, simulate
+    from ..imperfections import BallSizeErrors, Imperfections, Waviness
+    from ..operating import OperatingCondition
+    from ..study._inputs import bearing_of
+    from .path import TransferPath
+
+    r = draw_record(spec, seed, index)
+    bearing = bearing_of(r["bearing"])
+    z = bearing.ball_count
+    defects = [Defect(d["location"], d["width_mm"] * 1e-3, d["depth_mm"] * 1e-3,
+                      angle=math.radians(d["angle_deg"]),
+                      ball=r["ball_index"] % z if d["location"] == "ball" else 0)
+               for d in r["defects"]]
+    for d, spec_d in zip(defects, r["defects"]):
+        if d.location == "ball":
+            spec_d["ball"] = d.ball
+    waves = [Waviness(w["race"], w["order"], r["waviness_amplitude_um"] * 1e-6,
+                      math.radians(w["phase_deg"]))
+             for w in r["waviness"]] if r["waviness_amplitude_um"] > 0 else []
+    errors = (BallSizeErrors.random(z, r["ball_size_error_um"] * 1e-6, seed=r["seed"])
+              if r["ball_size_error_um"] > 0 else None)
+    imperfections = Imperfections(waves, ball_size_errors=errors) if (waves or errors) \
+        else None
+    condition = OperatingCondition(radial_load=r["radial_load_n"],
+                                   shaft_speed=r["speed_rpm"] * math.pi / 30.0)
+    fs = r["sample_rate_hz"]
+    sim = simulate(bearing, condition, defects, model=r["model"], duration=r["duration_s"],
+                   sample_rate=fs, imperfections=imperfections)
+    x = TransferPath(tuple(r["resonances"])).apply(sim.signal.channels["acc_y"], fs)
+    if r["noise_ms2"] > 0:
+        x = x + np.random.default_rng(r["seed"]).normal(0.0, r["noise_ms2"], x.size)
+    return x.astype(layout.DTYPE), r, (bearing, sim.kinematic)
+
+
+def _partition(task):
+    """Worker side: make the records of one partition; (signal table, metadata rows)."""
+    spec, seed, name, start, stop, width, file = task
+    ids, signals, rows = [], [], []
+    for i in range(start, stop):
+        recording = f"rec{i:0{width}d}"
+        try:
+            x, r, (bearing, kin) = make_record(spec, seed, i)
+        except Exception as exc:  # noqa: BLE001 - a failed record never stops the set
+            from ..study.analyses import error_text
+
+            rows.append({"recording_id": recording, "error": error_text(exc)})
+            continue
+        row = layout.metadata_row(name, recording, r, bearing, kin, x.size,
+                                  r["sample_rate_hz"])
+        row.update({"signal_file": file, "signal_row_group": 0, "signal_row": len(ids),
+                    "sha256": layout.digest(x), "error": None})
+        ids.append(row["signal_id"])
+        signals.append(x)
+        rows.append(row)
+    return layout.signal_table(ids, signals), rows
+
+
+@dataclass(frozen=True)
+class DatasetResult:
+    """A finished data set: ``path``, ``name``, ``records`` asked for, ``written`` and
+    ``failed`` records, ``partitions``, ``computed`` (by this run), ``seconds`` (this run's
+    wall time), ``workers``, ``scheduler``, ``dashboard``, ``peak_memory`` [bytes]."""
+
+    path: Path
+    name: str
+    records: int
+    written: int
+    failed: int
+    partitions: int
+    computed: int
+    computed_records: int
+    seconds: float
+    workers: int
+    scheduler: str
+    dashboard: str | None
+    peak_memory: dict = field(default_factory=dict, repr=False)
+
+    @property
+    def records_per_second(self) -> float | None:
+        """Records made by this run per wall second."""
+        return self.computed_records / self.seconds if self.computed and self.seconds > 0 \
+            else None
+
+    def to_pandas(self):
+        """The metadata table (one row per signal)."""
+        import pandas as pd
+
+        return pd.read_parquet(self.path / "metadata.parquet")
+
+    def to_dict(self) -> dict:
+        """JSON-ready summary; ``open_with`` is how bearing-datasets opens the set."""
+        return {"output": str(self.path), "name": self.name, "records": self.records,
+                "records_written": self.written, "records_failed": self.failed,
+                "partitions": self.partitions, "partitions_computed": self.computed,
+                "partitions_reused": self.partitions - self.computed,
+                "records_computed": self.computed_records, "seconds": self.seconds,
+                "records_per_second": self.records_per_second, "workers": self.workers,
+                "scheduler": self.scheduler, "dashboard": self.dashboard,
+                "open_with": f"bearing_datasets.open({self.name!r}, "
+                             f"root={str(self.path.parent)!r})"}
+
+    def plot(self, ax=None):
+        """Records per fault type against speed (a scatter of the set's coverage)."""
+        from ..plotting import _pyplot
+
+        meta = self.to_pandas()
+        if ax is None:
+            fig, ax = _pyplot().subplots(figsize=(7, 4))
+        else:
+            fig = ax.figure
+        for i, (fault, part) in enumerate(meta.groupby("fault_type")):
+            ax.scatter(part["speed_rpm"], part["load"], s=8, color=f"C{i}",
+                       label=f"{fault} ({len(part)})")
+        ax.set_xlabel("speed [rpm]")
+        ax.set_ylabel("radial load [N]")
+        ax.legend(fontsize=8)
+        return fig, ax
+
+
+def _check_folder(folder: Path, identity: dict) -> None:
+    marker = folder / OWN / MARKER
+    if marker.exists():
+        try:
+            held = json.loads(marker.read_text(encoding="utf-8"))
+        except (OSError, ValueError):
+            held = {}
+        if canonical(held.get("identity")) != canonical(identity):
+            raise InputError("output", str(folder), "a new folder or one holding this same "
+                             "data set", f"it holds a different data set ({held.get('records')}"
+                             f" records, seed {held.get('seed')}); choose another output "
+                             "folder or remove that one")
+    elif folder.exists() and (not folder.is_dir() or any(folder.iterdir())):
+        raise InputError("output", str(folder), "a new or empty folder, or one holding "
+                         "this same data set", "it holds other files")
+
+
+def make_dataset(output, records: int, *, seed: int = 0, partition_size: int | None = None,
+                 scheduler: str | None = None, workers: int | None = None,
+                 max_records: int | None = None, progress: bool = False,
+                 connect_timeout: float = execute.CONNECT_TIMEOUT, **ranges) -> DatasetResult:
+    """Make ``records`` labelled synthetic vibration records in the bearing-datasets layout.
+
+    Parameters
+    ----------
+    output : path
+        The data set's folder; its name is the data set's name
+        (``bearing_datasets.open(name, root=parent)`` reads it).
+    records : int
+        Number of records.
+    seed : int
+        Record i's inputs come from (seed, i) only.
+    partition_size, scheduler, workers, connect_timeout, progress
+        As for :func:`bearinglab.study.run_study`.
+    max_records : int, optional
+        Refuse more records than this (the command line's confirmation limit).
+    **ranges
+        What to randomise: a value (fixed), a pair (low, high) (uniform), a list (choices),
+        or text "V", "LOW:HIGH", "A,B,C" (:class:`.sampling.DatasetSpec`):
+        ``bearings`` (designations or dicts of geometry options; default 6205-2RS),
+        ``speed_rpm`` (1700-1800), ``radial_load_n`` (200-2000), ``faults`` (classes
+        among none, outer, inner, ball, compound; cage is refused: the models have no cage
+        defect), ``defect_width_mm`` (0.2-1.5), ``defect_depth_mm`` (0.1-0.3),
+        ``defect_position_deg`` (outer race, -135 to -45), ``waviness_amplitude_um`` (0),
+        ``waviness_orders`` (2-30), ``ball_size_error_um`` (0), ``noise_ms2`` (0.5-5),
+        ``resonances`` (list of (frequency range, damping range); default one at
+        2.5-4.5 kHz with damping 0.02-0.08), ``sample_rate_hz`` (20000), ``duration_s``
+        (1), ``model`` (rigid).
+
+    Returns
+    -------
+    DatasetResult
+    """
+    if isinstance(seed, bool) or not isinstance(seed, int) or seed < 0:
+        raise InputError("seed", seed, "a whole number >= 0")
+    spec = DatasetSpec(records, **ranges)
+    if records > MAX_RECORDS:
+        raise InputError("records", records, f"at most {MAX_RECORDS:g}")
+    if max_records is not None and records > max_records:
+        raise InputError("records", records, f"at most {max_records} without confirmation",
+                         "confirm with --yes (or raise max_records) to make them all")
+    if partition_size is None:
+        partition_size = default_partition_size(records, LARGEST_PARTITION)
+    elif isinstance(partition_size, bool) or not isinstance(partition_size, int) \
+            or partition_size < 1:
+        raise InputError("partition_size", partition_size, "a whole number >= 1")
+    folder = Path(output)
+    name = folder.resolve().name
+    if not name:
+        raise InputError("output", str(output), "a folder with a name (the data set's name)")
+    identity = {"spec": spec.identity(), "seed": seed, "partition_size": partition_size,
+                "name": name}
+    _check_folder(folder, identity)
+    spans = partitions(records, partition_size)
+    width = max(6, len(str(records - 1)))
+    pwidth = max(5, len(str(len(spans) - 1)))
+    own = folder / OWN
+    metas = [own / f"meta-{i:0{pwidth}d}.parquet" for i in range(len(spans))]
+    files = [f"part-{layout.DTYPE}-{i:0{pwidth}d}.parquet" for i in range(len(spans))]
+    todo = [i for i in range(len(spans)) if not metas[i].exists()]
+    (folder / "signals").mkdir(parents=True, exist_ok=True)
+    own.mkdir(exist_ok=True)
+    write_atomically(own / MARKER, lambda tmp: Path(tmp).write_text(json.dumps(
+        {"kind": "bearinglab dataset", "bearinglab_version": __version__, "records": records,
+         "seed": seed, "identity": identity}, indent=1, default=str), encoding="utf-8"))
+    tasks = [(spec, seed, name, *spans[i], width, files[i]) for i in todo]
+    units = [spans[i][1] - spans[i][0] for i in todo]
+    where = {spans[i]: i for i in todo}
+
+    def write(task, result) -> None:
+        import pandas as pd
+        import pyarrow.parquet as pq
+
+        table, rows = result
+        i = where[(task[3], task[4])]
+        write_atomically(folder / "signals" / files[i],
+                         lambda tmp: pq.write_table(table, tmp, compression="zstd"))
+        frame = pd.DataFrame(rows)
+        write_atomically(metas[i], lambda tmp: frame.to_parquet(tmp, index=False))
+
+    seconds, memory, info = 0.0, {}, ("-", 0, None)
+    if tasks:
+        with execute.open_runner(scheduler, workers, connect_timeout) as runner:
+            info = (runner.scheduler, runner.workers, runner.dashboard)
+            execute.warm(runner, ("bearinglab.dynamics",), (_warm, (spec, seed)))
+            seconds = execute.run_partitions(runner, _partition, tasks, units, write,
+                                             progress=progress, label="records",
+                                             total=records, done=records - sum(units))
+            memory = execute.peak_memory(runner)
+    written, failed = _finish(folder, name, metas, seed, records)
+    return DatasetResult(folder, name, records, written, failed, len(spans), len(tasks),
+                         sum(units), seconds, info[1], info[0], info[2], memory)
+
+
+def _warm(args) -> None:
+    """A short first record on each worker: loads the compiled model."""
+    spec, seed = args
+    import dataclasses
+
+    make_record(dataclasses.replace(spec, duration_s=0.02, sample_rate_hz=20000.0,
+                                    resonances=()), seed, 0)
+
+
+def _finish(folder: Path, name: str, metas: list[Path], seed: int, records: int):
+    """metadata.parquet and manifest.json from the partitions' metadata."""
+    import pandas as pd
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    frame = pd.concat([pd.read_parquet(m) for m in metas], ignore_index=True)
+    bad = frame[frame["error"].notna()]
+    good = frame[frame["error"].isna()].drop(columns=["error"])
+    if len(bad):
+        bad[["recording_id", "error"]].to_csv(folder / OWN / "failed.csv", index=False)
+    if good.empty:
+        raise InputError("records", records, "settings with which at least one record can "
+                         "be made", f"every record failed, e.g. {bad['error'].iloc[0]}")
+    digests = dict(zip(good["signal_id"], good.pop("sha256")))
+    good = layout.order_columns(good.reset_index(drop=True))
+    for column in ("signal_row_group", "signal_row", "n_samples", "fault_severity_level",
+                   "record_seed"):
+        good[column] = good[column].astype("int64")
+    good["sensor_at_fault"] = good["sensor_at_fault"].astype(bool)
+    write_atomically(folder / "metadata.parquet", lambda tmp: pq.write_table(
+        pa.Table.from_pandas(good, preserve_index=False), tmp, compression="zstd"))
+    citation = (f"Synthetic records made with bearinglab {__version__} (seed {seed}); "
+                "models: seed 003 rigid / seed 004 slip, see bearinglab's docs")
+    text = json.dumps(layout.manifest(name, good, __version__, citation, digests), indent=1)
+    write_atomically(folder / "manifest.json", lambda tmp: Path(tmp).write_text(
+        text, encoding="utf-8"))
+    return len(good), len(bad)

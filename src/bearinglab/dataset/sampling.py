@@ -1,0 +1,235 @@
+"""What a synthetic data set randomises, and the draw of one record's inputs.
+
+Every input is given as a value (fixed), a pair ``(low, high)`` (uniform in the range) or
+a list (one of the values, equally likely); on the command line ``LOW:HIGH`` and ``A,B,C``.
+Record ``i`` draws everything from a generator seeded by (data set seed, i) alone
+(:func:`bearinglab.study.case_rng`), so any record can be made again on any worker.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+from ..errors import InputError
+from ..study.cases import case_rng
+
+#: Fault classes a record can have: "compound" is two different defects.
+FAULTS = ("none", "outer", "inner", "ball", "cage", "compound")
+MODELS = ("rigid", "slip")
+#: Where single defects can be (the dynamic models' Defect locations).
+LOCATIONS = ("outer", "inner", "ball")
+
+
+def parse_range(name: str, value, *, text: bool = False, positive: bool = False,
+                signed: bool = False):
+    """("fixed", v) / ("uniform", low, high) / ("choice", [values]) from a value, a pair,
+    a list or the command line's text ("V", "LOW:HIGH", "A,B,C").
+
+    >>> parse_range("speed_rpm", "1700:1800")
+    ('uniform', 1700.0, 1800.0)
+    >>> parse_range("model", "rigid,slip", text=True)
+    ('choice', ['rigid', 'slip'])
+    """
+    def number(v):
+        if isinstance(v, bool):
+            raise InputError(name, value, "numbers")
+        try:
+            x = float(v)
+        except (TypeError, ValueError):
+            raise InputError(name, value, "a number, LOW:HIGH or A,B,C") from None
+        if not math.isfinite(x) or (positive and x <= 0) or (not (positive or signed)
+                                                              and x < 0):
+            raise InputError(name, value, "finite values" if signed else
+                             "values > 0" if positive else "values >= 0")
+        return x
+
+    def word(v):
+        if not isinstance(v, str) or not v.strip():
+            raise InputError(name, value, "non-empty names")
+        return v.strip()
+
+    if isinstance(value, str):
+        s = value.strip()
+        if not s:
+            raise InputError(name, value, "a value, LOW:HIGH or A,B,C", "it is empty")
+        if not text and ":" in s[1:]:     # a leading '-' is a sign, not a range
+            parts = s.split(":")
+            if len(parts) != 2:
+                raise InputError(name, value, "LOW:HIGH")
+            value = (parts[0], parts[1])
+        elif "," in s:
+            value = [p for p in s.split(",")]
+            if any(not p.strip() for p in value):
+                raise InputError(name, s, "a list A,B,C without empty items")
+        else:
+            value = s
+    if isinstance(value, tuple) and not text:
+        if len(value) != 2:
+            raise InputError(name, value, "a pair (low, high)")
+        low, high = number(value[0]), number(value[1])
+        if low > high:
+            raise InputError(name, value, "a range with low <= high", "the range is empty")
+        return ("fixed", low) if low == high else ("uniform", low, high)
+    if isinstance(value, (list, tuple)):
+        if not value:
+            raise InputError(name, value, "at least one value", "the list is empty")
+        items = [word(v) if text else number(v) for v in value]
+        return ("choice", items) if len(items) > 1 else ("fixed", items[0])
+    return ("fixed", word(value) if text else number(value))
+
+
+def draw(spec: tuple, rng):
+    """One value of a parsed range."""
+    if spec[0] == "fixed":
+        return spec[1]
+    if spec[0] == "uniform":
+        return float(rng.uniform(spec[1], spec[2]))
+    return spec[1][int(rng.integers(len(spec[1])))]
+
+
+def _bearing_options(b) -> dict:
+    """A bearing entry: a designation or a dict of the study's bearing options."""
+    from ..study._inputs import BEARING_OPTIONS
+
+    if isinstance(b, str):
+        if not b.strip():
+            raise InputError("bearings", b, "designations or dicts of geometry options")
+        return {"designation": b.strip()}
+    if isinstance(b, dict):
+        bad = [k for k in b if k not in BEARING_OPTIONS]
+        if bad:
+            raise InputError("bearings", bad[0], "geometry options: " + ", ".join(BEARING_OPTIONS))
+        return dict(b)
+    raise InputError("bearings", b, "designations or dicts of geometry options")
+
+
+@dataclass(frozen=True)
+class DatasetSpec:
+    """The ranges a data set draws from (SI-free: the units are in the names).
+
+    See :func:`bearinglab.dataset.make_dataset` for each field; ``resonances`` is a list
+    of (frequency range [Hz], damping-ratio range) pairs, one per resonance of the path.
+    """
+
+    records: int
+    bearings: tuple = ("6205-2RS",)
+    speed_rpm: object = (1700.0, 1800.0)
+    radial_load_n: object = (200.0, 2000.0)
+    faults: tuple = ("none", "outer", "inner", "ball")
+    defect_width_mm: object = (0.2, 1.5)
+    defect_depth_mm: object = (0.1, 0.3)
+    defect_position_deg: object = (-135.0, -45.0)
+    waviness_amplitude_um: object = 0.0
+    waviness_orders: object = (2.0, 30.0)
+    ball_size_error_um: object = 0.0
+    noise_ms2: object = (0.5, 5.0)
+    resonances: tuple = (((2500.0, 4500.0), (0.02, 0.08)),)
+    sample_rate_hz: object = 20000.0
+    duration_s: object = 1.0
+    model: object = "rigid"
+    parsed: dict = field(default_factory=dict, compare=False, repr=False)
+
+    def __post_init__(self) -> None:
+        if isinstance(self.records, bool) or not isinstance(self.records, int) \
+                or self.records < 1:
+            raise InputError("records", self.records, "a whole number >= 1")
+        bearings = self.bearings if isinstance(self.bearings, (list, tuple)) else [
+            self.bearings]
+        if isinstance(self.bearings, str):
+            bearings = [b for b in self.bearings.split(",")]
+        if not bearings:
+            raise InputError("bearings", self.bearings, "at least one bearing")
+        p = {"bearings": [_bearing_options(b) for b in bearings]}
+        faults = parse_range("faults", list(self.faults) if isinstance(self.faults, tuple)
+                             else self.faults, text=True)
+        names = faults[1] if faults[0] == "choice" else [faults[1]]
+        for f in names:
+            if f not in FAULTS:
+                raise InputError("faults", f, "some of " + ", ".join(FAULTS))
+            if f == "cage":
+                raise InputError("faults", f, "none, outer, inner, ball or compound",
+                                 "the dynamic models have no cage defect model, so no "
+                                 "cage-fault record can be made")
+        p["faults"] = faults
+        model = parse_range("model", list(self.model) if isinstance(self.model, tuple)
+                            else self.model, text=True)
+        for m in (model[1] if model[0] == "choice" else [model[1]]):
+            if m not in MODELS:
+                raise InputError("model", m, "rigid or slip")
+        p["model"] = model
+        for name, positive in (("speed_rpm", True), ("radial_load_n", False),
+                               ("defect_width_mm", True), ("defect_depth_mm", True),
+                               ("waviness_amplitude_um", False), ("waviness_orders", True),
+                               ("ball_size_error_um", False), ("noise_ms2", False),
+                               ("sample_rate_hz", True), ("duration_s", True)):
+            p[name] = parse_range(name, getattr(self, name), positive=positive)
+        p["defect_position_deg"] = parse_range("defect_position_deg",
+                                               self.defect_position_deg, signed=True)
+        path = []
+        for item in self.resonances:
+            if not (isinstance(item, (list, tuple)) and len(item) == 2):
+                raise InputError("resonances", item, "(frequency range [Hz], damping range)")
+            path.append((parse_range("resonance frequency", item[0], positive=True),
+                         parse_range("damping ratio", item[1], positive=True)))
+        p["resonances"] = path
+        _check_path(path, p["sample_rate_hz"])
+        object.__setattr__(self, "parsed", p)
+
+    def identity(self) -> dict:
+        """JSON-ready description of everything drawn from (for resuming)."""
+        return {k: v for k, v in self.parsed.items()} | {"records": self.records}
+
+
+def _check_path(path, rates) -> None:
+    """Every resonance must sit below 0.45 x the lowest sample rate the set may draw."""
+    from .path import MAX_FRACTION
+
+    lowest = rates[1] if rates[0] != "choice" else min(rates[1])
+    for f, z in path:
+        top = f[1] if f[0] == "fixed" else (f[2] if f[0] == "uniform" else max(f[1]))
+        if top > MAX_FRACTION * lowest:
+            raise InputError("resonance frequency", top, f"at most {MAX_FRACTION:g} x the "
+                             f"lowest sample rate ({MAX_FRACTION * lowest:g} Hz)")
+        zeta = z[2] if z[0] == "uniform" else (max(z[1]) if z[0] == "choice" else z[1])
+        if zeta >= 1:
+            raise InputError("damping ratio", zeta, "ratios in (0, 1)")
+
+
+def draw_record(spec: DatasetSpec, seed: int, index: int) -> dict:
+    """Inputs of record ``index``: bearing, operating point, defects, form errors, noise,
+    path, sampling (engineering units; defects as dicts)."""
+    p = spec.parsed
+    rng = case_rng(seed, index)
+    bearing = p["bearings"][int(rng.integers(len(p["bearings"])))]
+    fault = draw(p["faults"], rng)
+    if fault == "compound":
+        locations = sorted(rng.choice(len(LOCATIONS), size=2, replace=False).tolist())
+        parts = [LOCATIONS[i] for i in locations]
+    else:
+        parts = [] if fault == "none" else [fault]
+    defects = []
+    for part in parts:
+        width, depth = draw(p["defect_width_mm"], rng), draw(p["defect_depth_mm"], rng)
+        if part == "outer":
+            angle = draw(p["defect_position_deg"], rng)
+        else:    # inner ring angle at t = 0, or the ball's spin phase: anywhere
+            angle = float(rng.uniform(0.0, 360.0))
+        defects.append({"location": part, "width_mm": width, "depth_mm": depth,
+                        "angle_deg": angle})
+    record = {"bearing": bearing, "fault": fault, "defects": defects,
+              "speed_rpm": draw(p["speed_rpm"], rng),
+              "radial_load_n": draw(p["radial_load_n"], rng),
+              "model": draw(p["model"], rng),
+              "sample_rate_hz": draw(p["sample_rate_hz"], rng),
+              "duration_s": draw(p["duration_s"], rng),
+              "noise_ms2": draw(p["noise_ms2"], rng),
+              "ball_size_error_um": draw(p["ball_size_error_um"], rng),
+              "waviness_amplitude_um": draw(p["waviness_amplitude_um"], rng),
+              "resonances": [(draw(f, rng), draw(z, rng)) for f, z in p["resonances"]]}
+    record["waviness"] = [{"race": race, "order": round(draw(p["waviness_orders"], rng)),
+                           "phase_deg": float(rng.uniform(0.0, 360.0))}
+                          for race in ("outer", "inner")]
+    record["ball_index"] = int(rng.integers(1 << 30))   # which ball (mod Z) has the defect
+    record["seed"] = int(rng.integers(1 << 31))         # noise and ball-size errors
+    return record
