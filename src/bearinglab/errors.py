@@ -23,6 +23,7 @@ class InputError(BearinglabError, ValueError):
         self.parameter = parameter
         self.value = value
         self.allowed = allowed
+        self.hint = hint
         message = f"{parameter} = {value!r} is not allowed: expected {allowed}"
         if hint:
             message += f" ({hint})"

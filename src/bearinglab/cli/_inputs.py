@@ -258,7 +258,7 @@ class _Inputs:
         if name in self.values:
             return OptionError(self.flag(name), self.values[name],
                                _si_to_option_units(exc.allowed, name),
-                               _si_to_option_units(_hint_of(exc), name))
+                               _si_to_option_units(exc.hint, name))
         for partner in _PARTNERS.get(exc.parameter, ()):
             other = _KEYWORD_OPTION[partner]
             if other not in self.values:
@@ -282,15 +282,8 @@ class _Inputs:
                 f"a value with which the {label} {own}{' ' + unit if unit else ''} (not given: "
                 f"a catalogue or derived value) passes its check: "
                 f"{_si_to_option_units(exc.allowed, name)}",
-                _si_to_option_units(_hint_of(exc), name))
+                _si_to_option_units(exc.hint, name))
         return exc
-
-
-def _hint_of(exc: InputError) -> str:
-    text = str(exc)
-    head = f"expected {exc.allowed}"
-    rest = text[text.find(head) + len(head):] if head in text else ""
-    return rest[2:-1] if rest.startswith(" (") and rest.endswith(")") else ""
 
 
 def _read_geometry_file(path: Path) -> dict:

@@ -96,7 +96,7 @@ def analyze_command(
             raise
         value = str(signal_file) if flag == "SIGNAL_FILE" else (
             channel if flag == "--channel" else sample_rate_hz)
-        raise OptionError(flag, value, exc.allowed, _hint(exc)) from None
+        raise OptionError(flag, value, exc.allowed, exc.hint) from None
     if speed_rpm is None:
         recorded = signal.metadata.get("speed_rpm")
         if not isinstance(recorded, (int, float)) or isinstance(recorded, bool):
@@ -135,9 +135,3 @@ def analyze_command(
     print_diagnosis(diag, diag.channel or "signal")
     _print_warnings(out["warnings"])
 
-
-def _hint(exc: InputError) -> str:
-    text = str(exc)
-    head = f"expected {exc.allowed}"
-    rest = text[text.find(head) + len(head):] if head in text else ""
-    return rest[2:-1] if rest.startswith(" (") and rest.endswith(")") else ""

@@ -1,0 +1,253 @@
+"""Units at the edges: SI inside, engineering units on the command line and in JSON.
+
+One table (:data:`UNITS`) says what each unit suffix means: the suffix that ends a JSON
+key or a command-line flag (``speed_rpm``, ``--radial-load-n``), the symbol printed in
+table headers (``rpm``, ``N``, ``µm``) and the SI value of one unit. The command line
+converts option values with it, the error messages and table headers print its symbols,
+and ``docs/json.md`` (checked by ``tests/unit/test_json_contract.py``) lists it as the
+JSON contract: every key of every ``--json`` either ends in one of these suffixes or is
+one of the dimensionless keys of :data:`DIMENSIONLESS`.
+
+>>> rpm_to_rad_s(30.0) == math.pi
+True
+>>> UNITS["n_per_um"].to_si(100.0)
+100000000.0
+>>> label("stiffness", "n_per_um")
+'stiffness [N/µm]'
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+#: Angular speed of one revolution per minute [rad/s].
+RPM = math.pi / 30.0
+
+
+def rpm_to_rad_s(speed_rpm: float) -> float:
+    """A speed in rpm as an angular speed [rad/s]."""
+    return speed_rpm * RPM
+
+
+def rad_s_to_rpm(speed: float) -> float:
+    """An angular speed [rad/s] in rpm."""
+    return speed / RPM
+
+
+def rad_s_to_hz(speed: float) -> float:
+    """An angular speed [rad/s] as a frequency of revolution [Hz]."""
+    return speed / (2.0 * math.pi)
+
+
+@dataclass(frozen=True)
+class Unit:
+    """One engineering unit: key suffix, printed symbol, SI value of one unit, meaning."""
+
+    suffix: str
+    symbol: str
+    factor: float
+    quantity: str
+
+    def to_si(self, value: float) -> float:
+        """``value`` in this unit, in SI."""
+        return value * self.factor
+
+    def from_si(self, value: float) -> float:
+        """An SI ``value`` in this unit."""
+        return value / self.factor
+
+
+def _units(*rows: tuple[str, str, float, str]) -> dict[str, Unit]:
+    return {row[0]: Unit(*row) for row in rows}
+
+
+#: suffix -> Unit. Suffixes are matched longest first, so ``n_per_um`` is not ``um``.
+UNITS: dict[str, Unit] = _units(
+    ("m", "m", 1.0, "length"),
+    ("mm", "mm", 1e-3, "length"),
+    ("um", "µm", 1e-6, "length"),
+    ("nm", "nm", 1e-9, "length"),
+    ("mm2", "mm²", 1e-6, "area"),
+    ("mm4", "mm⁴", 1e-12, "second moment of area"),
+    ("mrad", "mrad", 1e-3, "angle"),
+    ("deg", "deg", math.pi / 180.0, "angle"),
+    ("rad", "rad", 1.0, "angle"),
+    ("n", "N", 1.0, "force"),
+    ("kn", "kN", 1e3, "force"),
+    ("n_m", "N·m", 1.0, "moment, torque"),
+    ("n_mm", "N·mm", 1e-3, "moment, torque"),
+    ("n_per_um", "N/µm", 1e6, "stiffness"),
+    ("n_per_m", "N/m", 1.0, "stiffness"),
+    ("n_m_per_rad", "N·m/rad", 1.0, "tilt stiffness"),
+    ("n_per_m1_5", "N/m^1.5", 1.0, "Hertz load-deflection constant"),
+    ("n_s_per_m", "N·s/m", 1.0, "damping"),
+    ("pa", "Pa", 1.0, "pressure, stress"),
+    ("mpa", "MPa", 1e6, "pressure, stress"),
+    ("gpa", "GPa", 1e9, "pressure, stress, modulus"),
+    ("kg", "kg", 1.0, "mass"),
+    ("g", "g", 1e-3, "mass"),
+    ("kg_m3", "kg/m³", 1.0, "density"),
+    ("s", "s", 1.0, "time"),
+    ("ms", "ms", 1e-3, "time"),
+    ("hours", "h", 3600.0, "time (life)"),
+    ("million_rev", "10⁶ rev", 1e6, "life in revolutions"),
+    ("hz", "Hz", 1.0, "frequency"),
+    ("khz", "kHz", 1e3, "frequency"),
+    ("rpm", "rpm", RPM, "speed (to rad/s)"),
+    ("rad_s", "rad/s", 1.0, "angular speed"),
+    ("m_s", "m/s", 1.0, "velocity"),
+    ("um_s", "µm/s", 1e-6, "velocity"),
+    ("m_s2", "m/s²", 1.0, "acceleration"),
+    ("w", "W", 1.0, "power"),
+    ("mm2_s", "mm²/s", 1e-6, "kinematic viscosity"),
+    ("c", "°C", 1.0, "temperature (not converted: degrees Celsius)"),
+    ("db", "dB", 1.0, "level (sound pressure re 20 µPa)"),
+    ("pct", "%", 0.01, "percentage"),
+    ("percent", "%", 0.01, "percentage"),
+    ("si", "SI", 1.0, "a matrix in SI units, its rows' units under <key>_units"),
+)
+
+#: JSON keys that carry no unit: names, labels, counts, ratios, flags, and containers whose
+#: members carry their own. key -> what it holds.
+DIMENSIONLESS: dict[str, str] = {
+    # what was asked and where values came from
+    "designation": "the designation as typed (or null with explicit geometry)",
+    "name": "the bearing's catalogue name or label",
+    "system": "gost or iso: how the designation was read",
+    "bearing": "the bearing's name",
+    "bearing_type": "radial_ball, angular_contact_ball, ... (designation glossary)",
+    "geometry_source": "catalog, estimated or user: where the geometry came from",
+    "source": "where a value comes from (document, table)",
+    "sources": "map: value -> where it came from",
+    "geometry_sources": "map: geometry value -> {kind, reference}",
+    "kind": "catalog, estimated, user or default",
+    "reference": "document a value comes from",
+    "notes": "remarks on a reading",
+    "method": "the method chosen (e.g. exact, hamrock_brewe; iso281)",
+    "model": "the model chosen (rigid, slip; constant, skf)",
+    "warnings": "list of warnings in the user's terms",
+    "reason": "why a verdict was reached",
+    "output": "the file written",
+    "file": "the file read",
+    "seed": "seed of the random inputs",
+    # designation parts
+    "decoded": "the designation read part by part",
+    "alternatives": "other readings of the same text",
+    "text": "the text of a part as written",
+    "parts": "list of designation parts with their meaning",
+    "meaning": "what a designation part means",
+    "description": "one-line description of a reading",
+    "prefixes": "designation prefixes", "suffixes": "designation suffixes",
+    "series": "ISO family, e.g. 62", "dimension_series": "ISO dimension series, e.g. 02",
+    "diameter_series": "ISO diameter series digit", "width_series": "ISO width series digit",
+    "diameter_series_name": "its name", "width_series_name": "its name",
+    "bore_code": "bore code digits", "precision_class": "tolerance class",
+    "category": "GOST category (A, B, C)", "closures": "shields and seals",
+    "design_variant": "GOST design-variant digits", "design_variant_meaning": "their meaning",
+    "gost_equivalent": "the GOST designation of the same bearing",
+    "iso_equivalent": "the ISO designation of the same bearing",
+    # geometry numbers without units
+    "ball_count": "number of balls Z",
+    "inner_groove_factor": "groove curvature factor f_i = r_i / D_w",
+    "outer_groove_factor": "groove curvature factor f_o = r_o / D_w",
+    "ring_material": "material of the rings", "ball_material": "material of the balls",
+    "frequency_factors": "the defect-frequency orders",
+    # kinematics
+    "kinematic": "kinematic frequencies (their keys carry units or are orders)",
+    "ftf_order": "cage frequency per shaft revolution",
+    "bpfo_order": "ball-pass frequency of the outer race per shaft revolution",
+    "bpfi_order": "ball-pass frequency of the inner race per shaft revolution",
+    "bsf_order": "ball spin frequency per shaft revolution",
+    "ball_defect_order": "ball-defect rate (2 BSF) per shaft revolution",
+    "outer_rotating": "true when the outer ring turns",
+    "cage_speed_ratio": "cage speed over its pure-rolling value",
+    "spin_speed_ratio": "ball spin speed over its pure-rolling value",
+    # contact and load distribution
+    "inner": "the inner-race contact (or the inner race's values)",
+    "outer": "the outer-race contact (or the outer race's values)",
+    "ellipticity": "contact ellipse ratio a/b",
+    "balls": "per-ball results", "ball": "ball index, or the ball fault family",
+    "contact_points": "number of ball-race contacts (2, 3 or 4)",
+    "truncated": "true when the contact ellipse runs over the shoulder",
+    "outer_raceway_control": "true when the ball is under outer-raceway control",
+    "race_control": "outer, inner or hybrid raceway control",
+    "stiffness_matrix_order": "the order of the degrees of freedom of the matrix",
+    "stiffness_matrix_units": "the SI unit of each row of the stiffness matrix",
+    "cases": "list of cases (or their count)", "rows": "list of table rows",
+    "solved": "number of cases solved", "status": "ok or the error text",
+    # rings
+    "modes": "list of ring modes", "m": "mode number (waves round the ring)",
+    "split": "true when the mode splits in two (2m a multiple of Z)",
+    "epsilon": "roots of seed 000 eq. (3.5)",
+    "p": "frequency parameter of seed 000", "ball_mass_ratio": "kappa = Z m_b / m_ring",
+    "contact_stiffness_ratio": "K1 / K2 of seed 000",
+    "approx_ball_position": "nodes or antinodes", "refined_ball_position": "nodes or antinodes",
+    # signals and diagnosis
+    "channel": "the channel analysed", "spectrum_channel": "the channel of the plain spectrum",
+    "peaks": "labelled spectrum lines", "spectrum_peaks": "labelled lines of the plain spectrum",
+    "amplitude": "line amplitude, in the unit of the analysed channel",
+    "matched": "the frequency family a line was matched to (or null)",
+    "harmonic": "harmonic number of the matched family",
+    "deviation": "relative deviation of a line from its kinematic frequency",
+    "sideband_of": "the family a sideband belongs to",
+    "sideband_harmonic": "harmonic the sideband sits beside",
+    "sideband_order": "signed order of the sideband",
+    "modulation": "the modulating family of a sideband",
+    "likely_fault": "the fault family found (null: no fault detected)",
+    "faults": "every fault family found", "scores": "map: fault family -> score",
+    "defects": "the simulated defects", "location": "outer, inner or ball",
+    "stats": "integrator statistics", "steps": "accepted steps",
+    "rejected_steps": "rejected steps",
+    # imperfections and noise
+    "imperfections": "form errors", "waviness": "waviness orders", "race": "inner, outer or ball",
+    "order": "waviness order (waves round the ring)", "surfaces": "random 3-D surfaces",
+    "ball_size_errors": "ball diameter errors", "points": "number of time points",
+    "ring_model": "the sound model of the inner ring", "ball_model": "the sound model of a ball",
+    "ball_source": "what drives a ball's sound", "velocity_bands_source": "where the bands "
+    "come from", "velocity_bands_note": "how the bands were computed",
+    # friction and life
+    "friction_coefficient": "mu of seed 003's table", "friction_type": "the table's row",
+    "equivalent_load_source": "how the equivalent load was found",
+    "pitch_diameter_source": "where d_m came from", "seals": "the seal type",
+    "a1": "reliability factor", "a_iso": "life modification factor",
+    "kappa": "viscosity ratio nu / nu_1", "e_limit": "ISO 281 e",
+    "x_factor": "ISO 281 X", "y_factor": "ISO 281 Y", "f0": "ISO 76 f_0",
+    "fc": "ISO 281 f_c", "gamma": "ISO 281 geometry term",
+    "contamination_factor": "ISO 281 e_C", "contamination_source": "where e_C came from",
+    "rating_kind": "basic, modified or reference", "static_safety_factor": "s0 = C0 / P0",
+    # validation and report
+    "quantity": "what a published case checks", "unit": "the unit of published and computed",
+    "published": "the published value (in unit)", "computed": "our value (in unit)",
+    "verdict": "pass, fail or known failure", "passed": "true when the case passes (or count)",
+    "known_failure": "the documented reason of a known failure",
+    "tolerance_reason": "why the tolerance is what it is", "error": "error text (or null)",
+    "summary": "counts of the verdicts", "total": "number of cases", "failed": "count",
+    "errors": "count", "known_failures": "count", "unexpected_passes": "count",
+    "ok": "true when every case passed or failed as documented",
+    "sections": "the report's sections", "failed_sections": "sections whose analysis failed",
+}
+
+#: Keys whose members are named by data, not by the contract (e.g. ``sources``), so the
+#: members' keys are not checked.
+MAPS = frozenset({"sources", "geometry_sources", "scores", "stats"})
+
+
+def unit_of(key: str) -> Unit | None:
+    """The unit a JSON key or flag ends in (longest suffix first), or None.
+
+    >>> unit_of("stiffness_n_per_um").symbol
+    'N/µm'
+    >>> unit_of("ball_count") is None
+    True
+    """
+    name = key.lstrip("-").replace("-", "_").lower()
+    for suffix in sorted(UNITS, key=len, reverse=True):
+        if name.endswith("_" + suffix):
+            return UNITS[suffix]
+    return None
+
+
+def label(text: str, suffix: str) -> str:
+    """A table header: ``text [symbol]`` of the unit with that suffix."""
+    return f"{text} [{UNITS[suffix].symbol}]"

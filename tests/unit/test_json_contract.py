@@ -1,0 +1,89 @@
+"""One JSON contract (issue 12, docs/json.md): every key of every command's ``--json``
+carries its unit as a suffix of :data:`bearinglab.units.UNITS`, or is one of the
+dimensionless keys of :data:`bearinglab.units.DIMENSIONLESS`; docs/json.md lists both."""
+
+import json
+import re
+from pathlib import Path
+
+import pytest
+
+from bearinglab.cli import main
+from bearinglab.units import DIMENSIONLESS, MAPS, UNITS, unit_of
+
+DOC = Path(__file__).resolve().parents[2] / "docs" / "json.md"
+
+#: One cheap invocation of every command (tmp is replaced by a temporary folder).
+COMMANDS = {
+    "info": ["info", "6205"],
+    "info-gost": ["info", "180205"],
+    "frequencies": ["frequencies", "6205-2RS", "--speed-rpm", "1797"],
+    "contact": ["contact", "6205", "--ball-load-n", "1000"],
+    "static": ["static", "6205", "--radial-load-n", "1000", "--axial-load-n", "200",
+               "--speed-rpm", "3000"],
+    "static-orbit": ["static", "608", "--radial-load-n", "50", "--speed-rpm", "720",
+                     "--waviness", "outer:order=8,amplitude_um=0.5", "--orbit"],
+    "stiffness-map": ["stiffness-map", "6205", "--radial-load-n", "0:1000:2"],
+    "ring-modes": ["ring-modes", "310", "--system", "gost", "--axial-load-n", "200"],
+    "simulate": ["simulate", "6205", "--speed-rpm", "1800", "--radial-load-n", "500",
+                 "--defect", "outer:width_mm=1", "--duration-s", "0.5", "--sample-rate-hz",
+                 "10000", "-o", "tmp/sim.npz"],
+    "noise": ["noise", "608", "--speed-rpm", "720", "--radial-load-n", "50", "--waviness",
+              "inner:order=7,amplitude_um=0.2"],
+    "friction": ["friction", "6205", "--speed-rpm", "3000", "--radial-load-n", "1000"],
+    "life": ["life", "6205", "--speed-rpm", "3000", "--radial-load-n", "1000"],
+    "report": ["report", "6205", "--speed-rpm", "1797", "--radial-load-n", "1000", "-o",
+               "tmp/report.html"],
+}
+
+
+def _offending(obj, path: str = "") -> list[str]:
+    """Keys that break the contract, with their path."""
+    bad = []
+    if isinstance(obj, dict):
+        for key, value in obj.items():
+            where = f"{path}.{key}"
+            known = unit_of(key) is not None or key in DIMENSIONLESS
+            if not known:
+                bad.append(where)
+            if key not in MAPS and unit_of(key) is None:
+                bad += _offending(value, where)
+    elif isinstance(obj, list):
+        for item in obj:
+            bad += _offending(item, f"{path}[]")
+    return bad
+
+
+@pytest.fixture(scope="module")
+def outputs(tmp_path_factory):
+    """Each command's JSON, run once for all the checks."""
+    import contextlib
+    import io
+
+    tmp = tmp_path_factory.mktemp("json")
+    out = {}
+    for name, argv in COMMANDS.items():
+        argv = [a.replace("tmp/", f"{tmp}/") for a in argv]
+        buffer = io.StringIO()
+        with contextlib.redirect_stdout(buffer):
+            code = main([*argv, "--json"])
+        assert code == 0, name
+        out[name] = json.loads(buffer.getvalue())
+    buffer = io.StringIO()
+    with contextlib.redirect_stdout(buffer):
+        assert main(["analyze", str(tmp / "sim.npz"), "--designation", "6205", "--speed-rpm",
+                     "1800", "--json"]) == 0
+    out["analyze"] = json.loads(buffer.getvalue())
+    return out
+
+
+@pytest.mark.parametrize("name", [*COMMANDS, "analyze"])
+def test_every_key_carries_its_unit_or_is_dimensionless(outputs, name):
+    assert _offending(outputs[name]) == []
+
+
+def test_the_doc_lists_every_unit_and_dimensionless_key():
+    text = DOC.read_text(encoding="utf-8")
+    listed = set(re.findall(r"^\| `_?([a-z0-9_]+)` \|", text, flags=re.M))
+    assert set(UNITS) - listed == set()
+    assert set(DIMENSIONLESS) - listed == set()
