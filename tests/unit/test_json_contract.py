@@ -84,6 +84,6 @@ def test_every_key_carries_its_unit_or_is_dimensionless(outputs, name):
 
 def test_the_doc_lists_every_unit_and_dimensionless_key():
     text = DOC.read_text(encoding="utf-8")
-    listed = set(re.findall(r"^\| `_?([a-z0-9_]+)` \|", text, flags=re.M))
+    listed = set(re.findall(r"^\| `_?([a-z0-9_]+)` \|", text, flags=re.MULTILINE))
     assert set(UNITS) - listed == set()
     assert set(DIMENSIONLESS) - listed == set()
