@@ -13,7 +13,9 @@ sec. "Base excitation" of the harmonic-response chapter)
 
 1 at low frequency (the shaft and load-zone content passes unchanged), about 1/(2 zeta)
 at omega_n, falling above. Each stage is made digital by the bilinear transform with its
-natural frequency pre-warped (so the resonance sits exactly at omega_n).
+natural frequency pre-warped: the resonance sits exactly at omega_n; away from it the
+frequency axis is compressed towards Nyquist as the bilinear map does, so keep the
+resonances well below half the sample rate (at most 0.45 f_s is allowed).
 """
 
 from __future__ import annotations

@@ -2,7 +2,7 @@
 
 >>> from bearinglab.study import ANALYSES
 >>> sorted(ANALYSES)[:3]
-['friction', 'frequencies', 'life']
+['frequencies', 'friction', 'life']
 
 ``run_study("stiffness", {"designation": "6205", "radial_load_n": "100:2000:20",
 "speed_rpm": [0, 6000]}, output="out")`` writes one Parquet file per partition in ``out``
