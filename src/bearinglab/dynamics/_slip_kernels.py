@@ -32,14 +32,19 @@ NB = 6           # states per ball
 (BALLS, M_I, M_O, K_O, C_O, M_B, J_B, J_C, R_M, R_B, R_IN, R_OUT, QUARTER_CLEARANCE,
  K_IN, K_OUT, H_IN, H_OUT, C_IN, C_OUT, P1_IN, P1_OUT, OMEGA_I, F_X, F_Y, UNBALANCE,
  GRAVITY, K_CAGE, C_CAGE, POCKET, TRACTION, ETA0, ALPHA, MU_LIMIT, FLOW_INDEX,
- G_OIL, V_REG, DRAG, CAGE_DRAG, IMPACTS, DEFECT_ANGLE, ONSET) = range(41)
-SLIP_PARAMETER_COUNT = 41
+ G_OIL, V_REG, DRAG, CAGE_DRAG, IMPACTS, DEFECT_ANGLE, ONSET, CAGE_MU, SPIN_RHO,
+ SPIN_MU) = range(44)
+SLIP_PARAMETER_COUNT = 44
 SEED004, BAIR_WINER = 0, 1
 JACOBIAN_AGE = 8          # steps a Jacobian is reused for (see rosenbrock_chunk)
 # Masjedi & Khonsari boundary friction curve, seed 004 eq. 11 (ball-cage contact)
 CAGE_A, CAGE_B, CAGE_C, CAGE_D = -0.1, 22.28, 181.46, 0.1
-#: ... at the slide-roll ratio 2 of a pocket contact (the ball surface slides on the pocket)
+#: ... at the slide-roll ratio 2 of a pocket contact (the ball surface slides on the pocket):
+#: the default of ``SlipParameters.cage_friction``
 CAGE_SLIDING_MU = (CAGE_A + CAGE_B * 2.0) * math.exp(-CAGE_C * 2.0) + CAGE_D
+#: Rotational drag coefficient of a sphere (Dennis, Singh & Ingham 1980): Stokes' couple
+#: below Re_r = 32, their fit C_R = 12.9 Re_r^-1/2 + 128.4 / Re_r above
+SPIN_STOKES_REYNOLDS = 32.0
 # 4-point Gauss-Legendre rule on [0, 1] for the pressure averages of Bair-Winer traction
 _GL_X = np.array([0.0694318442029737, 0.3300094782075719, 0.6699905217924281,
                   0.9305681557970263])
@@ -87,10 +92,28 @@ def traction(dv, load, p_1, h, p):
 
 
 @numba.njit(cache=True)
-def cage_friction(speed):
-    """Ball-cage friction coefficient, seed 004 eq. 11, at slide-roll ratio 2 (pure
-    sliding of the ball surface on the pocket) with linear regularisation near 0 speed."""
-    return CAGE_SLIDING_MU * max(-1.0, min(1.0, speed / 1e-3))
+def cage_friction(speed, mu):
+    """Ball-cage friction coefficient ``mu`` (``SlipParameters.cage_friction``; seed 004
+    eq. 11 at slide-roll ratio 2 by default), signed with the sliding ``speed`` [m/s] of
+    the ball surface on the pocket, linear below 1 mm/s."""
+    return mu * max(-1.0, min(1.0, speed / 1e-3))
+
+
+@numba.njit(cache=True)
+def spin_drag(w_r, p):
+    """Drag moment on a ball spinning at ``w_r`` [rad/s] in the oil-air mixture [N m],
+    signed with the spin: M = 0.5 rho_e R_b^5 C_R(Re_r) |w_r| w_r, Re_r = rho_e |w_r|
+    D_w^2 / mu_e (Dennis, Singh & Ingham, *J. Fluid Mech.* 101 (1980) 257-279: C_R =
+    64 pi / Re_r, Stokes' couple 8 pi mu_e R_b^3 w_r, below Re_r = 32; 12.9 Re_r^-1/2 +
+    128.4 / Re_r above). Zero when the drag is off (SPIN_RHO = 0)."""
+    rho = p[SPIN_RHO]
+    if rho <= 0.0:
+        return 0.0
+    r_b = p[R_B]
+    re = rho * abs(w_r) * 4.0 * r_b * r_b / p[SPIN_MU]
+    if re < SPIN_STOKES_REYNOLDS:
+        return 8.0 * math.pi * p[SPIN_MU] * r_b ** 3 * w_r
+    return 0.5 * rho * r_b ** 5 * (12.9 / math.sqrt(re) + 128.4 / re) * abs(w_r) * w_r
 
 
 @numba.njit(cache=True)
@@ -143,7 +166,7 @@ def slip_rhs(t, y, p, table, dydt, parts):
         if abs(gap) > p[POCKET]:
             n_c = p[K_CAGE] * (gap - math.copysign(p[POCKET], gap)) + p[C_CAGE] * r_m * (
                 w_m - w_c)
-        mu_c = cage_friction(w_r * r_b)        # signed with the spin: opposes it
+        mu_c = cage_friction(w_r * r_b, p[CAGE_MU])     # signed with the spin: opposes it
         # ball drag (seed 004 eq. 14 in SI, mixture mass density)
         drag = p[DRAG] * abs(2.0 * r_m * w_m) ** 1.95 * math.copysign(1.0, w_m)
         # ball-defect impacts (seed 004 eqs. 16-19), radial, for a defective ball only
@@ -165,7 +188,7 @@ def slip_rhs(t, y, p, table, dydt, parts):
         dydt[b + 2] = w_m
         dydt[b + 3] = (tangential / m_b - 2.0 * vrho * w_m) / r
         dydt[b + 4] = w_r
-        dydt[b + 5] = (f_in - f_out - mu_c * abs(n_c)) * r_b / p[J_B]
+        dydt[b + 5] = ((f_in - f_out - mu_c * abs(n_c)) * r_b - spin_drag(w_r, p)) / p[J_B]
         # reactions on the rings (inner: -N e_r - F e_t; outer: +N e_r - F e_t), cage torque
         fx_i = -(n_in + max(f_imp, 0.0)) * c + f_in * s
         fy_i = -(n_in + max(f_imp, 0.0)) * s - f_in * c
@@ -221,6 +244,17 @@ def _traction_numpy(dv, load, p_1, h, p):
     return np.where(np.abs(dv) < reg, mu * dv / reg, np.sign(dv) * mu)
 
 
+def spin_drag_numpy(w_r, p):
+    """Vectorised twin of :func:`spin_drag`."""
+    w_r = np.asarray(w_r, dtype=float)
+    if p[SPIN_RHO] <= 0.0:
+        return np.zeros_like(w_r)
+    rho, mu, r_b = p[SPIN_RHO], p[SPIN_MU], p[R_B]
+    re = np.maximum(rho * np.abs(w_r) * 4.0 * r_b**2 / mu, 1e-300)
+    fitted = 0.5 * rho * r_b**5 * (12.9 / np.sqrt(re) + 128.4 / re) * np.abs(w_r) * w_r
+    return np.where(re < SPIN_STOKES_REYNOLDS, 8.0 * np.pi * mu * r_b**3 * w_r, fitted)
+
+
 def slip_rhs_numpy(t, y, p, table):
     """NumPy twin of :func:`slip_rhs` (vectorised over balls); returns dy/dt."""
     from ._kernels import surface_deviation_numpy
@@ -248,7 +282,7 @@ def slip_rhs_numpy(t, y, p, table):
     gap = (psi - theta_c - 2 * np.pi * np.arange(z) / z) * p[R_M]
     n_c = np.where(np.abs(gap) > p[POCKET], p[K_CAGE] * (gap - np.sign(gap) * p[POCKET])
                    + p[C_CAGE] * p[R_M] * (w_m - w_c), 0.0)
-    mu_c = CAGE_SLIDING_MU * np.clip(w_r * p[R_B] / 1e-3, -1, 1)
+    mu_c = p[CAGE_MU] * np.clip(w_r * p[R_B] / 1e-3, -1, 1)
     drag = p[DRAG] * np.abs(2 * p[R_M] * w_m) ** 1.95 * np.where(w_m >= 0, 1.0, -1.0)
     f_imp = np.zeros(z)
     if p[IMPACTS] > 0:
@@ -264,7 +298,8 @@ def slip_rhs_numpy(t, y, p, table):
     tangential = f_in + f_out - n_c - drag - m_b * p[GRAVITY] * np.cos(psi)
     dballs = np.stack([vrho, radial / m_b + r * w_m**2, w_m,
                        (tangential / m_b - 2 * vrho * w_m) / r, w_r,
-                       (f_in - f_out - mu_c * np.abs(n_c)) * p[R_B] / p[J_B]], axis=1)
+                       ((f_in - f_out - mu_c * np.abs(n_c)) * p[R_B]
+                        - spin_drag_numpy(w_r, p)) / p[J_B]], axis=1)
     # ring reactions: inner -N e_r - F e_t, outer +N e_r - F e_t (impacts split by sign)
     force_i = -(e @ (n_in + np.maximum(f_imp, 0))) - tang @ f_in
     force_o = e @ (n_out - np.minimum(f_imp, 0)) - tang @ f_out
