@@ -9,7 +9,10 @@ given: the shaft line and its first harmonics together, each read within one bin
 p-values combined by Fisher's method and bounded over the scan. When the series is
 significant the speed is refined by a least-squares fit through the origin of the lines
 found, f_shaft = sum(k f_k) / sum(k^2), which the higher harmonics make k times more
-precise than the resolution.
+precise than the resolution. A series found at f is also a series at 2f (every other
+line); the lowest significant sub-multiple in the range is kept. Over a wide range other
+periodic lines (a strong outer-race series in the raw spectrum) can still win: give a
+range no wider than about an octave round the expected speed.
 """
 
 from __future__ import annotations
@@ -21,8 +24,9 @@ import numpy as np
 
 #: Harmonics of the shaft frequency read [-].
 SHAFT_HARMONICS = 5
-#: Level at which the shaft series counts as found [-].
-SPEED_ALPHA = 1e-3
+#: Level at which the shaft series counts as found [-]: the shaft is always there, the
+#: test only guards against reading a speed off pure noise.
+SPEED_ALPHA = 0.05
 #: Half-width of the search round a given speed [-, fraction]: an induction motor runs
 #: up to a few per cent below its synchronous speed.
 SEARCH = 0.05
@@ -93,6 +97,17 @@ def shaft_frequency(x: np.ndarray, sample_rate: float, low: float, high: float,
     found = [ln for ln in test.lines if ln.p_value < SPEED_ALPHA]
     if test.p_value >= SPEED_ALPHA or not found:
         return ShaftEstimate(None, low, high, test.p_value, 0)
+    # a series at f also shows at 2f (every other line): prefer the lowest sub-multiple
+    # inside the range whose own series is significant (octave errors of pitch search)
+    for k in (4, 3, 2):
+        sub = test.fundamental_hz / k
+        if sub < low:
+            continue
+        lower = series_test(z, resolution, 2.0, sub, 0.01, 0.01, harmonics, top)
+        if lower.p_value < SPEED_ALPHA:
+            test = lower
+            found = [ln for ln in test.lines if ln.p_value < SPEED_ALPHA]
+            break
     # refine each line by a parabola through its bin and the neighbours (log power)
     refined = []
     for line in found:

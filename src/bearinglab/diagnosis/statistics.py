@@ -34,8 +34,11 @@ The test of a fault family (outer race, inner race, ball, cage):
    Research Workers, 1932, sec. 21.1), the best fundamental is kept, and its p-value is
    multiplied by the number M of distinct line positions the scan tried (a Bonferroni
    bound on the search);
-5. the series must not rest on one line: combined again without its strongest line, it
-   must still reach SUPPORT_ALPHA (an isolated line is more often a discrete component
+5. the harmonics must be significant by themselves (sidebands support a series, they do
+   not make one: a flexible template of harmonics and two orders of sidebands fits
+   stray lines, e.g. BPFO as a ball line's second cage sideband); and the series must
+   not rest on one line: combined again without its strongest line, it must still
+   reach SUPPORT_ALPHA (an isolated line is more often a discrete component
    of the machine than a bearing fault; Randall & Antoni 2011, sec. 2: a fault shows as
    a series of harmonics).
 
@@ -184,13 +187,15 @@ class SeriesTest:
     """Result of :func:`series_test` for one fault family.
 
     ``log_p`` (natural log of the p-value: Fisher's, times ``candidates``),
-    ``support_log_p`` (the same without the strongest line), ``fundamental_hz`` (the best
+    ``support_log_p`` (the same without the strongest line), ``harmonic_log_p`` (the
+    harmonics alone, without the sidebands), ``fundamental_hz`` (the best
     f') and ``slip`` (f'/f_kin - 1) [-], the ``lines`` read, and ``candidates`` (M).
     ``log_p`` is 0 (p = 1) when no line could be read (all masked or above the limit).
     """
 
     log_p: float
     support_log_p: float
+    harmonic_log_p: float
     fundamental_hz: float
     slip: float
     lines: tuple[Line, ...]
@@ -261,7 +266,7 @@ def series_test(z: np.ndarray, resolution: float, nu: float, fundamental: float,
     top = min(max_frequency, (z.size - 2) * resolution)
     n_max = int(min(harmonics, math.floor(top / (fundamental * (1 + above)))))
     if n_max < 1:
-        return SeriesTest(0.0, 0.0, fundamental, 0.0, (), 0)
+        return SeriesTest(0.0, 0.0, 0.0, fundamental, 0.0, (), 0)
     step = resolution / (2.0 * n_max)
     grid = np.arange(fundamental * (1 - below), fundamental * (1 + above) + step / 2, step)
     # expected lines: (kind, n, k) rows, frequencies = n f' + k f_m
@@ -281,7 +286,7 @@ def series_test(z: np.ndarray, resolution: float, nu: float, fundamental: float,
     logp = np.where(readable, line_logp(zmax, count, top / resolution,
                                         np.where(readable, values, 0.0), index), 0.0)
     if not np.any(readable):
-        return SeriesTest(0.0, 0.0, fundamental, 0.0, (), 0)
+        return SeriesTest(0.0, 0.0, 0.0, fundamental, 0.0, (), 0)
     combined = _fisher_rows(logp, readable)
     best = int(np.argmin(combined))
     # distinct sets of bins the scan read (the scan's independent trials, at most)
@@ -292,6 +297,8 @@ def series_test(z: np.ndarray, resolution: float, nu: float, fundamental: float,
     lps = logp[best][row]
     rest = np.delete(lps, int(np.argmin(lps)))
     support = min(0.0, log_m + float(fisher_logp(rest))) if rest.size else 0.0
+    own = row & (k_arr == 0)
+    harmonic = min(0.0, log_m + float(fisher_logp(logp[best][own]))) if own.any() else 0.0
     lines = []
     for j in np.flatnonzero(row):
         kind, n, k = spec[j]
@@ -299,8 +306,8 @@ def series_test(z: np.ndarray, resolution: float, nu: float, fundamental: float,
         lines.append(Line(kind, n, k, float(freq[best, j]), i * resolution,
                           float(values[best, j]), float(logp[best, j])))
     f_best = float(grid[best])
-    return SeriesTest(log_p, support, f_best, f_best / fundamental - 1.0, tuple(lines),
-                      candidates)
+    return SeriesTest(log_p, support, harmonic, f_best, f_best / fundamental - 1.0,
+                      tuple(lines), candidates)
 
 
 #: Bins either side of each of a family's own lines left out of its reference.

@@ -6,13 +6,18 @@
 2. Every family is tested in every method (:func:`series_test`). With F families and M
    methods the level of each test is P_FA / (F M) (Bonferroni), so that the chance of
    any false alarm on a record with no fault is at most P_FA.
-3. The most significant family that passes (its p-value below that level, and still
-   significant without its strongest line) is accepted; its lines are masked and the
-   others are tested again: a second fault is reported only with lines of its own
-   (a compound fault), never with lines the first one explains (3 x BPFO of a 6205 lies
-   0.7 % from 2 x BPFI).
+3. The most significant family that passes (its p-value below that level, its harmonics
+   alone too, and still significant without its strongest line) is accepted; its lines
+   and their intermodulation with the shaft and cage rates (:func:`explained`) are
+   masked and the others are tested again: a second fault is reported only with lines
+   of its own (a compound fault), never with lines the first one explains (3 x BPFO of
+   a 6205 lies 0.7 % from 2 x BPFI).
 4. FTF lines beside an accepted ball or outer-race series are that fault's cage-rate
-   modulation, not a cage fault.
+   modulation, not a cage fault. A cage-rate series whose ball lines reach
+   BALL_GIVEN_CAGE is a ball fault: the cage carries the defective ball through the
+   load zone (Randall & Antoni 2011, sec. 2), ball defects are far commoner than cage
+   failures, and a ball's own lines are often weak (issue 11: four CWRU ball records
+   were called "cage" from FTF lines alone).
 
 ``no fault detected`` is the verdict when no family passes.
 """
@@ -28,6 +33,9 @@ from .statistics import SUPPORT_ALPHA, normalised, series_test
 
 #: Verdict when no family passes.
 NO_FAULT = "no fault detected"
+#: Level the ball series must reach beside a significant cage-rate series for the verdict
+#: to be "ball" rather than "cage" [-] (the cage series already shows the periodicity).
+BALL_GIVEN_CAGE = 0.05
 #: Level at which a line of an accepted family is listed as one of its lines [-].
 LINE_ALPHA = 0.01
 
@@ -98,8 +106,23 @@ def test_all(spectra, fams: list[Family], valid: dict, max_frequency: float,
     return out
 
 
+def explained(test, modulations: tuple) -> list[float]:
+    """Frequencies an accepted series explains [Hz]: its lines, and around each harmonic
+    found its intermodulation with the shaft (+-1, 2 orders) and the cage (+-1): a
+    fault's impacts are modulated at both rates (load zone, unbalance, unequal balls),
+    and these products must not become the evidence of a second fault."""
+    out = [line.frequency_hz for line in test.lines]
+    shaft, ftf = modulations
+    for line in test.lines:
+        if line.kind != "harmonic":
+            continue
+        for fm, orders in ((shaft, (1, 2)), (ftf, (1,))):
+            out += [line.frequency_hz + s * k * fm for k in orders for s in (-1, 1)]
+    return out
+
+
 def decide(spectra, fams: list[Family], base_valid: dict, max_frequency: float,
-           harmonics: int, false_alarm: float) -> dict:
+           harmonics: int, false_alarm: float, modulations: tuple = (0.0, 0.0)) -> dict:
     """The greedy verdict over all methods (see the module docstring).
 
     Returns a dict with ``faults`` (accepted, most significant first), ``tests``
@@ -121,6 +144,7 @@ def decide(spectra, fams: list[Family], base_valid: dict, max_frequency: float,
                                key=lambda mt: (mt[1].log_p, mt[1].support_log_p))
             best[name] = (method, test)
         passing = [n for n in remaining if best[n][1].log_p < log_alpha
+                   and best[n][1].harmonic_log_p < log_alpha
                    and best[n][1].support_log_p < log_support]
         if not passing:
             break
@@ -128,13 +152,19 @@ def decide(spectra, fams: list[Family], base_valid: dict, max_frequency: float,
         accepted.append(winner)
         remaining.remove(winner)
         resolution = spectra[0].resolution
-        for line in best[winner][1].lines:
-            i = int(round(line.frequency_hz / resolution))
+        for f in explained(best[winner][1], modulations):
+            i = int(round(f / resolution))
             for spec in spectra:
-                mask_line(valid[spec.method], spec.z, i)
+                if 0 < i < spec.z.size:
+                    mask_line(valid[spec.method], spec.z, i)
     modulation = []
     if "cage" in accepted and ({"ball", "outer race"} & set(accepted)):
         accepted.remove("cage")
+        modulation = ["cage"]
+    elif "cage" in accepted and "ball" in best and \
+            best["ball"][1].log_p < math.log(BALL_GIVEN_CAGE):
+        # a cage-rate series with ball lines beside it: the cage carries a ball defect
+        accepted[accepted.index("cage")] = "ball"
         modulation = ["cage"]
     return {"faults": accepted, "tests": best, "alpha": alpha, "modulation": modulation}
 

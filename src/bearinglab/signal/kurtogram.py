@@ -32,6 +32,12 @@ from .spectra import rate, samples
 MIN_BAND_SAMPLES = 128
 #: Relative width of the cosine taper at each edge of a band (Tukey window parameter).
 TAPER = 0.25
+#: Highest frequency a band may reach, as a fraction of the sample rate: vibration
+#: analysers sample at 2.56 times their top frequency because the anti-aliasing filter
+#: rolls off above it (e.g. ISO 18431-1 practice; Randall R. B., Vibration-based Condition
+#: Monitoring, Wiley 2011, sec. 3.2); a band in that roll-off measures the filter and
+#: the converter's noise, not the machine.
+USABLE_FRACTION = 1.0 / 2.56
 
 
 class Kurtogram(NamedTuple):
@@ -67,7 +73,8 @@ def kurtogram_levels(max_level: int) -> list[tuple[float, int]]:
 
 
 def fast_kurtogram(x, sample_rate, max_level: int | None = None,
-                   min_bandwidth: float = 0.0) -> Kurtogram:
+                   min_bandwidth: float = 0.0,
+                   max_frequency: float | None = None) -> Kurtogram:
     """Fast kurtogram of ``x`` and its band of largest kurtosis (Antoni 2007).
 
     Parameters
@@ -82,6 +89,10 @@ def fast_kurtogram(x, sample_rate, max_level: int | None = None,
     min_bandwidth : float
         Narrowest band to consider [Hz], e.g. wide enough to pass a fault's modulation
         sidebands; deeper levels are skipped.
+    max_frequency : float, optional
+        Bands reaching above this frequency are not chosen [Hz]; default
+        USABLE_FRACTION x f_s (the anti-aliasing filter's roll-off). The whole band
+        (level 0) is always a candidate.
 
     Returns
     -------
@@ -117,6 +128,7 @@ def fast_kurtogram(x, sample_rate, max_level: int | None = None,
     elif (isinstance(max_level, bool) or not isinstance(max_level, (int, np.integer))
           or not 0 <= max_level <= deepest):
         raise InputError("max_level", max_level, f"an integer in [0, {deepest}]")
+    ceiling = USABLE_FRACTION * fs if max_frequency is None else float(max_frequency)
     nfft = scipy.fft.next_fast_len(n, real=True)
     spectrum = scipy.fft.rfft(x - x.mean(), n=nfft)
     df = fs / nfft
@@ -144,7 +156,10 @@ def fast_kurtogram(x, sample_rate, max_level: int | None = None,
         centres.append(mid)
         values.append(kurt)
         # the bands touching 0 Hz hold the mean and the low-frequency shaft lines: skip them
-        usable = np.arange(count) > 0 if count > 1 else np.ones(1, bool)
+        usable = ((np.arange(count) > 0) & (edges[1:] <= ceiling * (1 + 1e-9))
+                  if count > 1 else np.ones(1, bool))
+        if not usable.any():
+            continue
         k = int(np.argmax(np.where(usable, kurt, -np.inf)))
         if best is None or kurt[k] > best[0]:
             best = (float(kurt[k]), level, float(mid[k]), width)
