@@ -246,35 +246,32 @@ class LoadDistribution:
         return pd.DataFrame(self.stiffness_matrix, index=list(DOF_NAMES),
                             columns=list(DOF_NAMES))
 
-    def to_ross(self, n: int, damping: float = 0.0, tag: str | None = None):
-        """A ``ross.BearingElement`` with this operating point's stiffness.
+    def to_ross(self, n: int, damping: float | None = None, tag: str | None = None, *,
+                damping_factor: float | None = None):
+        """A ``ross.BearingElement`` with this operating point's stiffness (one speed).
 
-        ROSS (Timbo et al., the ``ross-rotordynamics`` package, an optional dependency:
-        ``pip install ross-rotordynamics``) models a bearing as x-y springs at a shaft node:
-        kxx, kxy, kyx, kyy and the axial kzz are taken from the tangent stiffness matrix at
-        this speed (``frequency`` = the shaft speed); the tilt terms have no place in a
-        ROSS bearing element and are left out. Ball bearings have little damping of their
-        own: give ``damping`` [N s/m] if you have a value (default 0).
+        See :func:`bearinglab.rotordynamics.ross_element` (ROSS, the optional
+        ``ross-rotordynamics`` package): kxx, kxy, kyx, kyy and kzz from the tangent
+        stiffness matrix at this shaft speed, damping ``damping`` [N s/m] or by default
+        Kramer's rule c = beta k; for coefficients at several speeds use
+        :func:`bearinglab.rotordynamics.bearing_element`.
 
         Parameters
         ----------
         n : int
             Shaft node of the bearing [-].
-        damping : float
+        damping : float, optional
             Direct damping cxx = cyy [N s/m].
         tag : str, optional
-            Element name; the bearing's name by default.
+            Element name; by default the bearing's name and the node [-].
+        damping_factor : float, optional
+            beta of Kramer's rule [s] (default rotordynamics.KRAMER_FACTOR).
         """
-        try:
-            import ross
-        except ImportError:
-            raise ImportError("to_ross() needs ROSS: pip install ross-rotordynamics") from None
-        k = self.stiffness_matrix
-        return ross.BearingElement(
-            n=n, kxx=float(k[0, 0]), kyy=float(k[1, 1]), kxy=float(k[0, 1]),
-            kyx=float(k[1, 0]), kzz=float(k[2, 2]), cxx=float(damping), cyy=float(damping),
-            frequency=[float(self.condition.shaft_speed)],
-            tag=tag or (self.bearing.name or "ball bearing"))
+        from ..rotordynamics import KRAMER_FACTOR, ross_element
+
+        return ross_element(self, n, tag=tag, damping=damping,
+                            damping_factor=KRAMER_FACTOR if damping_factor is None
+                            else damping_factor)
 
     def plot(self, axes=None):
         """Polar load distribution and contact angles; returns (fig, axes)."""
