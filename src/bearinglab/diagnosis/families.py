@@ -51,6 +51,9 @@ SIDEBANDS = {"outer race": ("shaft", 1), "inner race": ("shaft", 2), "ball": ("f
 #: Default tolerance windows (below, above), fractions of the kinematic value.
 TOLERANCES = {"outer race": (0.02, 0.02), "inner race": (0.02, 0.02), "ball": (0.07, 0.02),
               "cage": (0.02, 0.02)}
+#: Family -> sideband orders counted with its harmonics when asking whether the series
+#: stands without its sidebands (ball: the first cage sidebands, see statistics.py).
+GATE_ORDERS = {"outer race": 0, "inner race": 0, "ball": 1, "cage": 0}
 #: Keys accepted for a family in ``tolerances`` (JSON and CLI spellings too).
 ALIASES = {"outer race": "outer race", "outer": "outer race", "bpfo": "outer race",
            "inner race": "inner race", "inner": "inner race", "bpfi": "inner race",
@@ -72,6 +75,7 @@ class Family:
     above: float
     modulation: float | None
     orders: int
+    gate_orders: int = 0
 
     def to_dict(self) -> dict:
         """JSON form: ``kinematic_hz``, ``tolerance_below``, ``tolerance_above``,
@@ -119,5 +123,5 @@ def families(frequencies, windows: dict[str, tuple[float, float]]) -> list[Famil
         below, above = windows[name]
         out.append(Family(name, float(frequencies[FREQUENCY[name]]), below, above,
                           None if modulation is None else float(frequencies[modulation]),
-                          orders))
+                          orders, GATE_ORDERS[name]))
     return out

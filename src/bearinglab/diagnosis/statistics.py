@@ -34,9 +34,11 @@ The test of a fault family (outer race, inner race, ball, cage):
    Research Workers, 1932, sec. 21.1), the best fundamental is kept, and its p-value is
    multiplied by the number M of distinct line positions the scan tried (a Bonferroni
    bound on the search);
-5. the harmonics must be significant by themselves (sidebands support a series, they do
+5. the harmonics must be significant by themselves, at SUPPORT_ALPHA (sidebands support a series, they do
    not make one: a flexible template of harmonics and two orders of sidebands fits
-   stray lines, e.g. BPFO as a ball line's second cage sideband); and the series must
+   stray lines, e.g. BPFO as a ball line's second cage sideband) - for a ball fault with
+   their first cage sidebands, since the cage modulates a ball defect deeply (it
+   leaves the load zone every cage revolution); and the series must
    not rest on one line: combined again without its strongest line, it must still
    reach SUPPORT_ALPHA (an isolated line is more often a discrete component
    of the machine than a bearing fault; Randall & Antoni 2011, sec. 2: a fault shows as
@@ -230,7 +232,7 @@ def _window_max(z: np.ndarray, valid: np.ndarray):
 def series_test(z: np.ndarray, resolution: float, nu: float, fundamental: float,
                 below: float, above: float, harmonics: int, max_frequency: float,
                 modulation: float | None = None, orders: int = 0,
-                valid: np.ndarray | None = None) -> SeriesTest:
+                valid: np.ndarray | None = None, gate_orders: int = 0) -> SeriesTest:
     """Significance of the harmonic series n f' (n = 1..``harmonics``) with its sidebands
     n f' +- k ``modulation`` (k = 1..``orders``), f' scanned over
     [(1 - below) f, (1 + above) f] (see the module docstring).
@@ -257,6 +259,9 @@ def series_test(z: np.ndarray, resolution: float, nu: float, fundamental: float,
         Sideband orders either side.
     valid : numpy.ndarray of bool, optional
         Bins that may be read (False: masked discrete lines or another fault's lines).
+    gate_orders : int
+        Sideband orders counted with the harmonics in ``harmonic_log_p`` (0: harmonics
+        alone).
 
     Returns
     -------
@@ -297,7 +302,7 @@ def series_test(z: np.ndarray, resolution: float, nu: float, fundamental: float,
     lps = logp[best][row]
     rest = np.delete(lps, int(np.argmin(lps)))
     support = min(0.0, log_m + float(fisher_logp(rest))) if rest.size else 0.0
-    own = row & (k_arr == 0)
+    own = row & (np.abs(k_arr) <= gate_orders)
     harmonic = min(0.0, log_m + float(fisher_logp(logp[best][own]))) if own.any() else 0.0
     lines = []
     for j in np.flatnonzero(row):

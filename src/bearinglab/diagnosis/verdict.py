@@ -7,7 +7,8 @@
    methods the level of each test is P_FA / (F M) (Bonferroni), so that the chance of
    any false alarm on a record with no fault is at most P_FA.
 3. The most significant family that passes (its p-value below that level, its harmonics
-   alone too, and still significant without its strongest line) is accepted; its lines
+   alone below SUPPORT_ALPHA, and still below SUPPORT_ALPHA without its strongest line)
+   is accepted; its lines
    and their intermodulation with the shaft and cage rates (:func:`explained`) are
    masked and the others are tested again: a second fault is reported only with lines
    of its own (a compound fault), never with lines the first one explains (3 x BPFO of
@@ -102,7 +103,7 @@ def test_all(spectra, fams: list[Family], valid: dict, max_frequency: float,
         for fam in fams:
             out[spec.method, fam.name] = series_test(
                 z, spec.resolution, spec.nu, fam.frequency, fam.below, fam.above, harmonics,
-                max_frequency, fam.modulation, fam.orders, valid[spec.method])
+                max_frequency, fam.modulation, fam.orders, valid[spec.method], fam.gate_orders)
     return out
 
 
@@ -144,7 +145,7 @@ def decide(spectra, fams: list[Family], base_valid: dict, max_frequency: float,
                                key=lambda mt: (mt[1].log_p, mt[1].support_log_p))
             best[name] = (method, test)
         passing = [n for n in remaining if best[n][1].log_p < log_alpha
-                   and best[n][1].harmonic_log_p < log_alpha
+                   and best[n][1].harmonic_log_p < log_support
                    and best[n][1].support_log_p < log_support]
         if not passing:
             break
