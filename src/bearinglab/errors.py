@@ -15,8 +15,12 @@ class BearinglabError(Exception):
 class InputError(BearinglabError, ValueError):
     """A parameter is outside what the model allows.
 
+    A missing value (None) reads "is not given" rather than "= None".
+
     >>> str(InputError("ball_count", 2, "an integer >= 3"))
     'ball_count = 2 is not allowed: expected an integer >= 3'
+    >>> str(InputError("viscosity", None, "the operating viscosity [m^2/s]"))
+    'viscosity is not given: expected the operating viscosity [m^2/s]'
     """
 
     def __init__(self, parameter: str, value: object, allowed: str, hint: str = "") -> None:
@@ -24,7 +28,8 @@ class InputError(BearinglabError, ValueError):
         self.value = value
         self.allowed = allowed
         self.hint = hint
-        message = f"{parameter} = {value!r} is not allowed: expected {allowed}"
+        message = (f"{parameter} is not given: expected {allowed}" if value is None
+                   else f"{parameter} = {value!r} is not allowed: expected {allowed}")
         if hint:
             message += f" ({hint})"
         super().__init__(message)

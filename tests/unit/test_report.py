@@ -16,7 +16,7 @@ from bearinglab.report import SECTIONS, build_report
 from bearinglab.report import builder as report_builder
 
 REPORT = ["report", "6205", "--speed-rpm", "1797", "--radial-load-n", "1000",
-          "--duration-s", "0.25", "--slip-duration-s", "0.03"]
+          "--duration-s", "0.3", "--slip-duration-s", "0.03"]
 INNER = ["--defect", "inner:width_mm=1.0,depth_mm=0.2"]
 
 

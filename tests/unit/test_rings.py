@@ -216,14 +216,14 @@ def test_overrides_win_and_are_recorded():
 def test_to_dict_to_pandas_plot():
     r = paper(measured={2: 3800.0, 4: [9200.0, 10000.0]})
     d = json.loads(json.dumps(r.to_dict()))
-    assert d["ball_count"] == 8 and d["rigid_body_khz"] == 2.5
+    assert d["ball_count"] == 8 and d["rigid_body_frequency_hz"] == 2500.0
     m4 = next(m for m in d["modes"] if m["m"] == 4)
-    assert m4["approx_khz"] == pytest.approx([10.0, 11.1144], abs=1e-4)
-    assert m4["epsilon"][1] is None and m4["measured_khz"] == [9.2, 10.0]
+    assert m4["approx_hz"] == pytest.approx([10000.0, 11114.4], abs=0.1)
+    assert m4["epsilon"][1] is None and m4["measured_hz"] == [9200.0, 10000.0]
     assert set(d) >= {"ring_mass_kg", "radial_stiffness_n_per_m", "ball_mass_ratio", "modes",
                       "contact_stiffness_ratio", "axial_load_n", "contact_angle_deg"}
     df = r.to_pandas()
-    assert list(df.columns) == ["m", "model", "ball_position", "frequency_khz", "epsilon"]
+    assert list(df.columns) == ["m", "model", "ball_position", "frequency_hz", "epsilon"]
     assert set(df["model"]) == {"rigid body", "free", "approximate", "refined", "measured"}
     fig, ax = r.plot()
     assert ax.get_ylabel() == "natural frequency [kHz]"
@@ -236,7 +236,7 @@ def test_to_dict_to_pandas_plot():
 
 
 @pytest.mark.parametrize("kwargs, parameter", [
-    ({"modes": [1, 2]}, "modes"),
+    ({"modes": [0, 2]}, "modes"),
     ({"modes": [2.5]}, "modes"),
     ({"modes": []}, "modes"),
     ({"modes": [True]}, "modes"),
@@ -294,3 +294,18 @@ def test_bad_input_layer_1(call, parameter):
     with pytest.raises(InputError) as err:
         call()
     assert err.value.parameter == parameter
+
+
+def test_rigid_body_mode_on_request_and_stiffness_from_the_load_distribution():
+    """m = 1 (the ring as a rigid body, f_1) is listed first when asked for; K_x may come from
+    the load distribution's tangent stiffness instead of seed 000's closed form."""
+    r = ring_modes(B, axial_load=200.0, modes=[1, 2])
+    d = r.to_dict()
+    assert [m["m"] for m in d["modes"]] == [1, 2]
+    assert d["modes"][0]["approx_hz"] == [pytest.approx(r.rigid_body_frequency)]
+    assert [m.mode for m in r.modes] == [2]
+    solved = ring_modes(B, axial_load=200.0, radial_stiffness_from="load_distribution")
+    assert solved.sources["radial_stiffness"].startswith("load distribution")
+    assert solved.radial_stiffness > 0 and solved.radial_stiffness != r.radial_stiffness
+    with pytest.raises(InputError):
+        ring_modes(B, axial_load=200.0, radial_stiffness_from="guess")

@@ -31,7 +31,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
                               "angles, ring displacements and the 5x5 stiffness matrix.")),
     "stiffness-map": ("quasistatic", ("Radial and axial stiffness (and displacements) over a "
                                      "grid of loads and speeds.")),
-    "ring-modes": ("quasistatic", ("Natural frequencies of the outer ring in the loaded bearing "
+    "ring-modes": ("rings", ("Natural frequencies of the outer ring in the loaded bearing "
                                   "(seed 000).")),
     "simulate": ("simulate", ("Simulate the vibration of a bearing with defects and form errors "
                              "(seed 003 rigid model or seed 004 slip model).")),
@@ -45,6 +45,9 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "validate": ("validate", "Run every published case bearinglab reproduces."),
     "report": ("report", ("Write an engineer's report of a bearing at an operating point to one "
                          "self-contained HTML page.")),
+    "study": ("study", "Run one analysis over a grid of inputs or a table of cases, on dask."),
+    "dataset": ("dataset", ("Make labelled synthetic vibration records in the bearing-datasets "
+                           "layout, on dask.")),
 }
 
 

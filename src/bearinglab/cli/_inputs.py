@@ -175,7 +175,8 @@ class OptionError(InputError):
 
     def __init__(self, parameter: str, value, allowed: str, hint: str = "") -> None:
         super().__init__(parameter, value, allowed, hint)
-        message = f"{parameter} = {_show(value)} is not allowed: expected {allowed}"
+        message = (f"{parameter} is not given: expected {allowed}" if value is None
+                   else f"{parameter} = {_show(value)} is not allowed: expected {allowed}")
         self.args = (message + (f" ({hint})" if hint else ""),)
 
 
@@ -552,3 +553,27 @@ def check_path(flag: str, path: Path | None, suffixes: tuple[str, ...]) -> None:
         raise OptionError(flag, str(path), f"a file name ending in {', '.join(suffixes)}")
     if not path.parent.is_dir():
         raise OptionError(flag, str(path), "a path in an existing directory")
+
+
+def option_error(exc: InputError, options: dict) -> InputError:
+    """A library error in the command line's terms: the option that holds the parameter.
+
+    ``options`` maps a command's option names (``ring_mass_kg``, with the unit suffix of
+    :data:`bearinglab.units.UNITS`) to the values typed. The option whose name, less its
+    unit suffix, is the error's parameter is named, with the value as typed (or the
+    error's SI value in the option's unit). Errors of other parameters are returned as
+    they are."""
+    from ..units import unit_of
+
+    if isinstance(exc, OptionError):
+        return exc
+    for name, typed in options.items():
+        unit = unit_of(name)
+        base = name[:-len(unit.suffix) - 1] if unit is not None else name
+        if base != exc.parameter:
+            continue
+        value = typed
+        if value is None and isinstance(exc.value, (int, float)) and unit is not None:
+            value = unit.from_si(exc.value)
+        return OptionError("--" + name.replace("_", "-"), value, exc.allowed, exc.hint)
+    return exc

@@ -67,7 +67,7 @@ def _fmt(value, digits: int = 4) -> str:
 def _table(title: str, columns: list[str], rows: list[list]) -> Table:
     table = Table(title=title, title_justify="left", show_header=True, header_style="bold")
     for i, col in enumerate(columns):
-        table.add_column(col, justify="right" if i and col not in ("source", "meaning") else "left")
+        table.add_column(escape(col), justify="right" if i and col not in ("source", "meaning") else "left")
     for row in rows:
         table.add_row(*(_fmt(v) for v in row))
     return table

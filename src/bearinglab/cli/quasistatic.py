@@ -1,7 +1,6 @@
 """Commands of the load-distribution issue: static, stiffness-map, ring-modes."""
 
 import math
-from enum import Enum
 from pathlib import Path
 from typing import Annotated
 
@@ -18,11 +17,9 @@ from ..plotting import save_figure, stiffness_map_figure
 from ..quasistatic import solve_load_distribution
 from ..quasistatic.orbit import inner_ring_orbit
 from ..quasistatic.study import stiffness_map as stiffness_map_study
-from ..rings import ring_modes
 from ._app import command_app, console
 from ._forms import BallErrorOpt, FormErrors, SeedOpt, Surface3dOpt, WavinessOpt
 from ._inputs import (
-    MAX_LOAD_N,
     DesignationArg,
     JsonOpt,
     OptionError,
@@ -319,116 +316,3 @@ def _write_csv(table: pd.DataFrame, path: Path, index: bool = False,
         write_atomically(path, lambda tmp: table.to_csv(tmp, index=index))
     except OSError as exc:
         raise OptionError(flag, str(path), "a writable file", exc.strerror) from None
-
-
-class StiffnessSource(str, Enum):
-    closed_form = "closed-form"
-    load_distribution = "load-distribution"
-
-
-def _modes(text: str) -> list[int]:
-    try:
-        if ":" in text:
-            a, b = (int(v) for v in text.split(":"))
-            ms = list(range(a, b + 1))
-        else:
-            ms = [int(v) for v in text.split(",")]
-    except ValueError:
-        ms = []
-    if not ms or min(ms) < 1 or max(ms) > 50:
-        raise OptionError("--modes", text, "FIRST:LAST or a list of mode numbers 1..50")
-    return ms
-
-
-def _khz_list(text: str | None) -> list[float] | None:
-    if text is None:
-        return None
-    try:
-        values = [float(v) * 1e3 for v in text.split(",")]
-    except ValueError:
-        values = []
-    if not values or not all(math.isfinite(v) and v > 0 for v in values):
-        raise OptionError("--free-frequencies-khz", text, "positive frequencies f2,f3,... [kHz]")
-    return values
-
-
-@app.command("ring-modes")
-@with_geometry
-def ring_modes_command(
-        designation: DesignationArg = None,
-        axial_load_n: Annotated[float, typer.Option("--axial-load-n",
-                                                    help="Axial load A [N].")] = 200.0,
-        modes: Annotated[str, typer.Option("--modes", help="Modes FIRST:LAST or m1,m2,...; "
-                                           "m = 1 is the rigid-body mode.")] = "2:6",
-        ring_mass_kg: Annotated[float | None, typer.Option(
-            "--ring-mass-kg", help="Vibrating mass of the outer ring incl. sensors [kg].",
-            show_default=False)] = None,
-        radial_stiffness_n_per_m: Annotated[float | None, typer.Option(
-            "--radial-stiffness-n-per-m", help="Radial bearing stiffness K_x [N/m].",
-            show_default=False)] = None,
-        free_frequencies_khz: Annotated[str | None, typer.Option(
-            "--free-frequencies-khz", help="Measured free-ring frequencies f2,f3,... [kHz].",
-            show_default=False)] = None,
-        ball_mass_ratio: Annotated[float | None, typer.Option(
-            "--ball-mass-ratio", help="kappa = n m_b / m_k.", show_default=False)] = None,
-        contact_stiffness_ratio: Annotated[float | None, typer.Option(
-            "--contact-stiffness-ratio", help="K1/K2 (outer over inner contact stiffness).",
-            show_default=False)] = None,
-        stiffness_from: Annotated[StiffnessSource, typer.Option(
-            "--stiffness-from", help="K_x from seed 000's closed form (axial load, contact "
-            "angle) or from the load-distribution stiffness at the axial load.")]
-        = StiffnessSource.closed_form,
-        json_output: JsonOpt = False, plot: PlotOpt = None, *, geometry):
-    """Natural frequencies of the outer ring in the loaded bearing (seed 000)."""
-    _check_output(("--plot", plot))
-    ms = _modes(modes)
-    flexural = [m for m in ms if m >= 2]
-    free = _khz_list(free_frequencies_khz)
-    if free is not None:
-        if len(free) != len(flexural):
-            raise OptionError("--free-frequencies-khz", free_frequencies_khz,
-                              f"{len(flexural)} values, one per flexural mode {flexural}")
-        free = dict(zip(flexural, free))
-    for flag, value in (("--ring-mass-kg", ring_mass_kg),
-                        ("--radial-stiffness-n-per-m", radial_stiffness_n_per_m),
-                        ("--ball-mass-ratio", ball_mass_ratio),
-                        ("--contact-stiffness-ratio", contact_stiffness_ratio)):
-        if value is not None and not (math.isfinite(value) and 0 < value < 1e15):
-            raise OptionError(flag, value, "a finite value > 0")
-    if not (math.isfinite(axial_load_n) and 0 < axial_load_n <= MAX_LOAD_N):
-        raise OptionError("--axial-load-n", axial_load_n, f"a load in (0, {MAX_LOAD_N:g}] N")
-    bearing, _ = resolve_bearing(designation, geometry)
-    if stiffness_from is StiffnessSource.load_distribution and radial_stiffness_n_per_m is None:
-        radial_stiffness_n_per_m = solve_load_distribution(
-            bearing, OperatingCondition(axial_load=axial_load_n)).radial_stiffness
-    result = ring_modes(bearing, axial_load=axial_load_n, modes=flexural or [2],
-                        ring_mass=ring_mass_kg, radial_stiffness=radial_stiffness_n_per_m,
-                        free_frequencies=free, ball_mass_ratio=ball_mass_ratio,
-                        contact_stiffness_ratio=contact_stiffness_ratio)
-    d = result.to_dict()
-    if stiffness_from is StiffnessSource.load_distribution and "--radial-stiffness" not in str(
-            d["sources"].get("radial_stiffness")):
-        d["sources"]["radial_stiffness"] = ("load distribution: tangent radial stiffness at "
-                                            f"F_a = {axial_load_n:g} N")
-    d["modes"] = [m for m in d["modes"] if m["m"] in ms]
-    if 1 in ms:   # the rigid-body mode of the ring on the ball springs, f_1 of eq. (1.7)
-        d["modes"].insert(0, {"m": 1, "free_khz": 0.0, "split": False,
-                              "approx_khz": [d["rigid_body_khz"]], "refined_khz": [],
-                              "epsilon": []})
-    if plot is not None:
-        _save_plot(result, plot)
-    if json_output:
-        _emit_json({"designation": designation, **d})
-        return
-    rows = [[m["m"], m["free_khz"], ", ".join(f"{f:.4g}" for f in m["approx_khz"]),
-             ", ".join(f"{f:.4g}" for f in m["refined_khz"]),
-             ", ".join("-" if e is None else f"{e:.4g}" for e in m["epsilon"])]
-            for m in d["modes"]]
-    console.print(_table(f"{bearing.name or 'bearing'}: outer-ring modes at A = "
-                         f"{axial_load_n:g} N (kHz)",
-                         ["m", "free ring", "approximate", "refined (ball masses)", "epsilon"],
-                         rows))
-    console.print(f"ring mass {d['ring_mass_kg']:.4g} kg, K_x {d['radial_stiffness_n_per_m']:.4g}"
-                  f" N/m, f_1 {d['rigid_body_khz']:.4g} kHz, kappa {d['ball_mass_ratio']:.3g}, "
-                  f"K1/K2 {d['contact_stiffness_ratio']:.3g}")
-    _print_warnings(_geometry_warnings(bearing))

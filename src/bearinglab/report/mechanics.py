@@ -224,13 +224,14 @@ def rings(ctx: Context):
     if not k > 0:
         raise ValueError(f"the radial stiffness at the operating point is {k:g} N/m: the ring "
                          "is not supported by the balls in the radial direction")
-    m = ring_modes(ctx.bearing, radial_stiffness=k, modes=RING_MODES)
+    m = ring_modes(ctx.bearing, radial_stiffness=k, modes=(1, *RING_MODES))
     d = m.to_dict()
-    rows = [[1, None, d["rigid_body_khz"], None, "ring as a rigid body on the ball springs"]]
+    rows = []
     for mode in d["modes"]:
-        rows.append([mode["m"], mode["free_khz"], ", ".join(f"{f:.4g}" for f in
-                                                           mode["approx_khz"]),
-                     ", ".join(f"{f:.4g}" for f in mode["refined_khz"]),
+        rows.append([mode["m"], mode["free_hz"] / 1e3 if mode["m"] > 1 else None,
+                     ", ".join(f"{f / 1e3:.4g}" for f in mode["approx_hz"]),
+                     ", ".join(f"{f / 1e3:.4g}" for f in mode["refined_hz"]) or None,
+                     "ring as a rigid body on the ball springs" if mode["m"] == 1 else
                      "balls at nodes / antinodes" if mode["split"] else ""])
     body = [paragraph("Flexural modes of the outer ring supported by the loaded balls "
                       "(seed 000, Balmont & Varlamov 1986): the free-ring frequency f*_m of "
@@ -246,4 +247,5 @@ def rings(ctx: Context):
             notes([("The outer ring vibrates on the balls alone, as in the paper's test (a "
                     "ring hung free): a ring pressed into a housing vibrates with the housing, "
                     "and its resonances are then those of the assembly.")], "Assumptions")]
-    return "".join(body), [("Ring mode m=2", f"{number(d['modes'][0]['approx_khz'][0], 3)} kHz")]
+    m2 = next(mode for mode in d["modes"] if mode["m"] == 2)
+    return "".join(body), [("Ring mode m=2", f"{number(m2['approx_hz'][0] / 1e3, 3)} kHz")]

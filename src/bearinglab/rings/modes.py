@@ -52,8 +52,8 @@ class RingModes:
     ``rigid_body_frequency`` f_1 [Hz], ``ball_mass_ratio`` kappa, ``contact_stiffness_ratio``
     K1/K2, ``ring_mass`` [kg], ``radial_stiffness`` K_x [N/m], ``axial_load`` [N],
     ``contact_angle`` [rad] (None where not used), ``bearing``, ``measured``
-    ((m, (Hz, ...)) pairs, for comparison) and ``sources`` (input -> user, bearing, derived
-    or default).
+    ((m, (Hz, ...)) pairs, for comparison), ``sources`` (input -> user, bearing, derived
+    or default) and ``rigid_body_mode`` (mode 1 was asked for: the tables show it).
     """
 
     modes: tuple[RingMode, ...]
@@ -68,6 +68,7 @@ class RingModes:
     bearing: object = field(default=None, repr=False)
     measured: tuple = ()
     sources: dict = field(default_factory=dict, compare=False)
+    rigid_body_mode: bool = False
 
     def mode(self, m: int) -> RingMode:
         """The :class:`RingMode` of mode number ``m``."""
@@ -77,17 +78,23 @@ class RingModes:
         return found[0]
 
     def to_dict(self) -> dict:
-        """JSON-ready dict in engineering units (kHz, kg, N, N/m, deg)."""
+        """JSON-ready dict in engineering units (Hz, kg, N, N/m, deg); mode 1, the ring as
+        a rigid body on the ball springs (eq. 1.7), first when it was asked for."""
         measured, modes = dict(self.measured), []
+        if self.rigid_body_mode:
+            modes.append({"m": 1, "free_hz": 0.0, "split": False,
+                          "approx_hz": [self.rigid_body_frequency],
+                          "approx_ball_position": ["any"], "refined_hz": [], "epsilon": [],
+                          "refined_ball_position": [], "p": None})
         for r in self.modes:
-            d = {"m": r.mode, "free_khz": r.free / 1e3, "split": r.split,
-                 "approx_khz": [f / 1e3 for f in r.approximate],
+            d = {"m": r.mode, "free_hz": r.free, "split": r.split,
+                 "approx_hz": list(r.approximate),
                  "approx_ball_position": ["nodes", "antinodes"] if r.split else ["any"],
-                 "refined_khz": [f / 1e3 for f in r.refined], "epsilon": list(r.epsilon),
+                 "refined_hz": list(r.refined), "epsilon": list(r.epsilon),
                  "refined_ball_position": list(r.positions),
                  "p": r.p if math.isfinite(r.p) else None}
             if r.mode in measured:
-                d["measured_khz"] = [f / 1e3 for f in measured[r.mode]]
+                d["measured_hz"] = list(measured[r.mode])
             modes.append(d)
         angle = self.contact_angle
         return {"bearing": getattr(self.bearing, "name", None) or None,
@@ -95,18 +102,18 @@ class RingModes:
                 "contact_angle_deg": None if angle is None else math.degrees(angle),
                 "ring_mass_kg": self.ring_mass,
                 "radial_stiffness_n_per_m": self.radial_stiffness,
-                "rigid_body_khz": self.rigid_body_frequency / 1e3,
+                "rigid_body_frequency_hz": self.rigid_body_frequency,
                 "ball_mass_ratio": self.ball_mass_ratio,
                 "contact_stiffness_ratio": self.contact_stiffness_ratio,
                 "sources": dict(self.sources), "modes": modes}
 
     def to_pandas(self):
         """One row per (m, model, solution): m, model (rigid body, free, approximate,
-        refined, measured), ball_position, frequency_khz, epsilon."""
+        refined, measured), ball_position, frequency_hz, epsilon."""
         import pandas as pd
 
         def row(m, model, f, pos="", eps=None):
-            return {"m": m, "model": model, "ball_position": pos, "frequency_khz": f / 1e3,
+            return {"m": m, "model": model, "ball_position": pos, "frequency_hz": f,
                     "epsilon": eps}
 
         rows, measured = [row(1, "rigid body", self.rigid_body_frequency)], dict(self.measured)
@@ -133,7 +140,7 @@ class RingModes:
                                             ("measured", "x"))):
             part = df[df["model"] == model]
             if len(part):
-                ax.plot(part["m"] + 0.08 * (i - 2), part["frequency_khz"], marker,
+                ax.plot(part["m"] + 0.08 * (i - 2), part["frequency_hz"] / 1e3, marker,
                         color=f"C{i}", linestyle="none", label=model)
         ax.set_xticks([1] + [r.mode for r in self.modes])
         ax.set_xlabel("mode number m (1: ring as a rigid body)")
@@ -169,7 +176,8 @@ _rigid_body = rigid_body_frequency  # the keyword of ring_modes shadows the name
 def ring_modes(bearing=None, *, axial_load=None, contact_angle=None, modes=range(2, 7),
                ring_mass=None, radial_stiffness=None, rigid_body_frequency=None,
                free_frequencies=None, ball_mass_ratio=None, contact_stiffness_ratio=None,
-               ball_count=None, measured=None) -> RingModes:
+               ball_count=None, measured=None,
+               radial_stiffness_from: str = "closed_form") -> RingModes:
     """Outer-ring natural frequencies of a ball bearing under axial load (seed 000).
 
     Every input of the paper can be given; the rest comes from ``bearing``: f*_m from its
@@ -188,7 +196,8 @@ def ring_modes(bearing=None, *, axial_load=None, contact_angle=None, modes=range
     contact_angle : float or None
         tau for K_x and the Hertz constants [rad].
     modes : iterable of int
-        Mode numbers m >= 2 [-].
+        Mode numbers m >= 1 [-]; m = 1 is the ring as a rigid body on the ball springs
+        (f_1, eq. 1.7), m >= 2 the flexural modes.
     ring_mass : float or None
         Vibrating mass of the ring and what is attached to it, m_h [kg].
     radial_stiffness : float or None
@@ -205,6 +214,11 @@ def ring_modes(bearing=None, *, axial_load=None, contact_angle=None, modes=range
         n >= 3, instead of the bearing's [-].
     measured : dict or None
         Measured resonances to compare, m -> value or list of values [Hz].
+    radial_stiffness_from : str
+        Where K_x comes from when it is not given: ``"closed_form"`` (seed 000's
+        K_x = 0.75 (n K_n)^(2/3) (A / sin tau)^(1/3) cos^2 tau) or ``"load_distribution"``
+        (the tangent radial stiffness of :func:`bearinglab.quasistatic.solve_load_distribution`
+        at the axial load, which counts the contact angle the load produces) [-].
 
     >>> r = ring_modes(ball_count=8, rigid_body_frequency=2500.0, ball_mass_ratio=0.33,
     ...                free_frequencies={4: 10000.0}, modes=[4])
@@ -212,10 +226,14 @@ def ring_modes(bearing=None, *, axial_load=None, contact_angle=None, modes=range
     [10.0, 11.11, 9.46, 10.0, 14.46]
     """
     ms = list(modes) if not isinstance(modes, (str, bytes)) else []
-    if not ms or any(isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < 2
+    if not ms or any(isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < 1
                      for m in ms):
-        raise InputError("modes", modes, "mode numbers m >= 2 (m = 1 is the rigid body)")
-    ms = sorted({int(m) for m in ms})
+        raise InputError("modes", modes, "mode numbers m >= 1 (m = 1 is the rigid body)")
+    if radial_stiffness_from not in ("closed_form", "load_distribution"):
+        raise InputError("radial_stiffness_from", radial_stiffness_from,
+                         "'closed_form' or 'load_distribution'")
+    rigid_mode = 1 in ms
+    ms = sorted({int(m) for m in ms if m >= 2})
     src: dict[str, str] = {}
     n = ball_count if ball_count is not None else getattr(bearing, "ball_count", None)
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 3:
@@ -251,8 +269,18 @@ def ring_modes(bearing=None, *, axial_load=None, contact_angle=None, modes=range
         src["radial_stiffness"], axial_load = "user", None
     elif bearing is not None and axial_load is not None:
         axial_load = _scalar("axial_load", axial_load, "[N]")
-        radial_stiffness = float(radial_stiffness_under_axial_load(n, k_n, axial_load, alpha))
-        src["radial_stiffness"] = "derived (K_n, axial load)"
+        if radial_stiffness_from == "load_distribution":
+            from ..operating import OperatingCondition
+            from ..quasistatic import solve_load_distribution
+
+            radial_stiffness = solve_load_distribution(
+                bearing, OperatingCondition(axial_load=axial_load)).radial_stiffness
+            src["radial_stiffness"] = ("load distribution: tangent radial stiffness at "
+                                       f"F_a = {axial_load:g} N")
+        else:
+            radial_stiffness = float(radial_stiffness_under_axial_load(n, k_n, axial_load,
+                                                                       alpha))
+            src["radial_stiffness"] = "derived (K_n, axial load)"
     else:
         axial_load = None
     if rigid_body_frequency is not None:
@@ -291,4 +319,4 @@ def ring_modes(bearing=None, *, axial_load=None, contact_angle=None, modes=range
     meas = tuple((int(m), tuple(_scalar("measured", x, "[Hz]") for x in np.atleast_1d(v)))
                  for m, v in _per_mode(measured, ms, "measured").items())
     return RingModes(tuple(results), int(n), f1, kappa, ratio, ring_mass, radial_stiffness,
-                     axial_load, alpha, bearing, meas, src)
+                     axial_load, alpha, bearing, meas, src, rigid_mode)
