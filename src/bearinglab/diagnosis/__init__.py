@@ -33,6 +33,7 @@ from .analysis import (
     HARMONICS,
     MAX_FREQUENCY_FACTOR,
     PREFERRED_CHANNELS,
+    SIMULATED_METHODS,
     analyze_signal,
 )
 from .families import FAMILIES, TOLERANCES
@@ -41,5 +42,6 @@ from .result import Diagnosis, measured_ball_defect_frequency, peak_label
 from .verdict import NO_FAULT
 
 __all__ = ["COUNT", "DEFAULT_METHODS", "FALSE_ALARM", "FAMILIES", "HARMONICS",
-           "MAX_FREQUENCY_FACTOR", "METHODS", "NO_FAULT", "PREFERRED_CHANNELS", "TOLERANCES",
+           "MAX_FREQUENCY_FACTOR", "METHODS", "NO_FAULT", "PREFERRED_CHANNELS", "SIMULATED_METHODS",
+           "TOLERANCES",
            "Diagnosis", "analyze_signal", "measured_ball_defect_frequency", "peak_label"]

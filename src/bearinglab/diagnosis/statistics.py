@@ -77,7 +77,7 @@ def welch_dof(nperseg: int, noverlap: int, n: int, window: np.ndarray | None = N
     >>> round(welch_dof(256, 0, 256), 6)                  # one segment: chi-square 2
     2.0
     >>> round(welch_dof(256, 128, 256 * 10), 2)           # 19 Hann segments, 50 % overlap
-    36.06
+    37.93
     """
     if window is None:
         window = np.hanning(nperseg + 1)[:-1] if nperseg > 1 else np.ones(1)  # periodic Hann

@@ -35,8 +35,8 @@ import scipy.signal
 from ..errors import InputError
 from .spectra import rate, samples
 
-#: Longest DRS segment [s of signal per Hz of resolution]: 1/0.5 s segments resolve
-#: discrete lines 0.5 Hz apart... capped by the record length (see ``drs_segment``).
+#: Resolution of the DRS filter [Hz]: segments of about 1 s separate discrete lines 1 Hz
+#: apart (shaft harmonics and supply lines); capped by the record length (``drs_segment``).
 DRS_RESOLUTION_HZ = 1.0
 #: Fewest segment pairs a DRS filter is averaged over: with K pairs the gain of a random
 #: bin scatters about 1/sqrt(K) (Antoni & Randall 2004, sec. 4).
@@ -82,8 +82,8 @@ def drs_segment(n: int, sample_rate: float) -> int:
     """DRS segment length [samples]: a power of two giving about DRS_RESOLUTION_HZ, but
     short enough for DRS_MIN_AVERAGES half-overlapping segment pairs in ``n`` samples."""
     target = 2 ** int(np.ceil(np.log2(max(sample_rate / DRS_RESOLUTION_HZ, 16))))
-    # K half-overlapping segments plus a delay of a quarter segment need (K/2 + 1.25) N
-    fit = 2 ** int(np.floor(np.log2(max(n / (DRS_MIN_AVERAGES / 2 + 1.25), 16))))
+    # K half-overlapping segment pairs, each two segments long, need (K/2 + 2) N samples
+    fit = 2 ** int(np.floor(np.log2(max(n / (DRS_MIN_AVERAGES / 2 + 2), 16))))
     return int(max(16, min(target, fit)))
 
 
@@ -103,7 +103,10 @@ def discrete_random_separation(x, sample_rate, segment_length: int | None = None
         default :func:`drs_segment`.
     delay : int, optional
         Delay D [samples] between the two copies of x, longer than the correlation length
-        of the random part and shorter than N; default N/4.
+        of the random part; default N. With D < N the two windowed segments share
+        samples, and even white noise is then correlated between them (the cross-spectrum
+        of the shared samples is sigma^2 sum w(t) w(t + D)): D >= N keeps the random part
+        out of H.
 
     Returns
     -------
@@ -131,9 +134,10 @@ def discrete_random_separation(x, sample_rate, segment_length: int | None = None
         raise InputError("segment_length", segment_length,
                          f"an integer number of samples in [16, {n // 4}]")
     nseg = int(nseg)
-    lag = nseg // 4 if delay is None else delay
-    if isinstance(lag, bool) or not isinstance(lag, (int, np.integer)) or not 1 <= lag < nseg:
-        raise InputError("delay", delay, f"an integer number of samples in [1, {nseg - 1}]")
+    lag = nseg if delay is None else delay
+    if (isinstance(lag, bool) or not isinstance(lag, (int, np.integer))
+            or not 1 <= lag <= n - 2 * nseg):
+        raise InputError("delay", delay, f"an integer number of samples in [1, {n - 2 * nseg}]")
     lag = int(lag)
     y = x - x.mean()
     window = scipy.signal.get_window("hann", nseg)
