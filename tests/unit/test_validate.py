@@ -9,8 +9,8 @@ import pytest
 
 from bearinglab import validation
 from bearinglab.cli import main
-from bearinglab.cli.validate import run_case, summarize, verdict
 from bearinglab.validation import Case, datasets, seed000, seed004
+from bearinglab.validation.run import run_case, summarize, verdict
 
 CASE_KEYS = {"source", "quantity", "published", "computed", "unit", "error_percent", "passed",
              "known_failure", "tolerance_percent"}

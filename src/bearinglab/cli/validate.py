@@ -3,73 +3,18 @@
 source, published and computed value, error and verdict."""
 
 import datetime
-import math
-import time
 from pathlib import Path
 from typing import Annotated
 
 import typer
-from rich.console import Console
 from rich.markup import escape
-from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 from rich.table import Table
 
 from ._app import command_app, console
 from ._inputs import JsonOpt, OptionError
-from ._output import _emit_json
+from ._output import _emit_json, progress_bar
 
 app = command_app()
-
-#: Verdicts that leave the exit code at 0.
-GOOD_VERDICTS = ("pass", "known failure")
-
-
-def verdict(passed: bool | None, known_failure: str | None) -> str:
-    """pass, fail, known failure (documented, fails as expected) or unexpected pass; a
-    case whose computation raised is "error" (``passed`` None).
-
-    >>> verdict(True, None), verdict(False, "why"), verdict(True, "why")
-    ('pass', 'known failure', 'unexpected pass')
-    """
-    if passed is None:
-        return "error"
-    if known_failure:
-        return "unexpected pass" if passed else "known failure"
-    return "pass" if passed else "fail"
-
-
-def _finite(value):
-    return value if isinstance(value, float) and math.isfinite(value) else None
-
-
-def run_case(case) -> dict:
-    """One case as a JSON-ready dict with its ``verdict`` (an exception is an "error")."""
-    out = {"source": case.source, "quantity": case.quantity, "published": case.published,
-           "computed": None, "unit": case.unit, "error_percent": None, "passed": False,
-           "known_failure": case.known_failure, "tolerance_percent": case.rel_tol * 100.0,
-           "tolerance_reason": case.tolerance_reason, "error": None}
-    try:
-        result = case.run()
-    except Exception as exc:  # noqa: BLE001 - a broken case is reported, the others still run
-        out["error"] = f"{type(exc).__name__}: {exc}"
-        out["verdict"] = verdict(None, case.known_failure)
-        return out
-    out.update(computed=_finite(result.computed), error_percent=_finite(result.error_percent),
-               passed=bool(result.passed))
-    out["verdict"] = verdict(result.passed, case.known_failure)
-    return out
-
-
-def summarize(results: list[dict], seconds: float) -> dict:
-    """Counts by verdict and ``ok`` (every case passed or failed as documented)."""
-    count = {v: sum(r["verdict"] == v for r in results)
-             for v in ("pass", "known failure", "fail", "unexpected pass", "error")}
-    return {"total": len(results), "passed": count["pass"],
-            "known_failures": count["known failure"], "failed": count["fail"],
-            "unexpected_passes": count["unexpected pass"], "errors": count["error"],
-            "ok": all(r["verdict"] in GOOD_VERDICTS for r in results),
-            "duration_s": seconds}
-
 
 def _cell(value, digits: int = 5) -> str:
     return "-" if value is None else f"{value:.{digits}g}"
@@ -124,35 +69,25 @@ def validate_command(
     non-reproduction, with its reason). Exit code 0 when every case passes or fails as
     documented; 1 when a case that should pass fails (or raises), or a known failure
     unexpectedly passes. Some cases run simulations: expect a minute or two."""
-    from .. import validation
+    from ..validation.run import run_validation
 
     if html is not None and (html.suffix.lower() not in (".html", ".htm")
                              or not html.parent.is_dir()):
         raise OptionError("--html", str(html), "a file name ending in .html or .htm in an "
                           "existing directory")
-    cases = validation.all_cases()
-    err = Console(stderr=True)
-    start = time.perf_counter()
-    results = []
-    with Progress(TextColumn("validate"), BarColumn(), TextColumn("{task.completed}/"
-                                                                  "{task.total}"),
-                  TimeElapsedColumn(), TextColumn("{task.description}"), console=err,
-                  transient=True, disable=not err.is_terminal) as progress:
-        task = progress.add_task("", total=len(cases))
-        for case in cases:
-            progress.update(task, description=escape(f"{case.source}: {case.quantity}"[:60]))
-            results.append(run_case(case))
-            progress.advance(task)
-    summary = summarize(results, time.perf_counter() - start)
+    with progress_bar("validate", enabled=not json_output) as update:
+        result = run_validation(progress=lambda done, total, label: update(
+            done / total, escape(f"validate {done + 1}/{total}: {label}"[:70])))
+    results, summary = list(result.results), result.summary
     if html is not None:
         _write_html(html, results, summary)
     if json_output:
-        _emit_json({"cases": results, "summary": summary})
+        _emit_json(result.to_dict())
     else:
         _print(results, summary)
         if html is not None:
             console.print(f"HTML written to {escape(str(html))}")
-    if not summary["ok"]:
+    if not result.ok:
         raise typer.Exit(code=1)
 
 
