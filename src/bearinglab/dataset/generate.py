@@ -236,11 +236,9 @@ def make_dataset(output, records: int, *, seed: int = 0, partition_size: int | N
     metas = [own / f"meta-{i:0{pwidth}d}.parquet" for i in range(len(spans))]
     files = [f"part-{layout.DTYPE}-{i:0{pwidth}d}.parquet" for i in range(len(spans))]
     todo = [i for i in range(len(spans)) if not metas[i].exists()]
-    (folder / "signals").mkdir(parents=True, exist_ok=True)
-    own.mkdir(exist_ok=True)
-    write_atomically(own / MARKER, lambda tmp: Path(tmp).write_text(json.dumps(
-        {"kind": "bearinglab dataset", "bearinglab_version": __version__, "records": records,
-         "seed": seed, "identity": identity}, indent=1, default=str), encoding="utf-8"))
+    marker = json.dumps({"kind": "bearinglab dataset", "bearinglab_version": __version__,
+                         "records": records, "seed": seed, "identity": identity}, indent=1,
+                        default=str)
     tasks = [(spec, seed, name, *spans[i], width, files[i]) for i in todo]
     units = [spans[i][1] - spans[i][0] for i in todo]
     where = {spans[i]: i for i in todo}
@@ -258,7 +256,12 @@ def make_dataset(output, records: int, *, seed: int = 0, partition_size: int | N
 
     seconds, memory, info = 0.0, {}, ("-", 0, None)
     if tasks:
+        # connect first: an unreachable scheduler leaves no folder behind
         with execute.open_runner(scheduler, workers, connect_timeout) as runner:
+            (folder / "signals").mkdir(parents=True, exist_ok=True)
+            own.mkdir(exist_ok=True)
+            write_atomically(own / MARKER, lambda tmp: Path(tmp).write_text(
+                marker, encoding="utf-8"))
             info = (runner.scheduler, runner.workers, runner.dashboard)
             execute.warm(runner, ("bearinglab.dynamics",), (_warm, (spec, seed)))
             seconds = execute.run_partitions(runner, _partition, tasks, units, write,

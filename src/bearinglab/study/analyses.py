@@ -410,10 +410,10 @@ def error_text(exc: BaseException) -> str:
 
 
 def warm_up(args) -> None:
-    """Run one case (outputs discarded): loads the analysis' compiled kernels."""
-    name, case = args
+    """Run a few cases (outputs discarded): loads the analysis' compiled kernels."""
+    name, cases = args
     a = analysis(name)
-    run_cases(a, [{**case, **a.probe}], 0)
+    run_cases(a, [{**case, **a.probe} for case in cases], 0)
 
 
 def run_cases(a: Analysis, cases: list[dict], seed: int) -> list[dict]:

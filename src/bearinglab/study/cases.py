@@ -304,9 +304,9 @@ def partitions(count: int, size: int) -> list[tuple[int, int]]:
 
 def default_partition_size(count: int, largest: int) -> int:
     """Cases per partition: at most ``largest`` (a few seconds of work), and small enough
-    that a study has at least 64 partitions to spread; it depends on the case count only,
+    that a study has at least 32 partitions to spread; it depends on the case count only,
     so the partitioning (and so a resumed study) is the same on any cluster."""
-    return max(1, min(largest, math.ceil(count / 64)))
+    return max(1, min(largest, math.ceil(count / 32)))
 
 
 def canonical(obj) -> str:

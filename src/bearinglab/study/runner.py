@@ -240,13 +240,12 @@ def run_study(analysis: str, grid: dict | None = None, *, cases=None, output,
     names = [f"part-{i:0{width}d}.parquet" for i in range(len(spans))]
     todo = [i for i, n in enumerate(names) if not (folder / n).exists()]
     inputs = list(source.columns)
-    folder.mkdir(parents=True, exist_ok=True)
-    write_atomically(folder / MARKER, lambda tmp: Path(tmp).write_text(json.dumps(
+    marker = json.dumps(
         {"kind": "bearinglab study", "bearinglab_version": __version__, "analysis": a.name,
          "cases": count, "seed": seed, "partitions": len(spans), "identity": identity,
          "inputs": inputs, "outputs": list(a.outputs),
          "defaults": {k: o.default for k, o in a.options.items() if k not in inputs}},
-        indent=1, default=str), encoding="utf-8"))
+        indent=1, default=str)
     tasks, units = [], []
     for i in todo:
         start, stop = spans[i]
@@ -264,10 +263,15 @@ def run_study(analysis: str, grid: dict | None = None, *, cases=None, output,
     seconds, memory = 0.0, {}
     runner_info = ("-", 0, None)
     if tasks:
+        # connect first: an unreachable scheduler leaves no folder behind
         with execute.open_runner(scheduler, workers, connect_timeout) as runner:
+            folder.mkdir(parents=True, exist_ok=True)
+            write_atomically(folder / MARKER, lambda tmp: Path(tmp).write_text(
+                marker, encoding="utf-8"))
             runner_info = (runner.scheduler, runner.workers, runner.dashboard)
-            first = tasks[0][2] if isinstance(tasks[0][2], list) else source.rows(0, 1)
-            execute.warm(runner, a.warm, (warm_up, (a.name, first[0])))
+            # a few first cases (the very first may fail, e.g. an unloaded stiffness case)
+            first = source.rows(0, min(count, 3))
+            execute.warm(runner, a.warm, (warm_up, (a.name, first)))
             seconds = execute.run_partitions(
                 runner, _partition, tasks, units, write, progress=progress, label=a.name,
                 total=count, done=count - sum(units))

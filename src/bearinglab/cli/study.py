@@ -1,0 +1,182 @@
+"""The ``study`` command: one analysis over a grid of inputs or a table of cases, on dask
+(bearinglab.study.run_study)."""
+
+from pathlib import Path
+from typing import Annotated
+
+import typer
+from rich.markup import escape
+
+from ..errors import InputError
+from ._app import command_app, console
+from ._inputs import JsonOpt, OptionError, check_path, save_plot_figure
+from ._output import _emit_json, _table
+
+app = command_app()
+
+#: More cases than this need --yes.
+CONFIRM_CASES = 100_000
+#: Rows shown in the table printed after a run.
+PREVIEW_ROWS = 10
+PREVIEW_OUTPUTS = 4
+#: Library parameter -> the option the user typed.
+_FLAGS = {"output": "--output", "scheduler": "--scheduler", "workers": "--workers",
+          "seed": "--seed", "repeats": "--repeats", "partition_size": "--partition-size",
+          "cases": "--cases", "grid": "--set", "option": "--set", "analysis": "ANALYSIS"}
+
+
+def _grid(items: list[str]) -> dict:
+    grid = {}
+    for item in items:
+        name, eq, values = item.partition("=")
+        name = name.strip()
+        if not eq or not name:
+            raise OptionError("--set", item, "NAME=VALUES, e.g. radial_load_n=100:2000:20 or "
+                              "designation=6205,6206")
+        if name in grid:
+            raise OptionError("--set", item, f"each option once ({name} is given twice)")
+        grid[name] = values
+    return grid
+
+
+def hint_of(exc: InputError) -> str:
+    """The "(...)" part of an InputError's message, if any."""
+    text, head = str(exc), f"expected {exc.allowed}"
+    rest = text[text.find(head) + len(head):] if head in text else ""
+    return rest[2:-1] if rest.startswith(" (") and rest.endswith(")") else ""
+
+
+def _remap(exc: InputError) -> InputError:
+    """The library's error in the command line's terms (the flag the user typed)."""
+    if exc.parameter == "cases" and "confirmation" in exc.allowed:
+        return OptionError("cases", exc.value, f"at most {CONFIRM_CASES} cases without --yes",
+                           "add --yes to run them all")
+    flag = _FLAGS.get(exc.parameter, f"--set {exc.parameter}")
+    return OptionError(flag, exc.value, exc.allowed, hint_of(exc))
+
+
+def _label(name: str) -> str:
+    from ..study.plots import _label as label
+
+    return label(name)
+
+
+@app.command("study")
+def study(
+        analysis: Annotated[str, typer.Argument(
+            help="stiffness, static, frequencies, life, friction, ring-modes, noise or "
+                 "simulate.", show_default=False)],
+        output: Annotated[Path, typer.Option(
+            "-o", "--output", help="Folder of the results (one Parquet file per partition); "
+            "rerun with the same folder to finish an interrupted study.",
+            show_default=False)],
+        set_: Annotated[list[str] | None, typer.Option(
+            "--set", help="An input and its values, repeatable: NAME=V, NAME=A,B,C, "
+            "NAME=START:STOP:COUNT, NAME=log:START:STOP:COUNT or NAME=uniform:LOW:HIGH "
+            "(random per case). Names as the analysis' options, e.g. designation, "
+            "radial_load_n, speed_rpm, clearance_um.", show_default=False)] = None,
+        cases: Annotated[Path | None, typer.Option(
+            "--cases", help="A .csv or .parquet file of cases instead of --set (one row per "
+            "case, columns named as the options).", show_default=False)] = None,
+        seed: Annotated[int, typer.Option(
+            "--seed", help="Study seed: random inputs come from the seed and the case "
+            "index.")] = 0,
+        repeats: Annotated[int, typer.Option(
+            "--repeats", help="Repeat each grid point (with fresh random inputs).")] = 1,
+        partition_size: Annotated[int | None, typer.Option(
+            "--partition-size", help="Cases per partition (default: from the analysis and "
+            "the case count).", show_default=False)] = None,
+        scheduler: Annotated[str | None, typer.Option(
+            "--scheduler", help="tcp://HOST:PORT of a running dask scheduler (default: "
+            "$DASK_SCHEDULER_ADDRESS, else a LocalCluster of this machine's cores); 'serial' "
+            "runs in this process.", show_default=False)] = None,
+        workers: Annotated[int | None, typer.Option(
+            "--workers", help="Worker processes of the LocalCluster (default: the cores).",
+            show_default=False)] = None,
+        yes: Annotated[bool, typer.Option(
+            "--yes", help=f"Run a study of more than {CONFIRM_CASES} cases.")] = False,
+        plot: Annotated[Path | None, typer.Option(
+            "--plot", help="Also draw one output over two inputs to this .png, .svg or .pdf "
+            "(see --plot-of).", show_default=False)] = None,
+        plot_of: Annotated[str | None, typer.Option(
+            "--plot-of", help="OUTPUT,X,Y for --plot (default: the first output over the "
+            "first two inputs that vary).", show_default=False)] = None,
+        json_output: JsonOpt = False):
+    """Run one analysis over a grid of inputs or a table of cases, on dask.
+
+    Example: bearinglab study stiffness --set designation=6205 --set radial_load_n=0:2000:21
+    --set speed_rpm=0,6000 -o stiffness-6205
+    """
+    from ..study import describe_options, read_study, run_study
+
+    grid = _grid(set_ or [])
+    if cases is None and not grid:
+        raise OptionError("--set", None, "at least one --set NAME=VALUES, or --cases FILE")
+    if cases is not None and grid:
+        raise OptionError("--cases", str(cases), "either --cases or --set, not both")
+    check_path("--plot", plot, (".png", ".svg", ".pdf"))
+    if plot_of is not None and plot is None:
+        raise OptionError("--plot-of", plot_of, "use with --plot FILE")
+    try:
+        describe_options(analysis)
+        result = run_study(analysis, grid or None, cases=cases, output=output, seed=seed,
+                           repeats=repeats, partition_size=partition_size,
+                           scheduler=scheduler, workers=workers,
+                           max_cases=None if yes else CONFIRM_CASES, progress=True)
+    except InputError as exc:
+        raise _remap(exc) from None
+    if plot is not None:
+        _plot(result, plot, plot_of)
+    if json_output:
+        _emit_json(result.to_dict())
+        return
+    _print(result, read_study(result.path))
+
+
+def _plot(result, path: Path, plot_of: str | None) -> None:
+    table = result.to_pandas()
+    if plot_of is None:
+        varying = [c for c in result.inputs if table[c].nunique() > 1]
+        if len(varying) < 2:
+            raise OptionError("--plot", str(path), "a study with two inputs that vary (or "
+                              "--plot-of OUTPUT,X,Y)")
+        names = [result.outputs[0], varying[0], varying[1]]
+    else:
+        names = [n.strip() for n in plot_of.split(",")]
+        if len(names) != 3:
+            raise OptionError("--plot-of", plot_of, "OUTPUT,X,Y (three column names)")
+    try:
+        fig, _ = result.plot(*names)
+    except InputError as exc:
+        raise OptionError("--plot-of", plot_of or ",".join(names), exc.allowed) from None
+    save_plot_figure(fig, path)
+
+
+def _print(result, table) -> None:
+    d = result.to_dict()
+    rate = d["cases_per_second"]
+    rows = [["analysis", d["analysis"], ""], ["cases", d["cases"], ""],
+            ["failed cases", d["failed_cases"], ""],
+            ["partitions computed / reused",
+             f"{d['partitions_computed']} / {d['partitions_reused']}", ""],
+            ["wall time", d["seconds"], "s"],
+            ["cases per second", "-" if rate is None else rate, "1/s"],
+            ["workers", d["workers"], ""], ["scheduler", d["scheduler"], ""],
+            ["output", d["output"], ""]]
+    console.print(_table("study", ["", "value", "unit"], rows))
+    outputs = [c for c in result.outputs if table[c].notna().any()][:PREVIEW_OUTPUTS]
+    columns = ["case", *result.inputs, *outputs]
+    ok = table[table["error"].isna()]
+    shown = ok.head(PREVIEW_ROWS)
+    console.print(_table(f"first {len(shown)} of {len(ok)} cases that ran",
+                         [_label(c).replace(" [", "\n[") for c in columns],
+                         [[row[c] for c in columns] for _, row in shown.iterrows()]))
+    failed = table[table["error"].notna()]
+    for _, row in failed.head(PREVIEW_ROWS).iterrows():
+        console.print(f"[yellow]case {row['case']} failed:[/yellow] {escape(row['error'])}")
+    if len(failed) > PREVIEW_ROWS:
+        console.print(f"[yellow]... and {len(failed) - PREVIEW_ROWS} more failed cases "
+                      "(column 'error')[/yellow]")
+    more = len(result.outputs) - len(outputs)
+    console.print(f"[dim]{f'{more} more output columns; ' if more else ''}the whole table: "
+                  f"pandas.read_parquet({escape(repr(str(result.path)))})[/dim]")
