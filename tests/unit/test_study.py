@@ -96,6 +96,18 @@ def test_life_and_frequencies_from_a_case_file(tmp_path):
     pd.testing.assert_frame_equal(f, again)
 
 
+def test_ring_modes_columns_follow_the_analysis(tmp_path):
+    from bearinglab.rings import ring_modes
+
+    table = run_study("ring-modes", {"designation": "6205", "axial_load_n": [100.0, 1000.0]},
+                      output=tmp_path / "rm", scheduler="serial").to_pandas()
+    assert table["error"].isna().all()
+    direct = ring_modes(bearing_from_designation("6205")[0], axial_load=1000.0, modes=[3])
+    assert table.loc[1, "m3_free_hz"] == pytest.approx(direct.mode(3).free, rel=1e-12)
+    assert table.loc[1, "m3_approx_low_hz"] == pytest.approx(min(direct.mode(3).approximate),
+                                                             rel=1e-12)
+
+
 def test_simulate_with_diagnosis_and_a_cage_fault(tmp_path):
     table = run_study("simulate", {"designation": "6205-2RS", "radial_load_n": 500.0,
                                    "speed_rpm": 1797.0, "fault": ["outer", "cage"],

@@ -202,12 +202,12 @@ def _friction(case: dict, seed: int) -> dict:
 
 # ------------------------------------------------------------------ ring modes
 _MODES = (2, 3, 4, 5, 6)
-_RING_OUT = {"rigid_body_khz": "f", "radial_stiffness_n_per_m": "f", "ring_mass_kg": "f",
-             "ball_mass_ratio": "f", "contact_stiffness_ratio": "f"}
+_RING_OUT = {"rigid_body_frequency_hz": "f", "radial_stiffness_n_per_m": "f",
+             "ring_mass_kg": "f", "ball_mass_ratio": "f", "contact_stiffness_ratio": "f"}
 for _m in _MODES:
-    _RING_OUT.update({f"m{_m}_free_khz": "f", f"m{_m}_approx_low_khz": "f",
-                      f"m{_m}_approx_high_khz": "f", f"m{_m}_refined_low_khz": "f",
-                      f"m{_m}_refined_high_khz": "f"})
+    _RING_OUT.update({f"m{_m}_free_hz": "f", f"m{_m}_approx_low_hz": "f",
+                      f"m{_m}_approx_high_hz": "f", f"m{_m}_refined_low_hz": "f",
+                      f"m{_m}_refined_high_hz": "f"})
 
 
 def _ring_modes(case: dict, seed: int) -> dict:
@@ -219,16 +219,19 @@ def _ring_modes(case: dict, seed: int) -> dict:
     r = ring_modes(bearing_of(case), axial_load=axial if kx is None else None, modes=_MODES,
                    ring_mass=mass, radial_stiffness=kx,
                    ball_mass_ratio=case.get("ball_mass_ratio"),
-                   contact_stiffness_ratio=case.get("contact_stiffness_ratio"))
+                   contact_stiffness_ratio=case.get("contact_stiffness_ratio"),
+                   radial_stiffness_from=case.get("radial_stiffness_from", "closed_form"))
     d = r.to_dict()
     for m in d["modes"]:
         k = m["m"]
-        d[f"m{k}_free_khz"] = m["free_khz"]
-        d[f"m{k}_approx_low_khz"], d[f"m{k}_approx_high_khz"] = (min(m["approx_khz"]),
-                                                                 max(m["approx_khz"]))
-        refined = [f for f in m["refined_khz"] if f is not None]
+        if k not in _MODES:
+            continue
+        d[f"m{k}_free_hz"] = m["free_hz"]
+        d[f"m{k}_approx_low_hz"], d[f"m{k}_approx_high_hz"] = (min(m["approx_hz"]),
+                                                               max(m["approx_hz"]))
+        refined = [f for f in m["refined_hz"] if f is not None]
         if refined:
-            d[f"m{k}_refined_low_khz"], d[f"m{k}_refined_high_khz"] = min(refined), max(refined)
+            d[f"m{k}_refined_low_hz"], d[f"m{k}_refined_high_hz"] = min(refined), max(refined)
     return _pick(d, _RING_OUT)
 
 
@@ -364,7 +367,10 @@ ANALYSES = {a.name: a for a in (
                            ring_mass_kg=Option("number", None, "Vibrating ring mass [kg]."),
                            radial_stiffness_n_per_m=Option("number", None, "K_x [N/m]."),
                            ball_mass_ratio=Option("number", None, "kappa."),
-                           contact_stiffness_ratio=Option("number", None, "K1/K2.")),
+                           contact_stiffness_ratio=Option("number", None, "K1/K2."),
+                           radial_stiffness_from=Option(
+                               "text", "closed_form", "K_x from seed 000's closed form or "
+                               "the load distribution.", ("closed_form", "load_distribution"))),
              _RING_OUT, _ring_modes, 2000, None, ("bearinglab.rings",)),
     Analysis("noise", "Sound pressure of a bearing with form errors (bearing_noise).",
              _with_bearing(radial_load_n=_LOADS["radial_load_n"],
