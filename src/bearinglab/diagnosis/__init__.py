@@ -36,6 +36,7 @@ from .analysis import (
     SIMULATED_METHODS,
     analyze_signal,
 )
+from .benchmark import BenchmarkResult, run_benchmark
 from .families import FAMILIES, TOLERANCES
 from .methods import METHODS
 from .result import Diagnosis, measured_ball_defect_frequency, peak_label
@@ -44,4 +45,4 @@ from .verdict import NO_FAULT
 __all__ = ["COUNT", "DEFAULT_METHODS", "FALSE_ALARM", "FAMILIES", "HARMONICS",
            "MAX_FREQUENCY_FACTOR", "METHODS", "NO_FAULT", "PREFERRED_CHANNELS", "SIMULATED_METHODS",
            "TOLERANCES",
-           "Diagnosis", "analyze_signal", "measured_ball_defect_frequency", "peak_label"]
+           "BenchmarkResult", "Diagnosis", "analyze_signal", "run_benchmark", "measured_ball_defect_frequency", "peak_label"]

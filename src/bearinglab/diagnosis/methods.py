@@ -44,7 +44,7 @@ class MethodSpectrum:
     """Squared envelope spectrum of one method: ``frequency`` [Hz], ``power`` (Welch power
     of each line, in the squared envelope's unit squared), equivalent degrees of freedom
     ``nu``, demodulation ``band`` (None: whole band) and the ``kurtogram`` that chose it
-    (``drs-sk`` only)."""
+    (``drs-sk`` only), and ``z``, the power over its local noise level, once normalised."""
 
     method: str
     frequency: np.ndarray
@@ -52,6 +52,7 @@ class MethodSpectrum:
     nu: float
     band: tuple[float, float] | None
     kurtogram: object | None
+    z: np.ndarray | None = None
 
     @property
     def amplitude(self) -> np.ndarray:

@@ -171,18 +171,10 @@ def decide(spectra, fams: list[Family], base_valid: dict, max_frequency: float,
 
 
 def with_z(spec):
-    """Attach the normalised spectrum ``z`` to a MethodSpectrum (a light wrapper)."""
-    return _Normalised(spec, normalised(spec.power, spec.nu))
+    """The MethodSpectrum with its normalised power ``z`` [-] filled in."""
+    import dataclasses
 
-
-class _Normalised:
-    """A MethodSpectrum with its normalised power ``z`` [-]."""
-
-    def __init__(self, spec, z):
-        self.spec, self.z = spec, z
-
-    def __getattr__(self, name):
-        return getattr(self.spec, name)
+    return dataclasses.replace(spec, z=normalised(spec.power, spec.nu))
 
 
 def label_peaks(spec, decision: dict, fams: list[Family], masked: dict, count: int,

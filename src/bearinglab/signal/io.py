@@ -4,8 +4,9 @@ The format follows the file name's suffix:
 
 - ``.npz`` (NumPy archive): one array per channel, ``sample_rate_hz`` and ``metadata_json``
   (the metadata as a JSON string); everything round-trips.
-- ``.csv``: a header row of channel names, first column ``time_s`` [s]; the sample rate is
-  inferred from it (n - 1 intervals over the time span). Metadata are not stored.
+- ``.csv``: a header row of channel names; a time column (``time_s``, ``time``, ``t``,
+  ``time [s]``, ``time_ms``..., in any position) gives the sample rate (n - 1 intervals
+  over the time span), otherwise it must be passed. Metadata are not stored.
 - ``.wav`` (``scipy.io.wavfile``): written as 32-bit float, unscaled (WAV has no field for
   a scale factor); channels read back as ``channel_0``, ``channel_1``...; integer PCM
   files read as fractions of full scale in [-1, 1). The sample rate must be a whole
@@ -18,7 +19,13 @@ The format follows the file name's suffix:
   do not store their sample rate (12 kHz or 48 kHz, given on the data centre's pages),
   so it must be passed unless the file has a ``sample_rate_hz`` variable, which
   :func:`write_signal` adds (with ``metadata_json``). Other .mat files: every numeric
-  vector variable is a channel.
+  vector variable is a channel, and every numeric vector field of a MATLAB struct a
+  channel named by its field path: the MFPT files' struct ``bearing`` gives channel
+  ``bearing.gs`` (``gs`` selects it too), its scalar ``sr`` the sample rate and ``rate``
+  (the shaft rate, Hz) ``metadata["speed_rpm"]``; fields that are not numeric vectors
+  are listed in ``metadata["non_numeric_fields"]`` and refused as channels by name.
+  MATLAB v7.3 files are HDF5: read with h5py when it is installed (an InputError
+  says how to install it otherwise).
 
 Writes are atomic (:func:`bearinglab.files.write_atomically`); a file that cannot be read
 gives an :class:`~bearinglab.errors.InputError` naming it.
@@ -50,6 +57,8 @@ RESERVED = ("sample_rate_hz", "metadata_json")
 _CWRU_CHANNEL = re.compile(r"^X(\d+)_(\w+)_time$")
 _CWRU_RPM = re.compile(r"^X(\d+)RPM$")
 _MAT_NAME = re.compile(r"^\w+$", re.ASCII)
+#: CSV headers of a time column: time_s, time, t, time [s], time (ms), Time_ms...
+_TIME = re.compile(r"^\s*(t|time)(\s*[\[(]\s*(s|ms)\s*[\])]|_(s|ms))?\s*$", re.IGNORECASE)
 _MAT_NAME_MAX = 63  # MATLAB's namelengthmax
 # what corrupt or foreign files make NumPy, zipfile, csv and scipy.io raise (a truncated
 # WAV only warns, unless warnings are errors)
@@ -115,8 +124,28 @@ def read_signal(path, sample_rate=None, channel=None) -> Signal:
                          "a sample_rate argument in Hz (the file does not store it; CWRU "
                          "records are 12000 or 48000 Hz)")
     metadata.setdefault("source", path.name)
+    if channel is not None:
+        wanted = [channel] if isinstance(channel, str) else list(channel)
+        resolved = [_channel_name(str(c), channels, metadata) for c in wanted]
+        channels = {c: channels[c] for c in resolved}
+        channel = resolved
     signal = Signal(channels, fs, metadata)
     return signal if channel is None else signal.select(channel)
+
+
+def _channel_name(name: str, channels: dict, metadata: dict) -> str:
+    """A channel or struct field path, or a unique last part of one (``gs`` for
+    ``bearing.gs``); a field that is not a numeric vector is refused by name."""
+    if name in channels:
+        return name
+    other = metadata.get("non_numeric_fields", {})
+    if name in other:
+        raise InputError("channel", name, "a numeric vector field",
+                         hint=f"{name} holds {other[name]}")
+    ends = [c for c in channels if c.rsplit(".", 1)[-1] == name]
+    if len(ends) == 1:
+        return ends[0]
+    raise InputError("channel", name, f"one of {list(channels)}")
 
 
 def write_signal(path, signal: Signal) -> Path:
@@ -208,13 +237,18 @@ def _read_csv(path: Path, sample_rate):
         raise InputError("path", str(path), f"{len(header)} columns as in the header",
                          hint=f"the data have {data.shape[1]}")
     rate = None
-    if header[0] == "time_s":
-        time, data, header = data[:, 0], data[:, 1:], header[1:]
+    column = next((i for i, h in enumerate(header) if _TIME.match(h)), None)
+    if column is not None:
+        time = data[:, column]
+        data = np.delete(data, column, axis=1)
+        scale = 1e-3 if "ms" in header[column].lower() else 1.0
+        header = header[:column] + header[column + 1:]
         if sample_rate is None:
-            rate = _rate_from_time(time)
+            rate = _rate_from_time(time * scale)
     elif sample_rate is None:
         raise InputError("sample_rate", None,
-                         "a sample rate in Hz (the CSV file has no time_s first column)")
+                         "a sample rate in Hz (the CSV file has no time column: time_s, "
+                         "time, t or time [s])")
     if not header:
         raise InputError("path", str(path), "a CSV file with at least one channel column")
     return {name: data[:, i] for i, name in enumerate(header)}, rate, {}
@@ -278,8 +312,51 @@ def _write_wav(signal: Signal):
 # ---------------------------------------------------------------- .mat
 
 
+#: Scalar variables or struct fields read as the sample rate [Hz] (MFPT: ``sr``).
+RATE_NAMES = ("sr", "fs", "sample_rate", "samplerate", "sampling_rate")
+#: Scalar fields read as the shaft rate [Hz] (MFPT's ``rate``) or speed [rpm].
+SHAFT_HZ_NAMES = ("rate",)
+RPM_NAMES = ("rpm", "speed_rpm")
+
+
+def _walk_struct(name: str, value, channels: dict, scalars: dict, other: dict) -> None:
+    """Flatten MATLAB structs (``scipy.io.loadmat`` structured arrays) into field paths
+    ``a.b.c``: numeric vectors to ``channels``, numeric scalars to ``scalars``, anything
+    else (text, cells, matrices) to ``other`` (path -> what it holds)."""
+    a = np.asarray(value)
+    if a.dtype.names:  # a struct (1x1 for MFPT's ``bearing``)
+        if a.size != 1:
+            other[name] = f"a {a.shape} struct array"
+            return
+        item = a.ravel()[0]
+        for field in a.dtype.names:
+            _walk_struct(f"{name}.{field}", item[field], channels, scalars, other)
+        return
+    if a.dtype == object and a.size == 1:  # loadmat wraps struct fields in 1x1 objects
+        _walk_struct(name, a.ravel()[0], channels, scalars, other)
+        return
+    if a.dtype.kind in "iuf":
+        squeezed = a.squeeze()
+        if squeezed.ndim == 0 or squeezed.size == 1:
+            scalars[name] = float(squeezed.ravel()[0]) if squeezed.size else math.nan
+        elif squeezed.ndim == 1:
+            channels[name] = squeezed.astype(float)
+        else:
+            other[name] = f"a {a.shape} matrix"
+        return
+    other[name] = "text" if a.dtype.kind in "US" else f"{a.dtype} data"
+
+
 def _read_mat(path: Path, sample_rate):
-    variables = {k: v for k, v in scipy.io.loadmat(path).items() if not k.startswith("__")}
+    try:
+        loaded = scipy.io.loadmat(path)
+    except NotImplementedError:  # MATLAB v7.3 files are HDF5
+        loaded = None
+    if loaded is None:
+        variables, nested, other = _read_mat73(path)
+    else:
+        variables = {k: v for k, v in loaded.items() if not k.startswith("__")}
+        nested, other = {}, {}
     rate = _scalar(variables["sample_rate_hz"], "sample_rate_hz") \
         if "sample_rate_hz" in variables else None
     meta = _metadata(variables["metadata_json"]) if "metadata_json" in variables else {}
@@ -298,13 +375,61 @@ def _read_mat(path: Path, sample_rate):
                     if (m := _CWRU_RPM.match(k)) and m[1] == number), None)
         if rpm is not None:
             meta["speed_rpm"] = _scalar(rpm, f"X{number}RPM")
-    else:
-        channels = {k: np.asarray(v).squeeze() for k, v in variables.items()
-                    if k not in RESERVED and not _CWRU_RPM.match(k)
-                    and np.asarray(v).dtype.kind in "iuf" and np.asarray(v).squeeze().ndim == 1}
-        if not channels:
-            raise InputError("path", str(path), "a .mat file with numeric vector variables")
+        return channels, rate, meta
+    channels, scalars = dict(nested), {}
+    for key, value in variables.items():
+        if key in RESERVED or _CWRU_RPM.match(key):
+            continue
+        _walk_struct(key, value, channels, scalars, other)
+    for name, value in scalars.items():
+        leaf = name.rsplit(".", 1)[-1].lower()
+        if leaf in RATE_NAMES and rate is None and math.isfinite(value) and value > 0:
+            rate = value
+        elif leaf in SHAFT_HZ_NAMES and "." in name and math.isfinite(value):
+            meta.setdefault("speed_rpm", 60.0 * value)
+        elif leaf in RPM_NAMES and math.isfinite(value):
+            meta.setdefault("speed_rpm", value)
+    if other:
+        meta["non_numeric_fields"] = dict(other)
+    if not channels:
+        raise InputError("path", str(path), "a .mat file with numeric vector variables "
+                         "or struct fields", hint=f"found {sorted(other) or 'none'}")
     return channels, rate, meta
+
+
+def _read_mat73(path: Path):
+    """Variables of a MATLAB v7.3 (HDF5) file: (top-level numeric arrays, vectors inside
+    groups as ``group.field`` paths, other entries). MATLAB stores arrays transposed;
+    text (``MATLAB_class`` char) and references are not channels."""
+    try:
+        import h5py
+    except ImportError:
+        raise InputError("path", str(path), "a MATLAB file before v7.3, or h5py installed "
+                         "to read v7.3 (HDF5) files: pip install h5py") from None
+    top, nested, other = {}, {}, {}
+    with h5py.File(path, "r") as f:
+        def visit(name, obj):
+            if not isinstance(obj, h5py.Dataset) or name.startswith("#"):
+                return
+            key = name.replace("/", ".")
+            kind = obj.attrs.get("MATLAB_class", b"")
+            kind = kind.decode() if isinstance(kind, bytes) else str(kind)
+            if kind in ("char", "cell", "struct") or obj.dtype.kind not in "iuf":
+                other[key] = kind or str(obj.dtype)
+                return
+            data = np.asarray(obj[()]).T
+            if "." in key:
+                squeezed = data.squeeze()
+                if squeezed.ndim == 1:
+                    nested[key] = squeezed.astype(float)
+                elif squeezed.size == 1:
+                    top[key] = squeezed.reshape(1, 1)
+                else:
+                    other[key] = f"a {data.shape} matrix"
+            else:
+                top[key] = data
+        f.visititems(visit)
+    return top, nested, other
 
 
 def _write_mat(signal: Signal):

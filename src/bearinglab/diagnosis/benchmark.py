@@ -1,0 +1,271 @@
+"""The diagnosis run over a folder of labelled recordings: :func:`run_benchmark`.
+
+The folder holds a ``labels.csv`` like the one of ``shared/data/real`` (one row per file:
+``file``, ``channel``, ``sample_rate_hz``, ``speed_rpm``, the bearing as ``designation`` or
+``balls``, ``ball_diameter_mm``, ``pitch_diameter_mm``, ``contact_angle_deg``, and the
+label ``fault``: normal, inner, outer, ball, cage; optional ``smith_randall_2015``). Each
+record is diagnosed by each method asked for on its own and by the methods together (the
+verdict users get); records run in parallel (``concurrent.futures``, one process per
+job). :class:`BenchmarkResult` holds the per-record table, the confusion matrix and the
+per-class recall, and writes an HTML page with the envelope spectrum of each record and
+the lines it matched.
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from ..errors import InputError
+from .methods import parse_methods
+
+#: Label in labels.csv -> the verdict that is right.
+EXPECTED = {"normal": "no fault detected", "healthy": "no fault detected",
+            "inner": "inner race", "outer": "outer race", "ball": "ball", "cage": "cage"}
+#: Rows and columns of the confusion matrix.
+CLASSES = ("no fault detected", "outer race", "inner race", "ball", "cage", "compound")
+
+
+def read_labels(folder) -> list[dict]:
+    """Rows of ``folder/labels.csv`` (InputError when missing or without the columns)."""
+    folder = Path(folder)
+    path = folder / "labels.csv"
+    if not path.is_file():
+        raise InputError("folder", str(folder), "a folder with a labels.csv")
+    with open(path, newline="", encoding="utf-8") as fh:
+        rows = list(csv.DictReader(fh))
+    need = {"file", "fault", "speed_rpm"}
+    if not rows or not need <= set(rows[0]):
+        raise InputError("labels.csv", str(path), f"a header with at least {sorted(need)}")
+    for row in rows:
+        if row["fault"].strip().lower() not in EXPECTED:
+            raise InputError("labels.csv", row["fault"], f"faults among {sorted(EXPECTED)}")
+    return rows
+
+
+def _bearing(row: dict):
+    """The bearing of a labels row: its designation, or balls and diameters [mm]."""
+    from ..catalog import bearing_from_designation
+    from ..geometry import BallBearing
+
+    if row.get("designation"):
+        return bearing_from_designation(row["designation"].strip())[0]
+    try:
+        return BallBearing(ball_count=int(float(row["balls"])),
+                           ball_diameter=float(row["ball_diameter_mm"]) * 1e-3,
+                           pitch_diameter=float(row["pitch_diameter_mm"]) * 1e-3,
+                           contact_angle=math.radians(float(row.get("contact_angle_deg") or 0)))
+    except (KeyError, TypeError, ValueError):
+        raise InputError("labels.csv", row.get("file"), "a designation, or balls, "
+                         "ball_diameter_mm and pitch_diameter_mm") from None
+
+
+def _category(verdict: str) -> str:
+    return "compound" if verdict.startswith("compound") else verdict
+
+
+def run_record(folder: str, row: dict, methods: tuple, keep_spectra: bool = True) -> dict:
+    """Diagnose one labelled record by each method and by all together (a worker)."""
+    from ..kinematics import defect_frequencies
+    from ..signal import read_signal
+    from .analysis import analyze_signal
+
+    out = {"file": row["file"], "fault": row["fault"].strip().lower(),
+           "smith_randall_2015": row.get("smith_randall_2015") or None,
+           "expected": EXPECTED[row["fault"].strip().lower()], "error": None}
+    try:
+        fs = float(row["sample_rate_hz"]) if row.get("sample_rate_hz") else None
+        signal = read_signal(Path(folder) / row["file"], sample_rate=fs)
+        channel = (row.get("channel") or "").strip() or None
+        if channel is not None and channel not in signal.names:
+            channel = next((c for c in signal.names if c.rsplit(".", 1)[-1] == channel), channel)
+        speed = float(row["speed_rpm"]) * math.pi / 30
+        kin = defect_frequencies(_bearing(row), speed)
+        runs = {"+".join(methods): methods} if len(methods) == 1 else \
+            {**{m: (m,) for m in methods}, "+".join(methods): methods}
+        for name, ms in runs.items():
+            d = analyze_signal(signal, None, kin, channel=channel, methods=ms)
+            out[name] = d.verdict
+            if ms == methods:
+                out["verdict"] = d.verdict
+                out["significance"] = {k: round(v, 3) for k, v in d.scores.items()}
+                out["threshold"] = d.threshold
+                out["measured_rpm"] = d.speed.get("measured_rpm")
+                out["warnings"] = list(d.warnings)
+                out["reason"] = d.reason
+                if keep_spectra:
+                    out["diagnosis"] = d
+    except Exception as exc:  # noqa: BLE001 - one bad record must not stop the benchmark
+        out["error"] = f"{type(exc).__name__}: {exc}"
+        out["verdict"] = "error"
+    out["right"] = out.get("verdict") == out["expected"]
+    return out
+
+
+@dataclass(frozen=True)
+class BenchmarkResult:
+    """Diagnosis of a folder of labelled records.
+
+    ``records``: one dict per record (``file``, ``fault``, ``smith_randall_2015``,
+    ``expected``, ``verdict`` with the methods together, one key per method with its own
+    verdict, ``right``, ``significance``, ``threshold``, ``measured_rpm``, ``warnings``,
+    ``reason``, ``error``); ``methods``; ``folder``.
+    """
+
+    folder: str
+    methods: tuple
+    records: tuple
+    diagnoses: dict = field(default_factory=dict, repr=False)
+
+    @property
+    def columns(self) -> list[str]:
+        """Verdict columns: each method, then the methods together."""
+        together = "+".join(self.methods)
+        return ([*self.methods, together] if len(self.methods) > 1 else [together])
+
+    def confusion(self, column: str | None = None) -> dict:
+        """Confusion matrix of ``column`` (default: the methods together): expected ->
+        verdict class -> count."""
+        column = column or "+".join(self.methods)
+        matrix = {c: dict.fromkeys((*CLASSES, "error"), 0) for c in CLASSES}
+        for r in self.records:
+            got = _category(r.get(column) or "error") if not r["error"] else "error"
+            matrix[r["expected"]][got if got in matrix[r["expected"]] else "error"] += 1
+        return {k: v for k, v in matrix.items() if sum(v.values())}
+
+    def recall(self, column: str | None = None) -> dict:
+        """Per class: right / records of that class [-]."""
+        return {k: row[k] / sum(row.values()) for k, row in self.confusion(column).items()}
+
+    def accuracy(self, column: str | None = None) -> float:
+        """Share of records right [-]."""
+        column = column or "+".join(self.methods)
+        return sum(r.get(column) == r["expected"] for r in self.records) / len(self.records)
+
+    def to_dict(self) -> dict:
+        """JSON-ready summary and per-record table."""
+        cols = self.columns
+        return {"folder": self.folder, "methods": list(self.methods), "columns": cols,
+                "records": [{k: v for k, v in r.items() if k != "diagnosis"}
+                            for r in self.records],
+                "right": {c: sum(r.get(c) == r["expected"] for r in self.records)
+                          for c in cols},
+                "total": len(self.records),
+                "confusion": {c: self.confusion(c) for c in cols},
+                "recall": {c: self.recall(c) for c in cols}}
+
+    def to_pandas(self):
+        """Per-record table (one row per record)."""
+        import pandas as pd
+
+        keys = ["file", "fault", "smith_randall_2015", "expected", *self.columns, "right",
+                "measured_rpm", "error"]
+        return pd.DataFrame([{k: r.get(k) for k in keys} for r in self.records], columns=keys)
+
+    def plot(self, ax=None, column: str | None = None):
+        """Confusion matrix as an image with counts; returns (figure, axes)."""
+        from ..plotting import _pyplot
+
+        plt = _pyplot()
+        matrix = self.confusion(column)
+        rows = list(matrix)
+        cols = [c for c in (*CLASSES, "error") if any(matrix[r][c] for r in rows)]
+        if ax is None:
+            fig, ax = plt.subplots(figsize=(1.4 * len(cols) + 2, 0.6 * len(rows) + 1.6))
+        else:
+            fig = ax.figure
+        data = [[matrix[r][c] for c in cols] for r in rows]
+        ax.imshow(data, cmap="Blues")
+        for i, row in enumerate(data):
+            for j, v in enumerate(row):
+                ax.text(j, i, str(v), ha="center", va="center")
+        ax.set_xticks(range(len(cols)), cols, rotation=30, ha="right")
+        ax.set_yticks(range(len(rows)), rows)
+        ax.set_xlabel("verdict")
+        ax.set_ylabel("label")
+        ax.set_title(f"{column or '+'.join(self.methods)}: {self.accuracy(column):.0%} right")
+        fig.tight_layout()
+        return fig, ax
+
+    def to_html(self) -> str:
+        """A self-contained page: the summary, the per-record table and, per record, its
+        envelope spectrum with the lines matched (report/document.py helpers)."""
+        from ..report.document import figure, page, paragraph, table
+
+        d = self.to_dict()
+        cols = self.columns
+        summary = table(["", *cols], [["right", *[f"{d['right'][c]} / {d['total']}"
+                                                  for c in cols]]] +
+                        [[f"recall {k}", *[d["recall"][c].get(k) for c in cols]]
+                         for k in d["recall"][cols[-1]]], "Summary")
+        rows = [[r["file"], r["fault"], r["smith_randall_2015"] or "",
+                 *[r.get(c) or r.get("error") for c in cols], "yes" if r["right"] else "no"]
+                for r in self.records]
+        body = [paragraph(f"Folder {self.folder}; methods {', '.join(self.methods)}."), summary,
+                figure(self.plot()[0], "Confusion matrix (methods together)", 60),
+                table(["file", "label", "Smith & Randall", *cols, "right"], rows, "Records",
+                      numeric=())]
+        for r in self.records:
+            diag = self.diagnoses.get(r["file"])
+            body.append(f"<h3>{r['file']}: {r['verdict']} (label {r['fault']})</h3>")
+            body.append(paragraph(r.get("reason") or r.get("error") or ""))
+            if diag is not None:
+                body.append(figure(diag.plot()[0], f"{r['file']}: squared envelope spectrum"))
+        return page("bearinglab benchmark", [f"{self.folder}"], "".join(body))
+
+    def write_html(self, path) -> Path:
+        """Write :meth:`to_html` atomically to ``path``."""
+        from ..files import write_atomically
+
+        text = self.to_html()
+        return write_atomically(path, lambda tmp: Path(tmp).write_text(text, encoding="utf-8"))
+
+
+def run_benchmark(folder, methods=None, jobs: int = 1, progress=None,
+                  keep_spectra: bool = True) -> BenchmarkResult:
+    """Diagnose every record of ``folder/labels.csv``.
+
+    Parameters
+    ----------
+    folder : str or Path
+        Folder with ``labels.csv`` and the files it names.
+    methods : str or sequence, optional
+        Methods (default: :data:`bearinglab.diagnosis.DEFAULT_METHODS`); each is also run
+        on its own.
+    jobs : int
+        Records diagnosed at once (processes, ``concurrent.futures``); 1: in this process.
+    progress : callable, optional
+        Called with (records done, records in all) after each record.
+    keep_spectra : bool
+        Keep each record's Diagnosis (for the HTML page's spectra).
+
+    Returns
+    -------
+    BenchmarkResult
+    """
+    from .analysis import DEFAULT_METHODS
+
+    rows = read_labels(folder)
+    names = parse_methods(DEFAULT_METHODS if methods is None else methods)
+    if isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 1:
+        raise InputError("jobs", jobs, "an integer >= 1")
+    results: list[dict | None] = [None] * len(rows)
+    if jobs == 1:
+        for i, row in enumerate(rows):
+            results[i] = run_record(str(folder), row, names, keep_spectra)
+            if progress:
+                progress(i + 1, len(rows))
+    else:
+        import concurrent.futures
+
+        with concurrent.futures.ProcessPoolExecutor(max_workers=jobs) as pool:
+            futures = {pool.submit(run_record, str(folder), row, names, keep_spectra): i
+                       for i, row in enumerate(rows)}
+            for done, future in enumerate(concurrent.futures.as_completed(futures), 1):
+                results[futures[future]] = future.result()
+                if progress:
+                    progress(done, len(rows))
+    diagnoses = {r["file"]: r.pop("diagnosis") for r in results if "diagnosis" in r}
+    return BenchmarkResult(str(folder), names, tuple(results), diagnoses)
