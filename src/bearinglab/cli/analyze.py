@@ -1,5 +1,7 @@
-"""The ``analyze`` command: diagnose a recorded vibration signal by envelope analysis
-(:func:`bearinglab.diagnosis.analyze_signal`, after Randall & Antoni 2011)."""
+"""The ``analyze`` command: diagnose a recorded vibration signal
+(:func:`bearinglab.diagnosis.analyze_file`: the significance of each fault family's
+harmonic series above the noise floor of the squared envelope spectrum, by Smith &
+Randall's methods; docs/capabilities/diagnosis.md)."""
 
 import math
 from pathlib import Path
@@ -8,10 +10,7 @@ from typing import Annotated
 import typer
 from rich.markup import escape
 
-from ..diagnosis import analyze_signal
-from ..errors import BearinglabError, InputError
-from ..kinematics import defect_frequencies
-from ..signal import read_signal
+from ..errors import InputError
 from ._app import command_app, console
 from ._inputs import (
     JsonOpt,
@@ -25,113 +24,202 @@ from ._inputs import (
     speed_rad_s,
     with_geometry,
 )
-from ._output import _emit_json, _save_plot, _table, peaks_json, print_diagnosis
+from ._output import _emit_json, _save_plot, _table
 
 app = command_app()
 PlotOpt = Annotated[Path | None, typer.Option(
-    "--plot", help="Also draw the envelope spectrum to this .png, .svg or .pdf file.",
+    "--plot", help="Also draw the squared envelope spectrum to this .png, .svg or .pdf file.",
     show_default=False)]
+#: InputError parameter of the library -> the option (or argument) to blame.
+FLAGS = {"path": "SIGNAL_FILE", "sample_rate": "--sample-rate-hz",
+         "sample_rate_hz": "--sample-rate-hz", "channel": "--channel",
+         "shaft_speed": "--speed-rpm", "speed_range": "--speed-range-rpm",
+         "methods": "--method", "band": "--band-hz", "false_alarm": "--false-alarm",
+         "signal_or_array": "SIGNAL_FILE", "tolerances": "--tolerance",
+         "supply_frequency": "--supply-hz", "mesh_frequency": "--mesh-hz"}
 
 
-def _band(text: str):
-    """--band-hz: "auto", "none" or "LO,HI" [Hz]."""
-    word = text.strip().lower()
-    if word == "auto":
+def parse_band(text: str | None):
+    """--band-hz: none (each method's own band), auto (the fast kurtogram's for every
+    method) or LO,HI [Hz]."""
+    if text is None or text.strip().lower() in ("none", "method"):
+        return None
+    if text.strip().lower() == "auto":
         return "auto"
-    if word == "none":
+    try:
+        low, high = (float(v) for v in text.split(","))
+    except ValueError:
+        low = high = math.nan
+    if not (math.isfinite(low) and math.isfinite(high) and 0 < low < high):
+        raise OptionError("--band-hz", text, "none (each method's own band), auto or LO,HI "
+                          "in Hz with 0 < LO < HI")
+    return low, high
+
+
+def parse_speed(text: str | None):
+    """--speed-rpm: a number [rpm] -> rad/s, or "auto"."""
+    if text is None:
+        return None
+    if text.strip().lower() == "auto":
+        return "auto"
+    try:
+        value = float(text)
+    except ValueError:
+        raise OptionError("--speed-rpm", text, "a speed in rpm or auto") from None
+    return speed_rad_s(value)
+
+
+def parse_range(text: str | None):
+    """--speed-range-rpm LO,HI -> (lo, hi) [rad/s]."""
+    if text is None:
         return None
     try:
         low, high = (float(v) for v in text.split(","))
     except ValueError:
         low = high = math.nan
     if not (math.isfinite(low) and math.isfinite(high) and 0 < low < high):
-        raise OptionError("--band-hz", text, "auto, none (no band-pass) or LO,HI in Hz with "
-                          "0 < LO < HI")
-    return low, high
+        raise OptionError("--speed-range-rpm", text, "LO,HI in rpm with 0 < LO < HI")
+    return low * math.pi / 30, high * math.pi / 30
 
 
-_READ_FLAGS = {"path": "SIGNAL_FILE", "sample_rate": "--sample-rate-hz",
-               "sample_rate_hz": "--sample-rate-hz", "channel": "--channel"}
+def parse_tolerances(items: list[str] | None) -> dict | None:
+    """--tolerance FAMILY=FRACTION or FAMILY=BELOW,ABOVE (repeatable)."""
+    if not items:
+        return None
+    out = {}
+    for item in items:
+        family, sep, value = item.partition("=")
+        try:
+            parts = tuple(float(v) for v in value.split(","))
+        except ValueError:
+            parts = ()
+        if not sep or len(parts) not in (1, 2):
+            raise OptionError("--tolerance", item, "FAMILY=FRACTION or FAMILY=BELOW,ABOVE, "
+                              "e.g. ball=0.05 or outer=0.01,0.02")
+        out[family.strip()] = parts[0] if len(parts) == 1 else parts
+    return out
+
+
+def _methods(items: list[str] | None):
+    if not items:
+        return None
+    return [m.strip() for item in items for m in item.split(",") if m.strip()]
 
 
 @app.command("analyze")
 @with_geometry
 def analyze_command(
         signal_file: Annotated[Path, typer.Argument(
-            help="Vibration record: .npz, .csv (time_s first column), .wav or .mat "
-                 "(CWRU layout).", show_default=False)],
+            help="Vibration record: .npz, .csv (with a time column), .wav or .mat (CWRU "
+                 "variables, MATLAB structs such as MFPT's bearing.gs, v7.3).",
+            show_default=False)],
         channel: Annotated[str | None, typer.Option(
-            "--channel", help="Channel to analyse (default: acc_y or DE if present, else "
-            "the first).", show_default=False)] = None,
+            "--channel", help="Channel or struct field path (e.g. DE, acc_y, bearing.gs or "
+            "gs); default acc_y, DE or gs if present, else the first.",
+            show_default=False)] = None,
         sample_rate_hz: Annotated[float | None, typer.Option(
             "--sample-rate-hz", help="Sample rate [Hz], when the file does not say (CWRU "
             ".mat: 12000 or 48000) or to override it.", show_default=False)] = None,
         designation: Annotated[str | None, typer.Option(
             "--designation", help="Bearing designation or catalogue name (e.g. ER-16K, "
             "6205); optional with explicit geometry.", show_default=False)] = None,
-        speed_rpm: Annotated[float | None, typer.Option(
-            "--speed-rpm", help="Shaft speed [rpm] (default: the speed the file records).",
-            show_default=False)] = None,
-        band_hz: Annotated[str, typer.Option(
-            "--band-hz", help="Demodulation band: auto (spectral kurtosis), none, or LO,HI "
-            "[Hz].")] = "auto",
+        speed_rpm: Annotated[str | None, typer.Option(
+            "--speed-rpm", help="Shaft speed [rpm], or auto (the speed the signal shows); "
+            "default the speed the file records.", show_default=False)] = None,
+        speed_range_rpm: Annotated[str | None, typer.Option(
+            "--speed-range-rpm", help="LO,HI [rpm]: where --speed-rpm auto searches (default "
+            "+-5 % of the recorded speed).", show_default=False)] = None,
+        method: Annotated[list[str] | None, typer.Option(
+            "--method", help="raw, cpw, drs-sk or all (repeatable or comma-separated): "
+            "Smith & Randall's Methods 1-3; default drs-sk (raw for bearinglab "
+            "simulations).", show_default=False)] = None,
+        band_hz: Annotated[str | None, typer.Option(
+            "--band-hz", help="Demodulation band: none (each method's own: whole band, or "
+            "the kurtogram's for drs-sk), auto (the kurtogram's for every method) or LO,HI "
+            "[Hz].", show_default=False)] = None,
+        tolerance: Annotated[list[str] | None, typer.Option(
+            "--tolerance", help="Family tolerance FAMILY=FRACTION or FAMILY=BELOW,ABOVE "
+            "(families outer, inner, ball, cage; defaults 0.02, 0.02, 0.07/0.02, 0.02); "
+            "repeatable.", show_default=False)] = None,
+        false_alarm: Annotated[float, typer.Option(
+            "--false-alarm", help="Largest probability of calling a fault on a record "
+            "without one.")] = 0.01,
+        supply_hz: Annotated[float | None, typer.Option(
+            "--supply-hz", help="Electrical supply frequency [Hz]: its harmonics are not "
+            "bearing lines.", show_default=False)] = None,
+        mesh_hz: Annotated[float | None, typer.Option(
+            "--mesh-hz", help="Gear-mesh frequency [Hz]: its harmonics are not bearing "
+            "lines.", show_default=False)] = None,
         json_output: JsonOpt = False, plot: PlotOpt = None, *, geometry):
-    """Diagnose a vibration record by envelope analysis: the envelope lines matched to the
-    bearing's defect frequencies and the likely fault."""
-    band = _band(band_hz)
+    """Diagnose a vibration record by envelope analysis."""
     positive("--sample-rate-hz", sample_rate_hz, "a sample rate > 0 Hz")
-    if speed_rpm is not None:
-        speed_rad_s(speed_rpm)
+    positive("--supply-hz", supply_hz, "a frequency > 0 Hz")
+    positive("--mesh-hz", mesh_hz, "a frequency > 0 Hz")
     check_path("--plot", plot, (".png", ".svg", ".pdf"))
+    options = {"shaft_speed": parse_speed(speed_rpm), "speed_range": parse_range(speed_range_rpm),
+               "channel": channel, "sample_rate": sample_rate_hz, "band": parse_band(band_hz),
+               "methods": _methods(method), "tolerances": parse_tolerances(tolerance),
+               "false_alarm": false_alarm, "supply_frequency": supply_hz,
+               "mesh_frequency": mesh_hz}
+    bearing, _ = resolve_bearing(designation, geometry)
+    from ..diagnosis import analyze_file
+
     try:
-        signal = read_signal(signal_file, sample_rate=sample_rate_hz)
-        if channel is not None:
-            signal.channel(channel)
+        diag = analyze_file(signal_file, bearing, **options)
     except InputError as exc:
-        if exc.parameter == "sample_rate_hz" and sample_rate_hz is None:
-            raise BearinglabError("--sample-rate-hz is required: the file does not store its "
-                                  "sample rate (CWRU records are 12000 or 48000 Hz)") from None
-        flag = _READ_FLAGS.get(exc.parameter)
+        flag = FLAGS.get(exc.parameter.split("[")[0])
         if flag is None:
             raise
-        value = str(signal_file) if flag == "SIGNAL_FILE" else (
-            channel if flag == "--channel" else sample_rate_hz)
+        given = {"SIGNAL_FILE": str(signal_file), "--speed-rpm": speed_rpm,
+                 "--method": method, "--band-hz": band_hz, "--channel": channel,
+                 "--sample-rate-hz": sample_rate_hz, "--tolerance": tolerance,
+                 "--speed-range-rpm": speed_range_rpm, "--false-alarm": false_alarm}
+        value = given.get(flag, exc.value)
+        if flag == "--speed-rpm" and speed_rpm is None:
+            raise OptionError(flag, None, "a speed in rpm or auto (the file does not record "
+                              "the shaft speed)") from None
+        if flag == "--sample-rate-hz" and sample_rate_hz is None:
+            raise OptionError(flag, None, "the sample rate in Hz (the file does not store it; "
+                              "CWRU records are 12000 or 48000 Hz)") from None
         raise OptionError(flag, value, exc.allowed, exc.hint) from None
-    if speed_rpm is None:
-        recorded = signal.metadata.get("speed_rpm")
-        if not isinstance(recorded, (int, float)) or isinstance(recorded, bool):
-            raise BearinglabError("--speed-rpm is required: the file does not record the "
-                                  "shaft speed")
-        speed_rpm = float(recorded)
-    shaft_speed = speed_rad_s(speed_rpm)
-    bearing, _ = resolve_bearing(designation, geometry)
-    kin = defect_frequencies(bearing, shaft_speed)
-    try:
-        diag = analyze_signal(signal, None, kin, channel=channel, band=band)
-    except InputError as exc:
-        if exc.parameter == "band":
-            raise OptionError("--band-hz", band_hz, exc.allowed) from None
-        raise
     if plot is not None:
         _save_plot(diag, plot)
-    out = {"file": str(signal_file), "designation": designation, "channel": diag.channel,
-           "sample_rate_hz": diag.sample_rate, "duration_s": signal.duration,
-           "speed_rpm": speed_rpm, "kinematic": kin.to_dict(), "peaks": peaks_json(diag.peaks),
-           "likely_fault": diag.likely_fault, "faults": diag.faults, "scores": diag.scores,
-           "reason": diag.reason,
-           "band_hz": None if diag.band is None else list(diag.band),
-           "resolution_hz": diag.resolution,
-           "ball_defect_frequency_hz": diag.ball_defect_frequency_hz,
-           "warnings": _geometry_warnings(bearing)}
+    out = {"file": str(signal_file), "designation": designation, **diag.to_dict()}
+    out["warnings"] = list(out["warnings"]) + _geometry_warnings(bearing)
     if json_output:
         _emit_json(out)
         return
-    console.print(_table(f"{escape(signal_file.name)}: channel {diag.channel}", ["", "value"], [
-        ["channels", ", ".join(signal.names)],
-        ["samples", (f"{signal.n_samples} at {signal.sample_rate:g} Hz "
-                     f"({signal.duration:g} s)")],
-        ["bearing, speed", f"{bearing.name or 'bearing'}, {speed_rpm:g} rpm"]]))
-    console.print(escape(_geometry_line(bearing)))
-    print_diagnosis(diag, diag.channel or "signal")
+    print_verdict(diag, signal_file.name, bearing)
     _print_warnings(out["warnings"])
 
+
+def print_verdict(diag, name: str, bearing) -> None:
+    """The record, the family tests, the lines and the verdict as tables (the same data as
+    ``to_dict``)."""
+    speed = diag.speed
+    measured = speed.get("measured_rpm")
+    console.print(_table(f"{escape(name)}: channel {diag.channel}", ["", "value"], [
+        ["sample rate", f"{diag.sample_rate:g} Hz"],
+        ["bearing", bearing.name or "bearing"],
+        ["speed used", f"{speed['used_rpm']:.6g} rpm ({speed['source']})"],
+        ["speed the signal shows",
+         "no shaft line found" if measured is None else f"{measured:.6g} rpm"],
+        ["methods", ", ".join(diag.methods)],
+        ["resolution", f"{diag.resolution:.3g} Hz"]]))
+    console.print(escape(_geometry_line(bearing)))
+    rows = [[name, t["method"], t["kinematic_hz"], t["fundamental_hz"], 100 * t["slip"],
+             round(t["significance"], 2), "yes" if t["passed"] else "no"]
+            for name, t in diag.families.items()]
+    console.print(_table(f"Fault families: significance -log10 p, threshold "
+                         f"{diag.threshold:.3g} (false-alarm probability {diag.false_alarm:g})",
+                         ["family", "method", "f kin [Hz]", "f fit [Hz]", "slip [%]",
+                          "signif.", "found"], rows))
+    from ..diagnosis import peak_label
+
+    lines = [[p["frequency_hz"], p["z"], peak_label(p),
+              None if p.get("deviation") is None else 100 * p["deviation"]]
+             for p in diag.peaks]
+    console.print(_table("Envelope lines", ["f [Hz]", "level over floor [-]", "matched",
+                                            "deviation [%]"], lines))
+    console.print(f"verdict: [bold]{escape(diag.verdict)}[/bold]")
+    console.print(f"[dim]{escape(diag.reason)}[/dim]")
