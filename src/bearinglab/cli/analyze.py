@@ -131,7 +131,7 @@ def analyze_command(
             "+-5 % of the recorded speed).", show_default=False)] = None,
         method: Annotated[list[str] | None, typer.Option(
             "--method", help="raw, cpw, drs-sk or all (repeatable or comma-separated): "
-            "Smith & Randall's Methods 1-3; default drs-sk (raw for bearinglab "
+            "Smith & Randall's Methods 1-3; default cpw (raw for bearinglab "
             "simulations).", show_default=False)] = None,
         band_hz: Annotated[str | None, typer.Option(
             "--band-hz", help="Demodulation band: none (each method's own: whole band, or "

@@ -36,10 +36,9 @@ HARMONICS = 8
 FALSE_ALARM = 0.01
 #: Default methods, chosen by measurement on the 18 shared CWRU and MFPT records
 #: (docs/capabilities/diagnosis.md), scoring right Y records + healthy + MFPT minus twice
-#: the wrong faults: drs-sk alone 11 (8 of 12 Y, no wrong fault), cpw + drs-sk 10 (9 Y,
-#: record 118, a ball fault Smith & Randall find undiagnosable, called "outer race"),
-#: all three 10, raw 9.
-DEFAULT_METHODS = ("drs-sk",)
+#: the wrong faults: cpw 11 (8 of 12 Y, no wrong fault), all three 10 and drs-sk 8 (both
+#: call record 118, a ball fault Smith & Randall find undiagnosable, "outer race").
+DEFAULT_METHODS = ("cpw",)
 #: Methods for a record simulated by bearinglab (no random slip: deterministic).
 SIMULATED_METHODS = ("raw",)
 #: Fewest cage revolutions a record must hold: below that the cage line is not a line.
@@ -140,6 +139,13 @@ def _speed(frequencies, shaft_speed, speed_range, x, fs, warnings):
         if found.frequency is None:
             warnings.append(f"no shaft line found within {100 * SEARCH:g} % of the given "
                             f"{nominal * 30 / math.pi:.6g} rpm: the speed is not checked")
+        elif found.sub_multiple:
+            k = found.sub_multiple
+            warnings.append(f"the shaft series near {nominal * 30 / math.pi:.6g} rpm is also a "
+                            f"series at 1/{k} of it ({60 * found.frequency / k:.6g} rpm): "
+                            f"the lines may be the {k}th harmonics of the real shaft - check "
+                            f"the speed and the sample rate (a rate {k} times too low reads "
+                            "every frequency k times too high)")
         elif abs(found.frequency / (nominal / (2 * math.pi)) - 1) > SPEED_WARNING:
             warnings.append(f"the signal shows the shaft at {60 * found.frequency:.6g} rpm, "
                             f"{100 * (found.frequency / (nominal / (2 * math.pi)) - 1):+.1f} % "
@@ -202,7 +208,7 @@ def analyze_signal(signal_or_array, sample_rate, frequencies, *, channel: str | 
         Channel of a Signal; default ``acc_y``, ``DE`` or ``gs`` if present, else the first.
     methods : str or sequence of str, optional
         ``raw``, ``cpw``, ``drs-sk`` (Smith & Randall's Methods 1-3), several, or "all".
-        Default DEFAULT_METHODS (``drs-sk``), except for a record simulated
+        Default DEFAULT_METHODS (``cpw``), except for a record simulated
         by bearinglab (a Signal whose metadata names its ``model``): SIMULATED_METHODS
         (``raw``), because a simulation without random slip is deterministic, and
         pre-whitening and discrete/random separation remove deterministic periodic

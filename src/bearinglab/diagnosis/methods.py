@@ -20,6 +20,7 @@ equivalent degrees of freedom (:func:`bearinglab.diagnosis.statistics.welch_dof`
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -85,15 +86,19 @@ def parse_methods(methods) -> tuple[str, ...]:
 
 
 def segment_length(n: int, sample_rate: float, resolution: float) -> int:
-    """Welch segment [samples]: the longest fast FFT length (2, 3, 5-smooth) at most
-    f_s / ``resolution`` and at most ``n``."""
+    """Welch segment [samples]: the power of two nearest f_s / ``resolution`` (so that a
+    small change of speed or rate does not change the segmentation), at most ``n``; a
+    whole record that is shorter is used as it is, cut to the longest fast FFT length."""
     import scipy.fft
 
-    target = int(min(n, max(16, round(sample_rate / resolution))))
+    target = max(16.0, sample_rate / resolution)
+    power = 2 ** int(round(math.log2(target)))
+    if power <= n:
+        return int(power)
     prev = getattr(scipy.fft, "prev_fast_len", None)
     if prev is not None:
-        return int(prev(target, real=True))
-    m = target
+        return int(prev(n, real=True))
+    m = n
     while scipy.fft.next_fast_len(m, real=True) != m:
         m -= 1
     return m

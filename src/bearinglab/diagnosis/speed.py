@@ -36,20 +36,23 @@ SEARCH = 0.05
 class ShaftEstimate:
     """Shaft frequency found in a record: ``frequency`` [Hz] (None when no significant
     series was found), the search range ``low`` - ``high`` [Hz], the series' ``p_value``
-    [-] and the number of ``harmonics`` found [-]."""
+    [-], the number of ``harmonics`` found [-] and ``sub_multiple`` k when the series
+    found is also a significant series at frequency / k below the range (a sample rate or
+    speed k times too high) [-]."""
 
     frequency: float | None
     low: float
     high: float
     p_value: float
     harmonics: int
+    sub_multiple: int | None = None
 
     def to_dict(self) -> dict:
         """JSON form (Hz and rpm)."""
         f = self.frequency
         return {"measured_hz": f, "measured_rpm": None if f is None else 60.0 * f,
                 "search_rpm": [60.0 * self.low, 60.0 * self.high], "p_value": self.p_value,
-                "harmonics_found": self.harmonics}
+                "harmonics_found": self.harmonics, "sub_multiple": self.sub_multiple}
 
 
 def shaft_frequency(x: np.ndarray, sample_rate: float, low: float, high: float,
@@ -99,15 +102,18 @@ def shaft_frequency(x: np.ndarray, sample_rate: float, low: float, high: float,
         return ShaftEstimate(None, low, high, test.p_value, 0)
     # a series at f also shows at 2f (every other line): prefer the lowest sub-multiple
     # inside the range whose own series is significant (octave errors of pitch search)
+    below = None
     for k in (4, 3, 2):
         sub = test.fundamental_hz / k
-        if sub < low:
-            continue
         lower = series_test(z, resolution, 2.0, sub, 0.01, 0.01, harmonics, top)
-        if lower.p_value < SPEED_ALPHA:
-            test = lower
-            found = [ln for ln in test.lines if ln.p_value < SPEED_ALPHA]
-            break
+        if lower.p_value >= SPEED_ALPHA or sub < 0.5:
+            continue
+        if sub < low:  # the series found is the k-th harmonic of one below the range
+            below = below or k
+            continue
+        test = lower
+        found = [ln for ln in test.lines if ln.p_value < SPEED_ALPHA]
+        break
     # refine each line by a parabola through its bin and the neighbours (log power)
     refined = []
     for line in found:
@@ -121,4 +127,4 @@ def shaft_frequency(x: np.ndarray, sample_rate: float, low: float, high: float,
     estimate = float(np.sum(k * f) / np.sum(k * k)) if k.size else test.fundamental_hz
     if not math.isfinite(estimate) or not low <= estimate <= high:
         estimate = test.fundamental_hz
-    return ShaftEstimate(estimate, low, high, test.p_value, len(found))
+    return ShaftEstimate(estimate, low, high, test.p_value, len(found), below)
