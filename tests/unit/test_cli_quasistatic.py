@@ -60,9 +60,11 @@ def test_static_plot(tmp_path, capsys):
     (["stiffness-map", "6205", "--radial-load-n", "0:100"], "--radial-load-n"),
     (["stiffness-map", "6205", "--speed-rpm", "abc"], "--speed-rpm"),
     (["ring-modes", "6310", "--modes", "0:3"], "--modes"),
-    (["ring-modes", "6310", "--free-frequencies-khz", "1.9,x"], "--free-frequencies-khz"),
-    (["ring-modes", "6310", "--modes", "2:4", "--free-frequencies-khz", "1.9"],
-     "--free-frequencies-khz"),
+    (["ring-modes", "6310", "--free-frequencies-hz", "1900,x"], "--free-frequencies-hz"),
+    (["ring-modes", "6310", "--modes", "2:4", "--free-frequencies-hz", "1900"],
+     "--free-frequencies-hz"),
+    (["ring-modes", "--balls", "8", "--modes", "2:3"], "--free-frequencies-hz"),
+    (["ring-modes", "--modes", "2:3"], "DESIGNATION"),
     (["ring-modes", "6310", "--axial-load-n", "0"], "--axial-load-n"),
     (["ring-modes", "6310", "--ring-mass-kg", "0"], "--ring-mass-kg"),
     (["stiffness-map", "6205", "--radial-load-n", "0:1:10000", "--axial-load-n", "0:1:10000"],
@@ -92,15 +94,25 @@ def test_ring_modes_json_with_the_paper_overrides(capsys):
     # measured free-ring frequencies 1.92 / 5.34 / 10.00 kHz (m = 2, 3, 4)
     d = run_json(capsys, "ring-modes", "310", "--system", "gost", "--modes", "1:4",
                  "--ring-mass-kg", "0.6", "--radial-stiffness-n-per-m", "150e6",
-                 "--free-frequencies-khz", "1.92,5.34,10.00", "--ball-mass-ratio", "0.33",
+                 "--free-frequencies-hz", "1920,5340,10000", "--ball-mass-ratio", "0.33",
                  "--contact-stiffness-ratio", "1")
     modes = {m["m"]: m for m in d["modes"]}
     assert set(modes) == {1, 2, 3, 4}
-    assert modes[1]["approx_khz"][0] == pytest.approx(2.516, abs=0.01)   # f_1
-    assert modes[3]["approx_khz"][0] == pytest.approx(6.3, abs=0.05)     # seed 000: 6.3
-    assert len(modes[4]["approx_khz"]) == 2                               # 2m = n: split
+    assert modes[1]["approx_hz"][0] == pytest.approx(2516, abs=10)      # f_1
+    assert modes[3]["approx_hz"][0] == pytest.approx(6300, abs=50)      # seed 000: 6.3 kHz
+    assert len(modes[4]["approx_hz"]) == 2                              # 2m = n: split
     for m in modes.values():
-        assert {"m", "free_khz", "approx_khz", "refined_khz", "epsilon"} <= m.keys()
+        assert {"m", "free_hz", "approx_hz", "refined_hz", "epsilon"} <= m.keys()
+
+
+def test_ring_modes_from_ring_level_inputs_alone(capsys):
+    """Seed 000's own inputs, with no ball geometry: the same frequencies as with the 310."""
+    args = ["--modes", "1:4", "--ring-mass-kg", "0.6", "--radial-stiffness-n-per-m", "150e6",
+            "--free-frequencies-hz", "1920,5340,10000", "--ball-mass-ratio", "0.33",
+            "--contact-stiffness-ratio", "1"]
+    alone = run_json(capsys, "ring-modes", "--balls", "8", *args)
+    with_bearing = run_json(capsys, "ring-modes", "310", "--system", "gost", *args)
+    assert alone["modes"] == with_bearing["modes"] and alone["bearing"] is None
 
 
 def test_ring_modes_with_the_load_distribution_stiffness(capsys):

@@ -555,6 +555,10 @@ def check_path(flag: str, path: Path | None, suffixes: tuple[str, ...]) -> None:
         raise OptionError(flag, str(path), "a path in an existing directory")
 
 
+#: library parameter -> the option's quantity name where the two differ
+_PARAMETER_OPTIONS = {"shaft_speed": "speed"}
+
+
 def option_error(exc: InputError, options: dict) -> InputError:
     """A library error in the command line's terms: the option that holds the parameter.
 
@@ -567,10 +571,11 @@ def option_error(exc: InputError, options: dict) -> InputError:
 
     if isinstance(exc, OptionError):
         return exc
+    parameter = _PARAMETER_OPTIONS.get(exc.parameter, exc.parameter)
     for name, typed in options.items():
         unit = unit_of(name)
         base = name[:-len(unit.suffix) - 1] if unit is not None else name
-        if base != exc.parameter:
+        if base != parameter:
             continue
         value = typed
         if value is None and isinstance(exc.value, (int, float)) and unit is not None:

@@ -10,9 +10,11 @@ import typer
 from rich.markup import escape
 from rich.progress import Progress
 
+from ..errors import InputError
 from ..files import write_atomically
 from ..lubrication import LUBRICANTS, ZERO_CELSIUS
 from ..operating import OperatingCondition
+from ..plausibility import operating_warnings
 from ..plotting import save_figure, stiffness_map_figure
 from ..quasistatic import solve_load_distribution
 from ..quasistatic.orbit import inner_ring_orbit
@@ -27,6 +29,7 @@ from ._inputs import (
     _geometry_warnings,
     _print_warnings,
     load_n,
+    option_error,
     resolve_bearing,
     save_plot_figure,
     speed_rad_s,
@@ -151,6 +154,11 @@ def static(designation: DesignationArg = None,
         raise OptionError("--speed-rpm", speed_rpm, "a speed > 0 rpm with --orbit and form "
                           "errors (the orbit then runs in time)")
     bearing, _ = resolve_bearing(designation, geometry)
+    try:
+        plausibility = operating_warnings(bearing, condition)
+    except InputError as exc:
+        raise option_error(exc, {"radial_load_n": radial_load_n, "axial_load_n": axial_load_n,
+                                 "speed_rpm": speed_rpm}) from None
     imperfections = forms.build(bearing, seed)
     options = {"lubricant": oil, "temperature": temperature, "gyroscopic": gyroscopic,
                "ring_expansion": ring_expansion}
@@ -161,7 +169,7 @@ def static(designation: DesignationArg = None,
         errors = imperfections.approach_change(bearing, psi).total
     result = solve_load_distribution(bearing, condition, ball_diameter_errors=errors, **options)
     d = result.to_dict()
-    d["warnings"] = _geometry_warnings(bearing) + d["warnings"]
+    d["warnings"] = _geometry_warnings(bearing) + plausibility + d["warnings"]
     out = {"designation": designation, **d}
     if imperfections is not None:
         out["imperfections"] = imperfections.to_dict()

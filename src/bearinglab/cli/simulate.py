@@ -12,7 +12,9 @@ from rich.markup import escape
 from ..diagnosis import analyze_signal
 from ..dynamics import simulate
 from ..errors import BearinglabError, InputError
+from ..kinematics import defect_frequencies
 from ..operating import OperatingCondition
+from ..plausibility import LOCATION_FAMILY, operating_warnings, sampling_warnings
 from ..signal import SUFFIXES, write_signal
 from ..signal.lines import spectrum_lines
 from ._app import command_app, console
@@ -36,6 +38,7 @@ from ._inputs import (
     _print_warnings,
     check_loads,
     check_path,
+    option_error,
     positive,
     resolve_bearing,
     save_plot_figure,
@@ -139,6 +142,15 @@ def simulate_command(
                               f"{defect_reason(exc)}") from None
     condition = OperatingCondition(radial_load=radial_load_n, axial_load=axial_load_n,
                                    shaft_speed=shaft_speed)
+    # a record that cannot show the simulated defects (or, healthy, even BPFO) is refused
+    families = [LOCATION_FAMILY[d.location] for d in defects] or ["outer_race"]
+    try:
+        plausible = (operating_warnings(bearing, condition)
+                     + sampling_warnings(defect_frequencies(bearing, shaft_speed),
+                                         sample_rate_hz, duration_s, families))
+    except InputError as exc:
+        raise option_error(exc, {"radial_load_n": radial_load_n, "speed_rpm": speed_rpm,
+                                 "sample_rate_hz": sample_rate_hz}) from None
     running = f"simulating ({model.value} model)"
     with progress_bar(simulation_stage(model.value), enabled=not json_output) as update:
         try:
@@ -157,7 +169,7 @@ def simulate_command(
     if plot is not None:
         _plot_spectra(diag, spec, spectrum_peaks, spectrum_channel, plot)
     has_ball = any(d.location == "ball" for d in defects)
-    warnings = _geometry_warnings(bearing)
+    warnings = _geometry_warnings(bearing) + plausible + list(sim.warnings)
     if axial_load_n:
         warnings.append(f"--axial-load-n {axial_load_n:g} N does not enter the {model.value} "
                         "model (it is planar: radial load only)")

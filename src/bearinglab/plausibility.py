@@ -1,0 +1,208 @@
+"""Plausibility of an operating point and of a record, in the user's terms.
+
+Inputs that run but make no physical sense get a warning (or, past the point where the
+models stop describing the bearing, an :class:`~bearinglab.errors.InputError`):
+
+- **load against the static rating** (ISO 76:2006): the static safety factor
+  s0 = C0 / P0 with P0 the static equivalent load. Below 1 the contact pressure of the
+  most heavily loaded ball passes the 4200 MPa at which ISO 76 puts a permanent
+  deformation of 1e-4 D_w; a warning. Below 1/8 (P0 > 8 C0, a Hertz pressure twice that
+  of C0, p ~ P^(1/3)) the elastic contact models no longer describe the bearing; an error.
+- **speed**: the speed factor n d_m against 1e6 mm/min, above which standard ball bearings
+  pass the limiting speeds their makers list (a rule of thumb from makers' speed factors,
+  not a standard: no ISO standard sets limiting speeds, which are makers' ratings; ISO
+  15312 defines the thermal speed rating), a warning;
+  above :data:`bearinglab.quasistatic.MAX_SPEED_FACTOR` (3e6 mm/min) the quasi-static
+  model is not valid, an error. And the balls' centrifugal force against the heaviest
+  ball load of the external load (Stribeck's 5 F_r / (Z cos alpha)): when it is larger,
+  the outer-race contacts are set by speed, not load (a warning).
+- **sampling** of a record against the bearing's frequencies: the defect frequency of a
+  fault family above the Nyquist frequency fs/2 cannot appear in the record (an error
+  for the families a simulation contains, a warning for their first harmonics and the
+  sidebands the physics puts on them: +-f_shaft around BPFI, +-FTF around the ball-defect
+  rate); a frequency resolution 1/T coarser than FTF / 3 cannot separate the cage
+  sidebands (a warning).
+
+Each check returns the warnings as sentences and raises for the errors; the commands
+(``static``, ``simulate``, ``noise``, ``report``) show the same sentences.
+"""
+
+from __future__ import annotations
+
+import math
+
+from .errors import InputError
+from .units import rad_s_to_rpm
+
+#: s0 below which the load is past the static rating (ISO 76) [-].
+MIN_STATIC_SAFETY = 1.0
+#: s0 below which the elastic contact models no longer apply [-].
+MIN_ELASTIC_SAFETY = 1.0 / 8.0
+#: Speed factor above which standard ball bearings pass their makers' limiting speeds
+#: [mm/min] (a rule of thumb; see the module docstring).
+HIGH_SPEED_FACTOR = 1.0e6
+#: Cage revolutions a record should hold to separate the cage sidebands (resolution
+#: FTF / 3) [-].
+MIN_CAGE_REVOLUTIONS = 3.0
+
+#: fault family -> the kinematic frequency that carries it and the sideband spacing
+FAMILIES = {"outer_race": ("bpfo", None), "inner_race": ("bpfi", "shaft"),
+            "ball": ("ball_defect", "ftf"), "cage": ("ftf", None)}
+#: how the frequencies are named in messages
+_LABEL = {"bpfo": "BPFO", "bpfi": "BPFI", "ball_defect": "the ball-defect rate 2 BSF",
+          "ftf": "FTF", "shaft": "the shaft frequency"}
+#: Defect.location -> fault family
+LOCATION_FAMILY = {"outer": "outer_race", "inner": "inner_race", "ball": "ball"}
+
+
+def static_safety(bearing, radial_load: float, axial_load: float = 0.0) -> float | None:
+    """s0 = C0 / P0 (ISO 76:2006) [-]; None without a load or for a geometry the rating
+    does not cover."""
+    from .life import equivalent_static_load, load_ratings
+
+    try:
+        p0 = equivalent_static_load(bearing, radial_load, abs(axial_load))
+        c0 = load_ratings(bearing).static
+    except InputError:
+        return None
+    return c0 / p0 if p0 > 0 else None
+
+
+def load_warnings(bearing, radial_load: float, axial_load: float = 0.0) -> list[str]:
+    """The load against the static rating C0: a warning below s0 = 1, an error below 1/8.
+
+    Raises
+    ------
+    InputError
+        Named ``radial_load`` (or ``axial_load`` when only that is given), when the static
+        equivalent load passes 8 C0.
+    """
+    s0 = static_safety(bearing, radial_load, axial_load)
+    if s0 is None or s0 >= MIN_STATIC_SAFETY:
+        return []
+    from .life import equivalent_static_load, load_ratings
+
+    c0 = load_ratings(bearing).static
+    p0 = equivalent_static_load(bearing, radial_load, abs(axial_load))
+    if s0 < MIN_ELASTIC_SAFETY:
+        name, value = (("radial_load", radial_load) if radial_load > 0
+                       else ("axial_load", axial_load))
+        raise InputError(name, value, f"a load whose static equivalent P0 is at most "
+                         f"{1 / MIN_ELASTIC_SAFETY:g} C0 = {c0 / MIN_ELASTIC_SAFETY:.4g} N [N]",
+                         f"P0 = {p0:.4g} N is {p0 / c0:.3g} times the static rating C0 = "
+                         f"{c0:.4g} N (ISO 76): the contacts would flow plastically and no "
+                         "elastic model applies")
+    return [f"static safety factor s0 = C0/P0 = {s0:.3g} < 1: the static equivalent load "
+            f"P0 = {p0:.4g} N is above the static rating C0 = {c0:.4g} N (ISO 76): the "
+            "raceways deform permanently by more than 1e-4 D_w; results assume elastic "
+            "contacts"]
+
+
+def speed_factor(bearing, shaft_speed: float) -> float:
+    """n d_m [mm/min] of the shaft speed [rad/s]."""
+    return abs(rad_s_to_rpm(shaft_speed)) * bearing.pitch_diameter * 1e3
+
+
+def speed_warnings(bearing, shaft_speed: float, radial_load: float = 0.0,
+                   axial_load: float = 0.0) -> list[str]:
+    """The speed against the makers' usual limits and against the load (warnings), and
+    against the quasi-static model's limit (an error).
+
+    Raises
+    ------
+    InputError
+        Named ``shaft_speed``, above :func:`bearinglab.quasistatic.speed_limit`.
+    """
+    from .quasistatic import MAX_SPEED_FACTOR, centrifugal_force
+
+    if shaft_speed == 0:
+        return []
+    ndm = speed_factor(bearing, shaft_speed)
+    rpm = abs(rad_s_to_rpm(shaft_speed))
+    if ndm > MAX_SPEED_FACTOR * (1 + 1e-12):
+        top = MAX_SPEED_FACTOR / (bearing.pitch_diameter * 1e3)
+        raise InputError("shaft_speed", f"{rpm:.6g} rpm",
+                         f"at most {top:.6g} rpm for this bearing (n d_m <= "
+                         f"{MAX_SPEED_FACTOR:.0e} mm/min with d_m = "
+                         f"{bearing.pitch_diameter * 1e3:.4g} mm)",
+                         "beyond it the balls' centrifugal force swamps the contact loads "
+                         "and no model here is valid")
+    out = []
+    if ndm > HIGH_SPEED_FACTOR:
+        out.append(f"speed factor n d_m = {ndm:.3g} mm/min is above {HIGH_SPEED_FACTOR:.0e} "
+                   "mm/min, beyond the limiting speeds makers list for standard ball "
+                   "bearings: check the maker's limiting speed for this design and "
+                   "lubrication")
+    fc = centrifugal_force(bearing, shaft_speed)
+    z, alpha = bearing.ball_count, bearing.contact_angle
+    q_max = max(5.0 * radial_load / (z * max(math.cos(alpha), 1e-9)),
+                abs(axial_load) / (z * max(math.sin(alpha), 1e-9)) if axial_load else 0.0)
+    if fc > q_max and (radial_load or axial_load):
+        out.append(f"each ball's centrifugal force F_c = {fc:.4g} N exceeds the heaviest ball "
+                   f"load of the external load (about {q_max:.4g} N, Stribeck): the outer "
+                   "contacts are set by speed rather than load")
+    return out
+
+
+def sampling_warnings(frequencies, sample_rate: float, duration: float | None = None,
+                      families=None) -> list[str]:
+    """The sample rate and record length against the bearing's frequencies.
+
+    Parameters
+    ----------
+    frequencies : DefectFrequencies
+        The kinematic frequencies (:func:`bearinglab.kinematics.defect_frequencies`).
+    sample_rate : float
+        [Hz].
+    duration : float or None
+        Record length T [s]; None skips the resolution check.
+    families : iterable of str or None
+        The fault families the record must show (``outer_race``, ``inner_race``, ``ball``,
+        ``cage``): the error is for these; None checks every family, as warnings only.
+
+    Raises
+    ------
+    InputError
+        Named ``sample_rate``, when the defect frequency of a family in ``families`` is
+        above the Nyquist frequency.
+    """
+    nyquist = 0.5 * sample_rate
+    must = set(families or ())
+    out = []
+    too_high = []
+    for family, (name, sideband) in FAMILIES.items():
+        f = frequencies.hz(name)
+        if f > nyquist:
+            too_high.append((family, name, f))
+            continue
+        top = 2.0 * f + (frequencies.hz(sideband) if sideband else 0.0)
+        if top > nyquist and (families is None or family in must):
+            what = "harmonic and its sidebands reach" if sideband else "harmonic lies at"
+            out.append(f"the second {what} {top:.5g} Hz (of {_LABEL[name]} = {f:.5g} Hz), "
+                       f"above the Nyquist frequency {nyquist:.5g} Hz: the "
+                       f"{family.replace('_', '-')} family shows only its first line")
+    required = [t for t in too_high if t[0] in must]
+    if required:
+        family, name, f = max(required, key=lambda t: t[2])
+        raise InputError("sample_rate", sample_rate,
+                         f"a sample rate above {2 * f:.6g} Hz [Hz]",
+                         f"{_LABEL[name]} = {f:.5g} Hz, the {family.replace('_', '-')} defect "
+                         f"frequency, is above the Nyquist frequency {nyquist:.5g} Hz")
+    for family, name, f in too_high:
+        out.append(f"{_LABEL[name]} = {f:.5g} Hz is above the Nyquist frequency "
+                   f"{nyquist:.5g} Hz: a {family.replace('_', '-')} fault cannot show in "
+                   "this record")
+    if duration is not None:
+        ftf = frequencies.hz("ftf")
+        if duration * ftf < MIN_CAGE_REVOLUTIONS:
+            out.append(f"the frequency resolution 1/T = {1 / duration:.3g} Hz is too coarse "
+                       f"to separate the cage sidebands (FTF = {ftf:.4g} Hz): record at least "
+                       f"{MIN_CAGE_REVOLUTIONS / ftf:.3g} s")
+    return out
+
+
+def operating_warnings(bearing, condition) -> list[str]:
+    """:func:`load_warnings` and :func:`speed_warnings` of an operating condition."""
+    return (load_warnings(bearing, condition.radial_load, condition.axial_load)
+            + speed_warnings(bearing, condition.shaft_speed, condition.radial_load,
+                             condition.axial_load))

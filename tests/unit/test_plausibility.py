@@ -1,0 +1,82 @@
+"""Plausibility checks in the user's terms (issue 14): each fires on an odd input and
+stays silent on a normal one (the README's examples)."""
+
+import math
+
+import pytest
+
+from bearinglab import plausibility as P
+from bearinglab.catalog import bearing_from_designation
+from bearinglab.cli import main
+from bearinglab.errors import InputError
+from bearinglab.kinematics import defect_frequencies
+from bearinglab.operating import OperatingCondition
+
+B, _ = bearing_from_designation("6205")
+RPM = math.pi / 30
+
+
+def test_static_safety_is_c0_over_p0():
+    from bearinglab.life import load_ratings
+
+    assert P.static_safety(B, 1000.0) == pytest.approx(load_ratings(B).static / 1000.0)
+    assert P.static_safety(B, 0.0) is None
+
+
+def test_load_past_c0_warns_and_far_past_it_is_an_error():
+    assert P.load_warnings(B, 1000.0) == []
+    (text,) = P.load_warnings(B, 10_000.0)
+    assert "s0 = C0/P0 = 0.789" in text and "C0 = 7886 N" in text
+    with pytest.raises(InputError) as err:
+        P.load_warnings(B, 1e6)                     # 127 C0 (issue 14's example)
+    assert err.value.parameter == "radial_load" and "127 times" in str(err.value)
+
+
+def test_speed_warnings_and_the_model_limit():
+    assert P.speed_warnings(B, 1797 * RPM, 1000.0) == []
+    texts = P.speed_warnings(B, 30_000 * RPM, 100.0)
+    assert any("n d_m = 1.17e+06" in t for t in texts)
+    assert any("centrifugal force" in t for t in texts)
+    with pytest.raises(InputError) as err:
+        P.speed_warnings(B, 1e6 * RPM, 100.0)
+    assert err.value.parameter == "shaft_speed"
+
+
+def test_sampling_nyquist_error_for_the_simulated_family_and_warnings_otherwise():
+    kin = defect_frequencies(B, 1797 * RPM)
+    assert P.sampling_warnings(kin, 12_000.0, 1.0) == []
+    with pytest.raises(InputError) as err:
+        P.sampling_warnings(kin, 100.0, 1.0, families=["outer_race"])
+    assert err.value.parameter == "sample_rate" and "BPFO" in err.value.hint
+    texts = P.sampling_warnings(kin, 300.0, 1.0)            # BPFI 162 Hz > 150 Hz
+    assert any(t.startswith("BPFI = 162.19 Hz is above the Nyquist") for t in texts)
+    (coarse,) = P.sampling_warnings(kin, 12_000.0, 0.1)
+    assert "too coarse to separate the cage sidebands" in coarse
+
+
+def test_operating_warnings_of_a_condition():
+    c = OperatingCondition(radial_load=10_000.0, shaft_speed=1797 * RPM)
+    assert len(P.operating_warnings(B, c)) == 1
+
+
+@pytest.mark.parametrize("argv, flag", [
+    (["static", "6205", "--radial-load-n", "1e6"], "--radial-load-n"),
+    (["static", "6205", "--radial-load-n", "100", "--speed-rpm", "1e6"], "--speed-rpm"),
+    (["simulate", "6205", "--speed-rpm", "1797", "--radial-load-n", "500", "--defect",
+      "outer:width_mm=1", "--sample-rate-hz", "100"], "--sample-rate-hz"),
+    (["simulate", "6205", "--speed-rpm", "1797", "--radial-load-n", "500",
+      "--sample-rate-hz", "10"], "--sample-rate-hz"),
+])
+def test_commands_name_the_option(capsys, argv, flag):
+    assert main(argv) == 2
+    err = capsys.readouterr().err
+    assert err.startswith(f"error: {flag} = ") and err.count("\n") == 1
+
+
+def test_readme_static_example_has_no_plausibility_warning(capsys):
+    assert main(["static", "6205", "--radial-load-n", "1000", "--axial-load-n", "200",
+                 "--speed-rpm", "3000", "--json"]) == 0
+    import json
+
+    warnings = json.loads(capsys.readouterr().out)["warnings"]
+    assert not any("s0 =" in w or "n d_m" in w or "Nyquist" in w for w in warnings)
