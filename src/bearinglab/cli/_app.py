@@ -36,6 +36,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "simulate": ("simulate", ("Simulate the vibration of a bearing with defects and form errors "
                              "(seed 003 rigid model or seed 004 slip model).")),
     "analyze": ("analyze", "Diagnose a vibration record by envelope analysis."),
+    "benchmark": ("benchmark", "Run the diagnosis over a folder of labelled recordings."),
     "noise": ("noise", ("Noise of a running ball bearing with waviness, ball-size errors and "
                        "random surfaces (seed 003 part 4, seed 002).")),
     "friction": ("friction", ("Friction torque and power loss: seed 003's constant coefficient "
