@@ -122,6 +122,36 @@ def test_a_section_that_needs_a_failed_one_says_so(monkeypatch):
     assert "needs the load distribution, which failed" in r.failed[1].error
 
 
+def test_failed_sections_exit_1_with_the_page_written(monkeypatch, capsys, tmp_path):
+    """A report with failed sections is still written and lists them, but the command's
+    exit code says it is incomplete (issue 14)."""
+    def broken(ctx):
+        raise RuntimeError("no equilibrium")
+
+    contact = next(s for s in SECTIONS if s[0] == "contact")
+    monkeypatch.setattr(report_builder, "SECTIONS",
+                        (("load-distribution", "Load distribution", broken), contact))
+    path = tmp_path / "r.html"
+    code = main(["report", "6205", "--speed-rpm", "1797", "--radial-load-n", "1000", "-o",
+                 str(path), "--json"])
+    d = json.loads(capsys.readouterr().out)
+    assert code == 1 and path.exists()
+    assert [f["section"] for f in d["failed_sections"]] == ["load-distribution", "contact"]
+
+
+def test_plausibility_warnings_on_the_page_and_in_json(capsys, tmp_path):
+    monkey_sections = [s for s in SECTIONS if s[0] == "identity"]
+    path = tmp_path / "r.html"
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(report_builder, "SECTIONS", tuple(monkey_sections))
+        code = main(["report", "6205", "--speed-rpm", "1797", "--radial-load-n", "10000",
+                     "-o", str(path), "--json"])
+    d = json.loads(capsys.readouterr().out)
+    assert code == 0
+    assert any("s0 = C0/P0 = 0.789" in w for w in d["warnings"])
+    assert "s0 = C0/P0 = 0.789" in path.read_text(encoding="utf-8")
+
+
 @pytest.mark.parametrize("args, option", [
     (["-o", "x.pdf"], "--output"),
     (["-o", "/no/such/dir/r.html"], "--output"),

@@ -8,10 +8,10 @@ from typing import Annotated
 import typer
 from rich.console import Console
 from rich.markup import escape
-from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
 from ..errors import InputError
 from ..operating import OperatingCondition
+from ..units import rpm_to_rad_s
 from ._app import command_app, console
 from ._forms import DEFECT_ALLOWED, parse_defect
 from ._inputs import (
@@ -20,11 +20,12 @@ from ._inputs import (
     _geometry_warnings,
     _print_warnings,
     check_loads,
+    option_error,
     resolve_bearing,
     speed_rad_s,
     with_geometry,
 )
-from ._output import _emit_json
+from ._output import _emit_json, progress_bar
 
 app = command_app()
 
@@ -89,7 +90,7 @@ def report_command(
     HTML page: geometry and sources, load distribution, contact, stiffness, ring
     resonances, defect frequencies, simulated envelope spectrum, vibration bands, sound,
     friction and life. A section whose analysis fails shows its error in the page and is
-    listed on stderr (the report is still written, exit code 0)."""
+    listed on stderr; the report is still written, and the exit code is 1."""
     from ..report import build_report
 
     _check(speed_rpm, radial_load_n, axial_load_n, duration_s, slip_duration_s, sample_rate_hz,
@@ -112,29 +113,28 @@ def report_command(
         if lubricant not in LUBRICANTS:
             raise OptionError("--lubricant", lubricant, f"one of {', '.join(LUBRICANTS)}")
     condition = OperatingCondition(radial_load=radial_load_n, axial_load=axial_load_n,
-                                   shaft_speed=speed_rpm * math.pi / 30)
-    err = Console(stderr=True)
-    with Progress(TextColumn("report: {task.description:<40}"), BarColumn(),
-                  TextColumn("{task.completed}/{task.total}"), TimeElapsedColumn(), console=err,
-                  transient=True, disable=not err.is_terminal) as progress:
-        task = progress.add_task("starting", total=1)
-
-        def step(title: str, done: int, total: int) -> None:
-            progress.update(task, description=title, completed=done, total=total)
-
-        report = build_report(bearing, condition, designation=decoded, defects=defects,
-                              lubricant=None if viscosity_mm2_s is not None else lubricant,
-                              viscosity=None if viscosity_mm2_s is None
-                              else viscosity_mm2_s * 1e-6,
-                              duration=duration_s, sample_rate=sample_rate_hz,
-                              slip_duration=slip_duration_s, progress=step)
+                                   shaft_speed=rpm_to_rad_s(speed_rpm))
+    with progress_bar("report", enabled=not json_output) as update:
+        try:
+            report = build_report(
+                bearing, condition, designation=decoded, defects=defects,
+                lubricant=None if viscosity_mm2_s is not None else lubricant,
+                viscosity=None if viscosity_mm2_s is None else viscosity_mm2_s * 1e-6,
+                duration=duration_s, sample_rate=sample_rate_hz, slip_duration=slip_duration_s,
+                progress=lambda title, done, total: update(done / total, f"report: {title}"))
+        except InputError as exc:
+            raise option_error(exc, {"radial_load_n": radial_load_n,
+                                     "axial_load_n": axial_load_n, "speed_rpm": speed_rpm,
+                                     "sample_rate_hz": sample_rate_hz,
+                                     "duration_s": duration_s}) from None
     try:
         report.write(output)
     except OSError as exc:
         raise OptionError("--output", str(output), "a writable file",
                           exc.strerror or type(exc).__name__) from None
     failed = [{"section": s.key, "title": s.title, "error": s.error} for s in report.failed]
-    warnings = _geometry_warnings(bearing)
+    warnings = _geometry_warnings(bearing) + list(report.warnings)
+    err = Console(stderr=True)
     for f in failed:
         err.print(f"[yellow]warning:[/yellow] section {escape(f['title'])!s} failed: "
                   f"{escape(f['error'])}", highlight=False, soft_wrap=True)
@@ -142,10 +142,12 @@ def report_command(
         _emit_json({"designation": designation, "output": str(output),
                     "sections": [s.key for s in report.sections],
                     "failed_sections": failed, "warnings": warnings})
-        return
-    ok = len(report.sections) - len(failed)
-    console.print(f"report written to [bold]{escape(str(output))}[/bold] ({ok} of "
-                  f"{len(report.sections)} sections"
-                  + (f"; failed: {escape(', '.join(f['title'] for f in failed))})" if failed
-                     else ")"))
-    _print_warnings(warnings)
+    else:
+        ok = len(report.sections) - len(failed)
+        console.print(f"report written to [bold]{escape(str(output))}[/bold] ({ok} of "
+                      f"{len(report.sections)} sections"
+                      + (f"; failed: {escape(', '.join(f['title'] for f in failed))})"
+                         if failed else ")"))
+        _print_warnings(warnings)
+    if failed:   # the page is written and lists them; the exit code says it is incomplete
+        raise typer.Exit(code=1)

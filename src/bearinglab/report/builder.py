@@ -8,8 +8,10 @@ from collections.abc import Callable
 
 from ..errors import InputError
 from ..geometry import BallBearing
+from ..kinematics import defect_frequencies
 from ..operating import OperatingCondition
-from . import mechanics, operation, vibration
+from ..plausibility import LOCATION_FAMILY, operating_warnings, sampling_warnings
+from . import mechanics, operation, spectra, vibration
 from .context import Context
 from .document import Report, Section
 
@@ -20,8 +22,8 @@ SECTIONS = (
     ("contact", "Contact pressures and ellipses", mechanics.contact),
     ("stiffness", "Stiffness and its variation with load", mechanics.stiffness),
     ("ring-resonances", "Ring resonances", mechanics.rings),
-    ("defect-frequencies", "Defect frequencies", vibration.frequencies),
-    ("envelope-spectrum", "Simulated envelope spectrum", vibration.envelope),
+    ("defect-frequencies", "Defect frequencies", spectra.frequencies),
+    ("envelope-spectrum", "Simulated envelope spectrum", spectra.envelope),
     ("vibration-bands", "Vibration bands (ISO 15242)", vibration.bands),
     ("noise", "Sound pressure level", vibration.noise),
     ("friction", "Friction torque and power loss", operation.friction),
@@ -114,9 +116,15 @@ def build_report(bearing: BallBearing, condition: OperatingCondition, *, designa
     rate = default_sample_rate(condition.shaft_speed) if sample_rate is None else sample_rate
     nu, nu_source = _viscosity(lubricant, viscosity)
     given = bool(defects)
-    chosen = tuple(defects) if given else (vibration.example_defect(bearing),)
+    chosen = tuple(defects) if given else (spectra.example_defect(bearing),)
     for d in chosen:
         d.check(bearing)
+    # the operating point and the simulated record in the user's terms (raises past the
+    # models' limits, before any section runs)
+    kin = defect_frequencies(bearing, condition.shaft_speed)
+    warnings = (operating_warnings(bearing, condition)
+                + sampling_warnings(kin, rate, duration,
+                                    [LOCATION_FAMILY[d.location] for d in chosen]))
     ctx = Context(bearing=bearing, condition=condition, designation=designation,
                   defects=chosen, defects_given=given, viscosity=nu, viscosity_source=nu_source,
                   duration=float(duration), sample_rate=float(rate),
@@ -132,10 +140,10 @@ def build_report(bearing: BallBearing, condition: OperatingCondition, *, designa
             sections.append(Section(key, title, error=f"{type(exc).__name__}: {exc}"))
     if progress is not None:
         progress("done", len(SECTIONS), len(SECTIONS))
-    return _report(ctx, sections)
+    return _report(ctx, sections, warnings)
 
 
-def _report(ctx: Context, sections: list[Section]) -> Report:
+def _report(ctx: Context, sections: list[Section], warnings: list[str]) -> Report:
     from .. import __version__
 
     b, c = ctx.bearing, ctx.condition
@@ -154,4 +162,4 @@ def _report(ctx: Context, sections: list[Section]) -> Report:
              f"cases. Simulated record: {ctx.duration:g} s at {ctx.sample_rate:g} Hz.</p>")
     now = datetime.datetime.now().strftime("%Y-%m-%d %H:%M")
     return Report(title=f"bearinglab report: {name}", subtitle=lines, sections=sections,
-                  generated=now, version=__version__, intro=intro)
+                  generated=now, version=__version__, intro=intro, warnings=tuple(warnings))

@@ -153,6 +153,7 @@ class Report:
     generated: str = ""
     version: str = ""
     intro: str = ""
+    warnings: tuple = ()
 
     @property
     def failed(self) -> list[Section]:
@@ -171,6 +172,7 @@ class Report:
         failed = self.failed
         status = (f'<p class="status fail">{len(failed)} of {len(self.sections)} analyses '
                   f'failed: {esc(", ".join(s.title for s in failed))}</p>' if failed else "")
+        status += "".join(f'<p class="status warn">{esc(w)}</p>' for w in self.warnings)
         return PAGE.format(
             title=esc(self.title), heading=esc(self.title),
             subtitle="".join(f"<p>{esc(line)}</p>" for line in self.subtitle),
@@ -248,6 +250,7 @@ figcaption { font-size: 12.5px; color: var(--muted); margin-top: 4px; }
 .verdict.pass { background: #d9efdf; color: var(--good); }
 .verdict.known { background: #f7ebcf; color: var(--warn); }
 .status.fail { color: var(--bad); font-weight: 600; }
+.status.warn { color: var(--warn); }
 p.small, .small { font-size: 12.5px; color: var(--muted); }
 p.top { text-align: right; font-size: 12px; margin: 4px 0 0; }
 .two { display: grid; grid-template-columns: 1fr 1fr; gap: 22px; align-items: start; }
