@@ -4,7 +4,7 @@ Seed 003, part 7 sec. 5 (figs. 14-16): with a compound fault (ball + outer race,
 the amplitudes of the defect lines grow with radial load (10-150 N), defect size
 (0.6-1.5 mm) and speed (1550-1850 rpm), while the line frequencies stay put.
 Seed 004 (table 2): the ball-defect line sits below the kinematic value, and nearer to it
-at the larger load.
+at the larger load (the calibrated slip model of bearinglab.validation.seed004).
 """
 
 import itertools
@@ -16,7 +16,8 @@ import pytest
 from bearinglab.dynamics import Defect, simulate
 from bearinglab.operating import OperatingCondition
 from bearinglab.signal import envelope_spectrum
-from bearinglab.validation.dynamics import ER16K, seed004_ball_line
+from bearinglab.validation.dynamics import ER16K
+from bearinglab.validation.seed004 import seed004_ball_line
 
 
 def _bpfo_line(load=50.0, size=1.2e-3, rpm=1750.0):
@@ -62,10 +63,10 @@ def test_seed004_slip_model_ball_line_in_the_envelope_spectrum():
     sits where the balls' mean spin speed puts it (2 BSF x spin ratio, within one bin)
     and below the kinematic 2 BSF = 186.8 Hz, whose nearest bin would be 187 Hz."""
     from bearinglab.diagnosis import analyze_signal, measured_ball_defect_frequency
-    from bearinglab.validation.dynamics import SEED004_DEFECT_WIDTH, SKF6205
+    from bearinglab.validation.seed004 import DEFECT_WIDTH, SKF6205
 
     cond = OperatingCondition(radial_load=500.0, shaft_speed=2400 * math.pi / 30)
-    sim = simulate(SKF6205, cond, [Defect("ball", SEED004_DEFECT_WIDTH)], model="slip",
+    sim = simulate(SKF6205, cond, [Defect("ball", DEFECT_WIDTH)], model="slip",
                    duration=1.0, sample_rate=20e3)
     diagnosis = analyze_signal(sim.signal, None, sim.kinematic)
     assert diagnosis.primary_fault == "ball"

@@ -180,16 +180,15 @@ def simulate(bearing, condition, defects=(), *, model: str = "rigid",
     if rtol > 0.1:
         raise InputError("rtol", rtol, "a tolerance in (0, 0.1]")
 
-    start, notes, settle_turns = (0.0, 1e-6), [], None
+    start, notes, settled = (0.0, 1e-6), [], None
     if model == "slip" and settle is None:
         # settled when the cage and spin ratios stop changing from turn to turn
-        t_s, y0, h_s, info = slip.settle(p, table, y0, rtol, atol, 1.0 / sample_rate)
+        t_s, y0, h_s, settled = slip.settle(p, table, y0, rtol, atol, 1.0 / sample_rate)
         start, settle = (t_s, h_s), t_s
-        settle_turns = info["turns"]
-        if not info["settled"]:
-            notes.append(f"not settled after {info['turns']} cage revolutions "
+        if not settled["settled"]:
+            notes.append(f"not settled after {settled['turns']} cage revolutions "
                          f"({settle:.3g} s): the speed ratios still change by "
-                         f"{info['change']:.2g} per revolution (rule: "
+                         f"{settled['change']:.2g} per two revolutions (rule: "
                          f"{slip.SETTLE_TOLERANCE:g}); give a longer settle")
     n = round(duration * sample_rate)
     t_out = settle + np.arange(n) / sample_rate
@@ -200,8 +199,10 @@ def simulate(bearing, condition, defects=(), *, model: str = "rigid",
     states, stats = _integrate_chunks(model, p, table, y0, t_out, rtol, atol, h_max, progress,
                                       start)
     stats["settle_s"] = settle
-    if settle_turns is not None:
-        stats["settle_turns"] = settle_turns
+    if settled is not None:      # the settling run's steps count too
+        stats["settle_turns"] = settled["turns"]
+        stats["steps"] += settled["steps"]
+        stats["rejected_steps"] += settled["rejected_steps"]
     return _result(model, bearing, condition, defects, params, kin, p, table, t_out, states,
                    stats, noise, seed, sample_rate, notes)
 

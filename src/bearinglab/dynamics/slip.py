@@ -413,8 +413,9 @@ def settle(p, table, y0, rtol, atol, h_max, tolerance: float | None = None,
 
     Returns (t, y, h, info): the integrator's time [s], state and step [s] to continue
     from, and ``info`` with ``turns``, ``settled`` (False if ``max_turns`` passed first),
-    ``change`` (the last two-revolution change) and the per-revolution
-    ``cage_speed_ratios`` and ``spin_speed_ratios``.
+    ``change`` (the last two-revolution change), the per-revolution
+    ``cage_speed_ratios`` and ``spin_speed_ratios``, and the integrator's ``steps`` and
+    ``rejected_steps``.
     """
     from ..errors import ConvergenceError
     from ._integrate import OK, STATUS_TEXT
@@ -429,16 +430,17 @@ def settle(p, table, y0, rtol, atol, h_max, tolerance: float | None = None,
     mark = y.copy()
     ratios = []                       # (cage, spin) per revolution
     change = math.inf
-    turn = 0
+    turn = steps = rejected = 0
     while turn < max(max_turns, min_turns):
         turn += 1
-        out, t, y, h, _, _, status = sk.rosenbrock_chunk(
+        out, t, y, h, s, r, status = sk.rosenbrock_chunk(
             p, table, t, y, h, np.array([turn * period]), rtol, atol, h_max,
             _MAX_STEPS_PER_TURN)
         if status != OK:
             raise ConvergenceError(f"slip model: settling stopped at t = {t:.6g} s: "
                                    f"{STATUS_TEXT[status]}; try a looser rtol or check "
                                    "the inputs")
+        steps, rejected = steps + s, rejected + r
         ratios.append(phase_ratios(np.array([0.0, period]), np.array([mark[8], out[0, 8]]),
                                    np.stack([mark[spin_cols], out[0, spin_cols]], axis=1), p))
         mark = out[0]
@@ -450,4 +452,5 @@ def settle(p, table, y0, rtol, atol, h_max, tolerance: float | None = None,
             break
     cage, spin = (list(map(float, col)) for col in zip(*ratios, strict=True))
     return t, y, h, {"turns": turn, "settled": change <= tolerance, "change": change,
-                     "cage_speed_ratios": cage, "spin_speed_ratios": spin}
+                     "cage_speed_ratios": cage, "spin_speed_ratios": spin,
+                     "steps": int(steps), "rejected_steps": int(rejected)}
