@@ -62,6 +62,7 @@ def all_cases() -> list[Case]:
         dynamics,
         friction,
         harris218,
+        nasa_slip,
         ratings,
         seed000,
         seed001,
@@ -72,4 +73,4 @@ def all_cases() -> list[Case]:
 
     return [*seed000.CASES, *seed001.CASES, *seed003.CASES, *seed004.CASES, *dynamics.CASES,
             *seed003_noise.CASES, *datasets.CASES, *friction.CASES, *ratings.CASES,
-            *harris218.CASES]
+            *harris218.CASES, *nasa_slip.CASES]
