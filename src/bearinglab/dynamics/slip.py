@@ -397,19 +397,23 @@ def settle(p, table, y0, rtol, atol, h_max, tolerance: float | None = None,
            min_turns: int | None = None, max_turns: int | None = None):
     """Integrate from ``y0`` until the motion has settled.
 
-    How long that takes depends on how firmly the races grip the balls: the ball spins
-    recover within a revolution, but the cage and the pocket forces that brake the
-    unloaded balls creep towards their steady state with a time constant of about
-    0.15 s at the seed's 6205 (2400 rpm, 500 N, ``cage_friction`` 0.3), longer when
-    the traction is weak. So the settling time is detected, not fixed: the cage speed
-    ratio and the spin ratio (:func:`phase_ratios`) are measured over each cage
-    revolution of pure rolling, and the motion has settled when their means over the
+    How long that takes depends on how firmly the races grip the balls and on the
+    cage: the ball spins recover within a revolution, but the cage's position against
+    the balls, and with it the pocket forces that brake the unloaded balls, creeps
+    towards its steady state through the small slip of the loaded balls, with a time
+    constant of about 0.4 s at the seed's 6205 with 20 um clearance and
+    ``cage_friction`` 0.3 (2400 rpm, 500 N; an amplitude of 2.5e-3 in the spin ratio);
+    weak traction slows the cage too. So the settling time is detected, not fixed:
+    the cage speed ratio and the spin ratio (:func:`phase_ratios`) are measured over
+    each cage revolution of pure rolling, and the motion has settled when their means over the
     last two revolutions differ from those over the two before by at most
     ``tolerance`` (default SETTLE_TOLERANCE), after at least ``min_turns`` (default
     MIN_SETTLE_TURNS, 4: 0.25 s at 2400 rpm) and at most ``max_turns`` revolutions
     (MAX_SETTLE_TURNS). Averaging two revolutions keeps the turn-to-turn scatter
-    (a few 1e-4) from deciding; a transient that pauses for two revolutions and then
-    moves on can still pass, which the record's halves check then reports.
+    (a few 1e-4) from deciding. A creep slower than the rule can see (the one above
+    stops it after five turns, 1.7e-3 short of its end) or a transient that pauses and
+    then moves on can still pass: give a longer ``settle`` where that matters; the
+    record's halves check reports what is left when it exceeds HALVES_TOLERANCE.
 
     Returns (t, y, h, info): the integrator's time [s], state and step [s] to continue
     from, and ``info`` with ``turns``, ``settled`` (False if ``max_turns`` passed first),

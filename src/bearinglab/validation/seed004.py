@@ -75,9 +75,9 @@ def ball_line_ratio(load: float, bearing=None, parameters=None, *, duration: flo
 
 
 #: Settling of the validation runs [s]: with the cage friction at 0.3 the pocket forces
-#: creep for about a second (time constant ~0.3 s) after the spins have settled, which
-#: the default rule (a few cage turns) does not wait for: at 500 N it stops after five
-#: turns, 1.7e-3 below the spin ratio of a 1 s settle.
+#: creep for about a second (time constant ~0.4 s) after the spins have settled, which
+#: the default rule (a few cage turns, :func:`bearinglab.dynamics.slip.settle`) does not
+#: wait for: at 500 N it stops after five turns, 1.7e-3 below the spin ratio after 1 s.
 VALIDATION_SETTLE = 0.6
 
 
