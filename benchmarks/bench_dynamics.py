@@ -11,7 +11,9 @@ implementations measured in the same run, on one core.
    scaled. Both answers are compared over the common span.
 2. Slip model (seed 004): the 6205 of seed 004 at 2400 rpm, a 0.267 mm ball defect,
    20 kHz output: ``simulate(..., model="slip")`` (compiled Rosenbrock 2(3) with an
-   arrow-structured Jacobian) records 1 s of signal at 500 N and at 1000 N; at 500 N it
+   arrow-structured Jacobian) records 1 s of signal at 500 N and at 1000 N, after the
+   default settling (detected by cage turns, at least four; its steps are counted in the
+   steps per simulated second); at 500 N it
    is compared with SciPy's stiff integrators (``BDF`` and ``Radau``,
    each as ``solve_ivp`` runs it: the solver class stepped to the end, with a wall-time
    cap) on ``_slip_kernels.slip_rhs_numpy``, same rtol, atol and maximum step.
@@ -143,7 +145,8 @@ def slip_record(load, duration, repeat):
                                          duration=duration, sample_rate=SLIP_RATE), repeat)
     simulated = duration + sim.stats["settle_s"]
     return {"load": load, "wall": wall, "duration": duration, "simulated": simulated,
-            "settle": sim.stats["settle_s"], "steps": sim.stats["steps"],
+            "settle": sim.stats["settle_s"], "turns": sim.stats.get("settle_turns"),
+            "steps": sim.stats["steps"],
             "rejected": sim.stats["rejected_steps"], "cage_ratio": sim.cage_speed_ratio,
             "spin_ratio": sim.spin_speed_ratio}
 
@@ -228,7 +231,8 @@ def main() -> None:
     print("\nslip (seed-004 6205, 2400 rpm, ball defect 0.267 mm, 20 kHz)")
     for rec in records:
         print(f"  simulate, {rec['load']:g} N: {rec['duration']:g} s of signal "
-              f"(+{rec['settle']:.4f} s settling) in {rec['wall']:.3f} s, {rec['steps']} steps "
+              f"(+{rec['settle']:.4f} s settling, {rec['turns']} cage turns by slip.settle's "
+              f"rule) in {rec['wall']:.3f} s, {rec['steps']} steps "
               f"({rec['rejected']} rejected): {rec['steps'] / rec['simulated']:.0f} steps per "
               f"simulated s; cage speed ratio {rec['cage_ratio']:.5f}, spin speed ratio "
               f"{rec['spin_ratio']:.5f}")
