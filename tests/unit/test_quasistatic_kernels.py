@@ -139,3 +139,23 @@ def test_kernels_load_from_the_disk_cache_in_a_new_process(tmp_path):
     # calls are compiled into the cached ring_newton and are not dispatched again)
     assert "ring_newton" in runs[1]
     assert all(misses == 0 and hits >= 1 for hits, misses in runs[1].values()), runs[1]
+
+
+def test_stiffness_map_lines_match_the_python_reference(monkeypatch):
+    # the map solves each line after its first case in one compiled call; the reference is
+    # the case-by-case path with the ring iteration in Python
+    from bearinglab.quasistatic.study import stiffness_map
+
+    b = BallBearing(**SMALL, diametral_clearance=15e-6)
+    radial, axial, speeds = np.linspace(0.0, 2000.0, 9), [-400.0, 0.0, 250.0], [0.0, 12000.0]
+    fast = stiffness_map(b, radial, axial, speeds, workers=1)
+    monkeypatch.setattr(solver, "COMPILED_RING", False)
+    slow = stiffness_map(b, radial, axial, speeds, workers=1)
+    assert list(fast.status) == list(slow.status)
+    assert (fast.status == "ok").sum() == len(fast) - 2                # two "no load" rows
+    ok = fast.status == "ok"
+    for column, atol in (("radial_displacement_um", 1e-6), ("axial_displacement_um", 1e-6),
+                         ("max_ball_load_n", 1e-6)):
+        np.testing.assert_allclose(fast[column][ok], slow[column][ok], rtol=1e-8, atol=atol)
+    for column in ("radial_stiffness_n_per_um", "axial_stiffness_n_per_um"):
+        np.testing.assert_allclose(fast[column][ok], slow[column][ok], rtol=1e-6, atol=1e-6)

@@ -153,8 +153,9 @@ def solve_load_distribution(bearing: BallBearing, condition: OperatingCondition,
 def _solve_coupled(bearing, condition, ball_phase, ball_diameter_errors, film, lubricant,
                    temperature, gyroscopic, tolerance, initial, race_control):
     """The solve, repeated until what depends on its result settles: the film (at its
-    loads), the cage speed of balls not driven by both races (the mean orbital speed of
-    those that are) and, for ``hybrid``, which race controls each ball."""
+    loads) and, for ``hybrid``, which race controls each ball. (The cage speed of balls
+    not driven by both races, the mean orbital speed of those that are, is settled inside
+    the ball kernel.)"""
     if ball_phase is None:
         ball_phase = condition.radial_load_angle
     problem = _Problem(bearing, condition, float(ball_phase), ball_diameter_errors, film,
@@ -171,19 +172,14 @@ def _solve_coupled(bearing, condition, ball_phase, ball_diameter_errors, film, l
                               state, temperature)
             changed |= bool(np.max(np.abs(h - problem.film)) >= 1e-9)
             problem.film = np.ascontiguousarray(h)
-        driven = _driven(problem, state)
-        if np.any(driven) and not np.all(driven):
-            wm = float(np.mean(state[4][driven, 4]))
-            changed |= abs(wm - problem.spd[6]) > 1e-9 * problem.spd[0]
-            problem.spd[6] = wm
         if race_control == "hybrid":
-            outer = outer_raceway_controls(bearing, problem, state) | ~driven
+            outer = outer_raceway_controls(bearing, problem, state) | ~_driven(problem, state)
             changed |= bool(np.any(outer != (problem.control == 0)))
             problem.set_control(outer)
         if not changed:
             return u, b, state, problem
         u, b, state, problem, _ = solve(bearing, condition, initial=u, **kwargs)
-    raise ConvergenceError("the EHL film / cage speed / raceway control and the load "
+    raise ConvergenceError("the EHL film / raceway control and the load "
                            "distribution did not settle within 30 passes")
 
 

@@ -72,6 +72,25 @@ def _contact(v_rho, v_z, free, radius, side, z0, kp, film, out):
         out[7] = 0.0
 
 
+#: A ball is driven by the races (Jones's kinematics) once its lighter contact carries this
+#: share of the centrifugal force at the cage speed; below, it blends smoothly into the
+#: cage's speed, so that a ball entering the load zone changes its speed forces
+#: continuously (an abrupt switch stalls Newton's method at the edge of the load zone).
+DRIVE_SHARE = 0.05
+
+
+@numba.njit(cache=True)
+def _drive(qi, qo, fc0):
+    """0 (carried by the cage) ... 1 (driven by both races): smoothstep of the lighter
+    contact load over DRIVE_SHARE of the cage-speed centrifugal force."""
+    if qi <= 0 or qo <= 0:
+        return 0.0
+    x = min(qi, qo) / max(DRIVE_SHARE * fc0, 1e-300)
+    if x >= 1.0:
+        return 1.0
+    return x * x * (3.0 - 2.0 * x)
+
+
 @numba.njit(cache=True)
 def speed_force(q, nr, nz, ring, control, lam_i, spd, out):
     """Speed forces on one ball from its contacts (see speed.py):
@@ -96,7 +115,8 @@ def speed_force(q, nr, nz, ring, control, lam_i, spd, out):
     fiz = 0.0
     for_r = 0.0
     for_z = 0.0
-    if qi > 0 and qo > 0 and omega > 0:
+    ramp = _drive(qi, qo, hmd * wm0 * wm0)
+    if ramp > 0 and omega > 0:
         ai /= qi
         ao /= qo
         s = 1.0 if ao > 0 else (-1.0 if ao < 0 else (1.0 if ai >= 0 else -1.0))
@@ -108,10 +128,10 @@ def speed_force(q, nr, nz, ring, control, lam_i, spd, out):
             beta = math.atan2(math.sin(a_i), math.cos(a_i) - g)
         big_a = math.cos(a_o - beta) / (1.0 + g * math.cos(a_o))
         big_b = math.cos(a_i - beta) / (1.0 - g * math.cos(a_i))
-        wm = omega * big_a / (big_a + big_b)
+        wm = wm0 + ramp * (omega * big_a / (big_a + big_b) - wm0)
         if gyro > 0:
             spin = omega / (g * (big_a + big_b))
-            mg = inertia * spin * wm * math.sin(beta)
+            mg = ramp * inertia * spin * omega * big_a / (big_a + big_b) * math.sin(beta)
             lo = 2.0 - lam_i
             for_r = lo * mg / dw * math.sin(a_o)
             for_z = -s * lo * mg / dw * math.cos(a_o)
@@ -129,11 +149,10 @@ def speed_force(q, nr, nz, ring, control, lam_i, spd, out):
 
 @numba.njit(cache=True)
 def _ball(br, bz, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, control, lam_i,
-          spd, q, nr, nz, dl, s, sp):
+          spd, q, nr, nz, dl, s, sp, tmp):
     """All contacts of one ball at (br, bz) into q, nr, nz, dl, s; speed forces into sp;
-    returns the total force on the ball (g_rho, g_z)."""
+    returns the total force on the ball (g_rho, g_z). ``tmp``: work array (8,)."""
     ncon = c_rho.shape[0]
-    tmp = np.empty(8)
     g_rho = 0.0
     g_z = 0.0
     for k in range(ncon):
@@ -155,34 +174,53 @@ def _ball(br, bz, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, contro
 
 @numba.njit(cache=True)
 def _speed_derivatives(br, bz, c_rho, c_z, free, radius, side, z0, k_poly, film, ring,
-                       control, lam_i, spd, q, nr, nz, dmat, emat):
+                       control, lam_i, spd, q, nr, nz, dmat, emat, work):
     """Central differences of the speed forces on the ball per contact vector v_l = b - c_l:
-    dmat[l] = d(total speed force)/dv_l, emat[l] = d(inner friction)/dv_l (2 x 2 each)."""
+    dmat[lc] = d(total speed force)/dv_l, emat[lc] = d(inner friction)/dv_l (2 x 2 each).
+    Zero for a ball not driven by both races (its speed forces do not depend on v) and for
+    unloaded contacts. ``work``: (4, C + 8) work array."""
     ncon = c_rho.shape[0]
-    tmp = np.empty(8)
-    sp = np.empty(7)
-    qq = q.copy()
-    rr = nr.copy()
-    zz = nz.copy()
-    for l in range(ncon):
-        h = FD_STEP * free[l]
+    dmat[:] = 0.0
+    emat[:] = 0.0
+    qi = 0.0
+    qo = 0.0
+    for k in range(ncon):
+        if ring[k] == 0:
+            qi += q[k]
+        else:
+            qo += q[k]
+    if spd[0] <= 0 or qi <= 0 or qo <= 0:
+        return
+    qq = work[0, :ncon]
+    rr = work[1, :ncon]
+    zz = work[2, :ncon]
+    tmp = work[3, :8]
+    sp = work[3, 8:15]
+    qq[:] = q
+    rr[:] = nr
+    zz[:] = nz
+    for lc in range(ncon):
+        if q[lc] <= 0:
+            continue
+        h = FD_STEP * free[lc]
         for a in range(2):
-            for sign in (1.0, -1.0):
-                vr = br - c_rho[l] + (sign * h if a == 0 else 0.0)
-                vz = bz - c_z[l] + (sign * h if a == 1 else 0.0)
-                _contact(vr, vz, free[l], radius[l], side[l], z0[l], k_poly[l], film[l], tmp)
-                qq[l] = tmp[0]
-                rr[l] = tmp[1]
-                zz[l] = tmp[2]
+            for sign in range(2):
+                sg = 1.0 if sign == 0 else -1.0
+                vr = br - c_rho[lc] + (sg * h if a == 0 else 0.0)
+                vz = bz - c_z[lc] + (sg * h if a == 1 else 0.0)
+                _contact(vr, vz, free[lc], radius[lc], side[lc], z0[lc], k_poly[lc], film[lc], tmp)
+                qq[lc] = tmp[0]
+                rr[lc] = tmp[1]
+                zz[lc] = tmp[2]
                 speed_force(qq, rr, zz, ring, control, lam_i, spd, sp)
-                w = sign / (2.0 * h)
-                dmat[l, 0, a] += w * sp[0]
-                dmat[l, 1, a] += w * sp[1]
-                emat[l, 0, a] += w * sp[2]
-                emat[l, 1, a] += w * sp[3]
-        qq[l] = q[l]
-        rr[l] = nr[l]
-        zz[l] = nz[l]
+                w = sg / (2.0 * h)
+                dmat[lc, 0, a] += w * sp[0]
+                dmat[lc, 1, a] += w * sp[1]
+                emat[lc, 0, a] += w * sp[2]
+                emat[lc, 1, a] += w * sp[3]
+        qq[lc] = q[lc]
+        rr[lc] = nr[lc]
+        zz[lc] = nz[lc]
 
 
 @numba.njit(cache=True)
@@ -201,53 +239,42 @@ def _seat(br, bz, c_rho, c_z, free, ring, q, fc, k_seat):
 
 
 @numba.njit(cache=True)
-def _jacobian(s, dmat):
-    """Sum over contacts of P_l = -S_l + D_l (d force on the ball / d b)."""
-    a = 0.0
-    b = 0.0
-    c = 0.0
-    d = 0.0
-    for l in range(s.shape[0]):
-        a += dmat[l, 0, 0] - s[l, 0, 0]
-        b += dmat[l, 0, 1] - s[l, 0, 1]
-        c += dmat[l, 1, 0] - s[l, 1, 0]
-        d += dmat[l, 1, 1] - s[l, 1, 1]
-    return a, b, c, d
-
-
-@numba.njit(cache=True)
 def solve_ball(b, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, control, lam_i,
-               spd, k_seat, tol, max_iterations, q, nr, nz, dl, s, sp):
+               spd, k_seat, tol, max_iterations, q, nr, nz, dl, s, sp, dmat, emat, work, ts):
     """Newton's method on one ball's equilibrium; b (2,) is updated in place. Returns
-    (residual [N], converged). A ball whose loads are all below 10 tol is loose."""
+    (residual [N], converged). A ball whose loads are all below 10 tol is loose. ``work``:
+    (10, C + 8) and ts (C, 2, 2) work arrays."""
     ncon = c_rho.shape[0]
-    tq = np.empty(ncon)
-    tr = np.empty(ncon)
-    tz = np.empty(ncon)
-    td = np.empty(ncon)
-    ts = np.empty((ncon, 2, 2))
-    tsp = np.empty(7)
-    dmat = np.zeros((ncon, 2, 2))
-    emat = np.zeros((ncon, 2, 2))
+    tq = work[4, :ncon]
+    tr = work[5, :ncon]
+    tz = work[6, :ncon]
+    td = work[7, :ncon]
+    tmp = work[8, :8]
+    tsp = work[9, :7]
     br, bz = b[0], b[1]
     fc_seat = max(spd[2] * spd[6] * spd[6], spd[7])
     _ball(br, bz, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, control, lam_i,
-          spd, q, nr, nz, dl, s, sp)
+          spd, q, nr, nz, dl, s, sp, tmp)
     br = _seat(br, bz, c_rho, c_z, free, ring, q, fc_seat, k_seat)
     gr, gz = _ball(br, bz, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, control,
-                   lam_i, spd, q, nr, nz, dl, s, sp)
+                   lam_i, spd, q, nr, nz, dl, s, sp, tmp)
     done = False
     for _ in range(max_iterations):
         norm = math.sqrt(gr * gr + gz * gz)
         if norm <= tol or np.max(q) <= 10.0 * tol:
             done = True
             break
-        dmat[:] = 0.0
-        emat[:] = 0.0
-        if spd[0] > 0:
-            _speed_derivatives(br, bz, c_rho, c_z, free, radius, side, z0, k_poly, film, ring,
-                               control, lam_i, spd, q, nr, nz, dmat, emat)
-        a, bb, c, d = _jacobian(s, dmat)
+        _speed_derivatives(br, bz, c_rho, c_z, free, radius, side, z0, k_poly, film, ring,
+                           control, lam_i, spd, q, nr, nz, dmat, emat, work)
+        a = 0.0
+        bb = 0.0
+        c = 0.0
+        d = 0.0
+        for lc in range(ncon):      # sum_l P_l = sum_l (D_l - S_l): d force / d b
+            a += dmat[lc, 0, 0] - s[lc, 0, 0]
+            bb += dmat[lc, 0, 1] - s[lc, 0, 1]
+            c += dmat[lc, 1, 0] - s[lc, 1, 0]
+            d += dmat[lc, 1, 1] - s[lc, 1, 1]
         det = a * d - bb * c
         if det == 0.0:
             break
@@ -260,7 +287,7 @@ def solve_ball(b, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, contro
             nr_t = br + lam * step_r
             nz_t = bz + lam * step_z
             tgr, tgz = _ball(nr_t, nz_t, c_rho, c_z, free, radius, side, z0, k_poly, film,
-                             ring, control, lam_i, spd, tq, tr, tz, td, ts, tsp)
+                             ring, control, lam_i, spd, tq, tr, tz, td, ts, tsp, tmp)
             allowed = (NONMONOTONE_FACTOR if lam == 1.0 else 1 - 1e-4 * lam) * norm
             if math.sqrt(tgr * tgr + tgz * tgz) <= allowed or lam <= 1e-6:
                 break
@@ -268,7 +295,7 @@ def solve_ball(b, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, contro
         br = _seat(nr_t, nz_t, c_rho, c_z, free, ring, tq, fc_seat, k_seat)
         bz = nz_t
         gr, gz = _ball(br, bz, c_rho, c_z, free, radius, side, z0, k_poly, film, ring,
-                       control, lam_i, spd, q, nr, nz, dl, s, sp)
+                       control, lam_i, spd, q, nr, nz, dl, s, sp, tmp)
         moved = lam * math.sqrt(step_r * step_r + step_z * step_z)
         if moved < 1e-16 and math.sqrt(gr * gr + gz * gz) <= 1e3 * tol:
             done = True
@@ -280,45 +307,75 @@ def solve_ball(b, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, contro
 
 
 @numba.njit(cache=True)
-def _condense(j, t, inner, s, q, nr, nz, dmat, emat, sp, force, stiff):
-    """Add ball j's force on the inner ring and its condensed stiffness (see _kernels.py):
-    K_j = (sum_l Phi'_l) (sum_l P_l)^-1 (sum_in P_l T_l) - sum_in Phi'_l T_l."""
+def _condense(tj, inner, s, q, nr, nz, dmat, emat, sp, force, stiff, cw):
+    """Add one ball's force on the inner ring and its condensed stiffness (see
+    _kernels.py; tj = T of the ball (C, 2, 5)):
+    K_j = (sum_l Phi'_l) (sum_l P_l)^-1 (sum_in P_l T_l) - sum_in Phi'_l T_l.
+    ``cw``: work array (5, 19)."""
     ncon = q.shape[0]
+    cw[:] = 0.0
+    tbar = cw[:2, 0:5]
+    a5 = cw[:, 5:7]
+    bm = cw[:2, 7:12]
+    cm = cw[:, 12:17]
+    phi = cw[:, 17:19]
     qi = 0.0
     for k in range(ncon):
         if inner[k]:
             qi += q[k]
-    tbar = np.zeros((2, 5))
     if qi > 0:
         for k in range(ncon):
-            if inner[k]:
-                tbar += (q[k] / qi) * t[j, k]
-    sp_sum = np.zeros((2, 2))
-    a5 = np.zeros((5, 2))
-    bm = np.zeros((2, 5))
-    cm = np.zeros((5, 5))
-    for l in range(ncon):
-        p = dmat[l] - s[l]
-        sp_sum += p
-        phi = tbar.T @ emat[l]
-        if inner[l]:
-            phi -= t[j, l].T @ s[l]
-            bm += p @ t[j, l]
-            cm += phi @ t[j, l]
-        a5 += phi
-    det = sp_sum[0, 0] * sp_sum[1, 1] - sp_sum[0, 1] * sp_sum[1, 0]
+            if inner[k] and q[k] > 0:
+                w = q[k] / qi
+                for a in range(2):
+                    for d in range(5):
+                        tbar[a, d] += w * tj[k, a, d]
+    p00 = 0.0
+    p01 = 0.0
+    p10 = 0.0
+    p11 = 0.0
+    for lc in range(ncon):
+        if q[lc] <= 0:
+            continue                      # an unloaded contact adds nothing
+        l00 = dmat[lc, 0, 0] - s[lc, 0, 0]
+        l01 = dmat[lc, 0, 1] - s[lc, 0, 1]
+        l10 = dmat[lc, 1, 0] - s[lc, 1, 0]
+        l11 = dmat[lc, 1, 1] - s[lc, 1, 1]
+        p00 += l00
+        p01 += l01
+        p10 += l10
+        p11 += l11
+        for d in range(5):
+            for c in range(2):
+                v = tbar[0, d] * emat[lc, 0, c] + tbar[1, d] * emat[lc, 1, c]
+                if inner[lc]:
+                    v -= tj[lc, 0, d] * s[lc, 0, c] + tj[lc, 1, d] * s[lc, 1, c]
+                phi[d, c] = v
+                a5[d, c] += v
+        if inner[lc]:
+            for d in range(5):
+                bm[0, d] += l00 * tj[lc, 0, d] + l01 * tj[lc, 1, d]
+                bm[1, d] += l10 * tj[lc, 0, d] + l11 * tj[lc, 1, d]
+                for e in range(5):
+                    cm[d, e] += phi[d, 0] * tj[lc, 0, e] + phi[d, 1] * tj[lc, 1, e]
+    det = p00 * p11 - p01 * p10
     if det != 0.0:
-        inv = np.empty((2, 2))
-        inv[0, 0] = sp_sum[1, 1] / det
-        inv[1, 1] = sp_sum[0, 0] / det
-        inv[0, 1] = -sp_sum[0, 1] / det
-        inv[1, 0] = -sp_sum[1, 0] / det
-        stiff += a5 @ inv @ bm
-    stiff -= cm
+        i00 = p11 / det
+        i01 = -p01 / det
+        i10 = -p10 / det
+        i11 = p00 / det
+        for d in range(5):
+            r0 = a5[d, 0] * i00 + a5[d, 1] * i10
+            r1 = a5[d, 0] * i01 + a5[d, 1] * i11
+            for e in range(5):
+                stiff[d, e] += r0 * bm[0, e] + r1 * bm[1, e]
+    for d in range(5):
+        for e in range(5):
+            stiff[d, e] -= cm[d, e]
     for k in range(ncon):
         if inner[k] and q[k] > 0:
             for d in range(5):
-                force[d] += t[j, k, 0, d] * q[k] * nr[k] + t[j, k, 1, d] * q[k] * nz[k]
+                force[d] += tj[k, 0, d] * q[k] * nr[k] + tj[k, 1, d] * q[k] * nz[k]
     for d in range(5):
         force[d] -= tbar[0, d] * sp[2] + tbar[1, d] * sp[3]
 
@@ -328,7 +385,11 @@ def solve_balls(b, c_rho, c_z, t, inner, free, radius, side, z0, k_poly, film, r
                 control, lam_i, spd, k_seat, tol, max_iterations=100):
     """Every ball's equilibrium for given groove centres, the force of the balls on the
     inner ring (5,) and the condensed stiffness (5, 5). Returns (b, q, n_rho, n_z, delta,
-    speed (Z, 7), force, stiffness, worst residual [N], converged)."""
+    speed (Z, 7), force, stiffness, worst residual [N], converged).
+
+    Balls not fully driven by both races orbit at the cage speed: the mean orbital speed
+    of the driven balls (whose speeds do not depend on it), so the balls are solved in two
+    passes when some are driven and some not."""
     nb, ncon = c_rho.shape
     b = b.copy()
     q = np.zeros((nb, ncon))
@@ -336,24 +397,49 @@ def solve_balls(b, c_rho, c_z, t, inner, free, radius, side, z0, k_poly, film, r
     nz = np.zeros((nb, ncon))
     dl = np.zeros((nb, ncon))
     sp = np.zeros((nb, 7))
-    s = np.zeros((ncon, 2, 2))
+    s = np.zeros((nb, ncon, 2, 2))
     dmat = np.zeros((ncon, 2, 2))
     emat = np.zeros((ncon, 2, 2))
+    work = np.zeros((10, ncon + 8))
+    ts = np.zeros((ncon, 2, 2))
+    cw = np.zeros((5, 19))
+    res = np.zeros(nb)
+    ok = np.zeros(nb, dtype=np.bool_)
+    driven = np.zeros(nb, dtype=np.bool_)
+    spd = spd.copy()
+    for j in range(nb):
+        res[j], ok[j] = solve_ball(b[j], c_rho[j], c_z[j], free[j], radius, side, z0,
+                                   k_poly, film[j], ring, control[j], lam_i[j], spd, k_seat,
+                                   tol, max_iterations, q[j], nr[j], nz[j], dl[j], s[j], sp[j],
+                                   dmat, emat, work, ts)
+    if spd[0] > 0:
+        total = 0.0
+        count = 0
+        for j in range(nb):
+            qi = 0.0
+            qo = 0.0
+            for k in range(ncon):
+                if inner[k]:
+                    qi += q[j, k]
+                else:
+                    qo += q[j, k]
+            driven[j] = _drive(qi, qo, spd[2] * spd[6] * spd[6]) >= 1.0
+            if driven[j]:
+                total += sp[j, 4]
+                count += 1
+        if 0 < count < nb:
+            spd[6] = total / count
+            for j in range(nb):
+                if not driven[j]:
+                    res[j], ok[j] = solve_ball(
+                        b[j], c_rho[j], c_z[j], free[j], radius, side, z0, k_poly, film[j],
+                        ring, control[j], lam_i[j], spd, k_seat, tol, max_iterations, q[j],
+                        nr[j], nz[j], dl[j], s[j], sp[j], dmat, emat, work, ts)
     force = np.zeros(5)
     stiff = np.zeros((5, 5))
-    worst = 0.0
-    converged = True
     for j in range(nb):
-        res, done = solve_ball(b[j], c_rho[j], c_z[j], free[j], radius, side, z0, k_poly,
-                               film[j], ring, control[j], lam_i[j], spd, k_seat, tol,
-                               max_iterations, q[j], nr[j], nz[j], dl[j], s, sp[j])
-        worst = max(worst, res)
-        converged = converged and done
-        dmat[:] = 0.0
-        emat[:] = 0.0
-        if spd[0] > 0:
-            _speed_derivatives(b[j, 0], b[j, 1], c_rho[j], c_z[j], free[j], radius, side, z0,
-                               k_poly, film[j], ring, control[j], lam_i[j], spd, q[j], nr[j],
-                               nz[j], dmat, emat)
-        _condense(j, t, inner, s, q[j], nr[j], nz[j], dmat, emat, sp[j], force, stiff)
-    return b, q, nr, nz, dl, sp, force, stiff, worst, converged
+        _speed_derivatives(b[j, 0], b[j, 1], c_rho[j], c_z[j], free[j], radius, side, z0,
+                           k_poly, film[j], ring, control[j], lam_i[j], spd, q[j], nr[j],
+                           nz[j], dmat, emat, work)
+        _condense(t[j], inner, s[j], q[j], nr[j], nz[j], dmat, emat, sp[j], force, stiff, cw)
+    return b, q, nr, nz, dl, sp, force, stiff, np.max(res), np.all(ok)

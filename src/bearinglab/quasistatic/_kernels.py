@@ -4,7 +4,8 @@ the NumPy twin of the compiled kernels in _compiled.py.
 Vectorised NumPy over balls j (first axis) and contacts k (second axis). Notation in a
 ball's plane: v = b - c (ball centre minus groove centre), n = v/|v|,
 delta = |v| - (R - D_w/2) + h (the film is a layer between the surfaces: for given
-centres it adds to the elastic approach, seed 001 eq. 2), c = |n_rho| = |cos alpha|, Q = K(c) max(delta, 0)^1.5,
+centres it adds to the elastic approach, seed 001 eq. 2), c = |n_rho| = |cos alpha|,
+Q = K(c) max(delta, 0)^1.5,
 force on the ball G = -Q n, and S = -dG/dv = n (dQ/dv)^T + Q (I - n n^T)/|v| with
 dQ/dv = 1.5 K delta^0.5 n + delta^1.5 K'(c) sign(n_rho) (e_rho - n_rho n)/|v|.
 
@@ -108,6 +109,8 @@ def ring_jacobian(psi, rho, z):
 NONMONOTONE_FACTOR = 1000.0
 #: Relative finite-difference step of the speed-force derivatives (times R - D_w/2).
 FD_STEP = 1e-6
+#: Blend of a lightly loaded ball from the cage's speed to Jones's (see _compiled.py).
+DRIVE_SHARE = 0.05
 # The NumPy solver iterates all balls together; the compiled twin (_compiled.py) iterates
 # each ball on its own. tests/unit/test_quasistatic_kernels.py checks that they agree.
 
@@ -154,7 +157,9 @@ def speed_forces(q, n_rho, n_z, ring, control, lam_i, spd):
     qo = np.where(loaded & ~inner, q, 0.0).sum(axis=1)
     ai = np.where(loaded & inner, q * angle, 0.0).sum(axis=1) / np.where(qi > 0, qi, 1.0)
     ao = np.where(loaded & ~inner, q * angle, 0.0).sum(axis=1) / np.where(qo > 0, qo, 1.0)
-    both = (qi > 0) & (qo > 0) & (omega > 0)
+    x = np.minimum(np.minimum(qi, qo) / max(DRIVE_SHARE * hmd * wm0 * wm0, 1e-300), 1.0)
+    ramp = np.where((qi > 0) & (qo > 0), x * x * (3 - 2 * x), 0.0)
+    both = (ramp > 0) & (omega > 0)
     s = np.where(ao > 0, 1.0, np.where(ao < 0, -1.0, np.where(ai >= 0, 1.0, -1.0)))
     a_i, a_o = s * ai, s * ao
     out = np.zeros((len(q), 7))
@@ -164,9 +169,10 @@ def speed_forces(q, n_rho, n_z, ring, control, lam_i, spd):
         sel = both & (control == code)
         if np.any(sel):
             beta, orbit, spin = raceway_control_kinematics(a_i[sel], a_o[sel], g, name)
-            wm[sel] = omega * orbit
+            wm[sel] = wm0 + ramp[sel] * (omega * orbit - wm0)
             if gyro > 0:
-                mg[sel] = inertia * np.abs(spin) * omega * wm[sel] * np.sin(beta)
+                mg[sel] = (ramp[sel] * inertia * np.abs(spin) * omega**2 * orbit
+                           * np.sin(beta))
     lo = 2.0 - lam_i
     out[:, 2] = -lam_i * mg / dw * np.sin(a_i)
     out[:, 3] = s * lam_i * mg / dw * np.cos(a_i)
@@ -202,6 +208,12 @@ def _speed_derivatives(b, c_rho, c_z, free, radius, side, z0, k_poly, film, ring
                 w = (sign / (2.0 * h))[:, None]
                 d[:, col, :, a] += w * sp[:, 0:2]
                 e[:, col, :, a] += w * sp[:, 2:4]
+    # as the compiled twin: unloaded contacts and balls not on both races add nothing
+    inner = ring == 0
+    both = np.any(q[:, inner] > 0, axis=1) & np.any(q[:, ~inner] > 0, axis=1)
+    keep = (q > 0) & both[:, None]
+    d[~keep] = 0.0
+    e[~keep] = 0.0
     return d, e
 
 
@@ -238,9 +250,53 @@ def solve_balls_numpy(b, c_rho, c_z, t, inner, free, radius, side, z0, k_poly, f
     (Z, 7), force (5,), stiffness (5, 5), worst residual [N], converged).
 
     A ball whose contact loads are all below 10 tol is loose and its residual is not
-    required to vanish; every other ball must be in equilibrium to ``tol``.
+    required to vanish; every other ball must be in equilibrium to ``tol``. Balls not fully
+    driven by both races orbit at the mean orbital speed of those that are (a second pass
+    for them, as in the compiled twin).
     """
-    outer = ~inner
+    spd = np.array(spd, dtype=float)
+    args = (c_rho, c_z, free, radius, side, z0, k_poly, film, ring, control, lam_i)
+    b, st, norm, ok = _solve_all(b, *args, spd, ~inner, k_seat, tol, max_iterations)
+    if spd[0] > 0:
+        q = st[0]
+        qi, qo = q[:, inner].sum(axis=1), q[:, ~inner].sum(axis=1)
+        driven = (qi > 0) & (qo > 0) & (np.minimum(qi, qo) >= DRIVE_SHARE * spd[2]
+                                         * spd[6] ** 2)
+        if 0 < driven.sum() < len(b):
+            spd[6] = float(np.mean(speed_forces(*st[:3], ring, control, lam_i, spd)[driven, 4]))
+            rest = ~driven
+            sub = [a[rest] if getattr(a, "shape", ()) and a.shape[0] == len(b) and a.ndim > 1
+                   else a for a in args]
+            sub[9], sub[10] = control[rest], lam_i[rest]
+            b2, st2, norm2, ok2 = _solve_all(b[rest], *sub, spd, ~inner, k_seat, tol,
+                                             max_iterations)
+            b = b.copy()
+            b[rest] = b2
+            st = tuple(np.where(rest.reshape((-1,) + (1,) * (a.ndim - 1)), _spread(a2, rest),
+                                a) for a, a2 in zip(st, st2, strict=True))
+            norm[rest] = norm2
+            ok = ok and ok2
+    sp = speed_forces(*st[:3], ring, control, lam_i, spd)
+    if spd[0] > 0:
+        d, e = _speed_derivatives(b, c_rho, c_z, free, radius, side, z0, k_poly, film, ring,
+                                  control, lam_i, spd, st)
+    else:
+        d = e = np.zeros(st[4].shape)
+    force, stiffness = condense(t, inner, st, sp, d, e)
+    return b, st[0], st[1], st[2], st[3], sp, force, stiffness, float(np.max(norm)), ok
+
+
+def _spread(values, rows):
+    """Rows of a subset put back in full size (zeros elsewhere)."""
+    out = np.zeros((len(rows),) + values.shape[1:])
+    out[rows] = values
+    return out
+
+
+def _solve_all(b, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, control, lam_i,
+               spd, outer, k_seat, tol, max_iterations):
+    """The Newton iteration over all given balls at once; returns (b, state, residuals,
+    converged)."""
     fc_seat = max(spd[2] * spd[6] ** 2, spd[7])
 
     def state(bb):
@@ -249,20 +305,12 @@ def solve_balls_numpy(b, c_rho, c_z, t, inner, free, radius, side, z0, k_poly, f
 
     def residual(st):
         sp = speed_forces(st[0], st[1], st[2], ring, control, lam_i, spd)
-        g = np.stack([sp[:, 0] - np.sum(st[0] * st[1], axis=1),
-                      sp[:, 1] - np.sum(st[0] * st[2], axis=1)], axis=1)
-        return g, sp
-
-    def derivatives(bb, st, sp):
-        if spd[0] > 0:
-            return _speed_derivatives(bb, c_rho, c_z, free, radius, side, z0, k_poly, film,
-                                      ring, control, lam_i, spd, st)
-        zero = np.zeros(st[4].shape)
-        return zero, zero
+        return np.stack([sp[:, 0] - np.sum(st[0] * st[1], axis=1),
+                         sp[:, 1] - np.sum(st[0] * st[2], axis=1)], axis=1)
 
     b = seat_loose_balls(b, c_rho, c_z, free, outer, state(b)[0], fc_seat, k_seat)
     st = state(b)
-    g, sp = residual(st)
+    g = residual(st)
     converged = False
     for _ in range(max_iterations):
         norm = np.hypot(g[:, 0], g[:, 1])
@@ -270,7 +318,11 @@ def solve_balls_numpy(b, c_rho, c_z, t, inner, free, radius, side, z0, k_poly, f
         if np.all(norm <= tol):
             converged = True
             break
-        d, _ = derivatives(b, st, sp)
+        if spd[0] > 0:
+            d = _speed_derivatives(b, c_rho, c_z, free, radius, side, z0, k_poly, film, ring,
+                                   control, lam_i, spd, st)[0]
+        else:
+            d = 0.0
         jb = (d - st[4]).sum(axis=1)                                         # sum_l P_l
         det = jb[:, 0, 0] * jb[:, 1, 1] - jb[:, 0, 1] * jb[:, 1, 0]
         ok = np.abs(det) > 0
@@ -281,7 +333,7 @@ def solve_balls_numpy(b, c_rho, c_z, t, inner, free, radius, side, z0, k_poly, f
         for _ in range(30):                                                  # backtracking
             trial = b + lam[:, None] * step
             trial_state = state(trial)
-            g_new = residual(trial_state)[0]
+            g_new = residual(trial_state)
             # a full Newton step may raise the residual of a Hertz contact approached from
             # the soft side before it converges: accept it unless it grows 1000-fold
             allowed = np.where(lam == 1.0, NONMONOTONE_FACTOR, 1 - 1e-4 * lam) * norm
@@ -291,14 +343,11 @@ def solve_balls_numpy(b, c_rho, c_z, t, inner, free, radius, side, z0, k_poly, f
             lam = np.where(worse, 0.5 * lam, lam)
         b = seat_loose_balls(trial, c_rho, c_z, free, outer, trial_state[0], fc_seat, k_seat)
         st = state(b)
-        g, sp = residual(st)
+        g = residual(st)
         if np.max(np.abs(lam[:, None] * step)) < 1e-16 and np.all(
                 np.hypot(g[:, 0], g[:, 1]) <= 1e3 * tol):                     # round-off floor
             converged = True
             break
     norm = np.hypot(g[:, 0], g[:, 1])
     norm[np.max(st[0], axis=1) <= 10.0 * tol] = 0.0
-    d, e = derivatives(b, st, sp)
-    force, stiffness = condense(t, inner, st, sp, d, e)
-    return (b, st[0], st[1], st[2], st[3], sp, force, stiffness, float(np.max(norm)),
-            converged)
+    return b, st, norm, converged

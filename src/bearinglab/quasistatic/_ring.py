@@ -194,13 +194,54 @@ def ring_newton(u0, b0, free_dofs, load, scale, max_step, t, c0_rho, c0_z, inner
                         side_kept = -1
                     if hi - lo <= 1e-12 + 1e-10 * lam:
                         break
-                lam = 0.5 * (lo + hi)
-                trial = u + lam * du
-                b1, q1, nr1, nz1, dl1, sp1, f1, k1, _w1, ok1 = _at(
-                    trial, b, t, c0_rho, c0_z, inner, free, radius, side, z0, k_poly, film,
-                    ring, control, lam_i, spd, k_seat, ball_tol)
+                for lam in (0.5 * (lo + hi), lo):     # lo: the side where the balls solved
+                    trial = u + lam * du
+                    b1, q1, nr1, nz1, dl1, sp1, f1, k1, _w1, ok1 = _at(
+                        trial, b, t, c0_rho, c0_z, inner, free, radius, side, z0, k_poly,
+                        film, ring, control, lam_i, spd, k_seat, ball_tol)
+                    if ok1:
+                        break
             if not ok1:
                 return u, b, q, nr, nz, dl, sp, force, stiff, 2, norm
         u, b, q, nr, nz, dl, sp, force, stiff = trial, b1, q1, nr1, nz1, dl1, sp1, f1, k1
         r = (load + force) * scale
     return u, b, q, nr, nz, dl, sp, force, stiff, 1, _norm(r, free_dofs)
+
+
+@numba.njit(cache=True)
+def ring_newton_line(loads, u0, b0, free_dofs, scale, max_step, t, c0_rho, c0_z, inner,
+                     free, radius, side, z0, k_poly, film, ring, control, lam_i, spd, k_seat,
+                     tolerance, floor, max_iterations):
+    """Many load cases in one call (a stiffness-map line): each case starts from the
+    previous solution (ring and balls). Stops at the first case that does not converge.
+    Returns (u (N, 5), stiffness (N, 5, 5), largest contact load (N,), status (N,): 0
+    solved, else the ring_newton status; -1 not attempted; ball centres of the last case
+    solved (Z, 2))."""
+    n = loads.shape[0]
+    nb = b0.shape[0]
+    us = np.zeros((n, 5))
+    ks = np.zeros((n, 5, 5))
+    qmax = np.zeros(n)
+    status = np.full(n, -1, dtype=np.int64)
+    u = u0.copy()
+    b = b0.copy()
+    for i in range(n):
+        load = loads[i].copy()
+        load_norm = 0.0
+        for d in range(5):
+            load_norm += (load[d] * scale[d]) ** 2
+        load_norm = math.sqrt(load_norm)
+        ball_tol = max(tolerance * max(load_norm, 1.0) / nb, 2.0 * floor)
+        target = tolerance * max(load_norm, 1.0)
+        res = ring_newton(u, b, free_dofs, load, scale, max_step, t, c0_rho, c0_z, inner, free,
+                          radius, side, z0, k_poly, film, ring, control, lam_i, spd, k_seat,
+                          ball_tol, target, max_iterations)
+        status[i] = res[9]
+        if res[9] != 0:
+            break
+        u = res[0]
+        b = res[1]
+        us[i] = u
+        ks[i] = res[8]
+        qmax[i] = np.max(res[2])
+    return us, ks, qmax, status, b

@@ -105,6 +105,6 @@ def contact_set(bearing: BallBearing) -> ContactSet:
         for offset_sign, side in halves:
             rows.append((ring, rho, offset_sign * free * math.sin(arch), free, radius, side,
                          poly))
-    ring, rho, z, free, radius, side, poly = zip(*rows)
+    ring, rho, z, free, radius, side, poly = zip(*rows, strict=True)
     return ContactSet(np.array(ring), np.array(rho), np.array(z), np.array(free),
                       np.array(radius), np.array(side), np.array(poly))

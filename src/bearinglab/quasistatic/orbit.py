@@ -316,7 +316,7 @@ def _ball_set_sweep(bearing, condition, ball_diameter_errors, points, span, opti
         disp.append(u[:3].copy())
         balls.append(_ball_state(r, bearing)[:2] + (r.ball_angle,))
     disp = np.array(disp)
-    centre, load, angle = (np.array(v) for v in zip(*balls))
+    centre, load, angle = (np.array(v) for v in zip(*balls, strict=True))
     eff = None if errors is None else np.broadcast_to(errors, angle.shape).copy()
     return Orbit(bearing, condition, phases, disp[:, 0], disp[:, 1], disp[:, 2],
                  load.max(axis=1), ball_angle=angle, ball_centre=centre, ball_load=load,

@@ -36,6 +36,7 @@ what seed 001's unloaded zone does at speed, fig. 5b).
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -110,7 +111,6 @@ class _Problem:
         z = bearing.ball_count
         self.contacts: ContactSet = contact_set(bearing)
         cs = self.contacts
-        self.psi = ball_phase + 2.0 * math.pi * np.arange(z) / z
         errors = np.zeros(z) if ball_diameter_errors is None else np.asarray(
             ball_diameter_errors, dtype=float)
         if errors.shape != (z,) or not np.all(np.isfinite(errors)) or np.any(
@@ -120,12 +120,10 @@ class _Problem:
         self.free = cs.free_distance[None, :] - 0.5 * errors[:, None]        # (Z, C)
         self.film = np.zeros((z, cs.count)) if film is None else np.ascontiguousarray(
             np.broadcast_to(film, (z, cs.count)), dtype=float)
-        self.t = _kernels.ring_jacobian(self.psi, cs.rho0, cs.z0)            # (Z, C, 2, 5)
+        self.psi, self.t, self.c0_rho, self.c0_z = _placement(
+            bearing, float(ball_phase), tuple(condition.outer_misalignment))
         self.inner = cs.ring == 0
-        outer_u = np.array([0, 0, 0, *condition.outer_misalignment], dtype=float)
-        shift_o = self.t @ outer_u                                            # (Z, C, 2)
-        self.c0_rho = cs.rho0[None, :] + np.where(self.inner, 0.0, shift_o[..., 0])
-        self.c0_z = cs.z0[None, :] + np.where(self.inner, 0.0, shift_o[..., 1])
+        self._side, self._ring = cs.side.astype(float), cs.ring.astype(np.int64)
         self.load = condition.load_vector()
         self.free_dofs = np.array([True, True, True, condition.tilt_free, condition.tilt_free])
         self.u_fixed = np.array([0, 0, 0, *condition.misalignment], dtype=float)
@@ -166,9 +164,9 @@ class _Problem:
 
     def kernel_arguments(self):
         cs = self.contacts
-        return (self.t, self.inner, self.free, cs.groove_radius, cs.side.astype(float), cs.z0,
-                cs.k_poly, self.film, cs.ring.astype(np.int64), self.control, self.lam_i,
-                self.spd, self.k_seat)
+        return (self.t, self.inner, self.free, cs.groove_radius, self._side, cs.z0,
+                cs.k_poly, self.film, self._ring, self.control, self.lam_i, self.spd,
+                self.k_seat)
 
     def solve_balls(self, b, u, tol, compiled: bool | None = None):
         """Newton's method on every ball's equilibrium for fixed ring displacement u
@@ -200,6 +198,21 @@ class _Problem:
     def ring_force_and_stiffness(self, state):
         """Generalised force of the balls on the inner ring and the condensed stiffness."""
         return state[5], state[6]
+
+
+@functools.lru_cache(maxsize=256)
+def _placement(bearing: BallBearing, ball_phase: float, outer_misalignment: tuple):
+    """Ball azimuths, ring kinematics T and groove centres with the inner ring centred,
+    for one bearing and ball-set angle (cached: a stiffness map repeats them)."""
+    cs = contact_set(bearing)
+    z = bearing.ball_count
+    psi = ball_phase + 2.0 * math.pi * np.arange(z) / z
+    t = _kernels.ring_jacobian(psi, cs.rho0, cs.z0)                          # (Z, C, 2, 5)
+    inner = cs.ring == 0
+    shift_o = t @ np.array([0, 0, 0, *outer_misalignment], dtype=float)      # (Z, C, 2)
+    c0_rho = cs.rho0[None, :] + np.where(inner, 0.0, shift_o[..., 0])
+    c0_z = cs.z0[None, :] + np.where(inner, 0.0, shift_o[..., 1])
+    return psi, t, c0_rho, c0_z          # shared between solves: never written to
 
 
 def _solve_balls_compiled():
@@ -369,6 +382,24 @@ def _ring(problem: _Problem, tolerance: float, max_iterations: int, initial):
     if status == 1:
         raise _not_converged(problem, residual, target, max_iterations)
     return u, b, (q, n_rho, n_z, delta, speed, force, stiff), problem, stiff
+
+
+def solve_line(problem: _Problem, loads, initial, balls, tolerance: float = 1e-9,
+               max_iterations: int = 100):
+    """Several loads on one problem in one compiled call, each from the previous solution
+    (a stiffness-map line); see _ring.ring_newton_line. ``initial`` (5,) and ``balls``
+    (Z, 2) are a converged neighbour's ring displacement and ball centres [m, rad].
+    Returns (u (N, 5), stiffness (N, 5, 5), largest contact load (N,), status (N,), ball
+    centres of the last case solved)."""
+    from . import _ring as compiled
+
+    _, _, _, _, max_step = _setup(problem, tolerance, initial)
+    args = problem.kernel_arguments()
+    return compiled.ring_newton_line(
+        np.ascontiguousarray(loads, dtype=float), np.asarray(initial, float),
+        np.ascontiguousarray(balls, dtype=float), problem.free_dofs, problem.scale, max_step,
+        args[0], problem.c0_rho, problem.c0_z, *args[1:], tolerance, CENTRIFUGAL_FLOOR,
+        max_iterations)
 
 
 def _newton(problem: _Problem, tolerance: float, max_iterations: int, initial):
