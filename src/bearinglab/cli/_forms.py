@@ -9,7 +9,6 @@ from typing import Annotated
 import numpy as np
 import typer
 
-from ..dynamics.defects import Defect
 from ..errors import InputError
 from ._inputs import OptionError, parse_spec
 
@@ -70,7 +69,7 @@ def bad_defect(text: str, hint: str) -> OptionError:
     return OptionError("--defect", text, DEFECT_ALLOWED, hint)
 
 
-def parse_defect(text: str) -> Defect:
+def parse_defect(text: str):
     """A :class:`~bearinglab.dynamics.Defect` (SI) from a --defect specification.
 
     ``outer:width_mm=1.2,depth_mm=0.25[,angle_deg=270]``, ``inner:...`` or
@@ -88,6 +87,8 @@ def parse_defect(text: str) -> Defect:
         kwargs["angle"] = (math.radians(values["angle_deg"]) + math.pi) % (2 * math.pi) - math.pi
     if "ball" in values:
         kwargs["ball"] = values["ball"]
+    from ..dynamics import Defect  # the dynamics package imports scipy.signal
+
     return Defect(location, **kwargs)
 
 
@@ -105,7 +106,7 @@ def form_errors_text(imperfections) -> str:
         parts.append(f"{srf.race} 3-D surface {srf.amplitude * 1e6:g} um RMS")
     return "; ".join(parts)
 
-def defect_text(d: Defect) -> str:
+def defect_text(d) -> str:
     x = d.to_dict()
     text = f"{d.location}: width {x['width_mm']:g} mm"
     if x["depth_mm"] is not None:
