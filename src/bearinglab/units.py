@@ -216,6 +216,23 @@ DIMENSIONLESS: dict[str, str] = {
     "fc": "ISO 281 f_c", "gamma": "ISO 281 geometry term",
     "contamination_factor": "ISO 281 e_C", "contamination_source": "where e_C came from",
     "rating_kind": "basic, modified or reference", "static_safety_factor": "s0 = C0 / P0",
+    "rating_factor_bm": "ISO 281 b_m (rating factor of the material)",
+    "dynamic_rating_source": "given, or how C was computed",
+    "static_rating_source": "given, or how C0 was computed",
+    "fatigue_load_limit_source": "how Cu was computed (from C0)",
+    "rotating_ring": "inner or outer: the ring that turns",
+    "viscosity_source": "given, or the lubricant and temperature it was read at",
+    "lubricant": "the lubricant's name", "lubricant_kind": "mineral, synthetic or "
+    "transmission-fluid (SKF mu_EHL)", "lubrication": "grease, oil-air, oil-jet or low-oil-bath "
+    "(SKF K_rs)", "lubrication_source": "given, or why this lubrication method",
+    "k_rs": "SKF replenishment constant K_rs", "k_z": "SKF bearing-type constant K_Z",
+    "inlet_shear_factor": "SKF phi_ish", "replenishment_factor": "SKF phi_rs",
+    "sliding_weighting_factor": "SKF phi_bl", "sliding_friction_coefficient": "SKF mu_sl",
+    "rolling_variable_skf": "SKF G_rr, in SKF's units (M_rr [N·mm] = G_rr (nu n)^0.6)",
+    "sliding_variable_skf": "SKF G_sl, in SKF's units (M_sl [N·mm] = G_sl mu_sl)",
+    "geometry_constants": "SKF geometry constants of the series (SKF's units)",
+    "r1": "SKF R1", "r2": "SKF R2", "r3": "SKF R3", "s1": "SKF S1", "s2": "SKF S2",
+    "s3": "SKF S3", "verified": "true when checked against a stored primary source",
     # validation and report
     "quantity": "what a published case checks", "unit": "the unit of published and computed",
     "published": "the published value (in unit)", "computed": "our value (in unit)",

@@ -231,10 +231,10 @@ def test_result_objects():
     r = skf_friction("radial_ball", 0.025, 0.052, 1000.0, 0.0, 3000 * RPM, 20e-6, C62,
                      name="6205", lubrication="oil-air", lubricant_kind="synthetic")
     d = r.to_dict()
-    assert d["friction_torque_nmm"] == pytest.approx(r.torque * 1e3)
+    assert d["friction_torque_n_mm"] == pytest.approx(r.torque * 1e3)
     assert d["power_loss_w"] == pytest.approx(r.torque * 3000 * RPM)
-    assert sum(d[f"{k}_torque_nmm"] for k in ("rolling", "sliding", "seal", "drag")) == \
-        pytest.approx(d["friction_torque_nmm"])
+    assert sum(d[f"{k}_torque_n_mm"] for k in ("rolling", "sliding", "seal", "drag")) == \
+        pytest.approx(d["friction_torque_n_mm"])
     assert d["k_rs"] == 6e-8 and d["geometry_constants"]["verified"] is False
     assert any("not checked" in w for w in d["warnings"])
     table = r.to_pandas()
@@ -302,27 +302,27 @@ def run_error(capsys, *args):
 
 def test_cli_constant_json(capsys):
     d = run_json(capsys, "6205", "--speed-rpm", "1500", "--radial-load-n", "1000")
-    for key in ("friction_torque_nmm", "power_loss_w", "friction_coefficient",
+    for key in ("friction_torque_n_mm", "power_loss_w", "friction_coefficient",
                 "equivalent_load_n", "pitch_diameter_mm", "speed_rpm", "warnings", "sources"):
         assert key in d
-    assert d["friction_torque_nmm"] == pytest.approx(0.0015 * 1000 * d["pitch_diameter_mm"] / 2)
-    assert d["power_loss_w"] == pytest.approx(d["friction_torque_nmm"] * 1e-3 * 1500 * RPM)
+    assert d["friction_torque_n_mm"] == pytest.approx(0.0015 * 1000 * d["pitch_diameter_mm"] / 2)
+    assert d["power_loss_w"] == pytest.approx(d["friction_torque_n_mm"] * 1e-3 * 1500 * RPM)
 
 
 def test_cli_skf_json(capsys):
     d = run_json(capsys, "6205-2RS", "--speed-rpm", "3000", "--radial-load-n", "1000",
                  "--model", "skf", "--viscosity-mm2-s", "20", "--lubrication", "grease")
     ref = skf_by_hand(3000, 20, 25, 52, 1000, C62.r1, C62.r2, C62.s1, C62.s2)
-    assert d["friction_torque_nmm"] == pytest.approx(ref, rel=1e-9)
-    for key in ("rolling_torque_nmm", "sliding_torque_nmm", "seal_torque_nmm", "drag_torque_nmm",
-                "viscosity_ratio", "rated_viscosity_mm2_s", "mean_diameter_mm"):
+    assert d["friction_torque_n_mm"] == pytest.approx(ref, rel=1e-9)
+    for key in ("rolling_torque_n_mm", "sliding_torque_n_mm", "seal_torque_n_mm",
+                "drag_torque_n_mm", "kappa", "rated_viscosity_mm2_s", "mean_diameter_mm"):
         assert key in d
     assert d["seals"] == "contact" and any("M_seal is not included" in w for w in d["warnings"])
     sealed = run_json(capsys, "6205-2RS", "--speed-rpm", "3000", "--radial-load-n", "1000",
                       "--model", "skf", "--viscosity-mm2-s", "20", "--lubrication", "grease",
                       "--seal-constants", "0.02,2,2.25", "--seal-diameter-mm", "31.3")
-    assert sealed["seal_torque_nmm"] == pytest.approx(0.02 * 31.3 ** 2.25 + 2)
-    assert sealed["friction_torque_nmm"] == pytest.approx(ref + sealed["seal_torque_nmm"])
+    assert sealed["seal_torque_n_mm"] == pytest.approx(0.02 * 31.3 ** 2.25 + 2)
+    assert sealed["friction_torque_n_mm"] == pytest.approx(ref + sealed["seal_torque_n_mm"])
 
 
 def test_cli_skf_viscosity_from_temperature(capsys):
@@ -331,7 +331,7 @@ def test_cli_skf_viscosity_from_temperature(capsys):
     hot = run_json(capsys, *args, "--temperature-c", "80")
     assert cool["viscosity_mm2_s"] == pytest.approx(68.0)
     assert hot["viscosity_mm2_s"] < cool["viscosity_mm2_s"]
-    assert hot["rolling_torque_nmm"] < cool["rolling_torque_nmm"]
+    assert hot["rolling_torque_n_mm"] < cool["rolling_torque_n_mm"]
     assert cool["lubrication"] == "oil-jet"
     grease = run_json(capsys, *args, "--lubricant", "seed004-grease")
     assert grease["lubrication"] == "grease"
@@ -349,7 +349,7 @@ def test_cli_axial_and_other_types(capsys):
     s = run_json(capsys, "6205", "--speed-rpm", "1500", "--radial-load-n", "1000",
                  "--axial-load-n", "500", "--static-load-rating-kn", "7.8", "--model", "skf",
                  "--viscosity-mm2-s", "30")
-    assert s["friction_torque_nmm"] > 0
+    assert s["friction_torque_n_mm"] > 0
     nu = run_json(capsys, "NU205", "--speed-rpm", "1500", "--radial-load-n", "2000")
     assert nu["friction_coefficient"] == 0.0010 and nu["pitch_diameter_mm"] == pytest.approx(38.5)
     thrust = run_json(capsys, "51105", "--speed-rpm", "1000", "--axial-load-n", "1000",
@@ -368,7 +368,7 @@ def test_cli_table(capsys):
     assert main(["friction", "6205", "--speed-rpm", "3000", "--radial-load-n", "1000",
                  "--model", "skf"]) == 0
     out = capsys.readouterr().out
-    assert "friction torque M" in out and "phi_ish" in out and "N mm" in out
+    assert "friction torque M" in out and "phi_ish" in out and "[N·mm]" in out
 
 
 @pytest.mark.parametrize("args, words", [
@@ -415,3 +415,121 @@ def test_unloaded_bearing_is_flagged():
     assert r.torque == 0.0 and any("no load" in w for w in r.warnings)
     c = constant_friction(0.0, 0.039, 100.0, "radial_ball")
     assert c.torque == 0.0 and any("no load" in w for w in c.warnings)
+
+
+# ------------------------------------------------------------------ one rule for CLI and report
+def _report_section(designation, speed_rpm, radial, axial, *, lubricant=None, viscosity=None):
+    """The report's friction section for these inputs, with its context made as
+    build_report makes it (bearinglab.report.builder)."""
+    from bearinglab.operating import OperatingCondition
+    from bearinglab.report import operation
+    from bearinglab.report.builder import _viscosity
+    from bearinglab.report.context import Context
+
+    b, des = bearing_from_designation(designation)
+    nu, how = _viscosity(lubricant, viscosity)
+    ctx = Context(bearing=b, designation=des, viscosity=nu, viscosity_source=how,
+                  lubricant=lubricant if viscosity is None else None,
+                  condition=OperatingCondition(radial_load=radial, axial_load=axial,
+                                               shaft_speed=speed_rpm * RPM))
+    html, highlights = operation.friction(ctx)
+    models = {m: bearing_friction(b, speed_rpm * RPM, radial, axial, model=m,
+                                  **(operation.friction_inputs(ctx) if m == "skf"
+                                     else {"designation": des}))
+              for m in ("constant", "skf")}
+    return html, dict(highlights), models
+
+
+@pytest.mark.parametrize("designation, cli, report", [
+    ("6205", [], {"lubricant": "iso-vg68"}),                     # both defaults
+    ("6205-2RS", ["--viscosity-mm2-s", "20"], {"viscosity": 20e-6}),
+    ("6205", ["--lubricant", "seed004-grease"], {"lubricant": "seed004-grease"}),
+])
+def test_cli_and_report_give_the_same_torques(capsys, designation, cli, report):
+    # the command and the report call bearing_friction with the same inputs; a rule that
+    # one of them applied alone (lubrication method, C_0, seals) would split the numbers
+    args = (designation, "--speed-rpm", "3000", "--radial-load-n", "1000", "--axial-load-n",
+            "300")
+    html, highlights, models = _report_section(designation, 3000.0, 1000.0, 300.0, **report)
+    for model in ("constant", "skf"):
+        d = run_json(capsys, *args, "--model", model, *cli)
+        r = models[model].to_dict()
+        for key in ("friction_torque_n_mm", "power_loss_w"):
+            assert d[key] == pytest.approx(r[key], rel=1e-9), (model, key)
+        if model == "skf":
+            for key in ("rolling_torque_n_mm", "sliding_torque_n_mm", "viscosity_mm2_s",
+                        "k_rs", "static_rating_n"):
+                assert d[key] == pytest.approx(r[key], rel=1e-9), key
+            assert d["seals"] == r["seals"]
+    # and the page shows that SKF torque (its highlight, 3 digits)
+    from bearinglab.report.document import number
+
+    skf = run_json(capsys, *args, "--model", "skf", *cli)
+    assert highlights["Friction torque"] == f"{number(skf['friction_torque_n_mm'], 3)} N·mm"
+    assert "SKF four-component model" in html
+
+
+# ------------------------------------------------------------------ bad input, named in units
+@pytest.mark.parametrize("args, words", [
+    # issue 14: was silently ignored by the constant model
+    (["6205", "--speed-rpm", "10", "--viscosity-mm2-s", "-5"],
+     "--viscosity-mm2-s = -5 is not allowed: expected a viscosity in (0, 1e+06] mm²/s"),
+    (["6205", "--speed-rpm", "10", "--model", "skf", "--viscosity-mm2-s", "-5"],
+     "--viscosity-mm2-s = -5 is not allowed: expected a viscosity in (0, 1e+06] mm²/s"),
+    (["6205", "--speed-rpm", "10", "--viscosity-mm2-s", "nan"], "--viscosity-mm2-s = nan"),
+    (["6205", "--speed-rpm", "10", "--model", "skf", "--temperature-c", "400"],
+     "--temperature-c = 400 is not allowed: expected a temperature in [-60, 300] °C"),
+    (["6205", "--speed-rpm", "10", "--temperature-c", "-100"], "[-60, 300] °C"),
+    (["6205", "--speed-rpm", "10", "--static-load-rating-kn", "-1"],
+     "--static-load-rating-kn = -1 is not allowed: expected a rating in (0, 100000] kN"),
+    (["6205", "--speed-rpm", "10", "--equivalent-load-n", "-3"],
+     "--equivalent-load-n = -3 is not allowed: expected a load in [0, 1e+07] N"),
+    (["6205-2RS", "--speed-rpm", "10", "--model", "skf", "--seal-constants", "1,2,2",
+      "--seal-diameter-mm", "0"],
+     "--seal-diameter-mm = 0 is not allowed: expected a diameter in (0, 100000] mm"),
+    (["6205", "--speed-rpm", "10", "--model", "skf", "--seal-constants", "1,2,2"],
+     "--seal-constants = '1,2,2' is not allowed: expected seal constants only with contact"),
+    (["6205", "--speed-rpm", "10", "--model", "skf", "--seal-constants", "1,-2,2"],
+     "--seal-constants = '1,-2,2' is not allowed: expected K_S1,K_S2,BETA"),
+    (["6205", "--speed-rpm", "10", "--lubricant", "honey"],
+     "--lubricant = 'honey' is not allowed: expected one of seed004-grease, iso-vg68"),
+    (["NU205", "--speed-rpm", "10", "--pitch-diameter-mm", "60"],
+     "--pitch-diameter-mm = 60 is not allowed: expected between the bore 25 mm and the "
+     "outside diameter 52 mm"),
+    (["NU205", "--speed-rpm", "10", "--bore-mm", "60"],
+     "--bore-mm = 60 is not allowed: expected less than the outside diameter 52 mm"),
+    (["--bore-mm", "25", "--outside-diameter-mm", "52", "--speed-rpm", "10", "--type", "plain"],
+     "--type = 'plain' is not allowed"),
+    (["--bore-mm", "-25", "--outside-diameter-mm", "52", "--speed-rpm", "10"],
+     "--bore-mm = -25 is not allowed: expected a length in (0, 100000] mm"),
+])
+def test_cli_errors_name_option_value_and_range(capsys, args, words):
+    assert words in run_error(capsys, *args)
+
+
+def test_inputs_the_model_does_not_use_are_checked_and_named(capsys):
+    d = run_json(capsys, "6205", "--speed-rpm", "1500", "--radial-load-n", "1000",
+                 "--viscosity-mm2-s", "30", "--lubrication", "grease")
+    assert any("does not use: viscosity, lubrication" in w for w in d["warnings"])
+    b, _ = bearing_from_designation("6205")
+    with pytest.raises(InputError, match="viscosity"):
+        bearing_friction(b, 100.0, 1000.0, viscosity=-5e-6)
+    with pytest.raises(InputError, match="temperature"):
+        bearing_friction(b, 100.0, 1000.0, model="skf", lubricant="iso-vg68", temperature=20.0)
+    s = bearing_friction(b, 100.0, 1000.0, model="skf", viscosity=20e-6, equivalent_load=9.0)
+    assert any("does not use: equivalent_load" in w for w in s.warnings)
+
+
+def test_bearings_without_a_ball_model():
+    from bearinglab.friction import FrictionBearing
+
+    nu = FrictionBearing.from_designation("NU205")
+    assert nu.bearing_type == "cylindrical_roller" and nu.pitch_diameter == pytest.approx(0.0385)
+    ncf = bearing_friction(FrictionBearing("NCF205", "cylindrical_roller", 0.025, 0.052,
+                                           0.0385, "given", design_variant="NCF"), 100.0, 1000.0)
+    assert ncf.parameters["friction_type"] == "cylindrical_roller_full_complement"
+    own = FrictionBearing.from_dimensions(0.025, 0.052, pitch_diameter=0.04,
+                                          bearing_type="tapered_roller_thrust")
+    assert own.bearing_type == "thrust_roller" and own.pitch_diameter_source == "given"
+    with pytest.raises(InputError, match="pitch_diameter"):
+        FrictionBearing.from_dimensions(0.025, 0.052, pitch_diameter=0.06)

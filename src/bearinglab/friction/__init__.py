@@ -6,20 +6,25 @@
 - :mod:`.skf` -- the SKF four-component model M = phi_ish phi_rs M_rr + M_sl + M_seal +
   M_drag (SKF catalogue 10000 EN), and the viscosity ratio kappa (ISO 281's nu_1 from
   :mod:`bearinglab.life`).
-- :mod:`.analysis` -- :class:`FrictionResult` and :func:`constant_friction`,
-  :func:`skf_friction`, :func:`bearing_friction`.
+- :mod:`.bearing` -- :class:`FrictionBearing`: what the models need of a bearing (a ball
+  bearing's geometry, or any type's ISO boundary dimensions).
+- :mod:`.analysis` -- :func:`constant_friction`, :func:`skf_friction` and
+  :func:`bearing_friction` (either model, with the rules for P, C_0, seals, viscosity and
+  lubrication), used by the ``friction`` command and the report alike.
+- :mod:`.result` -- :class:`FrictionResult`.
 
 Core API in SI units (N, m, rad/s, m^2/s, N m, W); ``FrictionResult.to_dict()`` in
-engineering units (N mm, W, mm, mm^2/s, rpm). What is and is not checked against the
-sources: docs/capabilities/friction.md.
+engineering units (N·mm, W, mm, mm²/s, rpm) with the unit in each key. What is and is not
+checked against the sources: docs/capabilities/friction.md.
 
->>> import math
->>> r = constant_friction(1000.0, 0.039, 1500 * math.pi / 30, "radial_ball")
->>> round(r.to_dict()["friction_torque_nmm"], 2)
+>>> from bearinglab.units import rpm_to_rad_s
+>>> r = constant_friction(1000.0, 0.039, rpm_to_rad_s(1500), "radial_ball")
+>>> round(r.to_dict()["friction_torque_n_mm"], 2)
 29.25
 """
 
-from .analysis import MODELS, FrictionResult, bearing_friction, constant_friction, skf_friction
+from .analysis import MODELS, SEALS, bearing_friction, constant_friction, skf_friction
+from .bearing import FrictionBearing
 from .constant import (
     SEED003_COEFFICIENTS,
     SEED003_SOURCE,
@@ -28,6 +33,7 @@ from .constant import (
     friction_type_of,
     power_loss,
 )
+from .result import FrictionResult
 from .skf import (
     DEEP_GROOVE_CONSTANTS,
     K_RS,
@@ -52,8 +58,9 @@ from .skf import (
 )
 
 __all__ = [
-    "DEEP_GROOVE_CONSTANTS", "K_RS", "K_Z", "MODELS", "MU_BL", "MU_EHL", "SEED003_COEFFICIENTS",
-    "SEED003_SOURCE", "SKF_BEARING_TYPES", "SKF_SOURCE", "FrictionResult",
+    "DEEP_GROOVE_CONSTANTS", "K_RS", "K_Z", "MODELS", "MU_BL", "MU_EHL", "SEALS",
+    "SEED003_COEFFICIENTS", "SEED003_SOURCE", "SKF_BEARING_TYPES", "SKF_SOURCE",
+    "FrictionBearing", "FrictionResult",
     "SkfGeometryConstants", "SkfMoment", "angular_contact_load_variables", "bearing_friction",
     "constant_coefficient_torque", "constant_friction", "deep_groove_constants",
     "deep_groove_load_angle", "deep_groove_load_variables",

@@ -2,33 +2,53 @@
 
 - :func:`constant_friction` -- seed 003's M = mu P d_m / 2 (:mod:`.constant`).
 - :func:`skf_friction` -- the SKF four-component model (:mod:`.skf`).
-- :func:`bearing_friction` -- either model for a :class:`~bearinglab.geometry.BallBearing`.
+- :func:`bearing_friction` -- either model for a bearing, with every rule for what the
+  models leave open: the friction type, the equivalent load P (ISO 281), C_0 (ISO 76), the
+  seals, the viscosity (a lubricant at its temperature), the lubrication method. The
+  ``friction`` command and the report both call it, so they give the same numbers.
 
-Every function takes SI units and returns a :class:`FrictionResult` whose ``to_dict`` is in
-engineering units with the unit in each key (``friction_torque_nmm``, ``power_loss_w``).
+Every function takes SI units and returns a :class:`~.result.FrictionResult` whose
+``to_dict`` is in engineering units with the unit in each key (``friction_torque_n_mm``,
+``power_loss_w``).
 """
 
 from __future__ import annotations
 
-import math
-from dataclasses import dataclass, field
+from dataclasses import replace
 
-from ..errors import DesignationError, InputError
+from ..errors import InputError
+from ..units import rpm_to_rad_s  # noqa: F401 - used by the doctests
+from .bearing import FrictionBearing, as_friction_bearing
 from .constant import (
+    SEED003_COEFFICIENTS,
     SEED003_SOURCE,
     constant_coefficient_torque,
     friction_coefficient,
     friction_type_of,
-    power_loss,
+)
+from .result import FrictionResult
+from .rules import (
+    SEALS,
+    check_load,
+    check_positive,
+    check_seal_constants,
+    check_speed,
+    equivalent_load_of,
+    lubrication_of,
+    seals_of,
+    unused_note,
+    viscosity_of,
 )
 from .skf import (
     K_RS,
     K_Z,
     MU_BL,
     MU_EHL,
+    SKF_BEARING_TYPES,
     SKF_SOURCE,
     SkfGeometryConstants,
     deep_groove_constants,
+    seal_moment,
     skf_frictional_moment,
     viscosity_ratio,
 )
@@ -38,112 +58,10 @@ _CONSTANT_CAVEAT = ("seed 003's coefficients hold for a lubricant of about 20 mm
                     "operating temperature and do not depend on speed; seals not included")
 _NO_LOAD = ("no load: the model gives no load-dependent moment (a running bearing needs its "
             "minimum load, and real unloaded bearings still have drag and seal friction)")
-_NMM = 1e3        # N m -> N mm
-_MM = 1e3         # m -> mm
-_MM2_S = 1e6      # m^2/s -> mm^2/s
+_ISO76_C0 = "ISO 76 from the internal geometry (bearinglab.life)"
 
-
-def _speed(shaft_speed) -> float:
-    if isinstance(shaft_speed, bool) or not isinstance(shaft_speed, (int, float)) \
-            or not math.isfinite(shaft_speed) or shaft_speed < 0:
-        raise InputError("shaft_speed", shaft_speed, "a finite speed >= 0 [rad/s]")
-    return float(shaft_speed)
-
-
-def _load(name: str, value) -> float:
-    if isinstance(value, bool) or not isinstance(value, (int, float)) \
-            or not math.isfinite(value) or value < 0:
-        raise InputError(name, value, "a finite load >= 0 [N]")
-    return float(value)
-
-
-@dataclass(frozen=True)
-class FrictionResult:
-    """Friction torque and power loss of a bearing at one operating point.
-
-    Attributes: ``model`` (``"constant"`` or ``"skf"``), ``name``, ``shaft_speed``
-    [rad/s], ``radial_load``, ``axial_load`` [N], ``torque`` M [N m], ``components``
-    (name -> moment [N m]: ``rolling``, ``sliding``, ``seal``, ``drag`` for the SKF model;
-    empty for the constant model), ``parameters`` (the coefficients, factors and
-    diameters used, SI or dimensionless), ``sources`` and ``warnings``.
-    """
-
-    model: str
-    name: str
-    shaft_speed: float
-    radial_load: float
-    axial_load: float
-    torque: float
-    components: dict = field(default_factory=dict)
-    parameters: dict = field(default_factory=dict)
-    sources: tuple = ()
-    warnings: tuple = ()
-
-    @property
-    def power_loss(self) -> float:
-        """Frictional power loss N = M omega [W]."""
-        return float(power_loss(self.torque, self.shaft_speed))
-
-    def to_dict(self) -> dict:
-        """JSON-ready dict in engineering units (N mm, W, mm, mm^2/s, rpm, N)."""
-        p = self.parameters
-        out = {"name": self.name, "model": self.model,
-               "speed_rpm": self.shaft_speed * 30.0 / math.pi,
-               "radial_load_n": self.radial_load, "axial_load_n": self.axial_load,
-               "friction_torque_nmm": self.torque * _NMM, "power_loss_w": self.power_loss}
-        if self.model == "constant":
-            out.update({"friction_type": p["friction_type"],
-                        "friction_coefficient": p["friction_coefficient"],
-                        "equivalent_load_n": p["equivalent_load"],
-                        "pitch_diameter_mm": p["pitch_diameter"] * _MM})
-        else:
-            out.update({f"{k}_torque_nmm": v * _NMM for k, v in self.components.items()})
-            c = p["constants"]
-            nu1 = p["rated_viscosity"]
-            out.update({
-                "mean_diameter_mm": p["mean_diameter"] * _MM,
-                "viscosity_mm2_s": p["viscosity"] * _MM2_S,
-                "rated_viscosity_mm2_s": None if nu1 is None else nu1 * _MM2_S,
-                "viscosity_ratio": p["viscosity_ratio"],
-                "inlet_shear_factor": p["inlet_shear_factor"],
-                "replenishment_factor": p["replenishment_factor"],
-                "sliding_weighting_factor": p["sliding_weighting_factor"],
-                "sliding_friction_coefficient": p["sliding_friction_coefficient"],
-                "rolling_variable_skf": p["rolling_variable"],
-                "sliding_variable_skf": p["sliding_variable"],
-                "k_rs": p["k_rs"], "k_z": p["k_z"], "lubrication": p["lubrication"],
-                "geometry_constants": {"r1": c.r1, "r2": c.r2, "s1": c.s1, "s2": c.s2,
-                                       "r3": c.r3, "s3": c.s3, "source": c.source,
-                                       "verified": c.verified},
-            })
-        out["sources"] = list(self.sources)
-        out["warnings"] = list(self.warnings)
-        return out
-
-    def to_pandas(self):
-        """Table of the torque and its components: component, torque [N mm], share [-]."""
-        import pandas as pd
-
-        parts = self.components or {"total (constant coefficient)": self.torque}
-        rows = [{"component": k, "torque_nmm": v * _NMM,
-                 "share": (v / self.torque) if self.torque > 0 else 0.0}
-                for k, v in parts.items()]
-        return pd.DataFrame(rows)
-
-    def plot(self, ax=None):
-        """Bar chart of the torque components [N mm]; returns (fig, ax), never shows."""
-        from ..plotting import _pyplot
-
-        if ax is None:
-            fig, ax = _pyplot().subplots(figsize=(6, 3.5))
-        else:
-            fig = ax.figure
-        table = self.to_pandas()
-        ax.bar(table["component"], table["torque_nmm"], color="tab:blue")
-        ax.set_ylabel("friction torque [N mm]")
-        ax.set_title(f"{self.name or 'bearing'}: {self.torque * _NMM:.4g} N mm, "
-                     f"{self.power_loss:.4g} W ({self.model} model)")
-        return fig, ax
+__all__ = ["MODELS", "SEALS", "FrictionBearing", "FrictionResult", "bearing_friction",
+           "constant_friction", "skf_friction"]
 
 
 def constant_friction(equivalent_load: float, pitch_diameter: float, shaft_speed: float,
@@ -166,17 +84,17 @@ def constant_friction(equivalent_load: float, pitch_diameter: float, shaft_speed
     radial_load, axial_load : float
         The loads P was formed from, for the report [N]; ``radial_load`` defaults to P.
 
-    >>> r = constant_friction(1000.0, 0.039, 1500 * math.pi / 30, "radial_ball")
+    >>> r = constant_friction(1000.0, 0.039, rpm_to_rad_s(1500), "radial_ball")
     >>> round(r.torque * 1e3, 3), round(r.power_loss, 3)
     (29.25, 4.595)
     """
-    w = _speed(shaft_speed)
-    p = _load("equivalent_load", equivalent_load)
+    w = check_speed(shaft_speed)
+    p = check_load("equivalent_load", equivalent_load)
     mu = friction_coefficient(friction_type)
     torque = float(constant_coefficient_torque(mu, p, pitch_diameter))
-    fr = p if radial_load is None else _load("radial_load", radial_load)
+    fr = p if radial_load is None else check_load("radial_load", radial_load)
     return FrictionResult(
-        "constant", name, w, fr, _load("axial_load", axial_load), torque,
+        "constant", name, w, fr, check_load("axial_load", axial_load), torque,
         parameters={"friction_type": friction_type, "friction_coefficient": mu,
                     "equivalent_load": p, "pitch_diameter": float(pitch_diameter)},
         sources=(SEED003_SOURCE,),
@@ -224,18 +142,18 @@ def skf_friction(bearing_type: str, bore: float, outside_diameter: float, radial
         Caveats of the caller, added to the warnings [-].
 
     >>> from bearinglab.friction import deep_groove_constants
-    >>> r = skf_friction("radial_ball", 0.025, 0.052, 1000.0, 0.0, 3000 * math.pi / 30, 20e-6,
+    >>> r = skf_friction("radial_ball", 0.025, 0.052, 1000.0, 0.0, rpm_to_rad_s(3000), 20e-6,
     ...                  deep_groove_constants("62"))
-    >>> round(r.to_dict()["friction_torque_nmm"], 2)
+    >>> round(r.to_dict()["friction_torque_n_mm"], 2)
     20.16
     """
     if lubrication not in K_RS:
         raise InputError("lubrication", lubrication, "one of " + ", ".join(K_RS))
     if lubricant_kind not in MU_EHL:
         raise InputError("lubricant_kind", lubricant_kind, "one of " + ", ".join(MU_EHL))
-    w = _speed(shaft_speed)
-    fr = _load("radial_load", radial_load)
-    fa = _load("axial_load", axial_load)
+    w = check_speed(shaft_speed)
+    fr = check_load("radial_load", radial_load)
+    fa = check_load("axial_load", axial_load)
     m = skf_frictional_moment(bearing_type, bore, outside_diameter, fr, fa, w, viscosity,
                               constants, static_load_rating=static_load_rating,
                               k_rs=K_RS[lubrication], k_z=k_z, mu_bl=mu_bl,
@@ -270,96 +188,194 @@ def skf_friction(bearing_type: str, bore: float, outside_diameter: float, radial
         warnings=tuple(warnings))
 
 
-def _series_of(bearing) -> str | None:
-    from ..designation import parse
-
-    try:
-        return parse(bearing.name).series if bearing.name else None
-    except (DesignationError, InputError):
-        return None
-
-
+# ------------------------------------------------------------------ the analysis
 def bearing_friction(bearing, shaft_speed: float, radial_load: float, axial_load: float = 0.0,
-                     *, model: str = "constant", friction_type: str | None = None,
-                     equivalent_load: float | None = None, viscosity: float | None = None,
+                     *, model: str = "constant", designation=None,
+                     friction_type: str | None = None, equivalent_load: float | None = None,
+                     static_load_rating: float | None = None, viscosity: float | None = None,
+                     lubricant=None, temperature: float | None = None,
+                     lubrication: str | None = None, lubricant_kind: str = "mineral",
                      constants: SkfGeometryConstants | None = None, series: str | None = None,
-                     **skf_options) -> FrictionResult:
-    """Friction of a :class:`~bearinglab.geometry.BallBearing` by either model.
+                     seals: str | None = None, seal_constants=None,
+                     seal_diameter: float | None = None, **skf_options) -> FrictionResult:
+    """Friction torque and power loss of a bearing by either model.
 
-    ``model="constant"``: the friction type comes from ``bearing.bearing_type`` (or
-    ``friction_type``), d_m is the bearing's pitch diameter, and P is ``equivalent_load``
-    or ISO 281's dynamic equivalent load from the geometry
-    (:func:`bearinglab.life.equivalent_dynamic_load`; P = F_r without axial load).
-    ``model="skf"``: needs ``bearing.bore`` and ``outside_diameter``, ``viscosity``
-    [m^2/s], and ``constants`` or a deep-groove series (``series``, else read from
-    ``bearing.name``); with an axial load on a deep-groove bearing C_0 is
-    ``skf_options["static_load_rating"]`` or ISO 76's rating from the geometry
-    (:func:`bearinglab.life.load_ratings`); ``skf_options`` go to :func:`skf_friction`.
+    ``model="constant"`` (seed 003, :func:`constant_friction`): the friction type is
+    ``friction_type`` or the bearing's (:func:`~.constant.friction_type_of`), d_m the
+    bearing's pitch diameter, P ``equivalent_load``, F_r without axial load, ISO 281's
+    dynamic equivalent load from a ball bearing's geometry
+    (:func:`bearinglab.life.equivalent_dynamic_load`), or F_a for a thrust ball bearing
+    under axial load alone.
+
+    ``model="skf"`` (:func:`skf_friction`): the type is ``friction_type`` or the bearing's
+    (a ball bearing); d and D from the bearing; the viscosity is ``viscosity``, or that of
+    ``lubricant`` at ``temperature`` (:func:`bearinglab.lubrication.lubricant.
+    operating_viscosity`); the lubrication method (K_rs) is ``lubrication``, else grease
+    for a grease, oil jet for an oil, grease with only a viscosity; the constants are
+    ``constants`` or the deep-groove series' (``series``, else the designation's); with an
+    axial load on a deep-groove bearing C_0 is ``static_load_rating`` or ISO 76's rating
+    from the geometry (:func:`bearinglab.life.load_ratings`); contact seals add
+    M_seal = K_S1 d_s^beta + K_S2 with ``seal_constants`` and ``seal_diameter``.
+
+    Every input given is checked, whichever model runs; one the model does not use is
+    named in the warnings.
 
     Parameters
     ----------
-    bearing : BallBearing
-        The bearing.
+    bearing : BallBearing or FrictionBearing
+        The bearing (:class:`~.bearing.FrictionBearing` for types without a ball model).
     shaft_speed : float
-        [rad/s].
+        Speed of the rotating ring [rad/s], >= 0.
     radial_load, axial_load : float
-        F_r, F_a [N].
+        F_r, F_a [N], >= 0.
     model : str
         ``"constant"`` or ``"skf"`` [-].
+    designation : Designation or None
+        The decoded designation of a BallBearing (series, design variant, closures) [-].
     friction_type : str or None
-        Seed-003 friction type overriding the bearing's [-].
+        Seed-003 friction type (constant model) or SKF type (skf model) overriding the
+        bearing's [-].
     equivalent_load : float or None
         P [N] for the constant model.
+    static_load_rating : float or None
+        C_0 [N] (SKF model with an axial load on a deep-groove bearing).
     viscosity : float or None
-        Operating viscosity [m^2/s] (SKF model).
+        Operating kinematic viscosity of the oil or the grease's base oil [m^2/s].
+    lubricant : Lubricant, str or None
+        A lubricant or a built-in one's name: its viscosity at ``temperature`` unless a
+        ``viscosity`` is given, and its kind (grease or oil) for the lubrication default.
+    temperature : float or None
+        Operating temperature of the lubricant [K]; None: its reference temperature.
+    lubrication : str or None
+        ``"grease"``, ``"oil-air"``, ``"oil-jet"`` or ``"low-oil-bath"`` (K_rs) [-].
+    lubricant_kind : str
+        ``"mineral"``, ``"synthetic"`` or ``"transmission-fluid"`` (mu_EHL) [-].
     constants : SkfGeometryConstants or None
         SKF geometry constants.
     series : str or None
         Deep-groove series for the shipped constants [-].
+    seals : str or None
+        ``"none"``, ``"shields"`` or ``"contact"``; None: from the designation [-].
+    seal_constants : tuple of 3 float or None
+        K_S1, K_S2, beta of the seal [SKF units].
+    seal_diameter : float or None
+        Seal counterface diameter d_s [m].
     **skf_options
-        Keyword arguments of :func:`skf_friction`.
+        ``k_z``, ``mu_bl``, ``drag``, ``notes`` of :func:`skf_friction`.
 
     >>> from bearinglab.catalog import bearing_from_designation
     >>> b, _ = bearing_from_designation("6205")
-    >>> r = bearing_friction(b, 3000 * math.pi / 30, 1000.0, model="skf", viscosity=20e-6)
+    >>> r = bearing_friction(b, rpm_to_rad_s(3000), 1000.0, model="skf", viscosity=20e-6)
     >>> round(r.torque * 1e3, 1)
     20.2
+    >>> r = bearing_friction(b, rpm_to_rad_s(3000), 1000.0, model="skf", lubricant="iso-vg68")
+    >>> round(r.to_dict()["viscosity_mm2_s"], 3), r.to_dict()["lubrication"]
+    (68.0, 'oil-jet')
     """
     if model not in MODELS:
         raise InputError("model", model, "one of " + ", ".join(MODELS))
-    fr = _load("radial_load", radial_load)
-    fa = _load("axial_load", axial_load)
+    b = as_friction_bearing(bearing, designation)
+    w = check_speed(shaft_speed)
+    fr = check_load("radial_load", radial_load)
+    fa = check_load("axial_load", axial_load)
+    seal_kind = seals_of(b, seals)
+    if static_load_rating is not None:
+        check_positive("static_load_rating", static_load_rating, "a rating > 0 [N]")
+    if equivalent_load is not None:
+        check_load("equivalent_load", equivalent_load)
+    if lubricant_kind not in MU_EHL:
+        raise InputError("lubricant_kind", lubricant_kind, "one of " + ", ".join(MU_EHL))
+    if seal_diameter is not None:
+        check_positive("seal_diameter", seal_diameter, "a diameter > 0 [m]")
+    nu, nu_how, lub = viscosity_of(viscosity, lubricant, temperature)
+    ks = check_seal_constants(seal_constants, seal_kind)
     if model == "constant":
-        kind = friction_type or friction_type_of(bearing.bearing_type)
-        if equivalent_load is None:
-            equivalent_load = fr if fa == 0.0 else _iso281_load(bearing, fr, fa)
-        return constant_friction(equivalent_load, bearing.pitch_diameter, shaft_speed, kind,
-                                 name=bearing.name, radial_load=fr, axial_load=fa)
-    if bearing.bore is None or bearing.outside_diameter is None:
-        raise InputError("bearing", bearing.name or "bearing",
-                         "a bearing with bore and outside_diameter (the SKF model uses "
-                         "d_m = 0.5 (d + D))")
-    if viscosity is None:
-        raise InputError("viscosity", None, "the operating kinematic viscosity [m^2/s]")
+        unused = {"viscosity": viscosity, "lubricant": lubricant, "temperature": temperature,
+                  "lubrication": lubrication, "static_load_rating": static_load_rating,
+                  "constants": constants, "seal_constants": seal_constants,
+                  "seal_diameter": seal_diameter}
+        if lubrication is not None:
+            lubrication_of(lubrication, lub)
+        return _constant(b, w, fr, fa, friction_type, equivalent_load, seal_kind,
+                         unused_note("constant", unused))
+    kind = friction_type or b.bearing_type
+    if kind not in SKF_BEARING_TYPES:
+        what = "for the SKF model a ball bearing: " + ", ".join(SKF_BEARING_TYPES)
+        if friction_type is not None:
+            raise InputError("friction_type", friction_type, what)
+        raise InputError("bearing_type", kind, what, f"this bearing is {kind}; use --model "
+                         "constant (model='constant'), which covers every type")
+    if b.bore is None or b.outside_diameter is None:
+        raise InputError("bore", None, "the bore and outside diameter (the SKF model uses "
+                         "d_m = 0.5 (d + D))", "command line: --bore-mm, --outside-diameter-mm")
+    if nu is None:
+        raise InputError("viscosity", None, "the operating kinematic viscosity [m^2/s], or a "
+                         "lubricant (and its temperature)")
+    method, method_how = lubrication_of(lubrication, lub)
     if constants is None:
-        if bearing.bearing_type != "radial_ball":
-            raise InputError("constants", None, "SKF geometry constants for "
-                             f"{bearing.bearing_type} (none are shipped)")
-        series = series or _series_of(bearing)
-        constants = deep_groove_constants(series)
-    if (bearing.bearing_type == "radial_ball" and fa > 0
-            and skf_options.get("static_load_rating") is None):
+        if kind != "radial_ball":
+            raise InputError("constants", None, "SKF geometry constants R1, R2, S1, S2, R3, S3 "
+                             f"for {kind} (SKF's table is not shipped)",
+                             "command line: --skf-constants")
+        constants = deep_groove_constants(series or b.series)
+    notes = list(skf_options.pop("notes", ()))
+    c0, c0_how = static_load_rating, "given"
+    if kind == "radial_ball" and fa > 0 and c0 is None:
+        ball = b.ball_bearing
+        if ball is None or ball.bearing_type != "radial_ball":
+            raise InputError("static_load_rating", None, "the basic static load rating C_0 "
+                             "[N] when there is an axial load (SKF: alpha_F = 24.6 "
+                             "(F_a/C_0)^0.24)", "command line: --static-load-rating-kn")
         from ..life import load_ratings
 
-        skf_options["static_load_rating"] = load_ratings(bearing).static
-        skf_options["notes"] = (*skf_options.get("notes", ()),
-                                "C_0 from ISO 76 and the internal geometry (bearinglab.life)")
-    return skf_friction(bearing.bearing_type, bearing.bore, bearing.outside_diameter, fr, fa,
-                        shaft_speed, viscosity, constants, name=bearing.name, **skf_options)
+        c0, c0_how = load_ratings(ball).static, _ISO76_C0
+        notes.append(f"C_0 = {c0:.5g} N from ISO 76 and the internal geometry "
+                     "(bearinglab.life); give the maker's (--static-load-rating-kn)")
+    if c0 is not None and fa > c0:
+        raise InputError("axial_load", fa, f"at most C_0 = {c0:g} N")
+    seal = 0.0
+    if seal_kind == "contact":
+        if ks is None:
+            notes.append("contact seals: M_seal is not included (SKF's seal constants are not "
+                         "shipped; give K_S1, K_S2, beta and d_s: --seal-constants, "
+                         "--seal-diameter-mm)")
+        elif seal_diameter is None:
+            raise InputError("seal_diameter", None, "the seal counterface diameter d_s [m] "
+                             "with seal constants")
+        else:
+            seal = seal_moment(*ks, seal_diameter)
+    result = skf_friction(kind, b.bore, b.outside_diameter, fr, fa, w, nu, constants,
+                          name=b.name, static_load_rating=c0, lubrication=method,
+                          lubricant_kind=lubricant_kind, seal=seal, notes=tuple(notes),
+                          **skf_options)
+    parameters = {**result.parameters, "viscosity_source": nu_how,
+                  "lubrication_source": method_how, "lubricant_kind": lubricant_kind,
+                  "static_rating": c0, "static_rating_source": c0_how}
+    if lub is not None:
+        parameters["lubricant"] = lub.name
+    unused = unused_note("SKF", {"equivalent_load": equivalent_load,
+                             "seal_diameter": seal_diameter if ks is None else None})
+    return replace(result, parameters=parameters, bearing_type=b.bearing_type, seals=seal_kind,
+                   warnings=result.warnings + unused)
 
 
-def _iso281_load(bearing, radial_load: float, axial_load: float) -> float:
-    """ISO 281 dynamic equivalent load P of a ball bearing [N] (bearinglab.life)."""
-    from ..life import equivalent_dynamic_load
-
-    return float(equivalent_dynamic_load(bearing, radial_load, axial_load)[0])
+def _constant(b: FrictionBearing, w: float, fr: float, fa: float, friction_type, given_load,
+              seal_kind: str, unused: tuple) -> FrictionResult:
+    kind = friction_type
+    if kind is None:
+        try:
+            kind = friction_type_of(b.bearing_type, b.design_variant)
+        except InputError:
+            raise InputError("friction_type", None, f"a friction type for this {b.bearing_type} "
+                             "bearing, one of " + ", ".join(SEED003_COEFFICIENTS),
+                             "seed 003's Table III has no row for it") from None
+    friction_coefficient(kind)
+    p, how = equivalent_load_of(b, kind, fr, fa, given_load)
+    result = constant_friction(p, b.pitch_diameter, w, kind, name=b.name, radial_load=fr,
+                               axial_load=fa)
+    seal_note = (("contact seals add friction that the constant model leaves out",)
+                 if seal_kind == "contact" else ())
+    return replace(result, parameters={**result.parameters, "equivalent_load_source": how,
+                                       "pitch_diameter_source": b.pitch_diameter_source},
+                   bearing_type=b.bearing_type, seals=seal_kind,
+                   warnings=result.warnings + seal_note + unused)

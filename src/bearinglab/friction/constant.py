@@ -161,7 +161,8 @@ def power_loss(torque, shaft_speed):
     shaft_speed : float or array
         Speed of the rotating ring omega [rad/s], >= 0.
 
-    >>> round(float(power_loss(0.02925, 1500 * 3.141592653589793 / 30)), 4)
+    >>> from bearinglab.units import rpm_to_rad_s
+    >>> round(float(power_loss(0.02925, rpm_to_rad_s(1500))), 4)
     4.5946
     """
     m = _nonnegative("torque", torque, "N m")

@@ -60,9 +60,10 @@ from typing import NamedTuple
 import numpy as np
 
 from ..errors import InputError
+from ..units import rad_s_to_rpm, rpm_to_rad_s  # noqa: F401 - rpm_to_rad_s: doctests
 
 #: Conversions: SI -> SKF engineering units.
-RPM_PER_RAD_S = 30.0 / math.pi
+RPM_PER_RAD_S = rad_s_to_rpm(1.0)
 MM2_S_PER_M2_S = 1e6
 MM_PER_M = 1e3
 #: Boundary-layer sliding friction coefficient mu_bl, "generally ~ 0.15" [-].
@@ -206,7 +207,7 @@ def viscosity_ratio(viscosity, shaft_speed, mean_diameter) -> float:
     mean_diameter : float
         d_m = 0.5 (d + D) [m].
 
-    >>> round(viscosity_ratio(20e-6, 3000 * math.pi / 30, 0.0385), 3)
+    >>> round(viscosity_ratio(20e-6, rpm_to_rad_s(3000), 0.0385), 3)
     1.51
     """
     from ..life import rated_viscosity
@@ -227,7 +228,7 @@ def inlet_shear_heating_factor(shaft_speed, mean_diameter, viscosity):
     viscosity : float or array
         Operating viscosity nu [m^2/s].
 
-    >>> round(float(inlet_shear_heating_factor(3000 * 3.141592653589793 / 30, 0.0385, 20e-6)), 4)
+    >>> round(float(inlet_shear_heating_factor(rpm_to_rad_s(3000), 0.0385, 20e-6)), 4)
     0.9636
     """
     n = _rpm(shaft_speed)
@@ -252,7 +253,7 @@ def replenishment_factor(shaft_speed, viscosity, bore, outside_diameter, k_rs, k
     k_z : float
         Bearing-type geometry constant K_Z [-] (:data:`K_Z`).
 
-    >>> round(float(replenishment_factor(3000 * 3.141592653589793 / 30, 20e-6, 0.025, 0.052,
+    >>> round(float(replenishment_factor(rpm_to_rad_s(3000), 20e-6, 0.025, 0.052,
     ...                                  6e-8, 3.1)), 4)
     0.9357
     """
@@ -489,7 +490,7 @@ def skf_frictional_moment(bearing_type: str, bore: float, outside_diameter: floa
         Drag moment M_drag [N m], >= 0 (not modelled here; 0 for grease, oil-air, oil jet).
 
     >>> m = skf_frictional_moment("radial_ball", 0.025, 0.052, 1000.0, 0.0,
-    ...                           3000 * 3.141592653589793 / 30, 20e-6,
+    ...                           rpm_to_rad_s(3000), 20e-6,
     ...                           deep_groove_constants("62"))
     >>> round(m.total * 1e3, 2)
     20.16

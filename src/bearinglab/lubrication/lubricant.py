@@ -337,3 +337,51 @@ ISO_VG68 = Lubricant(
 
 #: Built-in lubricants by key.
 LUBRICANTS: dict[str, Lubricant] = {"seed004-grease": SEED004_GREASE, "iso-vg68": ISO_VG68}
+
+#: Operating temperatures at which :func:`operating_viscosity` evaluates a lubricant [K]:
+#: -60 ... 300 degC (Reynolds' law is a local fit; beyond this no oil is in service).
+OPERATING_TEMPERATURE_RANGE = (ZERO_CELSIUS - 60.0, ZERO_CELSIUS + 300.0)
+
+
+def operating_viscosity(lubricant, temperature=None) -> tuple[float, str]:
+    """Kinematic viscosity of a lubricant at its operating temperature [m^2/s], and how it
+    was found (one sentence).
+
+    Reynolds' exponential law through :meth:`Lubricant.kinematic_viscosity` (Hamrock,
+    Schmid & Jacobson 2004, ch. 4), the density held at its reference value. Used by the
+    friction analysis and the report, so both read a lubricant the same way.
+
+    Parameters
+    ----------
+    lubricant : Lubricant or str
+        The lubricant, or the key of a built-in one (:data:`LUBRICANTS`) [-].
+    temperature : float or None
+        Operating temperature [K] in :data:`OPERATING_TEMPERATURE_RANGE`; None means the
+        lubricant's reference temperature.
+
+    >>> nu, how = operating_viscosity("iso-vg68")
+    >>> round(nu * 1e6, 6), how
+    (68.0, 'ISO VG 68 mineral oil (typical) at its reference temperature 40 degC')
+    >>> round(operating_viscosity("iso-vg68", ZERO_CELSIUS + 100.0)[0] * 1e6, 3)
+    8.5
+    """
+    if isinstance(lubricant, str):
+        if lubricant not in LUBRICANTS:
+            raise InputError("lubricant", lubricant, "one of " + ", ".join(LUBRICANTS))
+        lubricant = LUBRICANTS[lubricant]
+    if not isinstance(lubricant, Lubricant):
+        raise InputError("lubricant", lubricant, "a Lubricant or the name of a built-in one")
+    t0 = lubricant.reference_temperature
+    if temperature is None:
+        return (float(lubricant.kinematic_viscosity(t0)),
+                f"{lubricant.name} at its reference temperature {t0 - ZERO_CELSIUS:.4g} degC")
+    low, high = OPERATING_TEMPERATURE_RANGE
+    if isinstance(temperature, bool) or not isinstance(
+            temperature, (int, float, np.integer, np.floating)) \
+            or not math.isfinite(temperature) or not low <= temperature <= high:
+        raise InputError("temperature", temperature,
+                         f"an operating temperature in [{low:g}, {high:g}] K "
+                         f"({low - ZERO_CELSIUS:g} to {high - ZERO_CELSIUS:g} degC)")
+    nu = float(lubricant.kinematic_viscosity(float(temperature)))
+    return nu, (f"{lubricant.name} at {temperature - ZERO_CELSIUS:.4g} degC (Reynolds' "
+                f"exponential law from {t0 - ZERO_CELSIUS:.4g} degC)")

@@ -127,6 +127,7 @@ def build_report(bearing: BallBearing, condition: OperatingCondition, *, designa
                                     [LOCATION_FAMILY[d.location] for d in chosen]))
     ctx = Context(bearing=bearing, condition=condition, designation=designation,
                   defects=chosen, defects_given=given, viscosity=nu, viscosity_source=nu_source,
+                  lubricant=lubricant if viscosity is None else None,
                   duration=float(duration), sample_rate=float(rate),
                   slip_duration=float(slip_duration))
     sections = []

@@ -16,7 +16,8 @@ class Context:
 
     ``defects`` are the ones to simulate (an example outer-race defect when the user gave
     none, ``defects_given`` False); ``viscosity`` [m^2/s] is the operating kinematic
-    viscosity and ``viscosity_source`` says where it came from; ``duration``,
+    viscosity and ``viscosity_source`` says where it came from (``lubricant``: the
+    lubricant it was read from, None when the viscosity was given); ``duration``,
     ``sample_rate`` and ``slip_duration`` [s, Hz, s] set the simulations; ``results`` holds
     what one section computes for another ("load", "simulation", "slip").
     """
@@ -28,6 +29,7 @@ class Context:
     defects_given: bool = False
     viscosity: float | None = None
     viscosity_source: str = ""
+    lubricant: object = None
     duration: float = 1.0
     sample_rate: float = 25.6e3
     slip_duration: float = 0.1

@@ -5,48 +5,66 @@ from __future__ import annotations
 
 from ..friction import bearing_friction
 from ..life import rating_life
+from ..units import UNITS, label
 from .context import Context
 from .document import figure, notes, number, paragraph, table
+
+_N_MM = UNITS["n_mm"].from_si(1.0)      # N m -> N mm
+
+
+def friction_inputs(ctx: Context) -> dict:
+    """The keyword arguments of :func:`bearinglab.friction.bearing_friction` that the
+    report's inputs give: the designation (series, seals) and the lubricant as it was
+    given (a lubricant, read at its reference temperature, or a viscosity) -- what the
+    ``friction`` command passes for the same options, so both give the same numbers."""
+    out = {"designation": ctx.designation}
+    if ctx.lubricant is not None:
+        out["lubricant"] = ctx.lubricant
+    elif ctx.viscosity is not None:
+        out["viscosity"] = ctx.viscosity
+    return out
 
 
 def friction(ctx: Context):
     """Friction torque and power loss: seed 003's constant coefficient and the SKF model."""
     c, b = ctx.condition, ctx.bearing
     fa = abs(c.axial_load)
-    constant = bearing_friction(b, c.shaft_speed, c.radial_load, fa, model="constant")
+    inputs = friction_inputs(ctx)
+    constant = bearing_friction(b, c.shaft_speed, c.radial_load, fa, model="constant",
+                                designation=ctx.designation)
     rows = [["constant coefficient (seed 003, M = mu P d_m / 2)",
-             constant.torque * 1e3, constant.power_loss]]
+             constant.torque * _N_MM, constant.power_loss]]
     said, skf = list(constant.warnings), None
-    if ctx.viscosity is None:
+    if len(inputs) == 1:
         said.append("SKF model not run: no lubricant viscosity.")
     else:
         try:
-            skf = bearing_friction(b, c.shaft_speed, c.radial_load, fa, model="skf",
-                                   viscosity=ctx.viscosity)
+            skf = bearing_friction(b, c.shaft_speed, c.radial_load, fa, model="skf", **inputs)
         except Exception as exc:  # noqa: BLE001 - e.g. no SKF constants for this type: keep the other
             said.append(f"SKF model not run: {type(exc).__name__}: {exc}")
     body = [paragraph(f"Friction at {ctx.speed_rpm:g} rpm, F_r = {c.radial_load:g} N, "
                       f"F_a = {c.axial_load:g} N (bearinglab.friction.bearing_friction).")]
+    columns = ["model", label("friction torque", "n_mm"), label("power loss", "w")]
     if skf is not None:
         d = skf.to_dict()
-        rows.append(["SKF four-component model", skf.torque * 1e3, skf.power_loss])
+        rows.append(["SKF four-component model", skf.torque * _N_MM, skf.power_loss])
         said += list(skf.warnings)
-        parts = [[k.replace("_", " "), v * 1e3, 100.0 * v / skf.torque if skf.torque else None]
+        parts = [[k.replace("_", " "), v * _N_MM, 100.0 * v / skf.torque if skf.torque else None]
                  for k, v in skf.components.items()]
-        body.append(table(["model", "friction torque [N mm]", "power loss [W]"], rows,
-                          "Friction torque and power loss"))
-        body.append(paragraph(f"SKF model with the viscosity {d['viscosity_mm2_s']:.4g} mm2/s "
-                              f"({ctx.viscosity_source or 'given'}): viscosity ratio kappa = "
-                              f"{d['viscosity_ratio']:.3g}."))
+        body.append(table(columns, rows, "Friction torque and power loss"))
+        body.append(paragraph(f"SKF model with the viscosity {d['viscosity_mm2_s']:.4g} mm²/s "
+                              f"({d['viscosity_source']}): viscosity ratio kappa = "
+                              f"{d['kappa']:.3g}; lubrication {d['lubrication']} "
+                              f"({d['lubrication_source']})."))
         body.append('<div class="two">' + table(
-            ["SKF component", "torque [N mm]", "share [%]"], parts, "SKF model components")
+            ["SKF component", label("torque", "n_mm"), label("share", "percent")], parts,
+            "SKF model components")
             + figure(skf.plot()[0], "SKF friction torque by component") + "</div>")
     else:
-        body.append(table(["model", "friction torque [N mm]", "power loss [W]"], rows,
-                          "Friction torque and power loss"))
+        body.append(table(columns, rows, "Friction torque and power loss"))
     body.append(notes(said, "Notes"))
     best = skf or constant
-    return "".join(body), [("Friction torque", f"{number(best.torque * 1e3, 3)} N mm"),
+    return "".join(body), [("Friction torque", f"{number(best.torque * _N_MM, 3)} N·mm"),
                            ("Power loss", f"{number(best.power_loss, 3)} W")]
 
 
