@@ -88,6 +88,7 @@ UNITS: dict[str, Unit] = _units(
     ("kg", "kg", 1.0, "mass"),
     ("g", "g", 1e-3, "mass"),
     ("kg_m3", "kg/m³", 1.0, "density"),
+    ("kg_m", "kg·m", 1.0, "unbalance"),
     ("s", "s", 1.0, "time"),
     ("ms", "ms", 1e-3, "time"),
     ("hours", "h", 3600.0, "time (life)"),
@@ -198,7 +199,19 @@ DIMENSIONLESS: dict[str, str] = {
     "faults": "every fault family found", "scores": "map: fault family -> score",
     "defects": "the simulated defects", "location": "outer, inner or ball",
     "stats": "integrator statistics", "steps": "accepted steps",
-    "rejected_steps": "rejected steps",
+    "rejected_steps": "rejected steps", "settle_turns": "cage revolutions of settling",
+    "halves": "the slip model's speed ratios over each half of the record",
+    "difference": "largest difference of the halves' ratios",
+    "tolerance": "largest difference allowed", "agree": "true when the halves agree",
+    "slip_parameters": "the slip model's parameters (SlipParameters)",
+    "traction": "the traction model", "flow_index": "the lubricant's power-law flow index",
+    "oil_fraction": "oil volume fraction of the oil-air mixture",
+    "ball_drag_coefficient": "drag coefficient of a ball (seed 004 eq. 14)",
+    "cage_drag_coefficient": "drag coefficient of the cage (seed 004 eq. 15)",
+    "cage_friction": "ball-cage pocket friction coefficient",
+    "spin_drag": "true when the balls' spin drag is included",
+    "cage_mass_ratio": "cage mass over the balls' mass",
+    "impact_forces": "true when ball-cage impacts are modelled",
     # imperfections and noise
     "imperfections": "form errors", "waviness": "waviness orders", "race": "inner, outer or ball",
     "order": "waviness order (waves round the ring)", "surfaces": "random 3-D surfaces",
@@ -268,3 +281,47 @@ def unit_of(key: str) -> Unit | None:
 def label(text: str, suffix: str) -> str:
     """A table header: ``text [symbol]`` of the unit with that suffix."""
     return f"{text} [{UNITS[suffix].symbol}]"
+
+
+_CONTRACT_PROSE = """# The JSON contract
+
+Every command takes `--json` and then prints one JSON object on stdout and nothing else
+(warnings go into its `warnings` list; progress bars go to stderr and only on a terminal).
+This page is the contract those objects keep; `tests/unit/test_json_contract.py` runs every
+command and checks its output against it, and checks that this page lists every unit and
+every dimensionless key that `bearinglab/units.py` knows. The page is generated from that
+module: `python -m bearinglab.units > docs/json.md`.
+
+## Rules
+
+- **Every key carries its unit** as a suffix from the table below (`speed_rpm`,
+  `radial_load_n`, `stiffness_n_per_um`), or is one of the dimensionless keys listed
+  further down (names, counts, ratios, flags, labels). Suffixes are matched longest first:
+  `_n_per_um` is a stiffness, `_n_m` a moment in newton metres and `_nm` nanometres.
+- **One unit per quantity across commands.** Frequencies are in Hz (`_hz`), speeds in rpm,
+  loads in N, lengths in mm (dimensions) or µm (clearances, displacements, film), stiffness in
+  N/µm, torques in N·mm, stresses in GPa, times in s, levels in dB re 20 µPa.
+- **Members of a unit-suffixed container** carry that unit: `velocity_bands_um_s.low`.
+  Members of a map (`geometry_sources`, `scores`, `sources`, `stats`) are named by data.
+- A matrix in mixed SI units ends in `_si` and has a sibling `<key>_units` that gives the
+  unit of each row (e.g. `stiffness_matrix_si`, `stiffness_matrix_units`).
+- Numbers are finite: a command never prints NaN or infinity (it fails with one line instead);
+  a value that does not apply is `null`.
+- **Fault families** are spelled `outer_race`, `inner_race`, `ball` and `cage` everywhere
+  (keys of `scores`, values of `likely_fault` and `faults`); `null` is "no fault detected".
+"""
+
+
+def contract_markdown() -> str:
+    """docs/json.md: the rules, the unit table and the dimensionless keys."""
+    lines = [_CONTRACT_PROSE.rstrip(), "", "## Units", "",
+             "| suffix | symbol | SI value of one unit | quantity |", "|---|---|---|---|"]
+    for u in sorted(UNITS.values(), key=lambda u: (u.quantity, u.suffix)):
+        lines.append(f"| `_{u.suffix}` | {u.symbol} | {u.factor:g} | {u.quantity} |")
+    lines += ["", "## Dimensionless keys", "", "| key | what it holds |", "|---|---|"]
+    lines += [f"| `{k}` | {DIMENSIONLESS[k]} |" for k in sorted(DIMENSIONLESS)]
+    return "\n".join(lines) + "\n"
+
+
+if __name__ == "__main__":
+    print(contract_markdown(), end="")

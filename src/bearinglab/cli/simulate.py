@@ -10,7 +10,7 @@ import typer
 from rich.markup import escape
 
 from ..diagnosis import analyze_signal
-from ..dynamics import simulate
+from ..dynamics import SlipParameters, simulate
 from ..errors import BearinglabError, InputError
 from ..kinematics import defect_frequencies
 from ..operating import OperatingCondition
@@ -89,7 +89,20 @@ def simulate_command(
             "--sample-rate-hz", help="Sample rate of the signal [Hz].")] = 50000.0,
         settle_s: Annotated[float | None, typer.Option(
             "--settle-s", help="Time simulated and discarded first [s] (default: 0.05 s "
-            "rigid, two cage revolutions slip).", show_default=False)] = None,
+            "rigid; slip: detected, whole cage revolutions, at least 4, until the cage and "
+            "spin ratios change by less than 1e-3).", show_default=False)] = None,
+        cage_friction: Annotated[float | None, typer.Option(
+            "--cage-friction", help="Slip model: ball-cage pocket friction coefficient mu_c "
+            "[-], 0-0.3 (lubricated pockets 0.05-0.2; default 0.1 = seed 004 eq. 11 at pure "
+            "sliding).", show_default=False)] = None,
+        spin_drag: Annotated[bool, typer.Option(
+            "--spin-drag/--no-spin-drag", help="Slip model: add the drag moment of each ball "
+            "spinning in the oil-air mixture (Dennis, Singh & Ingham 1980; not in seed "
+            "004).")] = False,
+        oil_fraction: Annotated[float | None, typer.Option(
+            "--oil-fraction", help="Slip model: volume fraction of oil in the oil-air mixture "
+            "that drags balls and cage [-], 0-1 (default 0.03; Harris & Kotzalas give "
+            "0.01-0.05).", show_default=False)] = None,
         noise_ms2: Annotated[float, typer.Option(
             "--noise-ms2", help="RMS white noise added to the accelerations [m/s^2].")] = 0.0,
         waviness: WavinessOpt = None, ball_size_error_um: BallErrorOpt = None,
@@ -151,12 +164,21 @@ def simulate_command(
     except InputError as exc:
         raise option_error(exc, {"radial_load_n": radial_load_n, "speed_rpm": speed_rpm,
                                  "sample_rate_hz": sample_rate_hz}) from None
+    slip_given = {"cage_friction": cage_friction, "oil_fraction": oil_fraction,
+                  "spin_drag": spin_drag or None}
+    parameters = None
+    if model is Model.slip:
+        parameters = SlipParameters(**{k: v for k, v in slip_given.items() if v is not None})
+    elif any(v is not None for v in slip_given.values()):
+        name = next(k for k, v in slip_given.items() if v is not None).replace("_", "-")
+        raise OptionError(f"--{name}", slip_given[name.replace("-", "_")],
+                          "no value with --model rigid (a slip-model parameter)")
     running = f"simulating ({model.value} model)"
     with progress_bar(simulation_stage(model.value), enabled=not json_output) as update:
         try:
             sim = simulate(bearing, condition, defects, model=model.value, duration=duration_s,
                            sample_rate=sample_rate_hz, settle=settle_s, noise=noise_ms2,
-                           seed=seed, imperfections=imperfections,
+                           seed=seed, imperfections=imperfections, parameters=parameters,
                            progress=lambda f: update(f, running))
         except InputError as exc:
             raise _simulate_error(exc, bearing) from None
@@ -193,6 +215,8 @@ def simulate_command(
            "imperfections": None if imperfections is None else imperfections.to_dict(),
            "seed": seed,
            "output": None if output is None else str(output), "stats": dict(sim.stats),
+           "halves": sim.halves,
+           "slip_parameters": None if parameters is None else parameters.to_dict(),
            "warnings": warnings}
     if json_output:
         _emit_json(out)
@@ -250,6 +274,8 @@ def _simulate_error(exc: InputError, bearing) -> BearinglabError:
     if exc.parameter == "contact_angle":
         return OptionError("--model", "slip", "rigid for this bearing (the slip model is "
                            f"planar: contact angle 0; {name} has {exc.value:g} deg)")
+    if exc.parameter in ("cage_friction", "oil_fraction"):
+        return OptionError("--" + exc.parameter.replace("_", "-"), exc.value, exc.allowed)
     flag = _SIMULATE_FLAGS.get(exc.parameter)
     if flag is None or flag == "--speed-rpm":
         return exc

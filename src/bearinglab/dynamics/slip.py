@@ -195,7 +195,7 @@ class SlipParameters:
 
     def to_dict(self) -> dict:
         """JSON-ready values (SI, units in the keys where they have one)."""
-        units = {"oil_shear_modulus": "_pa", "regularisation_speed": "_m_per_s",
+        units = {"oil_shear_modulus": "_pa", "regularisation_speed": "_m_s",
                  "cage_stiffness": "_n_per_m", "cage_damping": "_n_s_per_m",
                  "pocket_clearance": "_m", "housing_stiffness": "_n_per_m",
                  "housing_damping": "_n_s_per_m", "inner_mass": "_kg", "outer_mass": "_kg",
