@@ -143,9 +143,9 @@ def _speed(frequencies, shaft_speed, speed_range, x, fs, warnings):
             k = found.sub_multiple
             warnings.append(f"the shaft series near {nominal * 30 / math.pi:.6g} rpm is also a "
                             f"series at 1/{k} of it ({60 * found.frequency / k:.6g} rpm): "
-                            f"the lines may be the {k}th harmonics of the real shaft - check "
+                            f"the lines may be harmonic {k} of the real shaft - check "
                             f"the speed and the sample rate (a rate {k} times too low reads "
-                            "every frequency k times too high)")
+                            f"every frequency {k} times too high)")
         elif abs(found.frequency / (nominal / (2 * math.pi)) - 1) > SPEED_WARNING:
             warnings.append(f"the signal shows the shaft at {60 * found.frequency:.6g} rpm, "
                             f"{100 * (found.frequency / (nominal / (2 * math.pi)) - 1):+.1f} % "

@@ -103,15 +103,20 @@ def shaft_frequency(x: np.ndarray, sample_rate: float, low: float, high: float,
     # a series at f also shows at 2f (every other line): prefer the lowest sub-multiple
     # inside the range whose own series is significant (octave errors of pitch search)
     below = None
+    # the sub-series is read off the lines it does not share with the series found
+    own = np.ones(z.size, bool)
+    for m in range(1, int(top / test.fundamental_hz) + 2):
+        i = int(round(m * test.fundamental_hz / resolution))
+        own[max(i - 2, 0):i + 3] = False
     for k in (4, 3, 2):
         sub = test.fundamental_hz / k
-        lower = series_test(z, resolution, 2.0, sub, 0.01, 0.01, harmonics, top)
+        lower = series_test(z, resolution, 2.0, sub, 0.01, 0.01, harmonics, top, valid=own)
         if lower.p_value >= SPEED_ALPHA or sub < 0.5:
             continue
         if sub < low:  # the series found is the k-th harmonic of one below the range
             below = below or k
             continue
-        test = lower
+        test = series_test(z, resolution, 2.0, sub, 0.01, 0.01, harmonics, top)
         found = [ln for ln in test.lines if ln.p_value < SPEED_ALPHA]
         break
     # refine each line by a parabola through its bin and the neighbours (log power)
