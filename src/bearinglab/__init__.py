@@ -5,8 +5,13 @@ functions, ``kinematics.frequency_orders``), model objects (``Material``,
 ``BallBearing``, ``Designation``), analyses (``ball_contacts``,
 ``defect_frequencies``) and interfaces (``bearinglab`` command line).
 
-The names below are imported on first use, so ``import bearinglab`` (and the command
-line's start-up) stays light.
+The main entry points are here, imported on first use, so ``import bearinglab`` (and the
+command line's start-up) stays light:
+
+>>> import bearinglab as bl
+>>> bearing, _ = bl.bearing_from_designation("6205-2RS")
+>>> round(bl.defect_frequencies(bearing, speed_rpm=1797).hz("bpfo"), 2)
+107.36
 """
 
 from importlib import import_module
@@ -19,7 +24,21 @@ _EXPORTS = {
     "DesignationError": "errors", "InputError": "errors",
     "BallBearing": "geometry", "Source": "geometry",
     "BEARING_STEEL": "materials", "SILICON_NITRIDE": "materials", "Material": "materials",
+    "OperatingCondition": "operating",
+    "rpm_to_rad_s": "units", "rad_s_to_rpm": "units",
+    # the main analyses
+    "bearing_from_designation": "catalog", "parse_designation": "designation",
+    "defect_frequencies": "kinematics", "ball_contacts": "contact.ball_race",
+    "solve_load_distribution": "quasistatic", "stiffness_map": "quasistatic.study",
+    "ring_modes": "rings", "Defect": "dynamics", "simulate": "dynamics",
+    "analyze_signal": "diagnosis", "read_signal": "signal",
+    "Waviness": "imperfections", "BallSizeErrors": "imperfections",
+    "Imperfections": "imperfections", "bearing_noise": "noise",
+    "bearing_friction": "friction", "load_ratings": "life", "rating_life": "life",
+    "run_validation": "validation.run", "build_report": "report",
 }
+#: names that differ in their module
+_ALIASES = {"parse_designation": "parse"}
 
 __all__ = sorted(_EXPORTS)
 
@@ -27,7 +46,7 @@ __all__ = sorted(_EXPORTS)
 def __getattr__(name: str):
     if name not in _EXPORTS:
         raise AttributeError(f"module 'bearinglab' has no attribute {name!r}")
-    value = getattr(import_module(f".{_EXPORTS[name]}", __name__), name)
+    value = getattr(import_module(f".{_EXPORTS[name]}", __name__), _ALIASES.get(name, name))
     globals()[name] = value
     return value
 

@@ -138,8 +138,8 @@ class DefectFrequencies:
                              for n in FREQUENCY_NAMES])
 
 
-def defect_frequencies(bearing: BallBearing, shaft_speed: float, *,
-                       outer_rotating: bool = False,
+def defect_frequencies(bearing: BallBearing, shaft_speed: float | None = None, *,
+                       speed_rpm: float | None = None, outer_rotating: bool = False,
                        contact_angle: float | None = None) -> DefectFrequencies:
     """Kinematic defect frequencies of ``bearing`` with one ring turning at ``shaft_speed``.
 
@@ -148,7 +148,9 @@ def defect_frequencies(bearing: BallBearing, shaft_speed: float, *,
     bearing : BallBearing
         Geometry (Z, D_w, d_m, nominal contact angle).
     shaft_speed : float
-        Speed of the rotating ring [rad/s], >= 0.
+        Speed of the rotating ring [rad/s], >= 0; or give ``speed_rpm`` instead.
+    speed_rpm : float, optional
+        The same speed in rpm (keyword only, so that rpm cannot pass for rad/s) [rpm].
     outer_rotating : bool
         True if the outer ring turns and the inner ring is fixed.
     contact_angle : float, optional
@@ -159,7 +161,17 @@ def defect_frequencies(bearing: BallBearing, shaft_speed: float, *,
     >>> f = defect_frequencies(er16k, 1750 * 2 * math.pi / 60)
     >>> round(f.hz("bpfo"), 2), round(f.hz("ball_defect"), 2)   # seed 003: 104.19, 135.5
     (104.19, 135.45)
+    >>> round(defect_frequencies(er16k, speed_rpm=1750).hz("bpfo"), 2)
+    104.19
     """
+    if (shaft_speed is None) == (speed_rpm is None):
+        raise InputError("shaft_speed", shaft_speed, "a speed [rad/s], or speed_rpm= [rpm] "
+                         "instead (exactly one of them)")
+    if speed_rpm is not None:
+        if not (isinstance(speed_rpm, (int, float, np.floating)) and math.isfinite(speed_rpm)
+                and speed_rpm >= 0):
+            raise InputError("speed_rpm", speed_rpm, "a speed >= 0 [rpm]")
+        shaft_speed = speed_rpm * math.pi / 30.0
     if not (isinstance(shaft_speed, (int, float, np.floating)) and math.isfinite(shaft_speed)
             and shaft_speed >= 0):
         raise InputError("shaft_speed", shaft_speed, "a speed >= 0 [rad/s]")

@@ -82,6 +82,25 @@ class OperatingCondition:
                          self.radial_load * math.sin(self.radial_load_angle),
                          self.axial_load, m[0], m[1]])
 
+    @classmethod
+    def at_rpm(cls, speed_rpm: float, **loads) -> OperatingCondition:
+        """The condition with the shaft speed given in rpm (every other field as for the
+        class, SI), so that a speed in rpm cannot pass for rad/s.
+
+        >>> round(OperatingCondition.at_rpm(1797, radial_load=500.0).shaft_speed, 4)
+        188.1814
+        """
+        if "shaft_speed" in loads:
+            raise InputError("shaft_speed", loads["shaft_speed"],
+                             "not given with speed_rpm (one speed, in rpm)")
+        return cls(shaft_speed=_finite("speed_rpm", speed_rpm, "a speed >= 0 [rpm]") * math.pi
+                   / 30.0, **loads)
+
+    @property
+    def speed_rpm(self) -> float:
+        """The shaft speed [rpm]."""
+        return self.shaft_speed * 30.0 / math.pi
+
     @property
     def tilt_free(self) -> bool:
         """True when the inner ring's tilt is solved for (a moment is given)."""
