@@ -350,7 +350,9 @@ def _walk_struct(name: str, value, channels: dict, scalars: dict, other: dict) -
 def _read_mat(path: Path, sample_rate):
     try:
         loaded = scipy.io.loadmat(path)
-    except NotImplementedError:  # MATLAB v7.3 files are HDF5
+    except (NotImplementedError, ValueError):  # MATLAB v7.3 files are HDF5
+        if not _is_hdf5(path):
+            raise
         loaded = None
     if loaded is None:
         variables, nested, other = _read_mat73(path)
@@ -395,6 +397,14 @@ def _read_mat(path: Path, sample_rate):
         raise InputError("path", str(path), "a .mat file with numeric vector variables "
                          "or struct fields", hint=f"found {sorted(other) or 'none'}")
     return channels, rate, meta
+
+
+def _is_hdf5(path: Path) -> bool:
+    """Whether the file holds the HDF5 signature at 0 or after a user block (MATLAB v7.3
+    files start with a 512-byte MATLAB header)."""
+    with open(path, "rb") as fh:
+        head = fh.read(2048 + 8)
+    return any(head[o:o + 8] == b"\x89HDF\r\n\x1a\n" for o in (0, 512, 1024, 2048))
 
 
 def _read_mat73(path: Path):
