@@ -127,7 +127,7 @@ class DefectFrequencies:
         """Stem chart of the frequencies and harmonics; returns (fig, ax)."""
         from .plotting import frequencies_figure
 
-        return frequencies_figure(self, harmonics, ax)
+        return frequencies_figure(self, ("shaft", *FREQUENCY_NAMES), harmonics, ax)
 
     def to_pandas(self):
         """Table: frequency, long name, order, Hz."""

@@ -41,27 +41,25 @@ def save_figure(fig, path: str | Path) -> Path:
     return path
 
 
-def ball_contacts_figure(result, axes=None):
-    """Max pressure and approach against ball load (up to the result's load), and the two
-    contact ellipses at that load drawn to scale.
+def ball_contacts_figure(curve, final, axes=None):
+    """Max pressure and approach against ball load, and the two contact ellipses at the
+    largest load drawn to scale.
 
     Parameters
     ----------
-    result : bearinglab.contact.ball_race.BallContacts
-        A contact result (scalar or array load; the largest load is used).
+    curve : bearinglab.contact.ball_race.BallContacts
+        Contacts over a range of loads (the curves).
+    final : bearinglab.contact.ball_race.BallContacts
+        Contacts at the one load whose ellipses are drawn.
     axes : sequence of two matplotlib Axes, optional
         Where to draw; a new figure otherwise.
     """
-    from .contact.ball_race import ball_contacts
-
     plt = _pyplot()
     if axes is None:
         fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
     else:
         fig = axes[0].figure
-    q_max = float(np.max(result.load))
-    loads = np.linspace(0.0, q_max, 121)
-    curve = ball_contacts(result.bearing, loads, result.contact_angle, result.method)
+    loads, q_max = np.asarray(curve.load), float(np.max(final.load))
     ax, ax2 = axes[0], axes[0].twinx()
     for race, c, style in (("inner", curve.inner, "-"), ("outer", curve.outer, "--")):
         ax.plot(loads, c.max_pressure / 1e9, "C0" + style, label=f"p_max {race}")
@@ -71,9 +69,8 @@ def ball_contacts_figure(result, axes=None):
     ax2.set_ylabel("approach [um]", color="C1")
     lines = ax.get_lines() + ax2.get_lines()
     ax.legend(lines, [line.get_label() for line in lines], loc="upper left", fontsize=8)
-    ax.set_title(f"{result.bearing.name or 'bearing'}: Hertz contact vs load")
+    ax.set_title(f"{curve.bearing.name or 'bearing'}: Hertz contact vs load")
     t = np.linspace(0, 2 * np.pi, 200)
-    final = ball_contacts(result.bearing, q_max, result.contact_angle, result.method)
     for race, c, colour in (("inner", final.inner, "C3"), ("outer", final.outer, "C2")):
         a, b = float(c.semi_major) * 1e3, float(c.semi_minor) * 1e3
         axes[1].fill(b * np.cos(t), a * np.sin(t), color=colour, alpha=0.25)
@@ -89,26 +86,25 @@ def ball_contacts_figure(result, axes=None):
     return fig, axes
 
 
-def frequencies_figure(freqs, harmonics: int = 3, ax=None):
+def frequencies_figure(freqs, names, harmonics: int = 3, ax=None):
     """Stem chart of the defect frequencies and their harmonics, for reading spectra.
 
     Parameters
     ----------
     freqs : bearinglab.kinematics.DefectFrequencies
         The frequencies.
+    names : sequence of str
+        Which of them to draw (``freqs.hz(name)``), e.g. shaft, ftf, bpfo [-].
     harmonics : int
         How many harmonics of each to draw (>= 1).
     ax : matplotlib Axes, optional
         Where to draw.
     """
-    from .kinematics import FREQUENCY_NAMES
-
     plt = _pyplot()
     if ax is None:
         fig, ax = plt.subplots(figsize=(10, 4))
     else:
         fig = ax.figure
-    names = ("shaft",) + FREQUENCY_NAMES
     for i, name in enumerate(names):
         base = freqs.hz(name)
         h = np.arange(1, harmonics + 1) * base

@@ -113,7 +113,11 @@ class BallContacts:
         """Pressure and approach against load, and the contact ellipses; returns (fig, axes)."""
         from ..plotting import ball_contacts_figure
 
-        return ball_contacts_figure(self, axes)
+        q_max = float(np.max(self.load))
+        curve = ball_contacts(self.bearing, np.linspace(0.0, q_max, 121), self.contact_angle,
+                              self.method)
+        final = ball_contacts(self.bearing, q_max, self.contact_angle, self.method)
+        return ball_contacts_figure(curve, final, axes)
 
     def to_pandas(self):
         """One row per (contact, load), engineering units."""
