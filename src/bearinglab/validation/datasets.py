@@ -16,7 +16,7 @@ from __future__ import annotations
 import math
 
 from ..kinematics import frequency_orders
-from . import Case
+from .case import Case
 
 INCH = 25.4e-3
 

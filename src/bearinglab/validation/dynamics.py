@@ -15,7 +15,7 @@ from functools import cache
 
 from ..geometry import BallBearing
 from ..operating import OperatingCondition
-from . import Case
+from .case import Case
 from .seed004 import SKF6205  # noqa: F401  (the seed-004 bearing, used by the tests)
 
 ER16K = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=38.51e-3,

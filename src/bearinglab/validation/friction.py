@@ -13,7 +13,7 @@ from __future__ import annotations
 from functools import partial
 
 from ..friction import friction_coefficient
-from . import Case
+from .case import Case
 
 SOURCE = "seed 003 (bearing friction, Table III)"
 #: (row as printed in the seed, friction type, value as printed)

@@ -30,7 +30,7 @@ from functools import lru_cache
 
 from ..geometry import BallBearing
 from ..operating import OperatingCondition
-from . import Case
+from .case import Case
 
 SOURCE = "Harris 218 at high speed (Jones/Harris reference solution, issue 14)"
 

@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import math
 
-from . import Case
+from .case import Case
 
 
 def _not_computed() -> float:

@@ -33,7 +33,7 @@ from functools import cache
 
 from ..catalog import bearing_from_designation
 from ..life import load_ratings
-from . import Case
+from .case import Case
 
 SKF_2018 = "SKF Bearings and mounted products 2018 (Explorer)"
 KT_6205 = "ktbearing.com 6205 (standard, non-Explorer)"

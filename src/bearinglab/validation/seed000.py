@@ -43,7 +43,7 @@ from functools import partial
 
 from ..catalog import bearing_from_designation
 from ..rings import free_ring_frequency, ring_modes
-from . import Case
+from .case import Case
 
 KHZ = 1e3
 SOURCE_106 = "seed 000 (Balmont & Varlamov 1986, bearing 106)"

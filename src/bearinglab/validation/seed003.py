@@ -12,7 +12,7 @@ import math
 
 from ..geometry import BallBearing
 from ..kinematics import defect_frequencies
-from . import Case
+from .case import Case
 
 SOURCE = "seed 003 (ER-16K, eqs. 22-23)"
 ER16K = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=38.51e-3, name="ER-16K")

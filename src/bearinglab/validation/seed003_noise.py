@@ -16,7 +16,7 @@ from __future__ import annotations
 import functools
 import math
 
-from . import Case
+from .case import Case
 
 PUBLISHED_MEAN_SPL_DB = 29.832           # fig. 14
 BASE = {"rpm": 720.0, "load": 50.0, "amplitude": 0.2e-6, "order": 7, "band": 2e-6}

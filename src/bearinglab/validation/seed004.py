@@ -27,7 +27,7 @@ from functools import cache
 from ..geometry import BallBearing
 from ..kinematics import defect_frequencies
 from ..operating import OperatingCondition
-from . import Case
+from .case import Case
 
 # d 25 and D 52 mm from the seed's table 1; the width 15 mm is ISO 15's for a 6205
 SKF6205 = BallBearing(ball_count=9, ball_diameter=8e-3, pitch_diameter=39e-3, bore=25e-3,
