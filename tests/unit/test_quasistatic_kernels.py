@@ -10,6 +10,7 @@ import sys
 import numpy as np
 import pytest
 
+from bearinglab.errors import InputError
 from bearinglab.geometry import BallBearing
 from bearinglab.operating import OperatingCondition
 from bearinglab.quasistatic import _ring, solve_load_distribution, solver
@@ -109,6 +110,7 @@ def test_lu_solve_matches_numpy():
 
 _CACHE_PROBE = """
 import json, math
+from bearinglab.errors import InputError
 from bearinglab.geometry import BallBearing
 from bearinglab.operating import OperatingCondition
 from bearinglab.quasistatic import _compiled, _ring, solve_load_distribution
@@ -159,3 +161,20 @@ def test_stiffness_map_lines_match_the_python_reference(monkeypatch):
         np.testing.assert_allclose(fast[column][ok], slow[column][ok], rtol=1e-8, atol=atol)
     for column in ("radial_stiffness_n_per_um", "axial_stiffness_n_per_um"):
         np.testing.assert_allclose(fast[column][ok], slow[column][ok], rtol=1e-6, atol=1e-6)
+
+
+@pytest.mark.parametrize("control", ["inner", "hybrid"])
+def test_stiffness_map_passes_gyroscopic_and_race_control(control):
+    from bearinglab.quasistatic.study import stiffness_map
+
+    b = BallBearing(**SMALL, diametral_clearance=15e-6, contact_angle=math.radians(15))
+    table = stiffness_map(b, [100.0, 600.0, 1200.0], [300.0], [15000.0], workers=1,
+                          gyroscopic=True, race_control=control)
+    assert (table.status == "ok").all()
+    for fr, s_r in zip(table.radial_load_n, table.radial_displacement_um, strict=True):
+        r = solve_load_distribution(b, OperatingCondition(
+            radial_load=fr, axial_load=300.0, shaft_speed=15000 * math.pi / 30,
+            radial_load_angle=-0.5 * math.pi), gyroscopic=True, race_control=control)
+        assert s_r == pytest.approx(r.radial_displacement * 1e6, abs=1e-6)
+    with pytest.raises(InputError, match="race_control"):
+        stiffness_map(b, [100.0], [0.0], [0.0], race_control="cage")

@@ -31,7 +31,7 @@ COLUMNS = ("radial_load_n", "axial_load_n", "speed_rpm", "radial_displacement_um
 
 
 def _line(args) -> list[dict]:
-    bearing, radial_loads, axial_load, rpm, angle = args
+    bearing, radial_loads, axial_load, rpm, angle, options = args
     loads = np.sort(np.asarray(radial_loads, float))
     rows, state = [], None            # state: (ring displacement, ball centres) to go on from
     i = 0
@@ -43,9 +43,10 @@ def _line(args) -> list[dict]:
             state = None
             i += 1
             continue
-        if state is not None and solver.COMPILED_RING:
+        if state is not None and solver.COMPILED_RING and options["race_control"] != "hybrid":
             # the rest of the line in one compiled call, each case from the previous one
-            done, state = _batch(bearing, loads[i:], axial_load, rpm, angle, state, rows)
+            done, state = _batch(bearing, loads[i:], axial_load, rpm, angle, state, rows,
+                                 options)
             i += done
             if i >= len(loads):
                 break
@@ -57,7 +58,7 @@ def _line(args) -> list[dict]:
                                        shaft_speed=rpm * math.pi / 30)
         try:   # a cold start, or the case the batch stopped at (with the load continuation)
             r = solve_load_distribution(bearing, condition,
-                                        initial=None if state is None else state[0])
+                                        initial=None if state is None else state[0], **options)
         except ConvergenceError as exc:
             rows.append({**row, "status": f"not converged: {exc}"})
             state = None
@@ -73,13 +74,13 @@ def _line(args) -> list[dict]:
     return rows
 
 
-def _batch(bearing, radial_loads, axial_load, rpm, angle, state, rows):
+def _batch(bearing, radial_loads, axial_load, rpm, angle, state, rows, options):
     """Solve radial loads (all > 0) from ``state`` in one compiled call; append their rows
     and return how many were solved and the state to go on from. The case it stops at is
     left to the full solver (which has the load and speed continuations)."""
     condition = OperatingCondition(radial_load=float(radial_loads[0]), radial_load_angle=angle,
                                    axial_load=float(axial_load), shaft_speed=rpm * math.pi / 30)
-    problem = _Problem(bearing, condition, angle, None, None)
+    problem = _Problem(bearing, condition, angle, None, None, **options)
     e = np.array([math.cos(angle), math.sin(angle)])
     vectors = np.zeros((len(radial_loads), 5))
     vectors[:, 0], vectors[:, 1] = radial_loads * e[0], radial_loads * e[1]
@@ -100,7 +101,8 @@ def _batch(bearing, radial_loads, axial_load, rpm, angle, state, rows):
 
 def stiffness_map(bearing: BallBearing, radial_loads, axial_loads, speeds_rpm, *,
                   radial_load_angle: float = -0.5 * math.pi, workers: int | None = None,
-                  progress: Callable[[int], None] | None = None) -> pd.DataFrame:
+                  progress: Callable[[int], None] | None = None, gyroscopic: bool = False,
+                  race_control: str = "outer") -> pd.DataFrame:
     """C_r, C_a and displacements over every (radial load, axial load, speed).
 
     Parameters
@@ -117,6 +119,8 @@ def stiffness_map(bearing: BallBearing, radial_loads, axial_loads, speeds_rpm, *
         Worker processes; 1 solves in this process; default: the machine's cores.
     progress : callable, optional
         Called with the number of cases just finished.
+    gyroscopic, race_control :
+        As for :func:`bearinglab.quasistatic.solve_load_distribution` [-].
 
     Returns
     -------
@@ -126,7 +130,11 @@ def stiffness_map(bearing: BallBearing, radial_loads, axial_loads, speeds_rpm, *
     radial = np.asarray(radial_loads, float)
     if radial.ndim != 1 or not np.all(np.isfinite(radial)) or np.any(radial < 0):
         raise InputError("radial_loads", radial_loads, "finite loads >= 0 [N]")
-    tasks = [(bearing, radial, float(fa), float(rpm), radial_load_angle)
+    if race_control not in solver.RACE_CONTROLS:
+        raise InputError("race_control", race_control,
+                         " or ".join(map(repr, solver.RACE_CONTROLS)))
+    options = {"gyroscopic": bool(gyroscopic), "race_control": race_control}
+    tasks = [(bearing, radial, float(fa), float(rpm), radial_load_angle, options)
              for rpm in speeds_rpm for fa in axial_loads]
     workers = workers or os.cpu_count() or 1
     rows = []
