@@ -533,3 +533,26 @@ def test_bearings_without_a_ball_model():
     assert own.bearing_type == "thrust_roller" and own.pitch_diameter_source == "given"
     with pytest.raises(InputError, match="pitch_diameter"):
         FrictionBearing.from_dimensions(0.025, 0.052, pitch_diameter=0.06)
+
+
+@pytest.mark.parametrize("args", [
+    ["6205", "--speed-rpm", "3000", "--radial-load-n", "1000"],
+    ["6205-2RS", "--speed-rpm", "3000", "--radial-load-n", "1000", "--axial-load-n", "500",
+     "--model", "skf", "--seal-constants", "0.02,2,2.25", "--seal-diameter-mm", "31.3",
+     "--temperature-c", "70"],
+    ["7206", "--speed-rpm", "3000", "--radial-load-n", "1000", "--model", "skf",
+     "--skf-constants", "5e-7,2,1e-2,0.7,2e-12,2e-12", "--viscosity-mm2-s", "12.5"],
+])
+def test_cli_tables_fit_80_columns_uncut(capsys, monkeypatch, args):
+    from rich.console import Console
+
+    from bearinglab.cli import _app
+
+    monkeypatch.setattr(_app._LazyConsole, "_console", Console(width=80))
+    assert main(["friction", *args]) == 0
+    out = capsys.readouterr().out
+    assert "…" not in out and max(len(line) for line in out.splitlines()) <= 80
+    d = run_json(capsys, *args)
+    # every number of the table is printed whole (4 significant digits)
+    for key in ("friction_torque_n_mm", "power_loss_w"):
+        assert f"{d[key]:.4g}" in out

@@ -66,12 +66,12 @@ def test_f0_table_is_the_4200_mpa_hertz_contact():
     # derivation gives 15.93, the kept value is 15.9.
     e_prime = 207e9 / (1 - 0.3**2)
     d_w = 1e-3                                     # 1 mm ball: f_0 = Q / (5 D_w^2)
-    for gamma, f0 in zip(T.F0_GAMMA, T.F0_RADIAL):
+    for gamma, f0 in zip(T.F0_GAMMA, T.F0_RADIAL, strict=True):
         inner = _hertz_load_at(4.2e9, d_w * (1 - gamma) / 2, 0.52 * d_w / 0.04, e_prime)
         outer = _hertz_load_at(4.2e9, d_w * (1 + gamma) / 2, 0.53 * d_w / 0.06, e_prime)
         assert min(inner, outer) / 5.0 == pytest.approx(f0, abs=0.06), gamma
     # thrust washers, groove radius 0.54 D_w: C_0a = Z Q (all balls carry the load)
-    for gamma, f0 in zip(T.F0_THRUST_GAMMA, T.F0_THRUST):
+    for gamma, f0 in zip(T.F0_THRUST_GAMMA, T.F0_THRUST, strict=True):
         q = _hertz_load_at(4.2e9, d_w * (1 - gamma) / 2, 0.54 * d_w / 0.08, e_prime)
         assert q == pytest.approx(f0, abs=0.06), gamma
 
@@ -97,7 +97,7 @@ def test_fc_table_follows_lundberg_palmgren_shape():
 
 def test_a1_table_is_the_weibull_form():
     # a_1 = 0.95 (ln(100/R) / ln(100/90))^(2/3) + 0.05, rounded as ISO 281 prints it
-    for r, a1 in zip(T.A1_RELIABILITY, T.A1_FACTOR):
+    for r, a1 in zip(T.A1_RELIABILITY, T.A1_FACTOR, strict=True):
         exact = 0.95 * (math.log(100 / r) / math.log(100 / 90)) ** (2 / 3) + 0.05
         digits = 2 if a1 >= 0.1 else 3
         assert round(exact, digits) == pytest.approx(a1, abs=1e-12), r
@@ -511,3 +511,100 @@ def test_cli_life_errors_are_one_line(capsys, args, words):
     assert main(["life", *args]) == 2
     err = capsys.readouterr().err
     assert err.startswith("error:") and words in err and err.count("\n") == 1
+
+
+# ------------------------------------------------------------------ given ratings (issue 14)
+def test_given_ratings_serve_both_methods_and_say_so():
+    b, _ = bearing_from_designation("6205")
+    cond = OperatingCondition(radial_load=2000.0, shaft_speed=1500 * RPM)
+    computed = {m: rating_life(b, cond, method=m, viscosity=30e-6) for m in T_METHODS}
+    for method, base in computed.items():
+        r = rating_life(b, cond, method=method, viscosity=30e-6, dynamic_load_rating=14800.0,
+                        static_load_rating=7800.0)
+        c_ratio = 14800.0 / base.ratings.dynamic
+        # ISO 281: (C/P)^3; ISO/TS 16281: Q_ci, Q_ce scale with C, so L10r with C^(10/3 0.9)
+        assert r.l10 == pytest.approx(base.l10 * c_ratio ** 3, rel=1e-12)
+        assert r.static_safety_factor == pytest.approx(7800.0 / r.static_equivalent_load)
+        assert r.ratings.fatigue_limit == pytest.approx(7800.0 / 22)
+        d = r.to_dict()
+        assert d["dynamic_rating_n"] == 14800.0 and d["static_rating_n"] == 7800.0
+        assert d["dynamic_rating_source"].startswith("given") and "14027 N" in \
+            d["dynamic_rating_source"]
+        assert d["static_rating_source"].startswith("given")
+        assert base.to_dict()["dynamic_rating_source"].startswith("ISO 281")
+    one = rating_life(b, cond, static_load_rating=7800.0)
+    assert one.ratings.dynamic == computed["iso281"].ratings.dynamic
+    assert one.to_dict()["dynamic_rating_source"].startswith("ISO 281")
+
+
+T_METHODS = ("iso281", "iso16281")
+
+
+def test_both_ratings_given_rate_a_geometry_iso_cannot():
+    big_balls = deep_groove(ball_count=6, ball_diameter=12e-3, pitch_diameter=25e-3)
+    cond = OperatingCondition(radial_load=1000.0, shaft_speed=1000 * RPM)
+    with pytest.raises(InputError, match="gamma"):
+        rating_life(big_balls, cond)
+    with pytest.raises(InputError, match="gamma"):
+        rating_life(big_balls, cond, dynamic_load_rating=20000.0)
+    r = rating_life(big_balls, cond, dynamic_load_rating=20000.0, static_load_rating=10000.0)
+    assert r.l10 == pytest.approx(20.0 ** 3) and r.ratings.fc is None
+    assert r.to_dict()["dynamic_rating_source"] == "given"
+    with pytest.raises(InputError, match="static_load_rating"):
+        rating_life(deep_groove(), cond, static_load_rating=-1.0)
+
+
+def test_cli_life_given_ratings(capsys):
+    args = ("6205", "--speed-rpm", "1500", "--radial-load-n", "2000")
+    base = run_json(capsys, *args, "--method", "iso16281")
+    d = run_json(capsys, *args, "--method", "iso16281", "--dynamic-load-rating-kn", "14.8")
+    assert d["dynamic_rating_n"] == 14800.0 and d["dynamic_rating_source"].startswith("given")
+    assert d["static_rating_source"].startswith("ISO 76")
+    assert d["l10_million_rev"] == pytest.approx(
+        base["l10_million_rev"] * (14800.0 / base["dynamic_rating_n"]) ** 3, rel=1e-9)
+    assert main(["life", *args, "--static-load-rating-kn", "7.8"]) == 0
+    text = capsys.readouterr().out
+    assert "C0: given (ISO 76:2006" in text and "C: ISO 281:2007" in text
+
+
+@pytest.mark.parametrize("args, words", [
+    (["--dynamic-load-rating-kn", "0"],
+     "--dynamic-load-rating-kn = 0 is not allowed: expected a rating in (0, 100000] kN"),
+    (["--static-load-rating-kn", "-7.8"],
+     "--static-load-rating-kn = -7.8 is not allowed: expected a rating in (0, 100000] kN"),
+    (["--reliability-percent", "50"],
+     "--reliability-percent = 50 is not allowed: expected a reliability in [90, 99.95] %"),
+    (["--misalignment-mrad", "30", "--method", "iso16281"],
+     "--misalignment-mrad = 30 is not allowed: expected a tilt in [-20, 20] mrad"),
+    (["--viscosity-mm2-s", "-5"],
+     "--viscosity-mm2-s = -5 is not allowed: expected a viscosity in (0, 1e+06] mm²/s"),
+    (["--viscosity-mm2-s", "0.1"],
+     "--viscosity-mm2-s = 0.1 is not allowed: expected a viscosity of at least {nu_min} mm²/s"),
+    (["--contamination", "mud"],
+     "--contamination = 'mud' is not allowed: expected a number in [0, 1] or one of extreme"),
+    (["--contamination", "1.5"], "--contamination = '1.5' is not allowed"),
+])
+def test_cli_life_errors_name_option_value_and_range(capsys, args, words):
+    assert main(["life", "6205", "--speed-rpm", "3000", "--radial-load-n", "1000", *args]) == 2
+    err = capsys.readouterr().err
+    # kappa = nu/nu_1 >= 0.1, nu_1 of ISO 281 at this speed and pitch diameter
+    b, _ = bearing_from_designation("6205")
+    nu_min = 0.1 * rated_viscosity(3000 * RPM, b.pitch_diameter) * 1e6
+    assert words.format(nu_min=f"{nu_min:.3g}") in err and err.count("\n") == 1
+
+
+def test_cli_life_table_fits_80_columns_uncut(capsys, monkeypatch):
+    from rich.console import Console
+
+    from bearinglab.cli import _app
+
+    monkeypatch.setattr(_app._LazyConsole, "_console", Console(width=80))
+    args = ["life", "6205", "--speed-rpm", "3000", "--radial-load-n", "1000", "--method",
+            "iso16281", "--dynamic-load-rating-kn", "14.8", "--viscosity-mm2-s", "20",
+            "--reliability-percent", "99.95"]
+    assert main(args) == 0
+    out = capsys.readouterr().out
+    assert "…" not in out and max(len(line) for line in out.splitlines()) <= 80
+    assert "[kN]" in out and "[10⁶ rev]" in out and "[h]" in out
+    d = run_json(capsys, *args[1:])
+    assert f"{d['l10_hours']:.0f}" in out and f"{d['a_iso']:.4g}" in out

@@ -1,5 +1,6 @@
 """The ``life`` command: load ratings, equivalent loads and rating life (ISO 281:2007,
-ISO 76:2006, or the ISO/TS 16281 reference life from the load distribution)."""
+ISO 76:2006, or the ISO/TS 16281 reference life from the load distribution). Parses the
+options and calls :func:`bearinglab.life.rating_life` once."""
 
 import math
 from enum import Enum
@@ -10,9 +11,7 @@ import typer
 from rich.markup import escape
 
 from ..errors import InputError
-from ..life import rating_life
-from ..life.tables import CONTAMINATION_ALIASES, CONTAMINATION_LEVELS
-from ..operating import OperatingCondition
+from ..units import UNITS, label, unit_of
 from ._app import command_app, console
 from ._inputs import (
     DesignationArg,
@@ -33,7 +32,14 @@ app = command_app()
 PlotOpt = Annotated[Path | None, typer.Option(
     "--plot", help="Also draw life against load to this .png, .svg or .pdf file.",
     show_default=False)]
-LEVELS = ", ".join(list(CONTAMINATION_ALIASES) + list(CONTAMINATION_LEVELS))
+#: Library parameter -> the option that holds it.
+_FLAGS = {"shaft_speed": "--speed-rpm", "radial_load": "--radial-load-n",
+          "axial_load": "--axial-load-n", "reliability_percent": "--reliability-percent",
+          "viscosity": "--viscosity-mm2-s", "contamination": "--contamination",
+          "dynamic_load_rating": "--dynamic-load-rating-kn",
+          "static_load_rating": "--static-load-rating-kn"}
+#: Largest rating accepted [kN].
+MAX_RATING_KN = 1e5
 
 
 class LifeMethod(str, Enum):
@@ -41,34 +47,29 @@ class LifeMethod(str, Enum):
     iso16281 = "iso16281"
 
 
+def _in_range(flag: str, value: float | None, low: float, high: float, what: str,
+              low_open: bool = False) -> float | None:
+    """An option's value checked against its range, in the option's unit (its suffix)."""
+    if value is None:
+        return None
+    if not (math.isfinite(value) and (low < value if low_open else low <= value)
+            and value <= high):
+        unit = unit_of(flag)
+        symbol = f" {unit.symbol}" if unit is not None else ""
+        raise OptionError(flag, value, f"{what} in {'(' if low_open else '['}{low:g}, "
+                                       f"{high:g}]{symbol}")
+    return float(value)
+
+
 def _contamination(text: str | None):
+    """--contamination as a number when it reads as one, else the level's name (the library
+    checks both)."""
     if text is None:
         return None
     try:
-        value = float(text)
+        return float(text)
     except ValueError:
-        key = text.strip().lower().replace("_", "-").replace(" ", "-")
-        if CONTAMINATION_ALIASES.get(key, key) not in CONTAMINATION_LEVELS:
-            raise OptionError("--contamination", text, f"a number in [0, 1] or one of {LEVELS}"
-                              ) from None
         return text
-    if not (math.isfinite(value) and 0.0 <= value <= 1.0):
-        raise OptionError("--contamination", text, f"a number in [0, 1] or one of {LEVELS}")
-    return value
-
-
-def _check(speed_rpm, radial, axial, reliability, viscosity, misalignment, method):
-    speed_rad_s(speed_rpm)
-    check_loads(radial, axial, unloaded="an unloaded bearing has no rating life")
-    if not (math.isfinite(reliability) and 90 <= reliability <= 99.95):
-        raise OptionError("--reliability-percent", reliability, "a reliability in [90, 99.95] %")
-    if viscosity is not None and not (math.isfinite(viscosity) and 0 < viscosity <= 1e6):
-        raise OptionError("--viscosity-mm2-s", viscosity, "a viscosity in (0, 1e6] mm^2/s")
-    if not (math.isfinite(misalignment) and abs(misalignment) <= 20):
-        raise OptionError("--misalignment-mrad", misalignment, "a tilt within +-20 mrad")
-    if misalignment and method is not LifeMethod.iso16281:
-        raise OptionError("--misalignment-mrad", misalignment, "0 with --method iso281",
-                          "ISO 281 has no misalignment; use --method iso16281")
 
 
 @app.command("life")
@@ -104,48 +105,104 @@ def life_command(
         ep_additives: Annotated[bool, typer.Option(
             "--ep-additives", help="The lubricant has proven EP additives (ISO 281 rule for "
             "kappa < 1).")] = False,
+        dynamic_load_rating_kn: Annotated[float | None, typer.Option(
+            "--dynamic-load-rating-kn", help="Basic dynamic load rating C [kN], e.g. the "
+            "maker's (default: ISO 281 from the geometry); used by both methods.",
+            show_default=False)] = None,
+        static_load_rating_kn: Annotated[float | None, typer.Option(
+            "--static-load-rating-kn", help="Basic static load rating C0 [kN] (default: "
+            "ISO 76 from the geometry); sets s0 and Cu.", show_default=False)] = None,
         json_output: JsonOpt = False, plot: PlotOpt = None, *, geometry):
     """Load ratings C, C0, Cu, equivalent loads, basic and modified rating life."""
-    _check(speed_rpm, radial_load_n, axial_load_n, reliability_percent, viscosity_mm2_s,
-           misalignment_mrad, method)
-    e_c = _contamination(contamination)
+    from ..life import ViscosityTooLow, rating_life
+    from ..operating import OperatingCondition
+
+    omega = speed_rad_s(speed_rpm)
+    check_loads(radial_load_n, axial_load_n, unloaded="an unloaded bearing has no rating life")
+    _in_range("--reliability-percent", reliability_percent, 90.0, 99.95, "a reliability")
+    nu = _in_range("--viscosity-mm2-s", viscosity_mm2_s, 0.0, 1e6, "a viscosity", low_open=True)
+    tilt = _in_range("--misalignment-mrad", misalignment_mrad, -20.0, 20.0, "a tilt")
+    if tilt and method is not LifeMethod.iso16281:
+        raise OptionError("--misalignment-mrad", misalignment_mrad, "0 with --method iso281",
+                          "ISO 281 has no misalignment; use --method iso16281")
+    c, c0 = (_in_range(flag, value, 0.0, MAX_RATING_KN, "a rating", low_open=True)
+             for flag, value in (("--dynamic-load-rating-kn", dynamic_load_rating_kn),
+                                 ("--static-load-rating-kn", static_load_rating_kn)))
     if plot is not None and not Path(plot).parent.exists():
         raise OptionError("--plot", str(plot), "a path in an existing directory")
     bearing, _ = resolve_bearing(designation, geometry)
-    tilt = misalignment_mrad * 1e-3       # about the axis across the (downward) radial load
-    condition = OperatingCondition(radial_load=radial_load_n, axial_load=axial_load_n,
-                                   misalignment=(tilt, 0.0), shaft_speed=speed_rpm * math.pi / 30)
+    kn = UNITS["kn"]
+    typed = {"shaft_speed": speed_rpm, "radial_load": radial_load_n, "axial_load": axial_load_n,
+             "reliability_percent": reliability_percent, "viscosity": viscosity_mm2_s,
+             "contamination": contamination, "dynamic_load_rating": dynamic_load_rating_kn,
+             "static_load_rating": static_load_rating_kn}
     try:
-        result = rating_life(bearing, condition, reliability_percent=reliability_percent,
-                             viscosity=None if viscosity_mm2_s is None else viscosity_mm2_s * 1e-6,
-                             contamination=e_c, method=method.value,
-                             rotating="outer" if outer_rotating else "inner",
-                             ep_additives=ep_additives)
+        # the tilt turns the inner ring about the axis across the (downward) radial load
+        condition = OperatingCondition(radial_load=radial_load_n, axial_load=axial_load_n,
+                                       misalignment=(UNITS["mrad"].to_si(tilt), 0.0),
+                                       shaft_speed=omega)
+        result = rating_life(
+            bearing, condition, reliability_percent=reliability_percent,
+            viscosity=None if nu is None else UNITS["mm2_s"].to_si(nu),
+            contamination=_contamination(contamination), method=method.value,
+            rotating="outer" if outer_rotating else "inner", ep_additives=ep_additives,
+            dynamic_load_rating=None if c is None else kn.to_si(c),
+            static_load_rating=None if c0 is None else kn.to_si(c0))
+    except ViscosityTooLow as exc:
+        raise OptionError("--viscosity-mm2-s", viscosity_mm2_s, "a viscosity of at least "
+                          f"{UNITS['mm2_s'].from_si(exc.minimum):.3g} mm²/s at this speed and "
+                          "size", exc.hint) from None
     except InputError as exc:
-        if exc.parameter == "viscosity":
-            raise OptionError("--viscosity-mm2-s", viscosity_mm2_s,
-                              "a viscosity giving kappa >= 0.1 at this speed and size",
-                              str(exc).split("(", 1)[-1].rstrip(")")) from None
-        if exc.parameter == "radial_load":
-            raise OptionError("--radial-load-n", radial_load_n, exc.allowed) from None
-        raise
+        flag = _FLAGS.get(exc.parameter)
+        if flag is None:
+            raise
+        raise OptionError(flag, typed[exc.parameter], exc.allowed, exc.hint) from None
     d = result.to_dict()
-    warnings = _geometry_warnings(bearing) + d.pop("warnings")
-    out = {"designation": designation, **d, "warnings": warnings}
+    out = {"designation": designation, **d,
+           "warnings": _geometry_warnings(bearing) + d["warnings"]}
     if plot is not None:
         _save_plot(result, plot)
     if json_output:
         _emit_json(out)
         return
     _check_finite(out)
-    title = (f"{bearing.name or 'bearing'}: F_r = {radial_load_n:g} N, F_a = {axial_load_n:g} N, "
-             f"{speed_rpm:g} rpm ({method.value})")
-    table = result.to_pandas()
-    console.print(_table(title, ["quantity", "value", "unit"],
-                         [[q, "-" if v is None else v, u] for q, v, u in
-                          table[["quantity", "value", "unit"]].itertuples(index=False)]))
+    _print(result, out, bearing)
+
+
+def _number(value) -> str:
+    """A value for a table: 4 significant digits, no exponent from 1e-4 to 1e6."""
+    if value is None:
+        return "-"
+    if 1e4 <= abs(value) < 1e6:
+        return f"{value:.0f}"
+    return f"{value:.4g}"
+
+
+def _print(result, out: dict, bearing) -> None:
+    """The result as a table of (quantity [unit], value, given or computed), ratings in kN,
+    and the sources underneath."""
+    title = (f"{bearing.name or 'bearing'}: F_r = {out['radial_load_n']:g} N, F_a = "
+             f"{out['axial_load_n']:g} N, {out['speed_rpm']:g} rpm ({out['method']})")
+    console.print(f"[bold]{escape(title)}[/bold]")
+    rows = []
+    for row in result.to_pandas().itertuples(index=False):
+        unit, value = unit_of(row.key), row.value
+        if row.key in ("dynamic_rating_n", "static_rating_n"):
+            unit, value = UNITS["kn"], UNITS["kn"].from_si(value)
+        what = label(row.quantity.strip(), unit.suffix) if unit is not None else row.quantity
+        if row.quantity.startswith(" "):
+            what = "  " + what
+        source = "given" if row.source.startswith("given") else "computed" if row.source else ""
+        rows.append([what, _number(value), source])
+    console.print(_table("", ["quantity", "value", "source"], rows))
+    for name, key in (("C", "dynamic_rating_source"), ("C0", "static_rating_source"),
+                      ("Cu", "fatigue_load_limit_source")):
+        console.print(escape(f"{name}: {out[key]}"))
     console.print(escape(_geometry_line(bearing)))
-    console.print(f"[dim]f_c {d['fc']:.4g}, f_0 {d['f0']:.4g}, b_m {d['b_m']:g}; X {d['x_factor']:.3g}, "
-                  f"Y {d['y_factor']:.3g}, e {d['e_limit']:.3g}; a_1 {d['a1']:.3g} at "
-                  f"{reliability_percent:g} %[/dim]")
-    _print_warnings(warnings)
+    factors = ", ".join(f"{name} {out[key]:.4g}" for name, key in
+                        (("f_c", "fc"), ("f_0", "f0"), ("b_m", "rating_factor_bm"))
+                        if out[key] is not None)
+    console.print(escape(f"{factors}; X {out['x_factor']:.3g}, Y {out['y_factor']:.3g}, "
+                         f"e {out['e_limit']:.3g}; a_1 {out['a1']:.3g} at "
+                         f"{out['reliability_percent']:g} %"), style="dim")
+    _print_warnings(out["warnings"])

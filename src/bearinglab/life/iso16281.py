@@ -100,8 +100,10 @@ def equivalent_ball_load(loads, exponent: float) -> float:
     exponent : float
         w: 3 for the rotating ring, 10/3 for the stationary ring [-].
 
-    >>> round(equivalent_ball_load([100.0] * 8, 3.0), 9), round(equivalent_ball_load([0, 100.0], 3.0), 3)
-    (100.0, 79.37)
+    >>> round(equivalent_ball_load([100.0] * 8, 3.0), 9)
+    100.0
+    >>> round(equivalent_ball_load([0, 100.0], 3.0), 3)
+    79.37
     """
     q = np.clip(np.asarray(loads, dtype=float), 0.0, None)
     if q.ndim != 1 or q.size == 0 or not np.all(np.isfinite(q)):

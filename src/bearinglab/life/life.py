@@ -17,20 +17,34 @@ and (1.9987, 0.071739) for 1 <= kappa <= 4; kappa = nu / nu_1 above 4 counts as 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
 
 import numpy as np
-import pandas as pd
 
 from ..errors import InputError
 from ..geometry import BallBearing
 from ..operating import OperatingCondition
+from ..units import rad_s_to_rpm, rpm_to_rad_s  # noqa: F401 - rpm_to_rad_s: doctests
 from . import tables as T
-from .equivalent import LoadFactors, equivalent_dynamic_load, equivalent_static_load
-from .ratings import LoadRatings, load_ratings
+from .equivalent import equivalent_dynamic_load, equivalent_static_load
+from .ratings import load_ratings
+from .result import LifeResult
 
 METHODS = ("iso281", "iso16281")
 _MM = 1e-3
+_CONTAMINATION_ALLOWED = ("a number in [0, 1] or one of "
+                          + ", ".join([*T.CONTAMINATION_ALIASES, *T.CONTAMINATION_LEVELS]))
+
+
+class ViscosityTooLow(InputError):
+    """The viscosity gives kappa = nu/nu_1 below ISO 281's 0.1, where a_ISO is not defined;
+    ``minimum`` is the least viscosity allowed at this speed and size [m^2/s] (so that an
+    interface can state it in its own unit)."""
+
+    def __init__(self, viscosity: float, minimum: float, kappa: float) -> None:
+        super().__init__("viscosity", viscosity, f"at least {minimum:.3g} m^2/s at this speed "
+                         "and size", f"kappa = nu/nu_1 = {kappa:.3g} is below 0.1, where "
+                         "ISO 281 gives no a_ISO")
+        self.minimum = minimum
 
 
 def reliability_factor(reliability_percent: float) -> float:
@@ -65,14 +79,14 @@ def rated_viscosity(shaft_speed: float, pitch_diameter: float) -> float:
     pitch_diameter : float
         D_pw [m].
 
-    >>> round(rated_viscosity(3000 * math.pi / 30, 0.039) * 1e6, 2)   # mm^2/s
+    >>> round(rated_viscosity(rpm_to_rad_s(3000), 0.039) * 1e6, 2)   # mm^2/s
     13.16
     """
     for name, value in (("shaft_speed", shaft_speed), ("pitch_diameter", pitch_diameter)):
         if not (isinstance(value, (int, float, np.floating)) and math.isfinite(value)
                 and value > 0):
             raise InputError(name, value, "a value > 0")
-    n = shaft_speed * 30.0 / math.pi
+    n = rad_s_to_rpm(shaft_speed)
     d_pw = pitch_diameter / _MM
     if n < T.NU1_SWITCH_RPM:
         nu1 = 45000.0 * n ** -0.83 * d_pw ** -0.5
@@ -107,9 +121,7 @@ def contamination_factor(contamination, pitch_diameter: float) -> tuple[float, s
         key = contamination.strip().lower().replace("_", "-").replace(" ", "-")
         key = T.CONTAMINATION_ALIASES.get(key, key)
         if key not in T.CONTAMINATION_LEVELS:
-            raise InputError("contamination", contamination,
-                             "a number in [0, 1] or one of "
-                             + ", ".join(T.CONTAMINATION_LEVELS))
+            raise InputError("contamination", contamination, _CONTAMINATION_ALLOWED)
         large = pitch_diameter / _MM >= T.CONTAMINATION_SIZE_MM
         low, high = T.CONTAMINATION_LEVELS[key][1 if large else 0]
         where = (f"ISO 281 Table 13 '{key}', D_pw {'>=' if large else '<'} 100 mm: "
@@ -118,7 +130,7 @@ def contamination_factor(contamination, pitch_diameter: float) -> tuple[float, s
     if isinstance(contamination, bool) or not (
             isinstance(contamination, (int, float, np.floating)) and math.isfinite(contamination)
             and 0.0 <= contamination <= 1.0):
-        raise InputError("contamination", contamination, "a number in [0, 1] or a level name")
+        raise InputError("contamination", contamination, _CONTAMINATION_ALLOWED)
     return float(contamination), "given"
 
 
@@ -187,174 +199,6 @@ def basic_rating_life(dynamic_rating: float, equivalent_load: float) -> float:
     return float((dynamic_rating / equivalent_load) ** 3)
 
 
-def _hours(million_rev: float, shaft_speed: float) -> float:
-    return million_rev * 1e6 / (shaft_speed / (2.0 * math.pi)) / 3600.0
-
-
-@dataclass(frozen=True)
-class LifeResult:
-    """Rating life of one bearing under one operating condition.
-
-    Attributes
-    ----------
-    bearing, condition : the inputs.
-    method : str
-        ``iso281`` or ``iso16281``.
-    ratings : LoadRatings
-        C, C_0, C_u and the factors used.
-    equivalent_load : float
-        P of ISO 281 [N] (``iso16281``: the dynamic equivalent reference load P_ref).
-    factors : LoadFactors
-        X, Y, e used for the ISO 281 P.
-    static_equivalent_load : float
-        P_0 [N].
-    l10 : float
-        Basic rating life L10 (``iso16281``: the basic reference rating life L10r)
-        [million revolutions].
-    reliability_percent, a1 : float
-        Reliability [%] and its factor a_1 [-].
-    viscosity, rated_viscosity : float or None
-        nu and nu_1 [m^2/s] (None when no viscosity was given).
-    kappa, a_iso : float or None
-        nu/nu_1 and a_ISO [-].
-    contamination : float or None
-        e_C [-]; ``contamination_source`` says where it came from.
-    lnm : float or None
-        Modified rating life a_1 a_ISO L10 at the chosen reliability [million revolutions].
-    reference : dict or None
-        ISO/TS 16281 details: contact ratings Q_ci, Q_ce, equivalent loads Q_ei, Q_ee [N],
-        the per-ball inner and outer contact loads [N] and the rotating ring.
-    warnings : tuple of str
-    """
-
-    bearing: BallBearing
-    condition: OperatingCondition
-    method: str
-    ratings: LoadRatings
-    equivalent_load: float
-    factors: LoadFactors
-    static_equivalent_load: float
-    l10: float
-    reliability_percent: float
-    a1: float
-    viscosity: float | None = None
-    rated_viscosity: float | None = None
-    kappa: float | None = None
-    contamination: float | None = None
-    contamination_source: str | None = None
-    a_iso: float | None = None
-    lnm: float | None = None
-    iso281_equivalent_load: float | None = None
-    reference: dict | None = field(default=None, repr=False)
-    warnings: tuple[str, ...] = ()
-
-    @property
-    def shaft_speed(self) -> float:
-        """Speed of the rotating ring [rad/s]."""
-        return self.condition.shaft_speed
-
-    @property
-    def static_safety_factor(self) -> float:
-        """s_0 = C_0 / P_0 [-]."""
-        return self.ratings.static / self.static_equivalent_load
-
-    @property
-    def l10_hours(self) -> float:
-        """L10 at the operating speed [h]."""
-        return _hours(self.l10, self.shaft_speed)
-
-    @property
-    def lnm_hours(self) -> float | None:
-        """L_nm at the operating speed [h], None without a viscosity."""
-        return None if self.lnm is None else _hours(self.lnm, self.shaft_speed)
-
-    def to_dict(self) -> dict:
-        """JSON-ready summary in engineering units (keys carry their unit)."""
-        def mm2(v):
-            return None if v is None else v * 1e6
-
-        out = {
-            "method": self.method,
-            **self.ratings.to_dict(),
-            "radial_load_n": self.condition.radial_load,
-            "axial_load_n": self.condition.axial_load,
-            "speed_rpm": self.shaft_speed * 30.0 / math.pi,
-            "equivalent_load_n": self.equivalent_load,
-            "x_factor": self.factors.x, "y_factor": self.factors.y,
-            "e_limit": self.factors.e,
-            "static_equivalent_load_n": self.static_equivalent_load,
-            "static_safety_factor": self.static_safety_factor,
-            "l10_million_rev": self.l10, "l10_hours": self.l10_hours,
-            "reliability_percent": self.reliability_percent, "a1": self.a1,
-            "viscosity_mm2_s": mm2(self.viscosity),
-            "rated_viscosity_mm2_s": mm2(self.rated_viscosity),
-            "kappa": self.kappa, "contamination_factor": self.contamination,
-            "contamination_source": self.contamination_source,
-            "a_iso": self.a_iso,
-            "l10m_million_rev": self.lnm, "l10m_hours": self.lnm_hours,
-            "warnings": list(self.warnings),
-        }
-        if self.reference is not None:
-            ref = self.reference
-            out.update({
-                "iso281_equivalent_load_n": self.iso281_equivalent_load,
-                "reference_load_n": self.equivalent_load,
-                "inner_contact_rating_n": ref["inner_rating"],
-                "outer_contact_rating_n": ref["outer_rating"],
-                "inner_equivalent_ball_load_n": ref["inner_equivalent"],
-                "outer_equivalent_ball_load_n": ref["outer_equivalent"],
-                "rotating_ring": ref["rotating"],
-                "inner_ball_loads_n": [float(q) for q in ref["inner_loads"]],
-                "outer_ball_loads_n": [float(q) for q in ref["outer_loads"]],
-            })
-        return out
-
-    def to_pandas(self) -> pd.DataFrame:
-        """The main results as a table: quantity, value, unit."""
-        d = self.to_dict()
-        rows = [("basic dynamic load rating C", "dynamic_rating_n", "N"),
-                ("basic static load rating C0", "static_rating_n", "N"),
-                ("fatigue load limit Cu", "fatigue_load_limit_n", "N"),
-                ("equivalent dynamic load P" if self.method == "iso281"
-                 else "dynamic equivalent reference load P_ref", "equivalent_load_n", "N"),
-                ("equivalent static load P0", "static_equivalent_load_n", "N"),
-                ("static safety factor s0", "static_safety_factor", "-"),
-                ("basic rating life L10" if self.method == "iso281"
-                 else "basic reference rating life L10r", "l10_million_rev", "1e6 rev"),
-                ("  in hours", "l10_hours", "h"),
-                ("viscosity ratio kappa", "kappa", "-"),
-                ("contamination factor e_C", "contamination_factor", "-"),
-                ("life modification factor a_ISO", "a_iso", "-"),
-                (f"modified rating life at {self.reliability_percent:g} %", "l10m_million_rev",
-                 "1e6 rev"),
-                ("  in hours", "l10m_hours", "h")]
-        return pd.DataFrame([{"quantity": q, "value": d[k], "unit": u} for q, k, u in rows])
-
-    def plot(self, ax=None):
-        """Basic rating life against the equivalent load (log-log), with the operating
-        point and, when known, the modified life; returns (fig, ax)."""
-        from ..plotting import _pyplot
-
-        if ax is None:
-            fig, ax = _pyplot().subplots(figsize=(7, 4.5))
-        else:
-            fig = ax.figure
-        c = self.ratings.dynamic
-        p = np.geomspace(0.02 * c, c, 100)
-        ax.loglog(p, _hours((c / p) ** 3, self.shaft_speed), color="C0",
-                  label="L10 = (C/P)^3")
-        ax.loglog([self.equivalent_load], [self.l10_hours], "o", color="C0",
-                  label=f"operating point ({self.method})")
-        if self.lnm_hours is not None:
-            ax.loglog([self.equivalent_load], [self.lnm_hours], "s", color="C1",
-                      label=f"modified life (a1 a_ISO = {self.a1 * self.a_iso:.3g})")
-        ax.set_xlabel("equivalent load P [N]")
-        ax.set_ylabel(f"life at {self.shaft_speed * 30 / math.pi:g} rpm [h]")
-        ax.grid(True, which="both", alpha=0.3)
-        ax.legend()
-        return fig, ax
-
-
 def _check_condition(condition: OperatingCondition, method: str) -> None:
     if not isinstance(condition, OperatingCondition):
         raise InputError("condition", condition, "an OperatingCondition")
@@ -372,14 +216,19 @@ def _check_condition(condition: OperatingCondition, method: str) -> None:
 def rating_life(bearing: BallBearing, condition: OperatingCondition, *,
                 reliability_percent: float = 90.0, viscosity: float | None = None,
                 contamination=None, method: str = "iso281", rotating: str = "inner",
-                ep_additives: bool = False) -> LifeResult:
+                ep_additives: bool = False, dynamic_load_rating: float | None = None,
+                static_load_rating: float | None = None) -> LifeResult:
     """Rating life of a single-row ball bearing, ISO 281:2007 or ISO/TS 16281.
 
     ``iso281``: L10 = (C/P)^3 with P from Table 3 (normal clearance, rigid rings, no
     misalignment). ``iso16281``: the basic reference rating life L10r from the per-ball
     contact loads of :func:`bearinglab.quasistatic.solve_load_distribution` (so clearance,
     speed, moment and misalignment count), P_ref = C / L10r^(1/3) in place of P.
-    With a ``viscosity`` the modified life a_1 a_ISO L10 follows.
+    With a ``viscosity`` the modified life a_1 a_ISO L10 follows. C and C_0 are ISO 281's
+    and ISO 76's from the geometry unless given (the maker's, say): a given C serves both
+    methods (ISO/TS 16281 splits it into the contact ratings Q_ci, Q_ce), a given C_0 sets
+    s_0 and C_u (so a_ISO); the result says which were given
+    (``ratings.dynamic_source``, ``static_source``).
 
     Parameters
     ----------
@@ -399,6 +248,8 @@ def rating_life(bearing: BallBearing, condition: OperatingCondition, *,
         The rotating ring (``iso16281``: which ring's equivalent load has exponent 3).
     ep_additives : bool
         Apply ISO 281's EP-additive rule to a_ISO.
+    dynamic_load_rating, static_load_rating : float, optional
+        C and C_0 given [N] (see :func:`bearinglab.life.load_ratings`).
 
     Returns
     -------
@@ -407,12 +258,13 @@ def rating_life(bearing: BallBearing, condition: OperatingCondition, *,
     Raises
     ------
     InputError
-        Bad inputs: unsupported bearing type, no load, zero speed, kappa below 0.1, a
-        moment or misalignment with ``iso281``, ...
+        Bad inputs: unsupported bearing type, no load, zero speed, kappa below 0.1
+        (:class:`ViscosityTooLow`), a moment or misalignment with ``iso281``, a given
+        rating not > 0, ...
 
     >>> from bearinglab.catalog import bearing_from_designation
     >>> b, _ = bearing_from_designation("6205")
-    >>> r = rating_life(b, OperatingCondition(radial_load=1400.0, shaft_speed=1500 * math.pi / 30))
+    >>> r = rating_life(b, OperatingCondition(radial_load=1400.0, shaft_speed=rpm_to_rad_s(1500)))
     >>> round(r.l10), round(r.l10_hours)
     (1006, 11176)
     """
@@ -422,7 +274,8 @@ def rating_life(bearing: BallBearing, condition: OperatingCondition, *,
         raise InputError("rotating", rotating, "'inner' or 'outer'")
     _check_condition(condition, method)
     a1 = reliability_factor(reliability_percent)
-    ratings = load_ratings(bearing)
+    ratings = load_ratings(bearing, dynamic_load_rating=dynamic_load_rating,
+                           static_load_rating=static_load_rating)
     warnings = list(ratings.warnings)
     radial, axial = condition.radial_load, condition.axial_load
     p, factors = equivalent_dynamic_load(bearing, radial, axial)
@@ -453,10 +306,7 @@ def rating_life(bearing: BallBearing, condition: OperatingCondition, *,
         nu1 = rated_viscosity(condition.shaft_speed, bearing.pitch_diameter)
         kappa = viscosity / nu1
         if kappa < T.KAPPA_MIN:
-            raise InputError("viscosity", viscosity,
-                             f"at least {T.KAPPA_MIN * nu1:.3g} m^2/s at this speed and size",
-                             f"kappa = nu/nu_1 = {kappa:.3g} is below 0.1, where ISO 281 "
-                             "gives no a_ISO")
+            raise ViscosityTooLow(viscosity, T.KAPPA_MIN * nu1, kappa)
         if contamination is None:
             contamination = "normal-cleanliness"
             warnings.append("contamination not given: normal cleanliness (ISO 281 Table 13) "

@@ -223,6 +223,12 @@ def fatigue_load_limit(static_rating: float, pitch_diameter: float) -> float:
     return c_u
 
 
+#: How each rating is computed when it is not given.
+DYNAMIC_SOURCE = "ISO 281:2007 from the internal geometry"
+STATIC_SOURCE = "ISO 76:2006 from the internal geometry"
+FATIGUE_SOURCE = "ISO 281 Annex B (simplified) from C0"
+
+
 @dataclass(frozen=True)
 class LoadRatings:
     """The load ratings of one bearing and the factors they came from.
@@ -235,35 +241,55 @@ class LoadRatings:
         Basic static load rating C_0 [N].
     fatigue_limit : float
         Fatigue load limit C_u [N].
-    fc, f0 : float
-        Table factors used [N/mm^1.8, N/mm^2].
-    gamma : float
+    fc, f0 : float or None
+        Table factors used [N/mm^1.8, N/mm^2]; None when both ratings were given and the
+        geometry has no ISO rating.
+    gamma : float or None
         D_w cos(alpha) / D_pw [-].
     thrust : bool
         Thrust (axial) ratings.
     warnings : tuple of str
         What limits the ratings (groove radii beyond ISO's, single-source table).
+    dynamic_source, static_source, fatigue_limit_source : str
+        Where C, C_0 and C_u come from: computed (how), or ``"given"`` with the value the
+        geometry would give [-].
     """
 
     dynamic: float
     static: float
     fatigue_limit: float
-    fc: float
-    f0: float
-    gamma: float
+    fc: float | None
+    f0: float | None
+    gamma: float | None
     thrust: bool = False
     warnings: tuple[str, ...] = field(default=())
+    dynamic_source: str = DYNAMIC_SOURCE
+    static_source: str = STATIC_SOURCE
+    fatigue_limit_source: str = FATIGUE_SOURCE
 
     def to_dict(self) -> dict:
         """JSON-ready dict in engineering units."""
-        return {"dynamic_rating_n": self.dynamic, "static_rating_n": self.static,
-                "fatigue_load_limit_n": self.fatigue_limit, "fc": self.fc, "f0": self.f0,
-                "gamma": self.gamma, "rating_kind": "axial" if self.thrust else "radial",
-                "b_m": T.B_M_BALL}
+        return {"dynamic_rating_n": self.dynamic, "dynamic_rating_source": self.dynamic_source,
+                "static_rating_n": self.static, "static_rating_source": self.static_source,
+                "fatigue_load_limit_n": self.fatigue_limit,
+                "fatigue_load_limit_source": self.fatigue_limit_source,
+                "fc": self.fc, "f0": self.f0, "gamma": self.gamma,
+                "rating_kind": "axial" if self.thrust else "radial",
+                "rating_factor_bm": T.B_M_BALL}
 
 
-def load_ratings(bearing: BallBearing) -> LoadRatings:
-    """C, C_0 and C_u of a single-row ball bearing from its internal geometry.
+def _given(name: str, value) -> float | None:
+    if value is None:
+        return None
+    if isinstance(value, bool) or not isinstance(value, (int, float, np.floating)) \
+            or not math.isfinite(value) or value <= 0:
+        raise InputError(name, value, "a rating > 0 [N]")
+    return float(value)
+
+
+def load_ratings(bearing: BallBearing, *, dynamic_load_rating: float | None = None,
+                 static_load_rating: float | None = None) -> LoadRatings:
+    """C, C_0 and C_u of a single-row ball bearing from its internal geometry, or as given.
 
     Deep-groove and angular-contact bearings get radial ratings; a thrust ball bearing
     with a 90 deg contact angle gets axial ratings. The f_c values hold for groove radii
@@ -271,11 +297,17 @@ def load_ratings(bearing: BallBearing) -> LoadRatings:
     looser grooves keeps the table value and a warning, because the correction ISO 281
     asks for is not verified here (docs/capabilities/life.md).
 
+    A rating given (the maker's, say) replaces the computed one, and says so with the
+    value the geometry gives beside it; C_u then follows from the given C_0. With both
+    given, a geometry that ISO 281/76 cannot rate is no obstacle (its factors are None).
+
     Parameters
     ----------
     bearing : BallBearing
         Geometry (ball_count, ball_diameter, pitch_diameter, contact_angle, groove
         factors, bearing_type).
+    dynamic_load_rating, static_load_rating : float or None
+        C and C_0 given [N].
 
     Returns
     -------
@@ -285,13 +317,55 @@ def load_ratings(bearing: BallBearing) -> LoadRatings:
     ------
     InputError
         Four-point or other bearing types, a thrust bearing whose contact angle is not
-        90 deg, or a gamma outside the ISO tables.
+        90 deg, or a gamma outside the ISO tables (unless both ratings are given); a given
+        rating that is not > 0.
 
     >>> from bearinglab.catalog import bearing_from_designation
     >>> r = load_ratings(bearing_from_designation("6203")[0])
     >>> round(r.dynamic), round(r.static)
     (9548, 4757)
+    >>> r = load_ratings(bearing_from_designation("6203")[0], static_load_rating=4750.0)
+    >>> r.static_source, round(r.fatigue_limit, 1)
+    ('given (ISO 76:2006 from the internal geometry: 4757 N)', 215.9)
     """
+    c = _given("dynamic_load_rating", dynamic_load_rating)
+    c0 = _given("static_load_rating", static_load_rating)
+    try:
+        computed = _computed_ratings(bearing)
+    except InputError:
+        if c is None or c0 is None:
+            raise
+        computed = None
+    if c is None and c0 is None:
+        return computed
+    # the computed warnings all concern f_c, so C: moot when C is given
+    warnings = () if computed is None or c is not None else computed.warnings
+    if computed is None:
+        warnings = ("ISO 281/76 cannot rate this geometry; the given C and C0 are used",)
+        thrust = bearing.is_thrust
+        fc = f0 = gamma = None
+    else:
+        thrust, fc, f0, gamma = computed.thrust, computed.fc, computed.f0, computed.gamma
+
+    def source(given, value, how):
+        if given is None:
+            return value, how
+        if computed is None:
+            return given, "given"
+        return given, f"given ({how}: {value:.0f} N)"
+
+    dynamic, dynamic_source = source(c, getattr(computed, "dynamic", None), DYNAMIC_SOURCE)
+    static, static_source = source(c0, getattr(computed, "static", None), STATIC_SOURCE)
+    return LoadRatings(dynamic=dynamic, static=static,
+                       fatigue_limit=fatigue_load_limit(static, bearing.pitch_diameter),
+                       fc=fc, f0=f0, gamma=gamma, thrust=thrust, warnings=warnings,
+                       dynamic_source=dynamic_source, static_source=static_source,
+                       fatigue_limit_source=FATIGUE_SOURCE + (" (given)" if c0 is not None
+                                                              else ""))
+
+
+def _computed_ratings(bearing: BallBearing) -> LoadRatings:
+    """C, C_0 and C_u from the internal geometry (ISO 281, ISO 76)."""
     btype = bearing.bearing_type
     if btype not in RATED_TYPES:
         raise InputError("bearing_type", btype, "one of " + ", ".join(RATED_TYPES),
