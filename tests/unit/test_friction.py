@@ -511,6 +511,8 @@ def test_inputs_the_model_does_not_use_are_checked_and_named(capsys):
     d = run_json(capsys, "6205", "--speed-rpm", "1500", "--radial-load-n", "1000",
                  "--viscosity-mm2-s", "30", "--lubrication", "grease")
     assert any("does not use: viscosity, lubrication" in w for w in d["warnings"])
+    t = run_json(capsys, "6205", "--speed-rpm", "10", "--temperature-c", "50")
+    assert any("does not use: temperature" in w for w in t["warnings"])
     b, _ = bearing_from_designation("6205")
     with pytest.raises(InputError, match="viscosity"):
         bearing_friction(b, 100.0, 1000.0, viscosity=-5e-6)

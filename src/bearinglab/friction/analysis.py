@@ -33,6 +33,7 @@ from .rules import (
     check_positive,
     check_seal_constants,
     check_speed,
+    check_temperature,
     equivalent_load_of,
     lubrication_of,
     seals_of,
@@ -287,7 +288,11 @@ def bearing_friction(bearing, shaft_speed: float, radial_load: float, axial_load
         raise InputError("lubricant_kind", lubricant_kind, "one of " + ", ".join(MU_EHL))
     if seal_diameter is not None:
         check_positive("seal_diameter", seal_diameter, "a diameter > 0 [m]")
-    nu, nu_how, lub = viscosity_of(viscosity, lubricant, temperature)
+    if model == "constant" and lubricant is None and viscosity is None:
+        check_temperature(temperature)          # unused by this model, but checked
+        nu, nu_how, lub = None, None, None
+    else:
+        nu, nu_how, lub = viscosity_of(viscosity, lubricant, temperature)
     ks = check_seal_constants(seal_constants, seal_kind)
     if model == "constant":
         unused = {"viscosity": viscosity, "lubricant": lubricant, "temperature": temperature,
@@ -340,8 +345,8 @@ def bearing_friction(bearing, shaft_speed: float, radial_load: float, axial_load
                          "shipped; give K_S1, K_S2, beta and d_s: --seal-constants, "
                          "--seal-diameter-mm)")
         elif seal_diameter is None:
-            raise InputError("seal_diameter", None, "the seal counterface diameter d_s [m] "
-                             "with seal constants")
+            raise InputError("seal_diameter", None, "the seal counterface diameter d_s with "
+                             "seal constants")
         else:
             seal = seal_moment(*ks, seal_diameter)
     result = skf_friction(kind, b.bore, b.outside_diameter, fr, fa, w, nu, constants,
