@@ -183,9 +183,9 @@ def _life(case: dict, seed: int) -> dict:
     return _pick(r.to_dict(), _LIFE_OUT)
 
 
-_FRICTION_OUT = {"friction_torque_nmm": "f", "power_loss_w": "f", "friction_coefficient": "f",
-                 "rolling_torque_nmm": "f", "sliding_torque_nmm": "f", "seal_torque_nmm": "f",
-                 "drag_torque_nmm": "f", "warnings": "s"}
+_FRICTION_OUT = {"friction_torque_n_mm": "f", "power_loss_w": "f", "friction_coefficient": "f",
+                 "rolling_torque_n_mm": "f", "sliding_torque_n_mm": "f", "seal_torque_n_mm": "f",
+                 "drag_torque_n_mm": "f", "warnings": "s"}
 
 
 def _friction(case: dict, seed: int) -> dict:
