@@ -197,6 +197,23 @@ DIMENSIONLESS: dict[str, str] = {
     "modulation": "the modulating family of a sideband",
     "likely_fault": "the fault family found (null: no fault detected)",
     "faults": "every fault family found", "scores": "map: fault family -> score",
+    "primary_fault": "the most significant fault family (or null)",
+    "families": "map: fault family -> its series test",
+    "tolerances": "map: fault family -> tolerance window (fractions below, above)",
+    "false_alarm_probability": "largest chance of a fault called on a record without one",
+    "test_level": "level of each family test (false alarm / (families x methods))",
+    "threshold_significance": "-log10 of the test level",
+    "significance": "-log10 of a p-value",
+    "z": "line level over the local noise floor of the envelope spectrum",
+    "p_value": "chance that noise alone shows what was found",
+    "methods": "the diagnosis methods run (raw, cpw, drs-sk)",
+    "method_shown": "the method whose spectrum is shown",
+    "cage_modulation_of": "faults whose FTF lines were counted as cage modulation",
+    "band_kurtosis": "spectral kurtosis of the demodulation band",
+    "harmonics": "highest harmonic order tested",
+    "speed": "the speed given, found in the signal and used",
+    "harmonics_found": "shaft harmonics found", "sub_multiple": "k when the shaft series "
+    "is also one at 1/k of the speed (or null)",
     "defects": "the simulated defects", "location": "outer, inner or ball",
     "stats": "integrator statistics", "steps": "accepted steps",
     "rejected_steps": "rejected steps", "settle_turns": "cage revolutions of settling",
@@ -249,7 +266,8 @@ DIMENSIONLESS: dict[str, str] = {
     # validation and report
     "quantity": "what a published case checks", "unit": "the unit of published and computed",
     "published": "the published value (in unit)", "computed": "our value (in unit)",
-    "verdict": "pass, fail or known failure", "passed": "true when the case passes (or count)",
+    "verdict": "pass, fail or known failure (validate); no fault detected, a fault family "
+    "or compound: a + b (analyze)", "passed": "true when the case passes (or count)",
     "known_failure": "the documented reason of a known failure",
     "tolerance_reason": "why the tolerance is what it is", "error": "error text (or null)",
     "summary": "counts of the verdicts", "total": "number of cases", "failed": "count",
@@ -260,7 +278,7 @@ DIMENSIONLESS: dict[str, str] = {
 
 #: Keys whose members are named by data, not by the contract (e.g. ``sources``), so the
 #: members' keys are not checked.
-MAPS = frozenset({"sources", "geometry_sources", "scores", "stats"})
+MAPS = frozenset({"sources", "geometry_sources", "scores", "stats", "families", "tolerances"})
 
 
 def unit_of(key: str) -> Unit | None:

@@ -205,6 +205,9 @@ def print_verdict(diag, name: str, bearing) -> None:
         ["speed the signal shows",
          "no shaft line found" if measured is None else f"{measured:.6g} rpm"],
         ["methods", ", ".join(diag.methods)],
+        ["band", "; ".join(f"{m}: " + ("whole band" if s.band is None else
+                                        f"{s.band[0]:.6g} - {s.band[1]:.6g} Hz")
+                           for m, s in diag.spectra.items())],
         ["resolution", f"{diag.resolution:.3g} Hz"]]))
     console.print(escape(_geometry_line(bearing)))
     rows = [[name, t["method"], t["kinematic_hz"], t["fundamental_hz"], 100 * t["slip"],

@@ -52,8 +52,11 @@ SIDEBANDS = {"outer race": ("shaft", 1), "inner race": ("shaft", 2), "ball": ("f
 TOLERANCES = {"outer race": (0.02, 0.02), "inner race": (0.02, 0.02), "ball": (0.07, 0.02),
               "cage": (0.02, 0.02)}
 #: Family -> sideband orders counted with its harmonics when asking whether the series
-#: stands without its sidebands (ball: the first cage sidebands, see statistics.py).
-GATE_ORDERS = {"outer race": 0, "inner race": 0, "ball": 1, "cage": 0}
+#: stands without its sidebands: the first sidebands where the load zone modulates the
+#: defect deeply, once per revolution of what carries it (inner race: shaft; ball: cage;
+#: Randall & Antoni 2011, sec. 2 and fig. 4), so that the carriers may be weaker than
+#: their sidebands; none for the outer race, whose defect does not move.
+GATE_ORDERS = {"outer race": 0, "inner race": 1, "ball": 1, "cage": 0}
 #: Keys accepted for a family in ``tolerances`` (JSON and CLI spellings too).
 ALIASES = {"outer race": "outer race", "outer": "outer race", "bpfo": "outer race",
            "inner race": "inner race", "inner": "inner race", "bpfi": "inner race",

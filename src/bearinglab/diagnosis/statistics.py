@@ -36,9 +36,9 @@ The test of a fault family (outer race, inner race, ball, cage):
    bound on the search);
 5. the harmonics must be significant by themselves, at SUPPORT_ALPHA (sidebands support a series, they do
    not make one: a flexible template of harmonics and two orders of sidebands fits
-   stray lines, e.g. BPFO as a ball line's second cage sideband) - for a ball fault with
-   their first cage sidebands, since the cage modulates a ball defect deeply (it
-   leaves the load zone every cage revolution); and the series must
+   stray lines, e.g. BPFO as a ball line's second cage sideband) - for ball and inner-race
+   faults with their first sidebands, since the load zone modulates those defects
+   deeply (:data:`bearinglab.diagnosis.families.GATE_ORDERS`); and the series must
    not rest on one line: combined again without its strongest line, it must still
    reach SUPPORT_ALPHA (an isolated line is more often a discrete component
    of the machine than a bearing fault; Randall & Antoni 2011, sec. 2: a fault shows as
