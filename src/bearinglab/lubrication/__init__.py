@@ -24,16 +24,19 @@ from .ehl import (
 from .lubricant import (
     ISO_VG68,
     LUBRICANTS,
+    OPERATING_TEMPERATURE_RANGE,
     SEED004_GREASE,
     ZERO_CELSIUS,
     Lubricant,
+    operating_viscosity,
     reynolds_viscosity,
     roelands_index,
     roelands_pressure_viscosity_coefficient,
 )
 
 __all__ = [
-    "ISO_VG68", "LUBRICANTS", "SEED004_GREASE", "ZERO_CELSIUS", "Lubricant",
+    "ISO_VG68", "LUBRICANTS", "OPERATING_TEMPERATURE_RANGE", "SEED004_GREASE", "ZERO_CELSIUS",
+    "Lubricant", "operating_viscosity",
     "contact_ellipticity", "dimensionless_groups", "ellipticity_hamrock_dowson",
     "entrainment_speed", "film_thickness", "hamrock_dowson_central", "hamrock_dowson_film",
     "hamrock_dowson_minimum", "reynolds_viscosity", "roelands_index",

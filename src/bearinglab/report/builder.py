@@ -45,7 +45,7 @@ def default_sample_rate(shaft_speed: float) -> float:
 
 
 def _viscosity(lubricant, viscosity):
-    from ..lubrication import LUBRICANTS, ZERO_CELSIUS, Lubricant
+    from ..lubrication import operating_viscosity
 
     if viscosity is not None:
         if not (math.isfinite(viscosity) and viscosity > 0):
@@ -53,15 +53,7 @@ def _viscosity(lubricant, viscosity):
         return float(viscosity), "given"
     if lubricant is None:
         return None, ""
-    if isinstance(lubricant, str):
-        if lubricant not in LUBRICANTS:
-            raise InputError("lubricant", lubricant, "one of " + ", ".join(LUBRICANTS))
-        lubricant = LUBRICANTS[lubricant]
-    if not isinstance(lubricant, Lubricant):
-        raise InputError("lubricant", lubricant, "a Lubricant or a built-in lubricant's name")
-    t = lubricant.reference_temperature
-    return (float(lubricant.kinematic_viscosity(t)),
-            f"{lubricant.name} at its reference temperature {t - ZERO_CELSIUS:.4g} degC")
+    return operating_viscosity(lubricant)   # the reading the friction analysis makes too
 
 
 def build_report(bearing: BallBearing, condition: OperatingCondition, *, designation=None,
