@@ -36,8 +36,9 @@ HARMONICS = 8
 FALSE_ALARM = 0.01
 #: Default methods, chosen by measurement on the 18 shared CWRU and MFPT records
 #: (docs/capabilities/diagnosis.md), scoring right Y records + healthy + MFPT minus twice
-#: the wrong faults: cpw 11 (8 of 12 Y, no wrong fault), all three 10 and drs-sk 8 (both
-#: call record 118, a ball fault Smith & Randall find undiagnosable, "outer race").
+#: the wrong faults: cpw 11 (8 of 12 Y, no wrong fault), all three 10 (9 Y), drs-sk 9 and
+#: raw 8 (all but cpw call record 118, a ball fault Smith & Randall find undiagnosable,
+#: "outer race").
 DEFAULT_METHODS = ("cpw",)
 #: Methods for a record simulated by bearinglab (no random slip: deterministic).
 SIMULATED_METHODS = ("raw",)
