@@ -175,6 +175,9 @@ DIMENSIONLESS: dict[str, str] = {
     "race_control": "outer, inner or hybrid raceway control",
     "stiffness_matrix_order": "the order of the degrees of freedom of the matrix",
     "stiffness_matrix_units": "the SI unit of each row of the stiffness matrix",
+    "orbit": "the inner-ring centre orbit (its keys carry units)",
+    "orbit_kind": "time (form errors, over a cage revolution) or ball_set (over a ball "
+                  "spacing)",
     "cases": "list of cases (or their count)", "rows": "list of table rows",
     "solved": "number of cases solved", "status": "ok or the error text",
     # rings

@@ -23,11 +23,11 @@ def test_static_json_keys_and_equilibrium(capsys):
     d = run_json(capsys, "static", "6205", "--radial-load-n", "1000", "--axial-load-n", "200",
                  "--speed-rpm", "3000")
     for key in ("radial_displacement_um", "axial_displacement_um", "tilt_mrad",
-                "max_ball_load_n", "stiffness_matrix", "stiffness_matrix_order",
+                "max_ball_load_n", "stiffness_matrix_si", "stiffness_matrix_order",
                 "radial_stiffness_n_per_um", "axial_stiffness_n_per_um", "balls"):
         assert key in d
     assert d["stiffness_matrix_order"] == ["x", "y", "z", "tilt_x", "tilt_y"]
-    assert np.array(d["stiffness_matrix"]).shape == (5, 5)
+    assert np.array(d["stiffness_matrix_si"]).shape == (5, 5)
     assert len(d["balls"]) == 9 and BALL_KEYS <= d["balls"][0].keys()
     assert d["equilibrium_residual_n"] < 1e-6 * 1000
     # the most loaded ball sits under the load (radial load acts downwards by default)

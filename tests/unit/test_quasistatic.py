@@ -147,7 +147,7 @@ def test_result_dict_has_the_documented_keys():
                                 OperatingCondition(radial_load=700.0, axial_load=100.0))
     d = r.to_dict()
     for key in ("radial_displacement_um", "axial_displacement_um", "tilt_mrad",
-                "max_ball_load_n", "stiffness_matrix", "stiffness_matrix_order",
+                "max_ball_load_n", "stiffness_matrix_si", "stiffness_matrix_order",
                 "radial_stiffness_n_per_um", "axial_stiffness_n_per_um", "balls"):
         assert key in d
     ball = d["balls"][0]
@@ -155,7 +155,7 @@ def test_result_dict_has_the_documented_keys():
                 "outer_contact_angle_deg", "inner_max_pressure_gpa", "outer_max_pressure_gpa",
                 "contact_points"):
         assert key in ball
-    assert np.array(d["stiffness_matrix"]).shape == (5, 5)
+    assert np.array(d["stiffness_matrix_si"]).shape == (5, 5)
     assert d["equilibrium_residual_n"] < 1e-6 * 700
 
 

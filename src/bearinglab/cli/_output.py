@@ -67,7 +67,9 @@ def _fmt(value, digits: int = 4) -> str:
 def _table(title: str, columns: list[str], rows: list[list]) -> Table:
     table = Table(title=title, title_justify="left", show_header=True, header_style="bold")
     for i, col in enumerate(columns):
-        table.add_column(escape(col), justify="right" if i and col not in ("source", "meaning") else "left")
+        # a header's words are never cut: its column is at least as wide as its longest word
+        table.add_column(escape(col), justify="right" if i and col not in ("source", "meaning")
+                         else "left", min_width=max(map(len, col.split()), default=1))
     for row in rows:
         table.add_row(*(_fmt(v) for v in row))
     return table

@@ -1,6 +1,7 @@
 """Commands of the load-distribution issue: static, stiffness-map, ring-modes."""
 
 import math
+from enum import Enum
 from pathlib import Path
 from typing import Annotated
 
@@ -19,6 +20,7 @@ from ..plotting import save_figure, stiffness_map_figure
 from ..quasistatic import solve_load_distribution
 from ..quasistatic.orbit import inner_ring_orbit
 from ..quasistatic.study import stiffness_map as stiffness_map_study
+from ..units import label
 from ._app import command_app, console
 from ._forms import BallErrorOpt, FormErrors, SeedOpt, Surface3dOpt, WavinessOpt
 from ._inputs import (
@@ -42,6 +44,19 @@ app = command_app()
 PlotOpt = Annotated[Path | None, typer.Option(
     "--plot", help="Also draw the result to this .png, .svg or .pdf file.", show_default=False)]
 MAX_CASES = 1_000_000
+
+
+class RaceControl(str, Enum):
+    outer = "outer"
+    inner = "inner"
+    hybrid = "hybrid"
+
+
+RaceControlOpt = Annotated[RaceControl, typer.Option(
+    "--race-control", help="Raceway control that sets each ball's orbital speed (centrifugal "
+    "force) and spin (gyroscopic moment): outer or inner (the ball rolls without spinning on "
+    "that race, Jones), or hybrid (per ball by Jones's criterion, friction shared as Harris "
+    "does).")]
 
 
 def _grid(flag: str, text: str, signed: bool = False, speed: bool = False) -> np.ndarray:
@@ -110,8 +125,9 @@ def static(designation: DesignationArg = None,
                "--temperature-c", help="Lubricant temperature [degC] (default: its "
                "reference).", show_default=False)] = None,
            gyroscopic: Annotated[bool, typer.Option(
-               "--gyroscopic", help="Include ball gyroscopic moments (outer-raceway "
-               "control).")] = False,
+               "--gyroscopic", help="Include the balls' gyroscopic moments, held by friction "
+               "at the controlling raceway (--race-control).")] = False,
+           race_control: RaceControlOpt = RaceControl.outer,
            ring_expansion: Annotated[bool, typer.Option(
                "--ring-expansion", help="Reduce the clearance by the inner ring's "
                "centrifugal expansion.")] = False,
@@ -161,6 +177,7 @@ def static(designation: DesignationArg = None,
                                  "speed_rpm": speed_rpm}) from None
     imperfections = forms.build(bearing, seed)
     options = {"lubricant": oil, "temperature": temperature, "gyroscopic": gyroscopic,
+               "race_control": race_control.value,
                "ring_expansion": ring_expansion}
     errors = None
     if imperfections is not None:   # the form errors at t = 0, ball 0 under the load
@@ -192,14 +209,17 @@ def static(designation: DesignationArg = None,
         _emit_json(out)
         return
     table = result.ball_table()
-    cols = ["ball", "angle_deg", "inner_load_n", "outer_load_n", "inner_contact_angle_deg",
-            "outer_contact_angle_deg", "inner_max_pressure_gpa", "outer_max_pressure_gpa",
-            "contact_points"]
+    # column -> header with its unit (Greek symbols keep the table within 80 columns)
+    cols = {"ball": "ball", "angle_deg": label("ψ", "deg"), "inner_load_n": label("Q_i", "n"),
+            "outer_load_n": label("Q_o", "n"), "inner_contact_angle_deg": label("α_i", "deg"),
+            "outer_contact_angle_deg": label("α_o", "deg"),
+            "inner_max_pressure_gpa": label("p_i", "gpa"),
+            "outer_max_pressure_gpa": label("p_o", "gpa"), "contact_points": "points"}
     console.print(_table(f"{bearing.name or 'bearing'}: F_r = {fr:g} N, F_a = {fa:g} N, "
                          f"{speed_rpm:g} rpm" + (", with EHL film" if film else "")
-                         + (", gyroscopic (outer-raceway control)" if gyroscopic else ""),
-                         [c.replace("_", " ") for c in cols],
-                         table[cols].to_numpy().tolist()))
+                         + (f", gyroscopic ({race_control.value} raceway control)"
+                            if gyroscopic else ""),
+                         list(cols.values()), table[list(cols)].to_numpy().tolist()))
     console.print(escape(_geometry_line(bearing)))
     if imperfections is not None:
         from ._forms import form_errors_text
@@ -207,20 +227,26 @@ def static(designation: DesignationArg = None,
         console.print(escape(f"form errors: {form_errors_text(imperfections)} (the load "
                              "distribution at shaft angle 0, ball 0 under the load)"))
     console.print(_table("Inner ring", ["quantity", "value", "unit"], [
-        ["radial displacement S_r", d["radial_displacement_um"], "um"],
-        ["axial displacement S_a", d["axial_displacement_um"], "um"],
-        ["tilt about x, y", ", ".join(f"{t:.4g}" for t in d["tilt_mrad"]), "mrad"],
+        ["radial displacement S_r", _clean(d["radial_displacement_um"]), "µm"],
+        ["axial displacement S_a", _clean(d["axial_displacement_um"]), "µm"],
+        ["tilt about x, y", ", ".join(f"{_clean(t):.4g}" for t in d["tilt_mrad"]), "mrad"],
         ["max ball load", d["max_ball_load_n"], "N"],
-        ["radial stiffness C_r", d["radial_stiffness_n_per_um"], "N/um"],
-        ["axial stiffness C_a", d["axial_stiffness_n_per_um"], "N/um"],
-    ] + ([["orbit peak to peak", out["orbit_peak_to_peak_um"], "um"],
+        ["radial stiffness C_r", d["radial_stiffness_n_per_um"], "N/µm"],
+        ["axial stiffness C_a", d["axial_stiffness_n_per_um"], "N/µm"],
+    ] + ([["orbit peak to peak", out["orbit_peak_to_peak_um"], "µm"],
           ["orbit", _orbit_text(o), ""]] if orbit else [])))
-    k = np.array(d["stiffness_matrix"])
-    console.print(_table("Stiffness matrix (x, y, z [N/um]; tilts [N m/mrad, N/mrad])",
+    k = result.stiffness_matrix_shown()
+    console.print(_table("Stiffness matrix (rows x, y, z: N/µm and N/mrad; tilt rows: N·m/µm "
+                         "and N·m/mrad)",
                          ["", *d["stiffness_matrix_order"]],
                          [[name, *(k[i] * np.array([1e-6] * 3 + [1e-3] * 2))]
                           for i, name in enumerate(d["stiffness_matrix_order"])]))
     _print_warnings(d["warnings"])
+
+
+def _clean(value: float, floor: float = 1e-9) -> float:
+    """Solver round-off (|value| < floor in the shown unit) as 0, not 3.5e-14."""
+    return 0.0 if abs(value) < floor else value
 
 
 def _orbit_text(o) -> str:
@@ -258,6 +284,10 @@ def stiffness_map(designation: DesignationArg = None,
                   workers: Annotated[int, typer.Option(
                       "--workers", help="Worker processes (default: all cores).",
                       show_default=False)] = 0,
+                  gyroscopic: Annotated[bool, typer.Option(
+                      "--gyroscopic", help="Include the balls' gyroscopic moments, held by "
+                      "friction at the controlling raceway (--race-control).")] = False,
+                  race_control: RaceControlOpt = RaceControl.outer,
                   output: Annotated[Path | None, typer.Option(
                       "-o", "--output", help="Write the table to this CSV file.",
                       show_default=False)] = None,
@@ -277,7 +307,8 @@ def stiffness_map(designation: DesignationArg = None,
     with Progress(console=console, transient=True, disable=json_output) as progress:
         task = progress.add_task("solving", total=total)
         table = stiffness_map_study(bearing, radial, axial, speeds, workers=workers or None,
-                                    progress=lambda n: progress.advance(task, n))
+                                    progress=lambda n: progress.advance(task, n),
+                                    gyroscopic=gyroscopic, race_control=race_control.value)
     rows = table.to_dict(orient="records")
     if output is not None:
         _write_csv(table, output)

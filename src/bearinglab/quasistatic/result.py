@@ -224,12 +224,12 @@ class LoadDistribution:
             "tilt_mrad": (self.displacement[3:] * 1e3).tolist(),
             "max_ball_load_n": float(max(table["inner_load_n"].max(),
                                          table["outer_load_n"].max())),
-            "stiffness_matrix": self.stiffness_matrix.tolist(),
+            "stiffness_matrix_si": self.stiffness_matrix.tolist(),
             "stiffness_matrix_order": list(DOF_NAMES),
             "stiffness_matrix_units": STIFFNESS_UNITS,
             "radial_stiffness_n_per_um": self.radial_stiffness * 1e-6,
             "axial_stiffness_n_per_um": self.axial_stiffness * 1e-6,
-            "reaction_moment_nm": self.reaction[3:].tolist(),
+            "reaction_moment_n_m": self.reaction[3:].tolist(),
             "equilibrium_residual_n": float(np.linalg.norm(residual[solved])),
             "speed_rpm": self.condition.shaft_speed * 30 / math.pi,
             "cage_speed_rpm": self.cage_speed * 30 / math.pi,
@@ -240,6 +240,12 @@ class LoadDistribution:
             "warnings": list(self.warnings),
             "balls": balls,
         }
+
+    def stiffness_matrix_shown(self, relative: float = 1e-9) -> np.ndarray:
+        """The stiffness matrix with the solver's round-off (entries below ``relative``
+        times the largest) set to 0, for tables [SI]."""
+        k = np.asarray(self.stiffness_matrix, dtype=float)
+        return np.where(np.abs(k) < relative * np.max(np.abs(k)), 0.0, k)
 
     def stiffness_frame(self) -> pd.DataFrame:
         """The 5x5 stiffness matrix as a table with named rows and columns (SI), for CSV."""

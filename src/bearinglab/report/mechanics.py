@@ -201,8 +201,7 @@ def stiffness(ctx: Context):
     ax[0].legend(fontsize=8)
     fig.tight_layout()
     names = list(DOF_NAMES)
-    k = np.asarray(r.stiffness_matrix, dtype=float)
-    k = np.where(np.abs(k) < 1e-9 * np.max(np.abs(k)), 0.0, k)   # solver round-off
+    k = r.stiffness_matrix_shown()
     matrix = [[n, *[float(v) for v in row]] for n, row in zip(names, k)]
     body = [paragraph(f"Tangent stiffness of the bearing at {symbol} from "
                       f"{LOAD_FACTORS[0]:g} to {LOAD_FACTORS[-1]:g} times the operating load "
