@@ -178,10 +178,14 @@ def analyze_command(
         if flag == "--speed-rpm" and speed_rpm is None:
             raise OptionError(flag, None, "a speed in rpm or auto (the file does not record "
                               "the shaft speed)") from None
-        if flag == "--sample-rate-hz" and sample_rate_hz is None:
+        if flag == "--sample-rate-hz" and sample_rate_hz is None and exc.value is None:
             raise OptionError(flag, None, "the sample rate in Hz (the file does not store it; "
                               "CWRU records are 12000 or 48000 Hz)") from None
-        raise OptionError(flag, value, exc.allowed, exc.hint) from None
+        hint = exc.hint or (f"it holds {exc.value}" if flag == "SIGNAL_FILE"
+                            and exc.parameter == "signal_or_array" else "")
+        if flag == "--sample-rate-hz" and sample_rate_hz is None:
+            value = exc.value  # the file's own rate
+        raise OptionError(flag, value, exc.allowed, hint) from None
     if plot is not None:
         _save_plot(diag, plot)
     out = {"file": str(signal_file), "designation": designation, **diag.to_dict()}

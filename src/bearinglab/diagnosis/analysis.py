@@ -270,7 +270,7 @@ def analyze_signal(signal_or_array, sample_rate, frequencies, *, channel: str | 
         simulated = isinstance(signal_or_array, Signal) and "model" in signal_or_array.metadata
         methods = SIMULATED_METHODS if simulated else DEFAULT_METHODS
     names = parse_methods(methods)
-    windows = tolerances_ = _tolerances(tolerances)
+    windows = _tolerances(tolerances)
     pfa = _positive("false_alarm", false_alarm, "a probability in (0, 0.5)", optional=False)
     if not pfa < 0.5:
         raise InputError("false_alarm", false_alarm, "a probability in (0, 0.5)")
@@ -378,5 +378,5 @@ def _reason(faults, table, decision, pfa) -> str:
     return "; ".join(parts)
 
 
-__all__ = ["COUNT", "DEFAULT_METHODS", "SIMULATED_METHODS", "FALSE_ALARM", "HARMONICS", "MAX_FREQUENCY_FACTOR",
-           "METHODS", "analyze_signal"]
+__all__ = ["COUNT", "DEFAULT_METHODS", "FALSE_ALARM", "HARMONICS", "MAX_FREQUENCY_FACTOR",
+           "METHODS", "SIMULATED_METHODS", "analyze_signal"]

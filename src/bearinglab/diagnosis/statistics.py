@@ -34,8 +34,8 @@ The test of a fault family (outer race, inner race, ball, cage):
    Research Workers, 1932, sec. 21.1), the best fundamental is kept, and its p-value is
    multiplied by the number M of distinct line positions the scan tried (a Bonferroni
    bound on the search);
-5. the harmonics must be significant by themselves, at SUPPORT_ALPHA (sidebands support a series, they do
-   not make one: a flexible template of harmonics and two orders of sidebands fits
+5. the harmonics must be significant by themselves, at SUPPORT_ALPHA (sidebands support a
+   series, they do not make one: a flexible template of harmonics and two orders of sidebands fits
    stray lines, e.g. BPFO as a ball line's second cage sideband) - for ball and inner-race
    faults with their first sidebands, since the load zone modulates those defects
    deeply (:data:`bearinglab.diagnosis.families.GATE_ORDERS`); and the series must
