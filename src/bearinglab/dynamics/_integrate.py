@@ -9,7 +9,7 @@
 
 Both integrate one *chunk* of output times and return the state and step size to carry
 into the next, so that the caller can show progress between chunks. Between accepted
-steps the output is interpolated: by Dormand-Prince's own 4th-order continuous extension
+steps the output is interpolated: by Shampine's 4th-order continuous extension
 (:func:`dopri_dense`), or by the cubic Hermite polynomial through the states and
 derivatives at both ends (:func:`hermite`, third order). The step never exceeds
 ``h_max``, which the callers tie to the output interval. Step control: the error norm is the RMS of
@@ -41,9 +41,9 @@ _A = np.array([
     [9017 / 3168, -355 / 33, 46732 / 5247, 49 / 176, -5103 / 18656, 0],
     [35 / 384, 0, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84]])
 _E = np.array([71 / 57600, 0, -71 / 16695, 71 / 1920, -17253 / 339200, 22 / 525, -1 / 40])
-# Dormand-Prince continuous extension of order 4 (Dormand & Prince 1986; Hairer, Norsett &
-# Wanner sec. II.6; the coefficients of SciPy's RK45.P): y(t + x h) = y + h sum_k K_k
-# (P_k1 x + P_k2 x^2 + P_k3 x^3 + P_k4 x^4)
+# A continuous extension of order 4 of the Dormand-Prince pair (Shampine L. F., "Some
+# practical Runge-Kutta formulas", Math. Comp. 46 (1986) 135-150; the coefficients of
+# SciPy's RK45.P): y(t + x h) = y + h sum_k K_k (P_k1 x + P_k2 x^2 + P_k3 x^3 + P_k4 x^4)
 _P = np.array([
     [1, -8048581381 / 2820520608, 8663915743 / 2820520608, -12715105075 / 11282082432],
     [0, 0, 0, 0],
@@ -70,7 +70,7 @@ def hermite(t0, y0, f0, t1, y1, f1, t, out):
 
 @numba.njit(cache=True)
 def dopri_dense(t0, y0, h, k, t, out):
-    """The Dormand-Prince 4th-order continuous extension of the step (t0, y0, h) with
+    """Shampine's 4th-order continuous extension of the Dormand-Prince step (t0, y0, h) with
     stages ``k`` (7 x n), at t in [t0, t0 + h]."""
     x = (t - t0) / h
     w = np.empty(7)
