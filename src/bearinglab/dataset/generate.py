@@ -50,7 +50,7 @@ def make_record(spec: DatasetSpec, seed: int, index: int) -> tuple[np.ndarray, d
                       angle=math.radians(d["angle_deg"]),
                       ball=r["ball_index"] % z if d["location"] == "ball" else 0)
                for d in r["defects"]]
-    for d, spec_d in zip(defects, r["defects"]):
+    for d, spec_d in zip(defects, r["defects"], strict=True):
         if d.location == "ball":
             spec_d["ball"] = d.ball
     waves = [Waviness(w["race"], w["order"], r["waviness_amplitude_um"] * 1e-6,
@@ -98,7 +98,8 @@ def _partition(task):
 class DatasetResult:
     """A finished data set: ``path``, ``name``, ``records`` asked for, ``written`` and
     ``failed`` records, ``partitions``, ``computed`` (by this run), ``seconds`` (this run's
-    wall time), ``workers``, ``scheduler``, ``dashboard``, ``peak_memory`` [bytes]."""
+    wall time), ``workers``, ``scheduler``, ``dashboard``, ``peak_memory`` [bytes] and
+    ``worker_cpu_seconds`` [s] per worker process."""
 
     path: Path
     name: str
@@ -113,6 +114,7 @@ class DatasetResult:
     scheduler: str
     dashboard: str | None
     peak_memory: dict = field(default_factory=dict, repr=False)
+    worker_cpu_seconds: dict = field(default_factory=dict, repr=False)
 
     @property
     def records_per_second(self) -> float | None:
@@ -133,7 +135,9 @@ class DatasetResult:
                 "partitions": self.partitions, "partitions_computed": self.computed,
                 "partitions_reused": self.partitions - self.computed,
                 "records_computed": self.computed_records, "seconds": self.seconds,
-                "records_per_second": self.records_per_second, "workers": self.workers,
+                "records_per_second": self.records_per_second,
+                "worker_cpu_seconds": sum(self.worker_cpu_seconds.values()),
+                "workers": self.workers,
                 "scheduler": self.scheduler, "dashboard": self.dashboard,
                 "open_with": f"bearing_datasets.open({self.name!r}, "
                              f"root={str(self.path.parent)!r})"}
@@ -254,7 +258,7 @@ def make_dataset(output, records: int, *, seed: int = 0, partition_size: int | N
         frame = pd.DataFrame(rows)
         write_atomically(metas[i], lambda tmp: frame.to_parquet(tmp, index=False))
 
-    seconds, memory, info = 0.0, {}, ("-", 0, None)
+    seconds, memory, cpu, info = 0.0, {}, {}, ("-", 0, None)
     if tasks:
         # connect first: an unreachable scheduler leaves no folder behind
         with execute.open_runner(scheduler, workers, connect_timeout) as runner:
@@ -264,13 +268,15 @@ def make_dataset(output, records: int, *, seed: int = 0, partition_size: int | N
                 marker, encoding="utf-8"))
             info = (runner.scheduler, runner.workers, runner.dashboard)
             execute.warm(runner, ("bearinglab.dynamics",), (_warm, (spec, seed)))
+            cpu0 = execute.cpu_seconds(runner)
             seconds = execute.run_partitions(runner, _partition, tasks, units, write,
                                              progress=progress, label="records",
                                              total=records, done=records - sum(units))
+            cpu = {w: t - cpu0.get(w, 0.0) for w, t in execute.cpu_seconds(runner).items()}
             memory = execute.peak_memory(runner)
     written, failed = _finish(folder, name, metas, seed, records)
     return DatasetResult(folder, name, records, written, failed, len(spans), len(tasks),
-                         sum(units), seconds, info[1], info[0], info[2], memory)
+                         sum(units), seconds, info[1], info[0], info[2], memory, cpu)
 
 
 def _warm(args) -> None:
@@ -296,7 +302,7 @@ def _finish(folder: Path, name: str, metas: list[Path], seed: int, records: int)
     if good.empty:
         raise InputError("records", records, "settings with which at least one record can "
                          "be made", f"every record failed, e.g. {bad['error'].iloc[0]}")
-    digests = dict(zip(good["signal_id"], good.pop("sha256")))
+    digests = dict(zip(good["signal_id"], good.pop("sha256"), strict=True))
     good = layout.order_columns(good.reset_index(drop=True))
     for column in ("signal_row_group", "signal_row", "n_samples", "fault_severity_level",
                    "record_seed"):

@@ -103,7 +103,7 @@ def _stiffness_line(case: dict, radial: list[float]) -> list:
     # stiffness_map returns the loads sorted: put the rows back in the cases' order
     order = np.argsort(np.asarray(radial, float), kind="stable")
     out = [None] * len(radial)
-    for row, i in zip(table.to_dict(orient="records"), order):
+    for row, i in zip(table.to_dict(orient="records"), order, strict=True):
         if row["status"] == "ok":
             out[i] = _pick(row, _STIFFNESS_OUT)
         else:
@@ -139,7 +139,7 @@ def _stiffness_batch(cases: list[dict], seed: int) -> list:
                     results.append(_stiffness(cases[i], seed))
                 except Exception as exc:  # noqa: BLE001 - a failed case never stops a study
                     results.append(exc)
-        for i, r in zip(members, results):
+        for i, r in zip(members, results, strict=True):
             out[i] = r
     return out
 
@@ -434,7 +434,7 @@ def run_cases(a: Analysis, cases: list[dict], seed: int) -> list[dict]:
         results = a.batch(full, seed)
     else:
         results = []
-        for c, s in zip(full, seeds):
+        for c, s in zip(full, seeds, strict=True):
             try:
                 results.append(a.evaluate(c, s))
             except Exception as exc:  # noqa: BLE001 - a failed case never stops a study

@@ -221,7 +221,7 @@ class Grid:
         out = []
         for i, case in enumerate(index):
             row = {"case": int(case)}
-            for (name, vals), c in zip(self.fixed.items(), coords):
+            for (name, vals), c in zip(self.fixed.items(), coords, strict=True):
                 row[name] = vals[int(c[i])]
             if self.random:
                 rng = case_rng(self.seed, int(case))

@@ -135,6 +135,21 @@ def _peak_rss() -> int:
     return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024   # Linux: kB
 
 
+def _cpu_seconds() -> float:
+    import resource
+
+    usage = resource.getrusage(resource.RUSAGE_SELF)
+    return usage.ru_utime + usage.ru_stime
+
+
+def cpu_seconds(runner: Runner) -> dict:
+    """CPU time used so far by each worker process [s] (this process when serial): the
+    difference over a run shows how much of a core each worker got."""
+    if runner.client is None:
+        return {"serial": _cpu_seconds()}
+    return runner.client.run(_cpu_seconds)
+
+
 def peak_memory(runner: Runner) -> dict:
     """Peak resident memory of each worker process [bytes] (this process when serial)."""
     if runner.client is None:
@@ -183,7 +198,7 @@ def run_partitions(runner: Runner, func: Callable, tasks: list, units: list[int]
             if runner.dashboard and len(tasks) >= LONG_RUN_PARTITIONS:
                 bar.console.print(f"dashboard: {runner.dashboard} ({runner.scheduler})")
         if runner.client is None:
-            for task, n in zip(tasks, units):
+            for task, n in zip(tasks, units, strict=True):
                 on_done(task, func(task))
                 if bar is not None:
                     bar.advance(job, n)
@@ -216,5 +231,5 @@ def _progress(label: str):
     )
 
     return Progress(TextColumn("[progress.description]{task.description}"), BarColumn(),
-                    MofNCompleteColumn(), TimeElapsedColumn(), TextColumn("left"), TimeRemainingColumn(),
-                    console=Console(stderr=True), transient=False)
+                    MofNCompleteColumn(), TimeElapsedColumn(), TextColumn("left"),
+                    TimeRemainingColumn(), console=Console(stderr=True), transient=False)

@@ -62,7 +62,7 @@ def _partition(task) -> object:
     results = run_cases(a, rows, seed)
     schema = _schema(a, inputs, set(random))
     columns = {f.name: [] for f in schema}
-    for case, out in zip(rows, results):
+    for case, out in zip(rows, results, strict=True):
         merged = {**case, **out}
         for key, values in columns.items():
             values.append(merged.get(key))
@@ -75,9 +75,11 @@ class StudyResult:
 
     Attributes: ``path`` (the folder), ``analysis``, ``cases``, ``partitions`` (in the
     study), ``computed`` (partitions computed by this run; the others were already
-    there), ``computed_cases`` (their cases), ``failed_cases`` (cases with an error), ``seconds`` (wall time of this run's
-    partitions), ``workers``, ``scheduler``, ``dashboard``, ``inputs`` and ``outputs``
-    (column names), ``peak_memory`` (worker -> peak resident memory [bytes]).
+    there), ``computed_cases`` (their cases), ``failed_cases`` (cases with an error),
+    ``seconds`` (wall time of this run's partitions), ``workers``, ``scheduler``,
+    ``dashboard``, ``inputs`` and ``outputs`` (column names), ``peak_memory`` (worker ->
+    peak resident memory [bytes]), ``worker_cpu_seconds`` (worker -> CPU time its
+    partitions took [s]).
     """
 
     path: Path
@@ -94,6 +96,7 @@ class StudyResult:
     inputs: tuple
     outputs: tuple
     peak_memory: dict = field(default_factory=dict, repr=False)
+    worker_cpu_seconds: dict = field(default_factory=dict, repr=False)
 
     @property
     def cases_per_second(self) -> float | None:
@@ -113,6 +116,7 @@ class StudyResult:
                 "partitions_reused": self.partitions - self.computed,
                 "cases_computed": self.computed_cases, "failed_cases": self.failed_cases,
                 "seconds": self.seconds, "cases_per_second": self.cases_per_second,
+                "worker_cpu_seconds": sum(self.worker_cpu_seconds.values()),
                 "workers": self.workers, "scheduler": self.scheduler,
                 "dashboard": self.dashboard, "inputs": list(self.inputs),
                 "outputs": list(self.outputs)}
@@ -252,7 +256,7 @@ def run_study(analysis: str, grid: dict | None = None, *, cases=None, output,
         part = source if isinstance(source, Grid) else source.rows(start, stop)
         tasks.append((a.name, seed, part, start, stop, inputs, random))
         units.append(stop - start)
-    file_of = {(t[3], t[4]): names[i] for t, i in zip(tasks, todo)}
+    file_of = {(t[3], t[4]): names[i] for t, i in zip(tasks, todo, strict=True)}
 
     def write(task, table) -> None:
         import pyarrow.parquet as pq
@@ -260,7 +264,7 @@ def run_study(analysis: str, grid: dict | None = None, *, cases=None, output,
         write_atomically(folder / file_of[(task[3], task[4])],
                          lambda tmp: pq.write_table(table, tmp, compression="zstd"))
 
-    seconds, memory = 0.0, {}
+    seconds, memory, cpu = 0.0, {}, {}
     runner_info = ("-", 0, None)
     if tasks:
         # connect first: an unreachable scheduler leaves no folder behind
@@ -272,14 +276,16 @@ def run_study(analysis: str, grid: dict | None = None, *, cases=None, output,
             # a few first cases (the very first may fail, e.g. an unloaded stiffness case)
             first = source.rows(0, min(count, 3))
             execute.warm(runner, a.warm, (warm_up, (a.name, first)))
+            cpu0 = execute.cpu_seconds(runner)
             seconds = execute.run_partitions(
                 runner, _partition, tasks, units, write, progress=progress, label=a.name,
                 total=count, done=count - sum(units))
+            cpu = {w: t - cpu0.get(w, 0.0) for w, t in execute.cpu_seconds(runner).items()}
             memory = execute.peak_memory(runner)
     failed = _failed(folder, names)
     return StudyResult(folder, a.name, count, len(spans), len(tasks), sum(units), failed,
                        seconds, runner_info[1], runner_info[0], runner_info[2], tuple(inputs),
-                       tuple(a.outputs), memory)
+                       tuple(a.outputs), memory, cpu)
 
 
 def _failed(folder: Path, names: list[str]) -> int:
