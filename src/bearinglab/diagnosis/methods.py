@@ -107,17 +107,13 @@ def segment_length(n: int, sample_rate: float, resolution: float) -> int:
 def squared_envelope_power(x: np.ndarray, sample_rate: float, resolution: float,
                            band=None):
     """(frequency [Hz], Welch power of the squared envelope, nu) at ``resolution`` [Hz]."""
-    import scipy.signal
-
-    from ..signal.spectra import envelope
+    from ..signal.spectra import envelope, welch_power
     from .statistics import welch_dof
 
     env = envelope(x, sample_rate, band=band, squared=True)
     nperseg = segment_length(env.size, sample_rate, resolution)
     noverlap = nperseg // 2
-    frequency, power = scipy.signal.welch(env, fs=sample_rate, window="hann", nperseg=nperseg,
-                                          noverlap=noverlap, detrend="constant",
-                                          scaling="spectrum")
+    frequency, power = welch_power(env, sample_rate, nperseg, noverlap)
     return frequency, power, welch_dof(nperseg, noverlap, env.size)
 
 

@@ -99,14 +99,15 @@ def normalised(power: np.ndarray, nu: float, floor_bins: int = FLOOR_BINS) -> np
     which holds the record's mean, gets the value of its neighbour.
     """
     import scipy.ndimage
-    import scipy.stats
+    import scipy.special
 
     p = np.asarray(power, dtype=float).copy()
     if p.size > 1:
         p[0] = p[1]
     size = min(floor_bins, p.size - (1 - p.size % 2))
     median = scipy.ndimage.median_filter(p, size=max(size, 1), mode="reflect")
-    mean = median * nu / float(scipy.stats.chi2.median(nu))
+    chi2_median = 2.0 * float(scipy.special.gammaincinv(nu / 2.0, 0.5))  # = chi2(nu).median()
+    mean = median * nu / chi2_median
     tiny = 1e-300 + 1e-12 * float(np.max(mean)) if mean.size else 1e-300
     return p / np.maximum(mean, tiny)
 
@@ -114,19 +115,21 @@ def normalised(power: np.ndarray, nu: float, floor_bins: int = FLOOR_BINS) -> np
 def chi2_logsf(x, dof) -> np.ndarray:
     """ln P(chi2_dof > x), finite far into the tail.
 
-    ``scipy.stats.chi2.logsf`` underflows to -inf beyond ~1500 nats; there the leading
-    term of the upper incomplete gamma function, Gamma(s, y) ~ y^(s-1) e^-y (s = dof/2,
-    y = x/2; Abramowitz & Stegun 6.5.32), takes over.
+    ln of the regularised upper incomplete gamma function Q(dof/2, x/2)
+    (``scipy.special.chdtrc``, what ``scipy.stats.chi2.sf`` computes; scipy.stats is not
+    imported, it costs ~0.5 s at start-up). It underflows to -inf beyond ~700 nats; there
+    the leading term of the upper incomplete gamma function, Gamma(s, y) ~ y^(s-1) e^-y
+    (s = dof/2, y = x/2; Abramowitz & Stegun 6.5.32), takes over.
 
     >>> float(np.round(chi2_logsf(4.0, 2), 12)), bool(np.isfinite(chi2_logsf(1e6, 20)))
     (-2.0, True)
     """
     import scipy.special
-    import scipy.stats
 
     x = np.asarray(x, dtype=float)
     dof = np.asarray(dof, dtype=float)
-    out = np.asarray(scipy.stats.chi2.logsf(x, dof), dtype=float)
+    with np.errstate(divide="ignore"):
+        out = np.asarray(np.log(scipy.special.chdtrc(dof, x)), dtype=float)
     far = ~np.isfinite(out)
     if np.any(far):
         s, y = np.broadcast_to(dof / 2.0, x.shape)[far], x[far] / 2.0
@@ -361,3 +364,24 @@ def _fisher_rows(logp: np.ndarray, readable: np.ndarray) -> np.ndarray:
     statistic = -2.0 * np.where(readable, logp, 0.0)[live].sum(axis=1)
     out[live] = chi2_logsf(statistic, 2 * lines[live])
     return out
+
+
+def local_maxima(x) -> np.ndarray:
+    """Indices of the local maxima of ``x``: samples higher than both neighbours, a flat
+    top counted once at its middle; the ends are not maxima. What
+    ``scipy.signal.find_peaks(x)`` returns with no conditions (scipy.signal is not imported:
+    ~0.5 s at start-up); a test checks the two agree.
+
+    >>> local_maxima([0, 2, 1, 3, 3, 3, 0, 5]).tolist()
+    [1, 4]
+    """
+    x = np.asarray(x, dtype=float)
+    if x.size < 3:
+        return np.zeros(0, dtype=int)
+    change = np.flatnonzero(np.diff(x))              # x[i] != x[i + 1]
+    starts = np.concatenate(([0], change + 1))       # runs of equal values
+    ends = np.concatenate((change, [x.size - 1]))
+    v = x[starts]
+    peak = np.zeros(v.size, dtype=bool)
+    peak[1:-1] = (v[1:-1] > v[:-2]) & (v[1:-1] > v[2:])
+    return (starts[peak] + ends[peak]) // 2

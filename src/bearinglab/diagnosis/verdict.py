@@ -182,9 +182,7 @@ def label_peaks(spec, decision: dict, fams: list[Family], masked: dict, count: i
     """The ``count`` most significant local maxima of ``spec`` up to ``max_frequency``,
     labelled by the accepted families' lines or as a masked discrete line (shaft,
     supply, mesh harmonic of any order)."""
-    import scipy.signal
-
-    from .statistics import bin_logp
+    from .statistics import bin_logp, local_maxima
 
     z, f = spec.z, spec.frequency
     res = spec.resolution
@@ -192,7 +190,7 @@ def label_peaks(spec, decision: dict, fams: list[Family], masked: dict, count: i
     if inside.size < 3:
         return []
     zi = z[inside]
-    index, _ = scipy.signal.find_peaks(zi)
+    index = local_maxima(zi)
     logp = bin_logp(zi[index], spec.nu)
     keep = set(index[logp + math.log(inside.size) < math.log(0.01)].tolist())
     by_name = {fam.name: fam for fam in fams}

@@ -13,7 +13,6 @@ from __future__ import annotations
 from typing import NamedTuple
 
 import numpy as np
-import scipy.signal
 
 from ..errors import InputError
 from .spectra import check_window, overlapping, rate, samples, segment
@@ -60,6 +59,8 @@ def coherence(x, y, sample_rate, segment_length=None, overlap=0.5,
     >>> bool(np.allclose(c.coherence, 1.0)), bool(np.allclose(c.phase_deg, 0.0))
     (True, True)
     """
+    import scipy.signal  # imported here: it costs ~0.5 s at start-up
+
     x = samples(x, "x")
     y = samples(y, "y")
     if y.size != x.size:

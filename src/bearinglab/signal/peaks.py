@@ -24,7 +24,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-import scipy.signal
 
 from ..errors import InputError
 
@@ -97,6 +96,8 @@ def find_peaks(spectrum, count: int = 10, min_frequency: float = 0.0,
     >>> [p["frequency_hz"] for p in find_peaks((f, a))]
     [30.0, 70.0]
     """
+    import scipy.signal  # imported here: it costs ~0.5 s at start-up
+
     try:
         frequency = np.asarray(spectrum[0], dtype=float)
         amplitude = np.asarray(spectrum[1], dtype=float)

@@ -30,7 +30,6 @@ from __future__ import annotations
 
 import numpy as np
 import scipy.fft
-import scipy.signal
 
 from ..errors import InputError
 from .spectra import rate, samples
@@ -125,6 +124,8 @@ def discrete_random_separation(x, sample_rate, segment_length: int | None = None
     >>> bool(np.std(d - tone) < 0.2), bool(abs(np.std(r) - 0.5) < 0.1)
     (True, True)
     """
+    import scipy.signal  # imported here: it costs ~0.5 s at start-up
+
     x = samples(x)
     fs = rate(sample_rate)
     n = x.size
