@@ -239,6 +239,7 @@ DIMENSIONLESS: dict[str, str] = {
     "ring_model": "the sound model of the inner ring", "ball_model": "the sound model of a ball",
     "ball_source": "what drives a ball's sound", "velocity_bands_source": "where the bands "
     "come from", "velocity_bands_note": "how the bands were computed",
+    "field_point_source": "given, or the rule that placed the default field point",
     # friction and life
     "friction_coefficient": "mu of seed 003's table", "friction_type": "the table's row",
     "equivalent_load_source": "how the equivalent load was found",

@@ -6,7 +6,8 @@ pressure grow about linearly with the waviness amplitude.
 The paper's bearing and surface parameters are not in the seed text; ours are chosen, not
 fitted: the C&U 608 of seed 003 (catalogue estimate, 720 rpm, 50 N), random surfaces of
 seed 002 eq. 6 on both raceways (RMS 0.1 and 0.2 um, correlation lengths 1.0 mm round and
-0.5 mm across, seeds 1 and 2), four shaft revolutions (lines 3 Hz apart). A line at a
+0.5 mm across, seeds 1 and 2), four shaft revolutions (lines 3 Hz apart), at seed 003's
+point A (10 mm from the centre, straight up). A line at a
 random frequency would sit within one bin of a candidate about half the time, so eight
 lines all matching by chance has odds of about 1 in 400.
 On the inner race the ball-pass lines are carried round by the shaft, so they show as
@@ -14,7 +15,6 @@ k BPFI +- f_i sidebands too; that is the model's output, not a rule coded in.
 """
 
 import functools
-import math
 
 import numpy as np
 import pytest
@@ -22,12 +22,13 @@ import pytest
 from bearinglab.catalog import bearing_from_designation
 from bearinglab.imperfections import Imperfections, RandomSurface
 from bearinglab.kinematics import defect_frequencies
-from bearinglab.noise import bearing_noise
+from bearinglab.noise import SEED003_POINT_A, bearing_noise
 from bearinglab.operating import OperatingCondition
 from bearinglab.signal import find_peaks
+from bearinglab.units import rpm_to_rad_s
 
 BEARING, _ = bearing_from_designation("608")
-CONDITION = OperatingCondition(radial_load=50.0, shaft_speed=720 * math.pi / 30)
+CONDITION = OperatingCondition(radial_load=50.0, shaft_speed=rpm_to_rad_s(720.0))
 
 
 @functools.cache
@@ -35,7 +36,7 @@ def _sound(amplitude):
     surfaces = [RandomSurface.for_bearing(BEARING, race, amplitude, 1.0e-3, 0.5e-3, seed=s)
                 for race, s in (("inner", 1), ("outer", 2))]
     return bearing_noise(BEARING, CONDITION, Imperfections(surfaces=surfaces), revolutions=4,
-                         points=4096).sound
+                         points=4096, point=SEED003_POINT_A).sound
 
 
 def test_pressure_peaks_sit_at_ball_pass_frequencies_and_harmonics():

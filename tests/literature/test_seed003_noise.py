@@ -9,13 +9,15 @@ the SPL rises with the waviness amplitude (fig. 17, "roughly linear"), the speed
 irregularly, without a clear trend, with the waviness number 5-9 (figs. 15-16).
 
 The published level itself is a case in bearinglab.validation.seed003_noise (a known
-failure there, with the reason). The paper's Table 1 (bearing parameters) and its waviness amplitude are not in the seed
-text; the values used here are chosen, not fitted, in docs/capabilities/noise.md:
+failure there, with the reason). The paper's Table 1 (bearing parameters) and its
+waviness amplitude are not in the seed text; the values used here are chosen, not
+fitted, in docs/capabilities/noise.md:
 608 geometry from the catalogue estimate (Z = 7, D_w = 3.85 mm, d_m = 15 mm, P_d =
 7.5 um), waviness of order 7 and amplitude 0.2 um on both raceways (phase 0), ball-size
-errors uniform in a 2 um band (seed 1), point A straight above the centre. The "mean SPL"
-is the time average of the SPL-time curve (:meth:`SoundPressure.spl_time`), as in the
-paper's figures 14-20.
+errors uniform in a 2 um band (seed 1), point A straight above the centre (10 mm from
+it, given explicitly: the library's default point lies outside the bearing). The "mean
+SPL" is ``spl_time_mean_db``, the time average of the SPL-time curve
+(:meth:`SoundPressure.spl_time`), as in the paper's figures 14-20.
 """
 
 from __future__ import annotations

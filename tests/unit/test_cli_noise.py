@@ -13,6 +13,7 @@ from bearinglab.cli import main
 NOISE = ["noise", "608", "--speed-rpm", "720", "--radial-load-n", "50"]
 FORMS = ["--waviness", "inner:order=7,amplitude_um=0.2", "--waviness",
          "outer:order=7,amplitude_um=0.2", "--ball-size-error-um", "2", "--seed", "1"]
+POINT_A = ["--distance-mm", "10"]  # seed 003's point A, inside the 608 (radius 11 mm)
 FAST = ["--points", "256"]          # one cage revolution (0.224 s) at ~1.1 kHz
 EXAMPLE = Path(__file__).parents[2] / "examples" / "seed003_608_noise.py"
 
@@ -52,12 +53,13 @@ def base():
 
     buffer = io.StringIO()
     with contextlib.redirect_stdout(buffer):
-        assert main([*NOISE, *FORMS, *FAST, "--json"]) == 0
+        assert main([*NOISE, *FORMS, *FAST, *POINT_A, "--json"]) == 0
     return json.loads(buffer.getvalue())
 
 
 def test_noise_json_keys_and_values(base):
-    for key in ("spl_mean_db", "spl_max_db", "spl_db", "spl_inner_ring_db", "spl_balls_db",
+    for key in ("spl_time_mean_db", "spl_time_max_db", "spl_leq_db", "spl_leq_inner_ring_db",
+                "spl_leq_balls_db", "field_point_source",
                 "velocity_bands_um_s", "velocity_bands_hz", "velocity_bands_source",
                 "velocity_bands_note", "peaks", "kinematic", "imperfections", "seed",
                 "speed_rpm", "radial_load_n", "distance_mm", "points", "duration_s",
@@ -67,16 +69,17 @@ def test_noise_json_keys_and_values(base):
         assert math.isfinite(value), path
     assert base["speed_rpm"] == 720 and base["radial_load_n"] == 50 and base["distance_mm"] == 10
     assert base["points"] == 256 and base["seed"] == 1
-    assert 0 < base["spl_mean_db"] < base["spl_max_db"]
-    assert base["spl_inner_ring_db"] > base["spl_balls_db"]
+    assert 0 < base["spl_time_mean_db"] < base["spl_time_max_db"]
+    assert base["spl_leq_inner_ring_db"] > base["spl_leq_balls_db"]
     bands = base["velocity_bands_um_s"]
     assert set(bands) == {"low", "medium", "high"} and all(v > 0 for v in bands.values())
-    assert base["velocity_bands_hz"] == {"low": [50.0, 300.0], "medium": [300.0, 1800.0],
-                                         "high": [1800.0, 10000.0]}
-    # 256 points over 0.224 s cannot resolve 10 kHz: the rigid dynamic model gives the bands
+    # ISO 15242's 1800 rpm edges scaled to 720 rpm (x 0.4)
+    assert base["velocity_bands_hz"] == {"low": [20.0, 120.0], "medium": [120.0, 720.0],
+                                         "high": [720.0, 4000.0]}
+    # 256 points over 0.224 s cannot resolve 4 kHz: the rigid dynamic model gives the bands
     assert base["velocity_bands_source"] == "rigid model"
-    assert base["velocity_bands_sample_rate_hz"] == pytest.approx(25600.0)
-    assert base["velocity_bands_duration_s"] >= 0.2
+    assert base["velocity_bands_sample_rate_hz"] == pytest.approx(10240.0)
+    assert base["velocity_bands_duration_s"] >= 0.5      # ten periods of 20 Hz
     imp = base["imperfections"]
     assert [w["order"] for w in imp["waviness"]] == [7, 7]
     assert len(imp["ball_size_errors"]["ball_size_errors_um"]) == 7
@@ -98,20 +101,21 @@ def test_spl_grows_with_the_waviness_amplitude(capsys, base):
     levels = []
     for amplitude in ("0.1", "0.4"):
         d = run_json(capsys, *NOISE, "--waviness", f"inner:order=7,amplitude_um={amplitude}",
-                     "--waviness", f"outer:order=7,amplitude_um={amplitude}", *FAST)
-        levels.append(d["spl_mean_db"])
+                     "--waviness", f"outer:order=7,amplitude_um={amplitude}", *FAST,
+                     *POINT_A)
+        levels.append(d["spl_time_mean_db"])
     # without ball-size errors the pressure is about proportional to the amplitude (+12 dB
     # for 4x); the base case (0.2 um, with ball errors) lies between
     assert levels[1] - levels[0] == pytest.approx(12.0, abs=2.0)
-    assert levels[0] < base["spl_mean_db"] < levels[1]
+    assert levels[0] < base["spl_time_mean_db"] < levels[1]
 
 
 def test_seed_makes_the_ball_errors_reproducible(capsys, base):
-    again = run_json(capsys, *NOISE, *FORMS, *FAST)
-    other = run_json(capsys, *NOISE, *FORMS[:-1], "2", *FAST)
+    again = run_json(capsys, *NOISE, *FORMS, *FAST, *POINT_A)
+    other = run_json(capsys, *NOISE, *FORMS[:-1], "2", *FAST, *POINT_A)
     errors = base["imperfections"]["ball_size_errors"]["ball_size_errors_um"]
     assert again["imperfections"]["ball_size_errors"]["ball_size_errors_um"] == errors
-    assert again["spl_mean_db"] == base["spl_mean_db"]
+    assert again["spl_time_mean_db"] == base["spl_time_mean_db"]
     assert other["imperfections"]["ball_size_errors"]["ball_size_errors_um"] != errors
 
 
@@ -136,18 +140,60 @@ def test_human_output_and_plot(tmp_path, capsys):
 
 @pytest.mark.slow
 def test_bands_come_from_the_orbit_when_it_is_sampled_finely_enough(capsys):
-    """4600 instants over one cage revolution (0.224 s) is 20.5 kHz: the orbit itself
-    resolves the ISO bands; its low band agrees with the rigid model's (quasi-static
-    below the resonances)."""
+    """At 720 rpm the ISO bands reach 4 kHz and start at 20 Hz: 4100 instants over 0.5 s
+    (8.2 kHz) let the orbit itself resolve them; its low band agrees with the rigid
+    model's (quasi-static below the resonances)."""
     orbit = run_json(capsys, *NOISE, "--waviness", "outer:order=8,amplitude_um=0.5",
-                     "--points", "4600")
+                     "--duration-s", "0.5", "--points", "4100")
     rigid = run_json(capsys, *NOISE, "--waviness", "outer:order=8,amplitude_um=0.5",
                      *FAST, "--bands-from", "rigid")
     assert orbit["velocity_bands_source"] == "orbit"
-    assert orbit["velocity_bands_sample_rate_hz"] == pytest.approx(4600 / 0.2242, rel=1e-3)
+    assert orbit["velocity_bands_sample_rate_hz"] == pytest.approx(4100 / 0.5, rel=1e-3)
     assert rigid["velocity_bands_source"] == "rigid model"
     low = orbit["velocity_bands_um_s"]["low"]
     assert low == pytest.approx(rigid["velocity_bands_um_s"]["low"], rel=0.25)
+
+
+def test_default_field_point_lies_outside_the_bearing(capsys, base):
+    """Issue 14: the default point is 10 mm outside the outside diameter (the 608's radius
+    is 11 mm), not seed 003's point A 10 mm from the centre, which lies inside it."""
+    d = run_json(capsys, *NOISE, "--waviness", "inner:order=7,amplitude_um=0.2", "--points",
+                 "128")
+    assert d["distance_mm"] == pytest.approx(21.0) and d["angle_deg"] == 90
+    assert d["field_point_source"].startswith("default: 10 mm outside")
+    assert not any("outside radius" in w for w in d["warnings"])
+    assert base["field_point_source"] == "given"
+    assert any("inside the bearing's outside radius" in w for w in base["warnings"])
+
+
+def test_the_command_and_the_report_give_the_same_numbers(capsys):
+    """Issue 12: one ISO 15242 computation (and one sound) for the command and the report:
+    `noise --json` equals the report's sections for the same bearing, speed and load."""
+    from bearinglab.catalog import bearing_from_designation
+    from bearinglab.operating import OperatingCondition
+    from bearinglab.report import vibration
+    from bearinglab.report.context import Context
+    from bearinglab.report.document import number
+    from bearinglab.units import rpm_to_rad_s
+
+    cli = run_json(capsys, "noise", "6205", "--speed-rpm", "1797", "--radial-load-n", "1000")
+    bearing, _ = bearing_from_designation("6205")
+    ctx = Context(bearing=bearing, condition=OperatingCondition(
+        radial_load=1000.0, shaft_speed=rpm_to_rad_s(1797.0)))
+    html, _ = vibration.bands(ctx)
+    vibration.noise(ctx)
+    report = ctx.results["noise"].to_dict()
+    assert cli["velocity_bands_source"] == report["velocity_bands_source"] == "rigid model"
+    for band in ("low", "medium", "high"):
+        assert cli["velocity_bands_um_s"][band] == pytest.approx(
+            report["velocity_bands_um_s"][band], rel=1e-9)
+        assert cli["velocity_bands_hz"][band] == pytest.approx(report["velocity_bands_hz"][band])
+    for key in ("spl_leq_db", "spl_time_mean_db", "distance_mm"):
+        assert cli[key] == pytest.approx(report[key], rel=1e-9), key
+    assert cli["velocity_bands_hz"]["high"][1] == pytest.approx(10e3 * 1797 / 1800)
+    # the page's table shows the same value
+    medium = number(cli["velocity_bands_um_s"]["medium"])
+    assert f'<td class="num">{medium}</td>' in html, medium
 
 
 @pytest.mark.parametrize("args, words", [

@@ -60,7 +60,7 @@ def test_spl_of_an_rms_pressure_of_2e_5_pa_is_zero():
     p_e = sound_pressure(T, ball_velocity=u, **kw).effective_pressure()
     r = sound_pressure(T, ball_velocity=u * REFERENCE_PRESSURE / p_e, **kw)
     assert r.spl() == pytest.approx(0.0, abs=1e-9)
-    assert r.to_dict()["spl_mean_db"] == pytest.approx(0.0, abs=1e-6)   # a pure tone
+    assert r.to_dict()["spl_time_mean_db"] == pytest.approx(0.0, abs=1e-6)   # a pure tone
 
 
 # ---------------------------------------------------------------- pulsating sphere, eq. 23
@@ -199,7 +199,7 @@ def test_directivity_is_symmetric_for_a_symmetric_source():
     np.testing.assert_allclose(d.levels["balls"][1], d.levels["balls"][0], atol=1e-9)
     np.testing.assert_allclose(d.levels["balls"][3], d.levels["balls"][2], atol=1e-9)
     assert d.levels["inner_ring"][0] > res.directivity([math.pi / 2]).levels["inner_ring"][0]
-    assert len(d.to_dict()["spl_total_db"]) == 4
+    assert len(d.to_dict()["spl_leq_total_db"]) == 4
 
 
 def test_result_summary_plot_and_table():
@@ -209,14 +209,15 @@ def test_result_summary_plot_and_table():
     u = np.repeat(_tone(200.0, 1e-5)[:, None, None], 7, axis=1).repeat(2, axis=2)
     res = sound_pressure(T, v, u, psi, bearing, point=(0.012, 0.7))
     out = res.to_dict()
-    for key in ("spl_db", "spl_mean_db", "spl_max_db", "spl_inner_ring_db", "spl_balls_db",
-                "spl_inner_ring_x_db", "spl_balls_y_db", "effective_pressure_pa"):
+    for key in ("spl_leq_db", "spl_time_mean_db", "spl_time_max_db", "spl_leq_inner_ring_db",
+                "spl_leq_balls_db", "spl_leq_inner_ring_x_db", "spl_leq_balls_y_db",
+                "effective_pressure_pa"):
         assert math.isfinite(out[key]), key
-    assert out["spl_max_db"] >= out["spl_mean_db"]
+    assert out["spl_time_max_db"] >= out["spl_time_mean_db"]
     assert out["ring_radius_mm"] == pytest.approx(0.5 * bearing.inner_raceway_diameter * 1e3)
     # on the y axis a ring vibrating along x is silent: reported as None, not -300 dB
     up = sound_pressure(T, v, u, psi, bearing).to_dict()
-    assert up["spl_inner_ring_x_db"] is None and up["angle_deg"] == 90.0
+    assert up["spl_leq_inner_ring_x_db"] is None and up["angle_deg"] == 90.0
     assert list(res.to_pandas().columns)[:2] == ["time_s", "p_inner_ring_x_pa"]
     windowed = res.spl_time(window=0.01)
     assert windowed.shape == T.shape and np.all(np.isfinite(windowed))
@@ -260,8 +261,9 @@ def test_bearing_noise_runs_the_orbit_and_radiates_it():
                           ball_model=model)
         out = n.to_dict()
         assert out["points"] == 256 and out["speed_rpm"] == pytest.approx(720.0)
-        levels[model] = out["spl_balls_db"]
-        assert math.isfinite(out["spl_mean_db"]) and math.isfinite(out["spl_inner_ring_db"])
+        levels[model] = out["spl_leq_balls_db"]
+        assert math.isfinite(out["spl_time_mean_db"])
+        assert math.isfinite(out["spl_leq_inner_ring_db"])
     assert levels["oscillating"] < levels["radial"]     # a dipole radiates less near the ball
     with pytest.raises(InputError):
         bearing_noise(bearing, condition, imperfections, ball_model="quadrupole")

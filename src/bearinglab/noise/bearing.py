@@ -16,7 +16,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
-from .model import FieldPoint
+from ..units import rad_s_to_rpm
+from .model import FieldPoint, default_field_point
 from .radiation import sound_pressure
 from .result import SoundPressure
 
@@ -42,11 +43,11 @@ class BearingNoise:
     ball_model: str
 
     def to_dict(self) -> dict:
-        """The sound's summary (``spl_mean_db`` ...) with the operating point and the
-        imperfections, in engineering units."""
+        """The sound's summary (the levels of :data:`.result.LEVELS` ...) with the
+        operating point and the imperfections, in engineering units."""
         o = self.orbit
         out = self.sound.to_dict()
-        out.update({"speed_rpm": o.condition.shaft_speed * 30.0 / math.pi,
+        out.update({"speed_rpm": rad_s_to_rpm(o.condition.shaft_speed),
                     "radial_load_n": o.condition.radial_load, "ball_model": self.ball_model,
                     "points": int(o.time.size),
                     "orbit_peak_to_peak_um": o.peak_to_peak * 1e6})
@@ -82,7 +83,9 @@ def bearing_noise(bearing, condition, imperfections=None, *, duration: float | N
     points : int, optional
         Instants of the time sweep; default SAMPLE_RATE x length (at least 256).
     point : FieldPoint or (distance, angle), optional
-        Field point [m, rad]; default 10 mm straight up (seed 003 point A).
+        Field point [m, rad]; default :func:`.model.default_field_point`: 10 mm outside
+        the bearing's outside diameter, straight up (seed 003's point A, 10 mm from the
+        centre, lies inside most bearings: pass :data:`.model.SEED003_POINT_A` for it).
     medium : Air, optional
         The air [kg/m^3, m/s].
     ball_model : {"radial", "xy", "oscillating"}
@@ -103,8 +106,8 @@ def bearing_noise(bearing, condition, imperfections=None, *, duration: float | N
     turns with the shaft, the ball errors with the cage), so the velocities are
     detrended before the transform (``detrend=True`` of :func:`.sound_pressure`). The
     quasi-static orbit has kinks where a ball enters or leaves contact: its velocity
-    jumps, the pressure (~ d v/dt at low frequency) spikes there and ``spl_max_db`` grows
-    with ``points``; the mean SPL (the seed's figure-14 value) does not.
+    jumps, the pressure (~ d v/dt at low frequency) spikes there and ``spl_time_max_db``
+    grows with ``points``; ``spl_time_mean_db`` (the seed's figure-14 "mean SPL") does not.
     """
     from ..quasistatic.orbit import inner_ring_orbit, record_length
 
@@ -116,6 +119,8 @@ def bearing_noise(bearing, condition, imperfections=None, *, duration: float | N
                            orbit_options.get("contact_angle"))
     if points is None:
         points = max(256, math.ceil(SAMPLE_RATE * length))
+    if point is None:
+        point = default_field_point(bearing)[0]
     orbit = inner_ring_orbit(bearing, condition, imperfections=imperfections,
                              duration=length, points=points, **orbit_options)
     t = orbit.time

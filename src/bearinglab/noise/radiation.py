@@ -26,7 +26,7 @@ import math
 import numpy as np
 
 from ..errors import InputError
-from .model import Air, FieldPoint
+from .model import Air, FieldPoint, default_field_point
 from .result import Directivity, SoundPressure
 from .sources import (
     CYLINDER_FORMS,
@@ -251,8 +251,10 @@ def sound_pressure(time, inner_ring_velocity=None, ball_velocity=None, ball_angl
         inner groove bottom, ``inner_raceway_diameter``), the balls have radius D_w / 2 on
         a circle of radius d_m / 2.
     point : FieldPoint or (distance, angle), optional
-        The field point [m, rad]; default ``FieldPoint()``: 10 mm from the centre (seed
-        003's point A), straight up.
+        The field point [m, rad]; default with a ``bearing``
+        :func:`.model.default_field_point` (10 mm outside its outside diameter, straight
+        up), without one ``FieldPoint()``: 10 mm from the centre (seed 003's point A),
+        straight up.
     medium : Air, optional
         rho_0 [kg/m^3] and c_0 [m/s]; default ``Air()`` (20 deg C).
     ring_radius, ball_radius, pitch_radius : float, optional
@@ -284,7 +286,8 @@ def sound_pressure(time, inner_ring_velocity=None, ball_velocity=None, ball_angl
     t = _time(time)
     n = t.size
     fs = float((n - 1) / (t[-1] - t[0]))
-    point = FieldPoint() if point is None else point
+    if point is None:
+        point = FieldPoint() if bearing is None else default_field_point(bearing)[0]
     medium = Air() if medium is None else medium
     if not isinstance(point, FieldPoint):
         try:

@@ -16,12 +16,22 @@ from .sources import effective_pressure, sound_pressure_level
 
 #: Floor of the envelope in the SPL(t) curve, so that its log stays finite [Pa].
 ENVELOPE_FLOOR = 1e-12
+#: The levels of :meth:`SoundPressure.to_dict` [dB re 20 uPa]: key -> its definition. The
+#: parts (inner ring, balls and their x / y contributions) are L_eq: ``spl_leq_<part>_db``.
+LEVELS = {
+    "spl_leq_db": "L_eq: eq. 27 with p_e the RMS pressure over the whole record (the "
+                  "energy mean)",
+    "spl_time_mean_db": "time mean of the level curve SPL(t) (Hilbert envelope), seed 003's "
+                        "'mean SPL'",
+    "spl_time_max_db": "maximum of the level curve SPL(t)",
+}
 
 
 @dataclass(frozen=True)
 class Directivity:
-    """SPL (eq. 27) round the bearing at one distance (seed 002: the radiation is
-    directional). ``angle`` [rad]; ``levels`` part name -> SPL at each angle [dB]."""
+    """L_eq (eq. 27 over the record) round the bearing at one distance (seed 002: the
+    radiation is directional). ``angle`` [rad]; ``levels`` part name -> L_eq at each angle
+    [dB]."""
 
     angle: np.ndarray
     distance: float
@@ -30,7 +40,7 @@ class Directivity:
     def to_dict(self) -> dict:
         """JSON-ready: angles in degrees, levels in dB (None where a part is silent)."""
         return {"angle_deg": np.degrees(self.angle).tolist(), "distance_mm": self.distance * 1e3,
-                **{f"spl_{k}_db": [_finite_or_none(v) for v in lv]
+                **{f"spl_leq_{k}_db": [_finite_or_none(v) for v in lv]
                    for k, lv in self.levels.items()}}
 
     def plot(self, ax=None):
@@ -45,7 +55,7 @@ class Directivity:
         closed = np.append(self.angle, self.angle[0])
         for name, lv in self.levels.items():
             ax.plot(closed, np.append(lv, lv[0]), label=name)
-        ax.set_title(f"SPL [dB] at {self.distance * 1e3:g} mm")
+        ax.set_title(f"L_eq [dB] at {self.distance * 1e3:.4g} mm")
         ax.legend(fontsize=8, loc="lower right")
         return fig, ax
 
@@ -65,16 +75,19 @@ class SoundPressure:
     figures 12-13 A/B) when they exist; ``point``, ``medium``, ``options`` (radii [m],
     models) and the input velocities (for :meth:`directivity`).
 
-    Levels:
+    Levels (one definition per number, :data:`LEVELS`):
 
-    * :meth:`spl` -- eq. 27 with p_e the RMS over the whole record (the equivalent level);
+    * :meth:`spl` -- eq. 27 with p_e the RMS over the whole record: the equivalent
+      continuous level L_eq (the energy mean; IEC 61672-1's L_eq,T), ``spl_leq_db`` of
+      :meth:`to_dict`, and ``spl_leq_<part>_db`` for the inner ring or the balls alone;
     * :meth:`spl_time` -- the level as it changes in time (the seed's figures 12-14 plot
       SPL against time over one cycle): by default from the instantaneous amplitude
       |p + j H[p]| / sqrt(2) (Hilbert envelope; for a pure tone it is the RMS level at
       every instant), or from a sliding RMS window;
-    * ``spl_mean_db`` / ``spl_max_db`` of :meth:`to_dict` -- the time average and the
-      maximum of that curve: the seed's "mean SPL" (29.832 dB for its 608) is read as the
-      mean of the SPL-time curve of its figure 14.
+    * ``spl_time_mean_db`` / ``spl_time_max_db`` of :meth:`to_dict` -- the time average
+      (of the levels in dB, not of the energy) and the maximum of that curve: the seed's
+      "mean SPL" (29.832 dB for its 608) is read as the mean of the SPL-time curve of its
+      figure 14.
     """
 
     time: np.ndarray
@@ -170,14 +183,15 @@ class SoundPressure:
                            {k: np.array(v) for k, v in levels.items()})
 
     def to_dict(self) -> dict:
-        """JSON-ready summary: levels in dB (None for a silent part), pressures in Pa."""
+        """JSON-ready summary: the levels of :data:`LEVELS` and the parts' L_eq in dB (None
+        for a silent part), pressures in Pa."""
         total_t = self.spl_time("total")
-        out = {"spl_db": _finite_or_none(self.spl("total")),
-               "spl_mean_db": _finite_or_none(np.mean(total_t)),
-               "spl_max_db": _finite_or_none(np.max(total_t))}
+        out = {"spl_leq_db": _finite_or_none(self.spl("total")),
+               "spl_time_mean_db": _finite_or_none(np.mean(total_t)),
+               "spl_time_max_db": _finite_or_none(np.max(total_t))}
         for name in self.parts:
             if name != "total":
-                out[f"spl_{name}_db"] = _finite_or_none(self.spl(name))
+                out[f"spl_leq_{name}_db"] = _finite_or_none(self.spl(name))
         out.update({
             "effective_pressure_pa": self.effective_pressure("total"),
             "peak_pressure_pa": float(np.max(np.abs(self.parts["total"]))),
@@ -185,7 +199,7 @@ class SoundPressure:
             "angle_deg": math.degrees(self.point.angle),
             "sample_rate_hz": self.sample_rate,
             "duration_s": self.time.size / self.sample_rate,
-            "density_kg_m3": self.medium.density, "sound_speed_m_per_s": self.medium.sound_speed,
+            "density_kg_m3": self.medium.density, "sound_speed_m_s": self.medium.sound_speed,
             "ring_model": self.options["ring_model"], "ball_source": self.options["ball_source"],
         })
         for key in ("ring_radius", "ball_radius", "pitch_radius"):
@@ -201,8 +215,8 @@ class SoundPressure:
                              **{f"p_{k}_pa": v for k, v in self.parts.items()}})
 
     def plot(self, axes=None):
-        """Pressure against time (ring, balls, total) and SPL(t) with its mean; returns
-        (fig, axes)."""
+        """Pressure against time (ring, balls, total) and SPL(t), labelled with its time
+        mean and the L_eq of each part; returns (fig, axes)."""
         from ..plotting import _pyplot
 
         plt = _pyplot()
@@ -215,12 +229,13 @@ class SoundPressure:
             if name in self.parts:
                 axes[0].plot(t, self.parts[name], lw=0.8, label=name)
                 level = self.spl_time(name)
-                axes[1].plot(t, level, lw=0.8, label=f"{name}: mean {np.mean(level):.1f} dB")
+                axes[1].plot(t, level, lw=0.8, label=f"{name}: time mean {np.mean(level):.1f} "
+                                                     f"dB, L_eq {self.spl(name):.1f} dB")
         axes[0].set_ylabel("sound pressure [Pa]")
-        axes[1].set_ylabel("SPL [dB re 20 uPa]")
+        axes[1].set_ylabel("SPL(t) [dB re 20 µPa]")
         axes[1].set_xlabel("time [s]")
-        axes[0].set_title(f"point at {self.point.distance * 1e3:g} mm, "
-                          f"{math.degrees(self.point.angle):g} deg: SPL {self.spl():.1f} dB")
+        axes[0].set_title(f"point at {self.point.distance * 1e3:.4g} mm, "
+                          f"{math.degrees(self.point.angle):g} deg: L_eq {self.spl():.1f} dB")
         for ax in axes:
             ax.legend(fontsize=8)
             ax.grid(alpha=0.3)

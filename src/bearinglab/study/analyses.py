@@ -236,8 +236,9 @@ def _ring_modes(case: dict, seed: int) -> dict:
 
 
 # ------------------------------------------------------------------ noise
-_NOISE_OUT = {"spl_db": "f", "spl_mean_db": "f", "spl_max_db": "f", "spl_inner_ring_db": "f",
-              "spl_balls_db": "f", "effective_pressure_pa": "f", "peak_pressure_pa": "f",
+_NOISE_OUT = {"spl_leq_db": "f", "spl_time_mean_db": "f", "spl_time_max_db": "f",
+              "spl_leq_inner_ring_db": "f", "spl_leq_balls_db": "f",
+              "effective_pressure_pa": "f", "peak_pressure_pa": "f",
               "orbit_peak_to_peak_um": "f"}
 
 
