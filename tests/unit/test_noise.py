@@ -329,3 +329,112 @@ def test_medium_and_point_are_validated():
         cylinder_transfer([100.0], 5e-3, 1e-3)
     with pytest.raises(InputError):
         pulsating_sphere_transfer([-1.0], 2e-3, 1e-2)
+
+
+# ---------------------------------------------------------------- the field point, the
+# ISO 15242 bands and the whole analysis (issues 12 and 14)
+
+
+def _608():
+    return BallBearing(ball_count=7, ball_diameter=3.85e-3, pitch_diameter=15e-3, bore=8e-3,
+                       outside_diameter=22e-3, width=7e-3, diametral_clearance=7.5e-6)
+
+
+def test_default_field_point_lies_outside_the_bearing():
+    from bearinglab.noise import FIELD_POINT_GAP, SEED003_POINT_A, default_field_point
+
+    point, rule = default_field_point(_608())
+    assert point.distance == pytest.approx(11e-3 + FIELD_POINT_GAP)     # D / 2 + 10 mm
+    assert point.angle == pytest.approx(0.5 * math.pi) and "D / 2 = 11 mm" in rule
+    # without D: the outer raceway's radius plus half a ball, d_m / 2 + D_w
+    bare = BallBearing(ball_count=7, ball_diameter=3.85e-3, pitch_diameter=15e-3)
+    point, rule = default_field_point(bare)
+    assert point.distance == pytest.approx(7.5e-3 + 3.85e-3 + FIELD_POINT_GAP)
+    assert "no D given" in rule
+    assert SEED003_POINT_A.distance == 0.010 < 0.5 * _608().outside_diameter
+
+
+def test_a_point_inside_the_balls_path_is_refused_and_inside_the_ring_warned():
+    from bearinglab.noise import check_field_point, least_field_distance
+
+    b = _608()
+    least = least_field_distance(b)
+    assert least == pytest.approx(0.5 * (15e-3 + 3.85e-3))
+    for d in (5e-3, least):
+        with pytest.raises(InputError) as err:
+            check_field_point(b, FieldPoint(d, 0.3))
+        assert err.value.parameter == "point"
+    inside = check_field_point(b, FieldPoint(0.010, 0.3))
+    assert len(inside) == 1 and "inside the bearing's outside radius" in inside[0]
+    assert check_field_point(b, FieldPoint(0.012, 0.3)) == []
+
+
+def test_iso_bands_are_the_relative_radial_velocity_with_speed_scaled_edges():
+    """The one ISO 15242 computation: RMS of the inner ring's velocity relative to the outer
+    ring along y (the rigid model's disp_y, differentiated in time), in the 1800 rpm band
+    edges scaled to the speed."""
+    from bearinglab.dynamics import simulate
+    from bearinglab.imperfections import Imperfections, Waviness
+    from bearinglab.noise import bearing_velocity_bands
+    from bearinglab.noise.bands import _detrended_velocity
+    from bearinglab.operating import OperatingCondition
+    from bearinglab.signal import velocity_bands
+    from bearinglab.units import rpm_to_rad_s
+
+    b = _608()
+    condition = OperatingCondition(radial_load=50.0, shaft_speed=rpm_to_rad_s(3600.0))
+    forms = Imperfections([Waviness("outer", 8, 0.3e-6)])
+    r = bearing_velocity_bands(b, condition, forms, source="rigid")
+    assert r.source == "rigid model" and r.speed_rpm == pytest.approx(3600.0)
+    assert r.bands.bands == {"low": (100.0, 600.0), "medium": (600.0, 3600.0),
+                             "high": (3600.0, 20000.0)}
+    assert r.sample_rate == pytest.approx(51200.0) and r.duration == pytest.approx(0.1)
+    sim = simulate(b, condition, (), imperfections=forms, duration=0.1, sample_rate=51200.0)
+    y = sim.signal.channels["disp_y"]
+    t = np.arange(y.size) / 51200.0
+    direct = velocity_bands(_detrended_velocity(t, y), 51200.0, "velocity", speed_rpm=3600.0)
+    for band in ("low", "medium", "high"):
+        assert r[band] == pytest.approx(getattr(direct, band), rel=1e-12)
+    # outer waviness of order q = Z + 1 = 8 moves the ring radially at q FTF, about 180 Hz
+    # at 3600 rpm: inside the low band (100-600 Hz), which carries most of the velocity
+    assert r["low"] > r["medium"]
+    d = r.to_dict()
+    assert d["velocity_bands_um_s"]["low"] == r["low"] and d["velocity_bands_hz"]["high"][1] == 2e4
+    assert list(r.to_pandas().columns) == ["band", "low_hz", "high_hz", "velocity_um_s"]
+    with pytest.raises(InputError) as err:
+        bearing_velocity_bands(b, condition, source="ear")
+    assert err.value.parameter == "bands_from"
+
+
+def test_noise_analysis_result_table_and_figure():
+    import matplotlib.pyplot as plt
+
+    from bearinglab.imperfections import Imperfections, Waviness
+    from bearinglab.noise import LEVEL_ROWS, noise_analysis
+    from bearinglab.operating import OperatingCondition
+    from bearinglab.units import rpm_to_rad_s
+
+    stages = []
+    r = noise_analysis(_608(), OperatingCondition(radial_load=50.0,
+                                                  shaft_speed=rpm_to_rad_s(720.0)),
+                       Imperfections([Waviness("inner", 7, 0.2e-6)]), points=128,
+                       progress=lambda f, stage: stages.append((f, stage)))
+    assert stages[0] == (0.0, "orbit and sound pressure") and stages[-1] == (1.0, "done")
+    d = r.to_dict()
+    assert d["distance_mm"] == pytest.approx(21.0) and d["field_point_source"].startswith(
+        "default")
+    assert [k for _, k in LEVEL_ROWS if k not in d] == []
+    assert d["spl_time_max_db"] >= d["spl_time_mean_db"]
+    assert d["spl_leq_db"] == pytest.approx(r.sound.spl())
+    assert d["velocity_bands_um_s"]["low"] == r.bands["low"]
+    assert d["peaks"] and d["peaks_resolution_hz"] == pytest.approx(r.spectrum.resolution)
+    table = r.to_pandas()
+    assert list(table.columns) == ["quantity", "key", "value", "unit"]
+    assert set(table["unit"]) == {"dB", "Pa", "µm/s"}
+    fig, axes = r.plot()
+    assert len(axes) == 4
+    plt.close(fig)
+    with pytest.raises(InputError) as err:
+        noise_analysis(_608(), OperatingCondition(radial_load=50.0, shaft_speed=75.0),
+                       point=(0.008, 0.0))
+    assert err.value.parameter == "point"
