@@ -46,7 +46,6 @@ Usage::
 from __future__ import annotations
 
 import argparse
-import math
 import sys
 import time
 from pathlib import Path
@@ -59,6 +58,7 @@ from bearinglab.kinematics import defect_frequencies
 from bearinglab.noise import SEED003_POINT_A, bearing_noise
 from bearinglab.operating import OperatingCondition
 from bearinglab.signal import find_peaks, match_peaks
+from bearinglab.units import rpm_to_rad_s
 
 #: The base case: seed 003's operating point and our choices for what it does not print.
 BASE = {"rpm": 720.0, "load": 50.0, "amplitude": 0.2e-6, "order": 7, "band": 2e-6}
@@ -84,7 +84,7 @@ def run(points: int, rpm: float, load: float, amplitude: float, order: int, band
     imperfections = Imperfections(
         [Waviness("inner", order, amplitude), Waviness("outer", order, amplitude)],
         ball_size_errors=BallSizeErrors.random(bearing.ball_count, band, seed=SEED))
-    condition = OperatingCondition(radial_load=load, shaft_speed=rpm * math.pi / 30.0)
+    condition = OperatingCondition(radial_load=load, shaft_speed=rpm_to_rad_s(rpm))
     return bearing_noise(bearing, condition, imperfections, points=points,
                          point=SEED003_POINT_A)
 

@@ -23,6 +23,7 @@ from bearinglab.noise import (
     sound_pressure_level,
     velocity_from_positions,
 )
+from bearinglab.units import rpm_to_rad_s
 
 FS = 48000.0
 N = 4800                       # 0.1 s: 10 Hz lines, whole periods of every test tone
@@ -253,7 +254,7 @@ def test_bearing_noise_runs_the_orbit_and_radiates_it():
 
     bearing = BallBearing(ball_count=7, ball_diameter=3.969e-3, pitch_diameter=15e-3,
                           diametral_clearance=7.5e-6)
-    condition = OperatingCondition(radial_load=50.0, shaft_speed=720 * math.pi / 30)
+    condition = OperatingCondition(radial_load=50.0, shaft_speed=rpm_to_rad_s(720.0))
     imperfections = Imperfections([Waviness("inner", 6, 0.2e-6), Waviness("outer", 8, 0.2e-6)])
     levels = {}
     for model in ("radial", "xy", "oscillating"):
@@ -379,7 +380,6 @@ def test_iso_bands_are_the_relative_radial_velocity_with_speed_scaled_edges():
     from bearinglab.noise.bands import _detrended_velocity
     from bearinglab.operating import OperatingCondition
     from bearinglab.signal import velocity_bands
-    from bearinglab.units import rpm_to_rad_s
 
     b = _608()
     condition = OperatingCondition(radial_load=50.0, shaft_speed=rpm_to_rad_s(3600.0))
@@ -412,7 +412,6 @@ def test_noise_analysis_result_table_and_figure():
     from bearinglab.imperfections import Imperfections, Waviness
     from bearinglab.noise import LEVEL_ROWS, noise_analysis
     from bearinglab.operating import OperatingCondition
-    from bearinglab.units import rpm_to_rad_s
 
     stages = []
     r = noise_analysis(_608(), OperatingCondition(radial_load=50.0,

@@ -16,6 +16,8 @@ the 1800 min^-1 edges); the 1800 min^-1 bands 50-300, 300-1800 and 1800-10000 Hz
 those used with ISO 15242 test rigs, e.g. Adamczak S. et al., Materials 13(23) 5440
 (2020), on 6304 bearings. The full text of ISO 15242-2 was not available here, so the
 speed scaling (``speed_rpm``) is the rule of the part-4 table applied to ball bearings.
+The bands of a bearing at an operating point (:func:`bearinglab.noise.bearing_velocity_bands`,
+used by the ``noise`` command and the report) always scale the edges to its speed.
 
 The RMS in a band is integrated over the FFT lines f_lo <= f < f_hi of the whole record
 (Parseval; rectangular window, so a tone on a line gives its exact RMS and the energy of
