@@ -163,6 +163,9 @@ def test_default_field_point_lies_outside_the_bearing(capsys, base):
     assert d["field_point_source"].startswith("default: 10 mm outside")
     assert not any("outside radius" in w for w in d["warnings"])
     assert base["field_point_source"] == "given"
+    side = run_json(capsys, *NOISE, "--angle-deg", "0", "--points", "64")
+    assert side["distance_mm"] == pytest.approx(21.0) and side["angle_deg"] == 0
+    assert side["field_point_source"].endswith("at 0 deg from +x")
     assert any("inside the bearing's outside radius" in w for w in base["warnings"])
 
 

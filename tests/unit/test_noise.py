@@ -352,6 +352,8 @@ def test_default_field_point_lies_outside_the_bearing():
     point, rule = default_field_point(bare)
     assert point.distance == pytest.approx(7.5e-3 + 3.85e-3 + FIELD_POINT_GAP)
     assert "no D given" in rule
+    point, rule = default_field_point(_608(), math.radians(45.0))
+    assert point.angle == pytest.approx(math.radians(45.0)) and rule.endswith("at 45 deg from +x")
     assert SEED003_POINT_A.distance == 0.010 < 0.5 * _608().outside_diameter
 
 

@@ -119,16 +119,12 @@ def noise_command(
     bearing, _ = resolve_bearing(designation, geometry)
     imperfections = forms.build(bearing, seed)
     condition = OperatingCondition(radial_load=radial_load_n, shaft_speed=rpm_to_rad_s(speed_rpm))
-    point = None
-    if distance_mm is not None or angle_deg != 90.0:
-        from ..noise import default_field_point
-
-        distance = (default_field_point(bearing)[0].distance if distance_mm is None
-                    else distance_mm * 1e-3)
-        point = FieldPoint(distance, math.radians(angle_deg))
+    angle = math.radians(angle_deg)
+    point = None if distance_mm is None else FieldPoint(distance_mm * 1e-3, angle)
     with progress_bar("orbit and sound pressure", enabled=not json_output) as update:
         try:
             result = noise_analysis(bearing, condition, imperfections, point=point,
+                                    angle=None if point is not None else angle,
                                     duration=duration_s, points=points,
                                     bands_from=bands_from.value,
                                     progress=lambda f, stage: update(f, stage))

@@ -151,8 +151,8 @@ class NoiseAnalysis:
 
 
 def noise_analysis(bearing, condition, imperfections=None, *, point=None,
-                   duration: float | None = None, points: int | None = None,
-                   bands_from: str = "auto",
+                   angle: float | None = None, duration: float | None = None,
+                   points: int | None = None, bands_from: str = "auto",
                    progress: Callable[[float, str], None] | None = None,
                    **noise_options) -> NoiseAnalysis:
     """Noise of ``bearing`` under ``condition`` with ``imperfections``: SPL at a point
@@ -170,6 +170,9 @@ def noise_analysis(bearing, condition, imperfections=None, *, point=None,
     point : FieldPoint or (distance, angle), optional
         Field point [m, rad]; default :func:`.model.default_field_point` (10 mm outside
         the outside diameter, straight up). It must lie outside the balls' path.
+    angle : float, optional
+        Direction of the default point, from +x towards +y [rad] (with ``point`` None;
+        default straight up).
     duration : float, optional
         Length of the orbit record [s]; default one cage revolution.
     points : int, optional
@@ -206,8 +209,11 @@ def noise_analysis(bearing, condition, imperfections=None, *, point=None,
         raise InputError("radial_load", condition.radial_load,
                          "a radial load > 0 [N] (the orbit needs a load)")
     if point is None:
-        point, source = default_field_point(bearing)
+        point, source = default_field_point(bearing, angle)
     else:
+        if angle is not None:
+            raise InputError("angle", angle, "None when a point is given (its angle is "
+                             "the point's)")
         if not isinstance(point, FieldPoint):
             try:
                 point = FieldPoint(*point)

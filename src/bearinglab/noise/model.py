@@ -81,10 +81,11 @@ def outer_radius(bearing) -> tuple[float, str]:
     return 0.5 * bearing.pitch_diameter + bearing.ball_diameter, "d_m / 2 + D_w (no D given)"
 
 
-def default_field_point(bearing) -> tuple[FieldPoint, str]:
+def default_field_point(bearing, angle: float | None = None) -> tuple[FieldPoint, str]:
     """The field point used when none is given: :data:`FIELD_POINT_GAP` (10 mm) outside
-    the bearing's outside radius (:func:`outer_radius`), straight up (+y, above the
-    bearing, against a downward load), and the rule in words.
+    the bearing's outside radius (:func:`outer_radius`), in the direction ``angle`` [rad]
+    from +x towards +y (default straight up, +y: above the bearing, against a downward
+    load), and the rule in words.
 
     >>> from bearinglab.geometry import BallBearing
     >>> b = BallBearing(ball_count=7, ball_diameter=3.85e-3, pitch_diameter=15e-3,
@@ -94,9 +95,14 @@ def default_field_point(bearing) -> tuple[FieldPoint, str]:
     (21.0, 'default: 10 mm outside the outside radius D / 2 = 11 mm, straight up')
     """
     radius, how = outer_radius(bearing)
+    up = 0.5 * math.pi
+    angle = up if angle is None else angle
+    point = FieldPoint(radius + FIELD_POINT_GAP, angle)
+    where = ("straight up" if math.isclose(point.angle, up, abs_tol=1e-12)
+             else f"at {math.degrees(point.angle):.4g} deg from +x")
     rule = (f"default: {FIELD_POINT_GAP * 1e3:g} mm outside the outside radius {how} = "
-            f"{radius * 1e3:.4g} mm, straight up")
-    return FieldPoint(radius + FIELD_POINT_GAP, 0.5 * math.pi), rule
+            f"{radius * 1e3:.4g} mm, {where}")
+    return point, rule
 
 
 def least_field_distance(bearing) -> float:
