@@ -16,9 +16,9 @@ from bearinglab.noise import (
     Air,
     FieldPoint,
     cylinder_transfer,
+    field,
     oscillating_sphere_transfer,
     pulsating_sphere_transfer,
-    radiation,
     sound_pressure,
     sound_pressure_level,
     velocity_from_positions,
@@ -102,7 +102,7 @@ def test_moving_balls_taylor_series_agrees_across_bin_widths(monkeypatch):
     u = 1e-4 * rng.standard_normal((N, 7, 2))
     kw = {"ball_velocity": u, "ball_angle": psi, "ball_radius": 2e-3, "pitch_radius": 7.5e-3}
     wide = sound_pressure(T, **kw).pressure("balls")
-    monkeypatch.setattr(radiation, "TAYLOR_LIMIT", 0.3)
+    monkeypatch.setattr(field, "TAYLOR_LIMIT", 0.3)
     narrow = sound_pressure(T, **kw).pressure("balls")
     np.testing.assert_allclose(wide, narrow, atol=1e-10 * np.abs(wide).max())
 

@@ -11,6 +11,7 @@ import numpy as np
 import scipy.signal
 
 from ..errors import InputError
+from .field import pressures_at
 from .model import Air, FieldPoint
 from .sources import effective_pressure, sound_pressure_level
 
@@ -169,12 +170,10 @@ class SoundPressure:
                   else np.atleast_1d(np.asarray(angles, dtype=float)))
         if angles.ndim != 1 or angles.size == 0 or not np.all(np.isfinite(angles)):
             raise InputError("angles", angles, "a 1-D array of finite angles [rad]")
-        from .radiation import _pressures
-
         d = self.point.distance if distance is None else distance
         levels: dict[str, list] = {}
         for a in angles:
-            parts = _pressures(self.inputs, FieldPoint(d, float(a)), self.medium, self.options)
+            parts = pressures_at(self.inputs, FieldPoint(d, float(a)), self.medium, self.options)
             for name in ("inner_ring", "balls", "total"):
                 if name in parts:
                     levels.setdefault(name, []).append(
