@@ -36,7 +36,7 @@ from bearinglab.kinematics import defect_frequencies
 from bearinglab.signal import read_signal
 
 CLASSES = ("normal", "outer", "inner", "ball")
-FAULTS = ("outer race", "inner race", "ball", "cage")
+FAULTS = ("outer_race", "inner_race", "ball", "cage")
 FAMILIES = ("outer_score", "inner_score", "ball_score", "cage_score", "shaft")
 SEGMENT_S = 1.0
 REPO = Path(__file__).resolve().parents[1]

@@ -94,6 +94,7 @@ UNITS: dict[str, Unit] = _units(
     ("hours", "h", 3600.0, "time (life)"),
     ("million_rev", "10⁶ rev", 1e6, "life in revolutions"),
     ("hz", "Hz", 1.0, "frequency"),
+    ("per_s", "1/s", 1.0, "rate (items per second)"),
     ("khz", "kHz", 1e3, "frequency"),
     ("rpm", "rpm", RPM, "speed (to rad/s)"),
     ("rad_s", "rad/s", 1.0, "angular speed"),
@@ -278,11 +279,34 @@ DIMENSIONLESS: dict[str, str] = {
     "errors": "count", "known_failures": "count", "unexpected_passes": "count",
     "ok": "true when every case passed or failed as documented",
     "sections": "the report's sections", "failed_sections": "sections whose analysis failed",
+    # studies and data sets
+    "analysis": "the analysis a study runs", "inputs": "input columns (with their units)",
+    "outputs": "output columns (with their units)", "scheduler": "the dask scheduler used",
+    "workers": "dask workers", "dashboard": "the dask dashboard address (or null)",
+    "partitions": "Parquet partitions", "partitions_computed": "partitions computed this run",
+    "partitions_reused": "partitions found done", "cases_computed": "cases computed this run",
+    "failed_cases": "cases that failed (their error text is in the table)",
+    "records": "records (a count, or per-record rows)",
+    "records_computed": "records computed this run", "records_failed": "records that failed",
+    "records_written": "records written", "open_with": "how to open the data set",
+    # the diagnosis benchmark
+    "folder": "the folder of labelled recordings", "columns": "the methods' columns",
+    "confusion": "map: label -> verdict -> count", "recall": "map: label -> recall",
+    "expected": "the fault family the label names (null: healthy)",
+    "fault": "the label's fault (labels.csv)", "right": "true when the verdict is right",
+    "smith_randall_2015": "Smith & Randall's diagnosability category of the record",
+    "threshold": "the significance a family must reach (-log10 of the false-alarm "
+                 "probability, corrected)",
+    "raw": "the verdict of the envelope of the raw signal",
+    "cpw": "the verdict after cepstral pre-whitening",
+    "drs-sk": "the verdict after discrete/random separation and a kurtogram band",
+    "all": "the verdict of the three methods together",
 }
 
 #: Keys whose members are named by data, not by the contract (e.g. ``sources``), so the
 #: members' keys are not checked.
-MAPS = frozenset({"sources", "geometry_sources", "scores", "stats", "families", "tolerances"})
+MAPS = frozenset({"sources", "geometry_sources", "scores", "stats", "families", "tolerances",
+                  "confusion", "recall", "significance"})
 
 
 def unit_of(key: str) -> Unit | None:
@@ -330,7 +354,8 @@ module: `python -m bearinglab.units > docs/json.md`.
 - Numbers are finite: a command never prints NaN or infinity (it fails with one line instead);
   a value that does not apply is `null`.
 - **Fault families** are spelled `outer_race`, `inner_race`, `ball` and `cage` everywhere
-  (keys of `scores`, values of `likely_fault` and `faults`); `null` is "no fault detected".
+  (keys of `scores` and `families`, the members of `faults`, `primary_fault`); `likely_fault`
+  is one of them, `"compound: a + b"` for several, or `null` for "no fault detected".
 """
 
 

@@ -39,7 +39,7 @@ def test_simulate_outer_race_json(capsys):
         assert key in d, key
     assert d["model"] == "rigid" and d["sample_rate_hz"] == 20000.0 and d["duration_s"] == 0.5
     assert d["kinematic"]["bpfo_hz"] == pytest.approx(BPFO_HZ, abs=0.01)
-    assert d["likely_fault"] == "outer race" and d["faults"] == ["outer race"]
+    assert d["likely_fault"] == "outer_race" and d["faults"] == ["outer_race"]
     bpfo = [p for p in d["peaks"] if p["matched"] == "bpfo" and p["harmonic"] == 1]
     assert bpfo and bpfo[0]["frequency_hz"] == pytest.approx(BPFO_HZ, abs=2.0)  # 2 Hz bins
     assert {"frequency_hz", "amplitude", "matched", "harmonic"} <= d["peaks"][0].keys()
@@ -69,8 +69,8 @@ def test_simulate_output_then_analyze(tmp_path, capsys, suffix, extra):
     assert a["file"] == str(path)
     assert a["channel"] == ("channel_1" if suffix == ".wav" else "acc_y")
     assert a["sample_rate_hz"] == pytest.approx(20000.0)
-    assert a["likely_fault"] == "outer race"
-    assert a["scores"]["outer race"] > a["scores"]["inner race"]
+    assert a["likely_fault"] == "outer_race"
+    assert a["scores"]["outer_race"] > a["scores"]["inner_race"]
     assert any(p["matched"] == "bpfo" and abs(p["frequency_hz"] - BPFO_HZ) <= 2.0
                for p in a["peaks"])
 
@@ -80,7 +80,7 @@ def test_analyze_reads_the_speed_from_the_file(tmp_path, capsys):
     run_json(capsys, *SIM, *OUTER, "-o", str(path))
     a = run_json(capsys, "analyze", str(path), "--designation", "ER-16K")
     assert a["kinematic"]["speed_rpm"] == pytest.approx(1750.0)
-    assert a["likely_fault"] == "outer race"
+    assert a["likely_fault"] == "outer_race"
     # a WAV file records no speed
     wav = tmp_path / "s.wav"
     run_json(capsys, *SIM, *OUTER, "-o", str(wav))
@@ -89,7 +89,7 @@ def test_analyze_reads_the_speed_from_the_file(tmp_path, capsys):
 
 def test_inner_race_is_diagnosed(capsys):
     d = run_json(capsys, *SIM, "--defect", "inner:width_mm=1.2,depth_mm=0.25")
-    assert d["likely_fault"] == "inner race"
+    assert d["likely_fault"] == "inner_race"
     assert any(p["matched"] == "bpfi" for p in d["peaks"])
 
 

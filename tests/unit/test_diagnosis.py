@@ -69,17 +69,17 @@ def test_outer_race_found_by_each_method(kin, method):
     d = analyze_signal(impacts(kin.hz("bpfo"), jitter=0.01, shaft_hz=kin.shaft_hz), FS, kin,
                        methods=method)
     assert isinstance(d, Diagnosis)
-    assert d.verdict == "outer race" and d.likely_fault == "outer race"
-    assert d.families["outer race"]["passed"] and not d.families["inner race"]["passed"]
-    assert d.families["outer race"]["significance"] > d.threshold
-    assert d.families["outer race"]["fundamental_hz"] == pytest.approx(kin.hz("bpfo"), rel=0.02)
+    assert d.verdict == "outer_race" and d.likely_fault == "outer_race"
+    assert d.families["outer_race"]["passed"] and not d.families["inner_race"]["passed"]
+    assert d.families["outer_race"]["significance"] > d.threshold
+    assert d.families["outer_race"]["fundamental_hz"] == pytest.approx(kin.hz("bpfo"), rel=0.02)
 
 
 def test_inner_race_with_shaft_sidebands(kin):
     x = modulated(impacts(kin.hz("bpfi"), jitter=0.01), kin.shaft_hz)
     d = analyze_signal(x, FS, kin, methods="raw")
-    assert d.verdict == "inner race"
-    lines = d.families["inner race"]["lines"]
+    assert d.verdict == "inner_race"
+    lines = d.families["inner_race"]["lines"]
     assert any(ln["kind"] == "sideband" for ln in lines)
     assert any(p.get("sideband_of") == "bpfi" and p["modulation"] == "shaft" for p in d.peaks)
 
@@ -136,8 +136,8 @@ def test_two_faults_never_make_a_third(kin):
     outer = impacts(kin.hz("bpfo"), jitter=0.005)
     inner = modulated(impacts(kin.hz("bpfi"), jitter=0.005, noise=0.0, seed=5), kin.shaft_hz)
     d = analyze_signal(outer + inner, FS, kin, methods="raw")
-    assert d.primary_fault in ("outer race", "inner race")
-    assert set(d.faults) <= {"outer race", "inner race"}
+    assert d.primary_fault in ("outer_race", "inner_race")
+    assert set(d.faults) <= {"outer_race", "inner_race"}
     assert d.verdict == (d.faults[0] if len(d.faults) == 1
                          else "compound: " + " + ".join(d.faults))
 
@@ -152,7 +152,7 @@ def test_to_dict_and_pandas(kin):
     assert out["methods"] == ["raw", "cpw"]
     assert out["false_alarm_probability"] == 0.01
     assert out["test_level"] == pytest.approx(0.01 / 8)  # 4 families x 2 methods
-    assert set(out["families"]) == {"outer race", "inner race", "ball", "cage"}
+    assert set(out["families"]) == {"outer_race", "inner_race", "ball", "cage"}
     table = d.to_pandas()
     assert list(table["frequency_hz"]) == [p["frequency_hz"] for p in d.peaks]
     assert len(d.families_table()) == 4
@@ -180,7 +180,7 @@ def test_speed_check_and_auto(kin, er16k):
     d = analyze_signal(x, FS, wrong, methods="raw", shaft_speed="auto")
     assert d.speed["source"] == "signal"
     assert d.speed["used_rpm"] == pytest.approx(1750.0, rel=2e-3)
-    assert d.verdict == "outer race"
+    assert d.verdict == "outer_race"
     d = analyze_signal(x, FS, er16k, shaft_speed="auto", methods="raw",
                        speed_range=(1500 * math.pi / 30, 1900 * math.pi / 30))
     assert d.speed["used_rpm"] == pytest.approx(1750.0, rel=2e-3)
@@ -192,7 +192,7 @@ def test_simulated_records_default_to_the_raw_envelope(er16k):
                    duration=0.5, sample_rate=FS)
     d = analyze_signal(sim.signal, None, sim.kinematic)
     assert d.methods == ("raw",) and d.channel == "acc_y"
-    assert d.verdict == "outer race"
+    assert d.verdict == "outer_race"
 
 
 def test_healthy_simulation_is_no_fault(er16k):
@@ -231,8 +231,8 @@ def test_leakage_mask_grows_with_the_line():
 
 def test_tolerance_overrides():
     t = tolerances({"outer": 0.01, "ball": (0.05, 0.01)})
-    assert t["outer race"] == (0.01, 0.01) and t["ball"] == (0.05, 0.01)
-    assert t["inner race"] == (0.02, 0.02)
+    assert t["outer_race"] == (0.01, 0.01) and t["ball"] == (0.05, 0.01)
+    assert t["inner_race"] == (0.02, 0.02)
     for bad in ({"shaft": 0.01}, {"ball": 0.5}, {"ball": "x"}):
         with pytest.raises(InputError):
             tolerances(bad)

@@ -60,10 +60,10 @@ def test_analyze_json_and_options(folder, capsys):
                          "--tolerance", "ball=0.05", "--json")
     assert code == 0, err
     d = json.loads(out)
-    assert d["verdict"] == "outer race" and d["likely_fault"] == "outer race"
+    assert d["verdict"] == "outer_race" and d["likely_fault"] == "outer_race"
     assert d["methods"] == ["raw", "cpw"] and d["tolerances"]["ball"] == {"below": 0.05,
                                                                           "above": 0.05}
-    assert d["families"]["outer race"]["passed"] and d["speed"]["source"] == "given"
+    assert d["families"]["outer_race"]["passed"] and d["speed"]["source"] == "given"
     code, out, err = run(capsys, "analyze", str(folder / "noise.npz"), "--designation",
                          "ER-16K", "--speed-rpm", "1750", "--json")
     assert json.loads(out)["likely_fault"] is None
@@ -123,7 +123,7 @@ def test_benchmark_json_and_html(folder, capsys, tmp_path):
     assert code == 0, err
     d = json.loads(out)
     assert d["total"] == 3 and d["right"]["raw"] == 3
-    assert d["confusion"]["raw"]["outer race"]["outer race"] == 1
+    assert d["confusion"]["raw"]["outer_race"]["outer_race"] == 1
     assert d["recall"]["raw"]["no fault detected"] == 1.0
     assert page.read_text(encoding="utf-8").count("<img") >= 4   # matrix + 3 spectra
     code, out, _ = run(capsys, "benchmark", str(folder), "--method", "raw,cpw", "--jobs", "2")

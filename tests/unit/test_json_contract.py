@@ -33,7 +33,14 @@ COMMANDS = {
     "life": ["life", "6205", "--speed-rpm", "3000", "--radial-load-n", "1000"],
     "report": ["report", "6205", "--speed-rpm", "1797", "--radial-load-n", "1000", "-o",
                "tmp/report.html"],
+    "study": ["study", "frequencies", "--set", "designation=6205", "--set",
+              "speed_rpm=1000,2000", "-o", "tmp/study", "--scheduler", "serial"],
+    "dataset": ["dataset", "tmp/data", "--records", "2", "--duration-s", "0.3",
+                "--scheduler", "serial"],
 }
+#: Fault families, one spelling everywhere (docs/json.md).
+FAMILIES = {"outer_race", "inner_race", "ball", "cage"}
+REAL = Path(__file__).resolve().parents[3] / "shared" / "data" / "real"
 
 
 def _offending(obj, path: str = "") -> list[str]:
@@ -68,17 +75,61 @@ def outputs(tmp_path_factory):
             code = main([*argv, "--json"])
         assert code == 0, name
         out[name] = json.loads(buffer.getvalue())
-    buffer = io.StringIO()
-    with contextlib.redirect_stdout(buffer):
-        assert main(["analyze", str(tmp / "sim.npz"), "--designation", "6205", "--speed-rpm",
-                     "1800", "--json"]) == 0
-    out["analyze"] = json.loads(buffer.getvalue())
+    later = {"analyze": ["analyze", str(tmp / "sim.npz"), "--designation", "6205",
+                         "--speed-rpm", "1800"]}
+    if (REAL / "labels.csv").exists():      # a labelled folder of one real record
+        import shutil
+
+        folder = tmp / "bench"
+        folder.mkdir()
+        shutil.copy(REAL / "cwru" / "12k_DE" / "130.mat", folder / "130.mat")
+        lines = (REAL / "labels.csv").read_text(encoding="utf-8").splitlines()
+        row = next(line for line in lines if line.startswith("cwru/12k_DE/130.mat"))
+        (folder / "labels.csv").write_text(
+            lines[0] + "\n" + row.replace("cwru/12k_DE/130.mat", "130.mat") + "\n",
+            encoding="utf-8")
+        later["benchmark"] = ["benchmark", str(folder)]
+    for name, argv in later.items():
+        buffer = io.StringIO()
+        with contextlib.redirect_stdout(buffer):
+            assert main([*argv, "--json"]) == 0, name
+        out[name] = json.loads(buffer.getvalue())
     return out
 
 
-@pytest.mark.parametrize("name", [*COMMANDS, "analyze"])
+@pytest.mark.parametrize("name", [*COMMANDS, "analyze", "benchmark"])
 def test_every_key_carries_its_unit_or_is_dimensionless(outputs, name):
+    if name not in outputs:
+        pytest.skip("the shared recordings are not here")
     assert _offending(outputs[name]) == []
+
+
+def _families_named(obj) -> set:
+    """Every fault family a diagnosis JSON names (scores, families, faults, verdicts)."""
+    named = set()
+    if isinstance(obj, dict):
+        for key, value in obj.items():
+            if key in ("scores", "families", "significance") and isinstance(value, dict):
+                named |= set(value)
+            elif key in ("faults",) and isinstance(value, list):
+                named |= {v for v in value if isinstance(v, str)}
+            elif key in ("likely_fault", "primary_fault", "expected") and isinstance(value,
+                                                                                     str):
+                named |= set(value.removeprefix("compound: ").split(" + "))
+            else:
+                named |= _families_named(value)
+    elif isinstance(obj, list):
+        for item in obj:
+            named |= _families_named(item)
+    return named
+
+
+@pytest.mark.parametrize("name", ["simulate", "analyze", "benchmark"])
+def test_one_spelling_of_the_fault_families(outputs, name):
+    if name not in outputs:
+        pytest.skip("the shared recordings are not here")
+    named = _families_named(outputs[name])
+    assert named and named <= FAMILIES, named
 
 
 def test_the_doc_is_generated_from_the_unit_table():

@@ -11,7 +11,7 @@ import pytest
 from bearinglab.catalog import bearing_from_designation
 from bearinglab.errors import InputError
 from bearinglab.kinematics import defect_frequencies
-from bearinglab.signal import Spectrum, diagnose, find_peaks, match_peaks
+from bearinglab.signal import Spectrum, find_peaks, match_peaks
 
 # CWRU drive-end 6205 at 1797 rpm: orders 0.39828, 3.5848, 5.4152, 2 BSF 4.7135
 SHAFT = 1797.0 / 60.0
@@ -212,85 +212,3 @@ def test_match_bad_inputs(kwargs, parameter):
     assert err.value.parameter == parameter
 
 
-# ---------------------------------------------------------------- diagnose
-
-def test_bpfo_series_is_an_outer_race_fault():
-    s = _spectrum([(SHAFT, 0.3)] + [(n * FREQS["bpfo"], 1.0 / n) for n in (1, 2, 3, 4)])
-    d = diagnose(match_peaks(find_peaks(s), FREQS))
-    assert d["likely_fault"] == "outer race"
-    assert d["lines"]["outer race"] == 4
-    assert d["scores"]["outer race"] > 0 and d["scores"]["inner race"] == 0
-    assert "bpfo" in d["reason"]
-    json.dumps(d)
-
-
-def test_inner_race_with_sidebands():
-    c = FREQS["bpfi"]
-    s = _spectrum([(c, 1.0), (c - SHAFT, 0.4), (c + SHAFT, 0.4), (2 * c, 0.5)])
-    assert diagnose(match_peaks(find_peaks(s), FREQS))["likely_fault"] == "inner race"
-
-
-def test_compound_fault():
-    s = _spectrum([(FREQS["bpfo"], 1.0), (2 * FREQS["bpfo"], 0.5),
-                   (FREQS["bpfi"], 0.9), (2 * FREQS["bpfi"], 0.5)])
-    d = diagnose(match_peaks(find_peaks(s), FREQS))
-    assert d["likely_fault"] == "compound: outer race + inner race"
-    assert d["primary_fault"] == "outer race"
-    assert d["faults"] == ["outer race", "inner race"]
-
-
-def test_a_weak_second_fault_is_reported():
-    # issue: the ball scored less than half the BPFO series and was dropped
-    s = _spectrum([(n * FREQS["bpfo"], 1.0 / n) for n in (1, 2, 3, 4)]
-                  + [(FREQS["ball_defect"], 0.2), (2 * FREQS["ball_defect"], 0.1)])
-    d = diagnose(match_peaks(find_peaks(s), FREQS), resolution=0.25)
-    assert d["scores"]["ball"] < 0.5 * d["scores"]["outer race"]
-    assert d["likely_fault"] == "compound: outer race + ball"
-    assert (d["primary_fault"], d["faults"]) == ("outer race", ["outer race", "ball"])
-
-
-def test_sidebands_or_slip_window_lines_make_no_second_fault():
-    bpfo = [(n * FREQS["bpfo"], 1.0 / n) for n in (1, 2, 3)]
-    # a weak BPFI line with its shaft sidebands: no harmonic of its own
-    inner = [(FREQS["bpfi"], 0.2), (FREQS["bpfi"] - SHAFT, 0.1), (FREQS["bpfi"] + SHAFT, 0.1)]
-    # ball lines 5 % slow: inside the slip window only
-    ball = [(0.95 * FREQS["ball_defect"], 0.2), (0.95 * 2 * FREQS["ball_defect"], 0.1)]
-    for extra in (inner, ball):
-        d = diagnose(match_peaks(bpfo + extra, FREQS))
-        assert d["faults"] == ["outer race"], d["reason"]
-    # alone, the same slow ball lines are the (primary) fault
-    assert diagnose(match_peaks(ball, FREQS))["likely_fault"] == "ball"
-
-
-def test_ftf_lines_next_to_ball_lines_are_its_modulation():
-    ball = [(FREQS["ball_defect"], 1.0), (2 * FREQS["ball_defect"], 0.5)]
-    cage = [(FREQS["ftf"], 0.8), (2 * FREQS["ftf"], 0.4)]
-    d = diagnose(match_peaks(ball + cage, FREQS))
-    assert d["faults"] == ["ball"] and d["lines"] == {
-        "outer race": 0, "inner race": 0, "ball": 4, "cage": 0}
-    assert diagnose(match_peaks(cage, FREQS))["likely_fault"] == "cage"
-
-
-def test_shaft_lines_alone_are_no_fault():
-    s = _spectrum([(n * SHAFT, 1.0 / n) for n in (1, 2, 3)])
-    d = diagnose(match_peaks(find_peaks(s), FREQS))
-    assert d["likely_fault"] is None
-    assert "shaft" in d["reason"]
-
-
-def test_one_line_is_not_enough():
-    d = diagnose(match_peaks([(FREQS["bpfo"], 1.0)], FREQS))
-    assert d["likely_fault"] is None and d["lines"]["outer race"] == 1
-    assert diagnose(match_peaks([(FREQS["bpfo"], 1.0)], FREQS), min_lines=1)[
-        "likely_fault"] == "outer race"
-
-
-def test_diagnose_bad_inputs():
-    for kwargs, parameter in (({"min_lines": 0}, "min_lines"), ({"tolerance": 0.0}, "tolerance"),
-                              ({"resolution": -1.0}, "resolution")):
-        with pytest.raises(InputError) as err:
-            diagnose([], **kwargs)
-        assert err.value.parameter == parameter
-    with pytest.raises(InputError) as err:
-        diagnose([{"frequency_hz": 1.0}])
-    assert err.value.parameter == "matched_peaks"

@@ -113,7 +113,7 @@ def test_simulate_with_diagnosis_and_a_cage_fault(tmp_path):
                                    "speed_rpm": 1797.0, "fault": ["outer", "cage"],
                                    "duration_s": 0.3}, output=tmp_path / "sim",
                       scheduler="serial").to_pandas()
-    assert table.loc[0, "likely_fault"] == "outer race" and pd.isna(table.loc[0, "error"])
+    assert table.loc[0, "likely_fault"] == "outer_race" and pd.isna(table.loc[0, "error"])
     assert table.loc[0, "bpfo_hz"] == pytest.approx(107.36, abs=0.01)
     assert "no cage defect model" in table.loc[1, "error"]
 

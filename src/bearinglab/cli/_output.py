@@ -125,7 +125,7 @@ def print_diagnosis(diag, title: str) -> None:
     console.print(_table(f"{title}: envelope lines (band {band}, resolution "
                          f"{diag.resolution:.3g} Hz)",
                          ["Hz", "amplitude", "matched", "deviation %"], peak_rows(diag.peaks)))
-    fault = diag.likely_fault or "none found"
+    fault = (diag.likely_fault or "no fault detected").replace("_", " ")
     console.print(f"likely fault: [bold]{escape(fault)}[/bold]")
     console.print(f"[dim]{escape(diag.reason)}[/dim]")
     if diag.ball_defect_frequency_hz is not None:

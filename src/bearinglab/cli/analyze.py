@@ -228,5 +228,5 @@ def print_verdict(diag, name: str, bearing) -> None:
              for p in diag.peaks]
     console.print(_table("Envelope lines", ["f [Hz]", "level over floor [-]", "matched",
                                             "deviation [%]"], lines))
-    console.print(f"verdict: [bold]{escape(diag.verdict)}[/bold]")
+    console.print(f"verdict: [bold]{escape(diag.verdict.replace('_', ' '))}[/bold]")
     console.print(f"[dim]{escape(diag.reason)}[/dim]")

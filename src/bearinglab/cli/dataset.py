@@ -125,13 +125,13 @@ def dataset(
     if json_output:
         _emit_json(d)
         return
-    rate = d["records_per_second"]
+    rate = d["records_per_s"]
     console.print(_table(f"data set {d['name']}", ["", "value", "unit"], [
         ["records written", d["records_written"], ""],
         ["records failed", d["records_failed"], ""],
         ["partitions computed / reused",
          f"{d['partitions_computed']} / {d['partitions_reused']}", ""],
-        ["wall time", d["seconds"], "s"],
+        ["wall time", d["wall_time_s"], "s"],
         ["records per second", "-" if rate is None else rate, "1/s"],
         ["workers", d["workers"], ""], ["scheduler", d["scheduler"], ""],
         ["output", d["output"], ""]]))

@@ -154,12 +154,12 @@ def _plot(result, path: Path, plot_of: str | None) -> None:
 
 def _print(result, table) -> None:
     d = result.to_dict()
-    rate = d["cases_per_second"]
+    rate = d["cases_per_s"]
     rows = [["analysis", d["analysis"], ""], ["cases", d["cases"], ""],
             ["failed cases", d["failed_cases"], ""],
             ["partitions computed / reused",
              f"{d['partitions_computed']} / {d['partitions_reused']}", ""],
-            ["wall time", d["seconds"], "s"],
+            ["wall time", d["wall_time_s"], "s"],
             ["cases per second", "-" if rate is None else rate, "1/s"],
             ["workers", d["workers"], ""], ["scheduler", d["scheduler"], ""],
             ["output", d["output"], ""]]

@@ -134,9 +134,9 @@ class DatasetResult:
                 "records_written": self.written, "records_failed": self.failed,
                 "partitions": self.partitions, "partitions_computed": self.computed,
                 "partitions_reused": self.partitions - self.computed,
-                "records_computed": self.computed_records, "seconds": self.seconds,
-                "records_per_second": self.records_per_second,
-                "worker_cpu_seconds": sum(self.worker_cpu_seconds.values()),
+                "records_computed": self.computed_records, "wall_time_s": self.seconds,
+                "records_per_s": self.records_per_second,
+                "worker_cpu_time_s": sum(self.worker_cpu_seconds.values()),
                 "workers": self.workers,
                 "scheduler": self.scheduler, "dashboard": self.dashboard,
                 "open_with": f"bearing_datasets.open({self.name!r}, "

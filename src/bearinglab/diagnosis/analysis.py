@@ -38,7 +38,7 @@ FALSE_ALARM = 0.01
 #: (docs/capabilities/diagnosis.md), scoring right Y records + healthy + MFPT minus twice
 #: the wrong faults: cpw 11 (8 of 12 Y, no wrong fault), all three 10 (9 Y), drs-sk 9 and
 #: raw 8 (all but cpw call record 118, a ball fault Smith & Randall find undiagnosable,
-#: "outer race").
+#: "outer_race").
 DEFAULT_METHODS = ("cpw",)
 #: Methods for a record simulated by bearinglab (no random slip: deterministic).
 SIMULATED_METHODS = ("raw",)
@@ -259,8 +259,8 @@ def analyze_signal(signal_or_array, sample_rate, frequencies, *, channel: str | 
     >>> x = np.exp(-since / 2e-3) * np.sin(2 * np.pi * 4e3 * t)
     >>> x = x + 0.2 * np.random.default_rng(0).standard_normal(t.size)
     >>> d = analyze_signal(x, fs, kin, methods="raw")   # strictly periodic: Method 1
-    >>> d.verdict, d.families["outer race"]["passed"], d.families["inner race"]["passed"]
-    ('outer race', True, False)
+    >>> d.verdict, d.families["outer_race"]["passed"], d.families["inner_race"]["passed"]
+    ('outer_race', True, False)
     >>> analyze_signal(np.random.default_rng(1).standard_normal(t.size), fs, kin,
     ...                methods="all").verdict
     'no fault detected'

@@ -23,9 +23,9 @@ from .methods import parse_methods
 
 #: Label in labels.csv -> the verdict that is right.
 EXPECTED = {"normal": "no fault detected", "healthy": "no fault detected",
-            "inner": "inner race", "outer": "outer race", "ball": "ball", "cage": "cage"}
+            "inner": "inner_race", "outer": "outer_race", "ball": "ball", "cage": "cage"}
 #: Rows and columns of the confusion matrix.
-CLASSES = ("no fault detected", "outer race", "inner race", "ball", "cage", "compound")
+CLASSES = ("no fault detected", "outer_race", "inner_race", "ball", "cage", "compound")
 
 
 def read_labels(folder) -> list[dict]:

@@ -42,24 +42,24 @@ from dataclasses import dataclass
 from ..errors import InputError
 
 #: Fault families, in the order they are reported when equally significant.
-FAMILIES = ("outer race", "inner race", "ball", "cage")
+FAMILIES = ("outer_race", "inner_race", "ball", "cage")
 #: Family -> name of its kinematic frequency (bearinglab.kinematics names).
-FREQUENCY = {"outer race": "bpfo", "inner race": "bpfi", "ball": "ball_defect", "cage": "ftf"}
+FREQUENCY = {"outer_race": "bpfo", "inner_race": "bpfi", "ball": "ball_defect", "cage": "ftf"}
 #: Family -> (modulating frequency name, sideband orders either side).
-SIDEBANDS = {"outer race": ("shaft", 1), "inner race": ("shaft", 2), "ball": ("ftf", 2),
+SIDEBANDS = {"outer_race": ("shaft", 1), "inner_race": ("shaft", 2), "ball": ("ftf", 2),
              "cage": (None, 0)}
 #: Default tolerance windows (below, above), fractions of the kinematic value.
-TOLERANCES = {"outer race": (0.02, 0.02), "inner race": (0.02, 0.02), "ball": (0.07, 0.02),
+TOLERANCES = {"outer_race": (0.02, 0.02), "inner_race": (0.02, 0.02), "ball": (0.07, 0.02),
               "cage": (0.02, 0.02)}
 #: Family -> sideband orders counted with its harmonics when asking whether the series
 #: stands without its sidebands: the first sidebands where the load zone modulates the
 #: defect deeply, once per revolution of what carries it (inner race: shaft; ball: cage;
 #: Randall & Antoni 2011, sec. 2 and fig. 4), so that the carriers may be weaker than
 #: their sidebands; none for the outer race, whose defect does not move.
-GATE_ORDERS = {"outer race": 0, "inner race": 1, "ball": 1, "cage": 0}
+GATE_ORDERS = {"outer_race": 0, "inner_race": 1, "ball": 1, "cage": 0}
 #: Keys accepted for a family in ``tolerances`` (JSON and CLI spellings too).
-ALIASES = {"outer race": "outer race", "outer": "outer race", "bpfo": "outer race",
-           "inner race": "inner race", "inner": "inner race", "bpfi": "inner race",
+ALIASES = {"outer_race": "outer_race", "outer": "outer_race", "bpfo": "outer_race",
+           "inner_race": "inner_race", "inner": "inner_race", "bpfi": "inner_race",
            "ball": "ball", "bsf": "ball", "ball_defect": "ball", "cage": "cage",
            "ftf": "cage"}
 #: Highest harmonic order read per family (the search stops at the upper frequency too).
@@ -94,7 +94,7 @@ def tolerances(overrides=None) -> dict[str, tuple[float, float]]:
     ``overrides`` maps a family (``outer``, ``inner race``, ``bpfi``, ``ball``, ``cage``...)
     to a fraction (the same below and above) or to (below, above); each in [0, 0.3).
 
-    >>> tolerances({"ball": 0.05})["ball"], tolerances()["outer race"]
+    >>> tolerances({"ball": 0.05})["ball"], tolerances()["outer_race"]
     ((0.05, 0.05), (0.02, 0.02))
     """
     out = dict(TOLERANCES)

@@ -19,7 +19,7 @@ class Diagnosis:
     Attributes
     ----------
     verdict : str
-        ``"no fault detected"``, a fault (``"outer race"``, ``"inner race"``, ``"ball"``,
+        ``"no fault detected"``, a fault (``"outer_race"``, ``"inner_race"``, ``"ball"``,
         ``"cage"``) or ``"compound: a + b"``.
     faults : tuple of str
         The faults found, most significant first.

@@ -159,7 +159,7 @@ def decide(spectra, fams: list[Family], base_valid: dict, max_frequency: float,
                 if 0 < i < spec.z.size:
                     mask_line(valid[spec.method], spec.z, i)
     modulation = []
-    if "cage" in accepted and ({"ball", "outer race"} & set(accepted)):
+    if "cage" in accepted and ({"ball", "outer_race"} & set(accepted)):
         accepted.remove("cage")
         modulation = ["cage"]
     elif "cage" in accepted and "ball" in best and \
@@ -223,7 +223,7 @@ def label_peaks(spec, decision: dict, fams: list[Family], masked: dict, count: i
             else:
                 peak.update(sideband_of=name, sideband_harmonic=line.n,
                             sideband_order=int(round(line.k)),
-                            modulation="shaft" if fam.name in ("outer race", "inner race")
+                            modulation="shaft" if fam.name in ("outer_race", "inner_race")
                             else "ftf")
         else:
             for name, orders in masked.items():

@@ -8,7 +8,7 @@ and 2007 (spectral kurtosis, kurtogram), SciPy (scipy.signal, scipy.io).
 from .bands import ISO15242_BANDS, VelocityBands, iso15242_bands, velocity_bands
 from .coherence import Coherence, coherence
 from .io import SUFFIXES, read_signal, write_signal
-from .peaks import diagnose, find_peaks, match_peaks
+from .peaks import find_peaks, match_peaks
 from .record import Signal
 from .spectra import (
     EnvelopeSpectrum,
@@ -23,7 +23,7 @@ from .spectra import (
 
 __all__ = [
     "ISO15242_BANDS", "SUFFIXES", "Coherence", "EnvelopeSpectrum", "KurtogramBand", "Signal",
-    "Spectrum", "VelocityBands", "amplitude_spectrum", "coherence", "diagnose", "envelope",
+    "Spectrum", "VelocityBands", "amplitude_spectrum", "coherence", "envelope",
     "envelope_spectrum", "find_peaks", "iso15242_bands", "match_peaks", "read_signal",
     "spectral_kurtosis", "spectral_kurtosis_band", "velocity_bands", "write_signal",
 ]

@@ -1,13 +1,13 @@
-"""Spectral peaks, their match to bearing defect frequencies, and a diagnosis.
+"""Spectral peaks and their match to bearing defect frequencies.
 
 Layer 3 (see docs/architecture.md): :func:`find_peaks` picks the lines of a spectrum
 (``scipy.signal.find_peaks`` with a prominence relative to the median level, a robust
 estimate of the noise floor); :func:`match_peaks` labels each line as a harmonic n f of
 a shaft or defect frequency (names as in :data:`bearinglab.kinematics.FREQUENCY_NAMES`,
 values in Hz from :func:`bearinglab.kinematics.defect_frequencies`) or as a modulation
-sideband n f_d +- k f_m; :func:`diagnose` turns the labels into the faults: a primary
-one and every other one whose own lines are significant (a compound fault). The rules
-are in those functions' docstrings and in docs/capabilities/signal.md.
+sideband n f_d +- k f_m. The rules are in those functions' docstrings and in
+docs/capabilities/signal.md; the diagnosis itself (a statistical test of each fault family
+against the noise floor) is :mod:`bearinglab.diagnosis`.
 
 Sources: the fault signatures (outer race: harmonics of BPFO; inner race: harmonics of
 BPFI with shaft-rate sidebands; ball: harmonics of the ball defect rate 2 BSF with cage-
@@ -39,11 +39,6 @@ MODULATION = {"bpfi": "shaft", "ball_defect": "ftf", "bsf": "ftf"}
 FAMILIES = {"ball_defect": ("bsf", 2)}
 #: Sideband orders k looked for in n f_d +- k f_m.
 SIDEBAND_ORDERS = 2
-#: Defect frequency name -> fault.
-FAULTS = {"bpfo": "outer race", "bpfi": "inner race", "bsf": "ball", "ball_defect": "ball",
-          "ftf": "cage"}
-_FAULT_ORDER = ("outer race", "inner race", "ball", "cage")
-_SIDEBAND_WEIGHT = 0.5  # a sideband supports its carrier's fault, less than a harmonic does
 #: Least match window, in bins of the spectrum: the bin holding a line is within half a
 #: bin of it, and noise can tip the maximum into the next bin.
 RESOLUTION_BINS = 1.0
@@ -312,111 +307,3 @@ def _label_sidebands(out: list[dict], freqs: dict, tolerance: float, slack: floa
             p.update(matched=None, harmonic=None, deviation=None, sideband_of=c["matched"],
                      sideband_harmonic=c["harmonic"], sideband_order=best[2],
                      modulation=best[3])
-
-
-def diagnose(matched_peaks, min_lines: int = 2, tolerance: float = 0.02,
-             resolution: float = 0.0) -> dict:
-    """The bearing faults shown by peaks labelled by :func:`match_peaks`.
-
-    Each fault scores sum(A / n) over its harmonic lines (amplitude A, order n: high
-    orders are likelier coincidences, as the match window widens with n) plus
-    0.5 sum(A / n) over its sidebands, and needs at least ``min_lines`` lines
-    (harmonics and sidebands). FTF lines next to ball lines (``min_lines`` or more) are
-    the cage-rate modulation of the ball defect, which the cage carries (Randall &
-    Antoni 2011, sec. 2): they count for the ball, as sidebands, not as a cage fault.
-    Reported are:
-
-    - the primary fault: the best-scoring one;
-    - every other fault whose own lines are significant, however weak next to the
-      primary: its 1x or 2x line and at least one more harmonic line, each well
-      matched (within max(``tolerance`` n f, one bin of ``resolution``) of n f, not
-      only inside the slip allowance). The peaks already stand out of the noise floor
-      (:func:`find_peaks`); sidebands and slip-window lines alone are too easily the
-      primary fault's intermodulation products.
-
-    Shaft lines make no fault (they point to unbalance, misalignment or looseness).
-
-    Parameters
-    ----------
-    matched_peaks : list of dict
-        Output of :func:`match_peaks`.
-    min_lines : int
-        Fewest lines (harmonics and sidebands) that make a fault.
-    tolerance : float
-        Relative tolerance of a well-matched line [-], as in :func:`match_peaks`.
-    resolution : float
-        Bin spacing of the spectrum [Hz] (0: ignore), as in :func:`match_peaks`.
-
-    Returns
-    -------
-    dict
-        ``likely_fault`` (the one fault, ``"compound: a + b"`` for several, or None),
-        ``primary_fault`` ("outer race", "inner race", "ball", "cage" or None),
-        ``faults`` (every fault found, primary first, then by score), ``scores`` and
-        ``lines`` per fault, and a one-line ``reason``.
-
-    Examples
-    --------
-    >>> peaks = match_peaks([(107.0, 1.0), (214.5, 0.6), (322.0, 0.3)], {"bpfo": 107.4})
-    >>> diagnose(peaks)["likely_fault"]
-    'outer race'
-    """
-    min_lines = _positive_int("min_lines", min_lines)
-    tolerance = _fraction("tolerance", tolerance, 0.0, 0.5, closed_low=False)
-    slack = RESOLUTION_BINS * _fraction("resolution", resolution, 0.0, math.inf,
-                                        closed_low=True)
-    scores = dict.fromkeys(_FAULT_ORDER, 0.0)
-    lines = dict.fromkeys(_FAULT_ORDER, 0)
-    evidence: dict[str, list[str]] = {f: [] for f in _FAULT_ORDER}
-    well_matched: dict[str, set] = {f: set() for f in _FAULT_ORDER}  # {(name, n)}
-    shaft = 0
-    for p in matched_peaks:
-        try:
-            amplitude = float(p["amplitude"])
-            name, sideband_of = p.get("matched"), p.get("sideband_of")
-            if name in FAULTS:
-                fault = FAULTS[name]
-                scores[fault] += amplitude / p["harmonic"]
-                evidence[fault].append(f"{p['harmonic']}x {name}")
-                if _well_matched(p, tolerance, slack):
-                    well_matched[fault].add((name, int(p["harmonic"])))
-            elif sideband_of in FAULTS:
-                fault = FAULTS[sideband_of]
-                scores[fault] += _SIDEBAND_WEIGHT * amplitude / p["sideband_harmonic"]
-                evidence[fault].append(f"{p['sideband_harmonic']}x {sideband_of} "
-                                       f"{p['sideband_order']:+d} {p['modulation']}")
-            else:
-                shaft += name == "shaft"
-                continue
-        except (AttributeError, KeyError, TypeError, ValueError, ZeroDivisionError):
-            raise InputError("matched_peaks", p, "dicts from match_peaks") from None
-        lines[fault] += 1
-    if lines["ball"] >= min_lines and lines["cage"]:  # the ball's cage-rate modulation
-        scores["ball"] += _SIDEBAND_WEIGHT * scores["cage"]
-        lines["ball"] += lines["cage"]
-        evidence["ball"] += evidence["cage"]
-        scores["cage"], lines["cage"], evidence["cage"] = 0.0, 0, []
-
-    def significant(fault: str) -> bool:  # a well-matched 1x or 2x line and another
-        found = well_matched[fault]
-        return len(found) >= 2 and min(n for _, n in found) <= 2
-
-    ranked = sorted((f for f in _FAULT_ORDER if lines[f] >= min_lines and scores[f] > 0),
-                    key=lambda f: -scores[f])
-    faults = [f for i, f in enumerate(ranked) if i == 0 or significant(f)]
-    if faults:
-        likely = faults[0] if len(faults) == 1 else "compound: " + " + ".join(faults)
-        reason = "; ".join(f"{f}: {', '.join(evidence[f])} (score {scores[f]:.3g})"
-                           for f in faults)
-    else:
-        likely = None
-        if any(lines.values()):
-            reason = (f"fewer than {min_lines} defect lines for any fault: "
-                      + "; ".join(f"{f}: {', '.join(e)}" for f, e in evidence.items() if e))
-        elif shaft:
-            reason = (f"only shaft lines ({shaft}): unbalance, misalignment or looseness, "
-                      "not a bearing defect")
-        else:
-            reason = "no line matches a defect frequency"
-    return {"likely_fault": likely, "primary_fault": faults[0] if faults else None,
-            "faults": faults, "scores": scores, "lines": lines, "reason": reason}

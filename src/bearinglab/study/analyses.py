@@ -256,7 +256,7 @@ def _noise(case: dict, seed: int) -> dict:
 
 
 # ------------------------------------------------------------------ simulate + diagnosis
-_FAULT_NAMES = {"outer race": "outer", "inner race": "inner", "ball": "ball", "cage": "cage"}
+_FAULT_NAMES = {"outer_race": "outer", "inner_race": "inner", "ball": "ball", "cage": "cage"}
 _SIM_OUT = {"rms_m_s2": "f", "peak_m_s2": "f", "kurtosis": "f", "crest_factor": "f",
             "steps": "i", "rejected_steps": "i", "bpfo_hz": "f", "bpfi_hz": "f",
             "ftf_hz": "f", "ball_defect_hz": "f", "cage_speed_ratio": "f",

@@ -115,8 +115,8 @@ class StudyResult:
                 "partitions": self.partitions, "partitions_computed": self.computed,
                 "partitions_reused": self.partitions - self.computed,
                 "cases_computed": self.computed_cases, "failed_cases": self.failed_cases,
-                "seconds": self.seconds, "cases_per_second": self.cases_per_second,
-                "worker_cpu_seconds": sum(self.worker_cpu_seconds.values()),
+                "wall_time_s": self.seconds, "cases_per_s": self.cases_per_second,
+                "worker_cpu_time_s": sum(self.worker_cpu_seconds.values()),
                 "workers": self.workers, "scheduler": self.scheduler,
                 "dashboard": self.dashboard, "inputs": list(self.inputs),
                 "outputs": list(self.outputs)}
