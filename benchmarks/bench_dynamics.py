@@ -271,7 +271,7 @@ def main() -> None:
               for i in range(4)]
     print()
     for row in [("what", "result", "target", "verdict"), tuple("-" * w for w in widths)] + rows:
-        print("  ".join(cell.ljust(w) for cell, w in zip(row, widths)))
+        print("  ".join(cell.ljust(w) for cell, w in zip(row, widths, strict=False)))
 
 
 if __name__ == "__main__":

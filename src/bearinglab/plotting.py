@@ -183,7 +183,7 @@ def stiffness_map_figure(table, ax=None):
         label = f"F_a = {fa:g} N, {rpm:g} rpm"
         ax[0].plot(group["radial_load_n"], group["radial_stiffness_n_per_um"], ".-", label=label)
         ax[1].plot(group["radial_load_n"], group["axial_stiffness_n_per_um"], ".-", label=label)
-    for a, name in zip(ax, ("radial C_r", "axial C_a")):
+    for a, name in zip(ax, ("radial C_r", "axial C_a"), strict=False):
         a.set_xlabel("radial load F_r [N]")
         a.set_ylabel(f"{name} [N/um]")
         a.legend(fontsize=7)

@@ -33,7 +33,8 @@ def _close(a, b, path="") -> list[str]:
         diffs = [f"{path}.{k}: missing" for k in a.keys() ^ b.keys()]
         return diffs + [d for k in a.keys() & b.keys() for d in _close(a[k], b[k], f"{path}.{k}")]
     if isinstance(a, list) and isinstance(b, list) and len(a) == len(b):
-        return [d for i, (x, y) in enumerate(zip(a, b)) for d in _close(x, y, f"{path}[{i}]")]
+        return [d for i, (x, y) in enumerate(zip(a, b, strict=True))
+                for d in _close(x, y, f"{path}[{i}]")]
     if isinstance(a, float) or isinstance(b, float):
         ok = isinstance(a, (int, float)) and isinstance(b, (int, float)) and math.isclose(
             a, b, rel_tol=1e-9, abs_tol=1e-12)

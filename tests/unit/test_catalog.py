@@ -248,7 +248,8 @@ def test_angular_contact_estimate_keeps_the_angle_and_says_z_is_a_lower_bound():
 
 def test_every_ball_bearing_size_gives_a_valid_bearing():
     t = read_table("iso15_radial.csv")
-    for _, r in t[t["dimension_series"].isin(["18", "19", "00", "10", "02", "03", "04"])].iterrows():
+    series = ["18", "19", "00", "10", "02", "03", "04"]
+    for _, r in t[t["dimension_series"].isin(series)].iterrows():
         d, big_d = r["bore_mm"] * 1e-3, r["outside_diameter_mm"] * 1e-3
         g = estimate_internal_geometry(d, big_d, r["dimension_series"])
         b = BallBearing(**g.as_kwargs(), bore=d, outside_diameter=big_d, width=r["width_mm"] * 1e-3)

@@ -6,6 +6,7 @@ import math
 
 import numpy as np
 import pytest
+from conftest import require
 
 from bearinglab.catalog import bearing_from_designation
 from bearinglab.dataset import TransferPath, draw_record, make_dataset, make_record
@@ -13,8 +14,8 @@ from bearinglab.dataset.sampling import DatasetSpec
 from bearinglab.errors import InputError
 from bearinglab.kinematics import defect_frequencies
 
-bd = pytest.importorskip("bearing_datasets")
-validate = pytest.importorskip("bearing_datasets.schema").validate
+bd = require("bearing_datasets")
+validate = require("bearing_datasets.schema").validate
 
 RANGES = {"faults": ["none", "outer", "inner", "ball", "compound"],
           "sample_rate_hz": [12000.0, 20000.0], "duration_s": (0.1, 0.2),

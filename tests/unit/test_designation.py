@@ -442,7 +442,8 @@ def test_iso_reader_refuses_gost_only_forms(text: str) -> None:
 
 def test_full_width_digits_are_normalised() -> None:
     # NFKC turns full-width digits and letters into ASCII; the reading is that of "6205"
-    for text, plain in (("６２０５", "6205"), ("６２０５－２ＲＳ", "6205-2RS"), ("１８０２０５", "180205")):
+    for text, plain in (("６２０５", "6205"), ("６２０５－２ＲＳ", "6205-2RS"),
+                        ("１８０２０５", "180205")):
         a, b = parse(text).to_dict(), parse(plain).to_dict()
         assert a.pop("text") == text
         b.pop("text")

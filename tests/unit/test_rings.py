@@ -129,7 +129,7 @@ def test_stationary_values_are_the_two_dof_eigenvalues(seed):
     f, e = refined_ring_frequencies(fs, f1, m, kappa, r, lam)
     assert np.array(f) ** 2 == pytest.approx(eig, rel=1e-10)
     assert e[0] > 0 > e[1]
-    for ei, fi in zip(e, f):  # stationary: derivative in epsilon vanishes
+    for ei, fi in zip(e, f, strict=False):  # stationary: derivative in epsilon vanishes
         h = 1e-6 * max(1.0, abs(ei))
         d = refined_frequency(ei + h, fs, f1, m, kappa, r, lam) - refined_frequency(
             ei - h, fs, f1, m, kappa, r, lam)

@@ -6,6 +6,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 import scipy.io
+from conftest import require
 
 from bearinglab.errors import InputError
 from bearinglab.signal import read_signal
@@ -41,7 +42,7 @@ def test_non_numeric_struct_field_is_refused_by_name(tmp_path):
 
 
 def test_matlab_v73_hdf5(tmp_path):
-    h5py = pytest.importorskip("h5py")
+    h5py = require("h5py")
     path = tmp_path / "v73.mat"
     x = np.cos(np.arange(1000) / 5.0)
     # as MATLAB writes it: a 512-byte header (user block) in front of the HDF5 file

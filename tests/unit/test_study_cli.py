@@ -5,6 +5,7 @@ import json
 
 import pandas as pd
 import pytest
+from conftest import require
 
 from bearinglab.cli import main
 
@@ -45,7 +46,7 @@ def test_study_table_and_cases_file(tmp_path, capsys):
 
 
 def test_dataset_command_reads_back(tmp_path, capsys):
-    bd = pytest.importorskip("bearing_datasets")
+    bd = require("bearing_datasets")
     d = _json(capsys, "dataset", str(tmp_path / "synth"), "--records", "4", "--duration-s",
               "0.1", "--faults", "outer,inner", "--defect-position-deg", "-100:-80",
               "--resonance", "3000:3500@0.05", "--scheduler", "serial")

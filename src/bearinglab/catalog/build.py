@@ -290,7 +290,8 @@ def bearing_from_designation(text: str, system: str | None = None,
             and getattr(des, "bearing_type", None) == "angular_contact_ball"):
         raise GeometryNeeded(f"{text!r} read as GOST 3189-89 is an angular contact ball bearing "
                              "without a contact-angle design variant (36xxx = 12, 46xxx = 26, "
-                             "66xxx = 36 deg), so its contact angle is not known", ("contact_angle",))
+                             "66xxx = 36 deg), so its contact angle is not known",
+                             ("contact_angle",))
 
     clearance_default = Source("default", "not published: BallBearing derives it from the "
                                           "contact angle (zero for a radial bearing)")

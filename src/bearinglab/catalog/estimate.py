@@ -72,7 +72,8 @@ BALL_TYPES = ("radial_ball", "angular_contact_ball", "four_point_contact_ball")
 
 
 def diameter_series_group(dimension_series: str) -> str:
-    """Group of the ISO diameter series used by Tables 1 and 2: ``"0"``, ``"2"``, ``"3"`` or ``"4"``.
+    """Group of the ISO diameter series used by Tables 1 and 2: ``"0"``, ``"2"``, ``"3"``
+    or ``"4"``.
 
     Diameter series 7, 8, 9, 0 and 1 (the light sections) form group ``"0"``.
 

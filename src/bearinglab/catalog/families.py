@@ -20,7 +20,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-
 #: Shipped table of each standard.
 TABLE_FILES = {"iso15": "iso15_radial.csv", "iso355": "iso355_tapered.csv",
                "iso104": "iso104_thrust.csv"}

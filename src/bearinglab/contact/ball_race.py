@@ -68,8 +68,8 @@ class BallContacts:
                 out.append(
                     f"{race} contact: the contact ellipse runs over the groove shoulder at "
                     f"Q = {loads.ravel()[i]:.4g} N (half-length a = {a.ravel()[i] * 1e3:.3g} mm: "
-                    f"{angle_text} + a/(f D_w) = {math.degrees(reach.ravel()[i]):.3g} deg > shoulder "
-                    f"angle {math.degrees(shoulder):.3g} deg, groove depth "
+                    f"{angle_text} + a/(f D_w) = {math.degrees(reach.ravel()[i]):.3g} deg > "
+                    f"shoulder angle {math.degrees(shoulder):.3g} deg, groove depth "
                     f"{b.shoulder_depth(side) / b.ball_diameter:g} D_w assumed); Hertz results are "
                     "not valid there")
         return out

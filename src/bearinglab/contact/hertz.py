@@ -93,7 +93,7 @@ def _solve_log_k(target, iterations: int = 60):
         u = np.clip(u - step, 0.5 * target, target)
     g = _log_ratio(u) - target
     bad = ~(np.abs(g) <= 1e-13 * np.maximum(1.0, target))
-    for i in zip(*np.nonzero(bad)):
+    for i in zip(*np.nonzero(bad), strict=False):
         t = float(target[i])
         try:
             u[i] = optimize.brentq(lambda x, t=t: float(_log_ratio(x)) - t, 0.5 * t, t,

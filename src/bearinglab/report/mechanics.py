@@ -202,7 +202,7 @@ def stiffness(ctx: Context):
     fig.tight_layout()
     names = list(DOF_NAMES)
     k = r.stiffness_matrix_shown()
-    matrix = [[n, *[float(v) for v in row]] for n, row in zip(names, k)]
+    matrix = [[n, *[float(v) for v in row]] for n, row in zip(names, k, strict=False)]
     body = [paragraph(f"Tangent stiffness of the bearing at {symbol} from "
                       f"{LOAD_FACTORS[0]:g} to {LOAD_FACTORS[-1]:g} times the operating load "
                       "(other loads and the speed held). Ball bearings stiffen as the load "

@@ -49,7 +49,8 @@ def validation_page(cases: list[dict], summary: dict, meta: str = "") -> str:
         sources.setdefault(case["source"], []).append(case)
     for i, (source, group) in enumerate(sources.items()):
         rows = [[c["quantity"], c["published"], c["computed"], c["unit"], c["error_percent"],
-                 c["tolerance_percent"], Raw(f'<span class="small">{esc(c.get("tolerance_reason") or "")}</span>'),
+                 c["tolerance_percent"],
+                 Raw(f'<span class="small">{esc(c.get("tolerance_reason") or "")}</span>'),
                  _verdict(c)]
                 for c in group]
         parts.append(f'<section id="source-{i + 1}"><h3>{esc(source)}</h3>' + table(

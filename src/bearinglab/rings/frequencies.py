@@ -4,7 +4,8 @@ Source: Balmont V. B., Varlamov E. B., "On resonance phenomena in ball bearings"
 Russian), 1986. A thin inextensional ring (Timoshenko) on n ball springs; mode m,
 w = a sin(m phi) cos(nu t), by equating kinetic and potential energy amplitudes. Equation
 numbers are the paper's. Layer 1: pure vectorised functions in Hz (the frequency equations
-are homogeneous: one unit in, the same out); layer 3 (bearinglab.rings.modes): :func:`ring_modes` -> :class:`RingModes`.
+are homogeneous: one unit in, the same out); layer 3 (bearinglab.rings.modes):
+:func:`ring_modes` -> :class:`RingModes`.
 OCR, reconstructed: the energy density printed (w'' + v'')^2 is (w'' + v')^2 as in (1.2), and
 (1.1) lost its time dots; redoing the integrals gives (1.5) as printed. Assumptions and the
 comparison with the paper: docs/capabilities/rings.md.

@@ -120,9 +120,10 @@ class RingModes:
         for r in self.modes:
             pos = ("nodes", "antinodes") if r.split else ("any",)
             rows += [row(r.mode, "free", r.free)]
-            rows += [row(r.mode, "approximate", f, p) for f, p in zip(r.approximate, pos)]
+            rows += [row(r.mode, "approximate", f, p)
+                     for f, p in zip(r.approximate, pos, strict=True)]
             rows += [row(r.mode, "refined", f, p, e)
-                     for f, e, p in zip(r.refined, r.epsilon, r.positions)]
+                     for f, e, p in zip(r.refined, r.epsilon, r.positions, strict=False)]
             rows += [row(r.mode, "measured", f) for f in measured.get(r.mode, ())]
         return pd.DataFrame(rows)
 
@@ -166,7 +167,7 @@ def _per_mode(values, ms, name) -> dict:
     if isinstance(values, Mapping):
         return dict(values)
     if isinstance(values, (list, tuple, np.ndarray)) and len(values) == len(ms):
-        return dict(zip(ms, values))
+        return dict(zip(ms, values, strict=False))
     raise InputError(name, values, f"a dict m -> value or one value per mode {ms}")
 
 
@@ -312,10 +313,11 @@ def ring_modes(bearing=None, *, axial_load=None, contact_angle=None, modes=range
         approx = tuple(float(f) for f in loaded_ring_frequencies(fs, f1, m, n)[1 - split:])
         freqs, eps = refined_ring_frequencies(fs, f1, m, kappa, ratio, 2.0 if split else 1.0)
         sols = [(float(f), float(e), "antinodes" if split else "any")
-                for f, e in zip(freqs, eps) if np.isfinite(e)]
+                for f, e in zip(freqs, eps, strict=False) if np.isfinite(e)]
         sols = sorted(sols + ([(fs, None, "nodes")] if split else []), key=lambda t: t[0])
         p = kappa * (fs / f1) ** 2 if f1 > 0 else math.inf
-        results.append(RingMode(m, fs, split, approx, *(tuple(x) for x in zip(*sols)), p))
+        columns = (tuple(x) for x in zip(*sols, strict=True))
+        results.append(RingMode(m, fs, split, approx, *columns, p))
     meas = tuple((int(m), tuple(_scalar("measured", x, "[Hz]") for x in np.atleast_1d(v)))
                  for m, v in _per_mode(measured, ms, "measured").items())
     return RingModes(tuple(results), int(n), f1, kappa, ratio, ring_mass, radial_stiffness,

@@ -74,7 +74,7 @@ def modes_310(p: dict):
 def _refined(r, m: int, position: str, which: int):
     """Refined (frequency, epsilon) of mode m at a ball position; which = 0 lower, -1 upper."""
     sols = [(f, e) for f, e, p in zip(r.mode(m).refined, r.mode(m).epsilon,
-                                      r.mode(m).positions) if p == position]
+                                      r.mode(m).positions, strict=False) if p == position]
     return sols[which]
 
 
