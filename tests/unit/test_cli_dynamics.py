@@ -33,23 +33,23 @@ def run_error(capsys, *args):
 
 def test_simulate_outer_race_json(capsys):
     d = run_json(capsys, *SIM, *OUTER)
-    for key in ("model", "sample_rate_hz", "duration_s", "kinematic", "peaks", "likely_fault",
-                "band_hz", "cage_speed_ratio", "spin_speed_ratio", "ball_defect_frequency_hz",
-                "defects", "output", "stats"):
+    for key in ("model", "sample_rate_hz", "duration_s", "kinematic", "likely_fault",
+                "faults", "diagnosis", "spectrum", "cage_speed_ratio", "spin_speed_ratio",
+                "defects", "output", "stats", "parameters", "warnings"):
         assert key in d, key
+    diag = d["diagnosis"]
     assert d["model"] == "rigid" and d["sample_rate_hz"] == 20000.0 and d["duration_s"] == 0.5
     assert d["kinematic"]["bpfo_hz"] == pytest.approx(BPFO_HZ, abs=0.01)
     assert d["likely_fault"] == "outer_race" and d["faults"] == ["outer_race"]
-    bpfo = [p for p in d["peaks"] if p["matched"] == "bpfo" and p["harmonic"] == 1]
+    bpfo = [p for p in diag["peaks"] if p["matched"] == "bpfo" and p["harmonic"] == 1]
     assert bpfo and bpfo[0]["frequency_hz"] == pytest.approx(BPFO_HZ, abs=2.0)  # 2 Hz bins
-    assert {"frequency_hz", "amplitude", "matched", "harmonic"} <= d["peaks"][0].keys()
+    assert {"frequency_hz", "amplitude", "matched", "harmonic"} <= diag["peaks"][0].keys()
     assert d["cage_speed_ratio"] is None and d["spin_speed_ratio"] is None  # rigid: no slip
-    assert d["ball_defect_frequency_hz"] is None  # no ball defect simulated
     assert d["defects"] == [{"location": "outer", "width_mm": 1.2, "depth_mm": 0.25,
                              "angle_deg": -90.0}]
     assert d["output"] is None and d["stats"]["steps"] > 0
     # a bearinglab simulation is diagnosed by the raw envelope, whole band (issue 11)
-    assert d["band_hz"] is None
+    assert diag["band_hz"] is None and diag["methods"] == ["raw"]
 
 
 @pytest.mark.parametrize("suffix, extra", [
@@ -90,15 +90,15 @@ def test_analyze_reads_the_speed_from_the_file(tmp_path, capsys):
 def test_inner_race_is_diagnosed(capsys):
     d = run_json(capsys, *SIM, "--defect", "inner:width_mm=1.2,depth_mm=0.25")
     assert d["likely_fault"] == "inner_race"
-    assert any(p["matched"] == "bpfi" for p in d["peaks"])
+    assert any(p["matched"] == "bpfi" for p in d["diagnosis"]["peaks"])
 
 
 def test_ball_defect_is_found(capsys):
     # rigid model, 0.5 s: the ball-defect line (2 x BSF, 135.45 Hz) and its cage sidebands
     d = run_json(capsys, *SIM, "--defect", "ball:width_mm=1.2")
     assert d["likely_fault"] == "ball"
-    assert d["ball_defect_frequency_hz"] == pytest.approx(d["kinematic"]["ball_defect_hz"],
-                                                          abs=2.0)
+    measured = d["diagnosis"]["ball_defect_frequency_hz"]
+    assert measured == pytest.approx(d["kinematic"]["ball_defect_hz"], abs=2.0)
     assert d["defects"][0]["ball"] == 0
 
 
@@ -106,7 +106,7 @@ def test_human_output_and_plots(tmp_path, capsys):
     sim_png, an_png, npz = tmp_path / "sim.png", tmp_path / "an.png", tmp_path / "s.npz"
     assert main([*SIM, *OUTER, "-o", str(npz), "--plot", str(sim_png)]) == 0
     out = capsys.readouterr().out
-    assert "likely fault: outer race" in out and "1x bpfo" in out and "BPFO" in out
+    assert "verdict: outer race" in out and "1x bpfo" in out
     assert sim_png.read_bytes()[:4] == b"\x89PNG"
     assert main(["analyze", str(npz), *ANALYZE, "--band-hz", "3000,7000",
                  "--plot", str(an_png)]) == 0
@@ -205,13 +205,14 @@ def test_simulate_with_inner_waviness_shows_its_line_in_the_plain_spectrum(capsy
     wavy = run_json(capsys, *SIM, "--waviness", "inner:order=9,amplitude_um=1")
     healthy = run_json(capsys, *SIM)
     for d in (wavy, healthy):
-        assert d["spectrum_channel"] == "disp_y" and d["spectrum_resolution_hz"] == 2.0
-        assert d["spectrum_peaks"]
-        assert {"frequency_hz", "amplitude", "matched", "harmonic"} <= d["spectrum_peaks"][0].keys()
-    line = _line(wavy["spectrum_peaks"], "bpfi")
+        assert d["spectrum"]["channel"] == "disp_y" and d["spectrum"]["resolution_hz"] == 2.0
+        assert d["spectrum"]["peaks"]
+        assert {"frequency_hz", "amplitude", "matched", "harmonic"} <= \
+            d["spectrum"]["peaks"][0].keys()
+    line = _line(wavy["spectrum"]["peaks"], "bpfi")
     assert line is not None and line["frequency_hz"] == pytest.approx(ER16K_BPFI_HZ, abs=2.0)
-    assert line["amplitude"] == max(p["amplitude"] for p in wavy["spectrum_peaks"])
-    assert _line(healthy["spectrum_peaks"], "bpfi") is None
+    assert line["amplitude"] == max(p["amplitude"] for p in wavy["spectrum"]["peaks"])
+    assert _line(healthy["spectrum"]["peaks"], "bpfi") is None
     assert wavy["imperfections"]["waviness"] == [
         {"race": "inner", "order": 9, "amplitude_um": 1.0, "phase_deg": 0.0}]
     assert healthy["imperfections"] is None
@@ -223,8 +224,8 @@ def test_outer_waviness_q_z_plus_1_raises_the_bpfo_line(capsys):
     bearing's ball-pass line already is: match_peaks labels it bpfo, and it grows."""
     wavy = run_json(capsys, *SIM, "--waviness", "outer:order=10,amplitude_um=1")
     healthy = run_json(capsys, *SIM)
-    grown = _line(wavy["spectrum_peaks"], "bpfo")
-    plain = _line(healthy["spectrum_peaks"], "bpfo")
+    grown = _line(wavy["spectrum"]["peaks"], "bpfo")
+    plain = _line(healthy["spectrum"]["peaks"], "bpfo")
     assert grown["frequency_hz"] == pytest.approx(BPFO_HZ, abs=2.0)
     assert grown["amplitude"] > 1.5 * plain["amplitude"]
 
@@ -236,11 +237,11 @@ def test_simulate_ball_size_errors_are_seeded(capsys):
     assert len(errors) == 9 and errors == again["imperfections"]["ball_size_errors"][
         "ball_size_errors_um"]
     assert max(errors) - min(errors) <= 4.0 and max(abs(e) for e in errors) <= 2.0
-    assert one["spectrum_peaks"] == again["spectrum_peaks"]
+    assert one["spectrum"]["peaks"] == again["spectrum"]["peaks"]
     # the errors turn with the cage: a line at the cage frequency (the healthy bearing
     # has none there)
-    assert _line(one["spectrum_peaks"], "ftf") is not None
-    assert _line(run_json(capsys, *SIM)["spectrum_peaks"], "ftf") is None
+    assert _line(one["spectrum"]["peaks"], "ftf") is not None
+    assert _line(run_json(capsys, *SIM)["spectrum"]["peaks"], "ftf") is None
 
 
 def test_simulate_plots_both_spectra(tmp_path, capsys):

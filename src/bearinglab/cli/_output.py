@@ -110,37 +110,6 @@ def peak_rows(peaks) -> list[list]:
     return rows
 
 
-def print_diagnosis(diag, title: str) -> None:
-    """The kinematic frequencies, the envelope lines and the verdict, as tables."""
-    from ..kinematics import FREQUENCY_NAMES, LONG_NAMES
-
-    kin = diag.frequencies
-    console.print(_table(f"Kinematic frequencies at {kin.shaft_hz * 60:g} rpm",
-                         ["frequency", "Hz", "order", "meaning"],
-                         [["shaft", kin.shaft_hz, 1.0, LONG_NAMES["shaft"]]]
-                         + [[n.upper() if n != "ball_defect" else "BALL DEFECT", kin.hz(n),
-                             kin.orders[n], LONG_NAMES[n]] for n in FREQUENCY_NAMES]))
-    band = ("none (no band-pass)" if diag.band is None
-            else f"{diag.band[0]:.6g} - {diag.band[1]:.6g} Hz")
-    console.print(_table(f"{title}: envelope lines (band {band}, resolution "
-                         f"{diag.resolution:.3g} Hz)",
-                         ["Hz", "amplitude", "matched", "deviation %"], peak_rows(diag.peaks)))
-    fault = (diag.likely_fault or "no fault detected").replace("_", " ")
-    console.print(f"likely fault: [bold]{escape(fault)}[/bold]")
-    console.print(f"[dim]{escape(diag.reason)}[/dim]")
-    if diag.ball_defect_frequency_hz is not None:
-        console.print(f"ball defect line measured at {diag.ball_defect_frequency_hz:.5g} Hz "
-                      f"(kinematic {kin.hz('ball_defect'):.5g} Hz)")
-
-
-def peaks_json(peaks) -> list[dict]:
-    """Labelled lines (:func:`bearinglab.signal.match_peaks`) in the JSON form of
-    ``peaks``: frequency_hz, amplitude, matched, harmonic, deviation and sideband keys."""
-    keys = ("frequency_hz", "amplitude", "matched", "harmonic", "deviation", "sideband_of",
-            "sideband_harmonic", "sideband_order", "modulation")
-    return [{k: p[k] for k in keys if k in p} for p in peaks]
-
-
 # ------------------------------------------------------------------ progress
 @contextmanager
 def progress_bar(description: str, *, enabled: bool = True):
@@ -170,3 +139,40 @@ def simulation_stage(model: str) -> str:
     if needs_compiling(model):
         return f"compiling the {model} model (first run only; later runs load it)"
     return f"simulating ({model} model)"
+
+
+def print_verdict(diag, name: str, bearing) -> None:
+    """The record, the family tests, the lines and the verdict as tables (the same data as
+    ``to_dict``)."""
+    speed = diag.speed
+    measured = speed.get("measured_rpm")
+    console.print(_table(f"{escape(name)}: channel {diag.channel}", ["", "value"], [
+        ["sample rate", f"{diag.sample_rate:g} Hz"],
+        ["bearing", bearing.name or "bearing"],
+        ["speed used", f"{speed['used_rpm']:.6g} rpm ({speed['source']})"],
+        ["speed the signal shows",
+         "no shaft line found" if measured is None else f"{measured:.6g} rpm"],
+        ["methods", ", ".join(diag.methods)],
+        ["band", "; ".join(f"{m}: " + ("whole band" if s.band is None else
+                                        f"{s.band[0]:.6g} - {s.band[1]:.6g} Hz")
+                           for m, s in diag.spectra.items())],
+        ["resolution", f"{diag.resolution:.3g} Hz"]]))
+    from ._inputs import _geometry_line
+
+    console.print(escape(_geometry_line(bearing)))
+    rows = [[name, t["method"], t["kinematic_hz"], t["fundamental_hz"], 100 * t["slip"],
+             round(t["significance"], 2), "yes" if t["passed"] else "no"]
+            for name, t in diag.families.items()]
+    console.print(_table(f"Fault families: significance -log10 p, threshold "
+                         f"{diag.threshold:.3g} (false-alarm probability {diag.false_alarm:g})",
+                         ["family", "method", "f kin [Hz]", "f fit [Hz]", "slip [%]",
+                          "signif.", "found"], rows))
+    from ..diagnosis import peak_label
+
+    lines = [[p["frequency_hz"], p["z"], peak_label(p),
+              None if p.get("deviation") is None else 100 * p["deviation"]]
+             for p in diag.peaks]
+    console.print(_table("Envelope lines", ["f [Hz]", "level over floor [-]", "matched",
+                                            "deviation [%]"], lines))
+    console.print(f"verdict: [bold]{escape(diag.verdict.replace('_', ' '))}[/bold]")
+    console.print(f"[dim]{escape(diag.reason)}[/dim]")

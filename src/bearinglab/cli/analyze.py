@@ -8,14 +8,12 @@ from pathlib import Path
 from typing import Annotated
 
 import typer
-from rich.markup import escape
 
 from ..errors import InputError
-from ._app import command_app, console
+from ._app import command_app
 from ._inputs import (
     JsonOpt,
     OptionError,
-    _geometry_line,
     _geometry_warnings,
     _print_warnings,
     check_path,
@@ -24,7 +22,7 @@ from ._inputs import (
     speed_rad_s,
     with_geometry,
 )
-from ._output import _emit_json, _save_plot, _table
+from ._output import _emit_json, _save_plot, print_verdict
 
 app = command_app()
 PlotOpt = Annotated[Path | None, typer.Option(
@@ -195,38 +193,3 @@ def analyze_command(
         return
     print_verdict(diag, signal_file.name, bearing)
     _print_warnings(out["warnings"])
-
-
-def print_verdict(diag, name: str, bearing) -> None:
-    """The record, the family tests, the lines and the verdict as tables (the same data as
-    ``to_dict``)."""
-    speed = diag.speed
-    measured = speed.get("measured_rpm")
-    console.print(_table(f"{escape(name)}: channel {diag.channel}", ["", "value"], [
-        ["sample rate", f"{diag.sample_rate:g} Hz"],
-        ["bearing", bearing.name or "bearing"],
-        ["speed used", f"{speed['used_rpm']:.6g} rpm ({speed['source']})"],
-        ["speed the signal shows",
-         "no shaft line found" if measured is None else f"{measured:.6g} rpm"],
-        ["methods", ", ".join(diag.methods)],
-        ["band", "; ".join(f"{m}: " + ("whole band" if s.band is None else
-                                        f"{s.band[0]:.6g} - {s.band[1]:.6g} Hz")
-                           for m, s in diag.spectra.items())],
-        ["resolution", f"{diag.resolution:.3g} Hz"]]))
-    console.print(escape(_geometry_line(bearing)))
-    rows = [[name, t["method"], t["kinematic_hz"], t["fundamental_hz"], 100 * t["slip"],
-             round(t["significance"], 2), "yes" if t["passed"] else "no"]
-            for name, t in diag.families.items()]
-    console.print(_table(f"Fault families: significance -log10 p, threshold "
-                         f"{diag.threshold:.3g} (false-alarm probability {diag.false_alarm:g})",
-                         ["family", "method", "f kin [Hz]", "f fit [Hz]", "slip [%]",
-                          "signif.", "found"], rows))
-    from ..diagnosis import peak_label
-
-    lines = [[p["frequency_hz"], p["z"], peak_label(p),
-              None if p.get("deviation") is None else 100 * p["deviation"]]
-             for p in diag.peaks]
-    console.print(_table("Envelope lines", ["f [Hz]", "level over floor [-]", "matched",
-                                            "deviation [%]"], lines))
-    console.print(f"verdict: [bold]{escape(diag.verdict.replace('_', ' '))}[/bold]")
-    console.print(f"[dim]{escape(diag.reason)}[/dim]")

@@ -7,16 +7,12 @@ from pathlib import Path
 from typing import Annotated
 
 import typer
-from rich.markup import escape
 
-from ..diagnosis import analyze_signal
-from ..dynamics import SlipParameters, simulate
+from ..dynamics import SlipParameters
+from ..dynamics.record import SPECTRUM_CHANNELS, simulate_record
 from ..errors import BearinglabError, InputError
-from ..kinematics import defect_frequencies
 from ..operating import OperatingCondition
-from ..plausibility import LOCATION_FAMILY, operating_warnings, sampling_warnings
 from ..signal import SUFFIXES, write_signal
-from ..signal.lines import spectrum_lines
 from ._app import command_app, console
 from ._forms import (
     BallErrorOpt,
@@ -33,7 +29,6 @@ from ._inputs import (
     DesignationArg,
     JsonOpt,
     OptionError,
-    _geometry_line,
     _geometry_warnings,
     _print_warnings,
     check_loads,
@@ -49,15 +44,12 @@ from ._output import (
     _emit_json,
     _table,
     peak_rows,
-    peaks_json,
-    print_diagnosis,
+    print_verdict,
     progress_bar,
     simulation_stage,
 )
 
 app = command_app()
-#: Channels whose plain spectrum ``simulate`` can read (both models have them).
-SPECTRUM_CHANNELS = ("disp_y", "disp_x", "acc_y", "acc_x")
 
 
 class Model(str, Enum):
@@ -155,72 +147,40 @@ def simulate_command(
                               f"{defect_reason(exc)}") from None
     condition = OperatingCondition(radial_load=radial_load_n, axial_load=axial_load_n,
                                    shaft_speed=shaft_speed)
-    # a record that cannot show the simulated defects (or, healthy, even BPFO) is refused
-    families = [LOCATION_FAMILY[d.location] for d in defects] or ["outer_race"]
-    try:
-        plausible = (operating_warnings(bearing, condition)
-                     + sampling_warnings(defect_frequencies(bearing, shaft_speed),
-                                         sample_rate_hz, duration_s, families))
-    except InputError as exc:
-        raise option_error(exc, {"radial_load_n": radial_load_n, "speed_rpm": speed_rpm,
-                                 "sample_rate_hz": sample_rate_hz}) from None
     slip_given = {"cage_friction": cage_friction, "oil_fraction": oil_fraction,
                   "spin_drag": spin_drag or None}
     parameters = None
     if model is Model.slip:
         parameters = SlipParameters(**{k: v for k, v in slip_given.items() if v is not None})
     elif any(v is not None for v in slip_given.values()):
-        name = next(k for k, v in slip_given.items() if v is not None).replace("_", "-")
-        raise OptionError(f"--{name}", slip_given[name.replace("-", "_")],
+        name = next(k for k, v in slip_given.items() if v is not None)
+        raise OptionError("--" + name.replace("_", "-"), slip_given[name],
                           "no value with --model rigid (a slip-model parameter)")
     running = f"simulating ({model.value} model)"
     with progress_bar(simulation_stage(model.value), enabled=not json_output) as update:
         try:
-            sim = simulate(bearing, condition, defects, model=model.value, duration=duration_s,
-                           sample_rate=sample_rate_hz, settle=settle_s, noise=noise_ms2,
-                           seed=seed, imperfections=imperfections, parameters=parameters,
-                           progress=lambda f: update(f, running))
+            record = simulate_record(
+                bearing, condition, defects, model=model.value, duration=duration_s,
+                sample_rate=sample_rate_hz, settle=settle_s, noise=noise_ms2, seed=seed,
+                imperfections=imperfections, parameters=parameters,
+                spectrum_channel=spectrum_channel, progress=lambda f: update(f, running))
         except InputError as exc:
-            raise _simulate_error(exc, bearing) from None
-    diag = analyze_signal(sim.signal, None, sim.kinematic, channel="acc_y")
-    spec, spectrum_peaks = spectrum_lines(sim.signal.channel(spectrum_channel),
-                                          sim.signal.sample_rate, sim.kinematic,
-                                          diag.max_frequency)
+            raise _simulate_error(exc, bearing, {
+                "radial_load_n": radial_load_n, "speed_rpm": speed_rpm,
+                "sample_rate_hz": sample_rate_hz, "duration_s": duration_s,
+                "settle_s": settle_s, "noise_ms2": noise_ms2, "cage_friction": cage_friction,
+                "oil_fraction": oil_fraction, "spectrum_channel": spectrum_channel}) from None
     if output is not None:
-        _write(output, sim.signal)
+        _write(output, record.simulation.signal)
     if plot is not None:
-        _plot_spectra(diag, spec, spectrum_peaks, spectrum_channel, plot)
-    has_ball = any(d.location == "ball" for d in defects)
-    warnings = _geometry_warnings(bearing) + plausible + list(sim.warnings)
-    if axial_load_n:
-        warnings.append(f"--axial-load-n {axial_load_n:g} N does not enter the {model.value} "
-                        "model (it is planar: radial load only)")
-    if imperfections is not None and not defects:
-        warnings.append("no defects were simulated: the lines at the defect frequencies come "
-                        "from the form errors (e.g. outer-race waviness of order kZ +- 1 "
-                        "gives k x BPFO), so the 'likely fault' is not a defect")
-    out = {"designation": designation, "model": model.value,
-           "sample_rate_hz": sim.signal.sample_rate, "duration_s": sim.signal.duration,
-           "speed_rpm": speed_rpm, "radial_load_n": radial_load_n,
-           "axial_load_n": axial_load_n, "kinematic": sim.kinematic.to_dict(),
-           "channel": diag.channel, "peaks": peaks_json(diag.peaks),
-           "likely_fault": diag.likely_fault, "faults": diag.faults, "scores": diag.scores,
-           "reason": diag.reason,
-           "band_hz": None if diag.band is None else list(diag.band),
-           "cage_speed_ratio": sim.cage_speed_ratio, "spin_speed_ratio": sim.spin_speed_ratio,
-           "ball_defect_frequency_hz": diag.ball_defect_frequency_hz if has_ball else None,
-           "spectrum_channel": spectrum_channel, "spectrum_resolution_hz": spec.resolution,
-           "spectrum_peaks": peaks_json(spectrum_peaks),
-           "defects": [d.to_dict() for d in defects],
-           "imperfections": None if imperfections is None else imperfections.to_dict(),
-           "seed": seed,
-           "output": None if output is None else str(output), "stats": dict(sim.stats),
-           "halves": sim.halves,
-           "slip_parameters": None if parameters is None else parameters.to_dict(),
-           "warnings": warnings}
+        save_plot_figure(record.plot()[0], plot)
+    warnings = _geometry_warnings(bearing) + list(record.warnings)
+    out = {"designation": designation, **record.to_dict(), "seed": seed,
+           "output": None if output is None else str(output), "warnings": warnings}
     if json_output:
         _emit_json(out)
         return
+    sim = record.simulation
     rows = [["model", model.value], ["duration", f"{sim.signal.duration:g} s"],
             ["sample rate", f"{sim.signal.sample_rate:g} Hz"],
             ["speed, radial load", f"{speed_rpm:g} rpm, {radial_load_n:g} N"],
@@ -236,36 +196,16 @@ def simulate_command(
     if output is not None:
         rows.append(["signal written to", str(output)])
     console.print(_table(f"{bearing.name or 'bearing'}: simulation", ["", "value"], rows))
-    console.print(escape(_geometry_line(bearing)))
-    print_diagnosis(diag, "acc_y")
+    print_verdict(record.diagnosis, "simulated acc_y", bearing)
     console.print(_table(f"{spectrum_channel}: plain spectrum lines (resolution "
-                         f"{spec.resolution:.3g} Hz)", ["Hz", "amplitude", "matched",
-                                                        "deviation %"],
-                         peak_rows(spectrum_peaks)))
+                         f"{record.spectrum.resolution:.3g} Hz)",
+                         ["f [Hz]", "amplitude", "matched", "deviation [%]"],
+                         peak_rows(record.spectrum_lines)))
     _print_warnings(warnings)
 
 
-def _plot_spectra(diag, spec, lines, channel: str, path: Path) -> None:
-    """Envelope spectrum (top) and plain spectrum (bottom) in one figure."""
-    from ..plotting import _pyplot, draw_spectrum
-
-    plt = _pyplot()
-    fig, axes = plt.subplots(2, 1, figsize=(11, 8))
-    diag.plot(ax=axes[0])
-    draw_spectrum(axes[1], spec, lines, diag.frequencies, diag.max_frequency,
-                  title=f"plain spectrum of {channel} (resolution {spec.resolution:.3g} Hz)",
-                  ylabel=f"amplitude [{'m' if channel.startswith('disp') else 'm/s^2'}]")
-    fig.tight_layout()
-    save_plot_figure(fig, path)
-
-
-_SIMULATE_FLAGS = {"duration": "--duration-s", "sample_rate": "--sample-rate-hz",
-                   "settle": "--settle-s", "noise": "--noise-ms2", "shaft_speed": "--speed-rpm",
-                   "radial_load": "--radial-load-n", "axial_load": "--axial-load-n"}
-
-
-def _simulate_error(exc: InputError, bearing) -> BearinglabError:
-    """An error of simulate() in the options' terms, where one option is to blame."""
+def _simulate_error(exc: InputError, bearing, options: dict) -> BearinglabError:
+    """An error of the simulation in the options' terms, where one option is to blame."""
     name = bearing.name or "the bearing"
     if exc.parameter in ("inner_mass", "outer_mass") and exc.value is None:
         return BearinglabError(f"--model slip needs the ring masses, which follow from the "
@@ -274,12 +214,9 @@ def _simulate_error(exc: InputError, bearing) -> BearinglabError:
     if exc.parameter == "contact_angle":
         return OptionError("--model", "slip", "rigid for this bearing (the slip model is "
                            f"planar: contact angle 0; {name} has {exc.value:g} deg)")
-    if exc.parameter in ("cage_friction", "oil_fraction"):
-        return OptionError("--" + exc.parameter.replace("_", "-"), exc.value, exc.allowed)
-    flag = _SIMULATE_FLAGS.get(exc.parameter)
-    if flag is None or flag == "--speed-rpm":
-        return exc
-    return OptionError(flag, exc.value, exc.allowed)
+    if exc.parameter == "noise":     # --noise-ms2: the one option without a unit-table suffix
+        return OptionError("--noise-ms2", options.get("noise_ms2"), exc.allowed, exc.hint)
+    return option_error(exc, options)
 
 
 def _write(path: Path, signal) -> None:

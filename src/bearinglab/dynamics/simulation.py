@@ -10,6 +10,7 @@ the optional measurement noise is drawn from ``seed``).
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -67,6 +68,57 @@ class Simulation:
     cage_angle: np.ndarray | None = None
     halves: dict | None = None
     warnings: tuple = ()
+    imperfections: object = None
+
+    def to_dict(self) -> dict:
+        """JSON-ready summary in engineering units (no samples: :meth:`to_pandas` has them)."""
+        c, sig = self.condition, self.signal
+        return {"model": self.model, "bearing": getattr(self.bearing, "name", "") or None,
+                "speed_rpm": c.speed_rpm, "radial_load_n": c.radial_load,
+                "axial_load_n": c.axial_load, "sample_rate_hz": sig.sample_rate,
+                "duration_s": sig.duration, "start_time_s": sig.metadata.get("start_time_s"),
+                "channels": list(sig.names), "defects": [d.to_dict() for d in self.defects],
+                "imperfections": (None if self.imperfections is None
+                                  else self.imperfections.to_dict()),
+                "kinematic": self.kinematic.to_dict(),
+                "cage_speed_ratio": self.cage_speed_ratio,
+                "spin_speed_ratio": self.spin_speed_ratio, "halves": self.halves,
+                "parameters": self.parameters.to_dict(), "stats": dict(self.stats),
+                "warnings": list(self.warnings)}
+
+    def to_pandas(self):
+        """The record as a table: ``time_s`` and one column per channel (SI units:
+        ``acc_*`` [m/s^2], ``disp_*`` [m], ``cage_speed`` [rad/s])."""
+        import pandas as pd
+
+        sig = self.signal
+        start = sig.metadata.get("start_time_s") or 0.0
+        table = {"time_s": start + np.arange(sig.n_samples) / sig.sample_rate}
+        table.update({name: sig.channel(name) for name in sig.names})
+        return pd.DataFrame(table)
+
+    def plot(self, axes=None, channels=("acc_y", "disp_y")):
+        """The record's ``channels`` against time, one above the other; (fig, axes)."""
+        from ..plotting import _pyplot
+
+        if axes is None:
+            fig, axes = _pyplot().subplots(len(channels), 1, figsize=(10, 2.6 * len(channels)),
+                                           sharex=True, squeeze=False)
+            axes = axes[:, 0]
+        else:
+            fig = axes[0].figure
+        table = self.to_pandas()
+        units = {"acc": "m/s^2", "dis": "um", "cag": "rad/s"}
+        for ax, name in zip(axes, channels, strict=True):
+            values = table[name] * (1e6 if name.startswith("disp") else 1.0)
+            ax.plot(table["time_s"], values, lw=0.6)
+            ax.set_ylabel(f"{name} [{units[name[:3]]}]")
+        axes[-1].set_xlabel("time [s]")
+        axes[0].set_title(f"{getattr(self.bearing, 'name', '') or 'bearing'}: {self.model} "
+                          f"model, {self.condition.speed_rpm:g} rpm, "
+                          f"{self.condition.radial_load:g} N")
+        fig.tight_layout()
+        return fig, axes
 
     def _angle_ratio(self, angle, order) -> float:
         # advance of a continuous angle over the record / (pure-rolling speed x span)
@@ -203,8 +255,9 @@ def simulate(bearing, condition, defects=(), *, model: str = "rigid",
         stats["settle_turns"] = settled["turns"]
         stats["steps"] += settled["steps"]
         stats["rejected_steps"] += settled["rejected_steps"]
-    return _result(model, bearing, condition, defects, params, kin, p, table, t_out, states,
-                   stats, noise, seed, sample_rate, notes)
+    sim = _result(model, bearing, condition, defects, params, kin, p, table, t_out, states,
+                  stats, noise, seed, sample_rate, notes)
+    return dataclasses.replace(sim, imperfections=imperfections)
 
 
 def needs_compiling(model: str = "rigid") -> bool:

@@ -6,8 +6,9 @@ from __future__ import annotations
 
 import math
 
-from ..diagnosis import analyze_signal, peak_label
+from ..diagnosis import peak_label
 from ..dynamics import Defect, simulate
+from ..dynamics.record import simulate_record
 from ..kinematics import FREQUENCY_NAMES, LONG_NAMES, defect_frequencies
 from .context import Context
 from .document import figure, notes, number, paragraph, table
@@ -82,10 +83,11 @@ def _defect_text(d: Defect) -> str:
 def envelope(ctx: Context):
     """Simulated vibration with the defects (rigid model) and its envelope spectrum."""
     defects = list(ctx.defects)
-    sim = simulate(ctx.bearing, ctx.condition, defects, model="rigid", duration=ctx.duration,
-                   sample_rate=ctx.sample_rate)
+    # the same call as 'bearinglab simulate' (dynamics.simulate_record): the same numbers
+    record = simulate_record(ctx.bearing, ctx.condition, defects, model="rigid",
+                             duration=ctx.duration, sample_rate=ctx.sample_rate)
+    sim, diag = record.simulation, record.diagnosis
     ctx.results["simulation"] = sim
-    diag = analyze_signal(sim.signal, None, sim.kinematic, channel="acc_y")
     said = [f"Defects simulated: {'; '.join(_defect_text(d) for d in defects)}."]
     if not ctx.defects_given:
         said.insert(0, "No defect was given (--defect): this is an example outer-race "

@@ -49,3 +49,14 @@ def spectrum_lines(x, sample_rate: float, kin, max_frequency: float, *,
     matched = match_peaks(lines, {name: kin.hz(name) for name in NAMES}, harmonics=harmonics,
                           slip_tolerance=slip_tolerance, resolution=spec.resolution)
     return spec, matched
+
+
+#: The keys a labelled line carries in JSON.
+LINE_KEYS = ("frequency_hz", "amplitude", "matched", "harmonic", "deviation", "sideband_of",
+             "sideband_harmonic", "sideband_order", "modulation")
+
+
+def lines_to_dict(lines) -> list[dict]:
+    """Labelled lines (:func:`bearinglab.signal.match_peaks`) in their JSON form: frequency,
+    amplitude, the family matched, harmonic, deviation and sideband keys."""
+    return [{k: p[k] for k in LINE_KEYS if k in p} for p in lines]
