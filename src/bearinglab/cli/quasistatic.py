@@ -179,11 +179,8 @@ def static(designation: DesignationArg = None,
     options = {"lubricant": oil, "temperature": temperature, "gyroscopic": gyroscopic,
                "race_control": race_control.value,
                "ring_expansion": ring_expansion}
-    errors = None
-    if imperfections is not None:   # the form errors at t = 0, ball 0 under the load
-        z = bearing.ball_count
-        psi = condition.radial_load_angle + 2.0 * math.pi * np.arange(z) / z
-        errors = imperfections.approach_change(bearing, psi).total
+    errors = (None if imperfections is None   # the form errors at t = 0, ball 0 under the load
+              else imperfections.diameter_errors_at_rest(bearing, condition.radial_load_angle))
     result = solve_load_distribution(bearing, condition, ball_diameter_errors=errors, **options)
     d = result.to_dict()
     d["warnings"] = _geometry_warnings(bearing) + plausibility + d["warnings"]

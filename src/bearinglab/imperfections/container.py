@@ -149,6 +149,14 @@ class Imperfections:
                 out[..., w.ball] += r[..., w.ball]
         return out
 
+    def diameter_errors_at_rest(self, bearing, radial_load_angle: float) -> np.ndarray:
+        """The form errors as effective ball-diameter errors for a quasi-static solve: the
+        approach changes a_i + a_o of every ball at shaft angle 0, ball 0 under the load
+        (:meth:`approach_change`) [m], one per ball."""
+        z = bearing.ball_count
+        psi = radial_load_angle + 2.0 * np.pi * np.arange(z) / z
+        return self.approach_change(bearing, psi).total
+
     def approach_change(self, bearing, ball_angle, shaft_angle=0.0, spin_angle=0.0, *,
                         z_inner=0.0, z_outer=0.0) -> ContactDeviation:
         """Approach changes a_i, a_o at every ball's inner and outer contact (module
