@@ -10,7 +10,7 @@ import numpy as np
 import typer
 
 from ..errors import InputError
-from ._inputs import OptionError, parse_spec
+from ._inputs import OptionError
 
 WAVINESS_ALLOWED = ("RACE:KEY=VALUE,... with RACE inner, outer or ball and keys order (waves "
                     "round the circumference, >= 1) and amplitude_um (>= 0, half the peak to "
@@ -63,6 +63,99 @@ _DEFECT_KEYS = {"outer": {"width_mm": "positive", "depth_mm": "positive", "angle
                 "inner": {"width_mm": "positive", "depth_mm": "positive", "angle_deg": "number"},
                 "ball": {"width_mm": "positive", "depth_mm": "positive", "angle_deg": "number",
                          "ball": "index"}}
+
+
+
+# ------------------------------------------------------------------ KEY=VALUE specifications
+#: Kinds of value a specification key takes: kind -> what it must be.
+_SPEC_KINDS = ("number", "positive", "nonnegative", "index", "order")
+
+
+def parse_spec(text: str, flag: str, allowed: str, keys: dict[str, dict[str, str]], *,
+               noun: str, word: str = "location",
+               required: tuple[str, ...] = ()) -> tuple[str, dict]:
+    """Read one ``PREFIX:KEY=VALUE,...`` specification (--defect, --waviness, --surface3d).
+
+    Parameters
+    ----------
+    text : str
+        The specification as typed.
+    flag : str
+        The option, for the error (e.g. ``--defect``).
+    allowed : str
+        What the option accepts (the error's "expected ...").
+    keys : dict
+        Prefix (lower case) -> {key: kind}; kinds: ``number`` (finite), ``positive``
+        (> 0), ``nonnegative`` (>= 0), ``index`` (whole number >= 0), ``order`` (whole
+        number >= 1).
+    noun : str
+        What the prefix qualifies, for "unknown key 'x' for outer {noun}".
+    word : str
+        What the prefix is called ("location", "race").
+    required : tuple of str
+        Keys that must be given.
+
+    Returns
+    -------
+    (prefix, {key: int or float})
+        In the option's units (no conversion).
+
+    Raises
+    ------
+    OptionError
+        One line naming the option, the specification and the part that is wrong.
+
+    >>> parse_spec("Inner : order=7, amplitude_um=0.5", "--waviness", "...",
+    ...            {"inner": {"order": "order", "amplitude_um": "nonnegative"}},
+    ...            noun="waviness", word="race")
+    ('inner', {'order': 7, 'amplitude_um': 0.5})
+    """
+    def bad(hint: str) -> OptionError:
+        return OptionError(flag, text, allowed, hint)
+
+    prefix, sep, rest = text.strip().partition(":")
+    prefix = prefix.strip().lower()
+    if prefix not in keys:
+        raise bad(f"unknown {word} {prefix!r}")
+    if not sep or not rest.strip():
+        need = (f"; {', '.join(required)} {'is' if len(required) == 1 else 'are'} required"
+                if required else "")
+        raise bad(f"no KEY=VALUE given{need}")
+    values: dict = {}
+    for item in rest.split(","):
+        key, eq, value = (s.strip() for s in item.partition("="))
+        kind = keys[prefix].get(key)
+        if kind is None:
+            raise bad(f"unknown key {key!r} for {prefix} {noun} (keys: "
+                      f"{', '.join(keys[prefix])})")
+        if not eq or not value:
+            raise bad(f"{key} has no value")
+        if key in values:
+            raise bad(f"{key} given twice")
+        if kind in ("index", "order"):
+            try:
+                number = int(value)
+            except ValueError:
+                raise bad(f"{key} = {value!r} is not a whole number") from None
+            least = 0 if kind == "index" else 1
+            if number < least:
+                raise bad(f"{key} must be >= {least}")
+        else:
+            try:
+                number = float(value)
+            except ValueError:
+                raise bad(f"{key} = {value!r} is not a number") from None
+            if not math.isfinite(number):
+                raise bad(f"{key} must be finite")
+            if kind == "positive" and number <= 0:
+                raise bad(f"{key} must be > 0")
+            if kind == "nonnegative" and number < 0:
+                raise bad(f"{key} must be >= 0")
+        values[key] = number
+    for key in required:
+        if key not in values:
+            raise bad(f"{key} is required")
+    return prefix, values
 
 
 def bad_defect(text: str, hint: str) -> OptionError:
