@@ -199,3 +199,9 @@ def test_bad_orbit_and_form_error_options(tmp_path, monkeypatch, capsys, args, f
     code = main([*B608, *args])
     err = capsys.readouterr().err
     assert code == 2 and err.startswith("error: ") and flag in err and err.count("\n") == 1
+
+
+def test_stiffness_map_table_with_units_says_which_rows_it_shows(capsys):
+    assert main(["stiffness-map", "6205", "--radial-load-n", "0:2000:50"]) == 0
+    out = capsys.readouterr().out
+    assert "C_r [N/µm]" in out and "S_r [µm]" in out and "(40 of 49 shown)" in out

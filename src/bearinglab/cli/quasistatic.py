@@ -9,7 +9,6 @@ import numpy as np
 import pandas as pd
 import typer
 from rich.markup import escape
-from rich.progress import Progress
 
 from ..errors import InputError
 from ..files import write_atomically
@@ -37,7 +36,7 @@ from ._inputs import (
     speed_rad_s,
     with_geometry,
 )
-from ._output import _emit_json, _save_plot, _table
+from ._output import _emit_json, _save_plot, _table, progress_bar
 
 app = command_app()
 
@@ -301,11 +300,16 @@ def stiffness_map(designation: DesignationArg = None,
     _check_output(("--plot", plot), ("--output", output))
     bearing, _ = resolve_bearing(designation, geometry)
     total = len(radial) * len(axial) * len(speeds)
-    with Progress(console=console, transient=True, disable=json_output) as progress:
-        task = progress.add_task("solving", total=total)
+    done = [0]
+
+    def advance(n: int) -> None:
+        done[0] += n
+        update(done[0] / total, f"solving {done[0]} of {total} cases")
+
+    with progress_bar(f"solving {total} cases", enabled=not json_output) as update:
         table = stiffness_map_study(bearing, radial, axial, speeds, workers=workers or None,
-                                    progress=lambda n: progress.advance(task, n),
-                                    gyroscopic=gyroscopic, race_control=race_control.value)
+                                    progress=advance, gyroscopic=gyroscopic,
+                                    race_control=race_control.value)
     rows = table.to_dict(orient="records")
     if output is not None:
         _write_csv(table, output)
@@ -321,15 +325,18 @@ def stiffness_map(designation: DesignationArg = None,
                         {k: (None if isinstance(v, float) and not math.isfinite(v) else v)
                          for k, v in row.items()} for row in rows]})
         return
-    shown = ["radial_load_n", "axial_load_n", "speed_rpm", "radial_displacement_um",
-             "axial_displacement_um", "radial_stiffness_n_per_um", "axial_stiffness_n_per_um"]
-    shown = [c for c in shown if c in table]
+    headers = {"radial_load_n": label("F_r", "n"), "axial_load_n": label("F_a", "n"),
+               "speed_rpm": label("n", "rpm"), "radial_displacement_um": label("S_r", "um"),
+               "axial_displacement_um": label("S_a", "um"),
+               "radial_stiffness_n_per_um": label("C_r", "n_per_um"),
+               "axial_stiffness_n_per_um": label("C_a", "n_per_um")}
+    shown = [c for c in headers if c in table]
     shown_rows = solved[shown]
     if len(shown_rows) > 40:   # a readable sample; the whole grid is in the CSV / JSON
         shown_rows = shown_rows.iloc[np.linspace(0, len(shown_rows) - 1, 40).astype(int)]
     console.print(_table(f"{bearing.name or 'bearing'}: stiffness over {total} cases"
                          + (f" (40 of {len(solved)} shown)" if len(solved) > 40 else ""),
-                         [c.replace("_", " ") for c in shown], shown_rows.to_numpy().tolist()))
+                         [headers[c] for c in shown], shown_rows.to_numpy().tolist()))
     failed = total - len(solved) - int((table["status"] == "no load").sum())
     if failed:
         console.print(f"[yellow]{failed} case(s) did not converge (see the CSV/JSON "
