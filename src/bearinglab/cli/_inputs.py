@@ -101,6 +101,24 @@ MAX_BALL_LOAD_N = 1e7
 MAX_SPEED_RPM = 1e6
 MAX_LOAD_N = 1e7
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON object instead of tables.")]
+#: The options most commands share (each command gives its own default).
+RingSpeedOpt = Annotated[float, typer.Option("--speed-rpm",
+                                             help="Speed of the rotating ring [rpm].")]
+ShaftSpeedOpt = Annotated[float, typer.Option("--speed-rpm",
+                                              help="Shaft (inner-ring) speed [rpm].")]
+RadialLoadOpt = Annotated[float, typer.Option(
+    "--radial-load-n", help="Radial load F_r on the shaft, downwards [N].")]
+AxialLoadOpt = Annotated[float, typer.Option("--axial-load-n",
+                                             help="Axial load F_a on the inner ring [N].")]
+SchedulerOpt = Annotated[str | None, typer.Option(
+    "--scheduler", help="tcp://HOST:PORT of a running dask scheduler (default: "
+    "$DASK_SCHEDULER_ADDRESS, else a LocalCluster of this machine's cores); 'serial' runs in "
+    "this process.", show_default=False)]
+WorkersOpt = Annotated[int | None, typer.Option(
+    "--workers", help="Worker processes of the LocalCluster (default: the cores).",
+    show_default=False)]
+PlotOpt = Annotated[Path | None, typer.Option(
+    "--plot", help="Also draw the result to this .png, .svg or .pdf file.", show_default=False)]
 DesignationArg = Annotated[str | None, typer.Argument(
     help="Bearing designation or catalogue name; optional with explicit geometry.",
     show_default=False)]

@@ -9,7 +9,7 @@ from rich.markup import escape
 
 from ..errors import InputError
 from ._app import command_app, console
-from ._inputs import JsonOpt, OptionError
+from ._inputs import JsonOpt, OptionError, SchedulerOpt, WorkersOpt
 from ._output import _emit_json, _table
 from .study import hint_of
 
@@ -89,13 +89,8 @@ def dataset(
             "--seed", help="Record i's inputs come from the seed and i.")] = 0,
         partition_size: Annotated[int | None, typer.Option(
             "--partition-size", help="Records per partition.", show_default=False)] = None,
-        scheduler: Annotated[str | None, typer.Option(
-            "--scheduler", help="tcp://HOST:PORT of a running dask scheduler (default: "
-            "$DASK_SCHEDULER_ADDRESS, else a LocalCluster of this machine's cores); 'serial' "
-            "runs in this process.", show_default=False)] = None,
-        workers: Annotated[int | None, typer.Option(
-            "--workers", help="Worker processes of the LocalCluster (default: the cores).",
-            show_default=False)] = None,
+        scheduler: SchedulerOpt = None,
+        workers: WorkersOpt = None,
         yes: Annotated[bool, typer.Option(
             "--yes", help=f"Make more than {CONFIRM_RECORDS} records.")] = False,
         json_output: JsonOpt = False):

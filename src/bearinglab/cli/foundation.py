@@ -1,7 +1,6 @@
 """Commands of the foundation: info, frequencies, contact."""
 
 import math
-from pathlib import Path
 from typing import Annotated
 
 import typer
@@ -20,6 +19,8 @@ from ._inputs import (
     MAX_BALL_LOAD_N,
     JsonOpt,
     OptionError,
+    PlotOpt,
+    RingSpeedOpt,
     _catalog_message,
     _check_designation_text,
     _geometry_line,
@@ -46,8 +47,6 @@ DesignationArg = Annotated[str | None, typer.Argument(
     help="Bearing designation (GOST 3189-89 or ISO, e.g. 6205-2RS, 180205) or catalogue "
          "name (e.g. ER-16K). Optional when the geometry is given explicitly.",
     show_default=False)]
-PlotOpt = Annotated[Path | None, typer.Option(
-    "--plot", help="Also draw the result to this .png, .svg or .pdf file.", show_default=False)]
 
 
 @app.command()
@@ -188,8 +187,7 @@ def _print_bearing(b: BallBearing) -> None:
 @app.command()
 @with_geometry
 def frequencies(designation: DesignationArg = None,
-                speed_rpm: Annotated[float, typer.Option("--speed-rpm", help="Speed of the "
-                                                         "rotating ring [rpm].")] = ...,
+                speed_rpm: RingSpeedOpt = ...,
                 outer_rotating: Annotated[bool, typer.Option(
                     "--outer-rotating", help="The outer ring turns, the inner ring is fixed.")]
                 = False,

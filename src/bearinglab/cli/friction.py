@@ -15,8 +15,11 @@ from ..friction import SEED003_COEFFICIENTS, SKF_BEARING_TYPES, FrictionBearing
 from ..units import UNITS, label, unit_of
 from ._app import command_app, console
 from ._inputs import (
+    AxialLoadOpt,
     JsonOpt,
     OptionError,
+    RadialLoadOpt,
+    RingSpeedOpt,
     _geometry_warnings,
     _print_warnings,
     _si_to_option_units,
@@ -159,12 +162,9 @@ def _option_error(exc: InputError, typed: dict) -> InputError:
 @with_geometry
 def friction_command(
         designation: DesignationArg = None,
-        speed_rpm: Annotated[float, typer.Option("--speed-rpm", help="Speed of the rotating "
-                                                 "ring [rpm].")] = ...,
-        radial_load_n: Annotated[float, typer.Option("--radial-load-n",
-                                                     help="Radial load F_r [N].")] = 0.0,
-        axial_load_n: Annotated[float, typer.Option("--axial-load-n",
-                                                    help="Axial load F_a [N].")] = 0.0,
+        speed_rpm: RingSpeedOpt = ...,
+        radial_load_n: RadialLoadOpt = 0.0,
+        axial_load_n: AxialLoadOpt = 0.0,
         model: Annotated[FrictionModel, typer.Option(
             "--model", help="constant: seed 003's M = mu P d_m / 2; skf: SKF's rolling + "
             "sliding + seal (+ drag) model.")] = FrictionModel.constant,

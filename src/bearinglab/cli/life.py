@@ -14,9 +14,12 @@ from ..errors import InputError
 from ..units import UNITS, label, unit_of
 from ._app import command_app, console
 from ._inputs import (
+    AxialLoadOpt,
     DesignationArg,
     JsonOpt,
     OptionError,
+    RadialLoadOpt,
+    RingSpeedOpt,
     _geometry_line,
     _geometry_warnings,
     _print_warnings,
@@ -76,12 +79,9 @@ def _contamination(text: str | None):
 @with_geometry
 def life_command(
         designation: DesignationArg = None,
-        speed_rpm: Annotated[float, typer.Option("--speed-rpm", help="Speed of the rotating "
-                                                 "ring [rpm].")] = ...,
-        radial_load_n: Annotated[float, typer.Option("--radial-load-n",
-                                                     help="Radial load F_r [N].")] = 0.0,
-        axial_load_n: Annotated[float, typer.Option("--axial-load-n",
-                                                    help="Axial load F_a [N].")] = 0.0,
+        speed_rpm: RingSpeedOpt = ...,
+        radial_load_n: RadialLoadOpt = 0.0,
+        axial_load_n: AxialLoadOpt = 0.0,
         reliability_percent: Annotated[float, typer.Option(
             "--reliability-percent", help="Reliability for the modified life, 90-99.95 "
             "[%] (a_1 of ISO 281 Table 12).")] = 90.0,

@@ -33,6 +33,7 @@ from ._inputs import (
     DesignationArg,
     JsonOpt,
     OptionError,
+    ShaftSpeedOpt,
     _geometry_line,
     _geometry_warnings,
     _print_warnings,
@@ -62,8 +63,7 @@ class BandsFrom(str, Enum):
 @with_geometry
 def noise_command(
         designation: DesignationArg = None,
-        speed_rpm: Annotated[float, typer.Option("--speed-rpm",
-                                                 help="Shaft (inner-ring) speed [rpm].")] = ...,
+        speed_rpm: ShaftSpeedOpt = ...,
         radial_load_n: Annotated[float, typer.Option(
             "--radial-load-n", help="Radial load F_r on the shaft, downwards [N] (> 0).")] = ...,
         waviness: WavinessOpt = None, ball_size_error_um: BallErrorOpt = None,

@@ -23,9 +23,12 @@ from ..units import label
 from ._app import command_app, console
 from ._forms import BallErrorOpt, FormErrors, SeedOpt, Surface3dOpt, WavinessOpt
 from ._inputs import (
+    AxialLoadOpt,
     DesignationArg,
     JsonOpt,
     OptionError,
+    PlotOpt,
+    RadialLoadOpt,
     _geometry_line,
     _geometry_warnings,
     _print_warnings,
@@ -40,8 +43,6 @@ from ._output import _emit_json, _save_plot, _table, progress_bar
 
 app = command_app()
 
-PlotOpt = Annotated[Path | None, typer.Option(
-    "--plot", help="Also draw the result to this .png, .svg or .pdf file.", show_default=False)]
 MAX_CASES = 1_000_000
 
 
@@ -103,10 +104,8 @@ def _lubricant(film: bool, name: str, temperature_c: float | None):
 @app.command()
 @with_geometry
 def static(designation: DesignationArg = None,
-           radial_load_n: Annotated[float, typer.Option("--radial-load-n",
-                                                        help="Radial load F_r [N].")] = 0.0,
-           axial_load_n: Annotated[float, typer.Option("--axial-load-n",
-                                                       help="Axial load F_a [N].")] = 0.0,
+           radial_load_n: RadialLoadOpt = 0.0,
+           axial_load_n: AxialLoadOpt = 0.0,
            speed_rpm: Annotated[float, typer.Option("--speed-rpm",
                                                     help="Inner-ring speed [rpm].")] = 0.0,
            radial_load_angle_deg: Annotated[float, typer.Option(

@@ -15,8 +15,11 @@ from ..units import rpm_to_rad_s
 from ._app import command_app, console
 from ._forms import DEFECT_ALLOWED, parse_defect
 from ._inputs import (
+    AxialLoadOpt,
     JsonOpt,
     OptionError,
+    RadialLoadOpt,
+    ShaftSpeedOpt,
     _geometry_warnings,
     _print_warnings,
     check_loads,
@@ -55,12 +58,9 @@ def _check(speed_rpm, radial, axial, duration, slip_duration, sample_rate, visco
 @with_geometry
 def report_command(
         designation: DesignationArg = None,
-        speed_rpm: Annotated[float, typer.Option("--speed-rpm",
-                                                 help="Shaft (inner-ring) speed [rpm].")] = ...,
-        radial_load_n: Annotated[float, typer.Option(
-            "--radial-load-n", help="Radial load F_r on the shaft, downwards [N].")] = ...,
-        axial_load_n: Annotated[float, typer.Option(
-            "--axial-load-n", help="Axial load F_a on the inner ring [N].")] = 0.0,
+        speed_rpm: ShaftSpeedOpt = ...,
+        radial_load_n: RadialLoadOpt = ...,
+        axial_load_n: AxialLoadOpt = 0.0,
         lubricant: Annotated[str, typer.Option(
             "--lubricant", help="Built-in lubricant for the viscosity (friction, a_ISO), at "
             "its reference temperature: iso-vg68 or seed004-grease.")] = "iso-vg68",

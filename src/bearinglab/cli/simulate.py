@@ -29,6 +29,8 @@ from ._inputs import (
     DesignationArg,
     JsonOpt,
     OptionError,
+    RadialLoadOpt,
+    ShaftSpeedOpt,
     _geometry_warnings,
     _print_warnings,
     check_loads,
@@ -61,10 +63,8 @@ class Model(str, Enum):
 @with_geometry
 def simulate_command(
         designation: DesignationArg = None,
-        speed_rpm: Annotated[float, typer.Option("--speed-rpm",
-                                                 help="Shaft (inner-ring) speed [rpm].")] = ...,
-        radial_load_n: Annotated[float, typer.Option(
-            "--radial-load-n", help="Radial load F_r on the shaft, downwards [N].")] = ...,
+        speed_rpm: ShaftSpeedOpt = ...,
+        radial_load_n: RadialLoadOpt = ...,
         axial_load_n: Annotated[float, typer.Option(
             "--axial-load-n", help="Axial load [N] (the models are planar: not used).")] = 0.0,
         defect: Annotated[list[str] | None, typer.Option(

@@ -9,7 +9,7 @@ from rich.markup import escape
 
 from ..errors import InputError
 from ._app import command_app, console
-from ._inputs import JsonOpt, OptionError, check_path, save_plot_figure
+from ._inputs import JsonOpt, OptionError, SchedulerOpt, WorkersOpt, check_path, save_plot_figure
 from ._output import _emit_json, _table
 
 app = command_app()
@@ -86,13 +86,8 @@ def study(
         partition_size: Annotated[int | None, typer.Option(
             "--partition-size", help="Cases per partition (default: from the analysis and "
             "the case count).", show_default=False)] = None,
-        scheduler: Annotated[str | None, typer.Option(
-            "--scheduler", help="tcp://HOST:PORT of a running dask scheduler (default: "
-            "$DASK_SCHEDULER_ADDRESS, else a LocalCluster of this machine's cores); 'serial' "
-            "runs in this process.", show_default=False)] = None,
-        workers: Annotated[int | None, typer.Option(
-            "--workers", help="Worker processes of the LocalCluster (default: the cores).",
-            show_default=False)] = None,
+        scheduler: SchedulerOpt = None,
+        workers: WorkersOpt = None,
         yes: Annotated[bool, typer.Option(
             "--yes", help=f"Run a study of more than {CONFIRM_CASES} cases.")] = False,
         plot: Annotated[Path | None, typer.Option(
