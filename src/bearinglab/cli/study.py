@@ -147,6 +147,13 @@ def _plot(result, path: Path, plot_of: str | None) -> None:
     save_plot_figure(fig, path)
 
 
+def _natural_width(table) -> int:
+    """The width ``table`` takes when nothing is wrapped or cut [characters]."""
+    from rich.console import Console
+
+    return Console(width=10_000).measure(table).maximum
+
+
 def _print(result, table) -> None:
     d = result.to_dict()
     rate = d["cases_per_s"]
@@ -159,13 +166,20 @@ def _print(result, table) -> None:
             ["workers", d["workers"], ""], ["scheduler", d["scheduler"], ""],
             ["output", d["output"], ""]]
     console.print(_table("study", ["", "value", "unit"], rows))
-    outputs = [c for c in result.outputs if table[c].notna().any()][:PREVIEW_OUTPUTS]
-    columns = ["case", *result.inputs, *outputs]
     ok = table[table["error"].isna()]
     shown = ok.head(PREVIEW_ROWS)
-    console.print(_table(f"first {len(shown)} of {len(ok)} cases that ran",
+    # as many output columns as fit the terminal: numbers are never cut (the whole table is
+    # in the Parquet files)
+    outputs = [c for c in result.outputs if table[c].notna().any()][:PREVIEW_OUTPUTS]
+    while True:
+        columns = ["case", *result.inputs, *outputs]
+        preview = _table(f"first {len(shown)} of {len(ok)} cases that ran",
                          [_label(c).replace(" [", "\n[") for c in columns],
-                         [[row[c] for c in columns] for _, row in shown.iterrows()]))
+                         [[row[c] for c in columns] for _, row in shown.iterrows()])
+        if not outputs or _natural_width(preview) <= console.width:
+            break
+        outputs.pop()
+    console.print(preview)
     failed = table[table["error"].notna()]
     for _, row in failed.head(PREVIEW_ROWS).iterrows():
         console.print(f"[yellow]case {row['case']} failed:[/yellow] {escape(row['error'])}")
