@@ -1,7 +1,8 @@
 """Records without a bearing fault give "no fault detected" at the default false-alarm
 probability (1 %): white noise and healthy simulated bearings, in at least 95 % of seeds
-(issue 11). Measured 2026-11-24: white noise 0/200 seeds called faulty with cpw and raw,
-1/200 with drs-sk and with all three; healthy rigid-model 6205 records 1/40 (noise 1 m/s^2).
+(issue 11). Measured 2026-11-24 with the nested sideband templates: white noise 0/200 seeds
+called faulty with cpw and raw, 1/200 with drs-sk and with all three; healthy rigid-model
+6205 records 0/40 (noise 1 m/s^2; 1/40 before the nested templates).
 The default run is short; the ``slow`` ones use more seeds."""
 
 import math

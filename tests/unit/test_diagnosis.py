@@ -224,6 +224,43 @@ def test_series_test_finds_a_comb_and_its_slip():
     assert miss.significance < 2
 
 
+def test_nested_templates_keep_an_unmodulated_series():
+    # a comb with no sidebands, in a spectrum with a noise floor that varies
+    rng = np.random.default_rng(3)
+    z = rng.chisquare(40, 2000) / 40
+    for n in range(1, 6):
+        z[round(n * 100.0 / 0.5)] = 8.0
+    plain = series_test(z, 0.5, 40.0, 100.0, 0.02, 0.02, 5, 900.0)
+    with_sidebands = series_test(z, 0.5, 40.0, 100.0, 0.02, 0.02, 5, 900.0,
+                                 modulation=7.0, orders=2)
+    # the harmonics-alone template wins, at the price of a factor 3 (three templates); the
+    # sidebands' positions are left out of the reference too, which moves it a little
+    assert with_sidebands.significance == pytest.approx(plain.significance - math.log10(3),
+                                                        abs=0.3)
+    assert {ln.kind for ln in with_sidebands.lines} == {"harmonic"}
+    # with sidebands present, the template that holds them is kept
+    for n in range(1, 6):
+        for k in (-2, -1, 1, 2):
+            z[round((n * 100.0 + k * 7.0) / 0.5)] = 8.0
+    modulated = series_test(z, 0.5, 40.0, 100.0, 0.02, 0.02, 5, 900.0,
+                            modulation=7.0, orders=2)
+    assert modulated.significance > with_sidebands.significance + 3
+    assert sum(ln.kind == "sideband" and abs(ln.k) == 2 for ln in modulated.lines) == 10
+
+
+def test_outer_race_with_twice_shaft_sidebands_only(kin):
+    # an outer-race defect away from the load line under a rotating load: the load on it
+    # follows the shaft angle through a load zone shorter than a turn, so the impacts
+    # carry 2 x shaft sidebands (CWRU record 144 at 3 o'clock), here with no 1 x
+    x = impacts(kin.hz("bpfo"), seconds=2.0, jitter=0.01, noise=0.6, seed=4)
+    t = np.arange(x.size) / FS
+    x = x * (1.0 + 0.9 * np.cos(2 * np.pi * 2 * kin.shaft_hz * t))
+    d = analyze_signal(x, FS, kin, methods="raw")
+    assert d.verdict == "outer_race"
+    assert any(ln["kind"] == "sideband" and abs(ln["k"]) == 2
+               for ln in d.families["outer_race"]["lines"])
+
+
 def test_leakage_mask_grows_with_the_line():
     assert leakage_halfwidth(1.0) == 1
     assert leakage_halfwidth(1e3) < leakage_halfwidth(1e6) <= 12

@@ -7,7 +7,13 @@ MSSP 25(2) (2011) 485-520, sec. 2 and fig. 4):
 - outer race: harmonics of BPFO; under a fixed load no modulation, but a rotating load,
   unbalance or misalignment modulate it at the shaft rate, and the CWRU outer-race records
   at 3 and 12 o'clock carry shaft-rate sidebands (issue 11's measurements): sidebands
-  +-1 x shaft;
+  +-1, 2 x shaft - the load on the defect then follows the same load-zone function of the
+  shaft angle as an inner-race defect's under a fixed load, which is not a sinusoid (the
+  load zone spans less than a turn), hence the same two orders as the inner race
+  (Randall & Antoni 2011, sec. 2 and fig. 4). Record 144 (3 o'clock) shows 1 and 2 x BPFO
+  with +-2 x shaft sidebands (z 10-17 with cpw) and no +-1. The sidebands are tested as
+  nested templates (harmonics alone first: :mod:`.statistics`), so an unmodulated
+  series loses nothing by them;
 - inner race: harmonics of BPFI with sidebands at the shaft rate, the defect passing
   through the load zone once per revolution (+-1, 2 x shaft);
 - ball: harmonics of the ball-defect rate 2 BSF (the defect strikes both races per spin
@@ -46,7 +52,7 @@ FAMILIES = ("outer_race", "inner_race", "ball", "cage")
 #: Family -> name of its kinematic frequency (bearinglab.kinematics names).
 FREQUENCY = {"outer_race": "bpfo", "inner_race": "bpfi", "ball": "ball_defect", "cage": "ftf"}
 #: Family -> (modulating frequency name, sideband orders either side).
-SIDEBANDS = {"outer_race": ("shaft", 1), "inner_race": ("shaft", 2), "ball": ("ftf", 2),
+SIDEBANDS = {"outer_race": ("shaft", 2), "inner_race": ("shaft", 2), "ball": ("ftf", 2),
              "cage": (None, 0)}
 #: Default tolerance windows (below, above), fractions of the kinematic value.
 TOLERANCES = {"outer_race": (0.02, 0.02), "inner_race": (0.02, 0.02), "ball": (0.07, 0.02),
