@@ -7,10 +7,16 @@ default, against ``np.abs(scipy.signal.hilbert(x))`` and ``np.fft.rfft`` of the 
 transform at an awkward length (480 001 samples) with and without the fast-length padding
 of ``bearinglab.signal.spectra.analytic`` (issue 12 item 9).
 
-Run: .venv/bin/python benchmarks/bench_diagnosis.py
+With ``--synthetic``: the synthetic validation table of docs/capabilities/diagnosis.md -
+detections per fault family, SNR and method on rigid-model records (``dynamics.simulate``)
+with slip, a random-walk time warp (random slip), a transfer-path resonance, shaft
+harmonics and white noise.
+
+Run: .venv/bin/python benchmarks/bench_diagnosis.py [--synthetic [SEEDS]]
 """
 
 import math
+import sys
 import time
 from pathlib import Path
 
@@ -68,5 +74,74 @@ def main():
           f"{1e3 * fast:.0f} ms (x{slow / fast:.1f})")
 
 
+SLIP = {"outer": (-0.015, 0.015), "inner": (-0.015, 0.015), "ball": (-0.04, 0.01),
+        "none": (0.0, 0.0)}
+WANT = {"outer": "outer_race", "inner": "inner_race", "ball": "ball",
+        "none": "no fault detected"}
+
+
+def synthetic_base(fault, seed, duration=4.0):
+    """Noise-free rigid-model record of a 6205 with ``fault`` and its random inputs."""
+    from bearinglab.dynamics import Defect, simulate
+    from bearinglab.operating import OperatingCondition
+
+    bearing = bearing_from_designation("6205")[0]
+    rng = np.random.default_rng(1000 + seed + 100 * ["none", "outer", "inner", "ball"].index(fault))
+    rpm, load, slip = rng.uniform(1700, 1800), rng.uniform(300, 2000), rng.uniform(*SLIP[fault])
+    defects = [] if fault == "none" else [Defect(
+        fault, rng.uniform(0.3e-3, 1.5e-3), rng.uniform(0.1e-3, 0.3e-3),
+        angle=rng.uniform(-0.75 * math.pi, -0.25 * math.pi) if fault == "outer"
+        else rng.uniform(0, 2 * math.pi), ball=int(rng.integers(9)) if fault == "ball" else 0)]
+    # slip s: the defect lines at (1 + s) x their kinematic value
+    condition = OperatingCondition(radial_load=load, shaft_speed=rpm * (1 + slip) * math.pi / 30)
+    sim = simulate(bearing, condition, defects, model="rigid", duration=duration,
+                   sample_rate=FS)
+    resonance = (rng.uniform(2500, 4500), rng.uniform(0.02, 0.08))
+    return np.asarray(sim.signal.channels["acc_y"]), rpm, resonance, bearing
+
+
+def synthetic_record(base, seed, snr_db, fault, jitter=0.01, shaft_amp=2.0):
+    """(samples, kinematics given to the analysis) of one synthetic record."""
+    from bearinglab.dataset.path import TransferPath
+
+    x, rpm, resonance, bearing = base
+    rng = np.random.default_rng(seed * 7 + 13)
+    x = x - x.mean()
+    t = np.arange(x.size) / FS
+    kin = defect_frequencies(bearing, rpm * math.pi / 30)
+    # random slip: a random-walk time warp, spread `jitter` of a BPFO period per period
+    period, step = 1 / kin.hz("bpfo"), 1e-3
+    m = int(t[-1] / step) + 3
+    walk = np.cumsum(rng.standard_normal(m)) * jitter * period * math.sqrt(step / period)
+    x = np.interp(t + np.interp(t, np.arange(m) * step, walk - walk[0]), t, x)
+    x = TransferPath((resonance,)).apply(x, FS)
+    rms = float(np.std(x))
+    if fault == "none":  # healthy: its own lines at -20 dB of a unit fault signal
+        x, rms = x / max(rms, 1e-30) * 0.1, 1.0
+    for k in range(1, 6):  # shaft harmonics (unbalance, misalignment)
+        x = x + shaft_amp * rms / k * np.sin(2 * np.pi * k * rpm / 60 * t
+                                             + rng.uniform(0, 2 * np.pi))
+    return x + rms * 10 ** (-snr_db / 20) * rng.standard_normal(x.size), kin
+
+
+def synthetic(seeds=12, snrs=(0, -5, -10, -15), methods=("raw", "cpw", "drs-sk", "all")):
+    print("fault  SNR_dB " + " ".join(f"{m:>8}" for m in methods))
+    for fault in SLIP:
+        bases = [synthetic_base(fault, s) for s in range(seeds)]
+        for snr in snrs:
+            cells = []
+            for m in methods:
+                hits = 0
+                for s, base in enumerate(bases):
+                    x, kin = synthetic_record(base, s, snr, fault)
+                    hits += analyze_signal(x, FS, kin, methods=m).verdict == WANT[fault]
+                cells.append(f"{hits:>5}/{seeds}")
+            print(f"{fault:6} {snr:6g} " + " ".join(cells), flush=True)
+
+
 if __name__ == "__main__":
-    main()
+    if "--synthetic" in sys.argv:
+        rest = sys.argv[sys.argv.index("--synthetic") + 1:]
+        synthetic(int(rest[0]) if rest else 12)
+    else:
+        main()

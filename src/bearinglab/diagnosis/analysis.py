@@ -35,10 +35,12 @@ HARMONICS = 8
 #: Default probability of a false alarm on a record with no fault [-].
 FALSE_ALARM = 0.01
 #: Default methods, chosen by measurement on the 18 shared CWRU and MFPT records
-#: (docs/capabilities/diagnosis.md), scoring right Y records + healthy + MFPT minus twice
-#: the wrong faults: cpw 11 (8 of 12 Y, no wrong fault), all three 10 (9 Y), drs-sk 9 and
-#: raw 8 (all but cpw call record 118, a ball fault Smith & Randall find undiagnosable,
-#: "outer_race").
+#: (docs/capabilities/diagnosis.md, 2026-11-24, nested sideband templates), scoring right
+#: Y records + healthy + MFPT minus twice the wrong faults: cpw 12 (9 of 12 Y, no wrong
+#: fault), all three 10 (9 Y), drs-sk 10 and raw 9 (all but cpw call record 118, a ball
+#: fault Smith & Randall find undiagnosable, "outer_race"). On synthetic records all three
+#: together detect more than cpw alone (the docs' table): the choice rests on the real
+#: records and is to be revisited on the larger set.
 DEFAULT_METHODS = ("cpw",)
 #: Methods for a record simulated by bearinglab (no random slip: deterministic).
 SIMULATED_METHODS = ("raw",)
