@@ -88,6 +88,7 @@ def envelope(ctx: Context):
                              duration=ctx.duration, sample_rate=ctx.sample_rate)
     sim, diag = record.simulation, record.diagnosis
     ctx.results["simulation"] = sim
+    found = (diag.likely_fault or "no fault detected").replace("_", " ")
     said = [f"Defects simulated: {'; '.join(_defect_text(d) for d in defects)}."]
     if not ctx.defects_given:
         said.insert(0, "No defect was given (--defect): this is an example outer-race "
@@ -114,10 +115,8 @@ def envelope(ctx: Context):
             table(["frequency [Hz]", "amplitude [m/s2]", "matched line",
                    "deviation [%]"], rows, f"Strongest envelope lines (band {band}, "
                    f"resolution {diag.resolution:.3g} Hz)", numeric=(0, 1, 3)),
-            paragraph(f"Likely fault: {diag.likely_fault or 'no fault detected'}. "
-                      f"{diag.reason}"),
+            paragraph(f"Likely fault: {found}. {diag.reason}"),
             notes(assumptions, "Assumptions")]
-    found = diag.likely_fault or "no fault detected"
     if not ctx.defects_given:   # an example is not a finding: say so on the card too
         return "".join(body), [("Example defect (not a finding)",
                                 f"outer race simulated; diagnosis: {found}")]
