@@ -93,7 +93,9 @@ def f0_factor(gamma: float, thrust: bool = False) -> float:
     return _table("gamma", gamma, T.F0_GAMMA, T.F0_RADIAL, "ISO 76 Table 1")
 
 
-def _check_set(ball_count, ball_diameter, pitch_diameter, contact_angle, rows):
+def _check_set(ball_count, ball_diameter, pitch_diameter, contact_angle, rows) -> bool:
+    """Check one set of rating inputs; True for a thrust ball bearing (alpha = 90 deg, which
+    has a single row)."""
     if isinstance(ball_count, bool) or not isinstance(ball_count, (int, np.integer)) \
             or ball_count < 3:
         raise InputError("ball_count", ball_count, "an integer >= 3")
@@ -109,6 +111,11 @@ def _check_set(ball_count, ball_diameter, pitch_diameter, contact_angle, rows):
         raise InputError("contact_angle", contact_angle, "an angle in [0, 90] degrees")
     if isinstance(rows, bool) or not isinstance(rows, (int, np.integer)) or rows < 1:
         raise InputError("rows", rows, "an integer >= 1")
+    thrust = math.isclose(contact_angle, 0.5 * math.pi, abs_tol=1e-12)
+    if thrust and rows != 1:
+        raise InputError("rows", rows, "1 for a thrust ball bearing",
+                         "multi-row thrust ratings are not implemented")
+    return thrust
 
 
 def dynamic_load_rating(ball_count: int, ball_diameter: float, pitch_diameter: float,
@@ -140,15 +147,11 @@ def dynamic_load_rating(ball_count: int, ball_diameter: float, pitch_diameter: f
     >>> round(dynamic_load_rating(9, 7.94004e-3, 39.0398e-3))  # SKF 6205 (CWRU), ISO 281
     14027
     """
-    _check_set(ball_count, ball_diameter, pitch_diameter, contact_angle, rows)
+    thrust = _check_set(ball_count, ball_diameter, pitch_diameter, contact_angle, rows)
     d_w = ball_diameter / _MM
-    thrust = math.isclose(contact_angle, 0.5 * math.pi, abs_tol=1e-12)
     if thrust:
         gamma = ball_diameter / pitch_diameter
         front = T.B_M_BALL * fc_factor(gamma, thrust=True) * ball_count ** (2.0 / 3.0)
-        if rows != 1:
-            raise InputError("rows", rows, "1 for a thrust ball bearing",
-                             "multi-row thrust ratings are not implemented")
     else:
         gamma = ball_diameter * math.cos(contact_angle) / pitch_diameter
         front = (T.B_M_BALL * fc_factor(gamma) * (rows * math.cos(contact_angle)) ** 0.7
@@ -187,12 +190,9 @@ def static_load_rating(ball_count: int, ball_diameter: float, pitch_diameter: fl
     >>> round(static_load_rating(8, 7.92e-3, 34.55e-3))  # XJTU-SY LDK UER204
     6635
     """
-    _check_set(ball_count, ball_diameter, pitch_diameter, contact_angle, rows)
+    thrust = _check_set(ball_count, ball_diameter, pitch_diameter, contact_angle, rows)
     d_w = ball_diameter / _MM
-    if math.isclose(contact_angle, 0.5 * math.pi, abs_tol=1e-12):
-        if rows != 1:
-            raise InputError("rows", rows, "1 for a thrust ball bearing",
-                             "multi-row thrust ratings are not implemented")
+    if thrust:
         return f0_factor(ball_diameter / pitch_diameter, thrust=True) * ball_count * d_w ** 2
     gamma = ball_diameter * math.cos(contact_angle) / pitch_diameter
     return f0_factor(gamma) * rows * ball_count * d_w ** 2 * math.cos(contact_angle)
