@@ -94,6 +94,38 @@ def error_norm(err, y0, y1, rtol, atol):
 
 
 @numba.njit(cache=True)
+def outputs_before(t, y, t_out, out):
+    """Fill the outputs at (or before) the start time ``t`` with ``y``; return the index of
+    the first output still to come."""
+    i_out = 0
+    while i_out < t_out.shape[0] and t_out[i_out] <= t:
+        out[i_out] = y
+        i_out += 1
+    return i_out
+
+
+@numba.njit(cache=True)
+def step_limits(h, h_max, steps, rejected, max_steps):
+    """(step to try, OK): ``h`` capped at ``h_max``; or the status that ends the chunk,
+    TOO_MANY_STEPS once ``max_steps`` steps were tried, STEP_TOO_SMALL below 1e-14 s."""
+    if steps + rejected >= max_steps:
+        return h, TOO_MANY_STEPS
+    h = min(h, h_max)
+    if h < 1e-14:
+        return h, STEP_TOO_SMALL
+    return h, OK
+
+
+@numba.njit(cache=True)
+def retry_not_finite(h):
+    """After a step whose error norm is not finite: (a quarter of ``h`` to retry with, OK),
+    or (h, NOT_FINITE) once ``h`` is below 1e-12 s."""
+    if h < 1e-12:
+        return h, NOT_FINITE
+    return 0.25 * h, OK
+
+
+@numba.njit(cache=True)
 def dopri_chunk(rhs, p, table, t, y, h, t_out, rtol, atol, h_max, max_steps):
     """Integrate dy/dt = rhs(t, y, p, table) from t over the output times ``t_out``.
 
@@ -108,16 +140,11 @@ def dopri_chunk(rhs, p, table, t, y, h, t_out, rtol, atol, h_max, max_steps):
     rhs(t, y, p, table, k[0])
     steps = 0
     rejected = 0
-    i_out = 0
-    while i_out < t_out.shape[0] and t_out[i_out] <= t:
-        out[i_out] = y                      # outputs at (or before) the start
-        i_out += 1
+    i_out = outputs_before(t, y, t_out, out)
     while i_out < t_out.shape[0]:
-        if steps + rejected >= max_steps:
-            return out, t, y, h, steps, rejected, TOO_MANY_STEPS
-        h = min(h, h_max)
-        if h < 1e-14:
-            return out, t, y, h, steps, rejected, STEP_TOO_SMALL
+        h, status = step_limits(h, h_max, steps, rejected, max_steps)
+        if status != OK:
+            return out, t, y, h, steps, rejected, status
         for s in range(1, 7):
             for i in range(n):
                 acc = y[i]
@@ -133,9 +160,9 @@ def dopri_chunk(rhs, p, table, t, y, h, t_out, rtol, atol, h_max, max_steps):
             err[i] = h * acc
         norm = error_norm(err, y, ynew, rtol, atol)
         if not np.isfinite(norm):
-            if h < 1e-12:
-                return out, t, y, h, steps, rejected, NOT_FINITE
-            h *= 0.25
+            h, status = retry_not_finite(h)
+            if status != OK:
+                return out, t, y, h, steps, rejected, status
             rejected += 1
             continue
         if norm <= 1.0:

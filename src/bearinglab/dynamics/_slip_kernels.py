@@ -24,7 +24,7 @@ import math
 import numba
 import numpy as np
 
-from ._integrate import NOT_FINITE, OK, STEP_TOO_SMALL, TOO_MANY_STEPS, error_norm
+from ._integrate import OK, error_norm, outputs_before, retry_not_finite, step_limits
 from ._kernels import surface_deviation_numba
 
 NG = 10          # global states
@@ -476,19 +476,14 @@ def rosenbrock_chunk(p, table, t, y, h, t_out, rtol, atol, h_max, max_steps):
     err = np.empty(n)
     steps = 0
     rejected = 0
-    i_out = 0
-    while i_out < t_out.shape[0] and t_out[i_out] <= t:
-        out[i_out] = y
-        i_out += 1
+    i_out = outputs_before(t, y, t_out, out)
     slip_rhs(t, y, p, table, f0, parts0)
     need_jacobian = True
     age = 0
     while i_out < t_out.shape[0]:
-        if steps + rejected >= max_steps:
-            return out, t, y, h, steps, rejected, TOO_MANY_STEPS
-        h = min(h, h_max)
-        if h < 1e-14:
-            return out, t, y, h, steps, rejected, STEP_TOO_SMALL
+        h, status = step_limits(h, h_max, steps, rejected, max_steps)
+        if status != OK:
+            return out, t, y, h, steps, rejected, status
         if need_jacobian:
             _jacobian(t, y, f0, parts0, p, table, jac_g, jac_gb, jac_bg, jac_b)
             dt = 1e-7 * max(abs(t), 1e-3)
@@ -519,9 +514,9 @@ def rosenbrock_chunk(p, table, t, y, h, t_out, rtol, atol, h_max, max_steps):
             err[i] = h / 6.0 * (k1[i] - 2.0 * k2[i] + k3[i])
         norm = error_norm(err, y, ynew, rtol, atol)
         if not np.isfinite(norm):
-            if h < 1e-12:
-                return out, t, y, h, steps, rejected, NOT_FINITE
-            h *= 0.25
+            h, status = retry_not_finite(h)
+            if status != OK:
+                return out, t, y, h, steps, rejected, status
             rejected += 1
             continue
         if norm <= 1.0:
