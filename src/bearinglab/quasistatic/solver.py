@@ -38,6 +38,7 @@ from __future__ import annotations
 
 import functools
 import math
+from collections.abc import Callable
 
 import numpy as np
 from scipy import optimize
@@ -285,26 +286,15 @@ def _speed_continuation(problem: _Problem, tolerance: float, max_iterations: int
     thrust and high speed the balls roll far up the inner groove (alpha_i ~ 60 deg against
     alpha_o ~ 5 deg) and Newton's method cannot reach that state from a cold start."""
     target = problem.spd.copy()
+
+    def at(fraction: float) -> None:
+        problem.spd[0] = fraction * target[0]
+        problem.spd[6] = fraction * target[6]
+
     problem.spd[0] = 0.0
     problem.spd[6] = 0.0
     try:
-        u = _ring(problem, tolerance, max_iterations, None)[0]
-        t, step = 0.0, 0.25
-        while t < 1.0:
-            trial = min(1.0, t + step)
-            problem.spd[0] = trial * target[0]
-            problem.spd[6] = trial * target[6]
-            try:
-                u = _ring(problem, tolerance, max_iterations, u)[0]
-                t, step = trial, min(0.5, 2 * step)
-            except ConvergenceError:
-                step *= 0.5
-                if step < 1e-3:
-                    raise failure from None
-        problem.spd[:] = target
-        return _ring(problem, tolerance, max_iterations, u)
-    except ConvergenceError:
-        raise failure from None
+        return _march(problem, tolerance, max_iterations, failure, at)
     finally:
         problem.spd[:] = target
 
@@ -320,13 +310,29 @@ def _continuation(problem: _Problem, tolerance: float, max_iterations: int,
     start[2:] = 0.0
     if not np.any(start):
         start = 0.1 * target
+
+    def at(fraction: float) -> None:
+        problem.load = start + fraction * (target - start)
+
     problem.load = start
+    try:
+        return _march(problem, tolerance, max_iterations, failure, at)
+    finally:
+        problem.load = target
+
+
+def _march(problem: _Problem, tolerance: float, max_iterations: int,
+           failure: ConvergenceError, at: Callable[[float], None]):
+    """Solve ``problem`` as it stands, then move it by ``at(fraction)`` to fraction 1 in
+    steps (a quarter at first, doubled up to a half after a success, halved after a
+    failure), each solve starting from the last solution; ``failure`` is raised when the
+    step falls below 1e-3 or the last solve fails."""
     try:
         u = _ring(problem, tolerance, max_iterations, None)[0]
         t, step = 0.0, 0.25
         while t < 1.0:
             trial = min(1.0, t + step)
-            problem.load = start + trial * (target - start)
+            at(trial)
             try:
                 u = _ring(problem, tolerance, max_iterations, u)[0]
                 t, step = trial, min(0.5, 2 * step)
@@ -337,8 +343,6 @@ def _continuation(problem: _Problem, tolerance: float, max_iterations: int,
         return _ring(problem, tolerance, max_iterations, u)
     except ConvergenceError:
         raise failure from None
-    finally:
-        problem.load = target
 
 
 def _setup(problem: _Problem, tolerance: float, initial):
