@@ -90,6 +90,21 @@ def _wavenumber(frequency, sound_speed) -> np.ndarray:
     return 2.0 * np.pi * _frequencies(frequency) / _positive("sound_speed", sound_speed, "[m/s]")
 
 
+def _radius_and_distance(radius, distance, body: str) -> tuple[float, float]:
+    """(r_0, r) [m]: the source's radius and a field distance outside it."""
+    r0 = _positive("radius", radius, "[m]")
+    r = _positive("distance", distance, "[m]")
+    if r < r0:
+        raise InputError("distance", distance, f"a distance >= the {body} radius {r0:g} m")
+    return r0, r
+
+
+def _impedance(density, sound_speed) -> float:
+    """Characteristic impedance rho_0 c_0 of the medium [Pa s/m]."""
+    return _positive("density", density, "[kg/m^3]") * _positive("sound_speed", sound_speed,
+                                                                 "[m/s]")
+
+
 def sound_pressure_level(effective_pressure):
     """SPL = 20 lg(p_e / p_ref), p_ref = 2e-5 Pa (seed 003 eq. 27) [dB].
 
@@ -156,10 +171,7 @@ def cylinder_transfer(frequency, radius, distance, *, density=AIR_DENSITY,
     >>> round(float(abs(h[0]) / (2 * np.pi * 10.0 * 1.21 * 25e-6 / 1e-2)), 4)
     1.0
     """
-    a = _positive("radius", radius, "[m]")
-    r = _positive("distance", distance, "[m]")
-    if r < a:
-        raise InputError("distance", distance, f"a distance >= the cylinder radius {a:g} m")
+    a, r = _radius_and_distance(radius, distance, "cylinder")
     if form not in CYLINDER_FORMS:
         raise InputError("form", form, f"one of {CYLINDER_FORMS}")
     rho = _positive("density", density, "[kg/m^3]")
@@ -209,10 +221,7 @@ def pulsating_sphere_transfer(frequency, radius, distance, *, density=AIR_DENSIT
     >>> round(float(abs(h[0]) * 0.01 * np.sqrt(1 + k_r0**2) / (1.21 * 343.0 * k_r0 * 2e-3)), 12)
     1.0
     """
-    r0 = _positive("radius", radius, "[m]")
-    r = _positive("distance", distance, "[m]")
-    if r < r0:
-        raise InputError("distance", distance, f"a distance >= the sphere radius {r0:g} m")
+    r0, r = _radius_and_distance(radius, distance, "sphere")
     k = _wavenumber(frequency, sound_speed)
     return (pulsating_sphere_source(k, r0, density=density, sound_speed=sound_speed)
             * np.exp(-1j * k * r) / r)
@@ -233,8 +242,7 @@ def pulsating_sphere_source(wavenumber, radius, *, density=AIR_DENSITY,
         rho_0 [kg/m^3], c_0 [m/s].
     """
     r0 = _positive("radius", radius, "[m]")
-    rc = _positive("density", density, "[kg/m^3]") * _positive("sound_speed", sound_speed,
-                                                                "[m/s]")
+    rc = _impedance(density, sound_speed)
     kr0 = np.asarray(wavenumber, dtype=float) * r0
     return rc * r0 * np.exp(1j * kr0) * 1j * kr0 / (1 + 1j * kr0)
 
@@ -259,8 +267,7 @@ def oscillating_sphere_source(wavenumber, radius, *, density=AIR_DENSITY,
         rho_0 [kg/m^3], c_0 [m/s].
     """
     r0 = _positive("radius", radius, "[m]")
-    rc = _positive("density", density, "[kg/m^3]") * _positive("sound_speed", sound_speed,
-                                                                "[m/s]")
+    rc = _impedance(density, sound_speed)
     k = np.asarray(wavenumber, dtype=float)
     kr0 = k * r0
     common = rc * r0 * np.exp(1j * kr0) / (2 + 2j * kr0 - kr0**2)
@@ -283,10 +290,7 @@ def oscillating_sphere_transfer(frequency, radius, distance, *, density=AIR_DENS
     density, sound_speed : float
         rho_0 [kg/m^3], c_0 [m/s].
     """
-    r0 = _positive("radius", radius, "[m]")
-    r = _positive("distance", distance, "[m]")
-    if r < r0:
-        raise InputError("distance", distance, f"a distance >= the sphere radius {r0:g} m")
+    r0, r = _radius_and_distance(radius, distance, "sphere")
     k = _wavenumber(frequency, sound_speed)
     g1, g2 = oscillating_sphere_source(k, r0, density=density, sound_speed=sound_speed)
     return (g1 / r + g2 / r**2) * np.exp(-1j * k * r)
