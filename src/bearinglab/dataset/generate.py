@@ -23,7 +23,13 @@ from .. import __version__
 from ..errors import InputError
 from ..files import write_atomically
 from ..study import execute
-from ..study.cases import canonical, default_partition_size, partitions
+from ..study.cases import (
+    canonical,
+    held_description,
+    partition_size_for,
+    partitions,
+    whole_number,
+)
 from . import layout
 from .sampling import DatasetSpec, draw_record
 
@@ -161,12 +167,8 @@ class DatasetResult:
 
 
 def _check_folder(folder: Path, identity: dict) -> None:
-    marker = folder / OWN / MARKER
-    if marker.exists():
-        try:
-            held = json.loads(marker.read_text(encoding="utf-8"))
-        except (OSError, ValueError):
-            held = {}
+    held = held_description(folder / OWN / MARKER)
+    if held is not None:
         if canonical(held.get("identity")) != canonical(identity):
             raise InputError("output", str(folder), "a new folder or one holding this same "
                              "data set", f"it holds a different data set ({held.get('records')}"
@@ -213,19 +215,14 @@ def make_dataset(output, records: int, *, seed: int = 0, partition_size: int | N
     -------
     DatasetResult
     """
-    if isinstance(seed, bool) or not isinstance(seed, int) or seed < 0:
-        raise InputError("seed", seed, "a whole number >= 0")
+    whole_number("seed", seed, 0)
     spec = DatasetSpec(records, **ranges)
     if records > MAX_RECORDS:
         raise InputError("records", records, f"at most {MAX_RECORDS:g}")
     if max_records is not None and records > max_records:
         raise InputError("records", records, f"at most {max_records} without confirmation",
                          "confirm with --yes (or raise max_records) to make them all")
-    if partition_size is None:
-        partition_size = default_partition_size(records, LARGEST_PARTITION)
-    elif isinstance(partition_size, bool) or not isinstance(partition_size, int) \
-            or partition_size < 1:
-        raise InputError("partition_size", partition_size, "a whole number >= 1")
+    partition_size = partition_size_for(partition_size, records, LARGEST_PARTITION)
     folder = Path(output)
     name = folder.resolve().name
     if not name:

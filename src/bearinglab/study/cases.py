@@ -309,6 +309,31 @@ def default_partition_size(count: int, largest: int) -> int:
     return max(1, min(largest, math.ceil(count / 32)))
 
 
+def whole_number(name: str, value, minimum: int) -> int:
+    """``value`` if it is an int (not a bool) >= ``minimum``, else InputError naming ``name``."""
+    if isinstance(value, bool) or not isinstance(value, int) or value < minimum:
+        raise InputError(name, value, f"a whole number >= {minimum}")
+    return value
+
+
+def partition_size_for(partition_size, count: int, largest: int) -> int:
+    """``partition_size`` (a whole number >= 1), or :func:`default_partition_size` when None."""
+    if partition_size is None:
+        return default_partition_size(count, largest)
+    return whole_number("partition_size", partition_size, 1)
+
+
+def held_description(marker: Path) -> dict | None:
+    """The description a study's or data set's marker file holds: None when there is no
+    marker, {} when it cannot be read."""
+    if not marker.exists():
+        return None
+    try:
+        return json.loads(marker.read_text(encoding="utf-8"))
+    except (OSError, ValueError):
+        return {}
+
+
 def canonical(obj) -> str:
     """Stable JSON text of a study's identity (sorted keys)."""
     return json.dumps(obj, sort_keys=True, default=str)

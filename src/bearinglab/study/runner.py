@@ -27,10 +27,12 @@ from .cases import (
     Grid,
     Uniform,
     canonical,
-    default_partition_size,
+    held_description,
     parse_values,
+    partition_size_for,
     partitions,
     unknown_option,
+    whole_number,
 )
 
 MARKER = "_study.json"
@@ -148,8 +150,7 @@ def _source(a: Analysis, grid, cases, seed: int, repeats: int):
         return CaseTable(cases, a.options, a.name)
     if not isinstance(grid, dict) or not grid:
         raise InputError("grid", grid, "a dict option name -> values with at least one option")
-    if isinstance(repeats, bool) or not isinstance(repeats, int) or repeats < 1:
-        raise InputError("repeats", repeats, "a whole number >= 1")
+    whole_number("repeats", repeats, 1)
     values = {}
     for name, spec in grid.items():
         if name not in a.options:
@@ -160,12 +161,8 @@ def _source(a: Analysis, grid, cases, seed: int, repeats: int):
 
 def _check_folder(folder: Path, identity: dict) -> None:
     """Refuse a folder that holds anything but this same study (nothing is touched)."""
-    marker = folder / MARKER
-    if marker.exists():
-        try:
-            held = json.loads(marker.read_text(encoding="utf-8"))
-        except (OSError, ValueError):
-            held = {}
+    held = held_description(folder / MARKER)
+    if held is not None:
         if canonical(held.get("identity")) != canonical(identity):
             what = (f"analysis {held.get('analysis')!r}, {held.get('cases')} cases, seed "
                     f"{held.get('seed')}" if held else "an unreadable study description")
@@ -218,8 +215,7 @@ def run_study(analysis: str, grid: dict | None = None, *, cases=None, output,
     StudyResult
     """
     a = get_analysis(analysis)
-    if isinstance(seed, bool) or not isinstance(seed, int) or seed < 0:
-        raise InputError("seed", seed, "a whole number >= 0")
+    whole_number("seed", seed, 0)
     source = _source(a, grid, cases, seed, repeats)
     check_bearing_given(set(source.columns))
     count = source.count
@@ -228,11 +224,7 @@ def run_study(analysis: str, grid: dict | None = None, *, cases=None, output,
     if max_cases is not None and count > max_cases:
         raise InputError("cases", count, f"at most {max_cases} cases without confirmation",
                          "confirm with --yes (or raise max_cases) to run them all")
-    if partition_size is None:
-        partition_size = default_partition_size(count, a.largest)
-    elif isinstance(partition_size, bool) or not isinstance(partition_size, int) \
-            or partition_size < 1:
-        raise InputError("partition_size", partition_size, "a whole number >= 1")
+    partition_size = partition_size_for(partition_size, count, a.largest)
     random = sorted(k for k, v in getattr(source, "values", {}).items()
                     if isinstance(v, Uniform))
     identity = {"analysis": a.name, **source.identity(), "seed": seed,
