@@ -1,5 +1,6 @@
 """Shared test helpers."""
 
+import json
 import os
 
 import pytest
@@ -18,3 +19,25 @@ def require(module: str):
 
         return importlib.import_module(module)
     return pytest.importorskip(module)
+
+
+def run_json(capsys, *args):
+    """Run the command line with ``args`` and ``--json``: exit code 0, the parsed output."""
+    from bearinglab.cli import main
+
+    code = main([*args, "--json"])
+    out, err = capsys.readouterr()
+    assert code == 0, err
+    return json.loads(out)
+
+
+def run_error(capsys, *args):
+    """Run the command line with ``args``: exit code 2 and a one-line ``error: ...`` message,
+    which is returned."""
+    from bearinglab.cli import main
+
+    code = main(list(args))
+    out, err = capsys.readouterr()
+    assert code == 2, (out, err)
+    assert err.startswith("error: ") and err.count("\n") == 1, err
+    return err

@@ -7,6 +7,7 @@ import subprocess
 import sys
 
 import pytest
+from conftest import run_json
 
 from bearinglab.cli import main
 
@@ -17,13 +18,6 @@ FREQ_KEYS = {f"{n}_{u}" for n in ("ftf", "bpfo", "bpfi", "bsf", "ball_defect")
              for u in ("hz", "order")}
 CONTACT_KEYS = {"semi_major_mm", "semi_minor_mm", "max_pressure_gpa", "approach_um",
                 "ellipticity", "stiffness_n_per_um"}
-
-
-def run_json(capsys, *args):
-    code = main([*args, "--json"])
-    out, err = capsys.readouterr()
-    assert code == 0, err
-    return json.loads(out)
 
 
 def test_info_6205_json(capsys):

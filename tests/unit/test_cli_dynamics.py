@@ -1,9 +1,9 @@
 """simulate and analyze on the command line (rigid model, 0.5 s at 20 kHz: fast)."""
 
-import json
 import math
 
 import pytest
+from conftest import run_error, run_json
 
 from bearinglab.cli import main
 from bearinglab.cli._forms import parse_defect
@@ -14,21 +14,6 @@ SIM = ["simulate", "ER-16K", "--speed-rpm", "1750", "--radial-load-n", "50",
 OUTER = ["--defect", "outer:width_mm=1.2,depth_mm=0.25"]
 ANALYZE = ["--designation", "ER-16K", "--speed-rpm", "1750"]
 BPFO_HZ = 104.19
-
-
-def run_json(capsys, *args):
-    code = main([*args, "--json"])
-    out, err = capsys.readouterr()
-    assert code == 0, err
-    return json.loads(out)
-
-
-def run_error(capsys, *args):
-    code = main(list(args))
-    out, err = capsys.readouterr()
-    assert code == 2, (out, err)
-    assert err.startswith("error: ") and err.count("\n") == 1, err
-    return err
 
 
 def test_simulate_outer_race_json(capsys):

@@ -7,6 +7,7 @@ import math
 from pathlib import Path
 
 import pytest
+from conftest import run_error, run_json
 
 from bearinglab.cli import main
 
@@ -16,21 +17,6 @@ FORMS = ["--waviness", "inner:order=7,amplitude_um=0.2", "--waviness",
 POINT_A = ["--distance-mm", "10"]  # seed 003's point A, inside the 608 (radius 11 mm)
 FAST = ["--points", "256"]          # one cage revolution (0.224 s) at ~1.1 kHz
 EXAMPLE = Path(__file__).parents[2] / "examples" / "seed003_608_noise.py"
-
-
-def run_json(capsys, *args):
-    code = main([*args, "--json"])
-    out, err = capsys.readouterr()
-    assert code == 0, err
-    return json.loads(out)
-
-
-def run_error(capsys, *args):
-    code = main(list(args))
-    out, err = capsys.readouterr()
-    assert code == 2, (out, err)
-    assert err.startswith("error: ") and err.count("\n") == 1, err
-    return err
 
 
 def _numbers(value, path=""):

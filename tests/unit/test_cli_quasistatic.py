@@ -1,22 +1,14 @@
 """static, stiffness-map and ring-modes on the command line."""
 
-import json
-
 import numpy as np
 import pytest
+from conftest import run_json
 
 from bearinglab.cli import main
 
 BALL_KEYS = {"angle_deg", "inner_load_n", "outer_load_n", "inner_contact_angle_deg",
              "outer_contact_angle_deg", "inner_max_pressure_gpa", "outer_max_pressure_gpa",
              "contact_points"}
-
-
-def run_json(capsys, *args):
-    code = main([*args, "--json"])
-    out, err = capsys.readouterr()
-    assert code == 0, err
-    return json.loads(out)
 
 
 def test_static_json_keys_and_equilibrium(capsys):

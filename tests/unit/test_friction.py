@@ -1,8 +1,8 @@
 """bearinglab.friction (both models) and the ``friction`` command."""
 
-import json
 import math
 
+import conftest
 import numpy as np
 import pytest
 
@@ -286,18 +286,11 @@ def test_bearing_friction_from_the_catalogue():
 
 # ------------------------------------------------------------------ command line
 def run_json(capsys, *args):
-    code = main(["friction", *args, "--json"])
-    out, err = capsys.readouterr()
-    assert code == 0, err
-    return json.loads(out)
+    return conftest.run_json(capsys, "friction", *args)
 
 
 def run_error(capsys, *args):
-    code = main(["friction", *args])
-    out, err = capsys.readouterr()
-    assert code == 2, out
-    assert err.startswith("error: ") and err.count("\n") == 1
-    return err
+    return conftest.run_error(capsys, "friction", *args)
 
 
 def test_cli_constant_json(capsys):

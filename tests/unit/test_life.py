@@ -6,9 +6,9 @@ from its Weibull form, the a_ISO bands from their continuity); the ISO/TS 16281 
 checked against ISO 281 for a zero-clearance bearing under a radial load.
 """
 
-import json
 import math
 
+import conftest
 import numpy as np
 import pytest
 from hypothesis import given, settings
@@ -453,10 +453,7 @@ KEYS = {"dynamic_rating_n", "static_rating_n", "equivalent_load_n", "l10_hours",
 
 
 def run_json(capsys, *args):
-    code = main(["life", *args, "--json"])
-    out, err = capsys.readouterr()
-    assert code == 0, err
-    return json.loads(out)
+    return conftest.run_json(capsys, "life", *args)
 
 
 def test_cli_life_json(capsys):

@@ -1,25 +1,17 @@
 """`bearinglab study` and `bearinglab dataset`: the README's small examples and bad input
 (one line on stderr, exit code 2, nothing written or changed)."""
 
-import json
 
 import pandas as pd
 import pytest
-from conftest import require
+from conftest import require, run_json
 
 from bearinglab.cli import main
 
 
-def _json(capsys, *args) -> dict:
-    code = main([*args, "--json"])
-    out, err = capsys.readouterr()
-    assert code == 0, err
-    return json.loads(out)
-
-
 def test_study_on_the_default_localcluster(tmp_path, capsys):
     out = tmp_path / "stiffness-6205"
-    d = _json(capsys, "study", "stiffness", "--set", "designation=6205",
+    d = run_json(capsys, "study", "stiffness", "--set", "designation=6205",
               "--set", "radial_load_n=0:2000:5", "--set", "speed_rpm=0,6000", "-o", str(out),
               "--workers", "2", "--plot", str(tmp_path / "map.png"))
     assert d["cases"] == 10 and d["workers"] == 2 and d["scheduler"].startswith("LocalCluster")
@@ -28,7 +20,7 @@ def test_study_on_the_default_localcluster(tmp_path, capsys):
     assert len(table) == 10 and "radial_stiffness_n_per_um" in table.columns
     assert (tmp_path / "map.png").stat().st_size > 0
     # rerun: everything is there already
-    again = _json(capsys, "study", "stiffness", "--set", "designation=6205",
+    again = run_json(capsys, "study", "stiffness", "--set", "designation=6205",
                   "--set", "radial_load_n=0:2000:5", "--set", "speed_rpm=0,6000",
                   "-o", str(out))
     assert again["partitions_computed"] == 0 and again["partitions_reused"] == d["partitions"]
@@ -47,7 +39,7 @@ def test_study_table_and_cases_file(tmp_path, capsys):
 
 def test_dataset_command_reads_back(tmp_path, capsys):
     bd = require("bearing_datasets")
-    d = _json(capsys, "dataset", str(tmp_path / "synth"), "--records", "4", "--duration-s",
+    d = run_json(capsys, "dataset", str(tmp_path / "synth"), "--records", "4", "--duration-s",
               "0.1", "--faults", "outer,inner", "--defect-position-deg", "-100:-80",
               "--resonance", "3000:3500@0.05", "--scheduler", "serial")
     assert d["records_written"] == 4
