@@ -109,34 +109,29 @@ def test_gost_designations_find_the_same_sizes():
 # ------------------------------------------------- 2. published internal geometry
 
 
-def test_cwru_drive_end_6205_as_printed():
-    # CWRU Bearing Data Center: 6205-2RS JEM SKF, inches: d 0.9843, D 2.0472, B 0.5906,
-    # ball 0.3126, pitch 1.537; defect frequencies (orders of shaft speed) BPFI 5.4152,
-    # BPFO 3.5848, cage 0.39828, rolling element 4.7135.
-    g = published_geometry("6205 (CWRU drive end)")
-    assert (g.bore, g.outside_diameter, g.width, g.ball_diameter, g.pitch_diameter) == \
-        pytest.approx((0.9843 * IN, 2.0472 * IN, 0.5906 * IN, 0.3126 * IN, 1.537 * IN), rel=1e-6)
-    o = frequency_orders(g.ball_count, g.ball_diameter, g.pitch_diameter, g.contact_angle)
-    # the page's numbers carry 4-5 digits: agreement to 1e-4
-    assert float(o["bpfi"]) == pytest.approx(5.4152, abs=1e-4)
-    assert float(o["bpfo"]) == pytest.approx(3.5848, abs=1e-4)
-    assert float(o["ftf"]) == pytest.approx(0.39828, abs=1e-4)
-    assert float(o["ball_defect"]) == pytest.approx(4.7135, abs=1e-4)
+# CWRU Bearing Data Center, JEM SKF bearings, inches: (d, D, B, ball, pitch); the defect
+# frequencies in orders of shaft speed (BPFI, BPFO, cage, rolling element), each with the
+# agreement we ask of it. The page's numbers carry 4-5 digits: 1e-4 unless noted.
+CWRU = [
+    ("6205 (CWRU drive end)", (0.9843, 2.0472, 0.5906, 0.3126, 1.537),
+     {"bpfi": (5.4152, 1e-4), "bpfo": (3.5848, 1e-4), "ftf": (0.39828, 1e-4),
+      "ball_defect": (4.7135, 1e-4)}),
+    # 6203-2RS: rolling element 3.98767 from the inch values against 3.9874 printed: the
+    # page's calculator used slightly different dimensions; 3e-4 is the disagreement
+    ("6203 (CWRU fan end)", (0.6693, 1.5748, 0.4724, 0.2656, 1.122),
+     {"bpfi": (4.9469, 1e-4), "bpfo": (3.0530, 2e-4), "ftf": (0.3817, 1e-4),
+      "ball_defect": (3.9874, 3e-4)}),
+]
 
 
-def test_cwru_fan_end_6203_as_printed():
-    # CWRU: 6203-2RS JEM SKF, inches: d 0.6693, D 1.5748, B 0.4724, ball 0.2656, pitch 1.122;
-    # BPFI 4.9469, BPFO 3.0530, cage 0.3817, rolling element 3.9874.
-    g = published_geometry("6203 (CWRU fan end)")
+@pytest.mark.parametrize("name,inches,orders", CWRU, ids=[row[0] for row in CWRU])
+def test_cwru_bearings_as_printed(name, inches, orders):
+    g = published_geometry(name)
     assert (g.bore, g.outside_diameter, g.width, g.ball_diameter, g.pitch_diameter) == \
-        pytest.approx((0.6693 * IN, 1.5748 * IN, 0.4724 * IN, 0.2656 * IN, 1.122 * IN), rel=1e-6)
+        pytest.approx(tuple(v * IN for v in inches), rel=1e-6)
     o = frequency_orders(g.ball_count, g.ball_diameter, g.pitch_diameter, g.contact_angle)
-    assert float(o["bpfi"]) == pytest.approx(4.9469, abs=1e-4)
-    assert float(o["bpfo"]) == pytest.approx(3.0530, abs=2e-4)
-    assert float(o["ftf"]) == pytest.approx(0.3817, abs=1e-4)
-    # 3.98767 from the inch values against 3.9874 printed: the page's calculator used
-    # slightly different dimensions; 3e-4 is the disagreement
-    assert float(o["ball_defect"]) == pytest.approx(3.9874, abs=3e-4)
+    for key, (printed, tolerance) in orders.items():
+        assert float(o[key]) == pytest.approx(printed, abs=tolerance), key
 
 
 def test_er16k_from_seed_003():
