@@ -33,6 +33,15 @@ from bearinglab.designation import parse, parse_gost
 
 MM = 1e-3
 
+#: The reading of 6-18030ПР20П (seed 003 lines 319-323), in Cyrillic and in Latin letters.
+READ_18030 = {
+    "precision_class": "6",
+    "bore": 150 * MM,
+    "bore_code": "30",
+    "suffixes": ("П", "Р20", "П"),
+    "suffix_words": ("roughness", "lubricant", "noise"),
+}
+
 # (id, designation, expected fields); bore in metres, angle in degrees
 CASES = [
     # seed 003 lines 135-156, 164-165: 7206 = tapered roller, light series 2, d = 30 mm
@@ -186,28 +195,8 @@ CASES = [
     # line 343: "повышенной степени точности"), bore code 30 -> 150 mm; П surface
     # roughness, Р20 ("Р2О") lubricant type, П noise level.  Line 319 says "six digits",
     # but 18030 has five.
-    (
-        "6-18030PR20P-cyrillic",
-        "6\u221218030ПР20П",
-        {
-            "precision_class": "6",
-            "bore": 150 * MM,
-            "bore_code": "30",
-            "suffixes": ("П", "Р20", "П"),
-            "suffix_words": ("roughness", "lubricant", "noise"),
-        },
-    ),
-    (
-        "6-18030PR20P-latin",
-        "6-18030PR20P",
-        {
-            "precision_class": "6",
-            "bore": 150 * MM,
-            "bore_code": "30",
-            "suffixes": ("П", "Р20", "П"),
-            "suffix_words": ("roughness", "lubricant", "noise"),
-        },
-    ),
+    ("6-18030PR20P-cyrillic", "6\u221218030ПР20П", READ_18030),
+    ("6-18030PR20P-latin", "6-18030PR20P", READ_18030),
     (
         "6-18030PR2OP-as-line-322",
         "6-18030ПР2ОП",
