@@ -78,6 +78,22 @@ def _refined(r, m: int, position: str, which: int):
     return sols[which]
 
 
+def _approximate(modes, m: int, which: int):
+    """Eq. (1.9)'s frequency [kHz] of mode m (which = 0 lower, 1 upper) from the inputs,
+    the modes computed by ``modes(p)``."""
+    return lambda p: modes(p).mode(m).approximate[which] / KHZ
+
+
+def _refined_khz(modes, m: int, position: str, which: int):
+    """The refined frequency [kHz] of :func:`_refined` from the inputs."""
+    return lambda p: _refined(modes(p), m, position, which)[0] / KHZ
+
+
+def _epsilon(modes, m: int, position: str, which: int):
+    """The epsilon [-] of :func:`_refined` from the inputs."""
+    return lambda p: _refined(modes(p), m, position, which)[1]
+
+
 def _ratio(m: int, base: int, key: str):
     """f*_m from f*_base by eq. (1.6)'s mode ratio (the ring's section cancels)."""
     return lambda p: p[key] * free_ring_frequency(m, 1, 1, 1, 1, 1) / free_ring_frequency(
@@ -95,27 +111,28 @@ def _f1(p: dict) -> float:
 # our estimate (by the same rule our 310 estimate is 0.46 against the paper's 0.33).
 _B106 = bearing_from_designation("106 (seed 000)")[0]
 KAPPA_106 = _B106.ball_count * _B106.ball_mass / _B106.outer_ring_mass
+_modes_106_kappa = partial(modes_106, kappa=KAPPA_106)
 
 # (bearing, quantity, printed value, half unit of the printed value, inputs, compute,
 #  known failure)
 PRINTED = [
     # ---- approximate model, eq. (1.9), sec. 2 text and table row f''
     ("106", "m=2 approx, text 7.31", 7.31, 0.005, P106,
-     lambda p: modes_106(p).mode(2).approximate[0] / KHZ, None),
+     _approximate(modes_106, 2, 0), None),
     ("106", "m=2 approx, table 7.3", 7.3, 0.05, P106,
-     lambda p: modes_106(p).mode(2).approximate[0] / KHZ, None),
+     _approximate(modes_106, 2, 0), None),
     ("106", "m=3 approx, text and table 11.8", 11.8, 0.05, P106,
-     lambda p: modes_106(p).mode(3).approximate[0] / KHZ, None),
+     _approximate(modes_106, 3, 0), None),
     ("310", "m=2 approx, text and table 3.7", 3.7, 0.05, P310,
-     lambda p: modes_310(p).mode(2).approximate[0] / KHZ, None),
+     _approximate(modes_310, 2, 0), None),
     ("310", "m=3 approx, text and table 6.3", 6.3, 0.05, P310,
-     lambda p: modes_310(p).mode(3).approximate[0] / KHZ, None),
+     _approximate(modes_310, 3, 0), None),
     ("310", "m=4 approx balls at nodes, text and table 10.0", 10.0, 0.05, P310,
-     lambda p: modes_310(p).mode(4).approximate[0] / KHZ, None),
+     _approximate(modes_310, 4, 0), None),
     ("310", "m=4 approx balls at antinodes, text 11.1", 11.1, 0.05, P310,
-     lambda p: modes_310(p).mode(4).approximate[1] / KHZ, None),
+     _approximate(modes_310, 4, 1), None),
     ("310", "m=4 approx balls at antinodes, table 11.0", 11.0, 0.05, P310,
-     lambda p: modes_310(p).mode(4).approximate[1] / KHZ,
+     _approximate(modes_310, 4, 1),
      ("the table prints 11.0 where the text prints 11.1 for the same eq. (1.9) value; "
       "with f_1 in [2.45, 2.55] and f*_4 = 10.00 it is 11.07 ... 11.15 kHz")),
     # ---- rigid body f_1 = sqrt(K_x / m_h) / 2 pi, sec. 2
@@ -141,38 +158,38 @@ PRINTED = [
      {"f4": (10.00, 0.005)}, _ratio(5, 4, "f4"), None),
     # ---- refined model, sec. 3: 310 m = 5, eqs. (3.5) and (3.4)
     ("310", "m=5 epsilon_1 6.08", 6.08, 0.005, P310,
-     lambda p: _refined(modes_310(p), 5, "any", 0)[1], None),
+     _epsilon(modes_310, 5, "any", 0), None),
     ("310", "m=5 epsilon_2 -0.516", -0.516, 0.0005, P310,
-     lambda p: _refined(modes_310(p), 5, "any", -1)[1], None),
+     _epsilon(modes_310, 5, "any", -1), None),
     ("310", "m=5 refined lower, text and table 11.8", 11.8, 0.05, P310,
-     lambda p: _refined(modes_310(p), 5, "any", 0)[0] / KHZ, None),
+     _refined_khz(modes_310, 5, "any", 0), None),
     ("310", "m=5 refined upper, text 17.3", 17.3, 0.05, P310,
-     lambda p: _refined(modes_310(p), 5, "any", -1)[0] / KHZ, None),
+     _refined_khz(modes_310, 5, "any", -1), None),
     # ---- 310 m = 4 (2m = n): antinodes eqs. (3.10), (3.9); nodes eq. (3.8)
     ("310", "m=4 antinodes epsilon_1 1.22", 1.22, 0.005, P310,
-     lambda p: _refined(modes_310(p), 4, "antinodes", 0)[1], None),
+     _epsilon(modes_310, 4, "antinodes", 0), None),
     ("310", "m=4 antinodes epsilon_2 -1.33", -1.33, 0.005, P310,
-     lambda p: _refined(modes_310(p), 4, "antinodes", -1)[1], None),
+     _epsilon(modes_310, 4, "antinodes", -1), None),
     ("310", "m=4 refined antinodes lower, text and table 9.4", 9.4, 0.05, P310,
-     lambda p: _refined(modes_310(p), 4, "antinodes", 0)[0] / KHZ, None),
+     _refined_khz(modes_310, 4, "antinodes", 0), None),
     ("310", "m=4 refined antinodes upper, text and table 14.5", 14.5, 0.05, P310,
-     lambda p: _refined(modes_310(p), 4, "antinodes", -1)[0] / KHZ, None),
+     _refined_khz(modes_310, 4, "antinodes", -1), None),
     ("310", "m=4 refined nodes, table 10.0", 10.0, 0.05, P310,
-     lambda p: _refined(modes_310(p), 4, "nodes", 0)[0] / KHZ, None),
+     _refined_khz(modes_310, 4, "nodes", 0), None),
     # ---- refined model, table row f'_m for m = 2, 3
     ("310", "m=2 refined, table 3.9", 3.9, 0.05, P310,
-     lambda p: _refined(modes_310(p), 2, "any", 0)[0] / KHZ,
+     _refined_khz(modes_310, 2, "any", 0),
      ("the ball masses can only lower the in-phase frequency below eq. (1.9)'s 3.70 kHz "
       "(at epsilon = 1/2 the numerator of (3.4) equals (1.9) and the denominator exceeds 1); "
       "(3.4)-(3.5) give 3.58 kHz, and no kappa >= 0 gives 3.9")),
     ("310", "m=3 refined, table 6.1", 6.1, 0.05, P310,
-     lambda p: _refined(modes_310(p), 3, "any", 0)[0] / KHZ, None),
+     _refined_khz(modes_310, 3, "any", 0), None),
     ("106", "m=2 refined, table 7.6", 7.6, 0.05, P106,
-     lambda p: _refined(modes_106(p, KAPPA_106), 2, "any", 0)[0] / KHZ,
+     _refined_khz(_modes_106_kappa, 2, "any", 0),
      ("as for the 310 m = 2 cell: the refined value cannot exceed eq. (1.9)'s 7.31 kHz for "
       "any kappa >= 0 (we get 7.08 kHz with kappa = 0.30); the table prints 7.6")),
     ("106", "m=3 refined, table 11.4 (kappa = 0.30 estimated, not printed)", 11.4, 0.05, P106,
-     lambda p: _refined(modes_106(p, KAPPA_106), 3, "any", 0)[0] / KHZ, None),
+     _refined_khz(_modes_106_kappa, 3, "any", 0), None),
 ]
 
 
