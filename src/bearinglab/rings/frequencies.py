@@ -47,6 +47,12 @@ def _g(m):
     return 1.0 / (1.0 + m**-2.0)
 
 
+def _loaded_inputs(free_frequency, rigid_body_frequency, mode, lam):
+    """(m, lambda, f*_m [Hz], f_1 [Hz]) checked, for the loaded-ring formulas."""
+    return (_modes(mode), _lam(lam), _arr("free_frequency", free_frequency, "[Hz]"),
+            _arr("rigid_body_frequency", rigid_body_frequency, "[Hz]"))
+
+
 def free_ring_frequency(mode, elastic_modulus, density, second_moment, mean_radius, area):
     """Frequency f*_m of the m-th in-plane flexural mode of a free thin ring [Hz].
 
@@ -159,9 +165,7 @@ def loaded_ring_frequency(free_frequency, rigid_body_frequency, mode, lam=1.0):
     >>> round(float(loaded_ring_frequency(3.50, 5.07, 2)), 2)  # seed 000, 106: 7.31 kHz
     7.31
     """
-    m, lam = _modes(mode), _lam(lam)
-    fs = _arr("free_frequency", free_frequency, "[Hz]")
-    f1 = _arr("rigid_body_frequency", rigid_body_frequency, "[Hz]")
+    m, lam, fs, f1 = _loaded_inputs(free_frequency, rigid_body_frequency, mode, lam)
     return np.sqrt(fs**2 + 2.0 * lam * f1**2 * _g(m))
 
 
@@ -186,9 +190,7 @@ def loaded_ring_frequencies(free_frequency, rigid_body_frequency, mode, ball_cou
 
 def _terms(free_frequency, rigid_body_frequency, mode, kappa, ratio, lam):
     """N = a + lam (b2 e^2 + b1 (1-e)^2), D = 1 + lam c e^2 of eq. (3.3)/(3.6)."""
-    m, lam = _modes(mode), _lam(lam)
-    fs = _arr("free_frequency", free_frequency, "[Hz]")
-    f1 = _arr("rigid_body_frequency", rigid_body_frequency, "[Hz]")
+    m, lam, fs, f1 = _loaded_inputs(free_frequency, rigid_body_frequency, mode, lam)
     c = _arr("ball_mass_ratio", kappa, "[-]") * _g(m)
     r = _arr("stiffness_ratio", ratio, "[-]", True)
     b1 = 2.0 * _g(m) * f1**2 * (1.0 + r)          # 2 w1^2 / (1 + m^-2), w1^2 = f_1^2 (1 + r)
