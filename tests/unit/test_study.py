@@ -111,7 +111,7 @@ def test_ring_modes_columns_follow_the_analysis(tmp_path):
 def test_simulate_with_diagnosis_and_a_cage_fault(tmp_path):
     table = run_study("simulate", {"designation": "6205-2RS", "radial_load_n": 500.0,
                                    "speed_rpm": 1797.0, "fault": ["outer", "cage"],
-                                   "duration_s": 0.3}, output=tmp_path / "sim",
+                                   "duration_s": 1.0}, output=tmp_path / "sim",
                       scheduler="serial").to_pandas()
     assert table.loc[0, "likely_fault"] == "outer_race" and pd.isna(table.loc[0, "error"])
     assert table.loc[0, "bpfo_hz"] == pytest.approx(107.36, abs=0.01)
