@@ -123,12 +123,17 @@ def band_limits(band, sample_rate: float) -> tuple[float, float]:
     return low, high
 
 
+def _integer_in(value, low: int, high: int) -> bool:
+    """Whether ``value`` is an integer (not a bool) in [low, high]."""
+    return (not isinstance(value, bool) and isinstance(value, (int, np.integer))
+            and low <= value <= high)
+
+
 def segment(segment_length, n: int, default: int | None = None) -> int:
     """Samples per segment: ``default`` (or ``n``) when None, else an int in [16, n]."""
     if segment_length is None:
         return n if default is None else default
-    if (isinstance(segment_length, bool) or not isinstance(segment_length, (int, np.integer))
-            or not MIN_SAMPLES <= segment_length <= n):
+    if not _integer_in(segment_length, MIN_SAMPLES, n):
         raise InputError("segment_length", segment_length,
                          f"an integer number of samples in [{MIN_SAMPLES}, {n}]")
     return int(segment_length)
@@ -247,7 +252,7 @@ def envelope(x, sample_rate, band=None, order: int = 4, squared: bool = False) -
     """
     x = samples(x)
     fs = rate(sample_rate)
-    if isinstance(order, bool) or not isinstance(order, (int, np.integer)) or not 1 <= order <= 10:
+    if not _integer_in(order, 1, 10):
         raise InputError("order", order, "an integer from 1 to 10")
     if band is not None:
         import scipy.signal  # imported here: it costs ~0.5 s at start-up
@@ -365,8 +370,7 @@ def spectral_kurtosis(x, sample_rate, window_length: int) -> Spectrum:
 
     x = samples(x)
     fs = rate(sample_rate)
-    if (isinstance(window_length, bool) or not isinstance(window_length, (int, np.integer))
-            or not 8 <= window_length <= x.size // 4):
+    if not _integer_in(window_length, 8, x.size // 4):
         raise InputError("window_length", window_length,
                          f"an integer number of samples in [8, {x.size // 4}]")
     n = int(window_length)
@@ -421,8 +425,7 @@ def spectral_kurtosis_band(x, sample_rate, window_lengths=None,
         lengths = [2**k for k in range(4, 16) if 2**k <= max(x.size // 32, 16)]
     else:
         lengths = list(window_lengths)
-        if not lengths or any(isinstance(n, bool) or not isinstance(n, (int, np.integer))
-                              or not 8 <= n <= x.size // 4 for n in lengths):
+        if not lengths or not all(_integer_in(n, 8, x.size // 4) for n in lengths):
             raise InputError("window_lengths", window_lengths,
                              f"one or more integers in [8, {x.size // 4}] samples")
     try:
