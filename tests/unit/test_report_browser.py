@@ -50,7 +50,7 @@ def page(tmp_path_factory):
     bearing, des = bearing_from_designation("6205")
     report = build_report(bearing, OperatingCondition(radial_load=1000.0,
                                                       shaft_speed=1797 * math.pi / 30),
-                          designation=des, duration=0.25, slip_duration=0.0)
+                          designation=des, duration=0.3, slip_duration=0.0)
     assert not report.failed, [(s.key, s.error) for s in report.failed]
     return report.write(tmp_path_factory.mktemp("browser") / "report.html")
 
