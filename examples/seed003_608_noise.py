@@ -98,6 +98,21 @@ def _pyplot():
     return plt
 
 
+def _ball_figure(plt, t, radial, x, y, radial_label: str, xy_label: str, title: str):
+    """Every ball's ``radial`` series above, ball 0's ``x`` and ``y`` below, against time."""
+    fig, axes = plt.subplots(2, 1, figsize=(9, 6.5), sharex=True)
+    axes[0].plot(t, radial, lw=0.8)
+    axes[0].set_ylabel(radial_label)
+    axes[0].set_title(title)
+    axes[1].plot(t, x, label="ball 0, x")
+    axes[1].plot(t, y, label="ball 0, y")
+    axes[1].set_ylabel(xy_label)
+    axes[1].set_xlabel("time [s]")
+    axes[1].legend()
+    fig.tight_layout()
+    return fig
+
+
 def draw_base(noise, out: Path) -> list[Path]:
     """Figs. 9-14, the pressure spectrum and the directivity of the base case."""
     from bearinglab.plotting import save_figure
@@ -129,28 +144,13 @@ def draw_base(noise, out: Path) -> list[Path]:
     pitch = 0.5 * o.bearing.pitch_diameter
     dx = o.ball_x - pitch * np.cos(o.ball_angle)
     dy = o.ball_y - pitch * np.sin(o.ball_angle)
-    fig, axes = plt.subplots(2, 1, figsize=(9, 6.5), sharex=True)
-    axes[0].plot(t, o.ball_radial_displacement * 1e6, lw=0.8)
-    axes[0].set_ylabel("radius - d_m/2 [um]")
-    axes[0].set_title("fig. 10: ball centres (every ball: radial; ball 0: x and y)")
-    axes[1].plot(t, dx[:, 0] * 1e6, label="ball 0, x")
-    axes[1].plot(t, dy[:, 0] * 1e6, label="ball 0, y")
-    axes[1].set_ylabel("displacement [um]")
-    axes[1].set_xlabel("time [s]")
-    axes[1].legend()
-    fig.tight_layout()
+    fig = _ball_figure(plt, t, o.ball_radial_displacement * 1e6, dx[:, 0] * 1e6,
+                       dy[:, 0] * 1e6, "radius - d_m/2 [um]", "displacement [um]",
+                       "fig. 10: ball centres (every ball: radial; ball 0: x and y)")
     written.append(save_figure(fig, out / "fig10_ball_centres.png"))
-
-    fig, axes = plt.subplots(2, 1, figsize=(9, 6.5), sharex=True)
-    axes[0].plot(t, o.ball_radial_velocity * 1e3, lw=0.8)
-    axes[0].set_ylabel("d rho / dt [mm/s]")
-    axes[0].set_title("fig. 11: ball-centre velocities (pulsating-sphere sources)")
-    axes[1].plot(t, np.gradient(dx[:, 0], t) * 1e3, label="ball 0, x")
-    axes[1].plot(t, np.gradient(dy[:, 0], t) * 1e3, label="ball 0, y")
-    axes[1].set_ylabel("velocity [mm/s]")
-    axes[1].set_xlabel("time [s]")
-    axes[1].legend()
-    fig.tight_layout()
+    fig = _ball_figure(plt, t, o.ball_radial_velocity * 1e3, np.gradient(dx[:, 0], t) * 1e3,
+                       np.gradient(dy[:, 0], t) * 1e3, "d rho / dt [mm/s]", "velocity [mm/s]",
+                       "fig. 11: ball-centre velocities (pulsating-sphere sources)")
     written.append(save_figure(fig, out / "fig11_ball_velocity.png"))
 
     fig, axes = plt.subplots(3, 1, figsize=(9, 9), sharex=True)
