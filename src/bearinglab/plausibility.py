@@ -201,6 +201,23 @@ def sampling_warnings(frequencies, sample_rate: float, duration: float | None = 
     return out
 
 
+def check_record_length(frequencies, duration: float) -> None:
+    """Refuse a record to be diagnosed that holds fewer than :data:`MIN_CAGE_REVOLUTIONS`
+    cage revolutions (the envelope diagnosis cannot separate the cage line).
+
+    Raises
+    ------
+    InputError
+        Named ``duration``.
+    """
+    ftf = frequencies.hz("ftf")
+    if duration * ftf < MIN_CAGE_REVOLUTIONS:
+        raise InputError("duration", duration,
+                         f"at least {MIN_CAGE_REVOLUTIONS / ftf:.4g} s",
+                         f"{MIN_CAGE_REVOLUTIONS:g} cage revolutions at FTF = {ftf:.4g} Hz, "
+                         "which the envelope diagnosis needs to separate the cage line")
+
+
 def operating_warnings(bearing, condition) -> list[str]:
     """:func:`load_warnings` and :func:`speed_warnings` of an operating condition."""
     return (load_warnings(bearing, condition.radial_load, condition.axial_load)

@@ -66,6 +66,10 @@ def test_operating_warnings_of_a_condition():
       "outer:width_mm=1", "--sample-rate-hz", "100"], "--sample-rate-hz"),
     (["simulate", "6205", "--speed-rpm", "1797", "--radial-load-n", "500",
       "--sample-rate-hz", "10"], "--sample-rate-hz"),
+    (["simulate", "6205", "--speed-rpm", "1797", "--radial-load-n", "500",
+      "--duration-s", "0.2", "--sample-rate-hz", "12000"], "--duration-s"),
+    (["report", "6205", "--speed-rpm", "1797", "--radial-load-n", "500", "--duration-s",
+      "0.2", "-o", "never-written.html"], "--duration-s"),
 ])
 def test_commands_name_the_option(capsys, argv, flag):
     assert main(argv) == 2

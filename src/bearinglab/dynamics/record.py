@@ -16,7 +16,12 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 
-from ..plausibility import LOCATION_FAMILY, operating_warnings, sampling_warnings
+from ..plausibility import (
+    LOCATION_FAMILY,
+    check_record_length,
+    operating_warnings,
+    sampling_warnings,
+)
 from .simulation import Simulation, simulate
 
 #: Channels whose plain spectrum can be read (both models have them).
@@ -117,9 +122,10 @@ def simulate_record(bearing, condition, defects=(), *, spectrum_channel: str = "
     families = [LOCATION_FAMILY[d.location] for d in defects] or ["outer_race"]
     warnings = operating_warnings(bearing, condition)
     if condition.shaft_speed > 0:
-        warnings += sampling_warnings(defect_frequencies(bearing, condition.shaft_speed),
-                                      options.get("sample_rate", 50e3),
+        kin = defect_frequencies(bearing, condition.shaft_speed)
+        warnings += sampling_warnings(kin, options.get("sample_rate", 50e3),
                                       options.get("duration", 1.0), families)
+        check_record_length(kin, options.get("duration", 1.0))
     sim = simulate(bearing, condition, defects, progress=progress, **options)
     diag = analyze_signal(sim.signal, None, sim.kinematic, channel="acc_y")
     spec, lines = spectrum_lines(sim.signal.channel(spectrum_channel),

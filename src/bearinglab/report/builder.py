@@ -10,7 +10,12 @@ from ..errors import InputError
 from ..geometry import BallBearing
 from ..kinematics import defect_frequencies
 from ..operating import OperatingCondition
-from ..plausibility import LOCATION_FAMILY, operating_warnings, sampling_warnings
+from ..plausibility import (
+    LOCATION_FAMILY,
+    check_record_length,
+    operating_warnings,
+    sampling_warnings,
+)
 from . import mechanics, operation, spectra, vibration
 from .context import Context
 from .document import Report, Section
@@ -116,6 +121,7 @@ def build_report(bearing: BallBearing, condition: OperatingCondition, *, designa
     # the operating point and the simulated record in the user's terms (raises past the
     # models' limits, before any section runs)
     kin = defect_frequencies(bearing, condition.shaft_speed)
+    check_record_length(kin, duration)
     warnings = (operating_warnings(bearing, condition)
                 + sampling_warnings(kin, rate, duration,
                                     [LOCATION_FAMILY[d.location] for d in chosen]))
