@@ -115,39 +115,38 @@ def figures(results: dict, out: Path) -> list[Path]:
     ax.grid(alpha=0.3)
     written.append(save_figure(fig, out / "seed001_fig8_displacement_8000rpm.png"))
 
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.5))
-    for k, fa in enumerate(s1.AXIAL_LOADS_N):
-        c = results[("fr", fa, 4500.0)]
-        ax1.plot(c.radial_load, c.radial_stiffness, ".-", color=f"C{k}",
-                 label=f"F_a = {fa:.0f} N")
-        ax2.plot(c.radial_load, c.axial_stiffness, ".-", color=f"C{k}")
-        if fa > 0:
-            for ax in (ax1, ax2):
-                ax.axvline(fa / e, color=f"C{k}", ls=":", lw=1)
-    ax1.set_ylabel("C_r = dF_r/dS_r [N/um]")
-    ax2.set_ylabel("C_a = dF_a/dS_a [N/um]")
-    for ax in (ax1, ax2):
-        ax.set_xlabel("F_r [N]")
-        ax.grid(alpha=0.3)
-    ax1.legend(fontsize=8)
-    fig.suptitle("4500 rpm (cf. fig. 9); dotted: F_a/F_r = e")
+    curves = [(f"F_a = {fa:.0f} N", results[("fr", fa, 4500.0)], fa / e if fa > 0 else None)
+              for fa in s1.AXIAL_LOADS_N]
+    fig = _stiffness_figure(plt, curves, "radial_load", "F_r [N]",
+                            ("C_r = dF_r/dS_r [N/um]", "C_a = dF_a/dS_a [N/um]"),
+                            "4500 rpm (cf. fig. 9); dotted: F_a/F_r = e")
     written.append(save_figure(fig, out / "seed001_fig9_stiffness_vs_fr.png"))
-
-    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.5))
-    for k, fr in enumerate(FIG10_RADIAL_LOADS):
-        c = results[("fa", fr, 4500.0)]
-        ax1.plot(c.axial_load, c.radial_stiffness, ".-", color=f"C{k}",
-                 label=f"F_r = {fr:.0f} N")
-        ax2.plot(c.axial_load, c.axial_stiffness, ".-", color=f"C{k}")
-    ax1.set_ylabel("C_r [N/um]")
-    ax2.set_ylabel("C_a [N/um]")
-    for ax in (ax1, ax2):
-        ax.set_xlabel("F_a [N]")
-        ax.grid(alpha=0.3)
-    ax1.legend(fontsize=8)
-    fig.suptitle("4500 rpm (cf. fig. 10)")
+    curves = [(f"F_r = {fr:.0f} N", results[("fa", fr, 4500.0)], None)
+              for fr in FIG10_RADIAL_LOADS]
+    fig = _stiffness_figure(plt, curves, "axial_load", "F_a [N]", ("C_r [N/um]", "C_a [N/um]"),
+                            "4500 rpm (cf. fig. 10)")
     written.append(save_figure(fig, out / "seed001_fig10_stiffness_vs_fa.png"))
     return written
+
+
+def _stiffness_figure(plt, curves, along: str, xlabel: str, ylabels, title: str):
+    """C_r (left) and C_a (right) of each (label, curve, mark) against the curve's load
+    ``along``, with a dotted line at ``mark`` [N] unless it is None."""
+    fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.5))
+    for k, (label, c, mark) in enumerate(curves):
+        ax1.plot(getattr(c, along), c.radial_stiffness, ".-", color=f"C{k}", label=label)
+        ax2.plot(getattr(c, along), c.axial_stiffness, ".-", color=f"C{k}")
+        if mark is not None:
+            for ax in (ax1, ax2):
+                ax.axvline(mark, color=f"C{k}", ls=":", lw=1)
+    ax1.set_ylabel(ylabels[0])
+    ax2.set_ylabel(ylabels[1])
+    for ax in (ax1, ax2):
+        ax.set_xlabel(xlabel)
+        ax.grid(alpha=0.3)
+    ax1.legend(fontsize=8)
+    fig.suptitle(title)
+    return fig
 
 
 def _at(curve, load: float) -> float:
