@@ -30,13 +30,41 @@ def _record(folder: Path) -> list[str]:
     """analyze's arguments: the CWRU 130 record (10 s at 12 kHz) when it is there, else a
     simulated 10 s record at 12 kHz written first."""
     if REAL.exists():
-        return ["analyze", str(REAL), "--channel", "DE", "--sample-rate-hz", "12000",
-                "--designation", "6205-2RS", "--speed-rpm", "1797"]
+        return [
+            "analyze",
+            str(REAL),
+            "--channel",
+            "DE",
+            "--sample-rate-hz",
+            "12000",
+            "--designation",
+            "6205-2RS",
+            "--speed-rpm",
+            "1797",
+        ]
     path = folder / "sim.npz"
-    subprocess.run([str(BIN), "simulate", "6205", "--speed-rpm", "1797", "--radial-load-n",
-                    "500", "--defect", "outer:width_mm=0.5", "--duration-s", "10",
-                    "--sample-rate-hz", "12000", "-o", str(path), "--json"],
-                   check=True, capture_output=True)
+    subprocess.run(
+        [
+            str(BIN),
+            "simulate",
+            "6205",
+            "--speed-rpm",
+            "1797",
+            "--radial-load-n",
+            "500",
+            "--defect",
+            "outer:width_mm=0.5",
+            "--duration-s",
+            "10",
+            "--sample-rate-hz",
+            "12000",
+            "-o",
+            str(path),
+            "--json",
+        ],
+        check=True,
+        capture_output=True,
+    )
     return ["analyze", str(path), "--designation", "6205", "--speed-rpm", "1797"]
 
 
@@ -59,20 +87,36 @@ def main() -> None:
             "info 6205": (["info", "6205"], "ratio", 3.0),
             "frequencies 6205": (["frequencies", "6205", "--speed-rpm", "1797"], "ratio", None),
             "contact 6205": (["contact", "6205", "--ball-load-n", "1000"], "ratio", None),
-            "static 6205": (["static", "6205", "--radial-load-n", "1000", "--speed-rpm",
-                             "3000"], "ratio", None),
-            "simulate rigid 1 s, 50 kHz": (["simulate", "ER-16K", "--speed-rpm", "1750",
-                                             "--radial-load-n", "50", "--defect",
-                                             "outer:width_mm=1.2,depth_mm=0.25",
-                                             "--duration-s", "1", "--sample-rate-hz", "50000"],
-                                            "seconds", 1.5),
+            "static 6205": (
+                ["static", "6205", "--radial-load-n", "1000", "--speed-rpm", "3000"],
+                "ratio",
+                None,
+            ),
+            "simulate rigid 1 s, 50 kHz": (
+                [
+                    "simulate",
+                    "ER-16K",
+                    "--speed-rpm",
+                    "1750",
+                    "--radial-load-n",
+                    "50",
+                    "--defect",
+                    "outer:width_mm=1.2,depth_mm=0.25",
+                    "--duration-s",
+                    "1",
+                    "--sample-rate-hz",
+                    "50000",
+                ],
+                "seconds",
+                1.5,
+            ),
             "analyze 10 s, 12 kHz": (_record(Path(tmp)), "seconds", 1.0),
         }
         base_all: list[float] = []
         print(f"{'command':<30} {'median s':>9} {'numpy s':>8} {'ratio':>6}   goal")
         for name, (argv, kind, goal) in cases.items():
             full = [str(BIN), *argv]
-            _time(full)                                   # warm-up (and numba's cache)
+            _time(full)  # warm-up (and numba's cache)
             own, base = [], []
             for _ in range(args.runs):
                 own.append(_time(full))
@@ -86,8 +130,10 @@ def main() -> None:
             else:
                 verdict = f"<= {goal:g} s: {'met' if t <= goal else 'NOT met'}"
             print(f"{name:<30} {t:9.3f} {b:8.3f} {t / b:6.2f}   {verdict}")
-    print(f"numpy import over all runs: median {statistics.median(base_all):.3f} s, "
-          f"{len(base_all)} runs")
+    print(
+        f"numpy import over all runs: median {statistics.median(base_all):.3f} s, "
+        f"{len(base_all)} runs"
+    )
 
 
 if __name__ == "__main__":

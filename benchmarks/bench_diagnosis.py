@@ -36,7 +36,7 @@ def record():
     if (REAL / "105.mat").is_file():
         import scipy.io
 
-        return scipy.io.loadmat(REAL / "105.mat")["X105_DE_time"].ravel()[:int(10 * FS)], "105"
+        return scipy.io.loadmat(REAL / "105.mat")["X105_DE_time"].ravel()[: int(10 * FS)], "105"
     rng = np.random.default_rng(0)
     t = np.arange(int(10 * FS)) / FS
     x = np.exp(-(t % (1 / 162.0)) / 1e-3) * np.sin(2 * np.pi * 3000 * t)
@@ -70,14 +70,19 @@ def main():
     odd = np.random.default_rng(1).standard_normal(480_001)
     slow = best(lambda: scipy.signal.hilbert(odd), 3)
     fast = best(lambda: analytic(odd), 3)
-    print(f"Hilbert at 480 001 samples: scipy {1e3 * slow:.0f} ms, padded to a fast length "
-          f"{1e3 * fast:.0f} ms (x{slow / fast:.1f})")
+    print(
+        f"Hilbert at 480 001 samples: scipy {1e3 * slow:.0f} ms, padded to a fast length "
+        f"{1e3 * fast:.0f} ms (x{slow / fast:.1f})"
+    )
 
 
-SLIP = {"outer": (-0.015, 0.015), "inner": (-0.015, 0.015), "ball": (-0.04, 0.01),
-        "none": (0.0, 0.0)}
-WANT = {"outer": "outer_race", "inner": "inner_race", "ball": "ball",
-        "none": "no fault detected"}
+SLIP = {
+    "outer": (-0.015, 0.015),
+    "inner": (-0.015, 0.015),
+    "ball": (-0.04, 0.01),
+    "none": (0.0, 0.0),
+}
+WANT = {"outer": "outer_race", "inner": "inner_race", "ball": "ball", "none": "no fault detected"}
 
 
 def synthetic_base(fault, seed, duration=4.0):
@@ -88,14 +93,24 @@ def synthetic_base(fault, seed, duration=4.0):
     bearing = bearing_from_designation("6205")[0]
     rng = np.random.default_rng(1000 + seed + 100 * ["none", "outer", "inner", "ball"].index(fault))
     rpm, load, slip = rng.uniform(1700, 1800), rng.uniform(300, 2000), rng.uniform(*SLIP[fault])
-    defects = [] if fault == "none" else [Defect(
-        fault, rng.uniform(0.3e-3, 1.5e-3), rng.uniform(0.1e-3, 0.3e-3),
-        angle=rng.uniform(-0.75 * math.pi, -0.25 * math.pi) if fault == "outer"
-        else rng.uniform(0, 2 * math.pi), ball=int(rng.integers(9)) if fault == "ball" else 0)]
+    defects = (
+        []
+        if fault == "none"
+        else [
+            Defect(
+                fault,
+                rng.uniform(0.3e-3, 1.5e-3),
+                rng.uniform(0.1e-3, 0.3e-3),
+                angle=rng.uniform(-0.75 * math.pi, -0.25 * math.pi)
+                if fault == "outer"
+                else rng.uniform(0, 2 * math.pi),
+                ball=int(rng.integers(9)) if fault == "ball" else 0,
+            )
+        ]
+    )
     # slip s: the defect lines at (1 + s) x their kinematic value
     condition = OperatingCondition(radial_load=load, shaft_speed=rpm * (1 + slip) * math.pi / 30)
-    sim = simulate(bearing, condition, defects, model="rigid", duration=duration,
-                   sample_rate=FS)
+    sim = simulate(bearing, condition, defects, model="rigid", duration=duration, sample_rate=FS)
     resonance = (rng.uniform(2500, 4500), rng.uniform(0.02, 0.08))
     return np.asarray(sim.signal.channels["acc_y"]), rpm, resonance, bearing
 
@@ -119,8 +134,9 @@ def synthetic_record(base, seed, snr_db, fault, jitter=0.01, shaft_amp=2.0):
     if fault == "none":  # healthy: its own lines at -20 dB of a unit fault signal
         x, rms = x / max(rms, 1e-30) * 0.1, 1.0
     for k in range(1, 6):  # shaft harmonics (unbalance, misalignment)
-        x = x + shaft_amp * rms / k * np.sin(2 * np.pi * k * rpm / 60 * t
-                                             + rng.uniform(0, 2 * np.pi))
+        x = x + shaft_amp * rms / k * np.sin(
+            2 * np.pi * k * rpm / 60 * t + rng.uniform(0, 2 * np.pi)
+        )
     return x + rms * 10 ** (-snr_db / 20) * rng.standard_normal(x.size), kin
 
 
@@ -141,7 +157,7 @@ def synthetic(seeds=12, snrs=(0, -5, -10, -15), methods=("raw", "cpw", "drs-sk",
 
 if __name__ == "__main__":
     if "--synthetic" in sys.argv:
-        rest = sys.argv[sys.argv.index("--synthetic") + 1:]
+        rest = sys.argv[sys.argv.index("--synthetic") + 1 :]
         synthetic(int(rest[0]) if rest else 12)
     else:
         main()

@@ -22,6 +22,7 @@ def reference_ellipticity(ratio: float) -> float:
         m = 1 - 1 / k**2
         kk, ee = special.ellipk(m), special.ellipe(m)
         return (k**2 * ee - kk) / (kk - ee) - ratio
+
     return optimize.brentq(f, 1 + 1e-9, 2 * ratio + 2, xtol=1e-14)
 
 
@@ -33,8 +34,10 @@ def main(n: int = 20000) -> None:
     ours = hertz.ellipticity(ratios)
     t2 = time.perf_counter()
     err = np.max(np.abs(ours / ref - 1))
-    print(f"{n} contacts: scalar brentq {t1 - t0:.3f} s, vectorised {t2 - t1:.4f} s, "
-          f"speed-up x{(t1 - t0) / (t2 - t1):.0f}, max relative difference {err:.1e}")
+    print(
+        f"{n} contacts: scalar brentq {t1 - t0:.3f} s, vectorised {t2 - t1:.4f} s, "
+        f"speed-up x{(t1 - t0) / (t2 - t1):.0f}, max relative difference {err:.1e}"
+    )
 
 
 if __name__ == "__main__":

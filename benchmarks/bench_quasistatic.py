@@ -46,8 +46,9 @@ from bearinglab.quasistatic.study import stiffness_map
 REFERENCE_COMMIT = "8cf1c511e3d2b51a7ddd7f60dd496f23f76a47be"
 ROOT = Path(__file__).resolve().parents[1]
 
-BEARING = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3,
-                      diametral_clearance=15e-6)
+BEARING = BallBearing(
+    ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3, diametral_clearance=15e-6
+)
 
 
 def fsolve_reference(bearing, condition):
@@ -65,8 +66,17 @@ def fsolve_reference(bearing, condition):
 
     def ball_forces(b, c_rho, c_z, j):
         q, n_rho, n_z, _, _ = _kernels.contact_state(
-            np.array([b[0]]), np.array([b[1]]), c_rho[j:j + 1], c_z[j:j + 1], p.free[j:j + 1],
-            cs.groove_radius, cs.side, cs.z0, cs.k_poly, p.film[j:j + 1])
+            np.array([b[0]]),
+            np.array([b[1]]),
+            c_rho[j : j + 1],
+            c_z[j : j + 1],
+            p.free[j : j + 1],
+            cs.groove_radius,
+            cs.side,
+            cs.z0,
+            cs.k_poly,
+            p.film[j : j + 1],
+        )
         return q, n_rho, n_z
 
     def ring_residual(x):
@@ -75,13 +85,25 @@ def fsolve_reference(bearing, condition):
         c_rho, c_z = p.centres(u)
         b = balls["b"].copy()
         for j in range(bearing.ball_count):
+
             def f(bj, j=j):
                 q, n_rho, n_z = ball_forces(bj, c_rho, c_z, j)
                 return [p.fc - np.sum(q * n_rho), -np.sum(q * n_z)]
+
             b[j] = optimize.fsolve(f, b[j], xtol=1e-12)
         balls["b"] = b
-        state = _kernels.contact_state(b[:, 0], b[:, 1], c_rho, c_z, p.free, cs.groove_radius,
-                                       cs.side, cs.z0, cs.k_poly, p.film)
+        state = _kernels.contact_state(
+            b[:, 0],
+            b[:, 1],
+            c_rho,
+            c_z,
+            p.free,
+            cs.groove_radius,
+            cs.side,
+            cs.z0,
+            cs.k_poly,
+            p.film,
+        )
         return (p.load + ring_force(*state[:3]))[:3]
 
     u0 = initial_ring_guess(p)
@@ -107,22 +129,40 @@ def flat_fsolve_reference(bearing, condition):
         u[:3] = x[:3] * 1e-6
         b = x[3:].reshape(z, 2) * 1e-6 + np.array([0.5 * bearing.pitch_diameter, 0.0])
         c_rho, c_z = p.centres(u)
-        q, n_rho, n_z, _, _ = _kernels.contact_state(b[:, 0], b[:, 1], c_rho, c_z, p.free,
-                                                      cs.groove_radius, cs.side, cs.z0,
-                                                      cs.k_poly, p.film)
+        q, n_rho, n_z, _, _ = _kernels.contact_state(
+            b[:, 0],
+            b[:, 1],
+            c_rho,
+            c_z,
+            p.free,
+            cs.groove_radius,
+            cs.side,
+            cs.z0,
+            cs.k_poly,
+            p.film,
+        )
         balls = np.stack([p.fc - np.sum(q * n_rho, 1), -np.sum(q * n_z, 1)], 1)
-        force = np.einsum("jkab,jka->b", p.t[:, p.inner], np.stack(
-            [q[:, p.inner] * n_rho[:, p.inner], q[:, p.inner] * n_z[:, p.inner]], axis=-1))
+        force = np.einsum(
+            "jkab,jka->b",
+            p.t[:, p.inner],
+            np.stack([q[:, p.inner] * n_rho[:, p.inner], q[:, p.inner] * n_z[:, p.inner]], axis=-1),
+        )
         return np.concatenate([(p.load + force)[:3], balls.ravel()])
 
     u0 = initial_ring_guess(p)[:3]
     c_rho, c_z = p.centres(np.r_[u0, 0.0, 0.0])
     inner = p.inner
-    mid = np.stack([0.5 * (c_rho[:, inner].mean(1) + c_rho[:, ~inner].mean(1))
-                    - 0.5 * bearing.pitch_diameter,
-                    0.5 * (c_z[:, inner].mean(1) + c_z[:, ~inner].mean(1))], 1)
-    x, _, ier, _ = optimize.fsolve(residual, np.concatenate([u0 * 1e6, mid.ravel() * 1e6]),
-                                   full_output=True, xtol=1e-10)
+    mid = np.stack(
+        [
+            0.5 * (c_rho[:, inner].mean(1) + c_rho[:, ~inner].mean(1))
+            - 0.5 * bearing.pitch_diameter,
+            0.5 * (c_z[:, inner].mean(1) + c_z[:, ~inner].mean(1)),
+        ],
+        1,
+    )
+    x, _, ier, _ = optimize.fsolve(
+        residual, np.concatenate([u0 * 1e6, mid.ravel() * 1e6]), full_output=True, xtol=1e-10
+    )
     return x[:3] * 1e-6, ier == 1 and np.max(np.abs(residual(x))) < 1e-3
 
 
@@ -134,9 +174,11 @@ def timed(fn, repeat):
     return (time.perf_counter() - t) / repeat, out
 
 
-MAP_GRID = {"radial": np.linspace(0.0, 2000.0, 20).tolist(),
-            "axial": np.linspace(-500.0, 500.0, 5).tolist(),
-            "speeds": [0.0, 5000.0, 10000.0, 15000.0]}
+MAP_GRID = {
+    "radial": np.linspace(0.0, 2000.0, 20).tolist(),
+    "axial": np.linspace(-500.0, 500.0, 5).tolist(),
+    "speeds": [0.0, 5000.0, 10000.0, 15000.0],
+}
 
 _MAP_SNIPPET = """
 import json, sys, time, numpy as np
@@ -163,16 +205,28 @@ print(json.dumps({"per_case_s": min(best), "cases": len(table),
 def map_per_case(src: Path | None, compiled_ring: bool = True) -> dict:
     """Run _MAP_SNIPPET with the package from ``src`` (None: this checkout) in a
     subprocess, one thread each."""
-    env = {**os.environ, "OMP_NUM_THREADS": "1", "NUMBA_NUM_THREADS": "1",
-           "OPENBLAS_NUM_THREADS": "1"}
+    env = {
+        **os.environ,
+        "OMP_NUM_THREADS": "1",
+        "NUMBA_NUM_THREADS": "1",
+        "OPENBLAS_NUM_THREADS": "1",
+    }
     snippet = _MAP_SNIPPET
     if src is not None:
         env["PYTHONPATH"] = str(src)
     if not compiled_ring:
-        snippet = snippet.replace("def run():", "from bearinglab.quasistatic import solver\n"
-                                  "solver.COMPILED_RING = False\ndef run():")
-    out = subprocess.run([sys.executable, "-c", snippet, json.dumps(MAP_GRID)], env=env,
-                         capture_output=True, text=True, check=True, cwd=tempfile.gettempdir())
+        snippet = snippet.replace(
+            "def run():",
+            "from bearinglab.quasistatic import solver\nsolver.COMPILED_RING = False\ndef run():",
+        )
+    out = subprocess.run(
+        [sys.executable, "-c", snippet, json.dumps(MAP_GRID)],
+        env=env,
+        capture_output=True,
+        text=True,
+        check=True,
+        cwd=tempfile.gettempdir(),
+    )
     return json.loads(out.stdout.splitlines()[-1])
 
 
@@ -180,23 +234,31 @@ def per_case_comparison() -> None:
     """Part 3: this checkout, its Python ring reference and REFERENCE_COMMIT, one run."""
     with tempfile.TemporaryDirectory() as tmp:
         tree = Path(tmp) / "reference"
-        subprocess.run(["git", "-C", str(ROOT), "worktree", "add", "--detach", str(tree),
-                        REFERENCE_COMMIT], check=True, capture_output=True)
+        subprocess.run(
+            ["git", "-C", str(ROOT), "worktree", "add", "--detach", str(tree), REFERENCE_COMMIT],
+            check=True,
+            capture_output=True,
+        )
         try:
             before = map_per_case(tree / "src")
             now = map_per_case(ROOT / "src")
             python_ring = map_per_case(ROOT / "src", compiled_ring=False)
         finally:
-            subprocess.run(["git", "-C", str(ROOT), "worktree", "remove", "--force",
-                            str(tree)], check=False, capture_output=True)
+            subprocess.run(
+                ["git", "-C", str(ROOT), "worktree", "remove", "--force", str(tree)],
+                check=False,
+                capture_output=True,
+            )
     diff = np.max(np.abs(np.array(now["zero_rpm_um"]) - np.array(before["zero_rpm_um"])))
-    print(f"stiffness map, {now['cases']} cases, one process: "
-          f"{now['per_case_s'] * 1e3:.3f} ms CPU per case now ({now['ok']} solved), "
-          f"{before['per_case_s'] * 1e3:.3f} ms at {REFERENCE_COMMIT[:7]} ({before['ok']} "
-          f"solved): x{before['per_case_s'] / now['per_case_s']:.1f} fewer seconds per case; "
-          f"Python ring reference {python_ring['per_case_s'] * 1e3:.3f} ms "
-          f"(x{python_ring['per_case_s'] / now['per_case_s']:.1f}); "
-          f"at 0 rpm S_r differs from {REFERENCE_COMMIT[:7]} by {diff * 1e3:.2g} nm at most")
+    print(
+        f"stiffness map, {now['cases']} cases, one process: "
+        f"{now['per_case_s'] * 1e3:.3f} ms CPU per case now ({now['ok']} solved), "
+        f"{before['per_case_s'] * 1e3:.3f} ms at {REFERENCE_COMMIT[:7]} ({before['ok']} "
+        f"solved): x{before['per_case_s'] / now['per_case_s']:.1f} fewer seconds per case; "
+        f"Python ring reference {python_ring['per_case_s'] * 1e3:.3f} ms "
+        f"(x{python_ring['per_case_s'] / now['per_case_s']:.1f}); "
+        f"at 0 rpm S_r differs from {REFERENCE_COMMIT[:7]} by {diff * 1e3:.2g} nm at most"
+    )
 
 
 def main() -> None:
@@ -216,14 +278,21 @@ def main() -> None:
     t_ref, (x, ok) = timed(lambda: fsolve_reference(BEARING, c), 3)
     diff = np.max(np.abs(x - r.displacement[:3]))
     t_flat, (x_flat, ok_flat) = timed(lambda: flat_fsolve_reference(BEARING, c), 3)
-    print(f"flat fsolve over all unknowns: {t_flat * 1e3:.1f} ms, converged: {ok_flat} "
-          f"(off by {np.max(np.abs(x_flat - r.displacement[:3])) * 1e6:.3g} um)")
-    print(f"single solve: bearinglab {t_ours * 1e3:.2f} ms, NumPy twin {t_numpy * 1e3:.1f} ms "
-          f"(x{t_numpy / t_ours:.1f}), fsolve {t_ref * 1e3:.1f} ms (x{t_ref / t_ours:.1f}, "
-          f"converged: {ok}); displacement difference {diff * 1e9:.3g} nm")
+    print(
+        f"flat fsolve over all unknowns: {t_flat * 1e3:.1f} ms, converged: {ok_flat} "
+        f"(off by {np.max(np.abs(x_flat - r.displacement[:3])) * 1e6:.3g} um)"
+    )
+    print(
+        f"single solve: bearinglab {t_ours * 1e3:.2f} ms, NumPy twin {t_numpy * 1e3:.1f} ms "
+        f"(x{t_numpy / t_ours:.1f}), fsolve {t_ref * 1e3:.1f} ms (x{t_ref / t_ours:.1f}, "
+        f"converged: {ok}); displacement difference {diff * 1e9:.3g} nm"
+    )
 
-    radial, axial, speeds = np.linspace(0, 2000, 100), np.linspace(-500, 500, 10), \
-        np.linspace(0, 15000, 10)
+    radial, axial, speeds = (
+        np.linspace(0, 2000, 100),
+        np.linspace(-500, 500, 10),
+        np.linspace(0, 15000, 10),
+    )
     t = time.perf_counter()
     table = stiffness_map(BEARING, radial, axial, speeds)
     t_map = time.perf_counter() - t
@@ -231,17 +300,20 @@ def main() -> None:
     t = time.perf_counter()
     failures = 0
     for fr, fa, n in sample:
-        failures += not fsolve_reference(BEARING, OperatingCondition(
-            radial_load=fr, axial_load=fa, shaft_speed=n * math.pi / 30))[1]
+        failures += not fsolve_reference(
+            BEARING, OperatingCondition(radial_load=fr, axial_load=fa, shaft_speed=n * math.pi / 30)
+        )[1]
     t_ref_map = (time.perf_counter() - t) / len(sample) * len(table)
-    print(f"{len(table)}-case map: bearinglab {t_map:.1f} s on all cores "
-          f"({(table.status == 'ok').sum()} solved); fsolve scaled from {len(sample)} cases "
-          f"{t_ref_map:.0f} s (x{t_ref_map / t_map:.0f}; {failures} of the sample did not "
-          f"converge)")
+    print(
+        f"{len(table)}-case map: bearinglab {t_map:.1f} s on all cores "
+        f"({(table.status == 'ok').sum()} solved); fsolve scaled from {len(sample)} cases "
+        f"{t_ref_map:.0f} s (x{t_ref_map / t_map:.0f}; {failures} of the sample did not "
+        f"converge)"
+    )
     per_case_comparison()
 
 
 if __name__ == "__main__":
-    with warnings.catch_warnings():   # fsolve's "not making good progress" notes
+    with warnings.catch_warnings():  # fsolve's "not making good progress" notes
         warnings.simplefilter("ignore", RuntimeWarning)
         main()

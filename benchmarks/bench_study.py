@@ -23,8 +23,7 @@ Run: nice -n 10 .venv/bin/python benchmarks/bench_study.py [--quick] [--json FIL
 
 import os
 
-for _var in ("NUMBA_NUM_THREADS", "OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS",
-             "MKL_NUM_THREADS"):
+for _var in ("NUMBA_NUM_THREADS", "OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"):
     os.environ[_var] = "1"
 
 import argparse  # noqa: E402 - after the thread settings
@@ -39,9 +38,12 @@ from bearinglab.study import run_study  # noqa: E402
 
 
 def _grid(quick: bool) -> dict:
-    return {"designation": "6205", "radial_load_n": "50:5000:100",
-            "axial_load_n": "0:2000:" + ("5" if quick else "25"),
-            "speed_rpm": "0:10000:" + ("20" if quick else "40")}
+    return {
+        "designation": "6205",
+        "radial_load_n": "50:5000:100",
+        "axial_load_n": "0:2000:" + ("5" if quick else "25"),
+        "speed_rpm": "0:10000:" + ("20" if quick else "40"),
+    }
 
 
 def _load() -> str:
@@ -60,19 +62,26 @@ def _row(kind, n, result, started, load_before, cpu_before) -> dict:
     memory = sorted(result.peak_memory.values())
     cpu = sorted(result.worker_cpu_seconds.values())
     items = result.computed_cases if kind == "study" else result.computed_records
-    return {"benchmark": kind, "workers": n, "items": result.computed_cases
-            if kind == "study" else result.computed_records,
-            "seconds": round(result.seconds, 2),
-            "per_second": round((result.computed_cases if kind == "study" else
-                                 result.computed_records) / result.seconds, 1),
-            "startup_and_warmup_s": round(time.perf_counter() - started - result.seconds, 1),
-            "peak_memory_mb": [round(m / 2**20) for m in memory],
-            "cpu_ms_per_item": round(1e3 * sum(cpu) / items, 2),
-            "client_cpu_s": round(_own_cpu() - cpu_before, 1),
-            # share of a core each worker got: < 1 when other work competed for the cores
-            "core_share": [round(c / result.seconds, 2) for c in cpu],
-            "failed": result.failed_cases if kind == "study" else result.failed,
-            "load_before": load_before, "load_after": _load()}
+    return {
+        "benchmark": kind,
+        "workers": n,
+        "items": result.computed_cases if kind == "study" else result.computed_records,
+        "seconds": round(result.seconds, 2),
+        "per_second": round(
+            (result.computed_cases if kind == "study" else result.computed_records)
+            / result.seconds,
+            1,
+        ),
+        "startup_and_warmup_s": round(time.perf_counter() - started - result.seconds, 1),
+        "peak_memory_mb": [round(m / 2**20) for m in memory],
+        "cpu_ms_per_item": round(1e3 * sum(cpu) / items, 2),
+        "client_cpu_s": round(_own_cpu() - cpu_before, 1),
+        # share of a core each worker got: < 1 when other work competed for the cores
+        "core_share": [round(c / result.seconds, 2) for c in cpu],
+        "failed": result.failed_cases if kind == "study" else result.failed,
+        "load_before": load_before,
+        "load_after": _load(),
+    }
 
 
 def main() -> None:
@@ -86,34 +95,50 @@ def main() -> None:
     try:
         for n in (1, 2):
             load, t0, c0 = _load(), time.perf_counter(), _own_cpu()
-            r = run_study("stiffness", _grid(args.quick), output=work / f"study-{n}",
-                          workers=n, scheduler="local")
+            r = run_study(
+                "stiffness",
+                _grid(args.quick),
+                output=work / f"study-{n}",
+                workers=n,
+                scheduler="local",
+            )
             rows.append(_row("study", n, r, t0, load, c0))
             print(rows[-1], flush=True)
         for n in (1, 2):
             load, t0, c0 = _load(), time.perf_counter(), _own_cpu()
-            d = make_dataset(work / f"set{n}", records, workers=n, scheduler="local",
-                             duration_s=1.0, sample_rate_hz=20000.0, model="rigid",
-                             faults=["none", "outer", "inner", "ball"],
-                             max_records=None)
+            d = make_dataset(
+                work / f"set{n}",
+                records,
+                workers=n,
+                scheduler="local",
+                duration_s=1.0,
+                sample_rate_hz=20000.0,
+                model="rigid",
+                faults=["none", "outer", "inner", "ball"],
+                max_records=None,
+            )
             rows.append(_row("dataset", n, d, t0, load, c0))
             print(rows[-1], flush=True)
     finally:
         shutil.rmtree(work, ignore_errors=True)
     print()
-    print("| benchmark | workers | items | wall s | per s | speed-up | CPU ms per item | "
-          "core share per worker | client CPU s | startup+warm-up s | peak MB per worker | "
-          "load before -> after |")
+    print(
+        "| benchmark | workers | items | wall s | per s | speed-up | CPU ms per item | "
+        "core share per worker | client CPU s | startup+warm-up s | peak MB per worker | "
+        "load before -> after |"
+    )
     print("|---|---|---|---|---|---|---|---|---|---|---|---|")
     for row in rows:
         one = next(r for r in rows if r["benchmark"] == row["benchmark"] and r["workers"] == 1)
         speedup = one["seconds"] / row["seconds"]
-        print(f"| {row['benchmark']} | {row['workers']} | {row['items']} | {row['seconds']} | "
-              f"{row['per_second']} | x{speedup:.2f} | {row['cpu_ms_per_item']} | "
-              f"{', '.join(map(str, row['core_share']))} | {row['client_cpu_s']} | "
-              f"{row['startup_and_warmup_s']} | "
-              f"{', '.join(map(str, row['peak_memory_mb']))} | {row['load_before']} -> "
-              f"{row['load_after']} |")
+        print(
+            f"| {row['benchmark']} | {row['workers']} | {row['items']} | {row['seconds']} | "
+            f"{row['per_second']} | x{speedup:.2f} | {row['cpu_ms_per_item']} | "
+            f"{', '.join(map(str, row['core_share']))} | {row['client_cpu_s']} | "
+            f"{row['startup_and_warmup_s']} | "
+            f"{', '.join(map(str, row['peak_memory_mb']))} | {row['load_before']} -> "
+            f"{row['load_after']} |"
+        )
     if args.json:
         args.json.write_text(json.dumps(rows, indent=1))
 

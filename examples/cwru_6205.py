@@ -30,8 +30,10 @@ def main(out: Path) -> None:
     for name, published in CWRU_PUBLISHED.items():
         print(f"  {name:10s} {f.orders[name]:10.5f} {published:12.5f} {f.hz(name):12.2f}")
     contacts = ball_contacts(bearing, 1000.0)
-    print(f"p_max inner/outer at 1000 N: {float(contacts.inner.max_pressure) / 1e9:.3f} / "
-          f"{float(contacts.outer.max_pressure) / 1e9:.3f} GPa")
+    print(
+        f"p_max inner/outer at 1000 N: {float(contacts.inner.max_pressure) / 1e9:.3f} / "
+        f"{float(contacts.outer.max_pressure) / 1e9:.3f} GPa"
+    )
     out.mkdir(parents=True, exist_ok=True)
     print("wrote", save_figure(contacts.plot()[0], out / "cwru_6205_contact.png"))
     print("wrote", save_figure(f.plot()[0], out / "cwru_6205_frequencies.png"))

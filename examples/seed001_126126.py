@@ -49,7 +49,7 @@ def compute(step: float, jobs: int) -> dict:
     for rpm in s1.SPEEDS_RPM:
         for fa in s1.AXIAL_LOADS_N:
             tasks[("fr", fa, rpm)] = (tuple(radial), fa, rpm)
-    for fa in s1.AXIAL_LOADS_N[1:]:                       # fine grids for the inflection
+    for fa in s1.AXIAL_LOADS_N[1:]:  # fine grids for the inflection
         tasks[("knee", fa, 8000.0)] = (tuple(s1.inflection_grid(fa)), fa, 8000.0)
     for fr in FIG10_RADIAL_LOADS:
         tasks[("fa", fr, 4500.0)] = (fr, FIG10_AXIAL_LOADS, 4500.0)
@@ -77,8 +77,13 @@ def figures(results: dict, out: Path) -> list[Path]:
     for ax, fa, letter in zip(axes.flat, s1.AXIAL_LOADS_N, "abcd", strict=True):
         for rpm in s1.SPEEDS_RPM:
             c = results[("fr", fa, rpm)]
-            ax.plot(c.radial_load, c.radial_displacement, ".-", color=colours[rpm],
-                    label=f"{rpm:.0f} rpm")
+            ax.plot(
+                c.radial_load,
+                c.radial_displacement,
+                ".-",
+                color=colours[rpm],
+                label=f"{rpm:.0f} rpm",
+            )
         if fa > 0:
             ax.axvline(fa / e, color="0.5", ls=":", label="F_a/F_r = e = 0.68")
         ax.set_title(f"({letter}) F_a = {fa:.0f} N")
@@ -92,8 +97,10 @@ def figures(results: dict, out: Path) -> list[Path]:
 
     fig, ax = plt.subplots(figsize=(7, 5))
     for k, fa in enumerate(s1.AXIAL_LOADS_N):
-        f, d = [results[("fr", fa, 8000.0)].radial_load], [
-            results[("fr", fa, 8000.0)].radial_displacement]
+        f, d = (
+            [results[("fr", fa, 8000.0)].radial_load],
+            [results[("fr", fa, 8000.0)].radial_displacement],
+        )
         if fa > 0:
             fine = results[("knee", fa, 8000.0)]
             f.append(fine.radial_load)
@@ -109,22 +116,30 @@ def figures(results: dict, out: Path) -> list[Path]:
     ax.set_xlim(0.0, 1250.0)
     ax.set_xlabel("F_r [N]")
     ax.set_ylabel("S_r [um]")
-    ax.set_title("8000 rpm (cf. fig. 8): dotted = our knee (onset), "
-                 "triangle = F_a/F_r = e", fontsize=9)
+    ax.set_title(
+        "8000 rpm (cf. fig. 8): dotted = our knee (onset), triangle = F_a/F_r = e", fontsize=9
+    )
     ax.legend(fontsize=8)
     ax.grid(alpha=0.3)
     written.append(save_figure(fig, out / "seed001_fig8_displacement_8000rpm.png"))
 
-    curves = [(f"F_a = {fa:.0f} N", results[("fr", fa, 4500.0)], fa / e if fa > 0 else None)
-              for fa in s1.AXIAL_LOADS_N]
-    fig = _stiffness_figure(plt, curves, "radial_load", "F_r [N]",
-                            ("C_r = dF_r/dS_r [N/um]", "C_a = dF_a/dS_a [N/um]"),
-                            "4500 rpm (cf. fig. 9); dotted: F_a/F_r = e")
+    curves = [
+        (f"F_a = {fa:.0f} N", results[("fr", fa, 4500.0)], fa / e if fa > 0 else None)
+        for fa in s1.AXIAL_LOADS_N
+    ]
+    fig = _stiffness_figure(
+        plt,
+        curves,
+        "radial_load",
+        "F_r [N]",
+        ("C_r = dF_r/dS_r [N/um]", "C_a = dF_a/dS_a [N/um]"),
+        "4500 rpm (cf. fig. 9); dotted: F_a/F_r = e",
+    )
     written.append(save_figure(fig, out / "seed001_fig9_stiffness_vs_fr.png"))
-    curves = [(f"F_r = {fr:.0f} N", results[("fa", fr, 4500.0)], None)
-              for fr in FIG10_RADIAL_LOADS]
-    fig = _stiffness_figure(plt, curves, "axial_load", "F_a [N]", ("C_r [N/um]", "C_a [N/um]"),
-                            "4500 rpm (cf. fig. 10)")
+    curves = [(f"F_r = {fr:.0f} N", results[("fa", fr, 4500.0)], None) for fr in FIG10_RADIAL_LOADS]
+    fig = _stiffness_figure(
+        plt, curves, "axial_load", "F_a [N]", ("C_r [N/um]", "C_a [N/um]"), "4500 rpm (cf. fig. 10)"
+    )
     written.append(save_figure(fig, out / "seed001_fig10_stiffness_vs_fa.png"))
     return written
 
@@ -156,10 +171,12 @@ def _at(curve, load: float) -> float:
 
 def report(results: dict) -> None:
     b = s1.BEARING
-    print(f"126126 (estimated): Z = {b.ball_count}, D_w = {b.ball_diameter * 1e3:.2f} mm, "
-          f"d_m = {b.pitch_diameter * 1e3:.1f} mm, f_i = f_o = {b.inner_groove_factor}, "
-          f"alpha_T = {math.degrees(b.inner_arch_angle):.2f} deg, "
-          f"P_d = {b.diametral_clearance * 1e6:.0f} um, alpha_0 = 26 deg")
+    print(
+        f"126126 (estimated): Z = {b.ball_count}, D_w = {b.ball_diameter * 1e3:.2f} mm, "
+        f"d_m = {b.pitch_diameter * 1e3:.1f} mm, f_i = f_o = {b.inner_groove_factor}, "
+        f"alpha_T = {math.degrees(b.inner_arch_angle):.2f} deg, "
+        f"P_d = {b.diametral_clearance * 1e6:.0f} um, alpha_0 = 26 deg"
+    )
     print("\ninflection at 8000 rpm (paper, fig. 8: F_a/F_r = 0.64...0.71, e = 0.68)")
     print("  F_a [N]  onset F_r [N]  F_a/F_r   max-d2 F_r [N]  F_a/F_r")
     for fa in s1.AXIAL_LOADS_N[1:]:
@@ -172,18 +189,25 @@ def report(results: dict) -> None:
     for fa in s1.AXIAL_LOADS_N:
         v = [_at(results[("fr", fa, rpm)], 1000.0) for rpm in s1.SPEEDS_RPM]
         print(f"  {fa:7.0f}  {v[0]:6.1f}  {v[1]:9.1f}  {v[2]:9.1f}   {v[0] - v[2]:+8.1f}")
-    print("\nC_r against F_r at 4500 rpm (paper, fig. 9a: falls, then rises; the fall where "
-          "F_a/F_r < e)")
-    print("  F_a [N]  C_r first  min (at F_r)      last   fall starts   share of fall "
-          "at F_a/F_r < e")
+    print(
+        "\nC_r against F_r at 4500 rpm (paper, fig. 9a: falls, then rises; the fall where "
+        "F_a/F_r < e)"
+    )
+    print(
+        "  F_a [N]  C_r first  min (at F_r)      last   fall starts   share of fall at F_a/F_r < e"
+    )
     for fa in s1.AXIAL_LOADS_N[1:]:
         c = results[("fr", fa, 4500.0)]
         d = s1.describe_stiffness_fall(c.radial_load, c.radial_stiffness, fa)
-        print(f"  {fa:7.0f}  {d.initial:9.0f}  {d.minimum:4.0f} ({d.minimum_load:5.0f} N)  "
-              f"{d.final:7.0f}   F_a/F_r={fa / d.fall_start:5.2f}   {d.fraction_below_e:6.2f}")
+        print(
+            f"  {fa:7.0f}  {d.initial:9.0f}  {d.minimum:4.0f} ({d.minimum_load:5.0f} N)  "
+            f"{d.final:7.0f}   F_a/F_r={fa / d.fall_start:5.2f}   {d.fraction_below_e:6.2f}"
+        )
     failures = [f for c in results.values() for f in c.failures]
-    print(f"\n{len(failures)} of {sum(c.radial_load.size for c in results.values())} solves "
-          "raised ConvergenceError" + (":" if failures else ""))
+    print(
+        f"\n{len(failures)} of {sum(c.radial_load.size for c in results.values())} solves "
+        "raised ConvergenceError" + (":" if failures else "")
+    )
     for fr, fa, rpm, msg in failures:
         print(f"  F_r = {fr:g} N, F_a = {fa:g} N, {rpm:g} rpm: {msg[:100]}")
 
@@ -191,10 +215,15 @@ def report(results: dict) -> None:
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("out", nargs="?", default="out", help="output directory (./out)")
-    parser.add_argument("--jobs", type=int, default=min(os.cpu_count() or 1, 4),
-                        help="worker processes (default: CPUs, at most 4)")
-    parser.add_argument("--step", type=float, default=50.0,
-                        help="F_r step of the curves [N] (default 50)")
+    parser.add_argument(
+        "--jobs",
+        type=int,
+        default=min(os.cpu_count() or 1, 4),
+        help="worker processes (default: CPUs, at most 4)",
+    )
+    parser.add_argument(
+        "--step", type=float, default=50.0, help="F_r step of the curves [N] (default 50)"
+    )
     args = parser.parse_args(argv)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
@@ -205,8 +234,10 @@ def main(argv=None) -> int:
         print(f"wrote {path}")
     report(results)
     n = sum(c.radial_load.size for c in results.values())
-    print(f"\n{n} solves in {solved:.1f} s with {args.jobs} process(es); total "
-          f"{time.perf_counter() - start:.1f} s")
+    print(
+        f"\n{n} solves in {solved:.1f} s with {args.jobs} process(es); total "
+        f"{time.perf_counter() - start:.1f} s"
+    )
     return 0
 
 

@@ -71,10 +71,20 @@ SWEEPS = {
     "load": ("radial load", 1.0, "N", (25.0, 50.0, 100.0, 150.0, 200.0)),
     "band": ("ball-size error band", 1e-6, "um", (1e-6, 1.5e-6, 2e-6, 2.5e-6, 3e-6)),
 }
-FIGURE_OF = {"order": "fig15_16_waviness_number", "amplitude": "fig17_amplitude",
-             "rpm": "fig18_speed", "load": "fig19_load", "band": "fig20_ball_band"}
-FIGURE_TITLE = {"order": "figs. 15-16", "amplitude": "fig. 17", "rpm": "fig. 18",
-                "load": "fig. 19", "band": "fig. 20"}
+FIGURE_OF = {
+    "order": "fig15_16_waviness_number",
+    "amplitude": "fig17_amplitude",
+    "rpm": "fig18_speed",
+    "load": "fig19_load",
+    "band": "fig20_ball_band",
+}
+FIGURE_TITLE = {
+    "order": "figs. 15-16",
+    "amplitude": "fig. 17",
+    "rpm": "fig. 18",
+    "load": "fig. 19",
+    "band": "fig. 20",
+}
 PUBLISHED_MEAN_SPL_DB = 29.832
 
 
@@ -83,10 +93,10 @@ def run(points: int, rpm: float, load: float, amplitude: float, order: int, band
     bearing, _ = bearing_from_designation("608")
     imperfections = Imperfections(
         [Waviness("inner", order, amplitude), Waviness("outer", order, amplitude)],
-        ball_size_errors=BallSizeErrors.random(bearing.ball_count, band, seed=SEED))
+        ball_size_errors=BallSizeErrors.random(bearing.ball_count, band, seed=SEED),
+    )
     condition = OperatingCondition(radial_load=load, shaft_speed=rpm_to_rad_s(rpm))
-    return bearing_noise(bearing, condition, imperfections, points=points,
-                         point=SEED003_POINT_A)
+    return bearing_noise(bearing, condition, imperfections, points=points, point=SEED003_POINT_A)
 
 
 def _pyplot():
@@ -144,13 +154,27 @@ def draw_base(noise, out: Path) -> list[Path]:
     pitch = 0.5 * o.bearing.pitch_diameter
     dx = o.ball_x - pitch * np.cos(o.ball_angle)
     dy = o.ball_y - pitch * np.sin(o.ball_angle)
-    fig = _ball_figure(plt, t, o.ball_radial_displacement * 1e6, dx[:, 0] * 1e6,
-                       dy[:, 0] * 1e6, "radius - d_m/2 [um]", "displacement [um]",
-                       "fig. 10: ball centres (every ball: radial; ball 0: x and y)")
+    fig = _ball_figure(
+        plt,
+        t,
+        o.ball_radial_displacement * 1e6,
+        dx[:, 0] * 1e6,
+        dy[:, 0] * 1e6,
+        "radius - d_m/2 [um]",
+        "displacement [um]",
+        "fig. 10: ball centres (every ball: radial; ball 0: x and y)",
+    )
     written.append(save_figure(fig, out / "fig10_ball_centres.png"))
-    fig = _ball_figure(plt, t, o.ball_radial_velocity * 1e3, np.gradient(dx[:, 0], t) * 1e3,
-                       np.gradient(dy[:, 0], t) * 1e3, "d rho / dt [mm/s]", "velocity [mm/s]",
-                       "fig. 11: ball-centre velocities (pulsating-sphere sources)")
+    fig = _ball_figure(
+        plt,
+        t,
+        o.ball_radial_velocity * 1e3,
+        np.gradient(dx[:, 0], t) * 1e3,
+        np.gradient(dy[:, 0], t) * 1e3,
+        "d rho / dt [mm/s]",
+        "velocity [mm/s]",
+        "fig. 11: ball-centre velocities (pulsating-sphere sources)",
+    )
     written.append(save_figure(fig, out / "fig11_ball_velocity.png"))
 
     fig, axes = plt.subplots(3, 1, figsize=(9, 9), sharex=True)
@@ -164,8 +188,13 @@ def draw_base(noise, out: Path) -> list[Path]:
         ax.set_ylabel("SPL [dB]")
         ax.set_title(title)
         ax.legend(fontsize=8)
-    axes[2].axhline(PUBLISHED_MEAN_SPL_DB, color="k", ls=":", lw=0.8,
-                    label=f"paper's mean {PUBLISHED_MEAN_SPL_DB} dB")
+    axes[2].axhline(
+        PUBLISHED_MEAN_SPL_DB,
+        color="k",
+        ls=":",
+        lw=0.8,
+        label=f"paper's mean {PUBLISHED_MEAN_SPL_DB} dB",
+    )
     axes[2].legend(fontsize=8)
     axes[2].set_xlabel("time [s]")
     fig.tight_layout()
@@ -175,24 +204,40 @@ def draw_base(noise, out: Path) -> list[Path]:
     spec = s.spectrum()
     top = min(0.5 * s.sample_rate, 10.5 * kin.hz("bpfi"))
     names = ("shaft", "ftf", "bpfo", "bpfi", "bsf", "ball_defect")
-    lines = match_peaks(find_peaks(spec, count=16, max_frequency=top, prominence=1.0),
-                        {n: kin.hz(n) for n in names}, harmonics=10, slip_tolerance=0.0,
-                        resolution=spec.resolution)
+    lines = match_peaks(
+        find_peaks(spec, count=16, max_frequency=top, prominence=1.0),
+        {n: kin.hz(n) for n in names},
+        harmonics=10,
+        slip_tolerance=0.0,
+        resolution=spec.resolution,
+    )
     fig, ax = plt.subplots(figsize=(10, 4.5))
     shown = spec.frequency <= top
     ax.plot(spec.frequency[shown], spec.amplitude[shown], color="0.3", lw=0.8)
     for i, name in enumerate(("bpfo", "bpfi")):
         marks = kin.hz(name) * np.arange(1, 11)
-        ax.vlines(marks[marks <= top], 0, spec.amplitude[shown].max(), colors=f"C{i}",
-                  linestyles="--", lw=0.8, label=f"{name.upper()} and harmonics")
+        ax.vlines(
+            marks[marks <= top],
+            0,
+            spec.amplitude[shown].max(),
+            colors=f"C{i}",
+            linestyles="--",
+            lw=0.8,
+            label=f"{name.upper()} and harmonics",
+        )
     for p in lines:
         if p["matched"]:
-            ax.annotate(f"{p['harmonic']}x {p['matched']}", (p["frequency_hz"], p["amplitude"]),
-                        fontsize=7, rotation=60)
+            ax.annotate(
+                f"{p['harmonic']}x {p['matched']}",
+                (p["frequency_hz"], p["amplitude"]),
+                fontsize=7,
+                rotation=60,
+            )
     ax.set_xlabel("frequency [Hz]")
     ax.set_ylabel("pressure amplitude [Pa]")
-    ax.set_title("sound pressure at point A: spectrum (seed 002: lines at the ball-pass "
-                 "frequencies)")
+    ax.set_title(
+        "sound pressure at point A: spectrum (seed 002: lines at the ball-pass frequencies)"
+    )
     ax.legend(fontsize=8)
     fig.tight_layout()
     written.append(save_figure(fig, out / "pressure_spectrum.png"))
@@ -220,7 +265,7 @@ def draw_sweeps(results: dict, out: Path) -> list[Path]:
     for name, (values, levels, runs) in results.items():
         label, scale, unit, _ = SWEEPS[name]
         x = np.asarray(values, float) / scale
-        if name == "order":      # figs. 15-16: SPL over time per number, then the means
+        if name == "order":  # figs. 15-16: SPL over time per number, then the means
             fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(12, 4.5))
             for v, r in zip(values, runs, strict=True):
                 ax1.plot(r.sound.time, r.sound.spl_time(), lw=0.7, label=f"N_w = {v}")
@@ -242,10 +287,12 @@ def draw_sweeps(results: dict, out: Path) -> list[Path]:
 
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("out", nargs="?", default="figures_608",
-                        help="output directory (./figures_608)")
-    parser.add_argument("--points", type=int, default=1024,
-                        help="instants per run over one cage revolution (1024)")
+    parser.add_argument(
+        "out", nargs="?", default="figures_608", help="output directory (./figures_608)"
+    )
+    parser.add_argument(
+        "--points", type=int, default=1024, help="instants per run over one cage revolution (1024)"
+    )
     parser.add_argument("--quick", action="store_true", help="two values per sweep")
     args = parser.parse_args(argv)
     out = Path(args.out)
@@ -254,14 +301,18 @@ def main(argv=None) -> int:
     base = run(args.points, **BASE)
     written = draw_base(base, out)
     d = base.to_dict()
-    print(f"608, 720 rpm, 50 N, N_w = 7, 0.2 um, 2 um band: mean SPL "
-          f"{d['spl_time_mean_db']:.1f} dB (paper {PUBLISHED_MEAN_SPL_DB} dB), L_eq inner ring "
-          f"{d['spl_leq_inner_ring_db']:.1f} dB, balls {d['spl_leq_balls_db']:.1f} dB")
+    print(
+        f"608, 720 rpm, 50 N, N_w = 7, 0.2 um, 2 um band: mean SPL "
+        f"{d['spl_time_mean_db']:.1f} dB (paper {PUBLISHED_MEAN_SPL_DB} dB), L_eq inner ring "
+        f"{d['spl_leq_inner_ring_db']:.1f} dB, balls {d['spl_leq_balls_db']:.1f} dB"
+    )
     results = sweep(args.points, args.quick)
     for name, (values, levels, _) in results.items():
         label, scale, unit, _ = SWEEPS[name]
-        pairs = ", ".join(f"{v / scale:g}{unit and ' ' + unit}: {lv:.1f}"
-                          for v, lv in zip(values, levels, strict=True))
+        pairs = ", ".join(
+            f"{v / scale:g}{unit and ' ' + unit}: {lv:.1f}"
+            for v, lv in zip(values, levels, strict=True)
+        )
         print(f"mean SPL [dB] against {label}: {pairs}")
     written += draw_sweeps(results, out)
     print(f"{len(written)} figures in {out} ({time.perf_counter() - start:.0f} s)")

@@ -62,19 +62,31 @@ def features(x: np.ndarray, fs: float, kin) -> list[float]:
 def segments(x: np.ndarray, fs: float):
     n = int(SEGMENT_S * fs)
     for start in range(0, len(x) - n + 1, n):
-        yield x[start:start + n]
+        yield x[start : start + n]
 
 
 def synthetic(out: Path, records: int, seed: int) -> pd.DataFrame:
     import bearing_datasets
 
-    make_dataset(out, records, seed=seed, progress=True, bearings=["6205-2RS"],
-                 speed_rpm=(1720.0, 1800.0), radial_load_n=(100.0, 1500.0),
-                 faults=["none", "outer", "inner", "ball"], defect_width_mm=(0.18, 0.71),
-                 defect_depth_mm=(0.1, 0.3), defect_position_deg=(-135.0, -45.0),
-                 waviness_amplitude_um=(0.0, 0.3), noise_ms2=(0.5, 10.0),
-                 resonances=[((2000.0, 5000.0), (0.02, 0.1))], sample_rate_hz=12000.0,
-                 duration_s=SEGMENT_S, model="rigid")
+    make_dataset(
+        out,
+        records,
+        seed=seed,
+        progress=True,
+        bearings=["6205-2RS"],
+        speed_rpm=(1720.0, 1800.0),
+        radial_load_n=(100.0, 1500.0),
+        faults=["none", "outer", "inner", "ball"],
+        defect_width_mm=(0.18, 0.71),
+        defect_depth_mm=(0.1, 0.3),
+        defect_position_deg=(-135.0, -45.0),
+        waviness_amplitude_um=(0.0, 0.3),
+        noise_ms2=(0.5, 10.0),
+        resonances=[((2000.0, 5000.0), (0.02, 0.1))],
+        sample_rate_hz=12000.0,
+        duration_s=SEGMENT_S,
+        model="rigid",
+    )
     ds = bearing_datasets.open(out.name, root=out.parent)
     meta = ds.metadata()
     bearing, _ = bearing_from_designation("6205-2RS")
@@ -101,8 +113,9 @@ def real(folder: Path) -> pd.DataFrame:
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("real", nargs="?", type=Path,
-                        default=REPO / ".." / "shared" / "data" / "real")
+    parser.add_argument(
+        "real", nargs="?", type=Path, default=REPO / ".." / "shared" / "data" / "real"
+    )
     parser.add_argument("--records", type=int, default=400)
     parser.add_argument("--seed", type=int, default=0)
     args = parser.parse_args()
@@ -121,17 +134,25 @@ def main() -> None:
 
     def show(title, truth, predicted):
         m = confusion_matrix(truth, predicted, labels=labels)
-        print(f"\n{title}: rows true, columns predicted "
-              f"(accuracy {np.trace(m) / m.sum():.2f}, {m.sum()} items)")
+        print(
+            f"\n{title}: rows true, columns predicted "
+            f"(accuracy {np.trace(m) / m.sum():.2f}, {m.sum()} items)"
+        )
         print(pd.DataFrame(m, index=labels, columns=labels).to_string())
 
-    print(f"trained on {len(train)} synthetic records "
-          f"({', '.join(f'{k} {v}' for k, v in train['label'].value_counts().items())})")
-    show("synthetic training set (resubstitution)", train["label"],
-         model.predict(train[list(FAMILIES)]))
+    print(
+        f"trained on {len(train)} synthetic records "
+        f"({', '.join(f'{k} {v}' for k, v in train['label'].value_counts().items())})"
+    )
+    show(
+        "synthetic training set (resubstitution)",
+        train["label"],
+        model.predict(train[list(FAMILIES)]),
+    )
     show("real CWRU drive-end, 1 s segments", test["label"], test["predicted"])
-    votes = test.groupby("file").agg(label=("label", "first"),
-                                     predicted=("predicted", lambda p: p.mode().iloc[0]))
+    votes = test.groupby("file").agg(
+        label=("label", "first"), predicted=("predicted", lambda p: p.mode().iloc[0])
+    )
     show("real CWRU drive-end, per record (majority vote)", votes["label"], votes["predicted"])
     print("\nper record:")
     print(votes.to_string())

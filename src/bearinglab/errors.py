@@ -28,8 +28,11 @@ class InputError(BearinglabError, ValueError):
         self.value = value
         self.allowed = allowed
         self.hint = hint
-        message = (f"{parameter} is not given: expected {allowed}" if value is None
-                   else f"{parameter} = {value!r} is not allowed: expected {allowed}")
+        message = (
+            f"{parameter} is not given: expected {allowed}"
+            if value is None
+            else f"{parameter} = {value!r} is not allowed: expected {allowed}"
+        )
         if hint:
             message += f" ({hint})"
         super().__init__(message)

@@ -68,8 +68,9 @@ def raceway_diameters(pitch_diameter, ball_diameter, diametral_clearance):
     return pitch_diameter - half, pitch_diameter + half
 
 
-def free_contact_angle(diametral_clearance, ball_diameter, inner_groove_factor,
-                       outer_groove_factor):
+def free_contact_angle(
+    diametral_clearance, ball_diameter, inner_groove_factor, outer_groove_factor
+):
     """Free (unloaded) contact angle alpha_0 from the clearance [rad].
 
     cos(alpha_0) = 1 - P_d / (2 A), A = (f_i + f_o - 1) D_w (Harris & Kotzalas eq. 2.5).
@@ -92,8 +93,9 @@ def free_contact_angle(diametral_clearance, ball_diameter, inner_groove_factor,
     return np.arccos(ratio)
 
 
-def clearance_for_contact_angle(contact_angle, ball_diameter, inner_groove_factor,
-                                outer_groove_factor):
+def clearance_for_contact_angle(
+    contact_angle, ball_diameter, inner_groove_factor, outer_groove_factor
+):
     """Diametral clearance that gives the free contact angle alpha_0 [m].
 
     Inverse of :func:`free_contact_angle`: P_d = 2 A (1 - cos alpha_0).
@@ -171,8 +173,9 @@ class RingSection(NamedTuple):
     width: float
 
 
-def grooved_ring_section(inner_radius, outer_radius, width, groove_radius,
-                         groove_bottom_radius, race: Race) -> RingSection:
+def grooved_ring_section(
+    inner_radius, outer_radius, width, groove_radius, groove_bottom_radius, race: Race
+) -> RingSection:
     """Cross-section of a ring bounded by two cylinders, minus its raceway groove.
 
     The ring is the rectangle inner_radius <= r <= outer_radius, |z| <= width/2, less the
@@ -200,9 +203,13 @@ def grooved_ring_section(inner_radius, outer_radius, width, groove_radius,
         return 2.0 * math.sqrt(h2) if h2 > 0 else 0.0
 
     if chord(inner_radius if race == "outer" else outer_radius) >= width:
-        raise InputError("width", width, f"more than the groove opening "
-                         f"{chord(inner_radius if race == 'outer' else outer_radius):.6g} m",
-                         "the groove runs over the ring's side faces")
+        raise InputError(
+            "width",
+            width,
+            f"more than the groove opening "
+            f"{chord(inner_radius if race == 'outer' else outer_radius):.6g} m",
+            "the groove runs over the ring's side faces",
+        )
     # moments k = 0, 1, 2 of the section about r_ref (mid-ring, to keep the second moment
     # free of cancellation): rectangle minus the groove, u = r - centre within [-R, R]
     r_ref = 0.5 * (inner_radius + outer_radius)
@@ -212,14 +219,19 @@ def grooved_ring_section(inner_radius, outer_radius, width, groove_radius,
     u0, u1 = max(a - c, -big_r), min(b - c, big_r)
     groove = [0.0, 0.0, 0.0]
     if u1 > u0:
+
         def antiderivatives(u):  # of s, u s and u^2 s with s = sqrt(R^2 - u^2)
             root = math.sqrt(max(big_r**2 - u * u, 0.0))
             arc = math.asin(max(-1.0, min(1.0, u / big_r)))
-            return (0.5 * (u * root + big_r**2 * arc), -root**3 / 3.0,
-                    u * (2.0 * u * u - big_r**2) * root / 8.0 + big_r**4 * arc / 8.0)
+            return (
+                0.5 * (u * root + big_r**2 * arc),
+                -(root**3) / 3.0,
+                u * (2.0 * u * u - big_r**2) * root / 8.0 + big_r**4 * arc / 8.0,
+            )
 
-        f0, f1, f2 = (hi - lo for hi, lo in zip(antiderivatives(u1), antiderivatives(u0),
-                                                strict=True))
+        f0, f1, f2 = (
+            hi - lo for hi, lo in zip(antiderivatives(u1), antiderivatives(u0), strict=True)
+        )
         groove = [2.0 * f0, 2.0 * (f1 + c * f0), 2.0 * (f2 + 2.0 * c * f1 + c * c * f0)]
     m0, m1, m2 = (r - g for r, g in zip(rect, groove, strict=True))
     area = m0
@@ -236,8 +248,11 @@ def _mm(value: float | None) -> float | None:
 
 
 def _positive(name: str, value: float) -> None:
-    if not (isinstance(value, (int, float, np.floating, np.integer)) and math.isfinite(value)
-            and value > 0):
+    if not (
+        isinstance(value, (int, float, np.floating, np.integer))
+        and math.isfinite(value)
+        and value > 0
+    ):
         raise InputError(name, value, "a positive length [m]")
 
 
@@ -313,35 +328,58 @@ class BallBearing:
         for name in ("inner_groove_factor", "outer_groove_factor"):
             f = getattr(self, name)
             if not (isinstance(f, (int, float, np.floating)) and 0.5 < f <= 1.0):
-                raise InputError(name, f, "a value in (0.5, 1.0]",
-                                 "the groove radius must exceed the ball radius")
-        if not (isinstance(self.contact_angle, (int, float, np.floating))
-                and 0.0 <= self.contact_angle <= 0.5 * math.pi):
+                raise InputError(
+                    name,
+                    f,
+                    "a value in (0.5, 1.0]",
+                    "the groove radius must exceed the ball radius",
+                )
+        if not (
+            isinstance(self.contact_angle, (int, float, np.floating))
+            and 0.0 <= self.contact_angle <= 0.5 * math.pi
+        ):
             raise InputError("contact_angle", self.contact_angle, "an angle in [0, 90] degrees")
         for name in ("inner_arch_angle", "outer_arch_angle"):
             arch = getattr(self, name)
             if not (isinstance(arch, (int, float, np.floating)) and 0.0 <= arch < math.pi / 3):
                 raise InputError(name, arch, "an angle in [0, 60) degrees (0 = circular groove)")
         if self.pitch_diameter <= self.ball_diameter:
-            raise InputError("pitch_diameter", self.pitch_diameter,
-                             f"more than the ball diameter {self.ball_diameter:.6g} m")
+            raise InputError(
+                "pitch_diameter",
+                self.pitch_diameter,
+                f"more than the ball diameter {self.ball_diameter:.6g} m",
+            )
         zmax = math.floor(math.pi / math.asin(self.ball_diameter / self.pitch_diameter))
         if z > zmax:
-            raise InputError("ball_count", z, f"at most {zmax} balls",
-                             f"{z} balls of {self.ball_diameter * 1e3:.4g} mm do not fit around "
-                             f"a {self.pitch_diameter * 1e3:.4g} mm pitch circle")
+            raise InputError(
+                "ball_count",
+                z,
+                f"at most {zmax} balls",
+                f"{z} balls of {self.ball_diameter * 1e3:.4g} mm do not fit around "
+                f"a {self.pitch_diameter * 1e3:.4g} mm pitch circle",
+            )
         a = (self.inner_groove_factor + self.outer_groove_factor - 1.0) * self.ball_diameter
         if self.diametral_clearance is None:
-            derived = float(clearance_for_contact_angle(
-                self.contact_angle, self.ball_diameter, self.inner_groove_factor,
-                self.outer_groove_factor))
+            derived = float(
+                clearance_for_contact_angle(
+                    self.contact_angle,
+                    self.ball_diameter,
+                    self.inner_groove_factor,
+                    self.outer_groove_factor,
+                )
+            )
             object.__setattr__(self, "diametral_clearance", derived)
         pd = self.diametral_clearance
-        if not (isinstance(pd, (int, float, np.floating)) and -0.05 * self.ball_diameter <= pd
-                <= 2.0 * a):
-            raise InputError("diametral_clearance", pd,
-                             f"a value in [{-0.05 * self.ball_diameter:.3g}, {2 * a:.3g}] m",
-                             "beyond 2 A the balls are loose even at 90 degrees")
+        if not (
+            isinstance(pd, (int, float, np.floating))
+            and -0.05 * self.ball_diameter <= pd <= 2.0 * a
+        ):
+            raise InputError(
+                "diametral_clearance",
+                pd,
+                f"a value in [{-0.05 * self.ball_diameter:.3g}, {2 * a:.3g}] m",
+                "beyond 2 A the balls are loose even at 90 degrees",
+            )
         for name in ("bore", "outside_diameter", "width"):
             if getattr(self, name) is not None:
                 _positive(name, getattr(self, name))
@@ -352,28 +390,39 @@ class BallBearing:
             self._check_thrust_washers()
             return
         if d is not None and self.inner_raceway_diameter <= d:
-            raise InputError("ball_diameter", self.ball_diameter,
-                             "a ball that leaves material under the inner raceway",
-                             f"inner groove bottom {self.inner_raceway_diameter * 1e3:.4g} mm "
-                             f"is not above the bore {d * 1e3:.4g} mm")
+            raise InputError(
+                "ball_diameter",
+                self.ball_diameter,
+                "a ball that leaves material under the inner raceway",
+                f"inner groove bottom {self.inner_raceway_diameter * 1e3:.4g} mm "
+                f"is not above the bore {d * 1e3:.4g} mm",
+            )
         if big_d is not None and self.outer_raceway_diameter >= big_d:
-            raise InputError("ball_diameter", self.ball_diameter,
-                             "a ball that leaves material outside the outer raceway",
-                             f"outer groove bottom {self.outer_raceway_diameter * 1e3:.4g} mm "
-                             f"is not inside the outside diameter {big_d * 1e3:.4g} mm")
+            raise InputError(
+                "ball_diameter",
+                self.ball_diameter,
+                "a ball that leaves material outside the outer raceway",
+                f"outer groove bottom {self.outer_raceway_diameter * 1e3:.4g} mm "
+                f"is not inside the outside diameter {big_d * 1e3:.4g} mm",
+            )
 
     def _check_thrust_washers(self) -> None:
         """A thrust bearing's balls run on the faces of its washers: the ball set must clear
         the shaft (d_m - D_w > d) and the pitch circle lie inside the outside diameter."""
         d, big_d = self.bore, self.outside_diameter
         if d is not None and self.pitch_diameter - self.ball_diameter <= d:
-            raise InputError("pitch_diameter", self.pitch_diameter,
-                             f"more than the bore plus the ball diameter "
-                             f"{d + self.ball_diameter:.6g} m",
-                             "the balls of a thrust bearing must clear the shaft")
+            raise InputError(
+                "pitch_diameter",
+                self.pitch_diameter,
+                f"more than the bore plus the ball diameter {d + self.ball_diameter:.6g} m",
+                "the balls of a thrust bearing must clear the shaft",
+            )
         if big_d is not None and self.pitch_diameter >= big_d:
-            raise InputError("pitch_diameter", self.pitch_diameter,
-                             f"less than the outside diameter {big_d:.6g} m")
+            raise InputError(
+                "pitch_diameter",
+                self.pitch_diameter,
+                f"less than the outside diameter {big_d:.6g} m",
+            )
 
     @property
     def is_thrust(self) -> bool:
@@ -386,14 +435,16 @@ class BallBearing:
     @property
     def inner_raceway_diameter(self) -> float:
         """Inner groove-bottom diameter d_i [m]."""
-        return float(raceway_diameters(self.pitch_diameter, self.ball_diameter,
-                                       self.diametral_clearance)[0])
+        return float(
+            raceway_diameters(self.pitch_diameter, self.ball_diameter, self.diametral_clearance)[0]
+        )
 
     @property
     def outer_raceway_diameter(self) -> float:
         """Outer groove-bottom diameter d_o [m]."""
-        return float(raceway_diameters(self.pitch_diameter, self.ball_diameter,
-                                       self.diametral_clearance)[1])
+        return float(
+            raceway_diameters(self.pitch_diameter, self.ball_diameter, self.diametral_clearance)[1]
+        )
 
     @property
     def total_curvature(self) -> float:
@@ -419,18 +470,23 @@ class BallBearing:
         gothic-arch groove halves (0 for circular grooves: 2 A sin(alpha_0), Harris &
         Kotzalas eq. 2.6)."""
         _, offsets = self._pair_geometry()
-        return 2.0 * max(self.groove_centre_distance * math.sin(self.free_contact_angle)
-                         - offsets, 0.0)
+        return 2.0 * max(
+            self.groove_centre_distance * math.sin(self.free_contact_angle) - offsets, 0.0
+        )
 
     def _pair_geometry(self) -> tuple[float, float]:
         """(H, e_i + e_o): radial distance of a pair of groove centres (one per ring) and
         the sum of their axial offsets from the groove mid-planes, rings centred [m]."""
         free_i = (self.inner_groove_factor - 0.5) * self.ball_diameter
         free_o = (self.outer_groove_factor - 0.5) * self.ball_diameter
-        h = (free_i * math.cos(self.inner_arch_angle) + free_o * math.cos(self.outer_arch_angle)
-             - 0.5 * self.diametral_clearance)
+        h = (
+            free_i * math.cos(self.inner_arch_angle)
+            + free_o * math.cos(self.outer_arch_angle)
+            - 0.5 * self.diametral_clearance
+        )
         return h, free_i * math.sin(self.inner_arch_angle) + free_o * math.sin(
-            self.outer_arch_angle)
+            self.outer_arch_angle
+        )
 
     @property
     def gamma(self) -> float:
@@ -450,8 +506,9 @@ class BallBearing:
         the groove meets its shoulder on ``side`` (+1 thrust side, -1 the other):
         arccos(1 - depth / (f D_w)) [rad]."""
         f = self.inner_groove_factor if race == "inner" else self.outer_groove_factor
-        return math.acos(max(-1.0, min(1.0, 1.0 - self.shoulder_depth(side)
-                                       / (f * self.ball_diameter))))
+        return math.acos(
+            max(-1.0, min(1.0, 1.0 - self.shoulder_depth(side) / (f * self.ball_diameter)))
+        )
 
     def contact_radii(self, race: Race, contact_angle: float | None = None):
         """(R_x, R_y) of the inner or outer contact [m]; see :func:`contact_radii`."""
@@ -471,8 +528,12 @@ class BallBearing:
 
     def _needs_boundary(self, what: str) -> tuple[float, float, float]:
         if self.is_thrust:
-            raise InputError("bearing_type", self.bearing_type, "a radial bearing",
-                             f"the {what} is modelled for radial rings only")
+            raise InputError(
+                "bearing_type",
+                self.bearing_type,
+                "a radial bearing",
+                f"the {what} is modelled for radial rings only",
+            )
         for name in ("bore", "outside_diameter", "width"):
             if getattr(self, name) is None:
                 raise InputError(name, None, "a value [m]", f"needed for the {what}")
@@ -488,9 +549,14 @@ class BallBearing:
         _, big_d, width = self._needs_boundary("outer ring cross-section")
         bottom = 0.5 * self.outer_raceway_diameter
         shoulder = bottom - GROOVE_DEPTH_RATIO * self.ball_diameter
-        return grooved_ring_section(shoulder, 0.5 * big_d, width,
-                                    self.outer_groove_factor * self.ball_diameter, bottom,
-                                    "outer")
+        return grooved_ring_section(
+            shoulder,
+            0.5 * big_d,
+            width,
+            self.outer_groove_factor * self.ball_diameter,
+            bottom,
+            "outer",
+        )
 
     @cached_property
     def inner_ring_section(self) -> RingSection:
@@ -498,9 +564,9 @@ class BallBearing:
         d, _, width = self._needs_boundary("inner ring cross-section")
         bottom = 0.5 * self.inner_raceway_diameter
         shoulder = bottom + GROOVE_DEPTH_RATIO * self.ball_diameter
-        return grooved_ring_section(0.5 * d, shoulder, width,
-                                    self.inner_groove_factor * self.ball_diameter, bottom,
-                                    "inner")
+        return grooved_ring_section(
+            0.5 * d, shoulder, width, self.inner_groove_factor * self.ball_diameter, bottom, "inner"
+        )
 
     @property
     def outer_ring_mass(self) -> float:
@@ -517,9 +583,12 @@ class BallBearing:
     def to_dict(self) -> dict:
         """JSON-ready summary in engineering units, with each value's source."""
         out = {
-            "name": self.name, "bearing_type": self.bearing_type,
-            "bore_mm": _mm(self.bore), "outside_diameter_mm": _mm(self.outside_diameter),
-            "width_mm": _mm(self.width), "ball_count": int(self.ball_count),
+            "name": self.name,
+            "bearing_type": self.bearing_type,
+            "bore_mm": _mm(self.bore),
+            "outside_diameter_mm": _mm(self.outside_diameter),
+            "width_mm": _mm(self.width),
+            "ball_count": int(self.ball_count),
             "ball_diameter_mm": _mm(self.ball_diameter),
             "pitch_diameter_mm": _mm(self.pitch_diameter),
             "contact_angle_deg": math.degrees(self.contact_angle),
@@ -532,18 +601,21 @@ class BallBearing:
             "end_play_um": self.end_play * 1e6,
             "ball_mass_g": self.ball_mass * 1e3,
             "geometry_source": self.geometry_source,
-            "geometry_sources": {k: {"kind": v.kind, "reference": v.reference}
-                                 for k, v in self.sources.items()},
+            "geometry_sources": {
+                k: {"kind": v.kind, "reference": v.reference} for k, v in self.sources.items()
+            },
         }
         if None not in (self.bore, self.outside_diameter, self.width) and not self.is_thrust:
             s = self.outer_ring_section
-            out.update({
-                "inner_ring_mass_g": self.inner_ring_mass * 1e3,
-                "outer_ring_mass_g": self.outer_ring_mass * 1e3,
-                "outer_ring_section_area_mm2": s.area * 1e6,
-                "outer_ring_mean_radius_mm": s.mean_radius * 1e3,
-                "outer_ring_second_moment_mm4": s.second_moment * 1e12,
-            })
+            out.update(
+                {
+                    "inner_ring_mass_g": self.inner_ring_mass * 1e3,
+                    "outer_ring_mass_g": self.outer_ring_mass * 1e3,
+                    "outer_ring_section_area_mm2": s.area * 1e6,
+                    "outer_ring_mean_radius_mm": s.mean_radius * 1e3,
+                    "outer_ring_second_moment_mm4": s.second_moment * 1e12,
+                }
+            )
         return out
 
     @property
@@ -556,5 +628,12 @@ class BallBearing:
 
 
 #: The internal-geometry fields whose provenance ``geometry_source`` summarises.
-INTERNAL_FIELDS = ("ball_count", "ball_diameter", "pitch_diameter", "inner_groove_factor",
-                   "outer_groove_factor", "contact_angle", "diametral_clearance")
+INTERNAL_FIELDS = (
+    "ball_count",
+    "ball_diameter",
+    "pitch_diameter",
+    "inner_groove_factor",
+    "outer_groove_factor",
+    "contact_angle",
+    "diametral_clearance",
+)

@@ -40,8 +40,9 @@ LONG_NAMES = {
 }
 
 
-def frequency_orders(ball_count, ball_diameter, pitch_diameter, contact_angle=0.0,
-                     outer_rotating: bool = False) -> dict:
+def frequency_orders(
+    ball_count, ball_diameter, pitch_diameter, contact_angle=0.0, outer_rotating: bool = False
+) -> dict:
     """Defect frequencies as orders of the rotating ring's speed (pure rolling).
 
     With gamma = D_w cos(alpha) / d_m, the inner ring turning and the outer fixed:
@@ -67,14 +68,23 @@ def frequency_orders(ball_count, ball_diameter, pitch_diameter, contact_angle=0.
     >>> [round(float(o[k]), 3) for k in ("ftf", "bpfo", "bpfi", "ball_defect")]
     [0.398, 3.585, 5.415, 4.713]
     """
-    gamma = np.asarray(ball_diameter, float) * np.cos(contact_angle) / np.asarray(
-        pitch_diameter, float)
+    gamma = (
+        np.asarray(ball_diameter, float) * np.cos(contact_angle) / np.asarray(pitch_diameter, float)
+    )
     z = np.asarray(ball_count)
     ftf = 0.5 * (1.0 + gamma) if outer_rotating else 0.5 * (1.0 - gamma)
-    bsf = np.asarray(pitch_diameter, float) / (2.0 * np.asarray(ball_diameter, float)) * (
-        1.0 - gamma**2)
-    return {"ftf": ftf, "bpfo": 0.5 * z * (1.0 - gamma), "bpfi": 0.5 * z * (1.0 + gamma),
-            "bsf": bsf, "ball_defect": 2.0 * bsf}
+    bsf = (
+        np.asarray(pitch_diameter, float)
+        / (2.0 * np.asarray(ball_diameter, float))
+        * (1.0 - gamma**2)
+    )
+    return {
+        "ftf": ftf,
+        "bpfo": 0.5 * z * (1.0 - gamma),
+        "bpfi": 0.5 * z * (1.0 + gamma),
+        "bsf": bsf,
+        "ball_defect": 2.0 * bsf,
+    }
 
 
 @dataclass(frozen=True)
@@ -111,12 +121,16 @@ class DefectFrequencies:
         geometry used (``ball_count``, ``ball_diameter_mm``, ``pitch_diameter_mm``,
         ``contact_angle_deg``, ``geometry_source``)."""
         b = self.bearing
-        out = {"speed_rpm": self.shaft_hz * 60.0, "shaft_hz": self.shaft_hz,
-               "outer_rotating": self.outer_rotating,
-               "ball_count": int(b.ball_count), "ball_diameter_mm": b.ball_diameter * 1e3,
-               "pitch_diameter_mm": b.pitch_diameter * 1e3,
-               "contact_angle_deg": math.degrees(self.contact_angle),
-               "geometry_source": b.geometry_source}
+        out = {
+            "speed_rpm": self.shaft_hz * 60.0,
+            "shaft_hz": self.shaft_hz,
+            "outer_rotating": self.outer_rotating,
+            "ball_count": int(b.ball_count),
+            "ball_diameter_mm": b.ball_diameter * 1e3,
+            "pitch_diameter_mm": b.pitch_diameter * 1e3,
+            "contact_angle_deg": math.degrees(self.contact_angle),
+            "geometry_source": b.geometry_source,
+        }
         for name in FREQUENCY_NAMES:
             out[f"{name}_hz"] = self.hz(name)
         for name in FREQUENCY_NAMES:
@@ -133,14 +147,27 @@ class DefectFrequencies:
         """Table: frequency, long name, order, Hz."""
         import pandas as pd
 
-        return pd.DataFrame([{"frequency": n, "description": LONG_NAMES[n],
-                              "order": float(self.orders[n]), "hz": self.hz(n)}
-                             for n in FREQUENCY_NAMES])
+        return pd.DataFrame(
+            [
+                {
+                    "frequency": n,
+                    "description": LONG_NAMES[n],
+                    "order": float(self.orders[n]),
+                    "hz": self.hz(n),
+                }
+                for n in FREQUENCY_NAMES
+            ]
+        )
 
 
-def defect_frequencies(bearing: BallBearing, shaft_speed: float | None = None, *,
-                       speed_rpm: float | None = None, outer_rotating: bool = False,
-                       contact_angle: float | None = None) -> DefectFrequencies:
+def defect_frequencies(
+    bearing: BallBearing,
+    shaft_speed: float | None = None,
+    *,
+    speed_rpm: float | None = None,
+    outer_rotating: bool = False,
+    contact_angle: float | None = None,
+) -> DefectFrequencies:
     """Kinematic defect frequencies of ``bearing`` with one ring turning at ``shaft_speed``.
 
     Parameters
@@ -165,20 +192,32 @@ def defect_frequencies(bearing: BallBearing, shaft_speed: float | None = None, *
     104.19
     """
     if (shaft_speed is None) == (speed_rpm is None):
-        raise InputError("shaft_speed", shaft_speed, "a speed [rad/s], or speed_rpm= [rpm] "
-                         "instead (exactly one of them)")
+        raise InputError(
+            "shaft_speed",
+            shaft_speed,
+            "a speed [rad/s], or speed_rpm= [rpm] instead (exactly one of them)",
+        )
     if speed_rpm is not None:
-        if not (isinstance(speed_rpm, (int, float, np.floating)) and math.isfinite(speed_rpm)
-                and speed_rpm >= 0):
+        if not (
+            isinstance(speed_rpm, (int, float, np.floating))
+            and math.isfinite(speed_rpm)
+            and speed_rpm >= 0
+        ):
             raise InputError("speed_rpm", speed_rpm, "a speed >= 0 [rpm]")
         shaft_speed = speed_rpm * math.pi / 30.0
-    if not (isinstance(shaft_speed, (int, float, np.floating)) and math.isfinite(shaft_speed)
-            and shaft_speed >= 0):
+    if not (
+        isinstance(shaft_speed, (int, float, np.floating))
+        and math.isfinite(shaft_speed)
+        and shaft_speed >= 0
+    ):
         raise InputError("shaft_speed", shaft_speed, "a speed >= 0 [rad/s]")
     alpha = bearing.contact_angle if contact_angle is None else float(contact_angle)
     if not 0.0 <= alpha <= 0.5 * math.pi:
         raise InputError("contact_angle", contact_angle, "an angle in [0, 90] degrees")
-    orders = {k: float(v) for k, v in frequency_orders(
-        bearing.ball_count, bearing.ball_diameter, bearing.pitch_diameter, alpha,
-        outer_rotating).items()}
+    orders = {
+        k: float(v)
+        for k, v in frequency_orders(
+            bearing.ball_count, bearing.ball_diameter, bearing.pitch_diameter, alpha, outer_rotating
+        ).items()
+    }
     return DefectFrequencies(bearing, float(shaft_speed), outer_rotating, alpha, orders)

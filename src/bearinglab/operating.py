@@ -63,8 +63,9 @@ class OperatingCondition:
         _finite("axial_load", self.axial_load, "a finite load [N]")
         if _finite("shaft_speed", self.shaft_speed, "a speed >= 0 [rad/s]") < 0:
             raise InputError("shaft_speed", self.shaft_speed, "a speed >= 0 [rad/s]")
-        for name in ("misalignment", "outer_misalignment") + (("moment",) if self.moment
-                                                               is not None else ()):
+        for name in ("misalignment", "outer_misalignment") + (
+            ("moment",) if self.moment is not None else ()
+        ):
             pair = getattr(self, name)
             if len(pair) != 2:
                 raise InputError(name, pair, "a pair (about x, about y)")
@@ -72,15 +73,22 @@ class OperatingCondition:
                 _finite(name, v)
         for name in ("misalignment", "outer_misalignment"):
             if max(abs(v) for v in getattr(self, name)) > 0.02:
-                raise InputError(name, getattr(self, name), "tilts within +-20 mrad "
-                                 "(the small-rotation model)")
+                raise InputError(
+                    name, getattr(self, name), "tilts within +-20 mrad (the small-rotation model)"
+                )
 
     def load_vector(self) -> np.ndarray:
         """(F_x, F_y, F_z, M_x, M_y) applied to the inner ring [N, N m]."""
         m = self.moment or (0.0, 0.0)
-        return np.array([self.radial_load * math.cos(self.radial_load_angle),
-                         self.radial_load * math.sin(self.radial_load_angle),
-                         self.axial_load, m[0], m[1]])
+        return np.array(
+            [
+                self.radial_load * math.cos(self.radial_load_angle),
+                self.radial_load * math.sin(self.radial_load_angle),
+                self.axial_load,
+                m[0],
+                m[1],
+            ]
+        )
 
     @classmethod
     def at_rpm(cls, speed_rpm: float, **loads) -> OperatingCondition:
@@ -91,10 +99,13 @@ class OperatingCondition:
         188.1814
         """
         if "shaft_speed" in loads:
-            raise InputError("shaft_speed", loads["shaft_speed"],
-                             "not given with speed_rpm (one speed, in rpm)")
-        return cls(shaft_speed=_finite("speed_rpm", speed_rpm, "a speed >= 0 [rpm]") * math.pi
-                   / 30.0, **loads)
+            raise InputError(
+                "shaft_speed", loads["shaft_speed"], "not given with speed_rpm (one speed, in rpm)"
+            )
+        return cls(
+            shaft_speed=_finite("speed_rpm", speed_rpm, "a speed >= 0 [rpm]") * math.pi / 30.0,
+            **loads,
+        )
 
     @property
     def speed_rpm(self) -> float:

@@ -46,11 +46,20 @@ HIGH_SPEED_FACTOR = 1.0e6
 MIN_CAGE_REVOLUTIONS = 3.0
 
 #: fault family -> the kinematic frequency that carries it and the sideband spacing
-FAMILIES = {"outer_race": ("bpfo", None), "inner_race": ("bpfi", "shaft"),
-            "ball": ("ball_defect", "ftf"), "cage": ("ftf", None)}
+FAMILIES = {
+    "outer_race": ("bpfo", None),
+    "inner_race": ("bpfi", "shaft"),
+    "ball": ("ball_defect", "ftf"),
+    "cage": ("ftf", None),
+}
 #: how the frequencies are named in messages
-_LABEL = {"bpfo": "BPFO", "bpfi": "BPFI", "ball_defect": "the ball-defect rate 2 BSF",
-          "ftf": "FTF", "shaft": "the shaft frequency"}
+_LABEL = {
+    "bpfo": "BPFO",
+    "bpfi": "BPFI",
+    "ball_defect": "the ball-defect rate 2 BSF",
+    "ftf": "FTF",
+    "shaft": "the shaft frequency",
+}
 #: Defect.location -> fault family
 LOCATION_FAMILY = {"outer": "outer_race", "inner": "inner_race", "ball": "ball"}
 
@@ -85,17 +94,24 @@ def load_warnings(bearing, radial_load: float, axial_load: float = 0.0) -> list[
     c0 = load_ratings(bearing).static
     p0 = equivalent_static_load(bearing, radial_load, abs(axial_load))
     if s0 < MIN_ELASTIC_SAFETY:
-        name, value = (("radial_load", radial_load) if radial_load > 0
-                       else ("axial_load", axial_load))
-        raise InputError(name, value, f"a load whose static equivalent P0 is at most "
-                         f"{1 / MIN_ELASTIC_SAFETY:g} C0 = {c0 / MIN_ELASTIC_SAFETY:.4g} N [N]",
-                         f"P0 = {p0:.4g} N is {p0 / c0:.3g} times the static rating C0 = "
-                         f"{c0:.4g} N (ISO 76): the contacts would flow plastically and no "
-                         "elastic model applies")
-    return [f"static safety factor s0 = C0/P0 = {s0:.3g} < 1: the static equivalent load "
-            f"P0 = {p0:.4g} N is above the static rating C0 = {c0:.4g} N (ISO 76): the "
-            "raceways deform permanently by more than 1e-4 D_w; results assume elastic "
-            "contacts"]
+        name, value = (
+            ("radial_load", radial_load) if radial_load > 0 else ("axial_load", axial_load)
+        )
+        raise InputError(
+            name,
+            value,
+            f"a load whose static equivalent P0 is at most "
+            f"{1 / MIN_ELASTIC_SAFETY:g} C0 = {c0 / MIN_ELASTIC_SAFETY:.4g} N [N]",
+            f"P0 = {p0:.4g} N is {p0 / c0:.3g} times the static rating C0 = "
+            f"{c0:.4g} N (ISO 76): the contacts would flow plastically and no "
+            "elastic model applies",
+        )
+    return [
+        f"static safety factor s0 = C0/P0 = {s0:.3g} < 1: the static equivalent load "
+        f"P0 = {p0:.4g} N is above the static rating C0 = {c0:.4g} N (ISO 76): the "
+        "raceways deform permanently by more than 1e-4 D_w; results assume elastic "
+        "contacts"
+    ]
 
 
 def speed_factor(bearing, shaft_speed: float) -> float:
@@ -103,8 +119,9 @@ def speed_factor(bearing, shaft_speed: float) -> float:
     return abs(rad_s_to_rpm(shaft_speed)) * bearing.pitch_diameter * 1e3
 
 
-def speed_warnings(bearing, shaft_speed: float, radial_load: float = 0.0,
-                   axial_load: float = 0.0) -> list[str]:
+def speed_warnings(
+    bearing, shaft_speed: float, radial_load: float = 0.0, axial_load: float = 0.0
+) -> list[str]:
     """The speed against the makers' usual limits and against the load (warnings), and
     against the quasi-static model's limit (an error).
 
@@ -121,31 +138,41 @@ def speed_warnings(bearing, shaft_speed: float, radial_load: float = 0.0,
     rpm = abs(rad_s_to_rpm(shaft_speed))
     if ndm > MAX_SPEED_FACTOR * (1 + 1e-12):
         top = MAX_SPEED_FACTOR / (bearing.pitch_diameter * 1e3)
-        raise InputError("shaft_speed", f"{rpm:.6g} rpm",
-                         f"at most {top:.6g} rpm for this bearing (n d_m <= "
-                         f"{MAX_SPEED_FACTOR:.0e} mm/min with d_m = "
-                         f"{bearing.pitch_diameter * 1e3:.4g} mm)",
-                         "beyond it the balls' centrifugal force swamps the contact loads "
-                         "and no model here is valid")
+        raise InputError(
+            "shaft_speed",
+            f"{rpm:.6g} rpm",
+            f"at most {top:.6g} rpm for this bearing (n d_m <= "
+            f"{MAX_SPEED_FACTOR:.0e} mm/min with d_m = "
+            f"{bearing.pitch_diameter * 1e3:.4g} mm)",
+            "beyond it the balls' centrifugal force swamps the contact loads "
+            "and no model here is valid",
+        )
     out = []
     if ndm > HIGH_SPEED_FACTOR:
-        out.append(f"speed factor n d_m = {ndm:.3g} mm/min is above {HIGH_SPEED_FACTOR:.0e} "
-                   "mm/min, beyond the limiting speeds makers list for standard ball "
-                   "bearings: check the maker's limiting speed for this design and "
-                   "lubrication")
+        out.append(
+            f"speed factor n d_m = {ndm:.3g} mm/min is above {HIGH_SPEED_FACTOR:.0e} "
+            "mm/min, beyond the limiting speeds makers list for standard ball "
+            "bearings: check the maker's limiting speed for this design and "
+            "lubrication"
+        )
     fc = centrifugal_force(bearing, shaft_speed)
     z, alpha = bearing.ball_count, bearing.contact_angle
-    q_max = max(5.0 * radial_load / (z * max(math.cos(alpha), 1e-9)),
-                abs(axial_load) / (z * max(math.sin(alpha), 1e-9)) if axial_load else 0.0)
+    q_max = max(
+        5.0 * radial_load / (z * max(math.cos(alpha), 1e-9)),
+        abs(axial_load) / (z * max(math.sin(alpha), 1e-9)) if axial_load else 0.0,
+    )
     if fc > q_max and (radial_load or axial_load):
-        out.append(f"each ball's centrifugal force F_c = {fc:.4g} N exceeds the heaviest ball "
-                   f"load of the external load (about {q_max:.4g} N, Stribeck): the outer "
-                   "contacts are set by speed rather than load")
+        out.append(
+            f"each ball's centrifugal force F_c = {fc:.4g} N exceeds the heaviest ball "
+            f"load of the external load (about {q_max:.4g} N, Stribeck): the outer "
+            "contacts are set by speed rather than load"
+        )
     return out
 
 
-def sampling_warnings(frequencies, sample_rate: float, duration: float | None = None,
-                      families=None) -> list[str]:
+def sampling_warnings(
+    frequencies, sample_rate: float, duration: float | None = None, families=None
+) -> list[str]:
     """The sample rate and record length against the bearing's frequencies.
 
     Parameters
@@ -178,26 +205,35 @@ def sampling_warnings(frequencies, sample_rate: float, duration: float | None = 
         top = 2.0 * f + (frequencies.hz(sideband) if sideband else 0.0)
         if top > nyquist and (families is None or family in must):
             what = "harmonic and its sidebands reach" if sideband else "harmonic lies at"
-            out.append(f"the second {what} {top:.5g} Hz (of {_LABEL[name]} = {f:.5g} Hz), "
-                       f"above the Nyquist frequency {nyquist:.5g} Hz: the "
-                       f"{family.replace('_', '-')} family shows only its first line")
+            out.append(
+                f"the second {what} {top:.5g} Hz (of {_LABEL[name]} = {f:.5g} Hz), "
+                f"above the Nyquist frequency {nyquist:.5g} Hz: the "
+                f"{family.replace('_', '-')} family shows only its first line"
+            )
     required = [t for t in too_high if t[0] in must]
     if required:
         family, name, f = max(required, key=lambda t: t[2])
-        raise InputError("sample_rate", sample_rate,
-                         f"a sample rate above {2 * f:.6g} Hz [Hz]",
-                         f"{_LABEL[name]} = {f:.5g} Hz, the {family.replace('_', '-')} defect "
-                         f"frequency, is above the Nyquist frequency {nyquist:.5g} Hz")
+        raise InputError(
+            "sample_rate",
+            sample_rate,
+            f"a sample rate above {2 * f:.6g} Hz [Hz]",
+            f"{_LABEL[name]} = {f:.5g} Hz, the {family.replace('_', '-')} defect "
+            f"frequency, is above the Nyquist frequency {nyquist:.5g} Hz",
+        )
     for family, name, f in too_high:
-        out.append(f"{_LABEL[name]} = {f:.5g} Hz is above the Nyquist frequency "
-                   f"{nyquist:.5g} Hz: a {family.replace('_', '-')} fault cannot show in "
-                   "this record")
+        out.append(
+            f"{_LABEL[name]} = {f:.5g} Hz is above the Nyquist frequency "
+            f"{nyquist:.5g} Hz: a {family.replace('_', '-')} fault cannot show in "
+            "this record"
+        )
     if duration is not None:
         ftf = frequencies.hz("ftf")
         if duration * ftf < MIN_CAGE_REVOLUTIONS:
-            out.append(f"the frequency resolution 1/T = {1 / duration:.3g} Hz is too coarse "
-                       f"to separate the cage sidebands (FTF = {ftf:.4g} Hz): record at least "
-                       f"{MIN_CAGE_REVOLUTIONS / ftf:.3g} s")
+            out.append(
+                f"the frequency resolution 1/T = {1 / duration:.3g} Hz is too coarse "
+                f"to separate the cage sidebands (FTF = {ftf:.4g} Hz): record at least "
+                f"{MIN_CAGE_REVOLUTIONS / ftf:.3g} s"
+            )
     return out
 
 
@@ -212,14 +248,17 @@ def check_record_length(frequencies, duration: float) -> None:
     """
     ftf = frequencies.hz("ftf")
     if duration * ftf < MIN_CAGE_REVOLUTIONS:
-        raise InputError("duration", duration,
-                         f"at least {MIN_CAGE_REVOLUTIONS / ftf:.4g} s",
-                         f"{MIN_CAGE_REVOLUTIONS:g} cage revolutions at FTF = {ftf:.4g} Hz, "
-                         "which the envelope diagnosis needs to separate the cage line")
+        raise InputError(
+            "duration",
+            duration,
+            f"at least {MIN_CAGE_REVOLUTIONS / ftf:.4g} s",
+            f"{MIN_CAGE_REVOLUTIONS:g} cage revolutions at FTF = {ftf:.4g} Hz, "
+            "which the envelope diagnosis needs to separate the cage line",
+        )
 
 
 def operating_warnings(bearing, condition) -> list[str]:
     """:func:`load_warnings` and :func:`speed_warnings` of an operating condition."""
-    return (load_warnings(bearing, condition.radial_load, condition.axial_load)
-            + speed_warnings(bearing, condition.shaft_speed, condition.radial_load,
-                             condition.axial_load))
+    return load_warnings(bearing, condition.radial_load, condition.axial_load) + speed_warnings(
+        bearing, condition.shaft_speed, condition.radial_load, condition.axial_load
+    )

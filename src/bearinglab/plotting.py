@@ -23,8 +23,9 @@ def _pyplot():
             matplotlib.use("Agg")
         import matplotlib.pyplot as plt
     except ImportError:  # pragma: no cover - depends on the install
-        raise InputError("--plot", None, "matplotlib installed",
-                         "pip install 'bearinglab[plot]'") from None
+        raise InputError(
+            "--plot", None, "matplotlib installed", "pip install 'bearinglab[plot]'"
+        ) from None
     return plt
 
 
@@ -74,9 +75,13 @@ def ball_contacts_figure(curve, final, axes=None):
     for race, c, colour in (("inner", final.inner, "C3"), ("outer", final.outer, "C2")):
         a, b = float(c.semi_major) * 1e3, float(c.semi_minor) * 1e3
         axes[1].fill(b * np.cos(t), a * np.sin(t), color=colour, alpha=0.25)
-        axes[1].plot(b * np.cos(t), a * np.sin(t), color=colour,
-                     label=f"{race}: 2a = {2 * a:.3g} mm, 2b = {2 * b:.3g} mm, "
-                           f"p_max = {float(c.max_pressure) / 1e9:.3g} GPa")
+        axes[1].plot(
+            b * np.cos(t),
+            a * np.sin(t),
+            color=colour,
+            label=f"{race}: 2a = {2 * a:.3g} mm, 2b = {2 * b:.3g} mm, "
+            f"p_max = {float(c.max_pressure) / 1e9:.3g} GPa",
+        )
     # the ellipses are 5-15 times longer than wide: stretch the rolling direction to read them
     axes[1].set_xlabel("rolling direction [mm] (stretched)")
     axes[1].set_ylabel("across the groove [mm]")
@@ -108,13 +113,20 @@ def frequencies_figure(freqs, names, harmonics: int = 3, ax=None):
     for i, name in enumerate(names):
         base = freqs.hz(name)
         h = np.arange(1, harmonics + 1) * base
-        ax.vlines(h, 0, 1.0 / np.arange(1, harmonics + 1), color=f"C{i}",
-                  label=f"{name.upper()} {base:.2f} Hz")
+        ax.vlines(
+            h,
+            0,
+            1.0 / np.arange(1, harmonics + 1),
+            color=f"C{i}",
+            label=f"{name.upper()} {base:.2f} Hz",
+        )
     ax.set_xlabel("frequency [Hz]")
     ax.set_ylabel("harmonic (1/n)")
     ax.set_ylim(0, 1.1)
-    ax.set_title(f"{freqs.bearing.name or 'bearing'} at {freqs.shaft_hz * 60:g} rpm: "
-                 f"defect frequencies and harmonics")
+    ax.set_title(
+        f"{freqs.bearing.name or 'bearing'} at {freqs.shaft_hz * 60:g} rpm: "
+        f"defect frequencies and harmonics"
+    )
     ax.legend(fontsize=8, ncol=3)
     fig.tight_layout()
     return fig, ax
@@ -139,27 +151,34 @@ def load_distribution_figure(result, axes=None):
     table = result.ball_table()
     angles = np.radians(table["angle_deg"].to_numpy())
     width = 2 * np.pi / len(angles) * 0.35
-    axes[0].bar(angles - width / 2, table["inner_load_n"], width=width, color="C0",
-                label="inner")
-    axes[0].bar(angles + width / 2, table["outer_load_n"], width=width, color="C1",
-                label="outer")
+    axes[0].bar(angles - width / 2, table["inner_load_n"], width=width, color="C0", label="inner")
+    axes[0].bar(angles + width / 2, table["outer_load_n"], width=width, color="C1", label="outer")
     axes[0].set_title("ball loads [N] at their angles", fontsize=10)
     axes[0].legend(loc="lower left", fontsize=8, bbox_to_anchor=(-0.15, -0.12))
     order = np.argsort(table["angle_deg"].to_numpy())
     for name, colour in (("inner", "C0"), ("outer", "C1")):
-        axes[1].plot(table["angle_deg"].to_numpy()[order],
-                     table[f"{name}_contact_angle_deg"].to_numpy()[order], "o-", color=colour,
-                     label=f"{name} contact angle")
+        axes[1].plot(
+            table["angle_deg"].to_numpy()[order],
+            table[f"{name}_contact_angle_deg"].to_numpy()[order],
+            "o-",
+            color=colour,
+            label=f"{name} contact angle",
+        )
     axes[1].set_xlabel("ball angle [deg]")
     axes[1].set_ylabel("contact angle [deg]")
     d = result.to_dict()
-    axes[1].set_title(f"S_r = {d['radial_displacement_um']:.3g} um, S_a = "
-                      f"{d['axial_displacement_um']:.3g} um, C_r = "
-                      f"{d['radial_stiffness_n_per_um']:.3g} N/um", fontsize=10)
+    axes[1].set_title(
+        f"S_r = {d['radial_displacement_um']:.3g} um, S_a = "
+        f"{d['axial_displacement_um']:.3g} um, C_r = "
+        f"{d['radial_stiffness_n_per_um']:.3g} N/um",
+        fontsize=10,
+    )
     axes[1].legend(fontsize=8)
-    fig.suptitle(f"{result.bearing.name or 'bearing'}: F_r = {result.condition.radial_load:g} N, "
-                 f"F_a = {result.condition.axial_load:g} N, "
-                 f"{result.condition.shaft_speed * 30 / np.pi:g} rpm")
+    fig.suptitle(
+        f"{result.bearing.name or 'bearing'}: F_r = {result.condition.radial_load:g} N, "
+        f"F_a = {result.condition.axial_load:g} N, "
+        f"{result.condition.shaft_speed * 30 / np.pi:g} rpm"
+    )
     fig.tight_layout()
     return fig, axes
 
@@ -191,9 +210,18 @@ def stiffness_map_figure(table, ax=None):
     return fig, ax
 
 
-def draw_spectrum(ax, spec, lines, kin, max_frequency: float, *, title: str, ylabel: str,
-                  names=("shaft", "ftf", "bpfo", "bpfi", "ball_defect"),
-                  harmonics: int = 8) -> None:
+def draw_spectrum(
+    ax,
+    spec,
+    lines,
+    kin,
+    max_frequency: float,
+    *,
+    title: str,
+    ylabel: str,
+    names=("shaft", "ftf", "bpfo", "bpfi", "ball_defect"),
+    harmonics: int = 8,
+) -> None:
     """A plain spectrum up to ``max_frequency`` with the kinematic lines and their
     harmonics marked and the labelled peaks annotated (the lines of
     :func:`bearinglab.signal.lines.spectrum_lines`)."""
@@ -208,13 +236,27 @@ def draw_spectrum(ax, spec, lines, kin, max_frequency: float, *, title: str, yla
         marks = np.arange(1, harmonics + 1) * base
         marks = marks[marks <= max_frequency]
         if marks.size:
-            ax.vlines(marks, 0, 1.05 * top, colors=f"C{i}", linestyles="--", lw=0.8, alpha=0.7,
-                      label=f"{name.upper()} {base:.2f} Hz and harmonics")
+            ax.vlines(
+                marks,
+                0,
+                1.05 * top,
+                colors=f"C{i}",
+                linestyles="--",
+                lw=0.8,
+                alpha=0.7,
+                label=f"{name.upper()} {base:.2f} Hz and harmonics",
+            )
     for p in lines:
         label = peak_label(p)
         ax.plot(p["frequency_hz"], p["amplitude"], "o", ms=4, color="k" if label == "-" else "C3")
-        ax.annotate(label, (p["frequency_hz"], p["amplitude"]), textcoords="offset points",
-                    xytext=(2, 4), fontsize=7, rotation=60)
+        ax.annotate(
+            label,
+            (p["frequency_hz"], p["amplitude"]),
+            textcoords="offset points",
+            xytext=(2, 4),
+            fontsize=7,
+            rotation=60,
+        )
     ax.set_title(title)
     ax.set_xlabel("frequency [Hz]")
     ax.set_ylabel(ylabel)

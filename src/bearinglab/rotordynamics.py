@@ -47,8 +47,10 @@ def import_ross():
             warnings.simplefilter("ignore")
             import ross
     except ImportError:
-        raise ImportError("the ROSS export needs ROSS: pip install ross-rotordynamics "
-                          "(on Python 3.11: 'ross-rotordynamics==2.3.0' 'plotly<6')") from None
+        raise ImportError(
+            "the ROSS export needs ROSS: pip install ross-rotordynamics "
+            "(on Python 3.11: 'ross-rotordynamics==2.3.0' 'plotly<6')"
+        ) from None
     return ross
 
 
@@ -62,8 +64,14 @@ def speed_keyword(element_class) -> str:
     raise ImportError(f"this ROSS BearingElement takes none of speed/frequency/w: {names}")
 
 
-def ross_element(results, n: int, *, tag: str | None = None, damping: float | None = None,
-                 damping_factor: float = KRAMER_FACTOR):
+def ross_element(
+    results,
+    n: int,
+    *,
+    tag: str | None = None,
+    damping: float | None = None,
+    damping_factor: float = KRAMER_FACTOR,
+):
     """A ``ross.BearingElement`` from load distributions solved at one or more speeds.
 
     Parameters
@@ -87,15 +95,22 @@ def ross_element(results, n: int, *, tag: str | None = None, damping: float | No
     if damping is not None and (not math.isfinite(damping) or damping < 0):
         raise InputError("damping", damping, "a finite damping >= 0 [N s/m]")
     if not (math.isfinite(damping_factor) and 0 <= damping_factor <= 1e-3):
-        raise InputError("damping_factor", damping_factor, "0 to 1e-3 s (Kramer: 0.25e-5 to "
-                         "2.5e-5 s)")
+        raise InputError(
+            "damping_factor", damping_factor, "0 to 1e-3 s (Kramer: 0.25e-5 to 2.5e-5 s)"
+        )
     speeds = np.array([r.condition.shaft_speed for r in results])
     if np.any(np.diff(speeds) <= 0):
-        raise InputError("speeds", (speeds * 30 / math.pi).tolist(),
-                         "distinct speeds in increasing order [rpm]")
+        raise InputError(
+            "speeds", (speeds * 30 / math.pi).tolist(), "distinct speeds in increasing order [rpm]"
+        )
     k = np.array([r.stiffness_matrix for r in results])
-    coefficients = {"kxx": k[:, 0, 0], "kyy": k[:, 1, 1], "kxy": k[:, 0, 1],
-                    "kyx": k[:, 1, 0], "kzz": k[:, 2, 2]}
+    coefficients = {
+        "kxx": k[:, 0, 0],
+        "kyy": k[:, 1, 1],
+        "kxy": k[:, 0, 1],
+        "kyx": k[:, 1, 0],
+        "kzz": k[:, 2, 2],
+    }
     if damping is None:
         coefficients["cxx"] = damping_factor * k[:, 0, 0]
         coefficients["cyy"] = damping_factor * k[:, 1, 1]
@@ -108,10 +123,18 @@ def ross_element(results, n: int, *, tag: str | None = None, damping: float | No
     return ross.BearingElement(n=n, tag=tag or f"{name} n{n}", **kwargs)
 
 
-def bearing_element(bearing: BallBearing, n: int, *, speeds_rpm=(0.0,),
-                    radial_load: float = 0.0, axial_load: float = 0.0,
-                    tag: str | None = None, damping: float | None = None,
-                    damping_factor: float = KRAMER_FACTOR, **solve_options):
+def bearing_element(
+    bearing: BallBearing,
+    n: int,
+    *,
+    speeds_rpm=(0.0,),
+    radial_load: float = 0.0,
+    axial_load: float = 0.0,
+    tag: str | None = None,
+    damping: float | None = None,
+    damping_factor: float = KRAMER_FACTOR,
+    **solve_options,
+):
     """A ROSS bearing element of ``bearing`` with speed-dependent coefficients.
 
     Solves the load distribution at every speed (each from the previous solution) and
@@ -138,18 +161,28 @@ def bearing_element(bearing: BallBearing, n: int, *, speeds_rpm=(0.0,),
         raise InputError("speeds_rpm", speeds_rpm, "finite speeds >= 0 [rpm]")
     results, initial = [], None
     for rpm in speeds:
-        condition = OperatingCondition(radial_load=radial_load, axial_load=axial_load,
-                                       shaft_speed=rpm * math.pi / 30)
+        condition = OperatingCondition(
+            radial_load=radial_load, axial_load=axial_load, shaft_speed=rpm * math.pi / 30
+        )
         r = solve_load_distribution(bearing, condition, initial=initial, **solve_options)
         initial = r.displacement
         results.append(r)
     return ross_element(results, n, tag=tag, damping=damping, damping_factor=damping_factor)
 
 
-def ross_bearing(designation: str, n: int, *, radial_load: float = 0.0,
-                 axial_load: float = 0.0, speed_rpm=0.0, damping: float | None = None,
-                 tag: str | None = None, system: str | None = None,
-                 damping_factor: float = KRAMER_FACTOR, **overrides):
+def ross_bearing(
+    designation: str,
+    n: int,
+    *,
+    radial_load: float = 0.0,
+    axial_load: float = 0.0,
+    speed_rpm=0.0,
+    damping: float | None = None,
+    tag: str | None = None,
+    system: str | None = None,
+    damping_factor: float = KRAMER_FACTOR,
+    **overrides,
+):
     """A ``ross.BearingElement`` for ``designation`` at its operating point(s).
 
     Builds the bearing from the catalogue (``overrides`` as for
@@ -176,6 +209,13 @@ def ross_bearing(designation: str, n: int, *, radial_load: float = 0.0,
         beta of Kramer's rule [s].
     """
     bearing, _ = bearing_from_designation(designation, system=system, overrides=overrides)
-    return bearing_element(bearing, n, speeds_rpm=speed_rpm, radial_load=radial_load,
-                           axial_load=axial_load, tag=tag, damping=damping,
-                           damping_factor=damping_factor)
+    return bearing_element(
+        bearing,
+        n,
+        speeds_rpm=speed_rpm,
+        radial_load=radial_load,
+        axial_load=axial_load,
+        tag=tag,
+        damping=damping,
+        damping_factor=damping_factor,
+    )

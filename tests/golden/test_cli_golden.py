@@ -23,8 +23,14 @@ CASES = {
     "info_er16k": ["info", "ER-16K"],
     "frequencies_6205_1797rpm": ["frequencies", "6205-2RS", "--speed-rpm", "1797"],
     "contact_6205_1000n": ["contact", "6205", "--ball-load-n", "1000"],
-    "contact_7206_hamrock_brewe": ["contact", "7206", "--ball-load-n", "1500", "--method",
-                                   "hamrock-brewe"],
+    "contact_7206_hamrock_brewe": [
+        "contact",
+        "7206",
+        "--ball-load-n",
+        "1500",
+        "--method",
+        "hamrock-brewe",
+    ],
 }
 
 
@@ -33,11 +39,17 @@ def _close(a, b, path="") -> list[str]:
         diffs = [f"{path}.{k}: missing" for k in a.keys() ^ b.keys()]
         return diffs + [d for k in a.keys() & b.keys() for d in _close(a[k], b[k], f"{path}.{k}")]
     if isinstance(a, list) and isinstance(b, list) and len(a) == len(b):
-        return [d for i, (x, y) in enumerate(zip(a, b, strict=True))
-                for d in _close(x, y, f"{path}[{i}]")]
+        return [
+            d
+            for i, (x, y) in enumerate(zip(a, b, strict=True))
+            for d in _close(x, y, f"{path}[{i}]")
+        ]
     if isinstance(a, float) or isinstance(b, float):
-        ok = isinstance(a, (int, float)) and isinstance(b, (int, float)) and math.isclose(
-            a, b, rel_tol=1e-9, abs_tol=1e-12)
+        ok = (
+            isinstance(a, (int, float))
+            and isinstance(b, (int, float))
+            and math.isclose(a, b, rel_tol=1e-9, abs_tol=1e-12)
+        )
         return [] if ok else [f"{path}: {a!r} != {b!r}"]
     return [] if a == b else [f"{path}: {a!r} != {b!r}"]
 

@@ -49,8 +49,9 @@ def test_seed003_torque_uses_the_pitch_diameter():
 
 
 def _moment(n_rpm, nu_mm2_s=20.0, fr=1000.0, fa=0.0, **kw):
-    return skf_frictional_moment("radial_ball", 0.025, 0.052, fr, fa, n_rpm * RPM,
-                                 nu_mm2_s * 1e-6, C62, **kw)
+    return skf_frictional_moment(
+        "radial_ball", 0.025, 0.052, fr, fa, n_rpm * RPM, nu_mm2_s * 1e-6, C62, **kw
+    )
 
 
 def test_skf_zones_of_friction_against_speed():
@@ -90,7 +91,7 @@ def test_skf_rolling_moment_grows_with_viscosity_times_speed_in_full_film():
     m = [_moment(3000.0, nu) for nu in nus]
     assert all(a.rolling < b.rolling for a, b in pairwise(m))
     raw = [x.rolling / (x.inlet_shear_factor * x.replenishment_factor) for x in m]
-    assert raw[1] / raw[0] == pytest.approx(2 ** 0.6, rel=1e-12)
+    assert raw[1] / raw[0] == pytest.approx(2**0.6, rel=1e-12)
 
 
 def test_table_2a_deep_groove_forms_as_printed():
@@ -98,9 +99,10 @@ def test_table_2a_deep_groove_forms_as_printed():
     # (F_r^5 + S2 d_m^1.5 / sin(alpha_F) F_a^4)^(1/3), alpha_F = 24.6 (F_a/C_0)^0.24 deg
     dm, fr, fa, c0 = 38.5, 1000.0, 300.0, 7800.0
     g0 = deep_groove_load_variables(dm * 1e-3, fr, 0.0, C62)
-    assert g0[1] == pytest.approx(C62.s1 * dm ** -0.26 * fr ** (5 / 3), rel=1e-12)
+    assert g0[1] == pytest.approx(C62.s1 * dm**-0.26 * fr ** (5 / 3), rel=1e-12)
     g = deep_groove_load_variables(dm * 1e-3, fr, fa, C62, static_load_rating=c0)
     sin_a = math.sin(math.radians(24.6 * (fa / c0) ** 0.24))
-    assert g[0] == pytest.approx(C62.r1 * dm ** 1.96 * (fr + C62.r2 / sin_a * fa) ** 0.54)
+    assert g[0] == pytest.approx(C62.r1 * dm**1.96 * (fr + C62.r2 / sin_a * fa) ** 0.54)
     assert g[1] == pytest.approx(
-        C62.s1 * dm ** -0.145 * (fr ** 5 + C62.s2 * dm ** 1.5 / sin_a * fa ** 4) ** (1 / 3))
+        C62.s1 * dm**-0.145 * (fr**5 + C62.s2 * dm**1.5 / sin_a * fa**4) ** (1 / 3)
+    )

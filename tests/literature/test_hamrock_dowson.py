@@ -58,8 +58,10 @@ def test_stachowiak_answers_give_the_speed_exponent():
     assert 0.2805 / 0.0595 <= ratio <= 0.2815 / 0.0585
     v1, load = _ball_on_incline(0.01)
     v2, _ = _ball_on_incline(1.0)
-    h = [ehl.hamrock_dowson_film(load, v, 15e-3, 15e-3, 2.3e11, 0.05, 2.2e-8, "minimum")
-         for v in (v1, v2)]
+    h = [
+        ehl.hamrock_dowson_film(load, v, 15e-3, 15e-3, 2.3e11, 0.05, 2.2e-8, "minimum")
+        for v in (v1, v2)
+    ]
     assert float(h[1] / h[0]) == pytest.approx(ratio, rel=1e-12)
 
 

@@ -24,26 +24,27 @@ from bearinglab.diagnosis import NO_FAULT, analyze_file
 from bearinglab.diagnosis.benchmark import EXPECTED, _bearing, read_labels
 
 REAL = Path(__file__).resolve().parents[3] / "shared" / "data" / "real"
-pytestmark = pytest.mark.skipif(not (REAL / "labels.csv").is_file(),
-                                reason="shared/data/real is absent")
+pytestmark = pytest.mark.skipif(
+    not (REAL / "labels.csv").is_file(), reason="shared/data/real is absent"
+)
 
 #: Y records (with some method) the default method does not diagnose: file -> reason.
 NOT_REPRODUCED = {
     "cwru/12k_DE/222.mat": "ball 0.021 in, M2/M3 Y2: with cpw the largest line of the "
-                           "SES above 5 Hz is 2 BSF -1.4 % (139.2 Hz, z 22.7), then "
-                           "4 BSF (279.8 Hz, z 5.8); BSF z 2.6, 2 BSF + FTF z 2.3. Each "
-                           "line's empirical p-value is floored near 1/(reference "
-                           "positions) ~ 10^-2.6, so two lines make no series: ball "
-                           "10^-0.9 (cpw), 10^-0.3 (drs-sk) against 10^-2.6",
+    "SES above 5 Hz is 2 BSF -1.4 % (139.2 Hz, z 22.7), then "
+    "4 BSF (279.8 Hz, z 5.8); BSF z 2.6, 2 BSF + FTF z 2.3. Each "
+    "line's empirical p-value is floored near 1/(reference "
+    "positions) ~ 10^-2.6, so two lines make no series: ball "
+    "10^-0.9 (cpw), 10^-0.3 (drs-sk) against 10^-2.6",
     "cwru/12k_DE/3005.mat": "ball 0.028 in, M1 Y2: 2 BSF +0.3 % (z 16.7) and 6 BSF (z 8.9) "
-                            "are the two largest lines of the cpw SES, 2 and 3 FTF z ~7: "
-                            "ball 10^-2.71 (cpw), 10^-2.73 (drs-sk), 10^-2.32 (raw) "
-                            "against 10^-2.60, but it rests on one line: without 2 BSF "
-                            "10^-1.3, short of the 10^-2 support gate",
+    "are the two largest lines of the cpw SES, 2 and 3 FTF z ~7: "
+    "ball 10^-2.71 (cpw), 10^-2.73 (drs-sk), 10^-2.32 (raw) "
+    "against 10^-2.60, but it rests on one line: without 2 BSF "
+    "10^-1.3, short of the 10^-2 support gate",
     "cwru/12k_DE/197.mat": "outer 0.014 in at 6 o'clock, Y2 with M3 only: the cpw SES is "
-                           "flat (largest line z 3.9), outer race 10^-0.0 with cpw and "
-                           "drs-sk, 10^-0.3 with raw; our fast-kurtogram band does not "
-                           "find what Smith & Randall's Method 3 did",
+    "flat (largest line z 3.9), outer race 10^-0.0 with cpw and "
+    "drs-sk, 10^-0.3 with raw; our fast-kurtogram band does not "
+    "find what Smith & Randall's Method 3 did",
 }
 
 
@@ -58,14 +59,18 @@ def _case(row):
     marks = []
     if row["file"] in NOT_REPRODUCED:
         marks.append(pytest.mark.xfail(strict=True, reason=NOT_REPRODUCED[row["file"]]))
-    return pytest.param(row, id=f"{row['file']} [{row['fault']} {category or '-'}]",
-                        marks=marks)
+    return pytest.param(row, id=f"{row['file']} [{row['fault']} {category or '-'}]", marks=marks)
 
 
 def _verdict(row) -> str:
     fs = float(row["sample_rate_hz"])
-    d = analyze_file(REAL / row["file"], _bearing(row), channel=row["channel"],
-                     sample_rate=fs, shaft_speed=float(row["speed_rpm"]) * math.pi / 30)
+    d = analyze_file(
+        REAL / row["file"],
+        _bearing(row),
+        channel=row["channel"],
+        sample_rate=fs,
+        shaft_speed=float(row["speed_rpm"]) * math.pi / 30,
+    )
     return d.verdict
 
 
@@ -73,14 +78,16 @@ def _clear(row) -> bool:
     return "Y" in (row.get("smith_randall_2015") or "")
 
 
-@pytest.mark.parametrize("row", [_case(r) for r in _rows()
-                                 if _clear(r) or r["dataset"] == "MFPT"
-                                 or r["fault"] == "normal"])
+@pytest.mark.parametrize(
+    "row",
+    [_case(r) for r in _rows() if _clear(r) or r["dataset"] == "MFPT" or r["fault"] == "normal"],
+)
 def test_clear_records_healthy_and_mfpt_are_diagnosed(row):
     assert _verdict(row) == EXPECTED[row["fault"]]
 
 
-@pytest.mark.parametrize("row", [_case(r) for r in _rows()
-                                 if r.get("smith_randall_2015") and not _clear(r)])
+@pytest.mark.parametrize(
+    "row", [_case(r) for r in _rows() if r.get("smith_randall_2015") and not _clear(r)]
+)
 def test_partial_or_undiagnosable_records_get_no_wrong_fault(row):
     assert _verdict(row) in (EXPECTED[row["fault"]], NO_FAULT)

@@ -30,23 +30,27 @@ def test_seed000_is_in_the_registry():
     ids = {c.id for c in all_cases()}
     assert {c.id for c in seed000.CASES} <= ids
     known = [c for c in seed000.CASES if c.known_failure]
-    assert len(known) == 5      # 11.0, 5.07, 16.2 (from the computed 10.49), 3.9, 7.6
+    assert len(known) == 5  # 11.0, 5.07, 16.2 (from the computed 10.49), 3.9, 7.6
 
 
 def test_tolerance_is_printed_half_unit_plus_input_rounding():
     # 106 m=2, text 7.31: eq. (1.9) moves by ~0.008 kHz over f_1 +-0.005 and f*_2 +-0.005
     value, allowance = seed000.tolerance(
-        lambda p: seed000.modes_106(p).mode(2).approximate[0] / seed000.KHZ, seed000.P106,
-        0.005)
+        lambda p: seed000.modes_106(p).mode(2).approximate[0] / seed000.KHZ, seed000.P106, 0.005
+    )
     case = _case("m=2 approx, text 7.31")
     assert case.rel_tol * abs(case.published) == pytest.approx(allowance, rel=1e-12)
     assert 0.005 < allowance < 0.05
     assert case.compute() == pytest.approx(value, rel=1e-12)
 
 
-@pytest.mark.parametrize("m, lam, first, second", [
-    (5, 1, "m=5 epsilon_1", "m=5 epsilon_2"),
-    (4, 2, "m=4 antinodes epsilon_1", "m=4 antinodes epsilon_2")])
+@pytest.mark.parametrize(
+    "m, lam, first, second",
+    [
+        (5, 1, "m=5 epsilon_1", "m=5 epsilon_2"),
+        (4, 2, "m=4 antinodes epsilon_1", "m=4 antinodes epsilon_2"),
+    ],
+)
 def test_epsilon_pairs_imply_kappa(m, lam, first, second):
     # Vieta on (3.5) / (3.10): e1 e2 = -(1 + m^-2) / (lam kappa), whatever f_1 and f*_m are;
     # the printed pair (each root +- half a unit of its last printed place) must allow a

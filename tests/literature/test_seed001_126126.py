@@ -17,7 +17,7 @@ from bearinglab.designation import parse
 from bearinglab.errors import CatalogError
 from bearinglab.validation import seed001 as s1
 
-pytestmark = pytest.mark.slow      # a few hundred quasi-static solves (cached per session)
+pytestmark = pytest.mark.slow  # a few hundred quasi-static solves (cached per session)
 
 E = s1.AXIAL_LOAD_FACTOR
 LOADED = (150.0, 350.0, 700.0)
@@ -34,9 +34,12 @@ def test_designation_126126():
     assert d.dimension_series == "10"
 
 
-@pytest.mark.xfail(strict=True, raises=CatalogError,
-                   reason="the ISO 15 table shipped for dimension series 10 stops at d = 100 mm; "
-                          "seed001 writes 130 x 200 x 33 mm itself")
+@pytest.mark.xfail(
+    strict=True,
+    raises=CatalogError,
+    reason="the ISO 15 table shipped for dimension series 10 stops at d = 100 mm; "
+    "seed001 writes 130 x 200 x 33 mm itself",
+)
 def test_catalogue_has_130_x_200_x_33():
     b = boundary_dimensions("126126")
     assert (b.outside_diameter, b.width) == pytest.approx((0.200, 0.033))
@@ -48,7 +51,7 @@ def test_light_axial_load_gives_26_deg_and_e():
     r = s1.solve_point(0.0, 1.0, 0.0)
     angles = np.abs(np.degrees(r.contact_angle[r.load > 0]))
     assert angles == pytest.approx(26.0, abs=0.05)
-    assert s1.BEARING.diametral_clearance == pytest.approx(150e-6)     # g, line 246
+    assert s1.BEARING.diametral_clearance == pytest.approx(150e-6)  # g, line 246
 
 
 # ------------------------------------------------------------------ fig. 7 and 8: S_r
@@ -70,12 +73,24 @@ def test_linear_before_the_inflection(fa, speed):
     assert s1.linearity_error(fa, speed) < 0.10
 
 
-@pytest.mark.parametrize("speed", [
-    pytest.param(4500.0, marks=pytest.mark.xfail(strict=True, reason=(
-        "at 4500 rpm, F_a = 700 N the loaded balls leave their three-point seat in the outer "
-        "arch (F_c = 102 N is too small) and roll up the outer groove: S_r before the knee is "
-        "3-4 times the static value (11 um more at 0.65 of the knee load)"))),
-    8000.0])
+@pytest.mark.parametrize(
+    "speed",
+    [
+        pytest.param(
+            4500.0,
+            marks=pytest.mark.xfail(
+                strict=True,
+                reason=(
+                    "at 4500 rpm, F_a = 700 N the loaded balls leave their three-point seat in the "
+                    "outer arch (F_c = 102 N is too small) and roll up the outer groove: S_r "
+                    "before the knee is 3-4 times the static value (11 um more at 0.65 of the "
+                    "knee load)"
+                ),
+            ),
+        ),
+        8000.0,
+    ],
+)
 def test_speed_insensitive_before_the_inflection(speed):
     # line 256: before the inflection centrifugal forces have no substantial influence. We
     # allow 3 um, under a third of the ~10 um the paper calls a clear effect (line 258)
@@ -83,12 +98,16 @@ def test_speed_insensitive_before_the_inflection(speed):
     assert worst < 3.0
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "our knee at 8000 rpm lies at F_a/F_r = 0.74-0.82, above the printed 0.64-0.71: with "
-    "the balls seated in the outer arch by F_c the inner contact angle grows from 26 to "
-    "34 deg, and the knee follows the operating angle, not the nominal e (Jones's cage "
-    "speed moves it by < 0.003; ring expansion and an ISO VG 68 film, outside the paper's "
-    "model, bring it to 0.66-0.73)"))
+@pytest.mark.xfail(
+    strict=True,
+    reason=(
+        "our knee at 8000 rpm lies at F_a/F_r = 0.74-0.82, above the printed 0.64-0.71: with "
+        "the balls seated in the outer arch by F_c the inner contact angle grows from 26 to "
+        "34 deg, and the knee follows the operating angle, not the nominal e (Jones's cage "
+        "speed moves it by < 0.003; ring expansion and an ISO VG 68 film, outside the paper's "
+        "model, bring it to 0.66-0.73)"
+    ),
+)
 @pytest.mark.parametrize("fa", LOADED)
 def test_inflection_at_printed_ratio_8000rpm(fa):
     # lines 262-270, fig. 8: F_a/F_r = 0.64...0.71 at 8000 rpm. Our knee: the onset (steepest
@@ -102,11 +121,15 @@ def test_slope_after_inflection_falls_with_axial_load():
     assert slopes[0] > slopes[1] > slopes[2]
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "on the paper's model (no film, rigid rings; Jones's cage speed) our S_r is LARGER at "
-    "8000 rpm (by 1.8, 1.6 and 9.6 um for F_a = 0, 150, 350 N): F_c presses the balls "
-    "deeper into the outer groove, so the inner ring travels further; the sign turns with "
-    "the inner ring's expansion or an EHL film (test below), neither in the paper's numbers"))
+@pytest.mark.xfail(
+    strict=True,
+    reason=(
+        "on the paper's model (no film, rigid rings; Jones's cage speed) our S_r is LARGER at "
+        "8000 rpm (by 1.8, 1.6 and 9.6 um for F_a = 0, 150, 350 N): F_c presses the balls "
+        "deeper into the outer groove, so the inner ring travels further; the sign turns with "
+        "the inner ring's expansion or an EHL film (test below), neither in the paper's numbers"
+    ),
+)
 @pytest.mark.parametrize("fa", (0.0, 150.0, 350.0))
 def test_speed_reduces_displacement_at_1000n(fa):
     # line 258: at F_r = 1000 N, S_r(0 rpm) - S_r(8000 rpm) is about 10 um (fig. 7 a-v,
@@ -114,11 +137,14 @@ def test_speed_reduces_displacement_at_1000n(fa):
     assert 3.0 <= s1.speed_difference(1000.0, fa) <= 30.0
 
 
-@pytest.mark.parametrize("options, expected", [
-    ({"ring_expansion": True}, (7.2, 7.1, -0.9)),
-    ({"lubricant": "iso-vg68"}, (8.4, 8.4, -0.3)),
-    ({"lubricant": "iso-vg68", "ring_expansion": True}, (17.3, 17.3, 8.4)),
-])
+@pytest.mark.parametrize(
+    "options, expected",
+    [
+        ({"ring_expansion": True}, (7.2, 7.1, -0.9)),
+        ({"lubricant": "iso-vg68"}, (8.4, 8.4, -0.3)),
+        ({"lubricant": "iso-vg68", "ring_expansion": True}, (17.3, 17.3, 8.4)),
+    ],
+)
 def test_film_and_ring_expansion_turn_the_sign_of_the_speed_effect(options, expected):
     # the numbers docs/capabilities/load_distribution_seed001.md and the known-failure
     # reasons quote (S_r(0) - S_r(8000 rpm) at F_r = 1000 N, F_a = 0, 150, 350 N), to 0.1 um
@@ -143,10 +169,14 @@ def test_radial_stiffness_falls_then_rises(fa):
     assert s1.RADIAL_LOADS_N[0] < d.minimum_load < s1.RADIAL_LOADS_N[-1]
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "our C_r falls where F_a/F_r > e (it starts falling at F_a/F_r = 1.4-1.5 or at once, "
-    "and reaches its minimum near the knee); at most a third of the fall lies at "
-    "F_a/F_r < e"))
+@pytest.mark.xfail(
+    strict=True,
+    reason=(
+        "our C_r falls where F_a/F_r > e (it starts falling at F_a/F_r = 1.4-1.5 or at once, "
+        "and reaches its minimum near the knee); at most a third of the fall lies at "
+        "F_a/F_r < e"
+    ),
+)
 def test_radial_stiffness_falls_where_ratio_below_e():
     # lines 282-284: "снижение происходит на участке, где выполняется условие F_a/F_r < e":
     # at least half of the fall of C_r happens at F_r > F_a/e, for every F_a
@@ -154,9 +184,13 @@ def test_radial_stiffness_falls_where_ratio_below_e():
         assert s1.stiffness_fall(fa).fraction_below_e >= 0.5
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "the steepest fall of our C_r does not lessen with F_a (0.52, 0.78, 0.71 N/um per N for "
-    "150, 350, 700 N at 4500 rpm)"))
+@pytest.mark.xfail(
+    strict=True,
+    reason=(
+        "the steepest fall of our C_r does not lessen with F_a (0.52, 0.78, 0.71 N/um per N for "
+        "150, 350, 700 N at 4500 rpm)"
+    ),
+)
 def test_radial_stiffness_falls_less_at_larger_axial_load():
     # line 284: "чем больше осевая нагрузка, тем менее интенсивно происходит снижение"
     rates = [s1.stiffness_fall(fa).steepest_fall for fa in LOADED]
@@ -190,13 +224,30 @@ def test_radial_stiffness_curves_draw_together_with_axial_load():
     assert spread[-1] < 0.6 * spread[0]
 
 
-@pytest.mark.parametrize("fr", [
-    pytest.param(200.0, marks=pytest.mark.xfail(strict=True, reason=(
-        "at F_r = 200 N our C_r falls from 76 to 54 N/um (F_a = 150 N), rises to 100 N/um "
-        "(450 N) and dips again"))),
-    pytest.param(500.0, marks=pytest.mark.xfail(strict=True, reason=(
-        "at F_r = 500 N our C_r rises from 99 to 139 N/um before it falls"))),
-    800.0, 1100.0])
+@pytest.mark.parametrize(
+    "fr",
+    [
+        pytest.param(
+            200.0,
+            marks=pytest.mark.xfail(
+                strict=True,
+                reason=(
+                    "at F_r = 200 N our C_r falls from 76 to 54 N/um (F_a = 150 N), rises to "
+                    "100 N/um (450 N) and dips again"
+                ),
+            ),
+        ),
+        pytest.param(
+            500.0,
+            marks=pytest.mark.xfail(
+                strict=True,
+                reason=("at F_r = 500 N our C_r rises from 99 to 139 N/um before it falls"),
+            ),
+        ),
+        800.0,
+        1100.0,
+    ],
+)
 def test_radial_stiffness_against_axial_load_falls_then_rises(fr):
     # line 288, fig. 10a: C_r first falls, levels off, then rises with F_a
     c = _fig10(fr)
@@ -215,9 +266,13 @@ def test_axial_stiffness_grows_with_axial_load(fr):
     assert ca[-1] > 1.5 * ca[0]
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "our C_a at F_r = 1100 N exceeds that at 200 N for most axial loads (at F_a = 0: 20 "
-    "against 6 N/um)"))
+@pytest.mark.xfail(
+    strict=True,
+    reason=(
+        "our C_a at F_r = 1100 N exceeds that at 200 N for most axial loads (at F_a = 0: 20 "
+        "against 6 N/um)"
+    ),
+)
 def test_axial_stiffness_lower_at_larger_radial_load():
     # line 290, fig. 10b: "при увеличении радиальной нагрузки осевая жёсткость снижается":
     # C_a(F_r = 200 N) > C_a(F_r = 1100 N) at >= 80 % of the axial loads
@@ -242,7 +297,6 @@ def test_cases_have_reasons():
 def test_every_point_of_the_worked_case_converges():
     # these once stalled Newton's method (balls crossing the cusp of the arches); the
     # solver's load continuation now reaches them
-    sweeps = [s1.radial_curve(fa, rpm) for fa in LOADED for rpm in s1.SPEEDS_RPM] + [
-        _fig10(500.0)]
+    sweeps = [s1.radial_curve(fa, rpm) for fa in LOADED for rpm in s1.SPEEDS_RPM] + [_fig10(500.0)]
     failures = [f[:3] for c in sweeps for f in c.failures]
     assert not failures, failures

@@ -33,22 +33,31 @@ CONDITION = OperatingCondition(radial_load=50.0, shaft_speed=rpm_to_rad_s(720.0)
 
 @functools.cache
 def _sound(amplitude):
-    surfaces = [RandomSurface.for_bearing(BEARING, race, amplitude, 1.0e-3, 0.5e-3, seed=s)
-                for race, s in (("inner", 1), ("outer", 2))]
-    return bearing_noise(BEARING, CONDITION, Imperfections(surfaces=surfaces), revolutions=4,
-                         points=4096, point=SEED003_POINT_A).sound
+    surfaces = [
+        RandomSurface.for_bearing(BEARING, race, amplitude, 1.0e-3, 0.5e-3, seed=s)
+        for race, s in (("inner", 1), ("outer", 2))
+    ]
+    return bearing_noise(
+        BEARING,
+        CONDITION,
+        Imperfections(surfaces=surfaces),
+        revolutions=4,
+        points=4096,
+        point=SEED003_POINT_A,
+    ).sound
 
 
 def test_pressure_peaks_sit_at_ball_pass_frequencies_and_harmonics():
     kin = defect_frequencies(BEARING, CONDITION.shaft_speed)
     bpfo, bpfi, shaft = kin.hz("bpfo"), kin.hz("bpfi"), kin.hz("shaft")
     sound = _sound(0.2e-6)
-    spectrum = sound.spectrum(segment_length=sound.pressure().size)   # one segment: 3 Hz
+    spectrum = sound.spectrum(segment_length=sound.pressure().size)  # one segment: 3 Hz
     step = spectrum.frequency[1] - spectrum.frequency[0]
     top = spectrum.frequency[-1]
-    candidates = np.array([k * bpfo for k in range(1, int(top / bpfo) + 2)]
-                          + [k * bpfi + m * shaft for k in range(1, int(top / bpfi) + 2)
-                             for m in (-1, 0, 1)])
+    candidates = np.array(
+        [k * bpfo for k in range(1, int(top / bpfo) + 2)]
+        + [k * bpfi + m * shaft for k in range(1, int(top / bpfi) + 2) for m in (-1, 0, 1)]
+    )
     lines = find_peaks(spectrum, count=8, min_frequency=2.0)
     assert len(lines) == 8
     for line in lines:

@@ -50,7 +50,7 @@ def test_spl_grows_with_waviness_amplitude_and_pressure_roughly_linearly():
 
 
 def test_spl_grows_with_speed():
-    levels = [_mean_spl(rpm=r) for r in (360.0, 720.0, 1440.0)]      # fig. 18
+    levels = [_mean_spl(rpm=r) for r in (360.0, 720.0, 1440.0)]  # fig. 18
     assert _rises(levels), levels
 
 
@@ -60,7 +60,7 @@ def test_spl_grows_with_load():
 
 
 def test_spl_grows_with_ball_size_error_band():
-    levels = [_mean_spl(band=b) for b in (1e-6, 2e-6, 3e-6)]          # fig. 20
+    levels = [_mean_spl(band=b) for b in (1e-6, 2e-6, 3e-6)]  # fig. 20
     assert _rises(levels), levels
 
 
@@ -70,10 +70,14 @@ def test_spl_changes_irregularly_with_waviness_number():
     assert not _rises(levels) and not _rises(levels[::-1]), levels
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "not reproduced: here the level climbs by about 12 dB from q = 5 to q = 8 (with Z = 7 "
-    "the radial excitation is strongest for q near Z +- 1 and Z), the paper's fig. 16 "
-    "shows no obvious change"))
+@pytest.mark.xfail(
+    strict=True,
+    reason=(
+        "not reproduced: here the level climbs by about 12 dB from q = 5 to q = 8 (with Z = 7 "
+        "the radial excitation is strongest for q near Z +- 1 and Z), the paper's fig. 16 "
+        "shows no obvious change"
+    ),
+)
 def test_spl_hardly_changes_with_waviness_number():
     levels = [_mean_spl(order=q) for q in range(5, 10)]
     assert max(levels) - min(levels) < 3.0, levels

@@ -25,9 +25,13 @@ def _ratio(**changes):
 @pytest.mark.slow
 def test_calibration_is_the_closest_approach_within_the_ranges():
     best = _ratio()
-    assert PAPER_RATIO_500N < best < 0.97        # above the paper's: the ranges fall short
-    inward = {"diametral_clearance": 15e-6, "cage_friction": 0.25, "oil_fraction": 0.03,
-              "spin_drag": False}
+    assert PAPER_RATIO_500N < best < 0.97  # above the paper's: the ranges fall short
+    inward = {
+        "diametral_clearance": 15e-6,
+        "cage_friction": 0.25,
+        "oil_fraction": 0.03,
+        "spin_drag": False,
+    }
     assert set(inward) == set(CALIBRATION)
     # each step is worth 3e-3 or more of spin ratio; runs scatter by about 1e-3
     for name, value in inward.items():

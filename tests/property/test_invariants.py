@@ -9,7 +9,7 @@ from hypothesis import strategies as st
 from bearinglab.contact import hertz
 from bearinglab.kinematics import frequency_orders
 
-ratios = st.floats(min_value=0.05, max_value=0.45)      # D_w / d_m
+ratios = st.floats(min_value=0.05, max_value=0.45)  # D_w / d_m
 angles = st.floats(min_value=0.0, max_value=math.radians(60))
 counts = st.integers(min_value=3, max_value=40)
 
@@ -43,10 +43,10 @@ def test_hertz_scaling_with_load(rx, ry, q, c):
     one = hertz.point_contact(q, rx, ry, e)
     more = hertz.point_contact(c * q, rx, ry, e)
     assert math.isclose(float(more.approach), c ** (2 / 3) * float(one.approach), rel_tol=1e-9)
-    assert math.isclose(float(more.semi_major), c ** (1 / 3) * float(one.semi_major),
-                        rel_tol=1e-9)
-    assert math.isclose(float(more.max_pressure), c ** (1 / 3) * float(one.max_pressure),
-                        rel_tol=1e-9)
+    assert math.isclose(float(more.semi_major), c ** (1 / 3) * float(one.semi_major), rel_tol=1e-9)
+    assert math.isclose(
+        float(more.max_pressure), c ** (1 / 3) * float(one.max_pressure), rel_tol=1e-9
+    )
     assert float(one.semi_major) >= float(one.semi_minor) > 0
 
 
@@ -65,7 +65,7 @@ def test_exact_ellipticity_solves_its_relation(log10_ratio):
     ratio = 10.0**log10_ratio
     k = float(hertz.ellipticity(ratio))
     assert k >= 1.0 and math.isfinite(k)
-    if k == 1.0:        # the circle, to double precision
+    if k == 1.0:  # the circle, to double precision
         assert ratio < 1.0 + 1e-14
     else:
         residual = math.expm1(float(hertz._log_ratio(math.log(k))) - math.log(ratio))

@@ -27,23 +27,29 @@ def bearing():
 
 def _false_alarms_white(bearing, seeds, methods):
     kin = defect_frequencies(bearing, SPEED)
-    return sum(analyze_signal(np.random.default_rng(s).standard_normal(int(FS)), FS, kin,
-                              methods=methods).verdict != NO_FAULT for s in seeds)
+    return sum(
+        analyze_signal(
+            np.random.default_rng(s).standard_normal(int(FS)), FS, kin, methods=methods
+        ).verdict
+        != NO_FAULT
+        for s in seeds
+    )
 
 
 def _false_alarms_healthy(bearing, seeds):
     condition = OperatingCondition(radial_load=500.0, shaft_speed=SPEED)
     bad = 0
     for s in seeds:
-        sim = simulate(bearing, condition, [], model="rigid", duration=0.5, sample_rate=FS,
-                       noise=1.0, seed=s)
+        sim = simulate(
+            bearing, condition, [], model="rigid", duration=0.5, sample_rate=FS, noise=1.0, seed=s
+        )
         bad += analyze_signal(sim.signal, None, sim.kinematic).verdict != NO_FAULT
     return bad
 
 
 @pytest.mark.parametrize("methods", ["cpw", "all"])
 def test_white_noise_is_no_fault(bearing, methods):
-    assert _false_alarms_white(bearing, range(20), methods) <= 1   # >= 95 %
+    assert _false_alarms_white(bearing, range(20), methods) <= 1  # >= 95 %
 
 
 def test_healthy_simulation_is_no_fault(bearing):

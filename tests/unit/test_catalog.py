@@ -51,13 +51,21 @@ def test_every_table_names_its_source(name):
     assert lines and all(len(line) > 20 for line in lines)
 
 
-@pytest.mark.parametrize("name,key", [("iso15_radial.csv", "dimension_series"),
-                                      ("iso355_tapered.csv", "series"),
-                                      ("iso104_thrust.csv", "series")])
+@pytest.mark.parametrize(
+    "name,key",
+    [
+        ("iso15_radial.csv", "dimension_series"),
+        ("iso355_tapered.csv", "series"),
+        ("iso104_thrust.csv", "series"),
+    ],
+)
 def test_dimension_tables_are_sane(name, key):
     t = read_table(name)
-    width = {"iso15_radial.csv": "width_mm", "iso355_tapered.csv": "total_width_mm",
-             "iso104_thrust.csv": "height_mm"}[name]
+    width = {
+        "iso15_radial.csv": "width_mm",
+        "iso355_tapered.csv": "total_width_mm",
+        "iso104_thrust.csv": "height_mm",
+    }[name]
     assert not t.isna().drop(columns=[c for c in t.columns if c == "chamfer_min_mm"]).any().any()
     assert (t["outside_diameter_mm"] > t["bore_mm"]).all()
     assert (t[width] > 0).all()
@@ -90,22 +98,57 @@ def test_dimension_series_keep_their_leading_zero():
 #: Families whose shipped rows do not cover every standard bore 10-100 mm, with the
 #: bores that are there.  Everything not listed here must resolve at all 21 bores.
 GAPS = {
-    "160": STANDARD_BORES[1:],                      # 16000 does not exist; 16001 = 12 mm
+    "160": STANDARD_BORES[1:],  # 16000 does not exist; 16001 = 12 mm
     "618": [b for b in STANDARD_BORES if b != 95],  # 61819 not in the KOYO tables
-    "68": [b for b in STANDARD_BORES if b != 95], "718": [b for b in STANDARD_BORES if b != 95],
-    "64": STANDARD_BORES[3:], "N4": STANDARD_BORES[3:], "NU4": STANDARD_BORES[3:],
-    "NJ4": STANDARD_BORES[3:], "NUP4": STANDARD_BORES[3:], "NF4": STANDARD_BORES[3:],
-    "302": STANDARD_BORES[2:], "303": STANDARD_BORES[2:], "213": STANDARD_BORES,
-    "320": STANDARD_BORES[4:], "322": STANDARD_BORES[3:], "323": STANDARD_BORES[3:],
-    "511": [b for b in STANDARD_BORES if b != 95], "512": [b for b in STANDARD_BORES if b != 95],
-    "513": [b for b in STANDARD_BORES[5:] if b != 95], "514": [b for b in STANDARD_BORES[5:]
-                                                             if b != 95],
-    "230": [100], "232": [90, 100], "NN30": [100],
+    "68": [b for b in STANDARD_BORES if b != 95],
+    "718": [b for b in STANDARD_BORES if b != 95],
+    "64": STANDARD_BORES[3:],
+    "N4": STANDARD_BORES[3:],
+    "NU4": STANDARD_BORES[3:],
+    "NJ4": STANDARD_BORES[3:],
+    "NUP4": STANDARD_BORES[3:],
+    "NF4": STANDARD_BORES[3:],
+    "302": STANDARD_BORES[2:],
+    "303": STANDARD_BORES[2:],
+    "213": STANDARD_BORES,
+    "320": STANDARD_BORES[4:],
+    "322": STANDARD_BORES[3:],
+    "323": STANDARD_BORES[3:],
+    "511": [b for b in STANDARD_BORES if b != 95],
+    "512": [b for b in STANDARD_BORES if b != 95],
+    "513": [b for b in STANDARD_BORES[5:] if b != 95],
+    "514": [b for b in STANDARD_BORES[5:] if b != 95],
+    "230": [100],
+    "232": [90, 100],
+    "NN30": [100],
     # no shipped rows at 10-100 mm: double-row 33, needle, spherical 231/238-249, tapered
     # 313/329-332, thrust roller
-    **{k: [] for k in ("33", "NA48", "NA49", "NA69", "231", "238", "239", "240", "241", "248",
-                       "249", "313", "329", "330", "331", "332", "811", "812", "292", "293",
-                       "294")},
+    **{
+        k: []
+        for k in (
+            "33",
+            "NA48",
+            "NA49",
+            "NA69",
+            "231",
+            "238",
+            "239",
+            "240",
+            "241",
+            "248",
+            "249",
+            "313",
+            "329",
+            "330",
+            "331",
+            "332",
+            "811",
+            "812",
+            "292",
+            "293",
+            "294",
+        )
+    },
 }
 GAPS["32"] = [90, 100]  # double-row angular contact 32xx shares dimension series 32
 
@@ -212,11 +255,19 @@ def test_catalog_table_kinds():
 
 
 def test_table_1_and_2_lookups():
-    assert [diameter_series_group(s) for s in ("18", "19", "00", "10", "02", "22", "03", "04")] \
-        == ["0", "0", "0", "0", "2", "2", "3", "4"]
-    assert ball_diameter_factor(0.025, "02") == 0.30      # (0.29 + 0.31) / 2, d <= 35 mm
-    assert ball_diameter_factor(0.040, "02") == 0.315     # (0.31 + 0.32) / 2, 35 < d <= 120
-    assert ball_diameter_factor(0.130, "10") == 0.27      # (0.24 + 0.30) / 2, d > 120 mm
+    assert [diameter_series_group(s) for s in ("18", "19", "00", "10", "02", "22", "03", "04")] == [
+        "0",
+        "0",
+        "0",
+        "0",
+        "2",
+        "2",
+        "3",
+        "4",
+    ]
+    assert ball_diameter_factor(0.025, "02") == 0.30  # (0.29 + 0.31) / 2, d <= 35 mm
+    assert ball_diameter_factor(0.040, "02") == 0.315  # (0.31 + 0.32) / 2, 35 < d <= 120
+    assert ball_diameter_factor(0.130, "10") == 0.27  # (0.24 + 0.30) / 2, d > 120 mm
     with pytest.raises(InputError):
         diameter_series_group("05")
 
@@ -269,7 +320,8 @@ def test_published_bearing_keeps_its_sources():
     b, des = bearing_from_designation("6205-2RS")
     assert des.series == "62" and b.name == "6205-2RS"
     assert (b.ball_count, b.ball_diameter, b.pitch_diameter) == pytest.approx(
-        (9, 0.3126 * 0.0254, 1.537 * 0.0254))
+        (9, 0.3126 * 0.0254, 1.537 * 0.0254)
+    )
     assert b.sources["ball_count"].kind == "catalog"
     assert "Case Western" in b.sources["ball_diameter"].reference
     assert b.sources["inner_groove_factor"] == Source("estimated", ESTIMATE_METHOD)
@@ -291,7 +343,7 @@ def test_catalogue_name_without_designation():
 
 def test_partial_row_is_completed_by_the_estimate():
     pytest.importorskip("bearinglab.designation")
-    b, _ = bearing_from_designation("310", system="gost")   # seed 000: only Z = 8
+    b, _ = bearing_from_designation("310", system="gost")  # seed 000: only Z = 8
     assert b.ball_count == 8 and b.sources["ball_count"].kind == "catalog"
     assert b.sources["ball_diameter"].kind == "estimated"
     assert b.outside_diameter == pytest.approx(0.110)
@@ -300,9 +352,10 @@ def test_partial_row_is_completed_by_the_estimate():
 
 def test_overrides_win_and_are_marked_user():
     pytest.importorskip("bearinglab.designation")
-    b, _ = bearing_from_designation("6205", overrides={"ball_count": 8,
-                                                       "diametral_clearance": 20e-6,
-                                                       "outside_diameter": 0.0521})
+    b, _ = bearing_from_designation(
+        "6205",
+        overrides={"ball_count": 8, "diametral_clearance": 20e-6, "outside_diameter": 0.0521},
+    )
     assert b.ball_count == 8 and b.diametral_clearance == pytest.approx(20e-6)
     assert b.outside_diameter == pytest.approx(0.0521)
     for key in ("ball_count", "diametral_clearance", "outside_diameter"):
@@ -385,12 +438,14 @@ def test_gost_angular_contact_without_angle_variant_gets_no_iso_default(text):
     with pytest.raises(GeometryNeeded) as err:
         bearing_from_designation(text, system="gost" if text != "6205 C" else None)
     assert err.value.needed == ("contact_angle",) and "design variant" in str(err.value)
-    b, des = bearing_from_designation(text, system="gost" if text != "6205 C" else None,
-                                      overrides={"contact_angle": math.radians(26)})
+    b, des = bearing_from_designation(
+        text,
+        system="gost" if text != "6205 C" else None,
+        overrides={"contact_angle": math.radians(26)},
+    )
     assert des.system == "gost" and b.contact_angle == pytest.approx(math.radians(26))
     # the angle a GOST variant writes is used; ISO 72 keeps its family default (documented)
-    assert bearing_from_designation("6-36209")[0].contact_angle == pytest.approx(
-        math.radians(12))
+    assert bearing_from_designation("6-36209")[0].contact_angle == pytest.approx(math.radians(12))
     assert bearing_from_designation("7206")[0].contact_angle == pytest.approx(math.radians(40))
 
 
@@ -401,8 +456,9 @@ def test_thrust_ball_bearing_from_explicit_geometry():
         bearing_from_designation("51105", overrides={"ball_count": 15})
     assert err.value.needed == ("ball_diameter", "pitch_diameter")
     assert "internal-geometry model" in str(err.value)
-    b, des = bearing_from_designation("51105", overrides={
-        "ball_count": 15, "ball_diameter": 6e-3, "pitch_diameter": 33.5e-3})
+    b, des = bearing_from_designation(
+        "51105", overrides={"ball_count": 15, "ball_diameter": 6e-3, "pitch_diameter": 33.5e-3}
+    )
     assert b.bearing_type == des.bearing_type == "thrust_ball"
     assert b.contact_angle == pytest.approx(math.pi / 2)
     assert b.sources["contact_angle"].kind == "default"
@@ -410,8 +466,9 @@ def test_thrust_ball_bearing_from_explicit_geometry():
     assert b.sources["bore"].reference.startswith("ISO 104")
     assert b.sources["inner_groove_factor"].kind == "default"
     with pytest.raises(CatalogError, match="double-direction"):
-        bearing_from_designation("52205", overrides={
-            "ball_count": 15, "ball_diameter": 6e-3, "pitch_diameter": 33.5e-3})
+        bearing_from_designation(
+            "52205", overrides={"ball_count": 15, "ball_diameter": 6e-3, "pitch_diameter": 33.5e-3}
+        )
 
 
 @pytest.mark.parametrize("text", ["NU2210", "22310", "30205", "51205", "2205", "1205"])

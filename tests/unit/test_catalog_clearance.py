@@ -43,7 +43,7 @@ def test_covers_2_5_to_at_least_120_mm():
     for group in ("C2", "CN", "C3"):
         rows = t[t["group"] == group]
         assert rows["bore_over_mm"].min() == 2.5 and rows["bore_incl_mm"].max() >= 120
-    for group in ("C4", "C5"):   # ISO gives C4 and C5 only from 6 mm on
+    for group in ("C4", "C5"):  # ISO gives C4 and C5 only from 6 mm on
         rows = t[t["group"] == group]
         assert rows["bore_over_mm"].min() == 6 and rows["bore_incl_mm"].max() >= 120
 
@@ -78,18 +78,21 @@ def test_clearance_grows_with_the_bore():
 # ------------------------------------------------------------------ radial_clearance
 
 
-@pytest.mark.parametrize("bore_mm,group,expected_um", [
-    (25, "CN", (5, 20)),
-    (25, "C3", (13, 28)),
-    (24, "CN", (5, 20)),        # 24 is the upper end of "over 18 incl 24"
-    (24.001, "C4", (23, 41)),   # just over 24: the next band
-    (10, "C2", (0, 7)),
-    (17, "C5", (25, 45)),
-    (40, "C3", (15, 33)),
-    (100, "CN", (12, 36)),
-    (120, "C5", (90, 140)),
-    (3, "C3", (8, 23)),
-])
+@pytest.mark.parametrize(
+    "bore_mm,group,expected_um",
+    [
+        (25, "CN", (5, 20)),
+        (25, "C3", (13, 28)),
+        (24, "CN", (5, 20)),  # 24 is the upper end of "over 18 incl 24"
+        (24.001, "C4", (23, 41)),  # just over 24: the next band
+        (10, "C2", (0, 7)),
+        (17, "C5", (25, 45)),
+        (40, "C3", (15, 33)),
+        (100, "CN", (12, 36)),
+        (120, "C5", (90, 140)),
+        (3, "C3", (8, 23)),
+    ],
+)
 def test_lookup_of_rows(bore_mm, group, expected_um):
     low, high = radial_clearance(bore_mm * MM, group)
     assert (low, high) == pytest.approx((expected_um[0] * UM, expected_um[1] * UM), abs=1e-12)
@@ -108,13 +111,16 @@ def test_unknown_group_is_an_input_error(group):
         radial_clearance(0.025, group)
 
 
-@pytest.mark.parametrize("bore,group,match", [
-    (0.0025, "CN", "over 2.5 incl 140"),   # 2.5 mm itself is not "over 2.5"
-    (0.001, "C2", "over 2.5 incl 140"),
-    (0.150, "CN", "over 2.5 incl 140"),
-    (0.004, "C4", "over 6 incl 140"),      # ISO gives no C4 below 6 mm
-    (25.0, "CN", "in metres"),             # millimetres passed by mistake
-])
+@pytest.mark.parametrize(
+    "bore,group,match",
+    [
+        (0.0025, "CN", "over 2.5 incl 140"),  # 2.5 mm itself is not "over 2.5"
+        (0.001, "C2", "over 2.5 incl 140"),
+        (0.150, "CN", "over 2.5 incl 140"),
+        (0.004, "C4", "over 6 incl 140"),  # ISO gives no C4 below 6 mm
+        (25.0, "CN", "in metres"),  # millimetres passed by mistake
+    ],
+)
 def test_bore_outside_the_table_is_a_catalog_error(bore, group, match):
     with pytest.raises(CatalogError, match=match):
         radial_clearance(bore, group)
@@ -146,10 +152,11 @@ def test_6205_gets_the_cn_mean():
 def test_6205_c3_gets_the_c3_mean():
     pytest.importorskip("bearinglab.designation")
     b, des = bearing_from_designation("6205 C3")
-    assert ("C3" in [code for code, _ in des.suffixes])
+    assert "C3" in [code for code, _ in des.suffixes]
     assert b.diametral_clearance == pytest.approx(_mean(13, 28))
     assert b.sources["diametral_clearance"].reference.startswith(
-        "ISO 5753-1 group C3: mean of 13-28 um (")
+        "ISO 5753-1 group C3: mean of 13-28 um ("
+    )
     assert "suffix C3" in b.sources["diametral_clearance"].reference
 
 
@@ -161,16 +168,19 @@ def test_6205_2rs_c4_gets_the_c4_mean():
     assert "group C4: mean of 23-41 um" in b.sources["diametral_clearance"].reference
 
 
-@pytest.mark.parametrize("text,expected_um", [
-    ("6205-2RS/C3", (13, 28)),
-    ("6205 P63", (13, 28)),    # SKF: tolerance class 6 + C3
-    ("6205 C2", (1, 11)),
-    ("6310 C5", (45, 73)),     # 50 mm: the upper end of "over 40 incl 50"
-    ("6311 C5", (55, 90)),     # 55 mm: "over 50 incl 65"
-    ("608", (2, 13)),
-    ("6000", (2, 13)),         # 10 mm: the upper end of "over 6 incl 10"
-    ("6200 C2", (0, 7)),
-])
+@pytest.mark.parametrize(
+    "text,expected_um",
+    [
+        ("6205-2RS/C3", (13, 28)),
+        ("6205 P63", (13, 28)),  # SKF: tolerance class 6 + C3
+        ("6205 C2", (1, 11)),
+        ("6310 C5", (45, 73)),  # 50 mm: the upper end of "over 40 incl 50"
+        ("6311 C5", (55, 90)),  # 55 mm: "over 50 incl 65"
+        ("608", (2, 13)),
+        ("6000", (2, 13)),  # 10 mm: the upper end of "over 6 incl 10"
+        ("6200 C2", (0, 7)),
+    ],
+)
 def test_group_and_bore_pick_the_row(text, expected_um):
     pytest.importorskip("bearinglab.designation")
     b, _ = bearing_from_designation(text)
@@ -179,7 +189,7 @@ def test_group_and_bore_pick_the_row(text, expected_um):
 
 def test_published_row_without_clearance_gets_the_table_value():
     pytest.importorskip("bearinglab.designation")
-    b, _ = bearing_from_designation("6205-2RS")          # the CWRU drive-end row
+    b, _ = bearing_from_designation("6205-2RS")  # the CWRU drive-end row
     assert b.sources["ball_count"].kind == "catalog"
     assert b.diametral_clearance == pytest.approx(_mean(5, 20))
     assert b.sources["diametral_clearance"].kind == "estimated"
@@ -187,7 +197,7 @@ def test_published_row_without_clearance_gets_the_table_value():
 
 def test_published_clearance_wins():
     pytest.importorskip("bearinglab.designation")
-    b, _ = bearing_from_designation("209 (Harris)")      # P_d = 15 um published
+    b, _ = bearing_from_designation("209 (Harris)")  # P_d = 15 um published
     assert b.diametral_clearance == pytest.approx(15 * UM)
     assert b.sources["diametral_clearance"].kind == "catalog"
 
@@ -224,7 +234,7 @@ def test_gost_designations_get_cn_with_a_note():
     assert des.system == "gost"
     assert plain.diametral_clearance == pytest.approx(_mean(5, 20))
     assert "CN (normal) assumed" in plain.sources["diametral_clearance"].reference
-    grouped, des = bearing_from_designation("А125-205")   # clearance group 2 in the prefix
+    grouped, des = bearing_from_designation("А125-205")  # clearance group 2 in the prefix
     assert des.system == "gost"
     assert grouped.diametral_clearance == pytest.approx(_mean(5, 20))
     ref = grouped.sources["diametral_clearance"].reference
@@ -232,10 +242,13 @@ def test_gost_designations_get_cn_with_a_note():
     assert "not verified" in ref
 
 
-@pytest.mark.parametrize("text,match", [
-    ("6205 C1", "C1"),      # no C1 group for deep-groove ball bearings
-    ("623 C4", "over 6"),   # ISO gives no C4 below 6 mm
-])
+@pytest.mark.parametrize(
+    "text,match",
+    [
+        ("6205 C1", "C1"),  # no C1 group for deep-groove ball bearings
+        ("623 C4", "over 6"),  # ISO gives no C4 below 6 mm
+    ],
+)
 def test_explicit_group_the_table_cannot_give_is_an_error(text, match):
     pytest.importorskip("bearinglab.designation")
     with pytest.raises(CatalogError, match=match) as info:
@@ -252,7 +265,7 @@ def test_the_nominal_bore_of_the_designation_picks_the_row():
 
 
 def test_implied_cn_outside_the_table_keeps_the_default():
-    class Tiny:   # the Designation fields the clearance look-up reads
+    class Tiny:  # the Designation fields the clearance look-up reads
         system, bore, suffixes, prefixes = "iso", 0.002, (), ()
 
     value, source = _table_clearance(Tiny(), "tiny")

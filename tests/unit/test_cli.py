@@ -11,13 +11,30 @@ from conftest import run_json
 
 from bearinglab.cli import main
 
-INFO_KEYS = {"designation", "system", "bearing_type", "bore_mm", "outside_diameter_mm",
-             "width_mm", "ball_count", "ball_diameter_mm", "pitch_diameter_mm",
-             "contact_angle_deg", "geometry_source"}
-FREQ_KEYS = {f"{n}_{u}" for n in ("ftf", "bpfo", "bpfi", "bsf", "ball_defect")
-             for u in ("hz", "order")}
-CONTACT_KEYS = {"semi_major_mm", "semi_minor_mm", "max_pressure_gpa", "approach_um",
-                "ellipticity", "stiffness_n_per_um"}
+INFO_KEYS = {
+    "designation",
+    "system",
+    "bearing_type",
+    "bore_mm",
+    "outside_diameter_mm",
+    "width_mm",
+    "ball_count",
+    "ball_diameter_mm",
+    "pitch_diameter_mm",
+    "contact_angle_deg",
+    "geometry_source",
+}
+FREQ_KEYS = {
+    f"{n}_{u}" for n in ("ftf", "bpfo", "bpfi", "bsf", "ball_defect") for u in ("hz", "order")
+}
+CONTACT_KEYS = {
+    "semi_major_mm",
+    "semi_minor_mm",
+    "max_pressure_gpa",
+    "approach_um",
+    "ellipticity",
+    "stiffness_n_per_um",
+}
 
 
 def test_info_6205_json(capsys):
@@ -53,7 +70,7 @@ def test_info_of_a_roller_bearing_gives_dimensions_only(capsys):
 def test_frequencies_6205_at_1797(capsys):
     d = run_json(capsys, "frequencies", "6205", "--speed-rpm", "1797")
     assert FREQ_KEYS <= d.keys()
-    assert d["bpfo_order"] == pytest.approx(3.5848, rel=3e-4)       # CWRU table
+    assert d["bpfo_order"] == pytest.approx(3.5848, rel=3e-4)  # CWRU table
     assert d["bpfi_hz"] == pytest.approx(5.4152 * 1797 / 60, rel=3e-4)
     assert d["ball_defect_hz"] == pytest.approx(2 * d["bsf_hz"])
 
@@ -74,16 +91,26 @@ def test_contact_json(capsys):
 
 def test_contact_methods_agree(capsys):
     exact = run_json(capsys, "contact", "6205", "--ball-load-n", "500")
-    approx = run_json(capsys, "contact", "6205", "--ball-load-n", "500", "--method",
-                      "hamrock-brewe")
-    assert approx["inner"]["approach_um"] == pytest.approx(exact["inner"]["approach_um"],
-                                                           rel=0.03)
+    approx = run_json(
+        capsys, "contact", "6205", "--ball-load-n", "500", "--method", "hamrock-brewe"
+    )
+    assert approx["inner"]["approach_um"] == pytest.approx(exact["inner"]["approach_um"], rel=0.03)
 
 
 def test_explicit_geometry_without_designation(capsys):
-    d = run_json(capsys, "frequencies", "--balls", "9", "--ball-diameter-mm", "7.94",
-                 "--pitch-diameter-mm", "38.51", "--speed-rpm", "1750")
-    assert d["bpfo_hz"] == pytest.approx(104.19, abs=0.01)        # seed 003, ER-16K
+    d = run_json(
+        capsys,
+        "frequencies",
+        "--balls",
+        "9",
+        "--ball-diameter-mm",
+        "7.94",
+        "--pitch-diameter-mm",
+        "38.51",
+        "--speed-rpm",
+        "1750",
+    )
+    assert d["bpfo_hz"] == pytest.approx(104.19, abs=0.01)  # seed 003, ER-16K
 
 
 def test_override_wins_and_is_marked_user(capsys):
@@ -100,8 +127,9 @@ def test_geometry_file(tmp_path, capsys):
 
 
 def test_material_options(capsys):
-    soft = run_json(capsys, "contact", "6205", "--ball-load-n", "500",
-                    "--elastic-modulus-gpa", "100")
+    soft = run_json(
+        capsys, "contact", "6205", "--ball-load-n", "500", "--elastic-modulus-gpa", "100"
+    )
     steel = run_json(capsys, "contact", "6205", "--ball-load-n", "500")
     assert soft["inner"]["approach_um"] > steel["inner"]["approach_um"]
 
@@ -115,18 +143,21 @@ def test_readable_output(capsys):
     assert "BPFI" in capsys.readouterr().out
 
 
-@pytest.mark.parametrize("args, words", [
-    (["frequencies", "6205", "--speed-rpm", "-5"], "--speed-rpm"),
-    (["frequencies", "6205", "--speed-rpm", "abc"], "speed-rpm"),
-    (["frequencies", "6205"], "speed-rpm"),
-    (["contact", "6205", "--ball-load-n", "0"], "--ball-load-n"),
-    (["info", "6205-XYZ"], "XYZ"),
-    (["info", "6205", "--system", "din"], "system"),
-    (["info", "6205", "--balls", "40"], "--balls = 40"),
-    (["info", "6205", "--inner-groove-factor", "0.5"], "--inner-groove-factor = 0.5"),
-    (["frequencies", "--balls", "9", "--speed-rpm", "100"], "--ball-diameter-mm"),
-    (["contact", "--geometry", "/nonexistent.toml", "--ball-load-n", "1"], "--geometry"),
-])
+@pytest.mark.parametrize(
+    "args, words",
+    [
+        (["frequencies", "6205", "--speed-rpm", "-5"], "--speed-rpm"),
+        (["frequencies", "6205", "--speed-rpm", "abc"], "speed-rpm"),
+        (["frequencies", "6205"], "speed-rpm"),
+        (["contact", "6205", "--ball-load-n", "0"], "--ball-load-n"),
+        (["info", "6205-XYZ"], "XYZ"),
+        (["info", "6205", "--system", "din"], "system"),
+        (["info", "6205", "--balls", "40"], "--balls = 40"),
+        (["info", "6205", "--inner-groove-factor", "0.5"], "--inner-groove-factor = 0.5"),
+        (["frequencies", "--balls", "9", "--speed-rpm", "100"], "--ball-diameter-mm"),
+        (["contact", "--geometry", "/nonexistent.toml", "--ball-load-n", "1"], "--geometry"),
+    ],
+)
 def test_bad_input_is_one_line_with_exit_code_2(capsys, args, words):
     assert main(args) == 2
     captured = capsys.readouterr()
@@ -137,26 +168,44 @@ def test_bad_input_is_one_line_with_exit_code_2(capsys, args, words):
 
 
 def test_console_script_end_to_end():
-    done = subprocess.run([sys.executable, "-m", "bearinglab.cli", "frequencies", "6205",
-                           "--speed-rpm", "1797", "--json"], capture_output=True, text=True,
-                          check=False)
+    done = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "bearinglab.cli",
+            "frequencies",
+            "6205",
+            "--speed-rpm",
+            "1797",
+            "--json",
+        ],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
     assert done.returncode == 0, done.stderr
     assert math.isclose(json.loads(done.stdout)["bpfo_order"], 3.5848, rel_tol=3e-4)
-    bad = subprocess.run([sys.executable, "-m", "bearinglab.cli", "info", "??"],
-                         capture_output=True, text=True, check=False)
+    bad = subprocess.run(
+        [sys.executable, "-m", "bearinglab.cli", "info", "??"],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
     assert bad.returncode == 2 and "Traceback" not in bad.stderr
 
 
 def test_plots_are_written(tmp_path, capsys):
-    for cmd in (["contact", "6205", "--ball-load-n", "800"],
-                ["frequencies", "6205", "--speed-rpm", "1797"]):
+    for cmd in (
+        ["contact", "6205", "--ball-load-n", "800"],
+        ["frequencies", "6205", "--speed-rpm", "1797"],
+    ):
         out = tmp_path / f"{cmd[0]}.png"
         assert main([*cmd, "--plot", str(out)]) == 0
         assert out.stat().st_size > 10_000 and out.read_bytes()[:4] == b"\x89PNG"
     capsys.readouterr()
     assert main(["contact", "6205", "--ball-load-n", "800", "--plot", str(tmp_path / "x.txt")]) == 2
     assert "--plot" in capsys.readouterr().err
-    assert not list(tmp_path.glob(".*"))          # no temporary files left behind
+    assert not list(tmp_path.glob(".*"))  # no temporary files left behind
 
 
 def test_info_catalogue_name_and_dimension_only_bearings(capsys):
@@ -165,7 +214,6 @@ def test_info_catalogue_name_and_dimension_only_bearings(capsys):
     d = run_json(capsys, "info", "1205")
     assert d["bearing_type"] == "self_aligning_ball" and d["outside_diameter_mm"] == 52
     assert d["ball_count"] is None and "single-row" in d["no_geometry_reason"]
-
 
 
 # ------------------------------------------------------------------ review fixes
@@ -183,6 +231,7 @@ def one_error_line(capsys, args, code=2):
 def _no_nan(text):
     def refuse(name):
         raise AssertionError(f"{name} in JSON")
+
     return json.loads(text, parse_constant=refuse)
 
 
@@ -207,8 +256,11 @@ GEOMETRY_FILE_ERRORS = [
 ]
 
 
-@pytest.mark.parametrize("content, start, words", GEOMETRY_FILE_ERRORS,
-                         ids=[c[0].split("\n")[0] for c in GEOMETRY_FILE_ERRORS])
+@pytest.mark.parametrize(
+    "content, start, words",
+    GEOMETRY_FILE_ERRORS,
+    ids=[c[0].split("\n")[0] for c in GEOMETRY_FILE_ERRORS],
+)
 def test_geometry_file_values_are_checked(tmp_path, capsys, content, start, words):
     f = tmp_path / "g.toml"
     f.write_text(content + "\n", encoding="utf-8")
@@ -218,11 +270,12 @@ def test_geometry_file_values_are_checked(tmp_path, capsys, content, start, word
 
 def test_geometry_file_that_cannot_be_read(tmp_path, capsys):
     assert "a TOML file, not a directory" in one_error_line(
-        capsys, ["info", "--geometry", str(tmp_path)])
+        capsys, ["info", "--geometry", str(tmp_path)]
+    )
     latin1 = tmp_path / "latin1.toml"
     latin1.write_bytes("name = 'Kugellager größe 6205'\n".encode("latin-1"))
     assert "UTF-8" in one_error_line(capsys, ["info", "--geometry", str(latin1)])
-    if hasattr(os, "geteuid") and os.geteuid() != 0:        # root reads anything
+    if hasattr(os, "geteuid") and os.geteuid() != 0:  # root reads anything
         locked = tmp_path / "locked.toml"
         locked.write_text("balls = 9\n")
         locked.chmod(0)
@@ -247,38 +300,58 @@ def test_full_width_digits_work_and_other_digits_are_one_line(capsys):
 
 
 def test_extreme_groove_factor_is_solved(capsys):
-    d = run_json(capsys, "contact", "6205", "--ball-load-n", "1000",
-                 "--inner-groove-factor", "0.500005")
+    d = run_json(
+        capsys, "contact", "6205", "--ball-load-n", "1000", "--inner-groove-factor", "0.500005"
+    )
     assert d["inner"]["ellipticity"] > 900 and math.isfinite(d["inner"]["approach_um"])
     assert any("groove shoulder" in w for w in d["warnings"])
 
 
-@pytest.mark.parametrize("args, start, words", [
-    (["contact", "6205", "--ball-load-n", "1e300"], "--ball-load-n = 1e+300", "(0, 1e+07] N"),
-    (["contact", "6205", "--ball-load-n", "inf"], "--ball-load-n = inf", "N"),
-    (["contact", "6205", "--ball-load-n", "nan"], "--ball-load-n = nan", "N"),
-    (["frequencies", "6205", "--speed-rpm", "1e308"], "--speed-rpm = 1e+308",
-     "[0, 1e+06] rpm"),
-    (["frequencies", "6205", "--speed-rpm", "1e300", "--json"], "--speed-rpm", "rpm"),
-    (["info", "--balls", "9", "--ball-diameter-mm", "1e300", "--pitch-diameter-mm", "40"],
-     "--ball-diameter-mm = 1e+300", "(0, 100000] mm"),
-    (["info", "6205", "--elastic-modulus-gpa", "1e300"], "--elastic-modulus-gpa = 1e+300",
-     "GPa"),
-    (["info", "6205", "--density-kg-m3", "-1"], "--density-kg-m3 = -1", "kg/m^3"),
-    (["info", "6205", "--poisson-ratio", "0.5"], "--poisson-ratio = 0.5", "[0, 0.5)"),
-    (["info", "6205", "--clearance-um", "nan"], "--clearance-um = nan", "finite"),
-])
+@pytest.mark.parametrize(
+    "args, start, words",
+    [
+        (["contact", "6205", "--ball-load-n", "1e300"], "--ball-load-n = 1e+300", "(0, 1e+07] N"),
+        (["contact", "6205", "--ball-load-n", "inf"], "--ball-load-n = inf", "N"),
+        (["contact", "6205", "--ball-load-n", "nan"], "--ball-load-n = nan", "N"),
+        (["frequencies", "6205", "--speed-rpm", "1e308"], "--speed-rpm = 1e+308", "[0, 1e+06] rpm"),
+        (["frequencies", "6205", "--speed-rpm", "1e300", "--json"], "--speed-rpm", "rpm"),
+        (
+            ["info", "--balls", "9", "--ball-diameter-mm", "1e300", "--pitch-diameter-mm", "40"],
+            "--ball-diameter-mm = 1e+300",
+            "(0, 100000] mm",
+        ),
+        (
+            ["info", "6205", "--elastic-modulus-gpa", "1e300"],
+            "--elastic-modulus-gpa = 1e+300",
+            "GPa",
+        ),
+        (["info", "6205", "--density-kg-m3", "-1"], "--density-kg-m3 = -1", "kg/m^3"),
+        (["info", "6205", "--poisson-ratio", "0.5"], "--poisson-ratio = 0.5", "[0, 0.5)"),
+        (["info", "6205", "--clearance-um", "nan"], "--clearance-um = nan", "finite"),
+    ],
+)
 def test_huge_and_non_finite_inputs_are_refused_with_a_range(capsys, args, start, words):
     line = one_error_line(capsys, args)
     assert line.startswith("error: " + start) and words in line
 
 
 def test_json_is_finite_at_the_limits(capsys):
-    for args in (["contact", "6205", "--ball-load-n", "1e7"],
-                 ["contact", "--balls", "3", "--ball-diameter-mm", "0.001",
-                  "--pitch-diameter-mm", "100000", "--ball-load-n", "1e7"],
-                 ["frequencies", "6205", "--speed-rpm", "1e6"],
-                 ["info", "6205", "--elastic-modulus-gpa", "10000", "--density-kg-m3", "1e5"]):
+    for args in (
+        ["contact", "6205", "--ball-load-n", "1e7"],
+        [
+            "contact",
+            "--balls",
+            "3",
+            "--ball-diameter-mm",
+            "0.001",
+            "--pitch-diameter-mm",
+            "100000",
+            "--ball-load-n",
+            "1e7",
+        ],
+        ["frequencies", "6205", "--speed-rpm", "1e6"],
+        ["info", "6205", "--elastic-modulus-gpa", "10000", "--density-kg-m3", "1e5"],
+    ):
         assert main([*args, "--json"]) == 0, args
         _no_nan(capsys.readouterr().out)
 
@@ -292,8 +365,9 @@ def test_no_arguments_print_the_help(capsys, args):
 
 
 def test_no_arguments_as_a_program():
-    done = subprocess.run([sys.executable, "-m", "bearinglab.cli"], capture_output=True,
-                          text=True, check=False)
+    done = subprocess.run(
+        [sys.executable, "-m", "bearinglab.cli"], capture_output=True, text=True, check=False
+    )
     assert done.returncode == 0 and "Usage" in done.stdout and done.stderr == ""
 
 
@@ -341,28 +415,56 @@ def test_info_json_of_every_seed_003_example(capsys, text, bearing_type, bore_mm
         assert d["geometry_source"] in ("catalog", "estimated", "mixed")
 
 
-@pytest.mark.parametrize("args, message", [
-    (["info", "6205", "--contact-angle-deg", "95"],
-     "--contact-angle-deg = 95 is not allowed: expected an angle in [0, 90] degrees"),
-    (["info", "6205", "--clearance-um", "-1000"],
-     "--clearance-um = -1000 is not allowed: expected a value in [-397, 635] um"),
-    (["info", ""], "DESIGNATION = '' is not allowed"),
-    (["info", "6205", "--ball-diameter-mm", "50"],
-     "--ball-diameter-mm = 50 is not allowed: expected less than the pitch diameter 39.0398 mm"),
-    (["info", "6205", "--outside-diameter-mm", "20"],
-     "--outside-diameter-mm = 20 is not allowed: expected more than the bore 25 mm"),
-    (["info", "6205", "--ball-diameter-mm", "-2"], "--ball-diameter-mm = -2"),
-    (["frequencies", "--balls", "9", "--ball-diameter-mm", "7.94", "--pitch-diameter-mm",
-      "39", "--contact-angle-deg", "-1", "--speed-rpm", "10"], "--contact-angle-deg = -1"),
-])
+@pytest.mark.parametrize(
+    "args, message",
+    [
+        (
+            ["info", "6205", "--contact-angle-deg", "95"],
+            "--contact-angle-deg = 95 is not allowed: expected an angle in [0, 90] degrees",
+        ),
+        (
+            ["info", "6205", "--clearance-um", "-1000"],
+            "--clearance-um = -1000 is not allowed: expected a value in [-397, 635] um",
+        ),
+        (["info", ""], "DESIGNATION = '' is not allowed"),
+        (
+            ["info", "6205", "--ball-diameter-mm", "50"],
+            "--ball-diameter-mm = 50 is not allowed: expected less than the pitch diameter "
+            "39.0398 mm",
+        ),
+        (
+            ["info", "6205", "--outside-diameter-mm", "20"],
+            "--outside-diameter-mm = 20 is not allowed: expected more than the bore 25 mm",
+        ),
+        (["info", "6205", "--ball-diameter-mm", "-2"], "--ball-diameter-mm = -2"),
+        (
+            [
+                "frequencies",
+                "--balls",
+                "9",
+                "--ball-diameter-mm",
+                "7.94",
+                "--pitch-diameter-mm",
+                "39",
+                "--contact-angle-deg",
+                "-1",
+                "--speed-rpm",
+                "10",
+            ],
+            "--contact-angle-deg = -1",
+        ),
+    ],
+)
 def test_errors_name_the_option_with_its_value_in_its_units(capsys, args, message):
     line = one_error_line(capsys, args)
     assert line.startswith("error: " + message), line
     assert "diametral_clearance" not in line and "contact_angle =" not in line
 
 
-@pytest.mark.parametrize("command, extra", [
-    ("frequencies", ["--speed-rpm", "1797"]), ("contact", ["--ball-load-n", "1000"])])
+@pytest.mark.parametrize(
+    "command, extra",
+    [("frequencies", ["--speed-rpm", "1797"]), ("contact", ["--ball-load-n", "1000"])],
+)
 def test_results_carry_the_geometry_and_its_source(capsys, command, extra):
     d = run_json(capsys, command, "6205", *extra)
     assert (d["ball_count"], d["ball_diameter_mm"]) == (9, pytest.approx(7.94, abs=0.01))
@@ -386,23 +488,44 @@ def test_estimated_ball_count_of_an_angular_contact_bearing_is_warned(capsys):
 
 def test_contact_warns_when_the_ellipse_leaves_the_groove(capsys):
     d = run_json(capsys, "contact", "6205", "--ball-load-n", "20000")
-    assert any(w.startswith("inner contact: the contact ellipse runs over the groove shoulder")
-               for w in d["warnings"])
+    assert any(
+        w.startswith("inner contact: the contact ellipse runs over the groove shoulder")
+        for w in d["warnings"]
+    )
     assert main(["contact", "6205", "--ball-load-n", "20000"]) == 0
     assert "warning: inner contact" in capsys.readouterr().out
 
 
 def test_thrust_ball_bearing_with_explicit_geometry(capsys):
-    args = ["frequencies", "51105", "--speed-rpm", "1000", "--balls", "15",
-            "--ball-diameter-mm", "6", "--pitch-diameter-mm", "38"]
+    args = [
+        "frequencies",
+        "51105",
+        "--speed-rpm",
+        "1000",
+        "--balls",
+        "15",
+        "--ball-diameter-mm",
+        "6",
+        "--pitch-diameter-mm",
+        "38",
+    ]
     d = run_json(capsys, *args)
     assert d["contact_angle_deg"] == 90 and d["ball_count"] == 15
     assert d["bpfo_order"] == pytest.approx(7.5) and d["bpfi_order"] == pytest.approx(7.5)
     assert d["ftf_order"] == pytest.approx(0.5)
     # this example's balls (32-44 mm) reach past the washers' 42 mm: said, not refused
     assert any("outside diameter 42 mm" in w for w in d["warnings"])
-    i = run_json(capsys, "info", "51105", "--balls", "15", "--ball-diameter-mm", "6",
-                 "--pitch-diameter-mm", "33.5")
+    i = run_json(
+        capsys,
+        "info",
+        "51105",
+        "--balls",
+        "15",
+        "--ball-diameter-mm",
+        "6",
+        "--pitch-diameter-mm",
+        "33.5",
+    )
     assert i["bearing_type"] == "thrust_ball" and i["outside_diameter_mm"] == 42
     assert i["width_mm"] == 11 and i["warnings"] == []
     line = one_error_line(capsys, ["frequencies", "51105", "--speed-rpm", "1000"])
@@ -411,20 +534,31 @@ def test_thrust_ball_bearing_with_explicit_geometry(capsys):
 
 
 def test_gost_angular_contact_bearing_asks_for_the_angle(capsys):
-    line = one_error_line(capsys, ["frequencies", "6205", "--system", "gost",
-                                   "--speed-rpm", "1000"])
+    line = one_error_line(
+        capsys, ["frequencies", "6205", "--system", "gost", "--speed-rpm", "1000"]
+    )
     assert line.endswith("give --contact-angle-deg")
-    d = run_json(capsys, "frequencies", "6205", "--system", "gost", "--speed-rpm", "1000",
-                 "--contact-angle-deg", "26")
+    d = run_json(
+        capsys,
+        "frequencies",
+        "6205",
+        "--system",
+        "gost",
+        "--speed-rpm",
+        "1000",
+        "--contact-angle-deg",
+        "26",
+    )
     assert d["contact_angle_deg"] == 26
-    i = run_json(capsys, "info", "6205", "--system", "gost")     # dimensions only
+    i = run_json(capsys, "info", "6205", "--system", "gost")  # dimensions only
     assert i["ball_count"] is None and "--contact-angle-deg" in i["no_geometry_reason"]
 
 
 def test_unwritable_plot_is_one_line(tmp_path, capsys):
     a_file = tmp_path / "not_a_directory"
     a_file.write_text("x")
-    line = one_error_line(capsys, ["frequencies", "6205", "--speed-rpm", "100", "--plot",
-                                   str(a_file / "f.png")])
+    line = one_error_line(
+        capsys, ["frequencies", "6205", "--speed-rpm", "100", "--plot", str(a_file / "f.png")]
+    )
     assert line.startswith("error: --plot = ") and "writable" in line
     assert list(tmp_path.iterdir()) == [a_file]

@@ -9,8 +9,18 @@ from bearinglab.cli import main
 from bearinglab.cli._forms import parse_defect
 from bearinglab.errors import InputError
 
-SIM = ["simulate", "ER-16K", "--speed-rpm", "1750", "--radial-load-n", "50",
-       "--duration-s", "0.5", "--sample-rate-hz", "20000"]
+SIM = [
+    "simulate",
+    "ER-16K",
+    "--speed-rpm",
+    "1750",
+    "--radial-load-n",
+    "50",
+    "--duration-s",
+    "0.5",
+    "--sample-rate-hz",
+    "20000",
+]
 OUTER = ["--defect", "outer:width_mm=1.2,depth_mm=0.25"]
 ANALYZE = ["--designation", "ER-16K", "--speed-rpm", "1750"]
 BPFO_HZ = 104.19
@@ -18,9 +28,23 @@ BPFO_HZ = 104.19
 
 def test_simulate_outer_race_json(capsys):
     d = run_json(capsys, *SIM, *OUTER)
-    for key in ("model", "sample_rate_hz", "duration_s", "kinematic", "likely_fault",
-                "faults", "diagnosis", "spectrum", "cage_speed_ratio", "spin_speed_ratio",
-                "defects", "output", "stats", "parameters", "warnings"):
+    for key in (
+        "model",
+        "sample_rate_hz",
+        "duration_s",
+        "kinematic",
+        "likely_fault",
+        "faults",
+        "diagnosis",
+        "spectrum",
+        "cage_speed_ratio",
+        "spin_speed_ratio",
+        "defects",
+        "output",
+        "stats",
+        "parameters",
+        "warnings",
+    ):
         assert key in d, key
     diag = d["diagnosis"]
     assert d["model"] == "rigid" and d["sample_rate_hz"] == 20000.0 and d["duration_s"] == 0.5
@@ -30,34 +54,48 @@ def test_simulate_outer_race_json(capsys):
     assert bpfo and bpfo[0]["frequency_hz"] == pytest.approx(BPFO_HZ, abs=2.0)  # 2 Hz bins
     assert {"frequency_hz", "amplitude", "matched", "harmonic"} <= diag["peaks"][0].keys()
     assert d["cage_speed_ratio"] is None and d["spin_speed_ratio"] is None  # rigid: no slip
-    assert d["defects"] == [{"location": "outer", "width_mm": 1.2, "depth_mm": 0.25,
-                             "angle_deg": -90.0}]
+    assert d["defects"] == [
+        {"location": "outer", "width_mm": 1.2, "depth_mm": 0.25, "angle_deg": -90.0}
+    ]
     assert d["output"] is None and d["stats"]["steps"] > 0
     # a bearinglab simulation is diagnosed by the raw envelope, whole band (issue 11)
     assert diag["band_hz"] is None and diag["methods"] == ["raw"]
 
 
-@pytest.mark.parametrize("suffix, extra", [
-    (".npz", []),
-    (".wav", ["--channel", "channel_1", "--sample-rate-hz", "20000"]),  # WAV: no names
-    (".mat", []),
-    (".csv", []),
-])
+@pytest.mark.parametrize(
+    "suffix, extra",
+    [
+        (".npz", []),
+        (".wav", ["--channel", "channel_1", "--sample-rate-hz", "20000"]),  # WAV: no names
+        (".mat", []),
+        (".csv", []),
+    ],
+)
 def test_simulate_output_then_analyze(tmp_path, capsys, suffix, extra):
     path = tmp_path / f"signal{suffix}"
     d = run_json(capsys, *SIM, *OUTER, "-o", str(path))
     assert d["output"] == str(path) and path.is_file()
     a = run_json(capsys, "analyze", str(path), *ANALYZE, *extra)
-    for key in ("file", "channel", "sample_rate_hz", "kinematic", "peaks", "likely_fault",
-                "scores", "band_hz", "ball_defect_frequency_hz"):
+    for key in (
+        "file",
+        "channel",
+        "sample_rate_hz",
+        "kinematic",
+        "peaks",
+        "likely_fault",
+        "scores",
+        "band_hz",
+        "ball_defect_frequency_hz",
+    ):
         assert key in a, key
     assert a["file"] == str(path)
     assert a["channel"] == ("channel_1" if suffix == ".wav" else "acc_y")
     assert a["sample_rate_hz"] == pytest.approx(20000.0)
     assert a["likely_fault"] == "outer_race"
     assert a["scores"]["outer_race"] > a["scores"]["inner_race"]
-    assert any(p["matched"] == "bpfo" and abs(p["frequency_hz"] - BPFO_HZ) <= 2.0
-               for p in a["peaks"])
+    assert any(
+        p["matched"] == "bpfo" and abs(p["frequency_hz"] - BPFO_HZ) <= 2.0 for p in a["peaks"]
+    )
 
 
 def test_analyze_reads_the_speed_from_the_file(tmp_path, capsys):
@@ -93,8 +131,9 @@ def test_human_output_and_plots(tmp_path, capsys):
     out = capsys.readouterr().out
     assert "verdict: outer race" in out and "1x bpfo" in out
     assert sim_png.read_bytes()[:4] == b"\x89PNG"
-    assert main(["analyze", str(npz), *ANALYZE, "--band-hz", "3000,7000",
-                 "--plot", str(an_png)]) == 0
+    assert (
+        main(["analyze", str(npz), *ANALYZE, "--band-hz", "3000,7000", "--plot", str(an_png)]) == 0
+    )
     out = capsys.readouterr().out
     assert "verdict: outer race" in out and "3000 - 7000 Hz" in out
     assert an_png.read_bytes()[:4] == b"\x89PNG"
@@ -104,8 +143,10 @@ def test_analyze_band_options(tmp_path, capsys):
     npz = tmp_path / "s.npz"
     run_json(capsys, *SIM, *OUTER, "-o", str(npz))
     assert run_json(capsys, "analyze", str(npz), *ANALYZE, "--band-hz", "none")["band_hz"] is None
-    assert run_json(capsys, "analyze", str(npz), *ANALYZE,
-                    "--band-hz", "2000,6000")["band_hz"] == [2000.0, 6000.0]
+    assert run_json(capsys, "analyze", str(npz), *ANALYZE, "--band-hz", "2000,6000")["band_hz"] == [
+        2000.0,
+        6000.0,
+    ]
     for bad in ("2000", "6000,2000", "fast"):
         assert "--band-hz" in run_error(capsys, "analyze", str(npz), *ANALYZE, "--band-hz", bad)
     err = run_error(capsys, "analyze", str(npz), *ANALYZE, "--band-hz", "2000,15000")
@@ -113,18 +154,21 @@ def test_analyze_band_options(tmp_path, capsys):
     assert "--channel" in run_error(capsys, "analyze", str(npz), *ANALYZE, "--channel", "DE")
 
 
-@pytest.mark.parametrize("spec, why", [
-    ("outer", "width_mm is required"),
-    ("outer:width_mm=-1", "width_mm must be > 0"),
-    ("core:width_mm=1", "unknown location 'core'"),
-    ("outer:foo=1", "unknown key 'foo'"),
-    ("outer:width_mm=1,width_mm=2", "given twice"),
-    ("outer:width_mm=abc", "not a number"),
-    ("ball:width_mm=1,ball=1.5", "not a whole number"),
-    ("inner:width_mm=1,ball=0", "unknown key 'ball'"),
-    ("outer:width_mm=9", "less than the ball diameter"),
-    ("ball:width_mm=1,ball=9", "a ball index in [0, 8]"),
-])
+@pytest.mark.parametrize(
+    "spec, why",
+    [
+        ("outer", "width_mm is required"),
+        ("outer:width_mm=-1", "width_mm must be > 0"),
+        ("core:width_mm=1", "unknown location 'core'"),
+        ("outer:foo=1", "unknown key 'foo'"),
+        ("outer:width_mm=1,width_mm=2", "given twice"),
+        ("outer:width_mm=abc", "not a number"),
+        ("ball:width_mm=1,ball=1.5", "not a whole number"),
+        ("inner:width_mm=1,ball=0", "unknown key 'ball'"),
+        ("outer:width_mm=9", "less than the ball diameter"),
+        ("ball:width_mm=1,ball=9", "a ball index in [0, 8]"),
+    ],
+)
 def test_bad_defect_specs(capsys, spec, why):
     err = run_error(capsys, *SIM, "--defect", spec)
     assert err.startswith("error: --defect = ") and repr(spec) in err
@@ -143,18 +187,21 @@ def test_defect_spec_units_and_angles():
         parse_defect("outer:width_mm=inf")
 
 
-@pytest.mark.parametrize("args, flag", [
-    (["--duration-s", "0"], "--duration-s"),
-    (["--duration-s", "0.001"], "--duration-s"),
-    (["--sample-rate-hz", "-5"], "--sample-rate-hz"),
-    (["--noise-ms2", "-1"], "--noise-ms2"),
-    (["--speed-rpm", "0"], "--speed-rpm"),
-    (["--radial-load-n", "-3"], "--radial-load-n"),
-    (["-o", "signal.txt"], "--output"),
-    (["-o", "no/such/dir/signal.npz"], "--output"),
-    (["--plot", "plot.txt"], "--plot"),
-    (["--sample-rate-hz", "20000.5", "-o", "s.wav"], "--sample-rate-hz"),
-])
+@pytest.mark.parametrize(
+    "args, flag",
+    [
+        (["--duration-s", "0"], "--duration-s"),
+        (["--duration-s", "0.001"], "--duration-s"),
+        (["--sample-rate-hz", "-5"], "--sample-rate-hz"),
+        (["--noise-ms2", "-1"], "--noise-ms2"),
+        (["--speed-rpm", "0"], "--speed-rpm"),
+        (["--radial-load-n", "-3"], "--radial-load-n"),
+        (["-o", "signal.txt"], "--output"),
+        (["-o", "no/such/dir/signal.npz"], "--output"),
+        (["--plot", "plot.txt"], "--plot"),
+        (["--sample-rate-hz", "20000.5", "-o", "s.wav"], "--sample-rate-hz"),
+    ],
+)
 def test_bad_simulate_options(tmp_path, monkeypatch, capsys, args, flag):
     monkeypatch.chdir(tmp_path)
     assert flag in run_error(capsys, *SIM, *OUTER, *args)
@@ -170,8 +217,9 @@ def test_analyze_missing_file(tmp_path, capsys):
     missing = tmp_path / "missing.npz"
     err = run_error(capsys, "analyze", str(missing), *ANALYZE)
     assert "SIGNAL_FILE" in err and str(missing) in err
-    assert "--sample-rate-hz" in run_error(capsys, "analyze", str(missing), *ANALYZE,
-                                           "--sample-rate-hz", "-1")
+    assert "--sample-rate-hz" in run_error(
+        capsys, "analyze", str(missing), *ANALYZE, "--sample-rate-hz", "-1"
+    )
 
 
 # ------------------------------------------------------------------ form errors (issue 5)
@@ -192,14 +240,16 @@ def test_simulate_with_inner_waviness_shows_its_line_in_the_plain_spectrum(capsy
     for d in (wavy, healthy):
         assert d["spectrum"]["channel"] == "disp_y" and d["spectrum"]["resolution_hz"] == 2.0
         assert d["spectrum"]["peaks"]
-        assert {"frequency_hz", "amplitude", "matched", "harmonic"} <= \
-            d["spectrum"]["peaks"][0].keys()
+        assert {"frequency_hz", "amplitude", "matched", "harmonic"} <= d["spectrum"]["peaks"][
+            0
+        ].keys()
     line = _line(wavy["spectrum"]["peaks"], "bpfi")
     assert line is not None and line["frequency_hz"] == pytest.approx(ER16K_BPFI_HZ, abs=2.0)
     assert line["amplitude"] == max(p["amplitude"] for p in wavy["spectrum"]["peaks"])
     assert _line(healthy["spectrum"]["peaks"], "bpfi") is None
     assert wavy["imperfections"]["waviness"] == [
-        {"race": "inner", "order": 9, "amplitude_um": 1.0, "phase_deg": 0.0}]
+        {"race": "inner", "order": 9, "amplitude_um": 1.0, "phase_deg": 0.0}
+    ]
     assert healthy["imperfections"] is None
     assert any("form errors" in w for w in wavy["warnings"])
 
@@ -219,8 +269,10 @@ def test_simulate_ball_size_errors_are_seeded(capsys):
     one = run_json(capsys, *SIM, "--ball-size-error-um", "4", "--seed", "3")
     again = run_json(capsys, *SIM, "--ball-size-error-um", "4", "--seed", "3")
     errors = one["imperfections"]["ball_size_errors"]["ball_size_errors_um"]
-    assert len(errors) == 9 and errors == again["imperfections"]["ball_size_errors"][
-        "ball_size_errors_um"]
+    assert (
+        len(errors) == 9
+        and errors == again["imperfections"]["ball_size_errors"]["ball_size_errors_um"]
+    )
     assert max(errors) - min(errors) <= 4.0 and max(abs(e) for e in errors) <= 2.0
     assert one["spectrum"]["peaks"] == again["spectrum"]["peaks"]
     # the errors turn with the cage: a line at the cage frequency (the healthy bearing
@@ -237,14 +289,19 @@ def test_simulate_plots_both_spectra(tmp_path, capsys):
     assert png.read_bytes()[:4] == b"\x89PNG"
 
 
-@pytest.mark.parametrize("args, words", [
-    (["--waviness", "ball:order=2,amplitude_um=0.1,ball=9"], ["a ball index in [0, 8]"]),
-    (["--waviness", "outer:amplitude_um=1"], ["--waviness", "order is required"]),
-    (["--surface3d", "outer:amplitude_um=0.1,length_circ_mm=-1,length_axial_mm=1"],
-     ["--surface3d", "length_circ_mm must be > 0"]),
-    (["--ball-size-error-um", "1,x"], ["--ball-size-error-um"]),
-    (["--spectrum-channel", "cage_speed"], ["--spectrum-channel"]),
-])
+@pytest.mark.parametrize(
+    "args, words",
+    [
+        (["--waviness", "ball:order=2,amplitude_um=0.1,ball=9"], ["a ball index in [0, 8]"]),
+        (["--waviness", "outer:amplitude_um=1"], ["--waviness", "order is required"]),
+        (
+            ["--surface3d", "outer:amplitude_um=0.1,length_circ_mm=-1,length_axial_mm=1"],
+            ["--surface3d", "length_circ_mm must be > 0"],
+        ),
+        (["--ball-size-error-um", "1,x"], ["--ball-size-error-um"]),
+        (["--spectrum-channel", "cage_speed"], ["--spectrum-channel"]),
+    ],
+)
 def test_bad_form_error_options(capsys, args, words):
     err = run_error(capsys, *SIM, *args)
     for word in words:

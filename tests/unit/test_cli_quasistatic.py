@@ -6,17 +6,41 @@ from conftest import run_json
 
 from bearinglab.cli import main
 
-BALL_KEYS = {"angle_deg", "inner_load_n", "outer_load_n", "inner_contact_angle_deg",
-             "outer_contact_angle_deg", "inner_max_pressure_gpa", "outer_max_pressure_gpa",
-             "contact_points"}
+BALL_KEYS = {
+    "angle_deg",
+    "inner_load_n",
+    "outer_load_n",
+    "inner_contact_angle_deg",
+    "outer_contact_angle_deg",
+    "inner_max_pressure_gpa",
+    "outer_max_pressure_gpa",
+    "contact_points",
+}
 
 
 def test_static_json_keys_and_equilibrium(capsys):
-    d = run_json(capsys, "static", "6205", "--radial-load-n", "1000", "--axial-load-n", "200",
-                 "--speed-rpm", "3000")
-    for key in ("radial_displacement_um", "axial_displacement_um", "tilt_mrad",
-                "max_ball_load_n", "stiffness_matrix_si", "stiffness_matrix_order",
-                "radial_stiffness_n_per_um", "axial_stiffness_n_per_um", "balls"):
+    d = run_json(
+        capsys,
+        "static",
+        "6205",
+        "--radial-load-n",
+        "1000",
+        "--axial-load-n",
+        "200",
+        "--speed-rpm",
+        "3000",
+    )
+    for key in (
+        "radial_displacement_um",
+        "axial_displacement_um",
+        "tilt_mrad",
+        "max_ball_load_n",
+        "stiffness_matrix_si",
+        "stiffness_matrix_order",
+        "radial_stiffness_n_per_um",
+        "axial_stiffness_n_per_um",
+        "balls",
+    ):
         assert key in d
     assert d["stiffness_matrix_order"] == ["x", "y", "z", "tilt_x", "tilt_y"]
     assert np.array(d["stiffness_matrix_si"]).shape == (5, 5)
@@ -29,8 +53,17 @@ def test_static_json_keys_and_equilibrium(capsys):
 
 def test_static_film_and_orbit(capsys):
     dry = run_json(capsys, "static", "6205", "--radial-load-n", "1000", "--speed-rpm", "6000")
-    wet = run_json(capsys, "static", "6205", "--radial-load-n", "1000", "--speed-rpm", "6000",
-                   "--film", "--orbit")
+    wet = run_json(
+        capsys,
+        "static",
+        "6205",
+        "--radial-load-n",
+        "1000",
+        "--speed-rpm",
+        "6000",
+        "--film",
+        "--orbit",
+    )
     # the film is a layer between the surfaces: it takes up play, the ring moves less
     assert wet["radial_displacement_um"] < dry["radial_displacement_um"]
     assert wet["orbit_peak_to_peak_um"] > 0 and len(wet["orbit"]["x_um"]) > 10
@@ -43,28 +76,48 @@ def test_static_plot(tmp_path, capsys):
     capsys.readouterr()
 
 
-@pytest.mark.parametrize("args, words", [
-    (["static", "6205", "--radial-load-n", "-5"], "--radial-load-n"),
-    (["static", "6205", "--radial-load-n", "10", "--misalignment-mrad", "50"],
-     "--misalignment-mrad"),
-    (["static", "6205", "--radial-load-n", "10", "--film", "--lubricant", "honey"],
-     "--lubricant"),
-    (["stiffness-map", "6205", "--radial-load-n", "0:100"], "--radial-load-n"),
-    (["stiffness-map", "6205", "--speed-rpm", "abc"], "--speed-rpm"),
-    (["ring-modes", "6310", "--modes", "0:3"], "--modes"),
-    (["ring-modes", "6310", "--free-frequencies-hz", "1900,x"], "--free-frequencies-hz"),
-    (["ring-modes", "6310", "--modes", "2:4", "--free-frequencies-hz", "1900"],
-     "--free-frequencies-hz"),
-    (["ring-modes", "--balls", "8", "--modes", "2:3"], "--free-frequencies-hz"),
-    (["ring-modes", "--modes", "2:3"], "DESIGNATION"),
-    (["ring-modes", "6310", "--axial-load-n", "0"], "--axial-load-n"),
-    (["ring-modes", "6310", "--ring-mass-kg", "0"], "--ring-mass-kg"),
-    (["stiffness-map", "6205", "--radial-load-n", "0:1:10000", "--axial-load-n", "0:1:10000"],
-     "at most"),
-    (["stiffness-map", "6205", "--plot", "/nonexistent/x.png"], "existing directory"),
-    (["static", "6205", "--radial-load-n", "100", "--stiffness-csv", "/nonexistent/k.csv"],
-     "existing directory"),
-])
+@pytest.mark.parametrize(
+    "args, words",
+    [
+        (["static", "6205", "--radial-load-n", "-5"], "--radial-load-n"),
+        (
+            ["static", "6205", "--radial-load-n", "10", "--misalignment-mrad", "50"],
+            "--misalignment-mrad",
+        ),
+        (
+            ["static", "6205", "--radial-load-n", "10", "--film", "--lubricant", "honey"],
+            "--lubricant",
+        ),
+        (["stiffness-map", "6205", "--radial-load-n", "0:100"], "--radial-load-n"),
+        (["stiffness-map", "6205", "--speed-rpm", "abc"], "--speed-rpm"),
+        (["ring-modes", "6310", "--modes", "0:3"], "--modes"),
+        (["ring-modes", "6310", "--free-frequencies-hz", "1900,x"], "--free-frequencies-hz"),
+        (
+            ["ring-modes", "6310", "--modes", "2:4", "--free-frequencies-hz", "1900"],
+            "--free-frequencies-hz",
+        ),
+        (["ring-modes", "--balls", "8", "--modes", "2:3"], "--free-frequencies-hz"),
+        (["ring-modes", "--modes", "2:3"], "DESIGNATION"),
+        (["ring-modes", "6310", "--axial-load-n", "0"], "--axial-load-n"),
+        (["ring-modes", "6310", "--ring-mass-kg", "0"], "--ring-mass-kg"),
+        (
+            [
+                "stiffness-map",
+                "6205",
+                "--radial-load-n",
+                "0:1:10000",
+                "--axial-load-n",
+                "0:1:10000",
+            ],
+            "at most",
+        ),
+        (["stiffness-map", "6205", "--plot", "/nonexistent/x.png"], "existing directory"),
+        (
+            ["static", "6205", "--radial-load-n", "100", "--stiffness-csv", "/nonexistent/k.csv"],
+            "existing directory",
+        ),
+    ],
+)
 def test_bad_input(capsys, args, words):
     assert main(args) == 2
     err = capsys.readouterr().err.strip().splitlines()
@@ -73,9 +126,18 @@ def test_bad_input(capsys, args, words):
 
 def test_stiffness_map_csv_and_json(tmp_path, capsys):
     csv = tmp_path / "m.csv"
-    d = run_json(capsys, "stiffness-map", "6205", "--radial-load-n", "0:1000:3",
-                 "--axial-load-n", "0,200", "-o", str(csv))
-    assert d["cases"] == 6 and d["solved"] == 5                  # (0, 0) has no load
+    d = run_json(
+        capsys,
+        "stiffness-map",
+        "6205",
+        "--radial-load-n",
+        "0:1000:3",
+        "--axial-load-n",
+        "0,200",
+        "-o",
+        str(csv),
+    )
+    assert d["cases"] == 6 and d["solved"] == 5  # (0, 0) has no load
     rows = [r for r in d["rows"] if r["status"] == "ok"]
     assert all(r["radial_stiffness_n_per_um"] > 0 for r in rows)
     assert csv.read_text().startswith("radial_load_n,")
@@ -84,24 +146,50 @@ def test_stiffness_map_csv_and_json(tmp_path, capsys):
 def test_ring_modes_json_with_the_paper_overrides(capsys):
     # seed 000's bearing 310 inputs: n = 8, m_h = 0.6 kg, K_x = 150e6 N/m, kappa = 0.33,
     # measured free-ring frequencies 1.92 / 5.34 / 10.00 kHz (m = 2, 3, 4)
-    d = run_json(capsys, "ring-modes", "310", "--system", "gost", "--modes", "1:4",
-                 "--ring-mass-kg", "0.6", "--radial-stiffness-n-per-m", "150e6",
-                 "--free-frequencies-hz", "1920,5340,10000", "--ball-mass-ratio", "0.33",
-                 "--contact-stiffness-ratio", "1")
+    d = run_json(
+        capsys,
+        "ring-modes",
+        "310",
+        "--system",
+        "gost",
+        "--modes",
+        "1:4",
+        "--ring-mass-kg",
+        "0.6",
+        "--radial-stiffness-n-per-m",
+        "150e6",
+        "--free-frequencies-hz",
+        "1920,5340,10000",
+        "--ball-mass-ratio",
+        "0.33",
+        "--contact-stiffness-ratio",
+        "1",
+    )
     modes = {m["m"]: m for m in d["modes"]}
     assert set(modes) == {1, 2, 3, 4}
-    assert modes[1]["approx_hz"][0] == pytest.approx(2516, abs=10)      # f_1
-    assert modes[3]["approx_hz"][0] == pytest.approx(6300, abs=50)      # seed 000: 6.3 kHz
-    assert len(modes[4]["approx_hz"]) == 2                              # 2m = n: split
+    assert modes[1]["approx_hz"][0] == pytest.approx(2516, abs=10)  # f_1
+    assert modes[3]["approx_hz"][0] == pytest.approx(6300, abs=50)  # seed 000: 6.3 kHz
+    assert len(modes[4]["approx_hz"]) == 2  # 2m = n: split
     for m in modes.values():
         assert {"m", "free_hz", "approx_hz", "refined_hz", "epsilon"} <= m.keys()
 
 
 def test_ring_modes_from_ring_level_inputs_alone(capsys):
     """Seed 000's own inputs, with no ball geometry: the same frequencies as with the 310."""
-    args = ["--modes", "1:4", "--ring-mass-kg", "0.6", "--radial-stiffness-n-per-m", "150e6",
-            "--free-frequencies-hz", "1920,5340,10000", "--ball-mass-ratio", "0.33",
-            "--contact-stiffness-ratio", "1"]
+    args = [
+        "--modes",
+        "1:4",
+        "--ring-mass-kg",
+        "0.6",
+        "--radial-stiffness-n-per-m",
+        "150e6",
+        "--free-frequencies-hz",
+        "1920,5340,10000",
+        "--ball-mass-ratio",
+        "0.33",
+        "--contact-stiffness-ratio",
+        "1",
+    ]
     alone = run_json(capsys, "ring-modes", "--balls", "8", *args)
     with_bearing = run_json(capsys, "ring-modes", "310", "--system", "gost", *args)
     assert alone["modes"] == with_bearing["modes"] and alone["bearing"] is None
@@ -109,8 +197,17 @@ def test_ring_modes_from_ring_level_inputs_alone(capsys):
 
 def test_ring_modes_with_the_load_distribution_stiffness(capsys):
     closed = run_json(capsys, "ring-modes", "6310", "--axial-load-n", "200", "--modes", "2:3")
-    solved = run_json(capsys, "ring-modes", "6310", "--axial-load-n", "200", "--modes", "2:3",
-                      "--stiffness-from", "load-distribution")
+    solved = run_json(
+        capsys,
+        "ring-modes",
+        "6310",
+        "--axial-load-n",
+        "200",
+        "--modes",
+        "2:3",
+        "--stiffness-from",
+        "load-distribution",
+    )
     assert solved["sources"]["radial_stiffness"].startswith("load distribution")
     # both are the radial stiffness of the same axially loaded bearing: close, not equal
     ratio = solved["radial_stiffness_n_per_m"] / closed["radial_stiffness_n_per_m"]
@@ -120,12 +217,23 @@ def test_ring_modes_with_the_load_distribution_stiffness(capsys):
 def test_four_point_bearings_get_gothic_arches(capsys):
     radial = run_json(capsys, "static", "QJ205", "--radial-load-n", "2000")
     loaded = [b for b in radial["balls"] if b["inner_load_n"] > 0]
-    assert loaded and all(b["contact_points"] == 4 for b in loaded)      # seed 001 fig. 5a
+    assert loaded and all(b["contact_points"] == 4 for b in loaded)  # seed 001 fig. 5a
     axial = run_json(capsys, "static", "QJ205", "--axial-load-n", "2000")
-    assert all(b["contact_points"] == 2 for b in axial["balls"])          # seed 001 fig. 1
+    assert all(b["contact_points"] == 2 for b in axial["balls"])  # seed 001 fig. 1
     assert axial["balls"][0]["inner_contact_angle_deg"] > 35.0
-    arches = run_json(capsys, "static", "6205", "--radial-load-n", "2000", "--clearance-um",
-                      "0", "--inner-arch-angle-deg", "20", "--outer-arch-angle-deg", "20")
+    arches = run_json(
+        capsys,
+        "static",
+        "6205",
+        "--radial-load-n",
+        "2000",
+        "--clearance-um",
+        "0",
+        "--inner-arch-angle-deg",
+        "20",
+        "--outer-arch-angle-deg",
+        "20",
+    )
     assert max(b["contact_points"] for b in arches["balls"]) == 4
 
 
@@ -146,18 +254,28 @@ B608 = ["static", "608", "--radial-load-n", "50"]
 def test_static_orbit_over_one_ball_spacing(capsys):
     d = run_json(capsys, *B608, "--orbit")
     assert d["orbit_kind"] == "ball_set"
-    assert len(d["orbit"]["x_um"]) == 25                    # 24 steps, both ends
-    assert d["orbit"]["ball_phase_deg"][-1] - d["orbit"]["ball_phase_deg"][0] == \
-        pytest.approx(360 / 7)
+    assert len(d["orbit"]["x_um"]) == 25  # 24 steps, both ends
+    assert d["orbit"]["ball_phase_deg"][-1] - d["orbit"]["ball_phase_deg"][0] == pytest.approx(
+        360 / 7
+    )
     assert 0 < d["orbit_peak_to_peak_um"] == pytest.approx(d["orbit"]["orbit_peak_to_peak_um"])
 
 
 def test_static_orbit_with_waviness_runs_in_time(tmp_path, capsys):
     plain = run_json(capsys, *B608, "--speed-rpm", "720", "--orbit")
     png = tmp_path / "orbit.png"
-    d = run_json(capsys, *B608, "--speed-rpm", "720", "--waviness",
-                 "outer:order=8,amplitude_um=0.5", "--orbit-points", "64", "--orbit-plot",
-                 str(png))
+    d = run_json(
+        capsys,
+        *B608,
+        "--speed-rpm",
+        "720",
+        "--waviness",
+        "outer:order=8,amplitude_um=0.5",
+        "--orbit-points",
+        "64",
+        "--orbit-plot",
+        str(png),
+    )
     assert d["orbit_kind"] == "time" and len(d["orbit"]["time_s"]) == 64
     assert d["orbit"]["cage_hz"] == pytest.approx(4.46, abs=0.01)
     # q = Z + 1 on the outer race moves the ring at Z f_c, more than a perfect bearing's
@@ -179,13 +297,16 @@ def test_static_with_form_errors_changes_the_load_distribution(capsys):
     assert "orbit" not in wavy
 
 
-@pytest.mark.parametrize("args, flag", [
-    (["--waviness", "inner:order=7,amplitude_um=0.5", "--orbit"], "--speed-rpm"),
-    (["--orbit-points", "1", "--orbit"], "--orbit-points"),
-    (["--orbit-plot", "orbit.txt"], "--orbit-plot"),
-    (["--waviness", "outer:order=7"], "--waviness"),
-    (["--ball-size-error-um", "-2"], "--ball-size-error-um"),
-])
+@pytest.mark.parametrize(
+    "args, flag",
+    [
+        (["--waviness", "inner:order=7,amplitude_um=0.5", "--orbit"], "--speed-rpm"),
+        (["--orbit-points", "1", "--orbit"], "--orbit-points"),
+        (["--orbit-plot", "orbit.txt"], "--orbit-plot"),
+        (["--waviness", "outer:order=7"], "--waviness"),
+        (["--ball-size-error-um", "-2"], "--ball-size-error-um"),
+    ],
+)
 def test_bad_orbit_and_form_error_options(tmp_path, monkeypatch, capsys, args, flag):
     monkeypatch.chdir(tmp_path)
     code = main([*B608, *args])

@@ -18,13 +18,16 @@ HEAVY = ("scipy", "pandas", "numba", "matplotlib", "bearinglab.dynamics", "beari
 
 def _imported_after(argv: list[str]) -> list[str]:
     """The heavy modules imported by running ``bearinglab ARGV`` in a new process."""
-    code = ("import sys, json, io, contextlib\n"
-            "from bearinglab.cli import main\n"
-            "with contextlib.redirect_stdout(io.StringIO()):\n"
-            f"    main({argv!r})\n"
-            f"print(json.dumps(sorted(m for m in sys.modules if m.startswith({HEAVY!r}))))\n")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         check=True).stdout
+    code = (
+        "import sys, json, io, contextlib\n"
+        "from bearinglab.cli import main\n"
+        "with contextlib.redirect_stdout(io.StringIO()):\n"
+        f"    main({argv!r})\n"
+        f"print(json.dumps(sorted(m for m in sys.modules if m.startswith({HEAVY!r}))))\n"
+    )
+    out = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True
+    ).stdout
     return json.loads(out.strip().splitlines()[-1])
 
 
@@ -36,7 +39,7 @@ def _docstrings() -> dict[str, str]:
             if not isinstance(node, ast.FunctionDef):
                 continue
             for deco in node.decorator_list:
-                if (isinstance(deco, ast.Call) and ast.unparse(deco.func) == "app.command"):
+                if isinstance(deco, ast.Call) and ast.unparse(deco.func) == "app.command":
                     name = deco.args[0].value if deco.args else node.name.replace("_", "-")
                     doc = ast.get_docstring(node) or ""
                     out[name] = " ".join(doc.split("\n\n")[0].split())

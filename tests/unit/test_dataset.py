@@ -17,10 +17,15 @@ from bearinglab.kinematics import defect_frequencies
 bd = require("bearing_datasets")
 validate = require("bearing_datasets.schema").validate
 
-RANGES = {"faults": ["none", "outer", "inner", "ball", "compound"],
-          "sample_rate_hz": [12000.0, 20000.0], "duration_s": (0.1, 0.2),
-          "speed_rpm": (1700.0, 1800.0), "waviness_amplitude_um": (0.0, 0.2),
-          "ball_size_error_um": 1.0, "resonances": [((2000.0, 4000.0), (0.03, 0.06))]}
+RANGES = {
+    "faults": ["none", "outer", "inner", "ball", "compound"],
+    "sample_rate_hz": [12000.0, 20000.0],
+    "duration_s": (0.1, 0.2),
+    "speed_rpm": (1700.0, 1800.0),
+    "waviness_amplitude_um": (0.0, 0.2),
+    "ball_size_error_um": 1.0,
+    "resonances": [((2000.0, 4000.0), (0.03, 0.06))],
+}
 
 
 def test_written_set_reads_back_with_bearing_datasets(tmp_path):
@@ -29,7 +34,7 @@ def test_written_set_reads_back_with_bearing_datasets(tmp_path):
     ds = bd.open("synth", root=tmp_path)
     meta = ds.metadata()
     manifest = json.loads((tmp_path / "synth" / "manifest.json").read_text())
-    validate(meta, manifest["columns"])          # the schema's own check: names, vocabularies
+    validate(meta, manifest["columns"])  # the schema's own check: names, vocabularies
     assert manifest["n_signals"] == len(meta) == 10 and not ds.outdated
     spec = DatasetSpec(10, **RANGES)
     bearing, _ = bearing_from_designation("6205-2RS")
@@ -39,12 +44,13 @@ def test_written_set_reads_back_with_bearing_datasets(tmp_path):
         x = ds.signal(row["signal_id"])
         assert row["fs"] == drawn["sample_rate_hz"]
         assert x.dtype == np.float32 and len(x) == row["n_samples"] == round(
-            drawn["duration_s"] * drawn["sample_rate_hz"])
-        parts = [{"ball": "rolling_element"}.get(d["location"], d["location"])
-                 for d in drawn["defects"]]
+            drawn["duration_s"] * drawn["sample_rate_hz"]
+        )
+        parts = [
+            {"ball": "rolling_element"}.get(d["location"], d["location"]) for d in drawn["defects"]
+        ]
         assert row["fault_type"] == ("+".join(parts) or "normal")
-        assert row["fault_size_mm"] == max((d["width_mm"] for d in drawn["defects"]),
-                                           default=0.0)
+        assert row["fault_size_mm"] == max((d["width_mm"] for d in drawn["defects"]), default=0.0)
         assert row["speed_rpm"] == drawn["speed_rpm"]
         kin = defect_frequencies(bearing, drawn["speed_rpm"] * math.pi / 30)
         assert row["bpfo_hz"] == pytest.approx(kin.hz("bpfo"), rel=1e-12)
@@ -69,8 +75,9 @@ def test_resume_and_refusals(tmp_path):
     with pytest.raises(InputError, match="no cage defect model"):
         make_dataset(tmp_path / "cage", 2, faults=["outer", "cage"])
     with pytest.raises(InputError, match="resonance frequency"):
-        make_dataset(tmp_path / "fast", 2, sample_rate_hz=[12000, 20000],
-                     resonances=[((3000, 6000), 0.05)])
+        make_dataset(
+            tmp_path / "fast", 2, sample_rate_hz=[12000, 20000], resonances=[((3000, 6000), 0.05)]
+        )
     with pytest.raises(InputError, match="empty"):
         make_dataset(tmp_path / "e", 2, speed_rpm=(1800, 1700))
     with pytest.raises(InputError, match="--yes"):
@@ -93,7 +100,7 @@ def test_transfer_path_resonance_and_low_frequency_gain():
     assert gain(low, 3000.0) == pytest.approx(math.sqrt(1.01) / 0.1, rel=0.01)
     assert gain(high, 7000.0) == pytest.approx(math.sqrt(1.04) / 0.2, rel=0.01)
     both = TransferPath(((3000.0, 0.05), (7000.0, 0.1)))
-    for f in (500.0, 3000.0, 7000.0):     # stages in series: the gains multiply
+    for f in (500.0, 3000.0, 7000.0):  # stages in series: the gains multiply
         assert gain(both, f) == pytest.approx(gain(low, f) * gain(high, f), rel=0.01)
     with pytest.raises(InputError, match="damping ratio"):
         TransferPath(((3000.0, 1.5),))

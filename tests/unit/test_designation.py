@@ -442,8 +442,11 @@ def test_iso_reader_refuses_gost_only_forms(text: str) -> None:
 
 def test_full_width_digits_are_normalised() -> None:
     # NFKC turns full-width digits and letters into ASCII; the reading is that of "6205"
-    for text, plain in (("６２０５", "6205"), ("６２０５－２ＲＳ", "6205-2RS"),
-                        ("１８０２０５", "180205")):
+    for text, plain in (
+        ("６２０５", "6205"),
+        ("６２０５－２ＲＳ", "6205-2RS"),
+        ("１８０２０５", "180205"),
+    ):
         a, b = parse(text).to_dict(), parse(plain).to_dict()
         assert a.pop("text") == text
         b.pop("text")
@@ -467,8 +470,7 @@ def test_a_reader_that_fails_says_what_it_could_not_read() -> None:
     assert d.system == "gost" and d.bearing_type == "angular_contact_ball"
     assert any(n.startswith("not an ISO designation: cannot read 'C'") for n in d.notes)
     i = parse("6205-2RS")
-    assert any(n.startswith("not a GOST 3189-89 designation: cannot read '-2RS'")
-               for n in i.notes)
+    assert any(n.startswith("not a GOST 3189-89 designation: cannot read '-2RS'") for n in i.notes)
     assert not any(n.startswith("not a") for n in parse("1205").notes)  # both readers agree
 
 
@@ -491,8 +493,7 @@ def test_a_reader_that_fails_says_what_it_could_not_read() -> None:
         ("6-0", "0", "too short"),
     ],
 )
-def test_contradictory_and_junk_designations_are_refused(text: str, part: str,
-                                                         words: str) -> None:
+def test_contradictory_and_junk_designations_are_refused(text: str, part: str, words: str) -> None:
     with pytest.raises(DesignationError) as err:
         parse(text)
     assert err.value.part == part and words in str(err.value)
@@ -511,4 +512,8 @@ def test_snap_ring_stays_in_the_description(text: str) -> None:
 def test_spherical_213_family_is_read() -> None:
     d = parse_iso("21305")
     assert (d.series, d.bearing_type, d.dimension_series, d.bore_mm) == (
-        "213", "spherical_roller", "03", 25.0)
+        "213",
+        "spherical_roller",
+        "03",
+        25.0,
+    )

@@ -44,14 +44,15 @@ def impacts(rate_hz, seconds=1.0, noise=0.2, seed=0, jitter=0.0, shaft_hz=None):
     rng = np.random.default_rng(seed)
     n = int(FS * seconds)
     t = np.arange(n) / FS
-    starts = np.cumsum(1.0 / rate_hz * (1 + jitter * rng.standard_normal(int(seconds * rate_hz)
-                                                                         + 5)))
+    starts = np.cumsum(
+        1.0 / rate_hz * (1 + jitter * rng.standard_normal(int(seconds * rate_hz) + 5))
+    )
     x = np.zeros(n)
     for s in starts[starts < seconds]:
         i = int(s * FS)
         m = min(n - i, int(0.01 * FS))
         tau = np.arange(m) / FS
-        x[i:i + m] += np.exp(-tau / 2e-3) * np.sin(2 * np.pi * 4e3 * tau)
+        x[i : i + m] += np.exp(-tau / 2e-3) * np.sin(2 * np.pi * 4e3 * tau)
     if shaft_hz:  # unbalance and misalignment: the shaft line and two harmonics
         x += sum(0.5 / k * np.sin(2 * np.pi * k * shaft_hz * t) for k in (1, 2, 3))
     return x + noise * rng.standard_normal(n)
@@ -66,8 +67,9 @@ def modulated(x, rate_hz, depth=0.5):
 @pytest.mark.parametrize("method", ["raw", "cpw", "drs-sk"])
 def test_outer_race_found_by_each_method(kin, method):
     # random slip of 1 % (Randall & Antoni 2011): what makes CPW and DRS keep the series
-    d = analyze_signal(impacts(kin.hz("bpfo"), jitter=0.01, shaft_hz=kin.shaft_hz), FS, kin,
-                       methods=method)
+    d = analyze_signal(
+        impacts(kin.hz("bpfo"), jitter=0.01, shaft_hz=kin.shaft_hz), FS, kin, methods=method
+    )
     assert isinstance(d, Diagnosis)
     assert d.verdict == "outer_race" and d.likely_fault == "outer_race"
     assert d.families["outer_race"]["passed"] and not d.families["inner_race"]["passed"]
@@ -120,10 +122,10 @@ def test_supply_harmonics_are_masked(kin):
     # a 50 Hz comb in the envelope: 2 x 50 Hz lies 4 % from BPFO of this bearing; with
     # --supply-hz its harmonics are not read
     t = np.arange(int(FS)) / FS
-    x = (1 + 0.8 * sum(np.cos(2 * np.pi * 50 * k * t) for k in range(1, 12))) \
-        * np.sin(2 * np.pi * 4e3 * t) + 0.2 * np.random.default_rng(2).standard_normal(t.size)
-    d = analyze_signal(x, FS, kin, methods="raw", supply_frequency=50.0,
-                       tolerances={"outer": 0.05})
+    x = (1 + 0.8 * sum(np.cos(2 * np.pi * 50 * k * t) for k in range(1, 12))) * np.sin(
+        2 * np.pi * 4e3 * t
+    ) + 0.2 * np.random.default_rng(2).standard_normal(t.size)
+    d = analyze_signal(x, FS, kin, methods="raw", supply_frequency=50.0, tolerances={"outer": 0.05})
     assert d.verdict == NO_FAULT
     assert any(p["matched"] == "supply" for p in d.peaks)
 
@@ -138,16 +140,29 @@ def test_two_faults_never_make_a_third(kin):
     d = analyze_signal(outer + inner, FS, kin, methods="raw")
     assert d.primary_fault in ("outer_race", "inner_race")
     assert set(d.faults) <= {"outer_race", "inner_race"}
-    assert d.verdict == (d.faults[0] if len(d.faults) == 1
-                         else "compound: " + " + ".join(d.faults))
+    assert d.verdict == (d.faults[0] if len(d.faults) == 1 else "compound: " + " + ".join(d.faults))
 
 
 def test_to_dict_and_pandas(kin):
     d = analyze_signal(impacts(kin.hz("bpfo"), jitter=0.01), FS, kin, methods="raw,cpw")
     out = d.to_dict()
-    for key in ("verdict", "likely_fault", "faults", "families", "false_alarm_probability",
-                "threshold_significance", "methods", "speed", "kinematic", "peaks",
-                "resolution_hz", "max_frequency_hz", "warnings", "tolerances", "scores"):
+    for key in (
+        "verdict",
+        "likely_fault",
+        "faults",
+        "families",
+        "false_alarm_probability",
+        "threshold_significance",
+        "methods",
+        "speed",
+        "kinematic",
+        "peaks",
+        "resolution_hz",
+        "max_frequency_hz",
+        "warnings",
+        "tolerances",
+        "scores",
+    ):
         assert key in out
     assert out["methods"] == ["raw", "cpw"]
     assert out["false_alarm_probability"] == 0.01
@@ -181,15 +196,27 @@ def test_speed_check_and_auto(kin, er16k):
     assert d.speed["source"] == "signal"
     assert d.speed["used_rpm"] == pytest.approx(1750.0, rel=2e-3)
     assert d.verdict == "outer_race"
-    d = analyze_signal(x, FS, er16k, shaft_speed="auto", methods="raw",
-                       speed_range=(1500 * math.pi / 30, 1900 * math.pi / 30))
+    d = analyze_signal(
+        x,
+        FS,
+        er16k,
+        shaft_speed="auto",
+        methods="raw",
+        speed_range=(1500 * math.pi / 30, 1900 * math.pi / 30),
+    )
     assert d.speed["used_rpm"] == pytest.approx(1750.0, rel=2e-3)
 
 
 def test_simulated_records_default_to_the_raw_envelope(er16k):
     condition = OperatingCondition(radial_load=50.0, shaft_speed=SPEED)
-    sim = simulate(er16k, condition, [Defect("outer", 1.2e-3, 0.25e-3)], model="rigid",
-                   duration=0.5, sample_rate=FS)
+    sim = simulate(
+        er16k,
+        condition,
+        [Defect("outer", 1.2e-3, 0.25e-3)],
+        model="rigid",
+        duration=0.5,
+        sample_rate=FS,
+    )
     d = analyze_signal(sim.signal, None, sim.kinematic)
     assert d.methods == ("raw",) and d.channel == "acc_y"
     assert d.verdict == "outer_race"
@@ -197,8 +224,9 @@ def test_simulated_records_default_to_the_raw_envelope(er16k):
 
 def test_healthy_simulation_is_no_fault(er16k):
     condition = OperatingCondition(radial_load=50.0, shaft_speed=SPEED)
-    sim = simulate(er16k, condition, [], model="rigid", duration=0.5, sample_rate=FS,
-                   noise=0.5, seed=1)
+    sim = simulate(
+        er16k, condition, [], model="rigid", duration=0.5, sample_rate=FS, noise=0.5, seed=1
+    )
     assert analyze_signal(sim.signal, None, sim.kinematic).verdict == NO_FAULT
 
 
@@ -231,19 +259,18 @@ def test_nested_templates_keep_an_unmodulated_series():
     for n in range(1, 6):
         z[round(n * 100.0 / 0.5)] = 8.0
     plain = series_test(z, 0.5, 40.0, 100.0, 0.02, 0.02, 5, 900.0)
-    with_sidebands = series_test(z, 0.5, 40.0, 100.0, 0.02, 0.02, 5, 900.0,
-                                 modulation=7.0, orders=2)
+    with_sidebands = series_test(
+        z, 0.5, 40.0, 100.0, 0.02, 0.02, 5, 900.0, modulation=7.0, orders=2
+    )
     # the harmonics-alone template wins, at the price of a factor 3 (three templates); the
     # sidebands' positions are left out of the reference too, which moves it a little
-    assert with_sidebands.significance == pytest.approx(plain.significance - math.log10(3),
-                                                        abs=0.3)
+    assert with_sidebands.significance == pytest.approx(plain.significance - math.log10(3), abs=0.3)
     assert {ln.kind for ln in with_sidebands.lines} == {"harmonic"}
     # with sidebands present, the template that holds them is kept
     for n in range(1, 6):
         for k in (-2, -1, 1, 2):
             z[round((n * 100.0 + k * 7.0) / 0.5)] = 8.0
-    modulated = series_test(z, 0.5, 40.0, 100.0, 0.02, 0.02, 5, 900.0,
-                            modulation=7.0, orders=2)
+    modulated = series_test(z, 0.5, 40.0, 100.0, 0.02, 0.02, 5, 900.0, modulation=7.0, orders=2)
     assert modulated.significance > with_sidebands.significance + 3
     assert sum(ln.kind == "sideband" and abs(ln.k) == 2 for ln in modulated.lines) == 10
 
@@ -257,8 +284,9 @@ def test_outer_race_with_twice_shaft_sidebands_only(kin):
     x = x * (1.0 + 0.9 * np.cos(2 * np.pi * 2 * kin.shaft_hz * t))
     d = analyze_signal(x, FS, kin, methods="raw")
     assert d.verdict == "outer_race"
-    assert any(ln["kind"] == "sideband" and abs(ln["k"]) == 2
-               for ln in d.families["outer_race"]["lines"])
+    assert any(
+        ln["kind"] == "sideband" and abs(ln["k"]) == 2 for ln in d.families["outer_race"]["lines"]
+    )
 
 
 def test_leakage_mask_grows_with_the_line():
@@ -276,19 +304,22 @@ def test_tolerance_overrides():
 
 
 # ------------------------------------------------------------------ bad input
-@pytest.mark.parametrize("kwargs, name", [
-    ({"band": "kurtogram"}, "band"),
-    ({"band": (5000.0, 2000.0)}, "band"),
-    ({"max_frequency": -1.0}, "max_frequency"),
-    ({"max_frequency": 1e6}, "max_frequency"),
-    ({"count": 0}, "count"),
-    ({"methods": "fourier"}, "methods"),
-    ({"false_alarm": 0.7}, "false_alarm"),
-    ({"shaft_speed": 0.0}, "shaft_speed"),
-    ({"shaft_speed": "fast"}, "shaft_speed"),
-    ({"channel": "acc_y"}, "channel"),
-    ({"tolerances": {"outer": 0.4}}, "tolerances['outer']"),
-])
+@pytest.mark.parametrize(
+    "kwargs, name",
+    [
+        ({"band": "kurtogram"}, "band"),
+        ({"band": (5000.0, 2000.0)}, "band"),
+        ({"max_frequency": -1.0}, "max_frequency"),
+        ({"max_frequency": 1e6}, "max_frequency"),
+        ({"count": 0}, "count"),
+        ({"methods": "fourier"}, "methods"),
+        ({"false_alarm": 0.7}, "false_alarm"),
+        ({"shaft_speed": 0.0}, "shaft_speed"),
+        ({"shaft_speed": "fast"}, "shaft_speed"),
+        ({"channel": "acc_y"}, "channel"),
+        ({"tolerances": {"outer": 0.4}}, "tolerances['outer']"),
+    ],
+)
 def test_bad_arguments(kin, kwargs, name):
     with pytest.raises(InputError) as info:
         analyze_signal(impacts(kin.hz("bpfo"), 0.5), FS, kin, **kwargs)
@@ -322,7 +353,17 @@ def test_labels_and_measured_ball_line():
     lines = [{"frequency_hz": 272.0, "amplitude": 2.0, "matched": "ball_defect", "harmonic": 2}]
     assert measured_ball_defect_frequency(lines) == 136.0
     assert measured_ball_defect_frequency([]) is None
-    assert peak_label({"matched": None, "sideband_of": "bpfi", "sideband_harmonic": 1,
-                       "sideband_order": -1, "modulation": "shaft"}) == "1x bpfi -1 shaft"
+    assert (
+        peak_label(
+            {
+                "matched": None,
+                "sideband_of": "bpfi",
+                "sideband_harmonic": 1,
+                "sideband_order": -1,
+                "modulation": "shaft",
+            }
+        )
+        == "1x bpfi -1 shaft"
+    )
     assert peak_label({"matched": "shaft", "harmonic": 27}) == "27x shaft"
     assert peak_label({"matched": None}) == "-"

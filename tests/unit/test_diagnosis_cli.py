@@ -23,7 +23,7 @@ def impacts(rate_hz, seconds=1.0, seed=0, shaft_hz=1750 / 60):
         i = int(s * FS)
         m = min(t.size - i, 200)
         tau = np.arange(m) / FS
-        x[i:i + m] += np.exp(-tau / 2e-3) * np.sin(2 * np.pi * 4e3 * tau)
+        x[i : i + m] += np.exp(-tau / 2e-3) * np.sin(2 * np.pi * 4e3 * tau)
     x += sum(0.5 / k * np.sin(2 * np.pi * k * shaft_hz * t) for k in (1, 2, 3))
     return x + 0.2 * rng.standard_normal(t.size)
 
@@ -38,8 +38,11 @@ def folder(tmp_path_factory):
     d = tmp_path_factory.mktemp("bench")
     t = np.arange(int(FS)) / FS
     inner = impacts(kin.hz("bpfi"), seed=1) * (1 + 0.5 * np.cos(2 * np.pi * kin.shaft_hz * t))
-    records = {"outer.npz": (impacts(kin.hz("bpfo")), "outer"), "inner.npz": (inner, "inner"),
-               "noise.npz": (np.random.default_rng(3).standard_normal(t.size), "normal")}
+    records = {
+        "outer.npz": (impacts(kin.hz("bpfo")), "outer"),
+        "inner.npz": (inner, "inner"),
+        "noise.npz": (np.random.default_rng(3).standard_normal(t.size), "normal"),
+    }
     rows = ["file,channel,sample_rate_hz,speed_rpm,designation,fault"]
     for name, (x, fault) in records.items():
         write_signal(d / name, Signal({"acc": x}, FS))
@@ -55,24 +58,56 @@ def run(capsys, *args):
 
 
 def test_analyze_json_and_options(folder, capsys):
-    code, out, err = run(capsys, "analyze", str(folder / "outer.npz"), "--designation",
-                         "ER-16K", "--speed-rpm", "1750", "--method", "raw,cpw",
-                         "--tolerance", "ball=0.05", "--json")
+    code, out, err = run(
+        capsys,
+        "analyze",
+        str(folder / "outer.npz"),
+        "--designation",
+        "ER-16K",
+        "--speed-rpm",
+        "1750",
+        "--method",
+        "raw,cpw",
+        "--tolerance",
+        "ball=0.05",
+        "--json",
+    )
     assert code == 0, err
     d = json.loads(out)
     assert d["verdict"] == "outer_race" and d["likely_fault"] == "outer_race"
-    assert d["methods"] == ["raw", "cpw"] and d["tolerances"]["ball"] == {"below": 0.05,
-                                                                          "above": 0.05}
+    assert d["methods"] == ["raw", "cpw"] and d["tolerances"]["ball"] == {
+        "below": 0.05,
+        "above": 0.05,
+    }
     assert d["families"]["outer_race"]["passed"] and d["speed"]["source"] == "given"
-    code, out, err = run(capsys, "analyze", str(folder / "noise.npz"), "--designation",
-                         "ER-16K", "--speed-rpm", "1750", "--json")
+    code, out, err = run(
+        capsys,
+        "analyze",
+        str(folder / "noise.npz"),
+        "--designation",
+        "ER-16K",
+        "--speed-rpm",
+        "1750",
+        "--json",
+    )
     assert json.loads(out)["likely_fault"] is None
 
 
 def test_analyze_speed_auto(folder, capsys):
-    code, out, err = run(capsys, "analyze", str(folder / "outer.npz"), "--designation",
-                         "ER-16K", "--speed-rpm", "auto", "--speed-range-rpm", "1600,1900",
-                         "--method", "raw", "--json")
+    code, out, err = run(
+        capsys,
+        "analyze",
+        str(folder / "outer.npz"),
+        "--designation",
+        "ER-16K",
+        "--speed-rpm",
+        "auto",
+        "--speed-range-rpm",
+        "1600,1900",
+        "--method",
+        "raw",
+        "--json",
+    )
     assert code == 0, err
     d = json.loads(out)
     assert d["speed"]["source"] == "signal"
@@ -80,24 +115,44 @@ def test_analyze_speed_auto(folder, capsys):
 
 
 def test_analyze_human_output(folder, capsys):
-    code, out, _ = run(capsys, "analyze", str(folder / "inner.npz"), "--designation", "ER-16K",
-                       "--speed-rpm", "1750", "--method", "raw")
+    code, out, _ = run(
+        capsys,
+        "analyze",
+        str(folder / "inner.npz"),
+        "--designation",
+        "ER-16K",
+        "--speed-rpm",
+        "1750",
+        "--method",
+        "raw",
+    )
     assert code == 0 and "verdict: inner race" in out and "f [Hz]" in out
 
 
-@pytest.mark.parametrize("args, flag", [
-    (["--speed-rpm", "0"], "--speed-rpm"),
-    (["--speed-rpm", "fast"], "--speed-rpm"),
-    (["--speed-rpm", "1750", "--channel", "DE"], "--channel"),
-    (["--speed-rpm", "1750", "--method", "fourier"], "--method"),
-    (["--speed-rpm", "1750", "--tolerance", "ball"], "--tolerance"),
-    (["--speed-rpm", "1750", "--sample-rate-hz", "150"], "--sample-rate-hz"),  # BPFO > Nyquist
-    (["--speed-rpm", "auto"], "--speed-rpm"),  # no recorded speed to search round
-])
+@pytest.mark.parametrize(
+    "args, flag",
+    [
+        (["--speed-rpm", "0"], "--speed-rpm"),
+        (["--speed-rpm", "fast"], "--speed-rpm"),
+        (["--speed-rpm", "1750", "--channel", "DE"], "--channel"),
+        (["--speed-rpm", "1750", "--method", "fourier"], "--method"),
+        (["--speed-rpm", "1750", "--tolerance", "ball"], "--tolerance"),
+        (["--speed-rpm", "1750", "--sample-rate-hz", "150"], "--sample-rate-hz"),  # BPFO > Nyquist
+        (["--speed-rpm", "auto"], "--speed-rpm"),  # no recorded speed to search round
+    ],
+)
 def test_analyze_errors_are_one_line(folder, capsys, tmp_path, args, flag):
     plot = tmp_path / "never.png"
-    code, out, err = run(capsys, "analyze", str(folder / "outer.npz"), "--designation",
-                         "ER-16K", *args, "--plot", str(plot))
+    code, out, err = run(
+        capsys,
+        "analyze",
+        str(folder / "outer.npz"),
+        "--designation",
+        "ER-16K",
+        *args,
+        "--plot",
+        str(plot),
+    )
     assert code == 2 and err.startswith("error: ") and err.count("\n") == 1, err
     assert flag in err and not plot.exists()
 
@@ -106,26 +161,45 @@ def test_analyze_short_record_and_struct_fields(tmp_path, capsys):
     import scipy.io
 
     write_signal(tmp_path / "short.npz", Signal({"acc": np.ones(2000)}, FS))
-    code, _, err = run(capsys, "analyze", str(tmp_path / "short.npz"), "--designation",
-                       "ER-16K", "--speed-rpm", "1750")
+    code, _, err = run(
+        capsys,
+        "analyze",
+        str(tmp_path / "short.npz"),
+        "--designation",
+        "ER-16K",
+        "--speed-rpm",
+        "1750",
+    )
     assert code == 2 and "cage revolutions" in err and err.count("\n") == 1
-    scipy.io.savemat(tmp_path / "m.mat", {"bearing": {"gs": np.ones((40000, 1)),
-                                                      "sr": np.array([[FS]]), "load": "25"}})
-    code, _, err = run(capsys, "analyze", str(tmp_path / "m.mat"), "--designation", "ER-16K",
-                       "--speed-rpm", "1750", "--channel", "bearing.load")
+    scipy.io.savemat(
+        tmp_path / "m.mat",
+        {"bearing": {"gs": np.ones((40000, 1)), "sr": np.array([[FS]]), "load": "25"}},
+    )
+    code, _, err = run(
+        capsys,
+        "analyze",
+        str(tmp_path / "m.mat"),
+        "--designation",
+        "ER-16K",
+        "--speed-rpm",
+        "1750",
+        "--channel",
+        "bearing.load",
+    )
     assert code == 2 and "--channel" in err and "text" in err
 
 
 def test_benchmark_json_and_html(folder, capsys, tmp_path):
     page = tmp_path / "bench.html"
-    code, out, err = run(capsys, "benchmark", str(folder), "--method", "raw", "--json",
-                         "--html", str(page))
+    code, out, err = run(
+        capsys, "benchmark", str(folder), "--method", "raw", "--json", "--html", str(page)
+    )
     assert code == 0, err
     d = json.loads(out)
     assert d["total"] == 3 and d["right"]["raw"] == 3
     assert d["confusion"]["raw"]["outer_race"]["outer_race"] == 1
     assert d["recall"]["raw"]["no fault detected"] == 1.0
-    assert page.read_text(encoding="utf-8").count("<img") >= 4   # matrix + 3 spectra
+    assert page.read_text(encoding="utf-8").count("<img") >= 4  # matrix + 3 spectra
     code, out, _ = run(capsys, "benchmark", str(folder), "--method", "raw,cpw", "--jobs", "2")
     assert code == 0 and "confusion" in out
     code, _, err = run(capsys, "benchmark", str(tmp_path))

@@ -20,15 +20,23 @@ from bearinglab.imperfections import BallSizeErrors, Imperfections, Waviness
 from bearinglab.kinematics import defect_frequencies
 from bearinglab.operating import OperatingCondition
 
-PRELOADED = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=38.51e-3,
-                        diametral_clearance=-10e-6)
+PRELOADED = BallBearing(
+    ball_count=9, ball_diameter=7.94e-3, pitch_diameter=38.51e-3, diametral_clearance=-10e-6
+)
 CONDITION = OperatingCondition(radial_load=0.0, shaft_speed=1750 * math.pi / 30)
 RATE = 5000.0
 
 
 def _spectrum(imperfections):
-    sim = simulate(PRELOADED, CONDITION, (), imperfections=imperfections, duration=1.0,
-                   sample_rate=RATE, settle=0.2)
+    sim = simulate(
+        PRELOADED,
+        CONDITION,
+        (),
+        imperfections=imperfections,
+        duration=1.0,
+        sample_rate=RATE,
+        settle=0.2,
+    )
     x = sim.signal.channels["disp_x"]
     x = x - x.mean()
     return np.fft.rfftfreq(x.size, 1 / RATE), np.abs(np.fft.rfft(x * np.hanning(x.size)))
@@ -43,15 +51,16 @@ def _rates():
     return kin.hz("ftf"), CONDITION.shaft_speed / (2 * math.pi)
 
 
-@pytest.mark.parametrize("race, order, sign", [("outer", 8, 0), ("outer", 10, 0),
-                                               ("inner", 8, -1), ("inner", 10, 1)])
+@pytest.mark.parametrize(
+    "race, order, sign", [("outer", 8, 0), ("outer", 10, 0), ("inner", 8, -1), ("inner", 10, 1)]
+)
 def test_waviness_orders_z_pm_1_excite_the_predicted_radial_line(race, order, sign):
     f_c, f_i = _rates()
     target = 9 * f_c if race == "outer" else 9 * (f_i - f_c) + sign * f_i
     freq, spec = _spectrum(Imperfections([Waviness(race, order, 1e-6)]))
     line = _line(freq, spec, target)
     away = np.abs(freq - target) > 3
-    assert line > 20 * spec[away & (freq > 5)].max()     # the one clear line
+    assert line > 20 * spec[away & (freq > 5)].max()  # the one clear line
 
 
 @pytest.mark.parametrize("race", ["outer", "inner"])
@@ -70,11 +79,27 @@ def test_a_ball_size_error_turns_with_the_cage():
 
 
 def test_slip_model_takes_the_same_imperfections():
-    bearing = BallBearing(ball_count=9, ball_diameter=8e-3, pitch_diameter=39e-3,
-                          bore=25e-3, outside_diameter=52e-3, width=15e-3)
+    bearing = BallBearing(
+        ball_count=9,
+        ball_diameter=8e-3,
+        pitch_diameter=39e-3,
+        bore=25e-3,
+        outside_diameter=52e-3,
+        width=15e-3,
+    )
     cond = OperatingCondition(radial_load=500.0, shaft_speed=2400 * math.pi / 30)
-    runs = [simulate(bearing, cond, (), model="slip", duration=0.005, sample_rate=20e3,
-                     settle=0.005, imperfections=imp)
-            for imp in (None, Imperfections([Waviness("outer", 10, 2e-6)]))]
+    runs = [
+        simulate(
+            bearing,
+            cond,
+            (),
+            model="slip",
+            duration=0.005,
+            sample_rate=20e3,
+            settle=0.005,
+            imperfections=imp,
+        )
+        for imp in (None, Imperfections([Waviness("outer", 10, 2e-6)]))
+    ]
     plain, wavy = (r.signal.channels["disp_y"] for r in runs)
     assert np.all(np.isfinite(wavy)) and np.ptp(wavy - plain) > 1e-7

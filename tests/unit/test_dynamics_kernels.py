@@ -20,12 +20,22 @@ from bearinglab.errors import InputError
 from bearinglab.geometry import BallBearing
 from bearinglab.operating import OperatingCondition
 
-ER16K = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=38.51e-3,
-                    diametral_clearance=90e-6)
-SEED004 = BallBearing(ball_count=9, ball_diameter=8e-3, pitch_diameter=39e-3, bore=25e-3,
-                      outside_diameter=52e-3, width=15e-3)
-DEFECTS = [Defect("outer", 1.2e-3, 0.25e-3), Defect("inner", 0.8e-3, 2e-6, angle=1.0),
-           Defect("ball", 1.2e-3, ball=3, angle=0.4)]
+ER16K = BallBearing(
+    ball_count=9, ball_diameter=7.94e-3, pitch_diameter=38.51e-3, diametral_clearance=90e-6
+)
+SEED004 = BallBearing(
+    ball_count=9,
+    ball_diameter=8e-3,
+    pitch_diameter=39e-3,
+    bore=25e-3,
+    outside_diameter=52e-3,
+    width=15e-3,
+)
+DEFECTS = [
+    Defect("outer", 1.2e-3, 0.25e-3),
+    Defect("inner", 0.8e-3, 2e-6, angle=1.0),
+    Defect("ball", 1.2e-3, ball=3, angle=0.4),
+]
 
 
 def test_edge_drop_matches_the_circle_geometry():
@@ -60,22 +70,31 @@ def test_surface_deviation_twins_agree():
         a = np.empty(9)
         b = np.empty(9)
         _kernels.surface_deviation_numba(psi, spin, shaft, 3.97e-3, 15.3e-3, 23.2e-3, table, a, b)
-        na, nb = _kernels.surface_deviation_numpy(psi, spin, shaft, 3.97e-3, 15.3e-3, 23.2e-3,
-                                                  table)
+        na, nb = _kernels.surface_deviation_numpy(
+            psi, spin, shaft, 3.97e-3, 15.3e-3, 23.2e-3, table
+        )
         np.testing.assert_allclose(a, na, atol=1e-15)
         np.testing.assert_allclose(b, nb, atol=1e-15)
-    assert np.any(na > 0) and np.any(nb > 0)        # the sample reached the defects
+    assert np.any(na > 0) and np.any(nb > 0)  # the sample reached the defects
 
 
 def _imperfections():
     from bearinglab.imperfections import BallSizeErrors, Imperfections, RandomSurface, Waviness
 
     return Imperfections(
-        [Waviness("outer", 10, 0.4e-6, 0.3), Waviness("inner", 8, 0.2e-6, -1.0),
-         Waviness("ball", 2, 0.1e-6, 0.5, ball=4), Waviness("ball", 4, 0.05e-6)],
+        [
+            Waviness("outer", 10, 0.4e-6, 0.3),
+            Waviness("inner", 8, 0.2e-6, -1.0),
+            Waviness("ball", 2, 0.1e-6, 0.5, ball=4),
+            Waviness("ball", 4, 0.05e-6),
+        ],
         ball_size_errors=BallSizeErrors.random(9, 2e-6, seed=3),
-        surfaces=[RandomSurface.for_bearing(ER16K, "outer", 0.1e-6, 5e-3, 0.4e-3, seed=1,
-                                            points_circumferential=64)])
+        surfaces=[
+            RandomSurface.for_bearing(
+                ER16K, "outer", 0.1e-6, 5e-3, 0.4e-3, seed=1, points_circumferential=64
+            )
+        ],
+    )
 
 
 def test_imperfection_rows_twins_agree_and_equal_the_approach_changes():
@@ -84,8 +103,11 @@ def test_imperfection_rows_twins_agree_and_equal_the_approach_changes():
     imp = _imperfections()
     table = pack_defects(DEFECTS[:1], ER16K, imp)
     bare = pack_defects(DEFECTS[:1], ER16K)
-    r_b, r_i, r_o = 0.5 * ER16K.ball_diameter, 0.5 * ER16K.inner_raceway_diameter, \
-        0.5 * ER16K.outer_raceway_diameter
+    r_b, r_i, r_o = (
+        0.5 * ER16K.ball_diameter,
+        0.5 * ER16K.inner_raceway_diameter,
+        0.5 * ER16K.outer_raceway_diameter,
+    )
     rng = np.random.default_rng(2)
     for _ in range(100):
         psi, spin, shaft = rng.uniform(-7, 7, 9), rng.uniform(-7, 7, 9), rng.uniform(0, 20)
@@ -119,16 +141,18 @@ def test_rigid_rhs_twins_agree():
         y = rigid.static_state(p) + rng.normal(0, 2e-6, 8) * np.r_[np.ones(4), 1e3 * np.ones(4)]
         t = rng.uniform(0, 1)
         _kernels.rigid_rhs_numba(t, y, p, table, out)
-        np.testing.assert_allclose(out, _kernels.rigid_rhs_numpy(t, y, p, table), rtol=1e-10,
-                                   atol=1e-9)
+        np.testing.assert_allclose(
+            out, _kernels.rigid_rhs_numpy(t, y, p, table), rtol=1e-10, atol=1e-9
+        )
 
 
 @pytest.mark.parametrize("traction", ["seed004", "bair_winer"])
 def test_slip_rhs_twins_agree(traction):
     table = pack_defects([Defect("ball", 0.3e-3, ball=2), Defect("outer", 0.5e-3)], SEED004)
     cond = OperatingCondition(radial_load=500.0, shaft_speed=251.3)
-    p = slip.pack(SEED004, cond, SlipParameters(traction=traction, pocket_clearance=1e-5),
-                  table, None, 0.3e-3)
+    p = slip.pack(
+        SEED004, cond, SlipParameters(traction=traction, pocket_clearance=1e-5), table, None, 0.3e-3
+    )
     y0 = slip.initial_state(p)
     rng = np.random.default_rng(3)
     out = np.empty_like(y0)
@@ -153,13 +177,16 @@ def test_grouped_jacobian_equals_a_dense_difference():
     n, ng, nb = y.size, _slip_kernels.NG, _slip_kernels.NB
     dense = np.empty((n, n))
     for col in range(n):
-        eps = 1e-6 * max(abs(y[col]), 1e-5 if col < 4 or (col >= ng and (col - ng) % nb == 0)
-                         else 1e-2)
+        eps = 1e-6 * max(
+            abs(y[col]), 1e-5 if col < 4 or (col >= ng and (col - ng) % nb == 0) else 1e-2
+        )
         yp, ym = y.copy(), y.copy()
         yp[col] += eps
         ym[col] -= eps
-        dense[:, col] = (_slip_kernels.slip_rhs_numpy(0.0, yp, p, table)
-                         - _slip_kernels.slip_rhs_numpy(0.0, ym, p, table)) / (2 * eps)
+        dense[:, col] = (
+            _slip_kernels.slip_rhs_numpy(0.0, yp, p, table)
+            - _slip_kernels.slip_rhs_numpy(0.0, ym, p, table)
+        ) / (2 * eps)
     f0 = np.empty(n)
     parts0 = np.empty((9, ng))
     _slip_kernels.slip_rhs(0.0, y, p, table, f0, parts0)
@@ -178,14 +205,21 @@ def test_grouped_jacobian_equals_a_dense_difference():
 
 
 def _arrow_blocks(n, ng, nb, z, rng):
-    blocks = (rng.normal(size=(ng, ng)), rng.normal(size=(z, ng, nb)),
-              rng.normal(size=(z, nb, ng)), rng.normal(size=(z, nb, nb)))
+    blocks = (
+        rng.normal(size=(ng, ng)),
+        rng.normal(size=(z, ng, nb)),
+        rng.normal(size=(z, nb, ng)),
+        rng.normal(size=(z, nb, nb)),
+    )
     dense = np.zeros((n, n))
     dense[:ng, :ng] = blocks[0]
     for j in range(z):
         cols = slice(ng + nb * j, ng + nb * (j + 1))
-        dense[:ng, cols], dense[cols, :ng], dense[cols, cols] = (blocks[1][j], blocks[2][j],
-                                                                   blocks[3][j])
+        dense[:ng, cols], dense[cols, :ng], dense[cols, cols] = (
+            blocks[1][j],
+            blocks[2][j],
+            blocks[3][j],
+        )
     return blocks, dense
 
 
@@ -214,13 +248,23 @@ def test_dopri_matches_a_damped_oscillator():
     @numba.njit
     def oscillator(t, y, p, table, dydt):
         dydt[0] = y[1]
-        dydt[1] = -p[0] ** 2 * y[0] - 2 * p[1] * p[0] * y[1]
+        dydt[1] = -(p[0] ** 2) * y[0] - 2 * p[1] * p[0] * y[1]
 
     w, z = 2 * math.pi * 500.0, 0.05
     t_out = np.linspace(0, 0.02, 401)
     out, *_rest, status = _integrate.dopri_chunk(
-        oscillator, np.array([w, z]), np.zeros((0, 5)), 0.0, np.array([1.0, 0.0]), 1e-6, t_out,
-        1e-9, np.array([1e-12, 1e-9]), 5e-5, 100000)
+        oscillator,
+        np.array([w, z]),
+        np.zeros((0, 5)),
+        0.0,
+        np.array([1.0, 0.0]),
+        1e-6,
+        t_out,
+        1e-9,
+        np.array([1e-12, 1e-9]),
+        5e-5,
+        100000,
+    )
     assert status == _integrate.OK
     wd = w * math.sqrt(1 - z * z)
     exact = np.exp(-z * w * t_out) * (np.cos(wd * t_out) + z * w / wd * np.sin(wd * t_out))

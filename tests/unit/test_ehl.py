@@ -26,8 +26,12 @@ from bearinglab.materials import BEARING_STEEL, SILICON_NITRIDE, effective_modul
 
 # A 6205-like inner contact: R_x = 3.18 mm, R_y = 104 mm, steel, VG 68-like oil.
 BASE = {
-    "load": 300.0, "entrainment_speed": 2.35, "rx": 3.18e-3, "ry": 0.104,
-    "effective_modulus": 2.286e11, "viscosity": 0.0585,
+    "load": 300.0,
+    "entrainment_speed": 2.35,
+    "rx": 3.18e-3,
+    "ry": 0.104,
+    "effective_modulus": 2.286e11,
+    "viscosity": 0.0585,
     "pressure_viscosity_coefficient": 2.5e-8,
 }
 B6205 = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3)
@@ -39,27 +43,38 @@ def film(kind="minimum", **changes):
 
 # ---------------------------------------------------------------- scaling laws
 
-@pytest.mark.parametrize("kind, name, exponent", [
-    ("minimum", "entrainment_speed", 0.68), ("minimum", "viscosity", 0.68),
-    ("minimum", "pressure_viscosity_coefficient", 0.49), ("minimum", "load", -0.073),
-    ("central", "entrainment_speed", 0.67), ("central", "viscosity", 0.67),
-    ("central", "pressure_viscosity_coefficient", 0.53), ("central", "load", -0.067),
-])
+
+@pytest.mark.parametrize(
+    "kind, name, exponent",
+    [
+        ("minimum", "entrainment_speed", 0.68),
+        ("minimum", "viscosity", 0.68),
+        ("minimum", "pressure_viscosity_coefficient", 0.49),
+        ("minimum", "load", -0.073),
+        ("central", "entrainment_speed", 0.67),
+        ("central", "viscosity", 0.67),
+        ("central", "pressure_viscosity_coefficient", 0.53),
+        ("central", "load", -0.067),
+    ],
+)
 def test_power_laws(kind, name, exponent):
     factor = 3.7
     ratio = film(kind, **{name: BASE[name] * factor}) / film(kind)
     assert ratio == pytest.approx(factor**exponent, rel=1e-12)
 
 
-@pytest.mark.parametrize("kind, rx_exp, e_exp", [("minimum", 0.466, -0.117),
-                                                 ("central", 0.464, -0.073)])
+@pytest.mark.parametrize(
+    "kind, rx_exp, e_exp", [("minimum", 0.466, -0.117), ("central", 0.464, -0.073)]
+)
 def test_dimensional_exponents_of_radius_and_modulus(kind, rx_exp, e_exp):
     # h = H R_x: R_x^(1 - a_U + 2 a_W), E'^(-a_U + a_G + a_W). Scaling R_y with R_x keeps k.
     f = 2.0
     assert film(kind, rx=BASE["rx"] * f, ry=BASE["ry"] * f) / film(kind) == pytest.approx(
-        f**rx_exp, rel=1e-12)
-    assert film(kind, effective_modulus=BASE["effective_modulus"] * f) / film(kind) == \
-        pytest.approx(f**e_exp, rel=1e-12)
+        f**rx_exp, rel=1e-12
+    )
+    assert film(kind, effective_modulus=BASE["effective_modulus"] * f) / film(
+        kind
+    ) == pytest.approx(f**e_exp, rel=1e-12)
 
 
 def test_load_dependence_is_weak():
@@ -72,8 +87,12 @@ def test_unit_system_does_not_matter(kind):
     # Dimensional consistency: the same contact in mm, N, s (E' in N/mm^2, eta in N s/mm^2,
     # alpha in mm^2/N) gives the film in mm.
     mm = {
-        "load": 300.0, "entrainment_speed": 2350.0, "rx": 3.18, "ry": 104.0,
-        "effective_modulus": 2.286e5, "viscosity": 0.0585e-6,
+        "load": 300.0,
+        "entrainment_speed": 2350.0,
+        "rx": 3.18,
+        "ry": 104.0,
+        "effective_modulus": 2.286e5,
+        "viscosity": 0.0585e-6,
         "pressure_viscosity_coefficient": 2.5e-2,
     }
     h_mm = float(ehl.hamrock_dowson_film(**mm, kind=kind))
@@ -82,6 +101,7 @@ def test_unit_system_does_not_matter(kind):
 
 # ---------------------------------------------------------------- limits
 
+
 def test_zero_speed_gives_zero_film():
     assert film(entrainment_speed=0.0) == 0.0
     assert film("central", entrainment_speed=0.0) == 0.0
@@ -89,8 +109,8 @@ def test_zero_speed_gives_zero_film():
 
 def test_ellipticity_factors_tend_to_one():
     g = (1e-11, 5000.0, 1e-5)
-    bare_min = 3.63 * g[0]**0.68 * g[1]**0.49 * g[2]**-0.073
-    bare_c = 2.69 * g[0]**0.67 * g[1]**0.53 * g[2]**-0.067
+    bare_min = 3.63 * g[0] ** 0.68 * g[1] ** 0.49 * g[2] ** -0.073
+    bare_c = 2.69 * g[0] ** 0.67 * g[1] ** 0.53 * g[2] ** -0.067
     assert float(ehl.hamrock_dowson_minimum(*g, 60.0)) == pytest.approx(bare_min, rel=1e-15)
     assert float(ehl.hamrock_dowson_central(*g, 60.0)) == pytest.approx(bare_c, rel=1e-15)
     # Circular contact (k = 1): factors 1 - e^-0.68 = 0.4934 and 1 - 0.61 e^-0.73 = 0.7060.
@@ -124,11 +144,13 @@ def test_ellipticity_methods_agree_for_ball_bearings():
 
 # ---------------------------------------------------------------- vectorisation
 
+
 def test_broadcasting_matches_scalar_calls():
     loads = np.array([50.0, 200.0, 800.0])
     speeds = np.array([[0.5], [5.0]])
-    h = ehl.hamrock_dowson_film(loads, speeds, BASE["rx"], BASE["ry"], 2.286e11, 0.0585,
-                                2.5e-8, "minimum")
+    h = ehl.hamrock_dowson_film(
+        loads, speeds, BASE["rx"], BASE["ry"], 2.286e11, 0.0585, 2.5e-8, "minimum"
+    )
     assert h.shape == (2, 3)
     for i, u in enumerate(speeds[:, 0]):
         for j, w in enumerate(loads):
@@ -142,13 +164,21 @@ def test_scalar_in_scalar_out():
 
 # ---------------------------------------------------------------- errors
 
-@pytest.mark.parametrize("changes, parameter", [
-    ({"load": 0.0}, "load"), ({"load": -5.0}, "load"), ({"load": np.nan}, "load"),
-    ({"entrainment_speed": -1.0}, "entrainment_speed"), ({"rx": 0.0}, "rx"),
-    ({"ry": 1e-3}, "ry"), ({"viscosity": -0.1}, "viscosity"),
-    ({"pressure_viscosity_coefficient": 0.0}, "pressure_viscosity_coefficient"),
-    ({"effective_modulus": -1.0}, "effective_modulus"),
-])
+
+@pytest.mark.parametrize(
+    "changes, parameter",
+    [
+        ({"load": 0.0}, "load"),
+        ({"load": -5.0}, "load"),
+        ({"load": np.nan}, "load"),
+        ({"entrainment_speed": -1.0}, "entrainment_speed"),
+        ({"rx": 0.0}, "rx"),
+        ({"ry": 1e-3}, "ry"),
+        ({"viscosity": -0.1}, "viscosity"),
+        ({"pressure_viscosity_coefficient": 0.0}, "pressure_viscosity_coefficient"),
+        ({"effective_modulus": -1.0}, "effective_modulus"),
+    ],
+)
 def test_bad_inputs_are_refused(changes, parameter):
     with pytest.raises(InputError) as err:
         ehl.hamrock_dowson_film(**{**BASE, **changes})
@@ -169,6 +199,7 @@ def test_bad_options_are_refused():
 
 
 # ---------------------------------------------------------------- entrainment speed
+
 
 def test_entrainment_speed_formula_and_symmetry():
     dm, dw, w = 39e-3, 8e-3, 2400 * math.pi / 30
@@ -195,14 +226,21 @@ def test_entrainment_speed_equals_race_speed_relative_to_cage():
 
 # ---------------------------------------------------------------- film_thickness
 
+
 def test_film_thickness_composes_the_pieces():
     w, q, t = 3000 * math.pi / 30, 400.0, ZERO_CELSIUS + 60.0
     for race in ("inner", "outer"):
         rx, ry = B6205.contact_radii(race)
         expected = ehl.hamrock_dowson_film(
-            q, ehl.entrainment_speed(B6205, w), rx, ry,
-            effective_modulus(BEARING_STEEL, BEARING_STEEL), ISO_VG68.viscosity(t),
-            ISO_VG68.pressure_viscosity_coefficient, "minimum")
+            q,
+            ehl.entrainment_speed(B6205, w),
+            rx,
+            ry,
+            effective_modulus(BEARING_STEEL, BEARING_STEEL),
+            ISO_VG68.viscosity(t),
+            ISO_VG68.pressure_viscosity_coefficient,
+            "minimum",
+        )
         got = ehl.film_thickness(B6205, ISO_VG68, q, w, race, temperature=t, kind="minimum")
         assert float(got) == pytest.approx(float(expected), rel=1e-14)
 
@@ -213,8 +251,8 @@ def test_film_thickness_trends():
     outer = ehl.film_thickness(B6205, ISO_VG68, 400.0, w, "outer")
     hot = ehl.film_thickness(B6205, ISO_VG68, 400.0, w, "inner", temperature=ZERO_CELSIUS + 80)
     minimum = ehl.film_thickness(B6205, ISO_VG68, 400.0, w, "inner", kind="minimum")
-    assert outer > inner           # larger R_x (conformity of the outer race)
-    assert hot < inner             # thinner oil at 80 degC than at 40 degC
+    assert outer > inner  # larger R_x (conformity of the outer race)
+    assert hot < inner  # thinner oil at 80 degC than at 40 degC
     assert minimum < inner
     # A ceramic ball (stiffer) gives a slightly thinner film: E'^-0.073 for the central one.
     hybrid = dataclasses.replace(B6205, ball_material=SILICON_NITRIDE)
@@ -231,10 +269,15 @@ def test_film_thickness_is_vectorised_over_load_and_speed():
 
 # ---------------------------------------------------------------- seed 004, eq. (6)
 
+
 def test_seed004_film_as_printed_and_corrected():
     args = {
-        "load": 300.0, "entrainment_speed": 2.35, "rx": 3.18e-3, "ry": 0.104,
-        "effective_modulus": 2.286e11, "viscosity": 0.04,
+        "load": 300.0,
+        "entrainment_speed": 2.35,
+        "rx": 3.18e-3,
+        "ry": 0.104,
+        "effective_modulus": 2.286e11,
+        "viscosity": 0.04,
         "pressure_viscosity_coefficient": 1.48e-8,
     }
     printed = float(ehl.seed004_film_thickness(**args))
@@ -249,13 +292,21 @@ def test_seed004_film_as_printed_and_corrected():
 
 def test_seed004_printed_exponent_is_not_dimensionally_consistent():
     si = {
-        "load": 300.0, "entrainment_speed": 2.35, "rx": 3.18e-3, "ry": 0.104,
-        "effective_modulus": 2.286e11, "viscosity": 0.04,
+        "load": 300.0,
+        "entrainment_speed": 2.35,
+        "rx": 3.18e-3,
+        "ry": 0.104,
+        "effective_modulus": 2.286e11,
+        "viscosity": 0.04,
         "pressure_viscosity_coefficient": 1.48e-8,
     }
     mm = {
-        "load": 300.0, "entrainment_speed": 2350.0, "rx": 3.18, "ry": 104.0,
-        "effective_modulus": 2.286e5, "viscosity": 0.04e-6,
+        "load": 300.0,
+        "entrainment_speed": 2350.0,
+        "rx": 3.18,
+        "ry": 104.0,
+        "effective_modulus": 2.286e5,
+        "viscosity": 0.04e-6,
         "pressure_viscosity_coefficient": 1.48e-2,
     }
     fixed = [float(ehl.seed004_film_thickness(**a, radius_exponent=0.466)) for a in (si, mm)]
@@ -265,6 +316,7 @@ def test_seed004_printed_exponent_is_not_dimensionally_consistent():
 
 
 # ---------------------------------------------------------------- Lubricant
+
 
 def test_lubricant_viscosity_temperature_law():
     oil = Lubricant("oil", 0.05, 313.15, 2e-8, 870.0, temperature_coefficient=0.03)
@@ -283,21 +335,28 @@ def test_lubricant_without_temperature_coefficient():
         oil.viscosity(323.15)
 
 
-@pytest.mark.parametrize("changes, parameter", [
-    ({"name": ""}, "name"), ({"dynamic_viscosity": 0.0}, "dynamic_viscosity"),
-    ({"dynamic_viscosity": math.inf}, "dynamic_viscosity"),
-    ({"reference_temperature": 40.0}, "reference_temperature"),
-    ({"pressure_viscosity_coefficient": 0.0}, "pressure_viscosity_coefficient"),
-    ({"pressure_viscosity_coefficient": 22.0}, "pressure_viscosity_coefficient"),
-    ({"density": -850.0}, "density"), ({"temperature_coefficient": -0.01},
-                                        "temperature_coefficient"),
-    ({"limiting_shear_coefficient": 1.5}, "limiting_shear_coefficient"),
-    ({"roelands_index": 0.0}, "roelands_index"),
-])
+@pytest.mark.parametrize(
+    "changes, parameter",
+    [
+        ({"name": ""}, "name"),
+        ({"dynamic_viscosity": 0.0}, "dynamic_viscosity"),
+        ({"dynamic_viscosity": math.inf}, "dynamic_viscosity"),
+        ({"reference_temperature": 40.0}, "reference_temperature"),
+        ({"pressure_viscosity_coefficient": 0.0}, "pressure_viscosity_coefficient"),
+        ({"pressure_viscosity_coefficient": 22.0}, "pressure_viscosity_coefficient"),
+        ({"density": -850.0}, "density"),
+        ({"temperature_coefficient": -0.01}, "temperature_coefficient"),
+        ({"limiting_shear_coefficient": 1.5}, "limiting_shear_coefficient"),
+        ({"roelands_index": 0.0}, "roelands_index"),
+    ],
+)
 def test_lubricant_validation(changes, parameter):
     args = {
-        "name": "oil", "dynamic_viscosity": 0.05, "reference_temperature": 313.15,
-        "pressure_viscosity_coefficient": 2e-8, "density": 870.0,
+        "name": "oil",
+        "dynamic_viscosity": 0.05,
+        "reference_temperature": 313.15,
+        "pressure_viscosity_coefficient": 2e-8,
+        "density": 870.0,
     }
     with pytest.raises(InputError) as err:
         Lubricant(**{**args, **changes})

@@ -16,8 +16,14 @@ from bearinglab.geometry import (
 )
 from bearinglab.materials import BEARING_STEEL, SILICON_NITRIDE, Material, effective_modulus
 
-CWRU_6205 = {"ball_count": 9, "ball_diameter": 7.94e-3, "pitch_diameter": 39.04e-3, "bore": 25e-3,
-                 "outside_diameter": 52e-3, "width": 15e-3}
+CWRU_6205 = {
+    "ball_count": 9,
+    "ball_diameter": 7.94e-3,
+    "pitch_diameter": 39.04e-3,
+    "bore": 25e-3,
+    "outside_diameter": 52e-3,
+    "width": 15e-3,
+}
 
 
 def test_harris_209_curvature_sums_and_differences():
@@ -32,8 +38,10 @@ def test_harris_209_curvature_sums_and_differences():
 
 def test_raceways_clearance_and_free_contact_angle():
     b = BallBearing(**CWRU_6205, diametral_clearance=20e-6)
-    assert b.outer_raceway_diameter - b.inner_raceway_diameter - 2 * b.ball_diameter == \
-        pytest.approx(20e-6)
+    assert (
+        b.outer_raceway_diameter - b.inner_raceway_diameter - 2 * b.ball_diameter
+        == pytest.approx(20e-6)
+    )
     a = (0.52 + 0.52 - 1) * 7.94e-3
     assert b.free_contact_angle == pytest.approx(math.acos(1 - 20e-6 / (2 * a)))
     assert b.end_play == pytest.approx(2 * a * math.sin(b.free_contact_angle))
@@ -41,11 +49,13 @@ def test_raceways_clearance_and_free_contact_angle():
 
 
 def test_angular_contact_bearing_gets_clearance_from_its_angle():
-    b = BallBearing(ball_count=12, ball_diameter=10e-3, pitch_diameter=60e-3,
-                    contact_angle=math.radians(40))
+    b = BallBearing(
+        ball_count=12, ball_diameter=10e-3, pitch_diameter=60e-3, contact_angle=math.radians(40)
+    )
     assert math.degrees(b.free_contact_angle) == pytest.approx(40.0)
     assert b.diametral_clearance == pytest.approx(
-        float(clearance_for_contact_angle(math.radians(40), 10e-3, 0.52, 0.52)))
+        float(clearance_for_contact_angle(math.radians(40), 10e-3, 0.52, 0.52))
+    )
 
 
 def test_clearance_and_free_angle_are_inverse():
@@ -90,25 +100,29 @@ def test_ring_section_needs_boundary_dimensions():
 def test_hybrid_bearing_modulus():
     b = BallBearing(**CWRU_6205, ball_material=SILICON_NITRIDE)
     assert effective_modulus(b.ball_material, b.ring_material) > effective_modulus(
-        BEARING_STEEL, BEARING_STEEL)
+        BEARING_STEEL, BEARING_STEEL
+    )
 
 
-@pytest.mark.parametrize("change, parameter, words", [
-    ({"ball_count": 2}, "ball_count", "integer >= 3"),
-    ({"ball_count": 9.0}, "ball_count", "integer"),
-    ({"ball_count": 16}, "ball_count", "do not fit"),
-    ({"ball_diameter": -1e-3}, "ball_diameter", "positive"),
-    ({"pitch_diameter": 5e-3}, "pitch_diameter", "more than the ball diameter"),
-    ({"inner_groove_factor": 0.5}, "inner_groove_factor", "(0.5, 1.0]"),
-    ({"outer_groove_factor": 0.49}, "outer_groove_factor", "(0.5, 1.0]"),
-    ({"contact_angle": math.pi / 2 + 1e-9}, "contact_angle", "[0, 90]"),
-    ({"contact_angle": -0.01}, "contact_angle", "[0, 90]"),
-    ({"diametral_clearance": 1e-3}, "diametral_clearance", "loose"),
-    ({"bore": 60e-3}, "bore", "less than the outside diameter"),
-    ({"ball_diameter": 15e-3, "ball_count": 5}, "ball_diameter", "bore"),
-    ({"outside_diameter": 46e-3}, "ball_diameter", "outside diameter"),
-    ({"width": 0.0}, "width", "positive"),
-])
+@pytest.mark.parametrize(
+    "change, parameter, words",
+    [
+        ({"ball_count": 2}, "ball_count", "integer >= 3"),
+        ({"ball_count": 9.0}, "ball_count", "integer"),
+        ({"ball_count": 16}, "ball_count", "do not fit"),
+        ({"ball_diameter": -1e-3}, "ball_diameter", "positive"),
+        ({"pitch_diameter": 5e-3}, "pitch_diameter", "more than the ball diameter"),
+        ({"inner_groove_factor": 0.5}, "inner_groove_factor", "(0.5, 1.0]"),
+        ({"outer_groove_factor": 0.49}, "outer_groove_factor", "(0.5, 1.0]"),
+        ({"contact_angle": math.pi / 2 + 1e-9}, "contact_angle", "[0, 90]"),
+        ({"contact_angle": -0.01}, "contact_angle", "[0, 90]"),
+        ({"diametral_clearance": 1e-3}, "diametral_clearance", "loose"),
+        ({"bore": 60e-3}, "bore", "less than the outside diameter"),
+        ({"ball_diameter": 15e-3, "ball_count": 5}, "ball_diameter", "bore"),
+        ({"outside_diameter": 46e-3}, "ball_diameter", "outside diameter"),
+        ({"width": 0.0}, "width", "positive"),
+    ],
+)
 def test_impossible_geometry_is_rejected_with_a_clear_message(change, parameter, words):
     with pytest.raises(InputError) as err:
         BallBearing(**{**CWRU_6205, **change})
@@ -116,8 +130,9 @@ def test_impossible_geometry_is_rejected_with_a_clear_message(change, parameter,
     assert words in str(err.value)
 
 
-@pytest.mark.parametrize("kwargs", [{"elastic_modulus": -1}, {"poisson_ratio": 0.5},
-                                    {"density": 0}])
+@pytest.mark.parametrize(
+    "kwargs", [{"elastic_modulus": -1}, {"poisson_ratio": 0.5}, {"density": 0}]
+)
 def test_material_validation(kwargs):
     base = {"name": "x", "elastic_modulus": 200e9, "poisson_ratio": 0.3, "density": 7800}
     with pytest.raises(InputError):
@@ -132,16 +147,23 @@ def test_to_dict_has_units_and_sources():
 
 
 def test_thrust_ball_bearing_at_90_degrees_has_finite_derived_quantities():
-    b = BallBearing(ball_count=15, ball_diameter=6e-3, pitch_diameter=33.5e-3,
-                    contact_angle=math.pi / 2, bore=25e-3, outside_diameter=42e-3, width=11e-3,
-                    bearing_type="thrust_ball")
+    b = BallBearing(
+        ball_count=15,
+        ball_diameter=6e-3,
+        pitch_diameter=33.5e-3,
+        contact_angle=math.pi / 2,
+        bore=25e-3,
+        outside_diameter=42e-3,
+        width=11e-3,
+        bearing_type="thrust_ball",
+    )
     d = b.to_dict()
     numbers = [v for v in d.values() if isinstance(v, float)]
     assert numbers and all(math.isfinite(v) for v in numbers)
     assert d["contact_angle_deg"] == pytest.approx(90.0)
     assert b.free_contact_angle == pytest.approx(math.pi / 2)
     assert b.gamma == pytest.approx(0.0, abs=1e-15)
-    for race in ("inner", "outer"):       # R_x = D_w/2 on both washers
+    for race in ("inner", "outer"):  # R_x = D_w/2 on both washers
         rx, ry = b.contact_radii(race)
         assert float(rx) == pytest.approx(3e-3) and math.isfinite(float(ry))
     # ring cross-sections are modelled for radial rings only
@@ -152,22 +174,37 @@ def test_thrust_ball_bearing_at_90_degrees_has_finite_derived_quantities():
 
 def test_thrust_balls_must_clear_the_shaft():
     with pytest.raises(InputError) as err:
-        BallBearing(ball_count=12, ball_diameter=6e-3, pitch_diameter=30e-3,
-                    contact_angle=math.pi / 2, bore=25e-3, outside_diameter=42e-3,
-                    bearing_type="thrust_ball")
+        BallBearing(
+            ball_count=12,
+            ball_diameter=6e-3,
+            pitch_diameter=30e-3,
+            contact_angle=math.pi / 2,
+            bore=25e-3,
+            outside_diameter=42e-3,
+            bearing_type="thrust_ball",
+        )
     assert err.value.parameter == "pitch_diameter" and "shaft" in str(err.value)
     with pytest.raises(InputError, match="less than the outside diameter"):
-        BallBearing(ball_count=12, ball_diameter=6e-3, pitch_diameter=43e-3,
-                    contact_angle=math.pi / 2, bore=25e-3, outside_diameter=42e-3,
-                    bearing_type="thrust_ball")
+        BallBearing(
+            ball_count=12,
+            ball_diameter=6e-3,
+            pitch_diameter=43e-3,
+            contact_angle=math.pi / 2,
+            bore=25e-3,
+            outside_diameter=42e-3,
+            bearing_type="thrust_ball",
+        )
 
 
-@pytest.mark.parametrize("args", [
-    (0.0215, 0.026, 0.015, 0.00413, 0.0234, "outer"),
-    (0.0125, 0.0165, 0.015, 0.0041, 0.0155, "inner"),
-    (0.02, 0.03, 0.01, 0.004, 0.022, "outer"),
-    (0.0125, 0.0140, 0.015, 0.0041, 0.0155, "inner"),  # groove cut off by the shoulder
-])
+@pytest.mark.parametrize(
+    "args",
+    [
+        (0.0215, 0.026, 0.015, 0.00413, 0.0234, "outer"),
+        (0.0125, 0.0165, 0.015, 0.0041, 0.0155, "inner"),
+        (0.02, 0.03, 0.01, 0.004, 0.022, "outer"),
+        (0.0125, 0.0140, 0.015, 0.0041, 0.0155, "inner"),  # groove cut off by the shoulder
+    ],
+)
 def test_ring_section_closed_form_matches_quadrature(args):
     """The closed-form moments of the grooved section against scipy's adaptive quadrature
     with the groove edges as break points."""
@@ -186,8 +223,9 @@ def test_ring_section_closed_form_matches_quadrature(args):
     pts = [p for p in (centre - big_r, centre + big_r) if inner < p < outer]
 
     def quad(f):
-        return integrate.quad(f, inner, outer, points=pts or None, epsabs=0, epsrel=1e-13,
-                              limit=200)[0]
+        return integrate.quad(
+            f, inner, outer, points=pts or None, epsabs=0, epsrel=1e-13, limit=200
+        )[0]
 
     area = quad(w)
     mean = quad(lambda r: r * w(r)) / area

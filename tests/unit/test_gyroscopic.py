@@ -10,8 +10,9 @@ from bearinglab.operating import OperatingCondition
 from bearinglab.quasistatic import centrifugal_force, solve_load_distribution
 from bearinglab.quasistatic.gyroscopic import gyroscopic_ball_force, outer_control_kinematics
 
-ACBB = BallBearing(ball_count=12, ball_diameter=10e-3, pitch_diameter=60e-3,
-                   contact_angle=math.radians(25))
+ACBB = BallBearing(
+    ball_count=12, ball_diameter=10e-3, pitch_diameter=60e-3, contact_angle=math.radians(25)
+)
 
 
 def test_kinematics_reduce_to_pure_rolling_at_zero_angle():
@@ -38,23 +39,24 @@ def test_force_magnitude_and_direction():
 
 def test_balls_are_in_equilibrium_with_the_gyroscopic_friction():
     omega = 20000 * math.pi / 30
-    r = solve_load_distribution(ACBB, OperatingCondition(axial_load=1000.0, shaft_speed=omega),
-                                gyroscopic=True)
+    r = solve_load_distribution(
+        ACBB, OperatingCondition(axial_load=1000.0, shaft_speed=omega), gyroscopic=True
+    )
     qi, qo = r.load[0, 0], r.load[0, 1]
     ai, ao = r.contact_angle[0]
     # one cage speed (Jones's, outer raceway control) for F_c and for M_g
     _, orbit, _ = outer_control_kinematics(ai, ao, ACBB.ball_diameter / ACBB.pitch_diameter)
     fc = 0.5 * ACBB.ball_mass * ACBB.pitch_diameter * (orbit * omega) ** 2
     assert r.ball_centrifugal_force[0] == pytest.approx(fc, rel=1e-9)
-    assert fc > centrifugal_force(ACBB, omega)           # the nominal-angle value is lower
-    f = gyroscopic_ball_force(ACBB.ball_diameter, ACBB.pitch_diameter, 7830.0, omega,
-                              np.array([ai]), np.array([ao]))[0]
+    assert fc > centrifugal_force(ACBB, omega)  # the nominal-angle value is lower
+    f = gyroscopic_ball_force(
+        ACBB.ball_diameter, ACBB.pitch_diameter, 7830.0, omega, np.array([ai]), np.array([ao])
+    )[0]
     # inner pushes out and towards +z, outer in and towards -z; plus F_c and friction
     radial = qi * math.cos(ai) - qo * math.cos(ao) + fc + f[0]
     axial = qi * math.sin(ai) - qo * math.sin(ao) + f[1]
     assert abs(radial) < 1e-6 * qo and abs(axial) < 1e-6 * qo
-    plain = solve_load_distribution(ACBB, OperatingCondition(axial_load=1000.0,
-                                                             shaft_speed=omega))
+    plain = solve_load_distribution(ACBB, OperatingCondition(axial_load=1000.0, shaft_speed=omega))
     # the friction pushes the ball away from the outer contact's side: the inner angle grows
     assert r.contact_angle[0, 0] > plain.contact_angle[0, 0]
 
@@ -63,8 +65,12 @@ def test_no_gyroscopic_effect_at_rest_or_without_contact_angle():
     rest = solve_load_distribution(ACBB, OperatingCondition(axial_load=500.0), gyroscopic=True)
     plain = solve_load_distribution(ACBB, OperatingCondition(axial_load=500.0))
     np.testing.assert_allclose(rest.displacement, plain.displacement)
-    dgbb = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3,
-                       diametral_clearance=0.0)
+    dgbb = BallBearing(
+        ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3, diametral_clearance=0.0
+    )
     c = OperatingCondition(radial_load=500.0, shaft_speed=1500.0)
-    np.testing.assert_allclose(solve_load_distribution(dgbb, c, gyroscopic=True).displacement,
-                               solve_load_distribution(dgbb, c).displacement, atol=1e-12)
+    np.testing.assert_allclose(
+        solve_load_distribution(dgbb, c, gyroscopic=True).displacement,
+        solve_load_distribution(dgbb, c).displacement,
+        atol=1e-12,
+    )

@@ -26,7 +26,7 @@ def _exact_relation_50_digits(k: float):
         k = Decimal(k)
         m = 1 - 1 / (k * k)
         a, b = Decimal(1), 1 / k
-        total, power, c2 = m / 2, Decimal(1), m          # sum 2^(n-1) c_n^2, from n = 0
+        total, power, c2 = m / 2, Decimal(1), m  # sum 2^(n-1) c_n^2, from n = 0
         while c2 > Decimal(10) ** -58 * (1 + m):
             a, b, c = (a + b) / 2, (a * b).sqrt(), (a - b) / 2
             c2, power = c * c, power * 2
@@ -58,10 +58,11 @@ def test_ellipticity_is_robust_over_the_whole_range():
     above = ratios > 1.0
     residual = np.abs(np.expm1(hertz._log_ratio(np.log(k[above])) - np.log(ratios[above])))
     assert residual.max() < 1e-12
-    rx, ry = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3,
-                         inner_groove_factor=0.500005).contact_radii("inner")
+    rx, ry = BallBearing(
+        ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3, inner_groove_factor=0.500005
+    ).contact_radii("inner")
     c = hertz.point_contact(1000.0, rx, ry, E_STEEL)
-    assert np.isfinite(float(c.approach)) and float(c.ellipticity) > 900.0   # R_y/R_x ~ 1.3e5
+    assert np.isfinite(float(c.approach)) and float(c.ellipticity) > 900.0  # R_y/R_x ~ 1.3e5
 
 
 def test_bracketed_fallback_gives_the_same_ellipticity():
@@ -95,8 +96,9 @@ def test_hamrock_brewe_close_to_exact(ratio):
 def test_hamrock_brewe_fit_at_the_circle_is_its_own_value():
     # the fit is used as a whole: k(1) = 1.0339 with E(1) = 1.5971, K(1) = 1.5277
     assert float(hertz.ellipticity(1.0, "hamrock_brewe")) == pytest.approx(1.0339, abs=1e-12)
-    np.testing.assert_allclose(hertz.ellipticity([1.0, 4.0], "hamrock_brewe"),
-                               1.0339 * np.array([1.0, 4.0]) ** 0.6360)
+    np.testing.assert_allclose(
+        hertz.ellipticity([1.0, 4.0], "hamrock_brewe"), 1.0339 * np.array([1.0, 4.0]) ** 0.6360
+    )
     kk, ee = hertz.elliptic_integrals(None, 1.0, "hamrock_brewe")
     assert (kk, ee) == pytest.approx((1.5277, 1.0003 + 0.5968))
 
@@ -139,8 +141,13 @@ def test_huge_loads_stay_finite():
 
 def test_contact_ellipse_over_the_groove_shoulder_is_warned():
     # criterion of the load-distribution model: |alpha| + a/(f D_w) > arccos(1 - 0.2/f)
-    b = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3,
-                    inner_groove_factor=0.515, outer_groove_factor=0.525)
+    b = BallBearing(
+        ball_count=9,
+        ball_diameter=7.94e-3,
+        pitch_diameter=39.04e-3,
+        inner_groove_factor=0.515,
+        outer_groove_factor=0.525,
+    )
     assert ball_contacts(b, 1000.0).warnings == []
     loads = np.array([1000.0, 5000.0, 20000.0, 40000.0])
     r = ball_contacts(b, loads)
@@ -151,8 +158,13 @@ def test_contact_ellipse_over_the_groove_shoulder_is_warned():
     inner = [w for w in r.to_dict()["warnings"] if w.startswith("inner")]
     assert len(inner) == 1 and "Q = 2e+04 N" in inner[0] and "groove shoulder" in inner[0]
     # a thrust bearing's groove bottom lies at 90 deg: no warning at a light load
-    t = BallBearing(ball_count=15, ball_diameter=6e-3, pitch_diameter=38e-3,
-                    contact_angle=np.pi / 2, bearing_type="thrust_ball")
+    t = BallBearing(
+        ball_count=15,
+        ball_diameter=6e-3,
+        pitch_diameter=38e-3,
+        contact_angle=np.pi / 2,
+        bearing_type="thrust_ball",
+    )
     assert ball_contacts(t, 100.0).warnings == []
 
 
@@ -170,8 +182,9 @@ def test_vectorised_over_loads_and_zero_load():
 def test_approach_and_load_are_inverse():
     q = np.array([1.0, 50.0, 3000.0])
     delta = hertz.approach(q, RX_209, RY_209, E_STEEL)
-    np.testing.assert_allclose(hertz.load_from_approach(delta, RX_209, RY_209, E_STEEL), q,
-                               rtol=1e-12)
+    np.testing.assert_allclose(
+        hertz.load_from_approach(delta, RX_209, RY_209, E_STEEL), q, rtol=1e-12
+    )
     assert hertz.load_from_approach(-1e-6, RX_209, RY_209, E_STEEL) == 0.0
 
 
@@ -195,14 +208,17 @@ def test_orientation_does_not_matter():
         assert getattr(a, name) == pytest.approx(getattr(b, name), rel=1e-12)
 
 
-@pytest.mark.parametrize("kwargs, parameter", [
-    ({"load": -1.0}, "load"),
-    ({"load": np.nan}, "load"),
-    ({"rx": 0.0}, "rx, ry"),
-    ({"ry": -1e-3}, "rx, ry"),
-    ({"effective_modulus": 0.0}, "effective_modulus"),
-    ({"method": "magic"}, "method"),
-])
+@pytest.mark.parametrize(
+    "kwargs, parameter",
+    [
+        ({"load": -1.0}, "load"),
+        ({"load": np.nan}, "load"),
+        ({"rx": 0.0}, "rx, ry"),
+        ({"ry": -1e-3}, "rx, ry"),
+        ({"effective_modulus": 0.0}, "effective_modulus"),
+        ({"method": "magic"}, "method"),
+    ],
+)
 def test_bad_input_names_the_parameter(kwargs, parameter):
     args = {"load": 100.0, "rx": RX_209, "ry": RY_209, "effective_modulus": E_STEEL, **kwargs}
     with pytest.raises(InputError) as err:

@@ -21,23 +21,27 @@ from bearinglab.operating import OperatingCondition
 from bearinglab.quasistatic import solve_load_distribution
 from bearinglab.quasistatic.orbit import inner_ring_orbit
 
-B608 = BallBearing(ball_count=7, ball_diameter=3.969e-3, pitch_diameter=15e-3,
-                   diametral_clearance=10e-6)
-SPEED = 720 * math.pi / 30          # seed 003's 608 example: 720 rpm, 0.05 kN
+B608 = BallBearing(
+    ball_count=7, ball_diameter=3.969e-3, pitch_diameter=15e-3, diametral_clearance=10e-6
+)
+SPEED = 720 * math.pi / 30  # seed 003's 608 example: 720 rpm, 0.05 kN
 
 
 # ------------------------------------------------------------------ waviness
-@pytest.mark.parametrize("kwargs", [
-    {"race": "cage", "order": 3, "amplitude": 1e-7},
-    {"race": "outer", "order": 0, "amplitude": 1e-7},
-    {"race": "outer", "order": True, "amplitude": 1e-7},
-    {"race": "outer", "order": 2.0, "amplitude": 1e-7},
-    {"race": "outer", "order": 3, "amplitude": -1e-7},
-    {"race": "outer", "order": 3, "amplitude": float("nan")},
-    {"race": "outer", "order": 3, "amplitude": 1e-7, "phase": float("inf")},
-    {"race": "inner", "order": 3, "amplitude": 1e-7, "ball": 0},
-    {"race": "ball", "order": 3, "amplitude": 1e-7, "ball": -1},
-])
+@pytest.mark.parametrize(
+    "kwargs",
+    [
+        {"race": "cage", "order": 3, "amplitude": 1e-7},
+        {"race": "outer", "order": 0, "amplitude": 1e-7},
+        {"race": "outer", "order": True, "amplitude": 1e-7},
+        {"race": "outer", "order": 2.0, "amplitude": 1e-7},
+        {"race": "outer", "order": 3, "amplitude": -1e-7},
+        {"race": "outer", "order": 3, "amplitude": float("nan")},
+        {"race": "outer", "order": 3, "amplitude": 1e-7, "phase": float("inf")},
+        {"race": "inner", "order": 3, "amplitude": 1e-7, "ball": 0},
+        {"race": "ball", "order": 3, "amplitude": 1e-7, "ball": -1},
+    ],
+)
 def test_waviness_refuses_bad_input(kwargs):
     with pytest.raises(InputError):
         Waviness(**kwargs)
@@ -49,8 +53,9 @@ def test_waviness_is_seed003_sine_with_shifted_phase():
     theta = np.linspace(0, 2 * math.pi, 50)
     theta0 = 0.7
     w = Waviness("inner", 6, 0.2e-6, phase=theta0 - math.pi / 2)
-    np.testing.assert_allclose(w.radius_deviation(theta), 0.2e-6 * np.sin(6 * theta + theta0),
-                               atol=1e-18)
+    np.testing.assert_allclose(
+        w.radius_deviation(theta), 0.2e-6 * np.sin(6 * theta + theta0), atol=1e-18
+    )
 
 
 def test_approach_change_follows_seed003_eqs_14_to_16():
@@ -58,8 +63,12 @@ def test_approach_change_follows_seed003_eqs_14_to_16():
     # 2 pi (j-1)/N_b + w_c t); eq. 16: P_k = P_i - P_o
     z, a_i, a_o, n_w = 7, 0.3e-6, 0.5e-6, 5
     th_i, th_o = 0.4, -1.1
-    imp = Imperfections([Waviness("inner", n_w, a_i, phase=th_i - math.pi / 2),
-                         Waviness("outer", n_w, a_o, phase=th_o - math.pi / 2)])
+    imp = Imperfections(
+        [
+            Waviness("inner", n_w, a_i, phase=th_i - math.pi / 2),
+            Waviness("outer", n_w, a_o, phase=th_o - math.pi / 2),
+        ]
+    )
     w_i = SPEED
     w_c = 0.5 * w_i * (1 - B608.gamma)
     t = np.linspace(0, 0.1, 11)[:, None]
@@ -78,10 +87,9 @@ def test_ball_waviness_changes_the_diameter_only_for_even_orders():
     psi = 2 * math.pi * np.arange(7) / 7
     phi = np.linspace(0, 2 * math.pi, 40)[:, None] * np.ones(7)
     for q in (1, 3, 5):
-        d = Imperfections([Waviness("ball", q, 1e-6)]).approach_change(
-            B608, psi, 0.0, phi)
+        d = Imperfections([Waviness("ball", q, 1e-6)]).approach_change(B608, psi, 0.0, phi)
         np.testing.assert_allclose(d.total, 0.0, atol=1e-20)
-        assert np.max(np.abs(d.outer)) == pytest.approx(1e-6)   # the ball is still wavy
+        assert np.max(np.abs(d.outer)) == pytest.approx(1e-6)  # the ball is still wavy
     d = Imperfections([Waviness("ball", 4, 1e-6, ball=2)]).approach_change(B608, psi, 0.0, phi)
     np.testing.assert_allclose(d.total[:, 2], 2e-6 * np.cos(4 * phi[:, 2]), atol=1e-18)
     assert not np.any(np.delete(d.total, 2, axis=1))
@@ -95,7 +103,7 @@ def test_approach_change_signs_and_inner_ring_frame():
     d = bump.approach_change(B608, psi, shaft_angle=0.3)
     assert d.inner[0] == pytest.approx(1e-6) and d.outer[0] == 0
     d = Imperfections([Waviness("outer", 1, 1e-6)]).approach_change(B608, psi)
-    assert d.outer[1] == pytest.approx(-1e-6)      # outer radius larger: less approach
+    assert d.outer[1] == pytest.approx(-1e-6)  # outer radius larger: less approach
 
 
 def test_imperfections_refuse_what_does_not_fit():
@@ -123,17 +131,25 @@ def test_ball_size_errors_are_reproducible_and_fill_the_band():
     assert BallSizeErrors.random(7, 0.0, seed=1).band == 0
 
 
-@pytest.mark.parametrize("band, seed", [(-1e-6, 1), ((3e-6, 1e-6), 1), ((1e-6,), 1),
-                                        ("wide", 1), (1e-6, None), (1e-6, -2)])
+@pytest.mark.parametrize(
+    "band, seed",
+    [(-1e-6, 1), ((3e-6, 1e-6), 1), ((1e-6,), 1), ("wide", 1), (1e-6, None), (1e-6, -2)],
+)
 def test_ball_size_errors_refuse_bad_input(band, seed):
     with pytest.raises(InputError):
         BallSizeErrors.random(7, band, seed=seed)
 
 
 # ----------------------------------------------------------- random surface
-SURFACE = {"amplitude": 1e-6, "length_circumferential": 0.5e-3, "length_axial": 0.4e-3,
-           "radius": 5.5e-3, "width": 3e-3, "points_circumferential": 512,
-           "points_axial": 41}
+SURFACE = {
+    "amplitude": 1e-6,
+    "length_circumferential": 0.5e-3,
+    "length_axial": 0.4e-3,
+    "radius": 5.5e-3,
+    "width": 3e-3,
+    "points_circumferential": 512,
+    "points_axial": 41,
+}
 
 
 def test_same_seed_same_surface():
@@ -162,9 +178,13 @@ def test_surface_autocorrelation_matches_seed002_eq6():
     mean = samples.mean(axis=0)
     error = samples.std(axis=0, ddof=1) / math.sqrt(len(samples))
     lag = np.array(lags)
-    target = exponential_autocorrelation(lag[:, None] * s.circumferential_step,
-                                         lag[None, :] * s.axial_step, 1.0,
-                                         s.length_circumferential, s.length_axial)
+    target = exponential_autocorrelation(
+        lag[:, None] * s.circumferential_step,
+        lag[None, :] * s.axial_step,
+        1.0,
+        s.length_circumferential,
+        s.length_axial,
+    )
     assert np.all(np.abs(mean - target) <= 4 * error + 0.003), (mean - target) / error
     # the lags cover both directions and the diagonal: 8 steps are 1.08 beta_r (R = 0.08
     # dh^2) and 1.5 beta_z (R = 0.03 dh^2)
@@ -185,17 +205,27 @@ def test_surface_height_interpolates_and_is_periodic():
     s = RandomSurface("inner", seed=2, **SURFACE)
     np.testing.assert_allclose(s.height(s.theta[:, None], s.z[None, :]), s.heights, atol=1e-20)
     theta = np.linspace(-1, 7, 33)
-    np.testing.assert_allclose(s.height(theta + 2 * math.pi, 0.3e-3), s.height(theta, 0.3e-3),
-                               atol=1e-20)
+    np.testing.assert_allclose(
+        s.height(theta + 2 * math.pi, 0.3e-3), s.height(theta, 0.3e-3), atol=1e-20
+    )
     mid = s.height(0.5 * (s.theta[3] + s.theta[4]), s.z[7])
     assert mid == pytest.approx(0.5 * (s.heights[3, 7] + s.heights[4, 7]), abs=1e-20)
-    assert s.height(0.1, 1.0) == s.height(0.1, 0.5 * s.width)      # held at the edge
+    assert s.height(0.1, 1.0) == s.height(0.1, 0.5 * s.width)  # held at the edge
     assert RandomSurface("inner", **{**SURFACE, "amplitude": 0.0}, seed=1).rms == 0
 
 
-@pytest.mark.parametrize("change", [{"points_circumferential": 64}, {"points_axial": 5},
-                                    {"length_axial": 0.0}, {"radius": -1.0},
-                                    {"race": "ball"}, {"seed": -1}, {"exact_rms": 1}])
+@pytest.mark.parametrize(
+    "change",
+    [
+        {"points_circumferential": 64},
+        {"points_axial": 5},
+        {"length_axial": 0.0},
+        {"radius": -1.0},
+        {"race": "ball"},
+        {"seed": -1},
+        {"exact_rms": 1},
+    ],
+)
 def test_surface_refuses_bad_input(change):
     kwargs = {"race": "outer", "seed": 1, **SURFACE, **change}
     with pytest.raises(InputError):
@@ -245,8 +275,9 @@ def test_tilted_outer_raceway_shifts_the_ball_towards_its_wider_side():
 
 
 def test_axial_shift_on_random_surfaces_for_every_ball():
-    imp = Imperfections(surfaces=[RandomSurface.for_bearing(B608, "outer", 0.2e-6, 0.3e-3,
-                                                            0.3e-3, seed=4)])
+    imp = Imperfections(
+        surfaces=[RandomSurface.for_bearing(B608, "outer", 0.2e-6, 0.3e-3, 0.3e-3, seed=4)]
+    )
     psi = 2 * math.pi * np.arange(7) / 7
     r = ball_axial_shift(B608, outer_height=lambda z: imp.surface_profile("outer", psi, z))
     assert r.ball_shift.shape == (7,) and np.all(np.abs(r.ball_shift) < 20e-6)
@@ -266,20 +297,22 @@ def test_axial_shift_refuses_bad_input():
     with pytest.raises(InputError):
         ball_axial_shift(B608, inner_offset=1e-3)
     with pytest.raises(ConvergenceError):
-        ball_axial_shift(B608, outer_height=lambda z: 2.0 * z)       # a cone, not a groove
+        ball_axial_shift(B608, outer_height=lambda z: 2.0 * z)  # a cone, not a groove
 
 
 # --------------------------------------------------------------- time sweep
 def test_time_sweep_with_ball_size_errors_is_the_ball_set_sweep_in_time():
     errors = BallSizeErrors.random(7, 2e-6, seed=1)
     c = OperatingCondition(radial_load=50.0, shaft_speed=SPEED)
-    o = inner_ring_orbit(B608, c, imperfections=Imperfections(ball_size_errors=errors),
-                         revolutions=2, points=8)
+    o = inner_ring_orbit(
+        B608, c, imperfections=Imperfections(ball_size_errors=errors), revolutions=2, points=8
+    )
     assert o.time.shape == (8,) and o.ball_centre.shape == (8, 7, 2)
-    assert o.ball_phase[0] == 0.0                # ball 0 at psi = 0 at time 0 (conventions)
+    assert o.ball_phase[0] == 0.0  # ball 0 at psi = 0 at time 0 (conventions)
     for k in (0, 5):
-        r = solve_load_distribution(B608, c, ball_phase=float(o.ball_phase[k]),
-                                    ball_diameter_errors=errors.errors)
+        r = solve_load_distribution(
+            B608, c, ball_phase=float(o.ball_phase[k]), ball_diameter_errors=errors.errors
+        )
         assert o.x[k] == pytest.approx(r.displacement[0], abs=1e-12)
         assert o.y[k] == pytest.approx(r.displacement[1], abs=1e-12)
     cage = o.frequencies["cage_hz"] / o.frequencies["shaft_hz"]
@@ -290,16 +323,22 @@ def test_time_sweep_with_ball_size_errors_is_the_ball_set_sweep_in_time():
 def test_ball_centres_take_the_unequal_split_of_the_approach():
     # the solver's per-contact film is an exact per-contact approach change: with it, the
     # loaded balls' centres must be where the orbit puts them after its correction
-    imp = Imperfections([Waviness("outer", 5, 0.5e-6, phase=0.3), Waviness("inner", 6, 0.3e-6),
-                         Waviness("ball", 3, 0.2e-6, ball=5)],
-                        ball_size_errors=BallSizeErrors.random(7, 2e-6, seed=4))
+    imp = Imperfections(
+        [
+            Waviness("outer", 5, 0.5e-6, phase=0.3),
+            Waviness("inner", 6, 0.3e-6),
+            Waviness("ball", 3, 0.2e-6, ball=5),
+        ],
+        ball_size_errors=BallSizeErrors.random(7, 2e-6, seed=4),
+    )
     c = OperatingCondition(radial_load=50.0, shaft_speed=SPEED)
     o = inner_ring_orbit(B608, c, imperfections=imp, revolutions=1, points=8)
     k = 5
     spin = 2 * math.pi * o.frequencies["ball_spin_hz"] * o.time[k]
     d = imp.approach_change(B608, o.ball_angle[k], SPEED * o.time[k], spin)
-    r = solve_load_distribution(B608, c, ball_phase=float(o.ball_phase[k]),
-                                film=np.stack([d.inner, d.outer], axis=1))
+    r = solve_load_distribution(
+        B608, c, ball_phase=float(o.ball_phase[k]), film=np.stack([d.inner, d.outer], axis=1)
+    )
     np.testing.assert_allclose(r.displacement[:2], [o.x[k], o.y[k]], atol=1e-12)
     loaded = r.load.min(axis=1) > 1.0
     assert loaded.sum() >= 2
@@ -308,15 +347,18 @@ def test_ball_centres_take_the_unequal_split_of_the_approach():
 
 def test_time_sweep_outputs_and_refusals():
     c = OperatingCondition(radial_load=50.0, shaft_speed=SPEED)
-    imp = Imperfections([Waviness("outer", 6, 0.2e-6)], surfaces=[
-        RandomSurface.for_bearing(B608, "inner", 0.1e-6, 0.5e-3, 0.5e-3, seed=3)])
+    imp = Imperfections(
+        [Waviness("outer", 6, 0.2e-6)],
+        surfaces=[RandomSurface.for_bearing(B608, "inner", 0.1e-6, 0.5e-3, 0.5e-3, seed=3)],
+    )
     o = inner_ring_orbit(B608, c, imperfections=imp, duration=0.02, points=6)
     d = o.to_dict()
     assert len(d["time_s"]) == 6 and len(d["ball_radial_displacement_um"][0]) == 7
     assert d["cage_hz"] == pytest.approx(12 * 0.5 * (1 - B608.gamma))
     assert o.ring_velocity.shape == (6, 2) and o.ball_radial_velocity.shape == (6, 7)
-    shifted = inner_ring_orbit(B608, c, imperfections=imp, duration=0.02, points=3,
-                               surface_contact="axial_shift")
+    shifted = inner_ring_orbit(
+        B608, c, imperfections=imp, duration=0.02, points=3, surface_contact="axial_shift"
+    )
     assert shifted.peak_to_peak > 0
     with pytest.raises(InputError):
         inner_ring_orbit(B608, OperatingCondition(radial_load=50.0), revolutions=1)
@@ -331,10 +373,10 @@ def test_time_sweep_outputs_and_refusals():
     with pytest.raises(InputError):
         inner_ring_orbit(B608, c, imperfections="wavy")
     with pytest.raises(InputError):
-        inner_ring_orbit(B608, c, revolutions=1, ball_phase=0.1)     # the sweep sets it
+        inner_ring_orbit(B608, c, revolutions=1, ball_phase=0.1)  # the sweep sets it
     ball_set = inner_ring_orbit(B608, c)
     with pytest.raises(InputError):
-        _ = ball_set.ring_velocity                       # a ball-set sweep has no time
+        _ = ball_set.ring_velocity  # a ball-set sweep has no time
 
 
 def test_orbit_plots():
@@ -342,8 +384,13 @@ def test_orbit_plots():
     import matplotlib.pyplot as plt
 
     c = OperatingCondition(radial_load=50.0, shaft_speed=SPEED)
-    o = inner_ring_orbit(B608, c, imperfections=Imperfections([Waviness("inner", 6, 2e-7)]),
-                         revolutions=0.5, points=6)
+    o = inner_ring_orbit(
+        B608,
+        c,
+        imperfections=Imperfections([Waviness("inner", 6, 2e-7)]),
+        revolutions=0.5,
+        points=6,
+    )
     fig, _ = o.plot()
     fig2, axes = o.plot_history()
     assert len(axes) == 2

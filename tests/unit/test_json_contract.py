@@ -18,25 +18,89 @@ COMMANDS = {
     "info-gost": ["info", "180205"],
     "frequencies": ["frequencies", "6205-2RS", "--speed-rpm", "1797"],
     "contact": ["contact", "6205", "--ball-load-n", "1000"],
-    "static": ["static", "6205", "--radial-load-n", "1000", "--axial-load-n", "200",
-               "--speed-rpm", "3000"],
-    "static-orbit": ["static", "608", "--radial-load-n", "50", "--speed-rpm", "720",
-                     "--waviness", "outer:order=8,amplitude_um=0.5", "--orbit"],
+    "static": [
+        "static",
+        "6205",
+        "--radial-load-n",
+        "1000",
+        "--axial-load-n",
+        "200",
+        "--speed-rpm",
+        "3000",
+    ],
+    "static-orbit": [
+        "static",
+        "608",
+        "--radial-load-n",
+        "50",
+        "--speed-rpm",
+        "720",
+        "--waviness",
+        "outer:order=8,amplitude_um=0.5",
+        "--orbit",
+    ],
     "stiffness-map": ["stiffness-map", "6205", "--radial-load-n", "0:1000:2"],
     "ring-modes": ["ring-modes", "310", "--system", "gost", "--axial-load-n", "200"],
-    "simulate": ["simulate", "6205", "--speed-rpm", "1800", "--radial-load-n", "500",
-                 "--defect", "outer:width_mm=1", "--duration-s", "0.5", "--sample-rate-hz",
-                 "10000", "-o", "tmp/sim.npz"],
-    "noise": ["noise", "608", "--speed-rpm", "720", "--radial-load-n", "50", "--waviness",
-              "inner:order=7,amplitude_um=0.2"],
+    "simulate": [
+        "simulate",
+        "6205",
+        "--speed-rpm",
+        "1800",
+        "--radial-load-n",
+        "500",
+        "--defect",
+        "outer:width_mm=1",
+        "--duration-s",
+        "0.5",
+        "--sample-rate-hz",
+        "10000",
+        "-o",
+        "tmp/sim.npz",
+    ],
+    "noise": [
+        "noise",
+        "608",
+        "--speed-rpm",
+        "720",
+        "--radial-load-n",
+        "50",
+        "--waviness",
+        "inner:order=7,amplitude_um=0.2",
+    ],
     "friction": ["friction", "6205", "--speed-rpm", "3000", "--radial-load-n", "1000"],
     "life": ["life", "6205", "--speed-rpm", "3000", "--radial-load-n", "1000"],
-    "report": ["report", "6205", "--speed-rpm", "1797", "--radial-load-n", "1000", "-o",
-               "tmp/report.html"],
-    "study": ["study", "frequencies", "--set", "designation=6205", "--set",
-              "speed_rpm=1000,2000", "-o", "tmp/study", "--scheduler", "serial"],
-    "dataset": ["dataset", "tmp/data", "--records", "2", "--duration-s", "0.3",
-                "--scheduler", "serial"],
+    "report": [
+        "report",
+        "6205",
+        "--speed-rpm",
+        "1797",
+        "--radial-load-n",
+        "1000",
+        "-o",
+        "tmp/report.html",
+    ],
+    "study": [
+        "study",
+        "frequencies",
+        "--set",
+        "designation=6205",
+        "--set",
+        "speed_rpm=1000,2000",
+        "-o",
+        "tmp/study",
+        "--scheduler",
+        "serial",
+    ],
+    "dataset": [
+        "dataset",
+        "tmp/data",
+        "--records",
+        "2",
+        "--duration-s",
+        "0.3",
+        "--scheduler",
+        "serial",
+    ],
 }
 #: Fault families, one spelling everywhere (docs/json.md).
 FAMILIES = {"outer_race", "inner_race", "ball", "cage"}
@@ -75,9 +139,10 @@ def outputs(tmp_path_factory):
             code = main([*argv, "--json"])
         assert code == 0, name
         out[name] = json.loads(buffer.getvalue())
-    later = {"analyze": ["analyze", str(tmp / "sim.npz"), "--designation", "6205",
-                         "--speed-rpm", "1800"]}
-    if (REAL / "labels.csv").exists():      # a labelled folder of one real record
+    later = {
+        "analyze": ["analyze", str(tmp / "sim.npz"), "--designation", "6205", "--speed-rpm", "1800"]
+    }
+    if (REAL / "labels.csv").exists():  # a labelled folder of one real record
         import shutil
 
         folder = tmp / "bench"
@@ -86,8 +151,8 @@ def outputs(tmp_path_factory):
         lines = (REAL / "labels.csv").read_text(encoding="utf-8").splitlines()
         row = next(line for line in lines if line.startswith("cwru/12k_DE/130.mat"))
         (folder / "labels.csv").write_text(
-            lines[0] + "\n" + row.replace("cwru/12k_DE/130.mat", "130.mat") + "\n",
-            encoding="utf-8")
+            lines[0] + "\n" + row.replace("cwru/12k_DE/130.mat", "130.mat") + "\n", encoding="utf-8"
+        )
         later["benchmark"] = ["benchmark", str(folder)]
     for name, argv in later.items():
         buffer = io.StringIO()
@@ -113,8 +178,7 @@ def _families_named(obj) -> set:
                 named |= set(value)
             elif key in ("faults",) and isinstance(value, list):
                 named |= {v for v in value if isinstance(v, str)}
-            elif key in ("likely_fault", "primary_fault", "expected") and isinstance(value,
-                                                                                     str):
+            elif key in ("likely_fault", "primary_fault", "expected") and isinstance(value, str):
                 named |= set(value.removeprefix("compound: ").split(" + "))
             else:
                 named |= _families_named(value)

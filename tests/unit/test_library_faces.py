@@ -19,11 +19,14 @@ def test_every_top_level_name_resolves():
 
 
 def test_import_bearinglab_is_light():
-    code = ("import sys, bearinglab; "
-            "print(sorted(m for m in sys.modules if m.split('.')[0] in "
-            "('numpy', 'scipy', 'pandas', 'numba', 'matplotlib')))")
-    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                         check=True).stdout.strip()
+    code = (
+        "import sys, bearinglab; "
+        "print(sorted(m for m in sys.modules if m.split('.')[0] in "
+        "('numpy', 'scipy', 'pandas', 'numba', 'matplotlib')))"
+    )
+    out = subprocess.run(
+        [sys.executable, "-c", code], capture_output=True, text=True, check=True
+    ).stdout.strip()
     assert out == "[]"
 
 
@@ -33,9 +36,9 @@ def test_speed_in_rpm_by_keyword():
     by_rad = bl.defect_frequencies(bearing, 1797 * math.pi / 30)
     assert by_rpm.hz("bpfo") == pytest.approx(by_rad.hz("bpfo"), rel=1e-14)
     with pytest.raises(InputError):
-        bl.defect_frequencies(bearing, 1.0, speed_rpm=1797)      # not both
+        bl.defect_frequencies(bearing, 1.0, speed_rpm=1797)  # not both
     with pytest.raises(InputError):
-        bl.defect_frequencies(bearing)                           # not neither
+        bl.defect_frequencies(bearing)  # not neither
     condition = bl.OperatingCondition.at_rpm(1797, radial_load=500.0)
     assert condition.speed_rpm == pytest.approx(1797)
     assert bl.rad_s_to_rpm(bl.rpm_to_rad_s(1797)) == pytest.approx(1797)

@@ -45,16 +45,22 @@ RPM = math.pi / 30
 
 
 def deep_groove(**kw):
-    args = {"ball_count": 9, "ball_diameter": 7.94e-3, "pitch_diameter": 39.04e-3,
-            "inner_groove_factor": 0.52, "outer_groove_factor": 0.53}
+    args = {
+        "ball_count": 9,
+        "ball_diameter": 7.94e-3,
+        "pitch_diameter": 39.04e-3,
+        "inner_groove_factor": 0.52,
+        "outer_groove_factor": 0.53,
+    }
     args.update(kw)
     return BallBearing(**args)
 
 
 # ------------------------------------------------------------------ the tables themselves
 def _hertz_load_at(stress, rx, ry, e_prime):
-    return optimize.brentq(lambda q: hertz.point_contact(q, rx, ry, e_prime).max_pressure
-                           - stress, 1e-6, 1e9)
+    return optimize.brentq(
+        lambda q: hertz.point_contact(q, rx, ry, e_prime).max_pressure - stress, 1e-6, 1e9
+    )
 
 
 def test_f0_table_is_the_4200_mpa_hertz_contact():
@@ -65,7 +71,7 @@ def test_f0_table_is_the_4200_mpa_hertz_contact():
     # 0.053 at 0.12 (0.10 %). The radial table of the stored copy printed 15.7 at 0.06: the
     # derivation gives 15.93, the kept value is 15.9.
     e_prime = 207e9 / (1 - 0.3**2)
-    d_w = 1e-3                                     # 1 mm ball: f_0 = Q / (5 D_w^2)
+    d_w = 1e-3  # 1 mm ball: f_0 = Q / (5 D_w^2)
     for gamma, f0 in zip(T.F0_GAMMA, T.F0_RADIAL, strict=True):
         inner = _hertz_load_at(4.2e9, d_w * (1 - gamma) / 2, 0.52 * d_w / 0.04, e_prime)
         outer = _hertz_load_at(4.2e9, d_w * (1 + gamma) / 2, 0.53 * d_w / 0.06, e_prime)
@@ -78,10 +84,22 @@ def test_f0_table_is_the_4200_mpa_hertz_contact():
 
 def _lundberg_palmgren_fc(gamma, f_i, f_o):
     """Harris/Lundberg-Palmgren f_c without its constant."""
-    bracket = (1 + (1.04 * ((1 - gamma) / (1 + gamma)) ** 1.72
-                    * (f_i * (2 * f_o - 1) / (f_o * (2 * f_i - 1))) ** 0.41) ** (10 / 3)) ** -0.3
-    return (bracket * gamma**0.3 * (1 - gamma) ** 1.39 / (1 + gamma) ** (1 / 3)
-            * (2 * f_i / (2 * f_i - 1)) ** 0.41)
+    bracket = (
+        1
+        + (
+            1.04
+            * ((1 - gamma) / (1 + gamma)) ** 1.72
+            * (f_i * (2 * f_o - 1) / (f_o * (2 * f_i - 1))) ** 0.41
+        )
+        ** (10 / 3)
+    ) ** -0.3
+    return (
+        bracket
+        * gamma**0.3
+        * (1 - gamma) ** 1.39
+        / (1 + gamma) ** (1 / 3)
+        * (2 * f_i / (2 * f_i - 1)) ** 0.41
+    )
 
 
 def test_fc_table_follows_lundberg_palmgren_shape():
@@ -146,14 +164,18 @@ def test_ratings_follow_the_iso_formulas():
     a = math.radians(40)
     ga = d_w * math.cos(a) / d_pw
     assert dynamic_load_rating(z, d_w, d_pw, a) == pytest.approx(
-        1.3 * fc_factor(ga) * math.cos(a) ** 0.7 * z ** (2 / 3) * 7.94**1.8, rel=1e-12)
+        1.3 * fc_factor(ga) * math.cos(a) ** 0.7 * z ** (2 / 3) * 7.94**1.8, rel=1e-12
+    )
     assert static_load_rating(z, d_w, d_pw, a, rows=2) == pytest.approx(
-        f0_factor(ga) * 2 * z * 7.94**2 * math.cos(a), rel=1e-12)
+        f0_factor(ga) * 2 * z * 7.94**2 * math.cos(a), rel=1e-12
+    )
     # thrust, 90 deg: C_a = b_m f_c Z^(2/3) D_w^1.8, C_0a = f_0 Z D_w^2
     assert dynamic_load_rating(12, 6e-3, 40e-3, math.pi / 2) == pytest.approx(
-        1.3 * fc_factor(0.15, thrust=True) * 12 ** (2 / 3) * 6**1.8, rel=1e-12)
+        1.3 * fc_factor(0.15, thrust=True) * 12 ** (2 / 3) * 6**1.8, rel=1e-12
+    )
     assert static_load_rating(12, 6e-3, 40e-3, math.pi / 2) == pytest.approx(
-        f0_factor(0.15, thrust=True) * 12 * 36, rel=1e-12)
+        f0_factor(0.15, thrust=True) * 12 * 36, rel=1e-12
+    )
 
 
 def test_large_balls_use_3_647_dw_1_4_and_meet_at_one_inch():
@@ -161,7 +183,8 @@ def test_large_balls_use_3_647_dw_1_4_and_meet_at_one_inch():
     above = dynamic_load_rating(12, 25.4e-3 * (1 + 1e-9), 200e-3)
     assert above == pytest.approx(below, rel=1e-4)
     assert dynamic_load_rating(12, 30e-3, 200e-3) == pytest.approx(
-        3.647 * 1.3 * fc_factor(0.15) * 12 ** (2 / 3) * 30**1.4, rel=1e-12)
+        3.647 * 1.3 * fc_factor(0.15) * 12 ** (2 / 3) * 30**1.4, rel=1e-12
+    )
 
 
 def test_fatigue_load_limit_size_factor():
@@ -175,26 +198,50 @@ def test_load_ratings_of_catalogue_bearings_and_warnings():
     assert r.fatigue_limit == pytest.approx(r.static / 22) and not r.warnings
     loose = load_ratings(deep_groove(outer_groove_factor=0.55))
     assert any("0.53 D_w" in w for w in loose.warnings)
-    assert loose.dynamic == load_ratings(deep_groove()).dynamic     # no correction applied
-    thrust = BallBearing(ball_count=12, ball_diameter=6e-3, pitch_diameter=40e-3,
-                         contact_angle=math.pi / 2, bearing_type="thrust_ball")
+    assert loose.dynamic == load_ratings(deep_groove()).dynamic  # no correction applied
+    thrust = BallBearing(
+        ball_count=12,
+        ball_diameter=6e-3,
+        pitch_diameter=40e-3,
+        contact_angle=math.pi / 2,
+        bearing_type="thrust_ball",
+    )
     rt = load_ratings(thrust)
     assert rt.thrust and any("single" in w for w in rt.warnings)
 
 
-@pytest.mark.parametrize("bearing, word", [
-    (deep_groove(bearing_type="four_point_contact_ball", contact_angle=0.6), "bearing_type"),
-    (BallBearing(ball_count=12, ball_diameter=6e-3, pitch_diameter=40e-3, contact_angle=1.2,
-                 bearing_type="thrust_ball"), "contact_angle"),
-    (BallBearing(ball_count=3, ball_diameter=20e-3, pitch_diameter=40e-3), "gamma"),
-])
+@pytest.mark.parametrize(
+    "bearing, word",
+    [
+        (deep_groove(bearing_type="four_point_contact_ball", contact_angle=0.6), "bearing_type"),
+        (
+            BallBearing(
+                ball_count=12,
+                ball_diameter=6e-3,
+                pitch_diameter=40e-3,
+                contact_angle=1.2,
+                bearing_type="thrust_ball",
+            ),
+            "contact_angle",
+        ),
+        (BallBearing(ball_count=3, ball_diameter=20e-3, pitch_diameter=40e-3), "gamma"),
+    ],
+)
 def test_load_ratings_refuse(bearing, word):
     with pytest.raises(InputError, match=word):
         load_ratings(bearing)
 
 
-@pytest.mark.parametrize("args", [(2, 7e-3, 39e-3), (9, -7e-3, 39e-3), (9, 7e-3, 6e-3),
-                                  (9, 7e-3, 39e-3, 2.0), (9, 7e-3, 39e-3, 0.0, 0)])
+@pytest.mark.parametrize(
+    "args",
+    [
+        (2, 7e-3, 39e-3),
+        (9, -7e-3, 39e-3),
+        (9, 7e-3, 6e-3),
+        (9, 7e-3, 39e-3, 2.0),
+        (9, 7e-3, 39e-3, 0.0, 0),
+    ],
+)
 def test_rating_functions_refuse_bad_sets(args):
     with pytest.raises(InputError):
         dynamic_load_rating(*args)
@@ -237,8 +284,13 @@ def test_static_equivalent_load():
     assert static_load_factors(math.radians(25)) == (0.5, 0.38)
     with pytest.raises(InputError):
         static_load_factors(math.radians(3))
-    thrust = BallBearing(ball_count=12, ball_diameter=6e-3, pitch_diameter=40e-3,
-                         contact_angle=math.pi / 2, bearing_type="thrust_ball")
+    thrust = BallBearing(
+        ball_count=12,
+        ball_diameter=6e-3,
+        pitch_diameter=40e-3,
+        contact_angle=math.pi / 2,
+        bearing_type="thrust_ball",
+    )
     assert equivalent_static_load(thrust, 0.0, 800.0) == 800.0
     with pytest.raises(InputError, match="radial_load"):
         equivalent_dynamic_load(thrust, 100.0, 800.0)
@@ -257,9 +309,11 @@ def test_reliability_factor_table_and_range():
 def test_rated_viscosity_branches():
     # 4500 n^-0.5 D_pw^-0.5 above 1000 rpm; the two branches differ by 2.3 % at 1000 rpm
     assert rated_viscosity(3000 * RPM, 0.05) * 1e6 == pytest.approx(
-        4500 / math.sqrt(3000) / math.sqrt(50))
+        4500 / math.sqrt(3000) / math.sqrt(50)
+    )
     assert rated_viscosity(300 * RPM, 0.05) * 1e6 == pytest.approx(
-        45000 * 300**-0.83 / math.sqrt(50))
+        45000 * 300**-0.83 / math.sqrt(50)
+    )
     lo, hi = rated_viscosity(999.999 * RPM, 0.05), rated_viscosity(1000 * RPM, 0.05)
     assert lo / hi == pytest.approx(1.0, abs=0.03)
     with pytest.raises(InputError):
@@ -287,8 +341,9 @@ def test_a_iso_limits():
     # EP additives: kappa < 1 and e_C >= 0.2 -> kappa = 1, capped at 3
     ep = life_modification_factor(0.3, 2.0, ep_additives=True, contamination=0.5)
     assert ep == min(3.0, life_modification_factor(1.0, 2.0))
-    assert life_modification_factor(0.3, 2.0, ep_additives=True, contamination=0.1) == \
-        life_modification_factor(0.3, 2.0)
+    assert life_modification_factor(
+        0.3, 2.0, ep_additives=True, contamination=0.1
+    ) == life_modification_factor(0.3, 2.0)
 
 
 @settings(deadline=None, max_examples=60)
@@ -297,8 +352,8 @@ def test_a_iso_is_monotonic_and_capped(k1, k2, r1, r2):
     lo_k, hi_k = sorted((k1, k2))
     lo_r, hi_r = sorted((r1, r2))
     a = life_modification_factor
-    assert a(lo_k, lo_r) <= a(hi_k, lo_r) * (1 + 1e-9)        # more viscosity: longer
-    assert a(lo_k, lo_r) <= a(lo_k, hi_r) * (1 + 1e-9)        # cleaner / lighter: longer
+    assert a(lo_k, lo_r) <= a(hi_k, lo_r) * (1 + 1e-9)  # more viscosity: longer
+    assert a(lo_k, lo_r) <= a(lo_k, hi_r) * (1 + 1e-9)  # cleaner / lighter: longer
     assert 0.1 - 1e-9 <= a(k1, r1) <= 50.0
 
 
@@ -306,8 +361,10 @@ def test_a_iso_is_monotonic_and_capped(k1, k2, r1, r2):
 @given(st.floats(10.0, 5000.0), st.floats(1.05, 20.0))
 def test_life_falls_with_load_as_c_over_p_cubed(load, scale):
     b = deep_groove()
-    life = [rating_life(b, OperatingCondition(radial_load=f, shaft_speed=1000 * RPM)).l10
-            for f in (load, load * scale)]
+    life = [
+        rating_life(b, OperatingCondition(radial_load=f, shaft_speed=1000 * RPM)).l10
+        for f in (load, load * scale)
+    ]
     assert life[1] == pytest.approx(life[0] / scale**3, rel=1e-9)
     c = load_ratings(b).dynamic
     assert life[0] == pytest.approx((c / load) ** 3, rel=1e-12)
@@ -316,17 +373,22 @@ def test_life_falls_with_load_as_c_over_p_cubed(load, scale):
 # ------------------------------------------------------------------ rating life, ISO 281
 def test_rating_life_iso281_numbers():
     b, _ = bearing_from_designation("6205")
-    r = rating_life(b, OperatingCondition(radial_load=2000.0, axial_load=300.0,
-                                          shaft_speed=1500 * RPM),
-                    reliability_percent=99.0, viscosity=30e-6, contamination="high")
-    assert r.equivalent_load == 2000.0                      # F_a/F_r = 0.15 < e
+    r = rating_life(
+        b,
+        OperatingCondition(radial_load=2000.0, axial_load=300.0, shaft_speed=1500 * RPM),
+        reliability_percent=99.0,
+        viscosity=30e-6,
+        contamination="high",
+    )
+    assert r.equivalent_load == 2000.0  # F_a/F_r = 0.15 < e
     assert r.l10 == pytest.approx((r.ratings.dynamic / 2000.0) ** 3)
     assert r.l10_hours == pytest.approx(r.l10 * 1e6 / 1500 / 60)
     nu1 = 4500 / math.sqrt(1500) / math.sqrt(b.pitch_diameter * 1e3) * 1e-6
     assert r.kappa == pytest.approx(30e-6 / nu1)
     assert r.a1 == 0.25 and r.contamination == pytest.approx(0.7)
-    assert r.a_iso == pytest.approx(life_modification_factor(
-        r.kappa, 0.7 * r.ratings.static / 22 / 2000.0))
+    assert r.a_iso == pytest.approx(
+        life_modification_factor(r.kappa, 0.7 * r.ratings.static / 22 / 2000.0)
+    )
     assert r.lnm == pytest.approx(0.25 * r.a_iso * r.l10)
     assert r.static_safety_factor == pytest.approx(r.ratings.static / 2000.0)
     d = r.to_dict()
@@ -344,14 +406,17 @@ def test_rating_life_without_viscosity_and_defaults():
     assert r.contamination == pytest.approx(0.55) and any("normal" in w for w in r.warnings)
 
 
-@pytest.mark.parametrize("kwargs, word", [
-    ({"method": "iso9999"}, "method"),
-    ({"rotating": "cage"}, "rotating"),
-    ({"reliability_percent": 80.0}, "reliability"),
-    ({"viscosity": -1.0}, "viscosity"),
-    ({"viscosity": 1e-9}, "viscosity"),                   # kappa far below 0.1
-    ({"contamination": "mud"}, "contamination"),
-])
+@pytest.mark.parametrize(
+    "kwargs, word",
+    [
+        ({"method": "iso9999"}, "method"),
+        ({"rotating": "cage"}, "rotating"),
+        ({"reliability_percent": 80.0}, "reliability"),
+        ({"viscosity": -1.0}, "viscosity"),
+        ({"viscosity": 1e-9}, "viscosity"),  # kappa far below 0.1
+        ({"contamination": "mud"}, "contamination"),
+    ],
+)
 def test_rating_life_refuses(kwargs, word):
     cond = OperatingCondition(radial_load=1000.0, shaft_speed=3000 * RPM)
     with pytest.raises(InputError, match=word):
@@ -361,37 +426,52 @@ def test_rating_life_refuses(kwargs, word):
 def test_rating_life_refuses_conditions():
     with pytest.raises(InputError, match="shaft_speed"):
         rating_life(deep_groove(), OperatingCondition(radial_load=1000.0))
-    tilted = OperatingCondition(radial_load=1000.0, shaft_speed=100.0,
-                                misalignment=(1e-3, 0.0))
+    tilted = OperatingCondition(radial_load=1000.0, shaft_speed=100.0, misalignment=(1e-3, 0.0))
     with pytest.raises(InputError, match="iso16281"):
         rating_life(deep_groove(), tilted)
 
 
 def test_thrust_bearing_life_has_no_a_iso():
-    thrust = BallBearing(ball_count=12, ball_diameter=6e-3, pitch_diameter=40e-3,
-                         contact_angle=math.pi / 2, bearing_type="thrust_ball")
-    r = rating_life(thrust, OperatingCondition(axial_load=1000.0, shaft_speed=1000 * RPM),
-                    viscosity=50e-6)
+    thrust = BallBearing(
+        ball_count=12,
+        ball_diameter=6e-3,
+        pitch_diameter=40e-3,
+        contact_angle=math.pi / 2,
+        bearing_type="thrust_ball",
+    )
+    r = rating_life(
+        thrust, OperatingCondition(axial_load=1000.0, shaft_speed=1000 * RPM), viscosity=50e-6
+    )
     assert r.l10 == pytest.approx((r.ratings.dynamic / 1000.0) ** 3)
     assert r.a_iso is None and r.kappa is not None
     with pytest.raises(InputError, match="bearing_type"):
-        rating_life(thrust, OperatingCondition(axial_load=1000.0, shaft_speed=100.0),
-                    method="iso16281")
+        rating_life(
+            thrust, OperatingCondition(axial_load=1000.0, shaft_speed=100.0), method="iso16281"
+        )
 
 
 # ------------------------------------------------------------------ ISO/TS 16281
-@pytest.mark.parametrize("z, d_w, d_pw, measured", [
-    (9, 7.94e-3, 39.04e-3, 0.988),      # 6205-size
-    (8, 6.746e-3, 28.5e-3, 1.019),      # 6203-size
-    (12, 7.94e-3, 50e-3, 1.004),
-])
+@pytest.mark.parametrize(
+    "z, d_w, d_pw, measured",
+    [
+        (9, 7.94e-3, 39.04e-3, 0.988),  # 6205-size
+        (8, 6.746e-3, 28.5e-3, 1.019),  # 6203-size
+        (12, 7.94e-3, 50e-3, 1.004),
+    ],
+)
 def test_iso16281_equals_iso281_for_zero_clearance_radial_load(z, d_w, d_pw, measured):
     # With P_d = 0, f_i = 0.52, f_e = 0.53 and a radial load, L10r / (C/F_r)^3 was measured
     # 0.988 (9 balls), 1.019 (8 balls), 1.004 (12 balls), independent of the load: the
     # ISO factors 0.407/0.389 assume Stribeck's continuous half-zone, the solver's ball set
     # is discrete (one ball under the load). Tolerance 2.5 %.
-    b = BallBearing(ball_count=z, ball_diameter=d_w, pitch_diameter=d_pw,
-                    inner_groove_factor=0.52, outer_groove_factor=0.53, diametral_clearance=0.0)
+    b = BallBearing(
+        ball_count=z,
+        ball_diameter=d_w,
+        pitch_diameter=d_pw,
+        inner_groove_factor=0.52,
+        outer_groove_factor=0.53,
+        diametral_clearance=0.0,
+    )
     c = load_ratings(b).dynamic
     for load in (0.05 * c, 0.2 * c):
         ref = reference_rating_life(b, OperatingCondition(radial_load=load), c)
@@ -408,8 +488,11 @@ def test_iso16281_counts_clearance_and_misalignment():
     cond = OperatingCondition(radial_load=2000.0, shaft_speed=1500 * RPM)
     base = rating_life(b, cond, method="iso16281")
     loose = rating_life(deep_groove(diametral_clearance=30e-6), cond, method="iso16281")
-    tilted = rating_life(b, OperatingCondition(radial_load=2000.0, shaft_speed=1500 * RPM,
-                                               misalignment=(5e-3, 0.0)), method="iso16281")
+    tilted = rating_life(
+        b,
+        OperatingCondition(radial_load=2000.0, shaft_speed=1500 * RPM, misalignment=(5e-3, 0.0)),
+        method="iso16281",
+    )
     assert base.l10 == pytest.approx(341, rel=0.01)
     assert loose.l10 == pytest.approx(277, rel=0.01) and tilted.l10 == pytest.approx(219, rel=0.01)
     assert base.equivalent_load == pytest.approx(base.ratings.dynamic / base.l10 ** (1 / 3))
@@ -431,8 +514,11 @@ def test_life_plot():
     import matplotlib
 
     matplotlib.use("Agg")
-    r = rating_life(deep_groove(), OperatingCondition(radial_load=1000.0,
-                                                      shaft_speed=1000 * RPM), viscosity=40e-6)
+    r = rating_life(
+        deep_groove(),
+        OperatingCondition(radial_load=1000.0, shaft_speed=1000 * RPM),
+        viscosity=40e-6,
+    )
     fig, ax = r.plot()
     assert ax.get_xscale() == "log" and len(ax.lines) == 3
     import matplotlib.pyplot as plt
@@ -447,9 +533,18 @@ def main(argv):
     return cli_main(argv)
 
 
-KEYS = {"dynamic_rating_n", "static_rating_n", "equivalent_load_n", "l10_hours",
-        "l10_million_rev", "a_iso", "l10m_hours", "static_safety_factor",
-        "fatigue_load_limit_n", "kappa"}
+KEYS = {
+    "dynamic_rating_n",
+    "static_rating_n",
+    "equivalent_load_n",
+    "l10_hours",
+    "l10_million_rev",
+    "a_iso",
+    "l10m_hours",
+    "static_safety_factor",
+    "fatigue_load_limit_n",
+    "kappa",
+}
 
 
 def run_json(capsys, *args):
@@ -457,53 +552,114 @@ def run_json(capsys, *args):
 
 
 def test_cli_life_json(capsys):
-    d = run_json(capsys, "6205", "--speed-rpm", "1500", "--radial-load-n", "2000",
-                 "--axial-load-n", "300", "--viscosity-mm2-s", "30", "--contamination", "high")
+    d = run_json(
+        capsys,
+        "6205",
+        "--speed-rpm",
+        "1500",
+        "--radial-load-n",
+        "2000",
+        "--axial-load-n",
+        "300",
+        "--viscosity-mm2-s",
+        "30",
+        "--contamination",
+        "high",
+    )
     assert KEYS <= d.keys()
     assert d["dynamic_rating_n"] == pytest.approx(14027, rel=1e-4)
     assert d["l10_million_rev"] == pytest.approx((d["dynamic_rating_n"] / 2000) ** 3)
     assert d["a_iso"] > 1 and d["l10m_hours"] > d["l10_hours"]
     bare = run_json(capsys, "6205", "--speed-rpm", "1500", "--radial-load-n", "2000")
     assert bare["a_iso"] is None and bare["kappa"] is None and bare["l10m_hours"] is None
-    num = run_json(capsys, "6205", "--speed-rpm", "1500", "--radial-load-n", "2000",
-                   "--viscosity-mm2-s", "30", "--contamination", "0.7",
-                   "--reliability-percent", "95")
+    num = run_json(
+        capsys,
+        "6205",
+        "--speed-rpm",
+        "1500",
+        "--radial-load-n",
+        "2000",
+        "--viscosity-mm2-s",
+        "30",
+        "--contamination",
+        "0.7",
+        "--reliability-percent",
+        "95",
+    )
     assert num["contamination_factor"] == 0.7 and num["a1"] == 0.64
 
 
 def test_cli_life_iso16281(capsys):
-    d = run_json(capsys, "6205", "--speed-rpm", "1500", "--radial-load-n", "2000",
-                 "--method", "iso16281", "--misalignment-mrad", "1")
+    d = run_json(
+        capsys,
+        "6205",
+        "--speed-rpm",
+        "1500",
+        "--radial-load-n",
+        "2000",
+        "--method",
+        "iso16281",
+        "--misalignment-mrad",
+        "1",
+    )
     assert KEYS <= d.keys() and d["method"] == "iso16281"
     assert d["equivalent_load_n"] == d["reference_load_n"] > d["iso281_equivalent_load_n"]
 
 
 def test_cli_life_table_and_plot(capsys, tmp_path):
     out = tmp_path / "life.png"
-    assert main(["life", "6203", "--speed-rpm", "1800", "--radial-load-n", "800",
-                 "--viscosity-mm2-s", "20", "--plot", str(out)]) == 0
+    assert (
+        main(
+            [
+                "life",
+                "6203",
+                "--speed-rpm",
+                "1800",
+                "--radial-load-n",
+                "800",
+                "--viscosity-mm2-s",
+                "20",
+                "--plot",
+                str(out),
+            ]
+        )
+        == 0
+    )
     text = capsys.readouterr().out
     assert "basic rating life L10" in text and "a_ISO" in text
     assert out.read_bytes()[:4] == b"\x89PNG"
 
 
-@pytest.mark.parametrize("args, words", [
-    (["6205", "--speed-rpm", "0", "--radial-load-n", "100"], "--speed-rpm"),
-    (["6205", "--speed-rpm", "100"], "--radial-load-n"),
-    (["6205", "--speed-rpm", "100", "--radial-load-n", "-1"], "--radial-load-n"),
-    (["6205", "--speed-rpm", "100", "--radial-load-n", "10", "--reliability-percent", "50"],
-     "--reliability-percent"),
-    (["6205", "--speed-rpm", "100", "--radial-load-n", "10", "--contamination", "mud"],
-     "--contamination"),
-    (["6205", "--speed-rpm", "100", "--radial-load-n", "10", "--contamination", "2"],
-     "--contamination"),
-    (["6205", "--speed-rpm", "10", "--radial-load-n", "10", "--viscosity-mm2-s", "1"],
-     "--viscosity-mm2-s"),
-    (["6205", "--speed-rpm", "100", "--radial-load-n", "10", "--misalignment-mrad", "1"],
-     "--misalignment-mrad"),
-    (["6205", "--speed-rpm", "100", "--radial-load-n", "10", "--method", "lp"], "--method"),
-    (["QJ205", "--speed-rpm", "100", "--radial-load-n", "10"], "bearing_type"),
-])
+@pytest.mark.parametrize(
+    "args, words",
+    [
+        (["6205", "--speed-rpm", "0", "--radial-load-n", "100"], "--speed-rpm"),
+        (["6205", "--speed-rpm", "100"], "--radial-load-n"),
+        (["6205", "--speed-rpm", "100", "--radial-load-n", "-1"], "--radial-load-n"),
+        (
+            ["6205", "--speed-rpm", "100", "--radial-load-n", "10", "--reliability-percent", "50"],
+            "--reliability-percent",
+        ),
+        (
+            ["6205", "--speed-rpm", "100", "--radial-load-n", "10", "--contamination", "mud"],
+            "--contamination",
+        ),
+        (
+            ["6205", "--speed-rpm", "100", "--radial-load-n", "10", "--contamination", "2"],
+            "--contamination",
+        ),
+        (
+            ["6205", "--speed-rpm", "10", "--radial-load-n", "10", "--viscosity-mm2-s", "1"],
+            "--viscosity-mm2-s",
+        ),
+        (
+            ["6205", "--speed-rpm", "100", "--radial-load-n", "10", "--misalignment-mrad", "1"],
+            "--misalignment-mrad",
+        ),
+        (["6205", "--speed-rpm", "100", "--radial-load-n", "10", "--method", "lp"], "--method"),
+        (["QJ205", "--speed-rpm", "100", "--radial-load-n", "10"], "bearing_type"),
+    ],
+)
 def test_cli_life_errors_are_one_line(capsys, args, words):
     assert main(["life", *args]) == 2
     err = capsys.readouterr().err
@@ -516,17 +672,25 @@ def test_given_ratings_serve_both_methods_and_say_so():
     cond = OperatingCondition(radial_load=2000.0, shaft_speed=1500 * RPM)
     computed = {m: rating_life(b, cond, method=m, viscosity=30e-6) for m in T_METHODS}
     for method, base in computed.items():
-        r = rating_life(b, cond, method=method, viscosity=30e-6, dynamic_load_rating=14800.0,
-                        static_load_rating=7800.0)
+        r = rating_life(
+            b,
+            cond,
+            method=method,
+            viscosity=30e-6,
+            dynamic_load_rating=14800.0,
+            static_load_rating=7800.0,
+        )
         c_ratio = 14800.0 / base.ratings.dynamic
         # ISO 281: (C/P)^3; ISO/TS 16281: Q_ci, Q_ce scale with C, so L10r with C^(10/3 0.9)
-        assert r.l10 == pytest.approx(base.l10 * c_ratio ** 3, rel=1e-12)
+        assert r.l10 == pytest.approx(base.l10 * c_ratio**3, rel=1e-12)
         assert r.static_safety_factor == pytest.approx(7800.0 / r.static_equivalent_load)
         assert r.ratings.fatigue_limit == pytest.approx(7800.0 / 22)
         d = r.to_dict()
         assert d["dynamic_rating_n"] == 14800.0 and d["static_rating_n"] == 7800.0
-        assert d["dynamic_rating_source"].startswith("given") and "14027 N" in \
-            d["dynamic_rating_source"]
+        assert (
+            d["dynamic_rating_source"].startswith("given")
+            and "14027 N" in d["dynamic_rating_source"]
+        )
         assert d["static_rating_source"].startswith("given")
         assert base.to_dict()["dynamic_rating_source"].startswith("ISO 281")
     one = rating_life(b, cond, static_load_rating=7800.0)
@@ -545,7 +709,7 @@ def test_both_ratings_given_rate_a_geometry_iso_cannot():
     with pytest.raises(InputError, match="gamma"):
         rating_life(big_balls, cond, dynamic_load_rating=20000.0)
     r = rating_life(big_balls, cond, dynamic_load_rating=20000.0, static_load_rating=10000.0)
-    assert r.l10 == pytest.approx(20.0 ** 3) and r.ratings.fc is None
+    assert r.l10 == pytest.approx(20.0**3) and r.ratings.fc is None
     assert r.to_dict()["dynamic_rating_source"] == "given"
     with pytest.raises(InputError, match="static_load_rating"):
         rating_life(deep_groove(), cond, static_load_rating=-1.0)
@@ -558,29 +722,48 @@ def test_cli_life_given_ratings(capsys):
     assert d["dynamic_rating_n"] == 14800.0 and d["dynamic_rating_source"].startswith("given")
     assert d["static_rating_source"].startswith("ISO 76")
     assert d["l10_million_rev"] == pytest.approx(
-        base["l10_million_rev"] * (14800.0 / base["dynamic_rating_n"]) ** 3, rel=1e-9)
+        base["l10_million_rev"] * (14800.0 / base["dynamic_rating_n"]) ** 3, rel=1e-9
+    )
     assert main(["life", *args, "--static-load-rating-kn", "7.8"]) == 0
     text = capsys.readouterr().out
     assert "C0: given (ISO 76:2006" in text and "C: ISO 281:2007" in text
 
 
-@pytest.mark.parametrize("args, words", [
-    (["--dynamic-load-rating-kn", "0"],
-     "--dynamic-load-rating-kn = 0 is not allowed: expected a rating in (0, 100000] kN"),
-    (["--static-load-rating-kn", "-7.8"],
-     "--static-load-rating-kn = -7.8 is not allowed: expected a rating in (0, 100000] kN"),
-    (["--reliability-percent", "50"],
-     "--reliability-percent = 50 is not allowed: expected a reliability in [90, 99.95] %"),
-    (["--misalignment-mrad", "30", "--method", "iso16281"],
-     "--misalignment-mrad = 30 is not allowed: expected a tilt in [-20, 20] mrad"),
-    (["--viscosity-mm2-s", "-5"],
-     "--viscosity-mm2-s = -5 is not allowed: expected a viscosity in (0, 1e+06] mm²/s"),
-    (["--viscosity-mm2-s", "0.1"],
-     "--viscosity-mm2-s = 0.1 is not allowed: expected a viscosity of at least {nu_min} mm²/s"),
-    (["--contamination", "mud"],
-     "--contamination = 'mud' is not allowed: expected a number in [0, 1] or one of extreme"),
-    (["--contamination", "1.5"], "--contamination = '1.5' is not allowed"),
-])
+@pytest.mark.parametrize(
+    "args, words",
+    [
+        (
+            ["--dynamic-load-rating-kn", "0"],
+            "--dynamic-load-rating-kn = 0 is not allowed: expected a rating in (0, 100000] kN",
+        ),
+        (
+            ["--static-load-rating-kn", "-7.8"],
+            "--static-load-rating-kn = -7.8 is not allowed: expected a rating in (0, 100000] kN",
+        ),
+        (
+            ["--reliability-percent", "50"],
+            "--reliability-percent = 50 is not allowed: expected a reliability in [90, 99.95] %",
+        ),
+        (
+            ["--misalignment-mrad", "30", "--method", "iso16281"],
+            "--misalignment-mrad = 30 is not allowed: expected a tilt in [-20, 20] mrad",
+        ),
+        (
+            ["--viscosity-mm2-s", "-5"],
+            "--viscosity-mm2-s = -5 is not allowed: expected a viscosity in (0, 1e+06] mm²/s",
+        ),
+        (
+            ["--viscosity-mm2-s", "0.1"],
+            "--viscosity-mm2-s = 0.1 is not allowed: expected a viscosity of at least "
+            "{nu_min} mm²/s",
+        ),
+        (
+            ["--contamination", "mud"],
+            "--contamination = 'mud' is not allowed: expected a number in [0, 1] or one of extreme",
+        ),
+        (["--contamination", "1.5"], "--contamination = '1.5' is not allowed"),
+    ],
+)
 def test_cli_life_errors_name_option_value_and_range(capsys, args, words):
     assert main(["life", "6205", "--speed-rpm", "3000", "--radial-load-n", "1000", *args]) == 2
     err = capsys.readouterr().err
@@ -596,9 +779,22 @@ def test_cli_life_table_fits_80_columns_uncut(capsys, monkeypatch):
     from bearinglab.cli import _app
 
     monkeypatch.setattr(_app._LazyConsole, "_console", Console(width=80))
-    args = ["life", "6205", "--speed-rpm", "3000", "--radial-load-n", "1000", "--method",
-            "iso16281", "--dynamic-load-rating-kn", "14.8", "--viscosity-mm2-s", "20",
-            "--reliability-percent", "99.95"]
+    args = [
+        "life",
+        "6205",
+        "--speed-rpm",
+        "3000",
+        "--radial-load-n",
+        "1000",
+        "--method",
+        "iso16281",
+        "--dynamic-load-rating-kn",
+        "14.8",
+        "--viscosity-mm2-s",
+        "20",
+        "--reliability-percent",
+        "99.95",
+    ]
     assert main(args) == 0
     out = capsys.readouterr().out
     assert "…" not in out and max(len(line) for line in out.splitlines()) <= 80

@@ -19,13 +19,22 @@ def test_analytic_signal_is_scipy_hilbert(n):
     assert np.allclose(analytic(x), scipy.signal.hilbert(x, N=fast)[:n], rtol=0, atol=1e-12)
 
 
-@pytest.mark.parametrize("n, nperseg, noverlap", [(12_000, 1024, 512), (12_001, 1024, 512),
-                                                  (5000, 999, 499), (4096, 4096, 0)])
+@pytest.mark.parametrize(
+    "n, nperseg, noverlap",
+    [(12_000, 1024, 512), (12_001, 1024, 512), (5000, 999, 499), (4096, 4096, 0)],
+)
 def test_welch_power_is_scipy_welch(n, nperseg, noverlap):
     x = np.random.default_rng(n).normal(size=n) + 0.3
     f, p = welch_power(x, 12e3, nperseg, noverlap)
-    f2, p2 = scipy.signal.welch(x, fs=12e3, window="hann", nperseg=nperseg, noverlap=noverlap,
-                                detrend="constant", scaling="spectrum")
+    f2, p2 = scipy.signal.welch(
+        x,
+        fs=12e3,
+        window="hann",
+        nperseg=nperseg,
+        noverlap=noverlap,
+        detrend="constant",
+        scaling="spectrum",
+    )
     assert np.array_equal(f, f2)
     assert np.allclose(p, p2, rtol=1e-12, atol=0)
 
@@ -40,6 +49,5 @@ def test_local_maxima_are_find_peaks_plateaus_included():
 def test_chi2_tail_is_scipy_stats_where_that_is_finite():
     rng = np.random.default_rng(4)
     x, dof = rng.exponential(30.0, 2000), rng.integers(2, 60, 2000)
-    assert np.allclose(chi2_logsf(x, dof), scipy.stats.chi2.logsf(x, dof), rtol=1e-12,
-                       atol=1e-12)
+    assert np.allclose(chi2_logsf(x, dof), scipy.stats.chi2.logsf(x, dof), rtol=1e-12, atol=1e-12)
     assert np.all(np.isfinite(chi2_logsf(np.array([1e4, 1e6]), np.array([20, 20]))))

@@ -26,7 +26,7 @@ from bearinglab.noise import (
 from bearinglab.units import rpm_to_rad_s
 
 FS = 48000.0
-N = 4800                       # 0.1 s: 10 Hz lines, whole periods of every test tone
+N = 4800  # 0.1 s: 10 Hz lines, whole periods of every test tone
 T = np.arange(N) / FS
 RHO, C = 1.21, 343.0
 
@@ -61,7 +61,7 @@ def test_spl_of_an_rms_pressure_of_2e_5_pa_is_zero():
     p_e = sound_pressure(T, ball_velocity=u, **kw).effective_pressure()
     r = sound_pressure(T, ball_velocity=u * REFERENCE_PRESSURE / p_e, **kw)
     assert r.spl() == pytest.approx(0.0, abs=1e-9)
-    assert r.to_dict()["spl_time_mean_db"] == pytest.approx(0.0, abs=1e-6)   # a pure tone
+    assert r.to_dict()["spl_time_mean_db"] == pytest.approx(0.0, abs=1e-6)  # a pure tone
 
 
 # ---------------------------------------------------------------- pulsating sphere, eq. 23
@@ -71,8 +71,14 @@ def test_spl_of_an_rms_pressure_of_2e_5_pa_is_zero():
 def test_pulsating_sphere_matches_analytic_monopole(frequency):
     """|p| = rho c k a^2 U / (r sqrt(1 + (ka)^2)) (eq. 23), a ball standing still."""
     a, r = 2e-3, 0.01
-    res = sound_pressure(T, ball_velocity=_tone(frequency)[:, None], ball_angle=[0.0],
-                         ball_radius=a, pitch_radius=0.02, point=FieldPoint(0.02 + r, 0.0))
+    res = sound_pressure(
+        T,
+        ball_velocity=_tone(frequency)[:, None],
+        ball_angle=[0.0],
+        ball_radius=a,
+        pitch_radius=0.02,
+        point=FieldPoint(0.02 + r, 0.0),
+    )
     k = 2 * np.pi * frequency / C
     expected = RHO * C * k * a**2 * 1e-3 / (r * math.sqrt(1 + (k * a) ** 2))
     assert _amplitude(res.pressure("balls")) == pytest.approx(expected, rel=1e-9)
@@ -86,8 +92,12 @@ def test_pulsating_sphere_matches_analytic_monopole(frequency):
 def test_pulsating_sphere_pressure_is_delayed_by_r_over_c():
     """The outgoing wave e^{j(omega t - k r)}: moving the point out by dr delays p by dr/c."""
     f, a = 1000.0, 2e-3
-    kw = {"ball_velocity": _tone(f)[:, None], "ball_angle": [0.0], "ball_radius": a,
-              "pitch_radius": 0.02}
+    kw = {
+        "ball_velocity": _tone(f)[:, None],
+        "ball_angle": [0.0],
+        "ball_radius": a,
+        "pitch_radius": 0.02,
+    }
     near = sound_pressure(T, point=(0.03, 0.0), **kw).pressure("balls")
     far = sound_pressure(T, point=(0.03 + C / FS * 10, 0.0), **kw).pressure("balls")  # 10 samples
     scale = (0.01 + C / FS * 10) / 0.01
@@ -115,9 +125,16 @@ def test_oscillating_sphere_low_frequency_dipole():
     # through sound_pressure: a ball moving along x, the point on the y axis hears nothing
     u = np.zeros((N, 1, 2))
     u[:, 0, 0] = _tone(1000.0)
-    above = FieldPoint(math.hypot(7.5e-3, r), math.atan2(r, 7.5e-3))   # straight above the ball
-    res = sound_pressure(T, ball_velocity=u, ball_angle=[0.0], ball_radius=a,
-                         pitch_radius=7.5e-3, point=above, ball_source="oscillating")
+    above = FieldPoint(math.hypot(7.5e-3, r), math.atan2(r, 7.5e-3))  # straight above the ball
+    res = sound_pressure(
+        T,
+        ball_velocity=u,
+        ball_angle=[0.0],
+        ball_radius=a,
+        pitch_radius=7.5e-3,
+        point=above,
+        ball_source="oscillating",
+    )
     assert np.abs(res.pressure("balls")).max() < 1e-15
 
 
@@ -153,8 +170,9 @@ def test_inner_ring_pressure_follows_cos_phi():
     h = abs(cylinder_transfer([f], a, d)[0]) * 1e-3
     for phi in (0.0, 0.4, 1.2):
         res = sound_pressure(T, inner_ring_velocity=v, ring_radius=a, point=(d, phi))
-        assert _amplitude(res.pressure("inner_ring")) == pytest.approx(h * abs(math.cos(phi)),
-                                                                       rel=1e-9)
+        assert _amplitude(res.pressure("inner_ring")) == pytest.approx(
+            h * abs(math.cos(phi)), rel=1e-9
+        )
         assert np.allclose(res.pressure("inner_ring_y"), 0.0)
 
 
@@ -172,16 +190,16 @@ def test_pressure_is_linear_in_velocity():
     assert two.spl() - one.spl() == pytest.approx(20 * math.log10(2), abs=1e-9)
     assert two.spl() - one.spl() == pytest.approx(6.02, abs=0.005)
     np.testing.assert_allclose(two.pressure(), 2 * one.pressure(), rtol=1e-12, atol=1e-20)
-    np.testing.assert_allclose(one.pressure(), one.pressure("inner_ring")
-                               + one.pressure("balls"), atol=1e-18)
+    np.testing.assert_allclose(
+        one.pressure(), one.pressure("inner_ring") + one.pressure("balls"), atol=1e-18
+    )
 
 
 def test_spectrum_peaks_at_the_velocity_frequencies():
     ring = np.stack([_tone(300.0), _tone(1200.0, 5e-4)], axis=1)
-    res = sound_pressure(T, inner_ring_velocity=ring, ring_radius=5e-3,
-                         point=(0.01, math.pi / 4))
+    res = sound_pressure(T, inner_ring_velocity=ring, ring_radius=5e-3, point=(0.01, math.pi / 4))
     s = res.spectrum()
-    lines, _ = scipy.signal.find_peaks(s.amplitude)               # local maxima
+    lines, _ = scipy.signal.find_peaks(s.amplitude)  # local maxima
     top = lines[np.argsort(s.amplitude[lines])[-2:]]
     np.testing.assert_allclose(np.sort(s.frequency[top]), [300.0, 1200.0])
 
@@ -191,8 +209,16 @@ def test_directivity_is_symmetric_for_a_symmetric_source():
     a ball pulsating on the x axis is symmetric about that axis."""
     v = np.stack([_tone(800.0), np.zeros(N)], axis=1)
     u = _tone(800.0)[:, None]
-    res = sound_pressure(T, v, u, ball_angle=[0.0], ring_radius=5e-3, ball_radius=2e-3,
-                         pitch_radius=7.5e-3, point=(0.02, 0.3))
+    res = sound_pressure(
+        T,
+        v,
+        u,
+        ball_angle=[0.0],
+        ring_radius=5e-3,
+        ball_radius=2e-3,
+        pitch_radius=7.5e-3,
+        point=(0.02, 0.3),
+    )
     angles = np.radians([20.0, -20.0, 160.0, 200.0])
     d = res.directivity(angles)
     ring = d.levels["inner_ring"]
@@ -210,9 +236,16 @@ def test_result_summary_plot_and_table():
     u = np.repeat(_tone(200.0, 1e-5)[:, None, None], 7, axis=1).repeat(2, axis=2)
     res = sound_pressure(T, v, u, psi, bearing, point=(0.012, 0.7))
     out = res.to_dict()
-    for key in ("spl_leq_db", "spl_time_mean_db", "spl_time_max_db", "spl_leq_inner_ring_db",
-                "spl_leq_balls_db", "spl_leq_inner_ring_x_db", "spl_leq_balls_y_db",
-                "effective_pressure_pa"):
+    for key in (
+        "spl_leq_db",
+        "spl_time_mean_db",
+        "spl_time_max_db",
+        "spl_leq_inner_ring_db",
+        "spl_leq_balls_db",
+        "spl_leq_inner_ring_x_db",
+        "spl_leq_balls_y_db",
+        "effective_pressure_pa",
+    ):
         assert math.isfinite(out[key]), key
     assert out["spl_time_max_db"] >= out["spl_time_mean_db"]
     assert out["ring_radius_mm"] == pytest.approx(0.5 * bearing.inner_raceway_diameter * 1e3)
@@ -240,9 +273,9 @@ def test_detrend_removes_a_drift_and_closes_the_record():
     drift = np.stack([_tone(500.0) + 0.02 * T, np.zeros(N)], 1)
     raw = sound_pressure(T, drift, **kw)
     fixed = sound_pressure(T, drift, detrend=True, **kw)
-    assert abs(raw.spl() - clean.spl()) > 1.0                   # the wrap-round jump rings
+    assert abs(raw.spl() - clean.spl()) > 1.0  # the wrap-round jump rings
     assert fixed.spl() == pytest.approx(clean.spl(), abs=0.05)
-    cut = N - 37                                                # not a whole period
+    cut = N - 37  # not a whole period
     part = sound_pressure(T[:cut], drift[:cut], detrend=True, **kw)
     assert part.spl() == pytest.approx(clean.spl(), abs=0.3)
 
@@ -252,20 +285,22 @@ def test_bearing_noise_runs_the_orbit_and_radiates_it():
     from bearinglab.noise import bearing_noise
     from bearinglab.operating import OperatingCondition
 
-    bearing = BallBearing(ball_count=7, ball_diameter=3.969e-3, pitch_diameter=15e-3,
-                          diametral_clearance=7.5e-6)
+    bearing = BallBearing(
+        ball_count=7, ball_diameter=3.969e-3, pitch_diameter=15e-3, diametral_clearance=7.5e-6
+    )
     condition = OperatingCondition(radial_load=50.0, shaft_speed=rpm_to_rad_s(720.0))
     imperfections = Imperfections([Waviness("inner", 6, 0.2e-6), Waviness("outer", 8, 0.2e-6)])
     levels = {}
     for model in ("radial", "xy", "oscillating"):
-        n = bearing_noise(bearing, condition, imperfections, revolutions=1, points=256,
-                          ball_model=model)
+        n = bearing_noise(
+            bearing, condition, imperfections, revolutions=1, points=256, ball_model=model
+        )
         out = n.to_dict()
         assert out["points"] == 256 and out["speed_rpm"] == pytest.approx(720.0)
         levels[model] = out["spl_leq_balls_db"]
         assert math.isfinite(out["spl_time_mean_db"])
         assert math.isfinite(out["spl_leq_inner_ring_db"])
-    assert levels["oscillating"] < levels["radial"]     # a dipole radiates less near the ball
+    assert levels["oscillating"] < levels["radial"]  # a dipole radiates less near the ball
     with pytest.raises(InputError):
         bearing_noise(bearing, condition, imperfections, ball_model="quadrupole")
     with pytest.raises(InputError):
@@ -275,26 +310,30 @@ def test_bearing_noise_runs_the_orbit_and_radiates_it():
 def test_velocity_from_positions_differentiates():
     x = np.stack([np.sin(2 * np.pi * 50 * T), np.cos(2 * np.pi * 50 * T)], axis=1) * 1e-6
     v = velocity_from_positions(T, x)
-    np.testing.assert_allclose(v[5:-5, 0], 2 * np.pi * 50 * 1e-6 * np.cos(2 * np.pi * 50 * T[5:-5]),
-                               rtol=1e-3, atol=1e-9)
+    np.testing.assert_allclose(
+        v[5:-5, 0], 2 * np.pi * 50 * 1e-6 * np.cos(2 * np.pi * 50 * T[5:-5]), rtol=1e-3, atol=1e-9
+    )
 
 
 # ---------------------------------------------------------------- input validation
 
 
-@pytest.mark.parametrize("kwargs, parameter", [
-    ({"time": np.arange(10.0)}, "time"),
-    ({"time": np.r_[0.0, np.cumsum(np.ones(20))] ** 1.1}, "time"),
-    ({"inner_ring_velocity": np.zeros((N, 3))}, "inner_ring_velocity"),
-    ({"inner_ring_velocity": None}, "inner_ring_velocity"),
-    ({"ring_radius": -1.0}, "ring_radius"),
-    ({"ring_radius": None}, "ring_radius"),
-    ({"point": (0.004, 0.0)}, "point"),
-    ({"point": (-0.01, 0.0)}, "distance"),
-    ({"ring_model": "bem"}, "ring_model"),
-    ({"ball_source": "dipole"}, "ball_source"),
-    ({"medium": "water"}, "medium"),
-])
+@pytest.mark.parametrize(
+    "kwargs, parameter",
+    [
+        ({"time": np.arange(10.0)}, "time"),
+        ({"time": np.r_[0.0, np.cumsum(np.ones(20))] ** 1.1}, "time"),
+        ({"inner_ring_velocity": np.zeros((N, 3))}, "inner_ring_velocity"),
+        ({"inner_ring_velocity": None}, "inner_ring_velocity"),
+        ({"ring_radius": -1.0}, "ring_radius"),
+        ({"ring_radius": None}, "ring_radius"),
+        ({"point": (0.004, 0.0)}, "point"),
+        ({"point": (-0.01, 0.0)}, "distance"),
+        ({"ring_model": "bem"}, "ring_model"),
+        ({"ball_source": "dipole"}, "ball_source"),
+        ({"medium": "water"}, "medium"),
+    ],
+)
 def test_inputs_are_validated(kwargs, parameter):
     args = {"time": T, "inner_ring_velocity": np.zeros((N, 2)), "ring_radius": 5e-3}
     args.update(kwargs)
@@ -303,16 +342,25 @@ def test_inputs_are_validated(kwargs, parameter):
     assert err.value.parameter == parameter
 
 
-@pytest.mark.parametrize("kwargs, parameter", [
-    ({"ball_angle": None}, "ball_angle"),
-    ({"ball_angle": np.zeros(3)}, "ball_angle"),
-    ({"ball_velocity": np.zeros((N, 2))}, "ball_velocity"),
-    ({"point": (0.0085, 0.0)}, "point"),
-    ({"ball_radius": math.nan}, "ball_radius"),
-])
+@pytest.mark.parametrize(
+    "kwargs, parameter",
+    [
+        ({"ball_angle": None}, "ball_angle"),
+        ({"ball_angle": np.zeros(3)}, "ball_angle"),
+        ({"ball_velocity": np.zeros((N, 2))}, "ball_velocity"),
+        ({"point": (0.0085, 0.0)}, "point"),
+        ({"ball_radius": math.nan}, "ball_radius"),
+    ],
+)
 def test_ball_inputs_are_validated(kwargs, parameter):
-    args = {"time": T, "ball_velocity": np.zeros((N, 2, 2)), "ball_angle": np.zeros(2),
-            "ball_radius": 2e-3, "pitch_radius": 7.5e-3, "ball_source": "oscillating"}
+    args = {
+        "time": T,
+        "ball_velocity": np.zeros((N, 2, 2)),
+        "ball_angle": np.zeros(2),
+        "ball_radius": 2e-3,
+        "pitch_radius": 7.5e-3,
+        "ball_source": "oscillating",
+    }
     if kwargs.get("ball_velocity") is not None:
         args["ball_angle"] = np.zeros(2)
     args.update(kwargs)
@@ -337,15 +385,22 @@ def test_medium_and_point_are_validated():
 
 
 def _608():
-    return BallBearing(ball_count=7, ball_diameter=3.85e-3, pitch_diameter=15e-3, bore=8e-3,
-                       outside_diameter=22e-3, width=7e-3, diametral_clearance=7.5e-6)
+    return BallBearing(
+        ball_count=7,
+        ball_diameter=3.85e-3,
+        pitch_diameter=15e-3,
+        bore=8e-3,
+        outside_diameter=22e-3,
+        width=7e-3,
+        diametral_clearance=7.5e-6,
+    )
 
 
 def test_default_field_point_lies_outside_the_bearing():
     from bearinglab.noise import FIELD_POINT_GAP, SEED003_POINT_A, default_field_point
 
     point, rule = default_field_point(_608())
-    assert point.distance == pytest.approx(11e-3 + FIELD_POINT_GAP)     # D / 2 + 10 mm
+    assert point.distance == pytest.approx(11e-3 + FIELD_POINT_GAP)  # D / 2 + 10 mm
     assert point.angle == pytest.approx(0.5 * math.pi) and "D / 2 = 11 mm" in rule
     # without D: the outer raceway's radius plus half a ball, d_m / 2 + D_w
     bare = BallBearing(ball_count=7, ball_diameter=3.85e-3, pitch_diameter=15e-3)
@@ -388,8 +443,11 @@ def test_iso_bands_are_the_relative_radial_velocity_with_speed_scaled_edges():
     forms = Imperfections([Waviness("outer", 8, 0.3e-6)])
     r = bearing_velocity_bands(b, condition, forms, source="rigid")
     assert r.source == "rigid model" and r.speed_rpm == pytest.approx(3600.0)
-    assert r.bands.bands == {"low": (100.0, 600.0), "medium": (600.0, 3600.0),
-                             "high": (3600.0, 20000.0)}
+    assert r.bands.bands == {
+        "low": (100.0, 600.0),
+        "medium": (600.0, 3600.0),
+        "high": (3600.0, 20000.0),
+    }
     assert r.sample_rate == pytest.approx(51200.0) and r.duration == pytest.approx(0.1)
     sim = simulate(b, condition, (), imperfections=forms, duration=0.1, sample_rate=51200.0)
     y = sim.signal.channels["disp_y"]
@@ -416,14 +474,16 @@ def test_noise_analysis_result_table_and_figure():
     from bearinglab.operating import OperatingCondition
 
     stages = []
-    r = noise_analysis(_608(), OperatingCondition(radial_load=50.0,
-                                                  shaft_speed=rpm_to_rad_s(720.0)),
-                       Imperfections([Waviness("inner", 7, 0.2e-6)]), points=128,
-                       progress=lambda f, stage: stages.append((f, stage)))
+    r = noise_analysis(
+        _608(),
+        OperatingCondition(radial_load=50.0, shaft_speed=rpm_to_rad_s(720.0)),
+        Imperfections([Waviness("inner", 7, 0.2e-6)]),
+        points=128,
+        progress=lambda f, stage: stages.append((f, stage)),
+    )
     assert stages[0] == (0.0, "orbit and sound pressure") and stages[-1] == (1.0, "done")
     d = r.to_dict()
-    assert d["distance_mm"] == pytest.approx(21.0) and d["field_point_source"].startswith(
-        "default")
+    assert d["distance_mm"] == pytest.approx(21.0) and d["field_point_source"].startswith("default")
     assert [k for _, k in LEVEL_ROWS if k not in d] == []
     assert d["spl_time_max_db"] >= d["spl_time_mean_db"]
     assert d["spl_leq_db"] == pytest.approx(r.sound.spl())
@@ -436,6 +496,7 @@ def test_noise_analysis_result_table_and_figure():
     assert len(axes) == 4
     plt.close(fig)
     with pytest.raises(InputError) as err:
-        noise_analysis(_608(), OperatingCondition(radial_load=50.0, shaft_speed=75.0),
-                       point=(0.008, 0.0))
+        noise_analysis(
+            _608(), OperatingCondition(radial_load=50.0, shaft_speed=75.0), point=(0.008, 0.0)
+        )
     assert err.value.parameter == "point"

@@ -45,14 +45,15 @@ print(json.dumps(out))
 
 
 def _run() -> dict:
-    done = subprocess.run([sys.executable, "-c", WORKLOAD + REPORT], capture_output=True,
-                          text=True, check=True)
+    done = subprocess.run(
+        [sys.executable, "-c", WORKLOAD + REPORT], capture_output=True, text=True, check=True
+    )
     return json.loads(done.stdout.strip().splitlines()[-1])
 
 
 @pytest.fixture(scope="module")
 def second_run() -> dict:
-    _run()              # the first process may compile (a fresh checkout)
+    _run()  # the first process may compile (a fresh checkout)
     return _run()
 
 
@@ -76,13 +77,16 @@ def test_cache_directory_for_read_only_installs(tmp_path):
     from it."""
     import os
 
-    code = (WORKLOAD.split("for model")[0]
-            + "simulate(bearing, condition, [Defect('outer', width=1e-3, depth=1e-4)], "
-              "duration=0.002, sample_rate=40e3, settle=0.0)\n" + REPORT)
+    code = (
+        WORKLOAD.split("for model")[0]
+        + "simulate(bearing, condition, [Defect('outer', width=1e-3, depth=1e-4)], "
+        "duration=0.002, sample_rate=40e3, settle=0.0)\n" + REPORT
+    )
     env = {**os.environ, "NUMBA_CACHE_DIR": str(tmp_path)}
     for _ in range(2):
-        done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                              check=True, env=env)
+        done = subprocess.run(
+            [sys.executable, "-c", code], capture_output=True, text=True, check=True, env=env
+        )
     stats = json.loads(done.stdout.strip().splitlines()[-1])
     rigid = next(s for name, s in stats.items() if name.endswith("dopri_chunk_rigid"))
     assert rigid["hits"] >= 1 and rigid["misses"] == 0

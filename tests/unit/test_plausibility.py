@@ -28,7 +28,7 @@ def test_load_past_c0_warns_and_far_past_it_is_an_error():
     (text,) = P.load_warnings(B, 10_000.0)
     assert "s0 = C0/P0 = 0.789" in text and "C0 = 7886 N" in text
     with pytest.raises(InputError) as err:
-        P.load_warnings(B, 1e6)                     # 127 C0 (issue 14's example)
+        P.load_warnings(B, 1e6)  # 127 C0 (issue 14's example)
     assert err.value.parameter == "radial_load" and "127 times" in str(err.value)
 
 
@@ -48,7 +48,7 @@ def test_sampling_nyquist_error_for_the_simulated_family_and_warnings_otherwise(
     with pytest.raises(InputError) as err:
         P.sampling_warnings(kin, 100.0, 1.0, families=["outer_race"])
     assert err.value.parameter == "sample_rate" and "BPFO" in err.value.hint
-    texts = P.sampling_warnings(kin, 300.0, 1.0)            # BPFI 162 Hz > 150 Hz
+    texts = P.sampling_warnings(kin, 300.0, 1.0)  # BPFI 162 Hz > 150 Hz
     assert any(t.startswith("BPFI = 162.19 Hz is above the Nyquist") for t in texts)
     (coarse,) = P.sampling_warnings(kin, 12_000.0, 0.1)
     assert "too coarse to separate the cage sidebands" in coarse
@@ -59,18 +59,71 @@ def test_operating_warnings_of_a_condition():
     assert len(P.operating_warnings(B, c)) == 1
 
 
-@pytest.mark.parametrize("argv, flag", [
-    (["static", "6205", "--radial-load-n", "1e6"], "--radial-load-n"),
-    (["static", "6205", "--radial-load-n", "100", "--speed-rpm", "1e6"], "--speed-rpm"),
-    (["simulate", "6205", "--speed-rpm", "1797", "--radial-load-n", "500", "--defect",
-      "outer:width_mm=1", "--sample-rate-hz", "100"], "--sample-rate-hz"),
-    (["simulate", "6205", "--speed-rpm", "1797", "--radial-load-n", "500",
-      "--sample-rate-hz", "10"], "--sample-rate-hz"),
-    (["simulate", "6205", "--speed-rpm", "1797", "--radial-load-n", "500",
-      "--duration-s", "0.2", "--sample-rate-hz", "12000"], "--duration-s"),
-    (["report", "6205", "--speed-rpm", "1797", "--radial-load-n", "500", "--duration-s",
-      "0.2", "-o", "never-written.html"], "--duration-s"),
-])
+@pytest.mark.parametrize(
+    "argv, flag",
+    [
+        (["static", "6205", "--radial-load-n", "1e6"], "--radial-load-n"),
+        (["static", "6205", "--radial-load-n", "100", "--speed-rpm", "1e6"], "--speed-rpm"),
+        (
+            [
+                "simulate",
+                "6205",
+                "--speed-rpm",
+                "1797",
+                "--radial-load-n",
+                "500",
+                "--defect",
+                "outer:width_mm=1",
+                "--sample-rate-hz",
+                "100",
+            ],
+            "--sample-rate-hz",
+        ),
+        (
+            [
+                "simulate",
+                "6205",
+                "--speed-rpm",
+                "1797",
+                "--radial-load-n",
+                "500",
+                "--sample-rate-hz",
+                "10",
+            ],
+            "--sample-rate-hz",
+        ),
+        (
+            [
+                "simulate",
+                "6205",
+                "--speed-rpm",
+                "1797",
+                "--radial-load-n",
+                "500",
+                "--duration-s",
+                "0.2",
+                "--sample-rate-hz",
+                "12000",
+            ],
+            "--duration-s",
+        ),
+        (
+            [
+                "report",
+                "6205",
+                "--speed-rpm",
+                "1797",
+                "--radial-load-n",
+                "500",
+                "--duration-s",
+                "0.2",
+                "-o",
+                "never-written.html",
+            ],
+            "--duration-s",
+        ),
+    ],
+)
 def test_commands_name_the_option(capsys, argv, flag):
     assert main(argv) == 2
     err = capsys.readouterr().err
@@ -78,8 +131,22 @@ def test_commands_name_the_option(capsys, argv, flag):
 
 
 def test_readme_static_example_has_no_plausibility_warning(capsys):
-    assert main(["static", "6205", "--radial-load-n", "1000", "--axial-load-n", "200",
-                 "--speed-rpm", "3000", "--json"]) == 0
+    assert (
+        main(
+            [
+                "static",
+                "6205",
+                "--radial-load-n",
+                "1000",
+                "--axial-load-n",
+                "200",
+                "--speed-rpm",
+                "3000",
+                "--json",
+            ]
+        )
+        == 0
+    )
     import json
 
     warnings = json.loads(capsys.readouterr().out)["warnings"]

@@ -24,8 +24,9 @@ def test_stribeck_zero_clearance():
     # eq. 4; Harris & Kotzalas ch. 7). With Z = 9 the discrete ball set gives 4.38; with
     # more balls it tends to 4.37 within the approximation's own rounding.
     for z, dw, allowed in ((9, 7.94e-3, 0.006), (20, 4e-3, 0.003)):
-        b = BallBearing(ball_count=z, ball_diameter=dw, pitch_diameter=39.04e-3,
-                        diametral_clearance=0.0)
+        b = BallBearing(
+            ball_count=z, ball_diameter=dw, pitch_diameter=39.04e-3, diametral_clearance=0.0
+        )
         r = solve_load_distribution(b, OperatingCondition(radial_load=2000.0))
         q_max = r.load[:, r.ring == 0].max()
         assert q_max * z / 2000.0 == pytest.approx(4.37, rel=allowed)
@@ -41,27 +42,51 @@ def test_pure_axial_matches_the_closed_form():
 
     def residual(beta):
         k_n = load_deflection_constants(b, beta)[2]
-        return b.ball_count * k_n * a**1.5 * math.sin(beta) * (
-            math.cos(b0) / math.cos(beta) - 1) ** 1.5 - fa
+        return (
+            b.ball_count
+            * k_n
+            * a**1.5
+            * math.sin(beta)
+            * (math.cos(b0) / math.cos(beta) - 1) ** 1.5
+            - fa
+        )
 
     beta = optimize.brentq(residual, b0 + 1e-9, math.radians(80))
     assert np.allclose(r.contact_angle, beta, rtol=1e-6)
     assert np.allclose(r.load, fa / (b.ball_count * math.sin(beta)), rtol=1e-6)
     # axial displacement from the centred position: A sin(beta) + ... geometry
     assert r.axial_displacement == pytest.approx(
-        a * math.sin(beta) / math.cos(beta) * math.cos(b0), rel=1e-6)
+        a * math.sin(beta) / math.cos(beta) * math.cos(b0), rel=1e-6
+    )
 
 
-@pytest.mark.parametrize("kwargs, cond", [
-    ({"diametral_clearance": 15e-6}, {"radial_load": 800.0, "axial_load": 300.0}),
-    ({"diametral_clearance": 15e-6}, {"radial_load": 800.0, "axial_load": 300.0,
-                                          "moment": (2.0, -1.0), "shaft_speed": 1500.0}),
-    ({"contact_angle": math.radians(25)}, {"radial_load": 500.0, "axial_load": 900.0,
-                                               "misalignment": (1e-3, 0.0)}),
-    ({"diametral_clearance": 60e-6, "inner_arch_angle": math.radians(25),
-      "outer_arch_angle": math.radians(25)}, {"radial_load": 1200.0, "axial_load": 200.0,
-                                                  "shaft_speed": 2000.0}),
-])
+@pytest.mark.parametrize(
+    "kwargs, cond",
+    [
+        ({"diametral_clearance": 15e-6}, {"radial_load": 800.0, "axial_load": 300.0}),
+        (
+            {"diametral_clearance": 15e-6},
+            {
+                "radial_load": 800.0,
+                "axial_load": 300.0,
+                "moment": (2.0, -1.0),
+                "shaft_speed": 1500.0,
+            },
+        ),
+        (
+            {"contact_angle": math.radians(25)},
+            {"radial_load": 500.0, "axial_load": 900.0, "misalignment": (1e-3, 0.0)},
+        ),
+        (
+            {
+                "diametral_clearance": 60e-6,
+                "inner_arch_angle": math.radians(25),
+                "outer_arch_angle": math.radians(25),
+            },
+            {"radial_load": 1200.0, "axial_load": 200.0, "shaft_speed": 2000.0},
+        ),
+    ],
+)
 def test_stiffness_matrix_equals_finite_differences(kwargs, cond):
     b = bearing(**kwargs)
     c = OperatingCondition(**cond)
@@ -84,13 +109,16 @@ def test_stiffness_matrix_equals_finite_differences(kwargs, cond):
 
 
 def test_four_point_contact_under_radial_load_and_two_point_under_axial():
-    b = bearing(diametral_clearance=40e-6, inner_arch_angle=math.radians(25),
-                outer_arch_angle=math.radians(25))
+    b = bearing(
+        diametral_clearance=40e-6,
+        inner_arch_angle=math.radians(25),
+        outer_arch_angle=math.radians(25),
+    )
     radial = solve_load_distribution(b, OperatingCondition(radial_load=2000.0))
     bottom = np.argmax(radial.load.sum(axis=1))
-    assert radial.contact_points[bottom] == 4            # seed 001 fig. 5a
+    assert radial.contact_points[bottom] == 4  # seed 001 fig. 5a
     axial = solve_load_distribution(b, OperatingCondition(axial_load=2000.0))
-    assert np.all(axial.contact_points == 2)              # seed 001 fig. 1
+    assert np.all(axial.contact_points == 2)  # seed 001 fig. 1
 
 
 def test_centrifugal_force_balance_at_speed():
@@ -127,45 +155,67 @@ def test_a_larger_ball_carries_more():
     errors = np.zeros(9)
     errors[0] = 2e-6
     even = solve_load_distribution(b, OperatingCondition(radial_load=1000.0))
-    odd = solve_load_distribution(b, OperatingCondition(radial_load=1000.0),
-                                  ball_diameter_errors=errors)
+    odd = solve_load_distribution(
+        b, OperatingCondition(radial_load=1000.0), ball_diameter_errors=errors
+    )
     assert odd.load[0, 0] > even.load[0, 0]
 
 
 def test_overload_runs_over_the_shoulder_and_is_reported():
-    r = solve_load_distribution(bearing(diametral_clearance=15e-6),
-                                OperatingCondition(axial_load=20000.0))
+    r = solve_load_distribution(
+        bearing(diametral_clearance=15e-6), OperatingCondition(axial_load=20000.0)
+    )
     assert np.all(r.truncated[r.load > 0])
     assert any("shoulder" in w for w in r.warnings)
-    ok = solve_load_distribution(bearing(diametral_clearance=15e-6),
-                                 OperatingCondition(axial_load=500.0))
+    ok = solve_load_distribution(
+        bearing(diametral_clearance=15e-6), OperatingCondition(axial_load=500.0)
+    )
     assert not ok.warnings and not np.any(ok.truncated)
 
 
 def test_result_dict_has_the_documented_keys():
-    r = solve_load_distribution(bearing(diametral_clearance=15e-6),
-                                OperatingCondition(radial_load=700.0, axial_load=100.0))
+    r = solve_load_distribution(
+        bearing(diametral_clearance=15e-6), OperatingCondition(radial_load=700.0, axial_load=100.0)
+    )
     d = r.to_dict()
-    for key in ("radial_displacement_um", "axial_displacement_um", "tilt_mrad",
-                "max_ball_load_n", "stiffness_matrix_si", "stiffness_matrix_order",
-                "radial_stiffness_n_per_um", "axial_stiffness_n_per_um", "balls"):
+    for key in (
+        "radial_displacement_um",
+        "axial_displacement_um",
+        "tilt_mrad",
+        "max_ball_load_n",
+        "stiffness_matrix_si",
+        "stiffness_matrix_order",
+        "radial_stiffness_n_per_um",
+        "axial_stiffness_n_per_um",
+        "balls",
+    ):
         assert key in d
     ball = d["balls"][0]
-    for key in ("angle_deg", "inner_load_n", "outer_load_n", "inner_contact_angle_deg",
-                "outer_contact_angle_deg", "inner_max_pressure_gpa", "outer_max_pressure_gpa",
-                "contact_points"):
+    for key in (
+        "angle_deg",
+        "inner_load_n",
+        "outer_load_n",
+        "inner_contact_angle_deg",
+        "outer_contact_angle_deg",
+        "inner_max_pressure_gpa",
+        "outer_max_pressure_gpa",
+        "contact_points",
+    ):
         assert key in ball
     assert np.array(d["stiffness_matrix_si"]).shape == (5, 5)
     assert d["equilibrium_residual_n"] < 1e-6 * 700
 
 
-@pytest.mark.parametrize("kwargs, parameter", [
-    ({"radial_load": -1.0}, "radial_load"),
-    ({"axial_load": math.nan}, "axial_load"),
-    ({"shaft_speed": -5.0}, "shaft_speed"),
-    ({"misalignment": (0.5, 0.0)}, "misalignment"),
-    ({"moment": (1.0,)}, "moment"),
-])
+@pytest.mark.parametrize(
+    "kwargs, parameter",
+    [
+        ({"radial_load": -1.0}, "radial_load"),
+        ({"axial_load": math.nan}, "axial_load"),
+        ({"shaft_speed": -5.0}, "shaft_speed"),
+        ({"misalignment": (0.5, 0.0)}, "misalignment"),
+        ({"moment": (1.0,)}, "moment"),
+    ],
+)
 def test_bad_operating_condition(kwargs, parameter):
     with pytest.raises(InputError) as err:
         OperatingCondition(**kwargs)
@@ -174,20 +224,28 @@ def test_bad_operating_condition(kwargs, parameter):
 
 def test_bad_ball_errors():
     with pytest.raises(InputError):
-        solve_load_distribution(bearing(), OperatingCondition(radial_load=10.0),
-                                ball_diameter_errors=np.zeros(3))
+        solve_load_distribution(
+            bearing(), OperatingCondition(radial_load=10.0), ball_diameter_errors=np.zeros(3)
+        )
 
 
 def test_inner_ring_expansion_thin_ring_limit_and_effect():
     from bearinglab.quasistatic import inner_ring_expansion
 
     # a ring whose bore is almost its raceway is a thin ring: u = rho omega^2 R^3 / E
-    thin = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3,
-                       bore=31.0e-3, outside_diameter=52e-3, width=15e-3)
+    thin = BallBearing(
+        ball_count=9,
+        ball_diameter=7.94e-3,
+        pitch_diameter=39.04e-3,
+        bore=31.0e-3,
+        outside_diameter=52e-3,
+        width=15e-3,
+    )
     omega = 30000 * math.pi / 30
     r = 0.5 * thin.inner_raceway_diameter
     assert inner_ring_expansion(thin, omega) == pytest.approx(
-        7830 * omega**2 * r**3 / 208e9, rel=0.05)
+        7830 * omega**2 * r**3 / 208e9, rel=0.05
+    )
     b = bearing(diametral_clearance=20e-6, bore=25e-3, outside_diameter=52e-3, width=15e-3)
     c = OperatingCondition(radial_load=300.0, shaft_speed=omega)
     hot = solve_load_distribution(b, c, ring_expansion=True)
@@ -203,7 +261,7 @@ def test_angular_contact_low_shoulder_is_checked_on_its_side():
     acbb = bearing(contact_angle=math.radians(40))
     seated = solve_load_distribution(acbb, OperatingCondition(axial_load=2000.0))
     reversed_load = solve_load_distribution(acbb, OperatingCondition(axial_load=-2000.0))
-    assert not seated.warnings                                   # thrust side: high shoulder
+    assert not seated.warnings  # thrust side: high shoulder
     assert any("shoulder" in w for w in reversed_load.warnings)  # the low side runs over
     assert acbb.shoulder_angle("inner", 1) > acbb.shoulder_angle("inner", -1)
 
@@ -213,9 +271,12 @@ def test_overload_is_told_against_the_static_rating():
     from bearinglab.errors import ConvergenceError
 
     b, _ = bearing_from_designation("6205")
-    with pytest.raises(ConvergenceError, match=r"cannot carry this load: F_r = 1e\+06 N.*"
-                       r"P0 = 1e\+06 N, 127 times the static rating C0 = 78\d\d(\.\d+)? N"
-                       r" \(ISO 76; s0 = 0.00789\)") as info:
+    with pytest.raises(
+        ConvergenceError,
+        match=r"cannot carry this load: F_r = 1e\+06 N.*"
+        r"P0 = 1e\+06 N, 127 times the static rating C0 = 78\d\d(\.\d+)? N"
+        r" \(ISO 76; s0 = 0.00789\)",
+    ) as info:
         solve_load_distribution(b, OperatingCondition(radial_load=1e6))
     assert "residual" not in str(info.value)
     # a load the bearing carries is solved as before
@@ -223,10 +284,10 @@ def test_overload_is_told_against_the_static_rating():
 
 
 def test_unknown_race_control_is_refused():
-    with pytest.raises(InputError, match="race_control = 'middle'.*'outer' or 'inner' or "
-                                         "'hybrid'"):
-        solve_load_distribution(bearing(), OperatingCondition(radial_load=100.0),
-                                race_control="middle")
+    with pytest.raises(InputError, match="race_control = 'middle'.*'outer' or 'inner' or 'hybrid'"):
+        solve_load_distribution(
+            bearing(), OperatingCondition(radial_load=100.0), race_control="middle"
+        )
 
 
 def test_hybrid_control_follows_jones_criterion():
@@ -250,5 +311,9 @@ def test_hybrid_control_follows_jones_criterion():
     assert inner.cage_speed != pytest.approx(outer.cage_speed, rel=1e-4)
     d = inner.to_dict()
     assert d["race_control"] == "inner" and d["cage_speed_rpm"] > 0
-    assert {"orbital_speed_rpm", "centrifugal_force_n", "gyroscopic_moment_n_m",
-            "outer_raceway_control"} <= set(d["balls"][0])
+    assert {
+        "orbital_speed_rpm",
+        "centrifugal_force_n",
+        "gyroscopic_moment_n_m",
+        "outer_raceway_control",
+    } <= set(d["balls"][0])

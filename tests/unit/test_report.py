@@ -15,8 +15,18 @@ from bearinglab.cli import main
 from bearinglab.report import SECTIONS, build_report
 from bearinglab.report import builder as report_builder
 
-REPORT = ["report", "6205", "--speed-rpm", "1797", "--radial-load-n", "1000",
-          "--duration-s", "0.3", "--slip-duration-s", "0.03"]
+REPORT = [
+    "report",
+    "6205",
+    "--speed-rpm",
+    "1797",
+    "--radial-load-n",
+    "1000",
+    "--duration-s",
+    "0.3",
+    "--slip-duration-s",
+    "0.03",
+]
 INNER = ["--defect", "inner:width_mm=1.0,depth_mm=0.2"]
 
 
@@ -66,7 +76,7 @@ def test_content_of_the_sections(built):
 def test_images_are_embedded_png(built):
     _, page = built
     images = re.findall(r'<img src="([^"]*)"', page)
-    assert len(images) >= 10     # one figure per section except the identity
+    assert len(images) >= 10  # one figure per section except the identity
     for src in images:
         assert src.startswith("data:image/png;base64,")
         data = base64.b64decode(src.split(",", 1)[1], validate=True)
@@ -87,15 +97,20 @@ def test_a_failing_section_shows_its_error_and_the_rest_runs(monkeypatch):
         raise RuntimeError("boom <b>not markup</b>")
 
     sections = [s for s in SECTIONS if s[0] in ("identity", "load-distribution", "contact")]
-    monkeypatch.setattr(report_builder, "SECTIONS", (sections[0], ("broken", "Broken", broken),
-                                                     *sections[1:]))
+    monkeypatch.setattr(
+        report_builder, "SECTIONS", (sections[0], ("broken", "Broken", broken), *sections[1:])
+    )
     from bearinglab.catalog import bearing_from_designation
     from bearinglab.operating import OperatingCondition
 
     bearing, des = bearing_from_designation("6205")
     seen = []
-    r = build_report(bearing, OperatingCondition(radial_load=500.0, shaft_speed=100.0),
-                     designation=des, progress=lambda title, i, n: seen.append((title, i, n)))
+    r = build_report(
+        bearing,
+        OperatingCondition(radial_load=500.0, shaft_speed=100.0),
+        designation=des,
+        progress=lambda title, i, n: seen.append((title, i, n)),
+    )
     assert [s.key for s in r.failed] == ["broken"]
     assert r.failed[0].error == "RuntimeError: boom <b>not markup</b>"
     page = r.to_html()
@@ -114,8 +129,9 @@ def test_a_section_that_needs_a_failed_one_says_so(monkeypatch):
         raise RuntimeError("no equilibrium")
 
     contact = next(s for s in SECTIONS if s[0] == "contact")
-    monkeypatch.setattr(report_builder, "SECTIONS",
-                        (("load-distribution", "Load distribution", broken), contact))
+    monkeypatch.setattr(
+        report_builder, "SECTIONS", (("load-distribution", "Load distribution", broken), contact)
+    )
     bearing, _ = bearing_from_designation("6205")
     r = build_report(bearing, OperatingCondition(radial_load=500.0, shaft_speed=100.0))
     assert [s.key for s in r.failed] == ["load-distribution", "contact"]
@@ -125,15 +141,28 @@ def test_a_section_that_needs_a_failed_one_says_so(monkeypatch):
 def test_failed_sections_exit_1_with_the_page_written(monkeypatch, capsys, tmp_path):
     """A report with failed sections is still written and lists them, but the command's
     exit code says it is incomplete (issue 14)."""
+
     def broken(ctx):
         raise RuntimeError("no equilibrium")
 
     contact = next(s for s in SECTIONS if s[0] == "contact")
-    monkeypatch.setattr(report_builder, "SECTIONS",
-                        (("load-distribution", "Load distribution", broken), contact))
+    monkeypatch.setattr(
+        report_builder, "SECTIONS", (("load-distribution", "Load distribution", broken), contact)
+    )
     path = tmp_path / "r.html"
-    code = main(["report", "6205", "--speed-rpm", "1797", "--radial-load-n", "1000", "-o",
-                 str(path), "--json"])
+    code = main(
+        [
+            "report",
+            "6205",
+            "--speed-rpm",
+            "1797",
+            "--radial-load-n",
+            "1000",
+            "-o",
+            str(path),
+            "--json",
+        ]
+    )
     d = json.loads(capsys.readouterr().out)
     assert code == 1 and path.exists()
     assert [f["section"] for f in d["failed_sections"]] == ["load-distribution", "contact"]
@@ -144,29 +173,43 @@ def test_plausibility_warnings_on_the_page_and_in_json(capsys, tmp_path):
     path = tmp_path / "r.html"
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(report_builder, "SECTIONS", tuple(monkey_sections))
-        code = main(["report", "6205", "--speed-rpm", "1797", "--radial-load-n", "10000",
-                     "-o", str(path), "--json"])
+        code = main(
+            [
+                "report",
+                "6205",
+                "--speed-rpm",
+                "1797",
+                "--radial-load-n",
+                "10000",
+                "-o",
+                str(path),
+                "--json",
+            ]
+        )
     d = json.loads(capsys.readouterr().out)
     assert code == 0
     assert any("s0 = C0/P0 = 0.789" in w for w in d["warnings"])
     assert "s0 = C0/P0 = 0.789" in path.read_text(encoding="utf-8")
 
 
-@pytest.mark.parametrize("args, option", [
-    (["-o", "x.pdf"], "--output"),
-    (["-o", "/no/such/dir/r.html"], "--output"),
-    (["-o", "r.html", "--defect", "outer:width_mm=9"], "--defect"),
-    (["-o", "r.html", "--defect", "rim:width_mm=1"], "--defect"),
-    (["-o", "r.html", "--lubricant", "water"], "--lubricant"),
-    (["-o", "r.html", "--duration-s", "0"], "--duration-s"),
-])
+@pytest.mark.parametrize(
+    "args, option",
+    [
+        (["-o", "x.pdf"], "--output"),
+        (["-o", "/no/such/dir/r.html"], "--output"),
+        (["-o", "r.html", "--defect", "outer:width_mm=9"], "--defect"),
+        (["-o", "r.html", "--defect", "rim:width_mm=1"], "--defect"),
+        (["-o", "r.html", "--lubricant", "water"], "--lubricant"),
+        (["-o", "r.html", "--duration-s", "0"], "--duration-s"),
+    ],
+)
 def test_bad_input_is_one_line_and_exit_2(capsys, tmp_path, monkeypatch, args, option):
     monkeypatch.chdir(tmp_path)
     code = main([*REPORT, *args])
     out, err = capsys.readouterr()
     assert code == 2, (out, err)
     assert err.startswith(f"error: {option} = ") and err.count("\n") == 1, err
-    assert not list(tmp_path.iterdir())      # nothing written
+    assert not list(tmp_path.iterdir())  # nothing written
 
 
 def test_default_sample_rate_resolves_the_iso_bands():

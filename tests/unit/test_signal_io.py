@@ -16,9 +16,11 @@ FS = 12000.0
 @pytest.fixture
 def record():
     rng = np.random.default_rng(11)
-    return Signal({"DE": rng.standard_normal(600) * 0.3, "FE": rng.standard_normal(600)},
-                  FS, {"speed_rpm": 1797.0, "designation": "6205-2RS JEM SKF",
-                       "source": "test"})
+    return Signal(
+        {"DE": rng.standard_normal(600) * 0.3, "FE": rng.standard_normal(600)},
+        FS,
+        {"speed_rpm": 1797.0, "designation": "6205-2RS JEM SKF", "source": "test"},
+    )
 
 
 def _same_data(a: Signal, b: Signal, rtol=1e-12):
@@ -29,6 +31,7 @@ def _same_data(a: Signal, b: Signal, rtol=1e-12):
 
 
 # ---------------------------------------------------------------- Signal
+
 
 def test_signal_properties(record):
     assert record.names == ("DE", "FE")
@@ -47,16 +50,19 @@ def test_unknown_channel_lists_the_names(record):
     assert err.value.parameter == "channel"
 
 
-@pytest.mark.parametrize(("channels", "rate", "parameter"), [
-    ({}, FS, "channels"),
-    ({"a": np.ones(20), "b": np.ones(21)}, FS, "channels"),
-    ({"a": np.r_[np.ones(20), np.inf]}, FS, "channels['a']"),
-    ({"a": np.ones(15)}, FS, "channels['a']"),
-    ({"a": np.ones((20, 2))}, FS, "channels['a']"),
-    ({"a": np.ones(20)}, 0.0, "sample_rate"),
-    ({"a": np.ones(20)}, -FS, "sample_rate"),
-    ({"a": np.ones(20)}, "fast", "sample_rate"),
-])
+@pytest.mark.parametrize(
+    ("channels", "rate", "parameter"),
+    [
+        ({}, FS, "channels"),
+        ({"a": np.ones(20), "b": np.ones(21)}, FS, "channels"),
+        ({"a": np.r_[np.ones(20), np.inf]}, FS, "channels['a']"),
+        ({"a": np.ones(15)}, FS, "channels['a']"),
+        ({"a": np.ones((20, 2))}, FS, "channels['a']"),
+        ({"a": np.ones(20)}, 0.0, "sample_rate"),
+        ({"a": np.ones(20)}, -FS, "sample_rate"),
+        ({"a": np.ones(20)}, "fast", "sample_rate"),
+    ],
+)
 def test_signal_validation(channels, rate, parameter):
     with pytest.raises(InputError) as err:
         Signal(channels, rate)
@@ -71,6 +77,7 @@ def test_metadata_must_be_json_able():
 
 
 # ---------------------------------------------------------------- round trips
+
 
 def test_npz_round_trip_keeps_everything(tmp_path, record):
     back = read_signal(write_signal(tmp_path / "r.npz", record))
@@ -119,10 +126,13 @@ def test_read_one_channel_and_override_the_rate(tmp_path, record):
 
 # ---------------------------------------------------------------- CWRU files
 
+
 def _cwru(path, rpm=True):
     rng = np.random.default_rng(5)
-    variables = {"X097_DE_time": rng.standard_normal((1200, 1)),
-                 "X097_FE_time": rng.standard_normal((1200, 1))}
+    variables = {
+        "X097_DE_time": rng.standard_normal((1200, 1)),
+        "X097_FE_time": rng.standard_normal((1200, 1)),
+    }
     if rpm:
         variables["X097RPM"] = np.array([[1797]], dtype=np.uint16)
     scipy.io.savemat(path, variables)
@@ -146,9 +156,14 @@ def test_cwru_mat_needs_the_sample_rate(tmp_path):
 def test_cwru_mat_without_rpm_and_with_two_records(tmp_path):
     path = tmp_path / "98.mat"
     rng = np.random.default_rng(6)
-    scipy.io.savemat(path, {"X099_DE_time": rng.standard_normal((64, 1)),
-                            "X098_DE_time": rng.standard_normal((64, 1)),
-                            "X098_BA_time": rng.standard_normal((64, 1))})
+    scipy.io.savemat(
+        path,
+        {
+            "X099_DE_time": rng.standard_normal((64, 1)),
+            "X098_DE_time": rng.standard_normal((64, 1)),
+            "X098_BA_time": rng.standard_normal((64, 1)),
+        },
+    )
     s = read_signal(path, sample_rate=48000)
     assert s.metadata["cwru_record"] == "X098"  # the one named like the file
     assert s.names == ("DE", "BA") and "speed_rpm" not in s.metadata
@@ -174,9 +189,12 @@ def test_integer_pcm_wav_reads_as_fractions_of_full_scale(tmp_path):
 
 # ---------------------------------------------------------------- bad inputs
 
+
 def test_unknown_suffix(tmp_path, record):
-    for call in (lambda: write_signal(tmp_path / "r.txt", record),
-                 lambda: read_signal(tmp_path / "r.txt")):
+    for call in (
+        lambda: write_signal(tmp_path / "r.txt", record),
+        lambda: read_signal(tmp_path / "r.txt"),
+    ):
         with pytest.raises(InputError) as err:
             call()
         assert err.value.parameter == "path"

@@ -15,8 +15,14 @@ from bearinglab.signal import Spectrum, find_peaks, match_peaks
 
 # CWRU drive-end 6205 at 1797 rpm: orders 0.39828, 3.5848, 5.4152, 2 BSF 4.7135
 SHAFT = 1797.0 / 60.0
-FREQS = {"shaft": SHAFT, "ftf": 0.39828 * SHAFT, "bpfo": 3.5848 * SHAFT,
-         "bpfi": 5.4152 * SHAFT, "bsf": 4.7135 / 2 * SHAFT, "ball_defect": 4.7135 * SHAFT}
+FREQS = {
+    "shaft": SHAFT,
+    "ftf": 0.39828 * SHAFT,
+    "bpfo": 3.5848 * SHAFT,
+    "bpfi": 5.4152 * SHAFT,
+    "bsf": 4.7135 / 2 * SHAFT,
+    "ball_defect": 4.7135 * SHAFT,
+}
 
 
 # ER-16K at 1750 rpm (seed 003): BPFO 104.19, BPFI 158.31, ball defect 135.45, FTF 11.58 Hz.
@@ -26,8 +32,12 @@ ER16K = {name: _ER16K.hz(name) for name in FREQS}
 
 
 def _labels(matched):
-    return [(p["matched"], p["harmonic"]) if p["matched"] else
-            (p.get("sideband_of"), p.get("sideband_order")) for p in matched]
+    return [
+        (p["matched"], p["harmonic"])
+        if p["matched"]
+        else (p.get("sideband_of"), p.get("sideband_order"))
+        for p in matched
+    ]
 
 
 def _spectrum(lines, noise=0.01, seed=0):
@@ -36,19 +46,20 @@ def _spectrum(lines, noise=0.01, seed=0):
     a = noise * np.random.default_rng(seed).rayleigh(size=f.size)
     for freq, amp in lines:
         k = np.argmin(np.abs(f - freq))
-        a[k - 1:k + 2] += amp * np.array([0.5, 1.0, 0.5])
+        a[k - 1 : k + 2] += amp * np.array([0.5, 1.0, 0.5])
     return Spectrum(f, a)
 
 
 # ---------------------------------------------------------------- find_peaks
 
+
 def test_find_peaks_picks_the_lines_above_the_floor():
     lines = [(107.4, 1.0), (214.8, 0.5), (322.2, 0.2), (600.0, 0.08)]
     peaks = find_peaks(_spectrum(lines), count=10)
-    assert [p["frequency_hz"] for p in peaks] == pytest.approx([107.5, 214.75, 322.25, 600.0],
-                                                                abs=0.25)
-    assert [p["amplitude"] for p in peaks] == sorted((p["amplitude"] for p in peaks),
-                                                     reverse=True)
+    assert [p["frequency_hz"] for p in peaks] == pytest.approx(
+        [107.5, 214.75, 322.25, 600.0], abs=0.25
+    )
+    assert [p["amplitude"] for p in peaks] == sorted((p["amplitude"] for p in peaks), reverse=True)
     json.dumps(peaks)  # plain floats
 
 
@@ -65,10 +76,14 @@ def test_find_peaks_of_pure_noise_is_short():
     assert len(find_peaks(_spectrum([]), prominence=6.0)) <= 1
 
 
-@pytest.mark.parametrize(("kwargs", "parameter"), [
-    ({"count": 0}, "count"), ({"prominence": 0.0}, "prominence"),
-    ({"min_frequency": 500.0, "max_frequency": 100.0}, "max_frequency"),
-])
+@pytest.mark.parametrize(
+    ("kwargs", "parameter"),
+    [
+        ({"count": 0}, "count"),
+        ({"prominence": 0.0}, "prominence"),
+        ({"min_frequency": 500.0, "max_frequency": 100.0}, "max_frequency"),
+    ],
+)
 def test_find_peaks_bad_inputs(kwargs, parameter):
     with pytest.raises(InputError) as err:
         find_peaks(_spectrum([]), **kwargs)
@@ -83,6 +98,7 @@ def test_find_peaks_bad_spectrum():
 
 # ---------------------------------------------------------------- match_peaks
 
+
 def test_bpfo_harmonic_is_labelled():
     m = match_peaks([(2 * FREQS["bpfo"] * 1.005, 1.0)], FREQS)
     assert (m[0]["matched"], m[0]["harmonic"]) == ("bpfo", 2)
@@ -91,8 +107,10 @@ def test_bpfo_harmonic_is_labelled():
 
 def test_slipping_ball_line_needs_slip_tolerance():
     line = [{"frequency_hz": 0.936 * 2 * FREQS["bsf"], "amplitude": 0.4}]  # seed 004: 93.6 %
-    assert (match_peaks(line, FREQS)[0]["matched"], match_peaks(line, FREQS)[0]["harmonic"]) \
-        == ("ball_defect", 1)
+    assert (match_peaks(line, FREQS)[0]["matched"], match_peaks(line, FREQS)[0]["harmonic"]) == (
+        "ball_defect",
+        1,
+    )
     strict = match_peaks(line, FREQS, slip_tolerance=0.0)[0]
     assert strict["matched"] is None and strict["harmonic"] is None
 
@@ -143,11 +161,20 @@ def test_a_weak_line_does_not_claim_a_stronger_harmonic():
     # issue: a strong BPFI line (1 % slow) sat nearer to ball defect + 2 FTF of a weaker
     # ball line than to BPFI, and became its sideband (and 2 BPFI became 3 BPFO)
     s = 0.99
-    lines = [(s * ER16K["bpfi"], 1.0), (2 * s * ER16K["bpfi"], 0.5),
-             (s * ER16K["ball_defect"], 0.3), (2 * s * ER16K["ball_defect"], 0.2),
-             (s * ER16K["ball_defect"] - ER16K["ftf"], 0.1)]
+    lines = [
+        (s * ER16K["bpfi"], 1.0),
+        (2 * s * ER16K["bpfi"], 0.5),
+        (s * ER16K["ball_defect"], 0.3),
+        (2 * s * ER16K["ball_defect"], 0.2),
+        (s * ER16K["ball_defect"] - ER16K["ftf"], 0.1),
+    ]
     assert _labels(match_peaks(lines, ER16K)) == [
-        ("bpfi", 1), ("bpfi", 2), ("ball_defect", 1), ("ball_defect", 2), ("ball_defect", -1)]
+        ("bpfi", 1),
+        ("bpfi", 2),
+        ("ball_defect", 1),
+        ("ball_defect", 2),
+        ("ball_defect", -1),
+    ]
 
 
 def test_a_sideband_may_outgrow_its_carrier_if_it_matches_nothing_well():
@@ -155,7 +182,10 @@ def test_a_sideband_may_outgrow_its_carrier_if_it_matches_nothing_well():
     ball = ER16K["ball_defect"]
     lines = [(ball - ER16K["ftf"], 1.0), (ball, 0.8), (ball + ER16K["ftf"], 0.7)]
     assert _labels(match_peaks(lines, ER16K)) == [
-        ("ball_defect", -1), ("ball_defect", 1), ("ball_defect", 1)]
+        ("ball_defect", -1),
+        ("ball_defect", 1),
+        ("ball_defect", 1),
+    ]
 
 
 def test_resolution_widens_the_match_window():
@@ -173,12 +203,19 @@ def test_resolution_widens_the_match_window():
 
 def test_inner_race_sidebands_around_the_observed_carrier():
     carrier = 0.99 * FREQS["bpfi"]  # slipped by 1 %
-    peaks = [(carrier, 1.0), (carrier - SHAFT, 0.4), (carrier + SHAFT, 0.4),
-             (carrier + 2 * SHAFT, 0.2)]
+    peaks = [
+        (carrier, 1.0),
+        (carrier - SHAFT, 0.4),
+        (carrier + SHAFT, 0.4),
+        (carrier + 2 * SHAFT, 0.2),
+    ]
     m = match_peaks(peaks, FREQS)
     assert (m[0]["matched"], m[0]["harmonic"]) == ("bpfi", 1)
     assert [(p.get("sideband_of"), p.get("sideband_order")) for p in m[1:]] == [
-        ("bpfi", -1), ("bpfi", 1), ("bpfi", 2)]
+        ("bpfi", -1),
+        ("bpfi", 1),
+        ("bpfi", 2),
+    ]
     assert all(p["matched"] is None and p["modulation"] == "shaft" for p in m[1:])
     plain = match_peaks(peaks, FREQS, sidebands=False)
     assert all("sideband_of" not in p for p in plain)
@@ -194,21 +231,22 @@ def test_match_keeps_the_peak_keys_and_order():
     json.dumps(m)
 
 
-@pytest.mark.parametrize(("kwargs", "parameter"), [
-    ({"frequencies": {"bpfx": 100.0}}, "frequencies"),
-    ({"frequencies": {}}, "frequencies"),
-    ({"frequencies": {"bpfo": -1.0}}, "frequencies['bpfo']"),
-    ({"harmonics": 0}, "harmonics"),
-    ({"tolerance": 0.0}, "tolerance"),
-    ({"slip_tolerance": -0.1}, "slip_tolerance"),
-    ({"resolution": -0.5}, "resolution"),
-    ({"peaks": [(-5.0, 1.0)]}, "peaks"),
-    ({"peaks": [{"amplitude": 1.0}]}, "peaks"),
-])
+@pytest.mark.parametrize(
+    ("kwargs", "parameter"),
+    [
+        ({"frequencies": {"bpfx": 100.0}}, "frequencies"),
+        ({"frequencies": {}}, "frequencies"),
+        ({"frequencies": {"bpfo": -1.0}}, "frequencies['bpfo']"),
+        ({"harmonics": 0}, "harmonics"),
+        ({"tolerance": 0.0}, "tolerance"),
+        ({"slip_tolerance": -0.1}, "slip_tolerance"),
+        ({"resolution": -0.5}, "resolution"),
+        ({"peaks": [(-5.0, 1.0)]}, "peaks"),
+        ({"peaks": [{"amplitude": 1.0}]}, "peaks"),
+    ],
+)
 def test_match_bad_inputs(kwargs, parameter):
     args = {"peaks": [(100.0, 1.0)], "frequencies": FREQS} | kwargs
     with pytest.raises(InputError) as err:
         match_peaks(**args)
     assert err.value.parameter == parameter
-
-

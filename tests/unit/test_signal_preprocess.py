@@ -27,7 +27,7 @@ def test_prewhitening_flattens_the_spectrum_and_keeps_the_phase():
     w = cepstral_prewhitening(x)
     assert w.shape == x.shape
     s = np.abs(np.fft.rfft(w))[1:-1]
-    assert np.ptp(s) / np.mean(s) < 1e-6          # flat: a 4096 length is fast already
+    assert np.ptp(s) / np.mean(s) < 1e-6  # flat: a 4096 length is fast already
     # the phase is the signal's: the whitened signal still correlates with it
     assert np.corrcoef(w, x - x.mean())[0, 1] > 0.1
 
@@ -39,8 +39,8 @@ def test_drs_keeps_the_tone_in_the_discrete_part():
     noise = 0.5 * rng.standard_normal(t.size)
     r, d = discrete_random_separation(tone + noise, 4096.0)
     np.testing.assert_allclose(r + d, tone + noise - np.mean(tone + noise), atol=1e-9)
-    assert np.std(d - tone) < 0.25           # the discrete part is the tone
-    assert abs(np.std(r) - 0.5) < 0.12       # the random part is the noise
+    assert np.std(d - tone) < 0.25  # the discrete part is the tone
+    assert abs(np.std(r) - 0.5) < 0.12  # the random part is the noise
     assert abs(np.corrcoef(r, tone)[0, 1]) < 0.1
 
 
@@ -57,7 +57,7 @@ def test_drs_bad_arguments():
 def test_kurtogram_finds_the_resonance_band():
     k = fast_kurtogram(impacts(), FS)
     assert k.band[0] < 3000.0 < k.band[1] and k.kurtosis > 1.0
-    assert k.band[1] <= FS / 2.56 + 1e-9 or k.level == 0   # below the anti-alias roll-off
+    assert k.band[1] <= FS / 2.56 + 1e-9 or k.level == 0  # below the anti-alias roll-off
     assert len(k.levels) == len(k.centres) == len(k.values)
 
 

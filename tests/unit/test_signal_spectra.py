@@ -41,6 +41,7 @@ def faulty():
 
 # ---------------------------------------------------------------- amplitude spectrum
 
+
 def test_sine_amplitude_on_a_bin():
     x = 0.7 * np.sin(2 * np.pi * 250.0 * T + 0.3) + 0.05
     s = amplitude_spectrum(x, FS)
@@ -65,14 +66,17 @@ def test_hann_scalloping_is_what_flattop_avoids():
     assert 0.80 < hann < 0.90  # Hann loses up to 15 % (1.42 dB)
 
 
-@pytest.mark.parametrize(("kwargs", "parameter"), [
-    ({"sample_rate": 0.0}, "sample_rate"),
-    ({"sample_rate": np.nan}, "sample_rate"),
-    ({"segment_length": 8}, "segment_length"),
-    ({"segment_length": N + 1}, "segment_length"),
-    ({"overlap": 1.0}, "overlap"),
-    ({"window": "no-such-window"}, "window"),
-])
+@pytest.mark.parametrize(
+    ("kwargs", "parameter"),
+    [
+        ({"sample_rate": 0.0}, "sample_rate"),
+        ({"sample_rate": np.nan}, "sample_rate"),
+        ({"segment_length": 8}, "segment_length"),
+        ({"segment_length": N + 1}, "segment_length"),
+        ({"overlap": 1.0}, "overlap"),
+        ({"window": "no-such-window"}, "window"),
+    ],
+)
 def test_spectrum_bad_inputs(kwargs, parameter):
     args = {"x": np.ones(64), "sample_rate": FS} | kwargs
     with pytest.raises(InputError) as err:
@@ -88,6 +92,7 @@ def test_spectrum_bad_samples(x):
 
 
 # ---------------------------------------------------------------- envelope
+
 
 def test_envelope_of_am_carrier_is_the_modulation():
     # 3 kHz carrier, 30 % modulated at 50 Hz: envelope = 1 + 0.3 cos(2 pi 50 t), mean removed
@@ -118,8 +123,10 @@ def test_envelope_spectrum_auto_band_uses_spectral_kurtosis(faulty):
     assert abs(e.frequency[low][np.argmax(e.amplitude[low])] - FAULT_HZ) <= e.resolution
 
 
-@pytest.mark.parametrize("band", [(0.0, 1000.0), (3000.0, 2000.0), (1000.0, FS / 2),
-                                  (1000.0,), "kurtogram", (np.nan, 100.0)])
+@pytest.mark.parametrize(
+    "band",
+    [(0.0, 1000.0), (3000.0, 2000.0), (1000.0, FS / 2), (1000.0,), "kurtogram", (np.nan, 100.0)],
+)
 def test_bad_band(band):
     with pytest.raises(InputError) as err:
         envelope_spectrum(np.ones(1024), FS, band=band)
@@ -133,6 +140,7 @@ def test_bad_filter_order():
 
 
 # ---------------------------------------------------------------- spectral kurtosis
+
 
 def test_spectral_kurtosis_of_noise_sine_and_impacts(faulty):
     sk = spectral_kurtosis(faulty, FS, 32)  # 2.7 ms: about one ring of the resonance
@@ -153,8 +161,7 @@ def test_kurtogram_band_holds_the_resonance_not_the_tone(faulty):
 
 
 def test_kurtogram_min_bandwidth(faulty):
-    b = spectral_kurtosis_band(faulty, FS, window_lengths=[16, 32, 64, 128],
-                               min_bandwidth=500.0)
+    b = spectral_kurtosis_band(faulty, FS, window_lengths=[16, 32, 64, 128], min_bandwidth=500.0)
     assert b.bandwidth >= 500.0
     assert b.band[0] < RESONANCE_HZ < b.band[1]
     with pytest.raises(InputError) as err:
@@ -176,6 +183,7 @@ def test_spectral_kurtosis_bad_inputs():
 
 
 # ---------------------------------------------------------------- coherence
+
 
 def test_coherence_of_a_shared_sine_and_the_phase_of_a_delay():
     rng = np.random.default_rng(3)

@@ -23,7 +23,8 @@ def _packed(**kwargs):
 def test_default_cage_friction_is_eq11_at_pure_sliding():
     # seed 004 eq. 11, mu = (-0.1 + 22.28 s) exp(-181.46 s) + 0.1, at slide-roll ratio 2
     assert SlipParameters().cage_friction == pytest.approx(
-        (-0.1 + 22.28 * 2) * math.exp(-181.46 * 2) + 0.1, rel=1e-12)
+        (-0.1 + 22.28 * 2) * math.exp(-181.46 * 2) + 0.1, rel=1e-12
+    )
 
 
 @pytest.mark.parametrize("value", [-0.01, 0.31, 1.0, float("nan"), float("inf"), True, "0.1"])
@@ -43,7 +44,7 @@ def test_spin_drag_switch_is_checked():
         SlipParameters(spin_drag=1)
     with pytest.raises(InputError, match="oil_fraction"):
         SlipParameters(spin_drag=True, oil_fraction=0.0)
-    assert SlipParameters().spin_drag is False          # off by default: not in seed 004
+    assert SlipParameters().spin_drag is False  # off by default: not in seed 004
 
 
 def test_spin_drag_twins_agree_on_both_branches():
@@ -52,20 +53,21 @@ def test_spin_drag_twins_agree_on_both_branches():
     twin = _slip_kernels.spin_drag_numpy(w, p)
     compiled = np.array([_slip_kernels.spin_drag(x, p) for x in w])
     np.testing.assert_allclose(compiled, twin, rtol=1e-12, atol=0)
-    np.testing.assert_array_equal(np.sign(twin), np.sign(w))     # always opposes the spin
+    np.testing.assert_array_equal(np.sign(twin), np.sign(w))  # always opposes the spin
 
 
 def test_spin_drag_is_stokes_couple_at_low_reynolds_and_continuous():
     p, _ = _packed(spin_drag=True, oil_fraction=0.05)
-    rho, mu, r = 0.05 * 850.0, 0.05 * 0.04, 4e-3             # the seed's grease in 5 % mixture
+    rho, mu, r = 0.05 * 850.0, 0.05 * 0.04, 4e-3  # the seed's grease in 5 % mixture
     assert p[_slip_kernels.SPIN_RHO] == pytest.approx(rho)
     assert p[_slip_kernels.SPIN_MU] == pytest.approx(mu)
-    w_32 = 32 * mu / (rho * (2 * r) ** 2)                     # Re_r = rho w D^2 / mu = 32
+    w_32 = 32 * mu / (rho * (2 * r) ** 2)  # Re_r = rho w D^2 / mu = 32
     slow = 0.01 * w_32
-    assert _slip_kernels.spin_drag(slow, p) == pytest.approx(8 * math.pi * mu * r**3 * slow,
-                                                              rel=1e-12)
+    assert _slip_kernels.spin_drag(slow, p) == pytest.approx(
+        8 * math.pi * mu * r**3 * slow, rel=1e-12
+    )
     below, above = (_slip_kernels.spin_drag(w_32 * f, p) for f in (1 - 1e-9, 1 + 1e-9))
-    assert above == pytest.approx(below, rel=3e-3)            # the fit meets Stokes at 32
+    assert above == pytest.approx(below, rel=3e-3)  # the fit meets Stokes at 32
 
 
 def test_spin_drag_at_the_seed_case():
@@ -84,8 +86,7 @@ def test_spin_drag_at_the_seed_case():
 
 @pytest.mark.parametrize("traction", ["seed004", "bair_winer"])
 def test_slip_rhs_twins_agree_with_drag_and_pocket_friction(traction):
-    p, table = _packed(traction=traction, spin_drag=True, cage_friction=0.25,
-                       pocket_clearance=1e-5)
+    p, table = _packed(traction=traction, spin_drag=True, cage_friction=0.25, pocket_clearance=1e-5)
     y0 = slip.initial_state(p)
     rng = np.random.default_rng(11)
     out = np.empty_like(y0)
@@ -94,8 +95,9 @@ def test_slip_rhs_twins_agree_with_drag_and_pocket_friction(traction):
         y = y0 + rng.normal(0, 1, y0.size) * slip.atol(9) * 1e4
         t = rng.uniform(0, 0.1)
         _slip_kernels.slip_rhs(t, y, p, table, out, parts)
-        np.testing.assert_allclose(out, _slip_kernels.slip_rhs_numpy(t, y, p, table),
-                                   rtol=1e-9, atol=1e-6)
+        np.testing.assert_allclose(
+            out, _slip_kernels.slip_rhs_numpy(t, y, p, table), rtol=1e-9, atol=1e-6
+        )
 
 
 def test_spin_equation_carries_the_drag_moment():
@@ -113,9 +115,17 @@ def test_spin_equation_carries_the_drag_moment():
 
 def test_pocket_friction_and_spin_drag_slow_the_balls():
     """Both brake the spin of the balls in the unloaded zone: the spin ratio falls."""
+
     def ratio(**kwargs):
-        return simulate(SKF6205, COND, model="slip", duration=0.1, sample_rate=5e3,
-                        settle=0.15, parameters=SlipParameters(**kwargs)).spin_speed_ratio
+        return simulate(
+            SKF6205,
+            COND,
+            model="slip",
+            duration=0.1,
+            sample_rate=5e3,
+            settle=0.15,
+            parameters=SlipParameters(**kwargs),
+        ).spin_speed_ratio
 
     base = ratio()
     assert ratio(cage_friction=0.3) < base - 5e-3

@@ -29,12 +29,12 @@ def test_phase_ratio_needs_no_fine_sampling(packed):
     w_c, w_r = slip.pure_rolling_speeds(p)
     t = np.arange(0, 0.3, 1 / 100.0)
     wobble = 0.2 * np.sin(2 * np.pi * 37.0 * t[None, :] + np.arange(9)[:, None])
-    phases = 0.97 * w_r * t + wobble                  # speed varies by +-0.2 * 2 pi 37 rad/s
+    phases = 0.97 * w_r * t + wobble  # speed varies by +-0.2 * 2 pi 37 rad/s
     cage_ratio, spin_ratio = slip.phase_ratios(t, 0.99 * w_c * t, phases, p)
     exact = 0.97 + np.mean(wobble[:, -1] - wobble[:, 0]) / (t[-1] - t[0]) / w_r
     assert cage_ratio == pytest.approx(0.99, rel=1e-12)
     assert spin_ratio == pytest.approx(exact, rel=1e-12)
-    assert 0.97 * w_r / 100.0 > np.pi                  # more than half a turn per sample
+    assert 0.97 * w_r / 100.0 > np.pi  # more than half a turn per sample
     folded = np.unwrap(phases, axis=1)
     assert abs(np.mean(folded[:, -1] - folded[:, 0]) / (t[-1] - t[0]) / w_r - 0.97) > 0.1
 
@@ -47,7 +47,7 @@ def test_halves_check(packed):
     check = slip.halves_check(t, w_c * t, steady, p)
     assert check["agree"] and check["difference"] < 1e-12
     assert check["spin_speed_ratio"] == pytest.approx((0.97, 0.97))
-    drifting = np.tile(w_r * (0.97 * t + 0.05 * t**2), (9, 1))     # speeds up by 10 %/s
+    drifting = np.tile(w_r * (0.97 * t + 0.05 * t**2), (9, 1))  # speeds up by 10 %/s
     check = slip.halves_check(t, w_c * t, drifting, p)
     assert not check["agree"]
     first, second = check["spin_speed_ratio"]
@@ -56,15 +56,21 @@ def test_halves_check(packed):
 
 
 def test_simulation_exposes_phase_and_measures_from_it():
-    sim = simulate(SKF6205, COND, [Defect("ball", 0.27e-3)], model="slip", duration=0.05,
-                   sample_rate=5e3, settle=0.1)
+    sim = simulate(
+        SKF6205,
+        COND,
+        [Defect("ball", 0.27e-3)],
+        model="slip",
+        duration=0.05,
+        sample_rate=5e3,
+        settle=0.1,
+    )
     n = sim.signal.n_samples
     assert sim.ball_spin_phase.shape == (9, n) and sim.cage_angle.shape == (n,)
     span = (n - 1) / 5e3
     pure_spin = sim.kinematic.orders["bsf"] * sim.kinematic.shaft_speed
     advance = sim.ball_spin_phase[:, -1] - sim.ball_spin_phase[:, 0]
-    assert sim.spin_speed_ratio == pytest.approx(np.mean(advance) / span / pure_spin,
-                                                 rel=1e-12)
+    assert sim.spin_speed_ratio == pytest.approx(np.mean(advance) / span / pure_spin, rel=1e-12)
     # the phase is continuous and its slope is the spin speed the record also carries
     slope = np.gradient(sim.ball_spin_phase, 1 / 5e3, axis=1)[:, 1:-1]
     assert np.median(np.abs(slope / sim.ball_spin_speed[:, 1:-1] - 1)) < 1e-2
@@ -74,6 +80,7 @@ def test_simulation_exposes_phase_and_measures_from_it():
 
 def test_rigid_model_has_no_phase():
     from bearinglab.validation.dynamics import ER16K
+
     cond = OperatingCondition(radial_load=50.0, shaft_speed=1750 * math.pi / 30)
     sim = simulate(ER16K, cond, duration=0.01, sample_rate=20e3)
     assert sim.ball_spin_phase is None and sim.spin_speed_ratio is None
@@ -82,8 +89,15 @@ def test_rigid_model_has_no_phase():
 
 def test_unsettled_record_is_reported():
     # no settling with pocket friction 0.3: the balls lose spin over the first revolution
-    sim = simulate(SKF6205, COND, model="slip", duration=0.03, sample_rate=5e3, settle=0.0,
-                   parameters=SlipParameters(cage_friction=0.3))
+    sim = simulate(
+        SKF6205,
+        COND,
+        model="slip",
+        duration=0.03,
+        sample_rate=5e3,
+        settle=0.0,
+        parameters=SlipParameters(cage_friction=0.3),
+    )
     first, second = sim.halves["spin_speed_ratio"]
     assert first - second > slip.HALVES_TOLERANCE
     assert not sim.halves["agree"]
@@ -102,8 +116,7 @@ def test_settling_is_detected_by_revolutions(packed):
     assert turns * 2 * math.pi / w_c <= t < turns * 2 * math.pi / w_c + 2e-4
     assert y.shape == y0.shape and 0 < h
     # a rule it cannot meet: it stops at max_turns and says so
-    *_, info = slip.settle(p, table, y0, 1e-3, slip.atol(9), 2e-4, tolerance=1e-12,
-                           max_turns=5)
+    *_, info = slip.settle(p, table, y0, 1e-3, slip.atol(9), 2e-4, tolerance=1e-12, max_turns=5)
     assert info["turns"] == 5 and not info["settled"]
 
 

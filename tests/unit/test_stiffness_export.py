@@ -17,11 +17,16 @@ from bearinglab.operating import OperatingCondition
 from bearinglab.quasistatic import solve_load_distribution
 from bearinglab.rotordynamics import KRAMER_FACTOR, bearing_element, ross_bearing
 
-BEARING = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3,
-                      diametral_clearance=15e-6, name="6205")
+BEARING = BallBearing(
+    ball_count=9,
+    ball_diameter=7.94e-3,
+    pitch_diameter=39.04e-3,
+    diametral_clearance=15e-6,
+    name="6205",
+)
 R = solve_load_distribution(
-    BEARING, OperatingCondition(radial_load=500.0, axial_load=100.0,
-                                shaft_speed=3000 * np.pi / 30))
+    BEARING, OperatingCondition(radial_load=500.0, axial_load=100.0, shaft_speed=3000 * np.pi / 30)
+)
 
 
 def _fake_ross(monkeypatch, speed_keyword):
@@ -30,14 +35,39 @@ def _fake_ross(monkeypatch, speed_keyword):
     calls = {}
 
     class Ross2Element:
-        def __init__(self, n, kxx, cxx, kyy=None, kxy=0, kyx=0, cyy=None, kzz=0,
-                     frequency=None, tag=None, **kwargs):
+        def __init__(
+            self,
+            n,
+            kxx,
+            cxx,
+            kyy=None,
+            kxy=0,
+            kyx=0,
+            cyy=None,
+            kzz=0,
+            frequency=None,
+            tag=None,
+            **kwargs,
+        ):
             calls.update({k: v for k, v in locals().items() if k not in ("self", "kwargs")})
             calls.update(kwargs)
 
     class Ross3Element:
-        def __init__(self, n, kxx, cxx, kyy=None, kxy=0, kyx=0, cyy=None, kzz=0,
-                     frequency=None, speed=None, tag=None, **kwargs):
+        def __init__(
+            self,
+            n,
+            kxx,
+            cxx,
+            kyy=None,
+            kxy=0,
+            kyx=0,
+            cyy=None,
+            kzz=0,
+            frequency=None,
+            speed=None,
+            tag=None,
+            **kwargs,
+        ):
             calls.update({k: v for k, v in locals().items() if k not in ("self", "kwargs")})
             calls.update(kwargs)
 
@@ -57,18 +87,23 @@ def test_to_ross_maps_the_matrix(monkeypatch):
     calls = _fake_ross(monkeypatch, "frequency")
     R.to_ross(n=3, damping=50.0)
     k = R.stiffness_matrix
-    assert calls["n"] == 3 and calls["tag"] == "6205 n3"          # the node in the tag
+    assert calls["n"] == 3 and calls["tag"] == "6205 n3"  # the node in the tag
     assert (calls["kxx"], calls["kyy"], calls["kxy"], calls["kyx"], calls["kzz"]) == (
-        k[0, 0], k[1, 1], k[0, 1], k[1, 0], k[2, 2])
+        k[0, 0],
+        k[1, 1],
+        k[0, 1],
+        k[1, 0],
+        k[2, 2],
+    )
     assert calls["cxx"] == calls["cyy"] == 50.0
-    assert calls["frequency"] == [pytest.approx(3000 * np.pi / 30)]   # ROSS 2: the speed
+    assert calls["frequency"] == [pytest.approx(3000 * np.pi / 30)]  # ROSS 2: the speed
 
 
 def test_ross_3_gets_the_speed_as_speed(monkeypatch):
     calls = _fake_ross(monkeypatch, "speed")
     R.to_ross(n=1, tag="front")
     assert calls["speed"] == [pytest.approx(3000 * np.pi / 30)]
-    assert calls["frequency"] is None                      # ROSS 3's whirl-frequency axis
+    assert calls["frequency"] is None  # ROSS 3's whirl-frequency axis
     assert calls["tag"] == "front"
     # default damping: Kramer's rule c = 1e-5 s x k
     assert calls["cxx"] == pytest.approx(KRAMER_FACTOR * R.stiffness_matrix[0, 0])
@@ -82,10 +117,12 @@ def test_coefficients_at_several_speeds(monkeypatch):
     assert calls["frequency"] == pytest.approx([s * math.pi / 30 for s in speeds])
     assert len(calls["kxx"]) == len(calls["cyy"]) == 4
     for rpm, kyy in zip(speeds, calls["kyy"], strict=True):
-        r = solve_load_distribution(BEARING, OperatingCondition(
-            radial_load=500.0, axial_load=100.0, shaft_speed=rpm * math.pi / 30))
+        r = solve_load_distribution(
+            BEARING,
+            OperatingCondition(radial_load=500.0, axial_load=100.0, shaft_speed=rpm * math.pi / 30),
+        )
         assert kyy == pytest.approx(r.stiffness_matrix[1, 1], rel=1e-6)
-    assert calls["kyy"][0] != pytest.approx(calls["kyy"][-1], rel=1e-3)   # speed matters
+    assert calls["kyy"][0] != pytest.approx(calls["kyy"][-1], rel=1e-3)  # speed matters
 
 
 def test_bad_damping_and_speeds_are_refused(monkeypatch):
@@ -106,8 +143,10 @@ def test_to_ross_without_ross_says_how_to_get_it(monkeypatch):
 
 def test_static_writes_the_stiffness_csv(tmp_path, capsys):
     out = tmp_path / "k.csv"
-    assert main(["static", "6205", "--radial-load-n", "500", "--stiffness-csv", str(out),
-                 "--json"]) == 0
+    assert (
+        main(["static", "6205", "--radial-load-n", "500", "--stiffness-csv", str(out), "--json"])
+        == 0
+    )
     capsys.readouterr()
     lines = out.read_text().splitlines()
     assert lines[0] == ",x,y,z,tilt_x,tilt_y" and len(lines) == 6
@@ -116,7 +155,7 @@ def test_static_writes_the_stiffness_csv(tmp_path, capsys):
 def test_one_line_from_a_designation(monkeypatch):
     calls = _fake_ross(monkeypatch, "frequency")
     ross_bearing("6205", n=2, radial_load=500.0, speed_rpm=3000.0)
-    assert calls["n"] == 2 and 50e6 < calls["kyy"] < 300e6      # about 100 N/um
+    assert calls["n"] == 2 and 50e6 < calls["kyy"] < 300e6  # about 100 N/um
     assert calls["tag"].endswith("n2")
 
 
@@ -131,7 +170,7 @@ def ross():
 
     if importlib.util.find_spec("ross") is None and not in_ci():
         pytest.skip("ROSS is not installed (CI installs it: .ci/run)")
-    return import_ross()        # quietly: ROSS warns at import about an optional library
+    return import_ross()  # quietly: ROSS warns at import about an optional library
 
 
 def test_two_bearing_rotor_with_the_real_ross(ross):
@@ -140,11 +179,9 @@ def test_two_bearing_rotor_with_the_real_ross(ross):
     # ROSS assembles the rotor and runs a modal analysis at 3000 rpm
     steel = ross.materials.steel
     shaft = [ross.ShaftElement(L=0.1, idl=0.0, odl=0.025, material=steel) for _ in range(6)]
-    disk = ross.DiskElement.from_geometry(n=3, material=steel, width=0.05, i_d=0.025,
-                                          o_d=0.18)
+    disk = ross.DiskElement.from_geometry(n=3, material=steel, width=0.05, i_d=0.025, o_d=0.18)
     speeds = [0.0, 2000.0, 4000.0, 6000.0]
-    bearings = [ross_bearing("6205", n=node, radial_load=60.0, speed_rpm=speeds)
-                for node in (0, 6)]
+    bearings = [ross_bearing("6205", n=node, radial_load=60.0, speed_rpm=speeds) for node in (0, 6)]
     assert bearings[0].tag != bearings[1].tag
     rotor = ross.Rotor(shaft, [disk], bearings)
     omega = 3000 * math.pi / 30
@@ -162,7 +199,8 @@ def test_two_bearing_rotor_with_the_real_ross(ross):
         estimate = math.sqrt(1.0 / (1.0 / k_shaft + 1.0 / (2.0 * k_b)) / mass)
         assert np.min(np.abs(wn / estimate - 1.0)) < 0.03, (estimate, wn[:6])
     # the element holds bearinglab's stiffness at the speeds ROSS interpolates between
-    r4 = solve_load_distribution(b6205, OperatingCondition(radial_load=60.0,
-                                                           shaft_speed=4000 * math.pi / 30))
+    r4 = solve_load_distribution(
+        b6205, OperatingCondition(radial_load=60.0, shaft_speed=4000 * math.pi / 30)
+    )
     kyy = float(np.asarray(bearings[0].kyy_interpolated(4000 * math.pi / 30)))
     assert kyy == pytest.approx(r4.stiffness_matrix[1, 1], rel=1e-6)

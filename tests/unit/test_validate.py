@@ -12,8 +12,17 @@ from bearinglab.cli import main
 from bearinglab.validation import Case, datasets, seed000, seed004
 from bearinglab.validation.run import run_case, summarize, verdict
 
-CASE_KEYS = {"source", "quantity", "published", "computed", "unit", "error_percent", "passed",
-             "known_failure", "tolerance_percent"}
+CASE_KEYS = {
+    "source",
+    "quantity",
+    "published",
+    "computed",
+    "unit",
+    "error_percent",
+    "passed",
+    "known_failure",
+    "tolerance_percent",
+}
 
 
 def _case(quantity, computed, published=10.0, known=None):
@@ -22,15 +31,25 @@ def _case(quantity, computed, published=10.0, known=None):
             raise computed
         return computed
 
-    return Case("test source", quantity, published, "Hz", compute, 0.01, "1 % for the test",
-                known_failure=known)
+    return Case(
+        "test source",
+        quantity,
+        published,
+        "Hz",
+        compute,
+        0.01,
+        "1 % for the test",
+        known_failure=known,
+    )
 
 
 GOOD = [_case("passes", 10.05), _case("known, fails as documented", 12.0, known="a reason")]
-BAD = {"fail": _case("fails", 11.0),
-       "unexpected pass": _case("known but passes", 10.0, known="a reason"),
-       "error": _case("raises", ValueError("no convergence")),
-       "nan": _case("not finite", math.nan)}
+BAD = {
+    "fail": _case("fails", 11.0),
+    "unexpected pass": _case("known but passes", 10.0, known="a reason"),
+    "error": _case("raises", ValueError("no convergence")),
+    "nan": _case("not finite", math.nan),
+}
 
 
 def run(monkeypatch, capsys, cases, *args):
@@ -67,7 +86,7 @@ def test_all_good_json_and_exit_0(monkeypatch, capsys):
 def test_a_case_that_does_not_behave_as_documented_exits_1(monkeypatch, capsys, bad):
     code, out, _ = run(monkeypatch, capsys, [*GOOD, BAD[bad]], "--json")
     assert code == 1
-    d = json.loads(out)       # still one valid JSON object (NaN and errors become null)
+    d = json.loads(out)  # still one valid JSON object (NaN and errors become null)
     last = d["cases"][-1]
     assert last["verdict"] == ("fail" if bad == "nan" else bad)
     assert last["passed"] is False or bad == "unexpected pass"
@@ -89,8 +108,7 @@ def test_table_shows_verdicts_reasons_and_summary(monkeypatch, capsys):
 
 def test_html_is_self_contained(monkeypatch, capsys, tmp_path):
     path = tmp_path / "validate.html"
-    code, out, _ = run(monkeypatch, capsys, [*GOOD, BAD["error"]], "--html", str(path),
-                       "--json")
+    code, out, _ = run(monkeypatch, capsys, [*GOOD, BAD["error"]], "--html", str(path), "--json")
     assert code == 1 and json.loads(out)["summary"]["errors"] == 1
     page = path.read_text(encoding="utf-8")
     assert page.startswith("<!DOCTYPE html>") and "test source" in page
@@ -122,12 +140,17 @@ def test_real_cheap_cases_pass_or_fail_as_documented(monkeypatch, capsys):
 def test_run_case_and_summary_directly():
     results = [run_case(c) for c in (*GOOD, *BAD.values())]
     s = summarize(results, 1.5)
-    assert (s["passed"], s["known_failures"], s["failed"], s["unexpected_passes"],
-            s["errors"]) == (1, 1, 2, 1, 1)
+    assert (s["passed"], s["known_failures"], s["failed"], s["unexpected_passes"], s["errors"]) == (
+        1,
+        1,
+        2,
+        1,
+        1,
+    )
     assert s["duration_s"] == 1.5 and s["ok"] is False
 
 
 def test_registry_is_the_one_list():
     ids = [c.id for c in validation.all_cases()]
-    assert len(ids) == len(set(ids))           # every case once
+    assert len(ids) == len(set(ids))  # every case once
     assert len(ids) > 40

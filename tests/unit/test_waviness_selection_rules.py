@@ -34,8 +34,9 @@ from bearinglab.imperfections import Imperfections, Waviness
 from bearinglab.operating import OperatingCondition
 from bearinglab.quasistatic.orbit import inner_ring_orbit
 
-B608 = BallBearing(ball_count=7, ball_diameter=3.969e-3, pitch_diameter=15e-3,
-                   diametral_clearance=10e-6)
+B608 = BallBearing(
+    ball_count=7, ball_diameter=3.969e-3, pitch_diameter=15e-3, diametral_clearance=10e-6
+)
 PRELOAD = OperatingCondition(axial_load=20.0, shaft_speed=720 * math.pi / 30)
 Z = B608.ball_count
 AMPLITUDE = 0.1e-6
@@ -44,8 +45,9 @@ AMPLITUDE = 0.1e-6
 def run(waviness):
     """The orbit over 8 shaft revolutions and the kinematic frequencies it ran at: shaft
     f_i, cage f_c, ball spin f_b [Hz]."""
-    orbit = inner_ring_orbit(B608, PRELOAD, imperfections=Imperfections([waviness]),
-                             revolutions=8, points=192)
+    orbit = inner_ring_orbit(
+        B608, PRELOAD, imperfections=Imperfections([waviness]), revolutions=8, points=192
+    )
     f = orbit.frequencies
     return orbit, {"i": f["shaft_hz"], "c": f["cage_hz"], "b": f["ball_spin_hz"]}
 
@@ -72,9 +74,9 @@ def lines(signal, time, predicted):
 
 def assert_lines(signal, time, predicted, cleanliness=0.05):
     peaks, other, top = lines(signal, time, predicted)
-    assert max(peaks) == pytest.approx(top)             # the strongest line is predicted
-    assert min(peaks) > 0.3 * top                       # every predicted line is there
-    assert other < cleanliness * min(peaks), (peaks, other)   # nothing else of note
+    assert max(peaks) == pytest.approx(top)  # the strongest line is predicted
+    assert min(peaks) > 0.3 * top  # every predicted line is there
+    assert other < cleanliness * min(peaks), (peaks, other)  # nothing else of note
 
 
 @pytest.mark.parametrize("k, sign", [(1, -1), (1, +1), (2, -1)])
@@ -82,7 +84,7 @@ def test_outer_race_q_kz_pm_1_gives_radial_lines_at_kz_fc(k, sign):
     orbit, f = run(Waviness("outer", k * Z + sign, AMPLITUDE))
     assert_lines(orbit.x, orbit.time, [k * Z * f["c"]])
     assert_lines(orbit.y, orbit.time, [k * Z * f["c"]])
-    assert np.ptp(orbit.z) < 1e-3 * np.ptp(orbit.x)          # and hardly any axial motion
+    assert np.ptp(orbit.z) < 1e-3 * np.ptp(orbit.x)  # and hardly any axial motion
 
 
 @pytest.mark.parametrize("k, sign", [(1, -1), (1, +1)])
@@ -108,7 +110,7 @@ def test_even_ball_waviness_gives_lines_at_2k_fb_pm_fc(order):
     # would keep the Z-fold symmetry and move the ring axially only)
     orbit, f = run(Waviness("ball", order, AMPLITUDE, ball=0))
     assert_lines(orbit.x, orbit.time, [order * f["b"] - f["c"], order * f["b"] + f["c"]])
-    assert_lines(orbit.z, orbit.time, [order * f["b"]])       # its diameter pulses at 2k f_b
+    assert_lines(orbit.z, orbit.time, [order * f["b"]])  # its diameter pulses at 2k f_b
 
 
 def test_odd_ball_waviness_does_not_move_the_ring():

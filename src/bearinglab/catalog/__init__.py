@@ -19,19 +19,27 @@ from .build import GeometryNeeded, bearing_from_designation
 from .estimate import EstimatedGeometry, estimate_internal_geometry
 from .families import FAMILIES, Family
 from .lookup import (
-                     BoundaryDimensions,
-                     PublishedGeometry,
-                     boundary_dimensions,
-                     catalog_table,
-                     published_geometries,
-                     published_geometry,
-                     radial_clearance,
+    BoundaryDimensions,
+    PublishedGeometry,
+    boundary_dimensions,
+    catalog_table,
+    published_geometries,
+    published_geometry,
+    radial_clearance,
 )
 
 __all__ = [
-    "FAMILIES", "BoundaryDimensions", "EstimatedGeometry", "Family", "GeometryNeeded",
+    "FAMILIES",
+    "BoundaryDimensions",
+    "EstimatedGeometry",
+    "Family",
+    "GeometryNeeded",
     "PublishedGeometry",
-    "bearing_from_designation", "boundary_dimensions", "catalog_table",
-    "estimate_internal_geometry", "published_geometries", "published_geometry",
+    "bearing_from_designation",
+    "boundary_dimensions",
+    "catalog_table",
+    "estimate_internal_geometry",
+    "published_geometries",
+    "published_geometry",
     "radial_clearance",
 ]

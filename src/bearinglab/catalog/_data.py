@@ -15,16 +15,26 @@ from importlib import resources
 
 #: The shipped tables: file name -> (what it holds, string columns).
 TABLES: dict[str, tuple[str, tuple[str, ...]]] = {
-    "iso15_radial.csv": ("boundary dimensions of radial bearings by ISO 15 dimension series",
-                         ("dimension_series",)),
-    "iso355_tapered.csv": ("boundary dimensions of metric tapered roller bearings (ISO 355)",
-                           ("series",)),
-    "iso104_thrust.csv": ("boundary dimensions of single-direction thrust ball bearings (ISO 104)",
-                          ("series",)),
-    "internal_geometry.csv": ("published internal geometry of specific bearings",
-                              ("name", "designation", "source", "notes")),
-    "iso5753_radial_clearance.csv": ("deep-groove ball bearing radial clearance (ISO 5753-1)",
-                                     ("group",)),
+    "iso15_radial.csv": (
+        "boundary dimensions of radial bearings by ISO 15 dimension series",
+        ("dimension_series",),
+    ),
+    "iso355_tapered.csv": (
+        "boundary dimensions of metric tapered roller bearings (ISO 355)",
+        ("series",),
+    ),
+    "iso104_thrust.csv": (
+        "boundary dimensions of single-direction thrust ball bearings (ISO 104)",
+        ("series",),
+    ),
+    "internal_geometry.csv": (
+        "published internal geometry of specific bearings",
+        ("name", "designation", "source", "notes"),
+    ),
+    "iso5753_radial_clearance.csv": (
+        "deep-groove ball bearing radial clearance (ISO 5753-1)",
+        ("group",),
+    ),
 }
 
 
@@ -40,15 +50,17 @@ def source_lines(name: str) -> list[str]:
     True
     """
     text = resources.files(__package__).joinpath("data").joinpath(name).read_text(encoding="utf-8")
-    return [line[len("# source:"):].strip() for line in text.splitlines()
-            if line.startswith("# source:")]
+    return [
+        line[len("# source:") :].strip()
+        for line in text.splitlines()
+        if line.startswith("# source:")
+    ]
 
 
 def _open(name: str):
     if name not in TABLES:
         raise KeyError(f"no shipped table {name!r}; known: {sorted(TABLES)}")
-    return resources.files(__package__).joinpath("data").joinpath(name).open("r",
-                                                                          encoding="utf-8")
+    return resources.files(__package__).joinpath("data").joinpath(name).open("r", encoding="utf-8")
 
 
 @cache
@@ -69,8 +81,13 @@ def rows(name: str) -> tuple[dict, ...]:
     text_cols = TABLES[name][1] if name in TABLES else ()
     with _open(name) as fh:
         reader = csv.DictReader(line for line in fh if not line.startswith("#"))
-        return tuple({k: (v if k in text_cols else (float(v) if v.strip() else None))
-                      for k, v in row.items()} for row in reader)
+        return tuple(
+            {
+                k: (v if k in text_cols else (float(v) if v.strip() else None))
+                for k, v in row.items()
+            }
+            for row in reader
+        )
 
 
 def read_table(name: str):

@@ -57,13 +57,31 @@ from .lookup import (
 )
 
 #: Keywords of BallBearing a caller may override.
-OVERRIDABLE = ("ball_count", "ball_diameter", "pitch_diameter", "inner_groove_factor",
-               "outer_groove_factor", "contact_angle", "diametral_clearance", "bore",
-               "outside_diameter", "width", "ring_material", "ball_material", "name",
-               "inner_arch_angle", "outer_arch_angle")
+OVERRIDABLE = (
+    "ball_count",
+    "ball_diameter",
+    "pitch_diameter",
+    "inner_groove_factor",
+    "outer_groove_factor",
+    "contact_angle",
+    "diametral_clearance",
+    "bore",
+    "outside_diameter",
+    "width",
+    "ring_material",
+    "ball_material",
+    "name",
+    "inner_arch_angle",
+    "outer_arch_angle",
+)
 USER_SOURCE = Source("user", "command line or caller")
-_INTERNAL = ("ball_count", "ball_diameter", "pitch_diameter", "inner_groove_factor",
-             "outer_groove_factor")
+_INTERNAL = (
+    "ball_count",
+    "ball_diameter",
+    "pitch_diameter",
+    "inner_groove_factor",
+    "outer_groove_factor",
+)
 
 
 class GeometryNeeded(CatalogError):
@@ -91,26 +109,37 @@ def _check_type(des: Any, overrides: dict) -> None:
         series = getattr(des, "series", None)
         fam = FAMILIES.get(series)
         if fam is not None and fam.rows != 1:
-            raise CatalogError(f"{text!r} is a {fam.rows}-row bearing (family {series}): only "
-                               "single-row ball bearings have an internal-geometry model yet")
+            raise CatalogError(
+                f"{text!r} is a {fam.rows}-row bearing (family {series}): only "
+                "single-row ball bearings have an internal-geometry model yet"
+            )
         return
     if btype == "thrust_ball":
         if any("double-direction" in meaning for _, meaning in getattr(des, "parts", ())):
-            raise CatalogError(f"{text!r} is a double-direction thrust ball bearing: only "
-                               "single-direction (one row) thrust ball bearings have an "
-                               "internal-geometry model")
+            raise CatalogError(
+                f"{text!r} is a double-direction thrust ball bearing: only "
+                "single-direction (one row) thrust ball bearings have an "
+                "internal-geometry model"
+            )
         missing = tuple(k for k in THRUST_NEEDS if k not in overrides)
         if missing:
-            raise GeometryNeeded(f"{text!r} is a thrust ball bearing: no internal-geometry "
-                                 "model estimates its balls and pitch circle", missing)
+            raise GeometryNeeded(
+                f"{text!r} is a thrust ball bearing: no internal-geometry "
+                "model estimates its balls and pitch circle",
+                missing,
+            )
         return
     if btype == "self_aligning_ball":
-        raise CatalogError(f"{text!r} is a self-aligning (double-row) ball bearing: only "
-                           "single-row radial, angular-contact and four-point ball bearings, and "
-                           "thrust ball bearings with explicit geometry, have an "
-                           "internal-geometry model yet")
-    raise CatalogError(f"{text!r} is a {str(btype).replace('_', ' ')} bearing: only ball "
-                       "bearings have an internal-geometry model yet")
+        raise CatalogError(
+            f"{text!r} is a self-aligning (double-row) ball bearing: only "
+            "single-row radial, angular-contact and four-point ball bearings, and "
+            "thrust ball bearings with explicit geometry, have an "
+            "internal-geometry model yet"
+        )
+    raise CatalogError(
+        f"{text!r} is a {str(btype).replace('_', ' ')} bearing: only ball "
+        "bearings have an internal-geometry model yet"
+    )
 
 
 def _by_name(text: str) -> PublishedGeometry | None:
@@ -136,7 +165,8 @@ def _contact_angle_default(des: Any) -> tuple[float | None, Source | None]:
     fam = FAMILIES.get(getattr(des, "series", None))
     if fam is not None and fam.default_contact_angle is not None:
         return fam.default_contact_angle, Source(
-            "default", f"family {fam.key} default {math.degrees(fam.default_contact_angle):g} deg")
+            "default", f"family {fam.key} default {math.degrees(fam.default_contact_angle):g} deg"
+        )
     if getattr(des, "bearing_type", None) == "radial_ball":
         return 0.0, Source("default", "deep-groove ball bearing: nominal contact angle 0")
     return None, None
@@ -150,15 +180,26 @@ _COMBINED_CLEARANCE = {"P62": "C2", "P63": "C3", "P52": "C2", "P53": "C3"}
 def _clearance_group_of(des: Any) -> tuple[str, str, str | None]:
     """(ISO 5753-1 group, where it comes from, the code written or None) of a designation."""
     if getattr(des, "system", None) == "gost":
-        signs = [code for code, meaning in getattr(des, "prefixes", ())
-                 if meaning.startswith("radial clearance group")]
+        signs = [
+            code
+            for code, meaning in getattr(des, "prefixes", ())
+            if meaning.startswith("radial clearance group")
+        ]
         if signs:
-            return "CN", (f"GOST clearance group {signs[-1]} in the prefix not mapped to an "
-                          "ISO 5753-1 group (correspondence not verified): CN assumed"), None
+            return (
+                "CN",
+                (
+                    f"GOST clearance group {signs[-1]} in the prefix not mapped to an "
+                    "ISO 5753-1 group (correspondence not verified): CN assumed"
+                ),
+                None,
+            )
         return "CN", "no clearance group in the designation: CN (normal) assumed", None
-    written = [(code, _COMBINED_CLEARANCE.get(code, code))
-               for code, _ in getattr(des, "suffixes", ())
-               if code in _COMBINED_CLEARANCE or _CLEARANCE_SUFFIX.fullmatch(code)]
+    written = [
+        (code, _COMBINED_CLEARANCE.get(code, code))
+        for code, _ in getattr(des, "suffixes", ())
+        if code in _COMBINED_CLEARANCE or _CLEARANCE_SUFFIX.fullmatch(code)
+    ]
     if not written:
         return "CN", "no clearance group in the designation: CN (normal) assumed", None
     code, group = written[-1]
@@ -181,20 +222,28 @@ def _table_clearance(des: Any, text: str) -> tuple[float | None, Source]:
         key, over, incl, low, high = _clearance_band(float(des.bore), group)
     except (CatalogError, InputError) as exc:
         if code is not None:
-            raise CatalogError(f"{text!r}: radial internal clearance {code}: {exc}; give "
-                               "diametral_clearance as an override") from exc
-        return None, Source("default", f"not published, and no ISO 5753-1 value ({exc}): "
-                                       "BallBearing derives it from the contact angle (zero "
-                                       "for a radial bearing)")
+            raise CatalogError(
+                f"{text!r}: radial internal clearance {code}: {exc}; give "
+                "diametral_clearance as an override"
+            ) from exc
+        return None, Source(
+            "default",
+            f"not published, and no ISO 5753-1 value ({exc}): "
+            "BallBearing derives it from the contact angle (zero "
+            "for a radial bearing)",
+        )
     bore_mm = round(float(des.bore) * 1e3, 6)
     return (low + high) / 2e6, Source(
-        "estimated", f"ISO 5753-1 group {key}: mean of {low:g}-{high:g} um (deep-groove ball "
-                     f"bearing, bore {bore_mm:g} mm over {over:g} incl {incl:g} mm; {where}; "
-                     f"{CLEARANCE_TABLE})")
+        "estimated",
+        f"ISO 5753-1 group {key}: mean of {low:g}-{high:g} um (deep-groove ball "
+        f"bearing, bore {bore_mm:g} mm over {over:g} incl {incl:g} mm; {where}; "
+        f"{CLEARANCE_TABLE})",
+    )
 
 
-def bearing_from_designation(text: str, system: str | None = None,
-                             overrides: dict | None = None) -> tuple[BallBearing, Any]:
+def bearing_from_designation(
+    text: str, system: str | None = None, overrides: dict | None = None
+) -> tuple[BallBearing, Any]:
     """Build a BallBearing from a designation (ISO or GOST) or a catalogue name.
 
     ``text`` may be a catalogue name of a published bearing (``"ER-16K"``,
@@ -286,18 +335,28 @@ def bearing_from_designation(text: str, system: str | None = None,
     angle, angle_source = _contact_angle_default(des)
     if angle is not None and angle_source is not None:
         put("contact_angle", angle, angle_source)
-    if ("contact_angle" not in values and getattr(des, "system", None) == "gost"
-            and getattr(des, "bearing_type", None) == "angular_contact_ball"):
-        raise GeometryNeeded(f"{text!r} read as GOST 3189-89 is an angular contact ball bearing "
-                             "without a contact-angle design variant (36xxx = 12, 46xxx = 26, "
-                             "66xxx = 36 deg), so its contact angle is not known",
-                             ("contact_angle",))
+    if (
+        "contact_angle" not in values
+        and getattr(des, "system", None) == "gost"
+        and getattr(des, "bearing_type", None) == "angular_contact_ball"
+    ):
+        raise GeometryNeeded(
+            f"{text!r} read as GOST 3189-89 is an angular contact ball bearing "
+            "without a contact-angle design variant (36xxx = 12, 46xxx = 26, "
+            "66xxx = 36 deg), so its contact angle is not known",
+            ("contact_angle",),
+        )
 
-    clearance_default = Source("default", "not published: BallBearing derives it from the "
-                                          "contact angle (zero for a radial bearing)")
-    if ("diametral_clearance" not in values and des is not None
-            and getattr(des, "bearing_type", None) == "radial_ball"
-            and getattr(FAMILIES.get(getattr(des, "series", None)), "rows", 1) == 1):
+    clearance_default = Source(
+        "default",
+        "not published: BallBearing derives it from the contact angle (zero for a radial bearing)",
+    )
+    if (
+        "diametral_clearance" not in values
+        and des is not None
+        and getattr(des, "bearing_type", None) == "radial_ball"
+        and getattr(FAMILIES.get(getattr(des, "series", None)), "rows", 1) == 1
+    ):
         clearance, clearance_source = _table_clearance(des, text)
         if clearance is not None:
             put("diametral_clearance", clearance, clearance_source)
@@ -307,20 +366,32 @@ def bearing_from_designation(text: str, system: str | None = None,
     missing = [k for k in _INTERNAL if k not in values]
     if missing and any(k in missing for k in ("ball_count", "ball_diameter", "pitch_diameter")):
         if dims is None or "bore" not in values or "outside_diameter" not in values:
-            reason = (str(dims_error) if dims_error is not None else
-                      "no ISO family and bore to estimate from")
-            raise GeometryNeeded(f"{text!r}: cannot estimate the internal geometry ({reason})",
-                                 tuple(k for k in missing if k in THRUST_NEEDS))
+            reason = (
+                str(dims_error)
+                if dims_error is not None
+                else "no ISO family and bore to estimate from"
+            )
+            raise GeometryNeeded(
+                f"{text!r}: cannot estimate the internal geometry ({reason})",
+                tuple(k for k in missing if k in THRUST_NEEDS),
+            )
         btype = getattr(des, "bearing_type", "radial_ball")
-        est = estimate_internal_geometry(values["bore"], values["outside_diameter"],
-                                         dims.dimension_series or "", btype,
-                                         values.get("contact_angle"))
+        est = estimate_internal_geometry(
+            values["bore"],
+            values["outside_diameter"],
+            dims.dimension_series or "",
+            btype,
+            values.get("contact_angle"),
+        )
         for name, value in est.as_kwargs().items():
             put(name, value, Source("estimated", ESTIMATE_METHOD))
     if getattr(des, "bearing_type", None) == "thrust_ball":
-        assumed = Source("default", f"deep-groove values f_i = {INNER_GROOVE_FACTOR}, "
-                                    f"f_o = {OUTER_GROOVE_FACTOR} assumed for a thrust ball "
-                                    "bearing (not estimated)")
+        assumed = Source(
+            "default",
+            f"deep-groove values f_i = {INNER_GROOVE_FACTOR}, "
+            f"f_o = {OUTER_GROOVE_FACTOR} assumed for a thrust ball "
+            "bearing (not estimated)",
+        )
         put("inner_groove_factor", INNER_GROOVE_FACTOR, assumed)
         put("outer_groove_factor", OUTER_GROOVE_FACTOR, assumed)
     put("inner_groove_factor", INNER_GROOVE_FACTOR, Source("estimated", ESTIMATE_METHOD))
@@ -332,8 +403,9 @@ def bearing_from_designation(text: str, system: str | None = None,
     for name in ("ring_material", "ball_material"):
         if name not in values:
             sources[name] = Source("default", "AISI 52100 bearing steel")
-    name = values.pop("name", None) or (named.name if named is not None else
-                                        getattr(des, "text", text))
+    name = values.pop("name", None) or (
+        named.name if named is not None else getattr(des, "text", text)
+    )
     btype = getattr(des, "bearing_type", None) or "radial_ball"
     if btype == "four_point_contact_ball":
         _four_point_grooves(values, sources)
@@ -353,13 +425,18 @@ def _four_point_grooves(values: dict, sources: dict) -> None:
     if "diametral_clearance" not in values:
         values["diametral_clearance"] = 0.0
         sources["diametral_clearance"] = Source(
-            "estimated", "four-point bearing taken to touch at all four points (P_d = 0)")
+            "estimated", "four-point bearing taken to touch at all four points (P_d = 0)"
+        )
     a = (values["inner_groove_factor"] + values["outer_groove_factor"] - 1.0) * values[
-        "ball_diameter"]
-    arch = math.acos(max(-1.0, min(1.0, math.cos(alpha) + values["diametral_clearance"]
-                                   / (2.0 * a))))
-    source = Source("estimated", "gothic arch giving the nominal contact angle with the "
-                                 "clearance (seed 001 eq. 2)")
+        "ball_diameter"
+    ]
+    arch = math.acos(
+        max(-1.0, min(1.0, math.cos(alpha) + values["diametral_clearance"] / (2.0 * a)))
+    )
+    source = Source(
+        "estimated",
+        "gothic arch giving the nominal contact angle with the clearance (seed 001 eq. 2)",
+    )
     for name in ("inner_arch_angle", "outer_arch_angle"):
         values[name] = arch
         sources[name] = source

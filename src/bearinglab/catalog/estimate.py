@@ -45,10 +45,12 @@ from numbers import Real
 from ..errors import InputError
 
 #: Citation attached to every estimated value (``Source("estimated", ESTIMATE_METHOD)``).
-ESTIMATE_METHOD = ("deep-groove ball bearing design rules (Chinese bearing industry, "
-                   "'深沟球轴承设计方法', sec. 2-3, Tables 1-2): D_w = K_w (D - d) with K_w the "
-                   "middle of the Table 1 range, d_m = (D + d)/2, Z from the ball filling angle, "
-                   "f_i = 0.515, f_o = 0.525")
+ESTIMATE_METHOD = (
+    "deep-groove ball bearing design rules (Chinese bearing industry, "
+    "'深沟球轴承设计方法', sec. 2-3, Tables 1-2): D_w = K_w (D - d) with K_w the "
+    "middle of the Table 1 range, d_m = (D + d)/2, Z from the ball filling angle, "
+    "f_i = 0.515, f_o = 0.525"
+)
 
 #: Table 1: K_w ranges (low, high) by bore range and diameter-series group.
 KW_TABLE: tuple[tuple[float, dict[str, tuple[float, float]]], ...] = (
@@ -87,15 +89,22 @@ def diameter_series_group(dimension_series: str) -> str:
     """
     text = str(dimension_series).strip()
     if not text or text[-1] not in "0123456789":
-        raise InputError("dimension_series", dimension_series,
-                         "an ISO dimension series such as '02', '10' or '18'")
+        raise InputError(
+            "dimension_series",
+            dimension_series,
+            "an ISO dimension series such as '02', '10' or '18'",
+        )
     digit = text[-1]
     if digit in "78901":
         return "0"
     if digit in "234":
         return digit
-    raise InputError("dimension_series", dimension_series,
-                     "diameter series 7, 8, 9, 0, 1, 2, 3 or 4", "no Table 1 values for it")
+    raise InputError(
+        "dimension_series",
+        dimension_series,
+        "diameter series 7, 8, 9, 0, 1, 2, 3 or 4",
+        "no Table 1 values for it",
+    )
 
 
 def ball_diameter_factor(bore: float, dimension_series: str) -> float:
@@ -154,11 +163,14 @@ class EstimatedGeometry:
 
     def as_kwargs(self) -> dict:
         """The values as :class:`~bearinglab.geometry.BallBearing` keywords."""
-        return {"ball_count": self.ball_count, "ball_diameter": self.ball_diameter,
-                "pitch_diameter": self.pitch_diameter,
-                "inner_groove_factor": self.inner_groove_factor,
-                "outer_groove_factor": self.outer_groove_factor,
-                "contact_angle": self.contact_angle}
+        return {
+            "ball_count": self.ball_count,
+            "ball_diameter": self.ball_diameter,
+            "pitch_diameter": self.pitch_diameter,
+            "inner_groove_factor": self.inner_groove_factor,
+            "outer_groove_factor": self.outer_groove_factor,
+            "contact_angle": self.contact_angle,
+        }
 
 
 def _fill(count: int, ball_diameter: float, pitch: float) -> float:
@@ -170,8 +182,11 @@ def _pitch_for(count: int, ball_diameter: float, fill_angle: float) -> float:
     return ball_diameter / math.sin(fill_angle / (2.0 * (count - 1)))
 
 
-def ball_count_and_pitch(ball_diameter: float, pitch_diameter: float, dimension_series: str,
-                         ) -> tuple[int, float, tuple[str, ...]]:
+def ball_count_and_pitch(
+    ball_diameter: float,
+    pitch_diameter: float,
+    dimension_series: str,
+) -> tuple[int, float, tuple[str, ...]]:
     """Ball count and (possibly enlarged) pitch diameter by the filling-angle rule.
 
     Z = round(psi_design / (2 asin(D_w/d_m)) + 1); if the real filling angle exceeds the
@@ -198,8 +213,11 @@ def ball_count_and_pitch(ball_diameter: float, pitch_diameter: float, dimension_
     """
     group = diameter_series_group(dimension_series)
     if not 0.0 < ball_diameter < pitch_diameter:
-        raise InputError("ball_diameter", ball_diameter,
-                         f"a length between 0 and the pitch diameter {pitch_diameter:.6g} m")
+        raise InputError(
+            "ball_diameter",
+            ball_diameter,
+            f"a length between 0 and the pitch diameter {pitch_diameter:.6g} m",
+        )
     psi_max = math.radians(MAX_FILL_ANGLE_DEG[group])
     psi_min = math.radians(MIN_FILL_ANGLE_DEG)
     limit = pitch_diameter * (1.0 + MAX_PITCH_ENLARGEMENT)
@@ -218,9 +236,11 @@ def ball_count_and_pitch(ball_diameter: float, pitch_diameter: float, dimension_
         if wider <= limit:
             count, pitch = count + 1, wider
         else:
-            notes.append(f"filling angle {math.degrees(_fill(count, ball_diameter, pitch)):.1f} "
-                         "deg is below the 180 deg of the design rules; one more ball would "
-                         "need more than 3 % larger pitch diameter")
+            notes.append(
+                f"filling angle {math.degrees(_fill(count, ball_diameter, pitch)):.1f} "
+                "deg is below the 180 deg of the design rules; one more ball would "
+                "need more than 3 % larger pitch diameter"
+            )
     return count, pitch, tuple(notes)
 
 
@@ -244,9 +264,13 @@ def kw_range(bore: float, dimension_series: str) -> tuple[float, float]:
     raise AssertionError("unreachable: the last bore limit is infinite")
 
 
-def estimate_internal_geometry(bore: float, outside_diameter: float, dimension_series: str,
-                               bearing_type: str = "radial_ball",
-                               contact_angle: float | None = None) -> EstimatedGeometry:
+def estimate_internal_geometry(
+    bore: float,
+    outside_diameter: float,
+    dimension_series: str,
+    bearing_type: str = "radial_ball",
+    contact_angle: float | None = None,
+) -> EstimatedGeometry:
     """Estimate Z, D_w, d_m, f_i, f_o and the contact angle of a ball bearing.
 
     See the module docstring for the method and its source.
@@ -269,8 +293,12 @@ def estimate_internal_geometry(bore: float, outside_diameter: float, dimension_s
     (9, 8.1, 38.56)
     """
     if bearing_type not in BALL_TYPES:
-        raise InputError("bearing_type", bearing_type, f"one of {BALL_TYPES}",
-                         "the design rules are for single-row ball bearings")
+        raise InputError(
+            "bearing_type",
+            bearing_type,
+            f"one of {BALL_TYPES}",
+            "the design rules are for single-row ball bearings",
+        )
     for name, value in (("bore", bore), ("outside_diameter", outside_diameter)):
         if not (isinstance(value, Real) and math.isfinite(value) and value > 0):
             raise InputError(name, value, "a positive length [m]")
@@ -278,21 +306,34 @@ def estimate_internal_geometry(bore: float, outside_diameter: float, dimension_s
         raise InputError("outside_diameter", outside_diameter, f"more than the bore {bore:.6g} m")
     if contact_angle is None:
         if bearing_type != "radial_ball":
-            raise InputError("contact_angle", contact_angle,
-                             "a nominal contact angle [rad] for an angular-contact bearing")
+            raise InputError(
+                "contact_angle",
+                contact_angle,
+                "a nominal contact angle [rad] for an angular-contact bearing",
+            )
         contact_angle = 0.0
     if not 0.0 <= contact_angle < 0.5 * math.pi:
         raise InputError("contact_angle", contact_angle, "an angle in [0, pi/2) rad")
     kw = ball_diameter_factor(bore, dimension_series)
     ball = kw * (outside_diameter - bore)
-    count, pitch, notes = ball_count_and_pitch(ball, 0.5 * (outside_diameter + bore),
-                                               dimension_series)
+    count, pitch, notes = ball_count_and_pitch(
+        ball, 0.5 * (outside_diameter + bore), dimension_series
+    )
     if bearing_type != "radial_ball":
-        notes += (("the Conrad filling-angle rule gives a lower bound of the ball count of an "
-                   "angular-contact or four-point bearing"),)
-    return EstimatedGeometry(ball_count=count, ball_diameter=ball, pitch_diameter=pitch,
-                             inner_groove_factor=INNER_GROOVE_FACTOR,
-                             outer_groove_factor=OUTER_GROOVE_FACTOR,
-                             contact_angle=float(contact_angle),
-                             fill_angle=_fill(count, ball, pitch), ball_diameter_factor=kw,
-                             notes=notes)
+        notes += (
+            (
+                "the Conrad filling-angle rule gives a lower bound of the ball count of an "
+                "angular-contact or four-point bearing"
+            ),
+        )
+    return EstimatedGeometry(
+        ball_count=count,
+        ball_diameter=ball,
+        pitch_diameter=pitch,
+        inner_groove_factor=INNER_GROOVE_FACTOR,
+        outer_groove_factor=OUTER_GROOVE_FACTOR,
+        contact_angle=float(contact_angle),
+        fill_angle=_fill(count, ball, pitch),
+        ball_diameter_factor=kw,
+        notes=notes,
+    )

@@ -21,8 +21,11 @@ import math
 from dataclasses import dataclass
 
 #: Shipped table of each standard.
-TABLE_FILES = {"iso15": "iso15_radial.csv", "iso355": "iso355_tapered.csv",
-               "iso104": "iso104_thrust.csv"}
+TABLE_FILES = {
+    "iso15": "iso15_radial.csv",
+    "iso355": "iso355_tapered.csv",
+    "iso104": "iso104_thrust.csv",
+}
 #: Standard named for each table.
 STANDARDS = {"iso15": "ISO 15:2017", "iso355": "ISO 355:2019", "iso104": "ISO 104:2015"}
 
@@ -63,13 +66,28 @@ class Family:
 def _families() -> dict[str, Family]:
     out: dict[str, Family] = {}
 
-    def add(key: str, btype: str, dims: str, table: str = "iso15", rows: int = 1,
-            angle_deg: float | None = None) -> None:
+    def add(
+        key: str,
+        btype: str,
+        dims: str,
+        table: str = "iso15",
+        rows: int = 1,
+        angle_deg: float | None = None,
+    ) -> None:
         angle = None if angle_deg is None else math.radians(angle_deg)
         out[key] = Family(key, btype, dims, table, rows, angle)
 
-    for key, dims in (("618", "18"), ("619", "19"), ("160", "00"), ("60", "10"), ("62", "02"),
-                      ("63", "03"), ("64", "04"), ("68", "18"), ("69", "19")):
+    for key, dims in (
+        ("618", "18"),
+        ("619", "19"),
+        ("160", "00"),
+        ("60", "10"),
+        ("62", "02"),
+        ("63", "03"),
+        ("64", "04"),
+        ("68", "18"),
+        ("69", "19"),
+    ):
         add(key, "radial_ball", dims, angle_deg=0.0)
     for key, dims in (("12", "02"), ("13", "03"), ("22", "22"), ("23", "23")):
         add(key, "self_aligning_ball", dims, rows=2)
@@ -83,15 +101,32 @@ def _families() -> dict[str, Family]:
     for key, dims in (("QJ2", "02"), ("QJ3", "03")):
         add(key, "four_point_contact_ball", dims, angle_deg=35.0)
     for prefix in ("N", "NU", "NJ", "NUP", "NF"):
-        for series, dims in (("10", "10"), ("2", "02"), ("3", "03"), ("4", "04"), ("22", "22"),
-                             ("23", "23")):
+        for series, dims in (
+            ("10", "10"),
+            ("2", "02"),
+            ("3", "03"),
+            ("4", "04"),
+            ("22", "22"),
+            ("23", "23"),
+        ):
             add(prefix + series, "cylindrical_roller", dims)
     add("NN30", "cylindrical_roller", "30", rows=2)
     for key, dims in (("NA48", "48"), ("NA49", "49"), ("NA69", "69")):
         add(key, "needle_roller", dims)
-    for key, dims in (("213", "03"), ("222", "22"), ("223", "23"), ("230", "30"), ("231", "31"),
-                      ("232", "32"), ("238", "38"), ("239", "39"), ("240", "40"), ("241", "41"),
-                      ("248", "48"), ("249", "49")):
+    for key, dims in (
+        ("213", "03"),
+        ("222", "22"),
+        ("223", "23"),
+        ("230", "30"),
+        ("231", "31"),
+        ("232", "32"),
+        ("238", "38"),
+        ("239", "39"),
+        ("240", "40"),
+        ("241", "41"),
+        ("248", "48"),
+        ("249", "49"),
+    ):
         add(key, "spherical_roller", dims, rows=1 if key == "213" else 2)
     for key in ("302", "303", "313", "320", "322", "323", "329", "330", "331", "332"):
         add(key, "tapered_roller", key[1:], table="iso355")
@@ -114,10 +149,20 @@ def families_table():
     """
     import pandas as pd
 
-    rows = [{"family": f.key, "bearing_type": f.bearing_type,
-             "dimension_series": f.dimension_series, "standard": f.standard,
-             "table": TABLE_FILES[f.table], "rows": f.rows,
-             "default_contact_angle_deg": (None if f.default_contact_angle is None
-                                           else round(math.degrees(f.default_contact_angle), 6))}
-            for f in FAMILIES.values()]
+    rows = [
+        {
+            "family": f.key,
+            "bearing_type": f.bearing_type,
+            "dimension_series": f.dimension_series,
+            "standard": f.standard,
+            "table": TABLE_FILES[f.table],
+            "rows": f.rows,
+            "default_contact_angle_deg": (
+                None
+                if f.default_contact_angle is None
+                else round(math.degrees(f.default_contact_angle), 6)
+            ),
+        }
+        for f in FAMILIES.values()
+    ]
     return pd.DataFrame(rows)

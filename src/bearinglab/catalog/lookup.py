@@ -22,8 +22,15 @@ from .families import FAMILIES, TABLE_FILES, Family, families_table
 
 #: Designation bearing types that take ISO 15 radial dimensions by dimension series when
 #: the family key is not one of :data:`~bearinglab.catalog.families.FAMILIES`.
-RADIAL_TYPES = ("radial_ball", "self_aligning_ball", "cylindrical_roller", "spherical_roller",
-                "needle_roller", "angular_contact_ball", "four_point_contact_ball")
+RADIAL_TYPES = (
+    "radial_ball",
+    "self_aligning_ball",
+    "cylindrical_roller",
+    "spherical_roller",
+    "needle_roller",
+    "angular_contact_ball",
+    "four_point_contact_ball",
+)
 
 _MM = 1e-3
 
@@ -76,10 +83,20 @@ class BoundaryDimensions:
 
     def to_dict(self) -> dict[str, Any]:
         """JSON-ready dict in millimetres (``bore_mm``...)."""
-        out: dict[str, Any] = {"family": self.family, "dimension_series": self.dimension_series,
-                               "standard": self.standard}
-        for name in ("bore", "outside_diameter", "width", "chamfer_min", "cone_width",
-                     "cup_width", "height"):
+        out: dict[str, Any] = {
+            "family": self.family,
+            "dimension_series": self.dimension_series,
+            "standard": self.standard,
+        }
+        for name in (
+            "bore",
+            "outside_diameter",
+            "width",
+            "chamfer_min",
+            "cone_width",
+            "cup_width",
+            "height",
+        ):
             value = getattr(self, name)
             out[f"{name}_mm"] = None if value is None else round(value / _MM, 6)
         return out
@@ -140,41 +157,57 @@ def boundary_dimensions(designation: Any, system: str | None = None) -> Boundary
     fam = _family_of(des)
     bore_mm = round(float(des.bore) / _MM, 6)
     if fam is None:
-        raise CatalogError(f"{text!r}: no boundary-dimension table for family "
-                           f"{getattr(des, 'series', None)!r} "
-                           f"({getattr(des, 'bearing_type', 'unknown type')}); the catalogue holds "
-                           f"ISO 15 radial, ISO 355 tapered (302, 303, 320, 322, 323) and ISO 104 "
-                           "thrust ball (511-514) bearings")
-    column, wanted, where = (("dimension_series", fam.dimension_series,
-                              f"dimension series {fam.dimension_series}")
-                             if fam.table == "iso15" else ("series", fam.key, f"series {fam.key}"))
+        raise CatalogError(
+            f"{text!r}: no boundary-dimension table for family "
+            f"{getattr(des, 'series', None)!r} "
+            f"({getattr(des, 'bearing_type', 'unknown type')}); the catalogue holds "
+            f"ISO 15 radial, ISO 355 tapered (302, 303, 320, 322, 323) and ISO 104 "
+            "thrust ball (511-514) bearings"
+        )
+    column, wanted, where = (
+        ("dimension_series", fam.dimension_series, f"dimension series {fam.dimension_series}")
+        if fam.table == "iso15"
+        else ("series", fam.key, f"series {fam.key}")
+    )
     rows = [r for r in _data.rows(TABLE_FILES[fam.table]) if r[column] == wanted]
     hit = [r for r in rows if abs(r["bore_mm"] - bore_mm) < 1e-6]
     if not hit:
-        raise CatalogError(f"{text!r}: family {fam.key} ({where}, {fam.standard}) has no "
-                           f"bore {bore_mm:g} mm in the catalogue; bores there [mm]: "
-                           f"{_bore_list(r['bore_mm'] for r in rows)}")
+        raise CatalogError(
+            f"{text!r}: family {fam.key} ({where}, {fam.standard}) has no "
+            f"bore {bore_mm:g} mm in the catalogue; bores there [mm]: "
+            f"{_bore_list(r['bore_mm'] for r in rows)}"
+        )
     r = hit[0]
-    common = {"bore": float(r["bore_mm"]) * _MM,
-              "outside_diameter": float(r["outside_diameter_mm"]) * _MM,
-              "family": fam.key, "dimension_series": fam.dimension_series}
+    common = {
+        "bore": float(r["bore_mm"]) * _MM,
+        "outside_diameter": float(r["outside_diameter_mm"]) * _MM,
+        "family": fam.key,
+        "dimension_series": fam.dimension_series,
+    }
     if fam.table == "iso15":
         chamfer = r["chamfer_min_mm"]
         return BoundaryDimensions(
             width=float(r["width_mm"]) * _MM,
             standard=f"{fam.standard} dimension series {fam.dimension_series} "
-                     f"({TABLE_FILES[fam.table]})",
-            chamfer_min=None if chamfer is None else float(chamfer) * _MM, **common)
+            f"({TABLE_FILES[fam.table]})",
+            chamfer_min=None if chamfer is None else float(chamfer) * _MM,
+            **common,
+        )
     if fam.table == "iso355":
         return BoundaryDimensions(
             width=float(r["total_width_mm"]) * _MM,
             standard=f"{fam.standard} series {fam.key} ({TABLE_FILES[fam.table]})",
             cone_width=float(r["cone_width_mm"]) * _MM,
-            cup_width=float(r["cup_width_mm"]) * _MM, **common)
+            cup_width=float(r["cup_width_mm"]) * _MM,
+            **common,
+        )
     height = float(r["height_mm"]) * _MM
     return BoundaryDimensions(
-        width=height, height=height,
-        standard=f"{fam.standard} series {fam.key} ({TABLE_FILES[fam.table]})", **common)
+        width=height,
+        height=height,
+        standard=f"{fam.standard} series {fam.key} ({TABLE_FILES[fam.table]})",
+        **common,
+    )
 
 
 # ------------------------------------------------------------------ radial internal clearance
@@ -193,17 +226,24 @@ def _clearance_group(group: Any) -> str:
     key = "".join(group.split()).upper()
     key = _GROUP_ALIASES.get(key, key)
     if key not in CLEARANCE_GROUPS:
-        raise InputError("group", group, allowed,
-                         "the ISO 5753-1 groups of deep-groove ball bearings; 'Normal' and "
-                         "'C0' are read as CN")
+        raise InputError(
+            "group",
+            group,
+            allowed,
+            "the ISO 5753-1 groups of deep-groove ball bearings; 'Normal' and 'C0' are read as CN",
+        )
     return key
 
 
 def _clearance_band(bore: Any, group: Any = "CN") -> tuple[str, float, float, float, float]:
     """(group, bore over [mm], bore incl [mm], min [um], max [um]) of the ISO 5753-1 row."""
     key = _clearance_group(group)
-    if (isinstance(bore, bool) or not isinstance(bore, (int, float)) or not math.isfinite(bore)
-            or bore <= 0.0):
+    if (
+        isinstance(bore, bool)
+        or not isinstance(bore, (int, float))
+        or not math.isfinite(bore)
+        or bore <= 0.0
+    ):
         raise InputError("bore", bore, "a positive length [m]")
     d_mm = round(float(bore) / _MM, 6)
     rows = [r for r in _data.rows(CLEARANCE_TABLE) if r["group"] == key]
@@ -212,12 +252,19 @@ def _clearance_band(bore: Any, group: Any = "CN") -> tuple[str, float, float, fl
         low = min(r["bore_over_mm"] for r in rows)
         high = max(r["bore_incl_mm"] for r in rows)
         hint = " (the bore is in metres: 25 mm is 0.025)" if d_mm >= 1000.0 else ""
-        raise CatalogError(f"bore {d_mm:g} mm{hint} is outside the ISO 5753-1 table of "
-                           f"radial internal clearance group {key} of deep-groove ball bearings "
-                           f"({CLEARANCE_TABLE}): it covers bores over {low:g} incl {high:g} mm")
+        raise CatalogError(
+            f"bore {d_mm:g} mm{hint} is outside the ISO 5753-1 table of "
+            f"radial internal clearance group {key} of deep-groove ball bearings "
+            f"({CLEARANCE_TABLE}): it covers bores over {low:g} incl {high:g} mm"
+        )
     r = hit[0]
-    return (key, float(r["bore_over_mm"]), float(r["bore_incl_mm"]), float(r["min_um"]),
-            float(r["max_um"]))
+    return (
+        key,
+        float(r["bore_over_mm"]),
+        float(r["bore_incl_mm"]),
+        float(r["min_um"]),
+        float(r["max_um"]),
+    )
 
 
 def radial_clearance(bore: float, group: str = "CN") -> tuple[float, float]:
@@ -314,9 +361,18 @@ class PublishedGeometry:
     notes: str = ""
 
     #: Fields that describe the bearing (not its bookkeeping).
-    GEOMETRY_FIELDS = ("ball_count", "ball_diameter", "pitch_diameter", "inner_groove_factor",
-                       "outer_groove_factor", "contact_angle", "diametral_clearance", "bore",
-                       "outside_diameter", "width")
+    GEOMETRY_FIELDS = (
+        "ball_count",
+        "ball_diameter",
+        "pitch_diameter",
+        "inner_groove_factor",
+        "outer_groove_factor",
+        "contact_angle",
+        "diametral_clearance",
+        "bore",
+        "outside_diameter",
+        "width",
+    )
 
     def published(self) -> dict[str, Any]:
         """The published (non-None) geometry values, by BallBearing keyword, in SI units."""
@@ -330,7 +386,8 @@ def _opt(value: Any, scale: float = 1.0) -> float | None:
 def _row_to_geometry(r: dict) -> PublishedGeometry:
     angle = _opt(r["contact_angle_deg"])
     return PublishedGeometry(
-        name=str(r["name"]), designation=str(r["designation"]),
+        name=str(r["name"]),
+        designation=str(r["designation"]),
         ball_count=None if r["ball_count"] is None else int(r["ball_count"]),
         ball_diameter=_opt(r["ball_diameter_mm"], _MM),
         pitch_diameter=_opt(r["pitch_diameter_mm"], _MM),
@@ -338,9 +395,13 @@ def _row_to_geometry(r: dict) -> PublishedGeometry:
         outer_groove_factor=_opt(r["outer_groove_factor"]),
         contact_angle=None if angle is None else math.radians(angle),
         diametral_clearance=_opt(r["diametral_clearance_um"], 1e-6),
-        bore=_opt(r["bore_mm"], _MM), outside_diameter=_opt(r["outside_diameter_mm"], _MM),
-        width=_opt(r["width_mm"], _MM), source=str(r["source"]),
-        default=bool(int(r["default"])), notes=str(r["notes"]))
+        bore=_opt(r["bore_mm"], _MM),
+        outside_diameter=_opt(r["outside_diameter_mm"], _MM),
+        width=_opt(r["width_mm"], _MM),
+        source=str(r["source"]),
+        default=bool(int(r["default"])),
+        notes=str(r["notes"]),
+    )
 
 
 def published_geometries() -> list[PublishedGeometry]:
@@ -374,8 +435,10 @@ def _row_keys() -> tuple[tuple[PublishedGeometry, tuple[str | None, float] | Non
     return tuple(out)
 
 
-def published_geometry(name_or_designation: Any, system: str | None = None,
-                       ) -> PublishedGeometry | None:
+def published_geometry(
+    name_or_designation: Any,
+    system: str | None = None,
+) -> PublishedGeometry | None:
     """The published internal geometry of a bearing, or None if none is shipped.
 
     First by catalogue name (case- and space-insensitive): ``"ER-16K"``,
@@ -441,8 +504,11 @@ def catalog_table(kind: str = "dimensions"):
     if kind != "dimensions":
         raise ValueError(f"kind must be 'dimensions', 'geometry' or 'families', got {kind!r}")
     parts = []
-    for name, key_col in (("iso15_radial.csv", "dimension_series"),
-                          ("iso355_tapered.csv", "series"), ("iso104_thrust.csv", "series")):
+    for name, key_col in (
+        ("iso15_radial.csv", "dimension_series"),
+        ("iso355_tapered.csv", "series"),
+        ("iso104_thrust.csv", "series"),
+    ):
         frame = _data.read_table(name).rename(columns={key_col: "key"})
         if name == "iso355_tapered.csv":
             frame["width_mm"] = frame["total_width_mm"]

@@ -22,40 +22,73 @@ from ..errors import BearinglabError
 
 #: command name -> (module in bearinglab.cli, one-line help: how its docstring begins)
 COMMANDS: dict[str, tuple[str, str]] = {
-    "info": ("foundation", ("Decode a designation; show dimensions, internal geometry (with "
-                           "sources) and frequency factors.")),
-    "frequencies": ("foundation", ("Kinematic defect frequencies (pure rolling) in Hz and as "
-                                  "orders.")),
+    "info": (
+        "foundation",
+        (
+            "Decode a designation; show dimensions, internal geometry (with "
+            "sources) and frequency factors."
+        ),
+    ),
+    "frequencies": (
+        "foundation",
+        ("Kinematic defect frequencies (pure rolling) in Hz and as orders."),
+    ),
     "contact": ("foundation", "Hertz contact of one ball with the inner and outer raceway."),
-    "static": ("quasistatic", ("Quasi-static load distribution: per-ball loads and contact "
-                              "angles, ring displacements and the 5x5 stiffness matrix.")),
-    "stiffness-map": ("quasistatic", ("Radial and axial stiffness (and displacements) over a "
-                                     "grid of loads and speeds.")),
-    "ring-modes": ("rings", ("Natural frequencies of the outer ring in the loaded bearing "
-                                  "(seed 000).")),
-    "simulate": ("simulate", ("Simulate the vibration of a bearing with defects and form errors "
-                             "(seed 003 rigid model or seed 004 slip model).")),
+    "static": (
+        "quasistatic",
+        (
+            "Quasi-static load distribution: per-ball loads and contact "
+            "angles, ring displacements and the 5x5 stiffness matrix."
+        ),
+    ),
+    "stiffness-map": (
+        "quasistatic",
+        ("Radial and axial stiffness (and displacements) over a grid of loads and speeds."),
+    ),
+    "ring-modes": (
+        "rings",
+        ("Natural frequencies of the outer ring in the loaded bearing (seed 000)."),
+    ),
+    "simulate": (
+        "simulate",
+        (
+            "Simulate the vibration of a bearing with defects and form errors "
+            "(seed 003 rigid model or seed 004 slip model)."
+        ),
+    ),
     "analyze": ("analyze", "Diagnose a vibration record by envelope analysis."),
     "benchmark": ("benchmark", "Run the diagnosis over a folder of labelled recordings."),
-    "noise": ("noise", ("Noise of a running ball bearing with waviness, ball-size errors and "
-                       "random surfaces (seed 003 part 4, seed 002).")),
-    "friction": ("friction", ("Friction torque and power loss: seed 003's constant coefficient "
-                             "or the SKF model.")),
-    "life": ("life", ("Load ratings C, C0, Cu, equivalent loads, basic and modified rating "
-                     "life.")),
+    "noise": (
+        "noise",
+        (
+            "Noise of a running ball bearing with waviness, ball-size errors and "
+            "random surfaces (seed 003 part 4, seed 002)."
+        ),
+    ),
+    "friction": (
+        "friction",
+        ("Friction torque and power loss: seed 003's constant coefficient or the SKF model."),
+    ),
+    "life": ("life", ("Load ratings C, C0, Cu, equivalent loads, basic and modified rating life.")),
     "validate": ("validate", "Run every published case bearinglab reproduces."),
-    "report": ("report", ("Write an engineer's report of a bearing at an operating point to one "
-                         "self-contained HTML page.")),
+    "report": (
+        "report",
+        (
+            "Write an engineer's report of a bearing at an operating point to one "
+            "self-contained HTML page."
+        ),
+    ),
     "study": ("study", "Run one analysis over a grid of inputs or a table of cases, on dask."),
-    "dataset": ("dataset", ("Make labelled synthetic vibration records in the bearing-datasets "
-                           "layout, on dask.")),
+    "dataset": (
+        "dataset",
+        ("Make labelled synthetic vibration records in the bearing-datasets layout, on dask."),
+    ),
 }
 
 
 def command_app() -> typer.Typer:
     """The typer app a command module registers its command(s) on."""
-    return typer.Typer(add_completion=False, pretty_exceptions_enable=False,
-                       rich_markup_mode=None)
+    return typer.Typer(add_completion=False, pretty_exceptions_enable=False, rich_markup_mode=None)
 
 
 class _LazyCommands(Mapping):
@@ -94,10 +127,15 @@ class LazyGroup(TyperGroup):
             formatter.write_dl([(name, help_) for name, (_, help_) in COMMANDS.items()])
 
 
-app = typer.Typer(cls=LazyGroup, add_completion=False, no_args_is_help=True,
-                  pretty_exceptions_enable=False, rich_markup_mode=None,
-                  help="Rolling-bearing mechanics, vibration and diagnostics from published "
-                       "methods. Run 'bearinglab COMMAND --help' for a command's options.")
+app = typer.Typer(
+    cls=LazyGroup,
+    add_completion=False,
+    no_args_is_help=True,
+    pretty_exceptions_enable=False,
+    rich_markup_mode=None,
+    help="Rolling-bearing mechanics, vibration and diagnostics from published "
+    "methods. Run 'bearinglab COMMAND --help' for a command's options.",
+)
 
 
 class _LazyConsole:
@@ -133,8 +171,11 @@ def _version(value: bool):
 
 
 @app.callback()
-def _main(version: bool = typer.Option(False, "--version", callback=_version, is_eager=True,
-                                       help="Show the version and exit.")):
+def _main(
+    version: bool = typer.Option(
+        False, "--version", callback=_version, is_eager=True, help="Show the version and exit."
+    ),
+):
     """Rolling-bearing mechanics, vibration and diagnostics from published methods."""
 
 
@@ -164,7 +205,9 @@ def main(argv: list[str] | None = None) -> int:
         if os.environ.get("BEARINGLAB_DEBUG"):
             raise
         text = " ".join(str(exc).split())
-        sys.stderr.write(f"error: internal error ({type(exc).__name__}: {text}); please report "
-                         "it with the command line (BEARINGLAB_DEBUG=1 shows the traceback)\n")
+        sys.stderr.write(
+            f"error: internal error ({type(exc).__name__}: {text}); please report "
+            "it with the command line (BEARINGLAB_DEBUG=1 shows the traceback)\n"
+        )
         return 1
     return result if isinstance(result, int) else 0

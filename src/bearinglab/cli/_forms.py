@@ -12,23 +12,37 @@ import typer
 from ..errors import InputError
 from ._inputs import OptionError
 
-WAVINESS_ALLOWED = ("RACE:KEY=VALUE,... with RACE inner, outer or ball and keys order (waves "
-                    "round the circumference, >= 1) and amplitude_um (>= 0, half the peak to "
-                    "peak), both required, phase_deg (r = A cos(order theta + phase), default "
-                    "0) and ball (ball index, ball waviness only; default every ball), e.g. "
-                    "inner:order=7,amplitude_um=0.5")
-SURFACE_ALLOWED = ("RACE:KEY=VALUE,... with RACE inner or outer and keys amplitude_um (RMS "
-                   "height >= 0), length_circ_mm and length_axial_mm (correlation lengths > 0 "
-                   "of seed 002 eq. 6), all required, e.g. "
-                   "outer:amplitude_um=0.2,length_circ_mm=0.5,length_axial_mm=0.5")
-BALL_ERROR_ALLOWED = ("a band width >= 0 um (ball diameter errors uniform in [-BAND/2, +BAND/2] "
-                      "um about the nominal diameter) or LOW,HIGH um with LOW <= HIGH (uniform "
-                      "in [LOW, HIGH])")
-_WAVINESS_KEYS = {race: {"order": "order", "amplitude_um": "nonnegative", "phase_deg": "number"}
-                  for race in ("inner", "outer")}
+WAVINESS_ALLOWED = (
+    "RACE:KEY=VALUE,... with RACE inner, outer or ball and keys order (waves "
+    "round the circumference, >= 1) and amplitude_um (>= 0, half the peak to "
+    "peak), both required, phase_deg (r = A cos(order theta + phase), default "
+    "0) and ball (ball index, ball waviness only; default every ball), e.g. "
+    "inner:order=7,amplitude_um=0.5"
+)
+SURFACE_ALLOWED = (
+    "RACE:KEY=VALUE,... with RACE inner or outer and keys amplitude_um (RMS "
+    "height >= 0), length_circ_mm and length_axial_mm (correlation lengths > 0 "
+    "of seed 002 eq. 6), all required, e.g. "
+    "outer:amplitude_um=0.2,length_circ_mm=0.5,length_axial_mm=0.5"
+)
+BALL_ERROR_ALLOWED = (
+    "a band width >= 0 um (ball diameter errors uniform in [-BAND/2, +BAND/2] "
+    "um about the nominal diameter) or LOW,HIGH um with LOW <= HIGH (uniform "
+    "in [LOW, HIGH])"
+)
+_WAVINESS_KEYS = {
+    race: {"order": "order", "amplitude_um": "nonnegative", "phase_deg": "number"}
+    for race in ("inner", "outer")
+}
 _WAVINESS_KEYS["ball"] = {**_WAVINESS_KEYS["inner"], "ball": "index"}
-_SURFACE_KEYS = {race: {"amplitude_um": "nonnegative", "length_circ_mm": "positive",
-                        "length_axial_mm": "positive"} for race in ("inner", "outer")}
+_SURFACE_KEYS = {
+    race: {
+        "amplitude_um": "nonnegative",
+        "length_circ_mm": "positive",
+        "length_axial_mm": "positive",
+    }
+    for race in ("inner", "outer")
+}
 #: Largest random-surface grid (points round x across, with the generating margin): the
 #: generator holds a few arrays of this size (complex FFTs).
 MAX_SURFACE_POINTS = 1 << 22
@@ -36,34 +50,64 @@ MAX_SURFACE_POINTS = 1 << 22
 #: on an approach change).
 MAX_FORM_ERROR = 0.05
 
-WavinessOpt = Annotated[list[str] | None, typer.Option(
-    "--waviness", help="Sinusoidal waviness, repeatable: RACE:order=7,amplitude_um=0.5"
-    "[,phase_deg=0][,ball=N] with RACE inner, outer or ball; r = A cos(order theta + phase) "
-    "in the ring's (or ball's) own frame.", show_default=False)]
-BallErrorOpt = Annotated[str | None, typer.Option(
-    "--ball-size-error-um", help="Random ball diameter errors: BAND (uniform in "
-    "[-BAND/2, +BAND/2] um about the nominal diameter: BAND is the lot's largest minus "
-    "smallest ball) or LOW,HIGH [um]; drawn with --seed.", show_default=False)]
-Surface3dOpt = Annotated[list[str] | None, typer.Option(
-    "--surface3d", help="Random 3-D raceway surface (seed 002 eq. 6), repeatable: "
-    "RACE:amplitude_um=..,length_circ_mm=..,length_axial_mm=.. with RACE inner or outer "
-    "(RMS height, circumferential and axial correlation lengths).", show_default=False)]
-SeedOpt = Annotated[int | None, typer.Option(
-    "--seed", help="Seed of the random ball-size errors and surfaces (default 0: the same "
-    "command gives the same bearing; surface i in the order given uses SEED + 1 + i).",
-    show_default=False)]
+WavinessOpt = Annotated[
+    list[str] | None,
+    typer.Option(
+        "--waviness",
+        help="Sinusoidal waviness, repeatable: RACE:order=7,amplitude_um=0.5"
+        "[,phase_deg=0][,ball=N] with RACE inner, outer or ball; r = A cos(order theta + phase) "
+        "in the ring's (or ball's) own frame.",
+        show_default=False,
+    ),
+]
+BallErrorOpt = Annotated[
+    str | None,
+    typer.Option(
+        "--ball-size-error-um",
+        help="Random ball diameter errors: BAND (uniform in "
+        "[-BAND/2, +BAND/2] um about the nominal diameter: BAND is the lot's largest minus "
+        "smallest ball) or LOW,HIGH [um]; drawn with --seed.",
+        show_default=False,
+    ),
+]
+Surface3dOpt = Annotated[
+    list[str] | None,
+    typer.Option(
+        "--surface3d",
+        help="Random 3-D raceway surface (seed 002 eq. 6), repeatable: "
+        "RACE:amplitude_um=..,length_circ_mm=..,length_axial_mm=.. with RACE inner or outer "
+        "(RMS height, circumferential and axial correlation lengths).",
+        show_default=False,
+    ),
+]
+SeedOpt = Annotated[
+    int | None,
+    typer.Option(
+        "--seed",
+        help="Seed of the random ball-size errors and surfaces (default 0: the same "
+        "command gives the same bearing; surface i in the order given uses SEED + 1 + i).",
+        show_default=False,
+    ),
+]
 
 #: What a --defect specification may hold.
-DEFECT_ALLOWED = ("LOCATION:KEY=VALUE,... with LOCATION outer, inner or ball and keys "
-                  "width_mm (> 0, required), depth_mm (> 0), angle_deg (outer: position from "
-                  "+x towards +y, 270 = bottom; inner: position at t = 0; ball: spin phase) "
-                  "and ball (ball index, ball defects only), e.g. "
-                  "outer:width_mm=1.2,depth_mm=0.25")
-_DEFECT_KEYS = {"outer": {"width_mm": "positive", "depth_mm": "positive", "angle_deg": "number"},
-                "inner": {"width_mm": "positive", "depth_mm": "positive", "angle_deg": "number"},
-                "ball": {"width_mm": "positive", "depth_mm": "positive", "angle_deg": "number",
-                         "ball": "index"}}
-
+DEFECT_ALLOWED = (
+    "LOCATION:KEY=VALUE,... with LOCATION outer, inner or ball and keys "
+    "width_mm (> 0, required), depth_mm (> 0), angle_deg (outer: position from "
+    "+x towards +y, 270 = bottom; inner: position at t = 0; ball: spin phase) "
+    "and ball (ball index, ball defects only), e.g. "
+    "outer:width_mm=1.2,depth_mm=0.25"
+)
+_DEFECT_KEYS = {
+    "outer": {"width_mm": "positive", "depth_mm": "positive", "angle_deg": "number"},
+    "inner": {"width_mm": "positive", "depth_mm": "positive", "angle_deg": "number"},
+    "ball": {
+        "width_mm": "positive",
+        "depth_mm": "positive",
+        "angle_deg": "number",
+        "ball": "index",
+    },
+}
 
 
 # ------------------------------------------------------------------ KEY=VALUE specifications
@@ -71,9 +115,16 @@ _DEFECT_KEYS = {"outer": {"width_mm": "positive", "depth_mm": "positive", "angle
 _SPEC_KINDS = ("number", "positive", "nonnegative", "index", "order")
 
 
-def parse_spec(text: str, flag: str, allowed: str, keys: dict[str, dict[str, str]], *,
-               noun: str, word: str = "location",
-               required: tuple[str, ...] = ()) -> tuple[str, dict]:
+def parse_spec(
+    text: str,
+    flag: str,
+    allowed: str,
+    keys: dict[str, dict[str, str]],
+    *,
+    noun: str,
+    word: str = "location",
+    required: tuple[str, ...] = (),
+) -> tuple[str, dict]:
     """Read one ``PREFIX:KEY=VALUE,...`` specification (--defect, --waviness, --surface3d).
 
     Parameters
@@ -110,6 +161,7 @@ def parse_spec(text: str, flag: str, allowed: str, keys: dict[str, dict[str, str
     ...            noun="waviness", word="race")
     ('inner', {'order': 7, 'amplitude_um': 0.5})
     """
+
     def bad(hint: str) -> OptionError:
         return OptionError(flag, text, allowed, hint)
 
@@ -118,16 +170,18 @@ def parse_spec(text: str, flag: str, allowed: str, keys: dict[str, dict[str, str
     if prefix not in keys:
         raise bad(f"unknown {word} {prefix!r}")
     if not sep or not rest.strip():
-        need = (f"; {', '.join(required)} {'is' if len(required) == 1 else 'are'} required"
-                if required else "")
+        need = (
+            f"; {', '.join(required)} {'is' if len(required) == 1 else 'are'} required"
+            if required
+            else ""
+        )
         raise bad(f"no KEY=VALUE given{need}")
     values: dict = {}
     for item in rest.split(","):
         key, eq, value = (s.strip() for s in item.partition("="))
         kind = keys[prefix].get(key)
         if kind is None:
-            raise bad(f"unknown key {key!r} for {prefix} {noun} (keys: "
-                      f"{', '.join(keys[prefix])})")
+            raise bad(f"unknown key {key!r} for {prefix} {noun} (keys: {', '.join(keys[prefix])})")
         if not eq or not value:
             raise bad(f"{key} has no value")
         if key in values:
@@ -172,10 +226,13 @@ def parse_defect(text: str):
     >>> parse_defect("outer:width_mm=1.2,depth_mm=0.25").to_dict()["angle_deg"]
     -90.0
     """
-    location, values = parse_spec(text, "--defect", DEFECT_ALLOWED, _DEFECT_KEYS,
-                                  noun="defects", required=("width_mm",))
-    kwargs = {"width": values["width_mm"] * 1e-3,
-              "depth": values["depth_mm"] * 1e-3 if "depth_mm" in values else None}
+    location, values = parse_spec(
+        text, "--defect", DEFECT_ALLOWED, _DEFECT_KEYS, noun="defects", required=("width_mm",)
+    )
+    kwargs = {
+        "width": values["width_mm"] * 1e-3,
+        "depth": values["depth_mm"] * 1e-3 if "depth_mm" in values else None,
+    }
     if "angle_deg" in values:  # into [-pi, pi): 270 deg is -90 deg, the bottom
         kwargs["angle"] = (math.radians(values["angle_deg"]) + math.pi) % (2 * math.pi) - math.pi
     if "ball" in values:
@@ -198,6 +255,7 @@ def form_errors_text(imperfections) -> str:
     for srf in imperfections.surfaces:
         parts.append(f"{srf.race} 3-D surface {srf.amplitude * 1e6:g} um RMS")
     return "; ".join(parts)
+
 
 def defect_text(d) -> str:
     x = d.to_dict()
@@ -224,10 +282,22 @@ def parse_waviness(text: str):
     """
     from ..imperfections import Waviness
 
-    race, v = parse_spec(text, "--waviness", WAVINESS_ALLOWED, _WAVINESS_KEYS, noun="waviness",
-                         word="race", required=("order", "amplitude_um"))
-    return Waviness(race, v["order"], v["amplitude_um"] * 1e-6,
-                    math.radians(v.get("phase_deg", 0.0)), v.get("ball"))
+    race, v = parse_spec(
+        text,
+        "--waviness",
+        WAVINESS_ALLOWED,
+        _WAVINESS_KEYS,
+        noun="waviness",
+        word="race",
+        required=("order", "amplitude_um"),
+    )
+    return Waviness(
+        race,
+        v["order"],
+        v["amplitude_um"] * 1e-6,
+        math.radians(v.get("phase_deg", 0.0)),
+        v.get("ball"),
+    )
 
 
 def parse_ball_band(text: str):
@@ -245,8 +315,9 @@ def parse_ball_band(text: str):
         raise OptionError("--ball-size-error-um", text, BALL_ERROR_ALLOWED)
     if len(values) == 1:
         if values[0] < 0:
-            raise OptionError("--ball-size-error-um", text, BALL_ERROR_ALLOWED,
-                              "the band must be >= 0")
+            raise OptionError(
+                "--ball-size-error-um", text, BALL_ERROR_ALLOWED, "the band must be >= 0"
+            )
         return values[0] * 1e-6
     if values[0] > values[1]:
         raise OptionError("--ball-size-error-um", text, BALL_ERROR_ALLOWED, "LOW > HIGH")
@@ -256,9 +327,15 @@ def parse_ball_band(text: str):
 def parse_surface(text: str) -> tuple[str, dict]:
     """(race, {amplitude_um, length_circ_mm, length_axial_mm}) from a --surface3d
     specification (the surface itself needs the bearing: :meth:`FormErrors.build`)."""
-    return parse_spec(text, "--surface3d", SURFACE_ALLOWED, _SURFACE_KEYS, noun="surfaces",
-                      word="race", required=("amplitude_um", "length_circ_mm",
-                                             "length_axial_mm"))
+    return parse_spec(
+        text,
+        "--surface3d",
+        SURFACE_ALLOWED,
+        _SURFACE_KEYS,
+        noun="surfaces",
+        word="race",
+        required=("amplitude_um", "length_circ_mm", "length_axial_mm"),
+    )
 
 
 class FormErrors:
@@ -266,8 +343,12 @@ class FormErrors:
     --waviness, --ball-size-error-um, --surface3d. :meth:`build` makes the
     :class:`~bearinglab.imperfections.Imperfections` for a bearing and a seed."""
 
-    def __init__(self, waviness: list[str] | None = None, ball_size_error_um: str | None = None,
-                 surface3d: list[str] | None = None) -> None:
+    def __init__(
+        self,
+        waviness: list[str] | None = None,
+        ball_size_error_um: str | None = None,
+        surface3d: list[str] | None = None,
+    ) -> None:
         self.waviness = [(text, parse_waviness(text)) for text in waviness or ()]
         self.band_text = ball_size_error_um
         self.band = None if ball_size_error_um is None else parse_ball_band(ball_size_error_um)
@@ -294,56 +375,88 @@ class FormErrors:
             try:
                 w.check(bearing)
             except InputError as exc:
-                raise OptionError("--waviness", text, WAVINESS_ALLOWED,
-                                  f"for {name}: {exc.parameter} = {exc.value!r} must be "
-                                  f"{exc.allowed}") from None
+                raise OptionError(
+                    "--waviness",
+                    text,
+                    WAVINESS_ALLOWED,
+                    f"for {name}: {exc.parameter} = {exc.value!r} must be {exc.allowed}",
+                ) from None
             if w.amplitude > limit:
-                raise OptionError("--waviness", text, WAVINESS_ALLOWED,
-                                  f"amplitude_um must be at most {limit * 1e6:.4g} for {name} "
-                                  f"({MAX_FORM_ERROR:.0%} of the ball diameter)")
+                raise OptionError(
+                    "--waviness",
+                    text,
+                    WAVINESS_ALLOWED,
+                    f"amplitude_um must be at most {limit * 1e6:.4g} for {name} "
+                    f"({MAX_FORM_ERROR:.0%} of the ball diameter)",
+                )
         errors = None
         if self.band is not None:
             errors = BallSizeErrors.random(bearing.ball_count, self.band, seed=seed)
             if np.max(np.abs(errors.errors)) > limit:
-                raise OptionError("--ball-size-error-um", self.band_text, BALL_ERROR_ALLOWED,
-                                  f"errors must stay within +-{limit * 1e6:.4g} um for {name} "
-                                  f"({MAX_FORM_ERROR:.0%} of the ball diameter)")
+                raise OptionError(
+                    "--ball-size-error-um",
+                    self.band_text,
+                    BALL_ERROR_ALLOWED,
+                    f"errors must stay within +-{limit * 1e6:.4g} um for {name} "
+                    f"({MAX_FORM_ERROR:.0%} of the ball diameter)",
+                )
         surfaces = []
         for i, (text, race, v) in enumerate(self.surfaces):
             if v["amplitude_um"] * 1e-6 > limit / 3:
-                raise OptionError("--surface3d", text, SURFACE_ALLOWED,
-                                  f"amplitude_um must be at most {limit / 3 * 1e6:.4g} for "
-                                  f"{name} (its peaks reach about 3 RMS; "
-                                  f"{MAX_FORM_ERROR:.0%} of the ball diameter)")
+                raise OptionError(
+                    "--surface3d",
+                    text,
+                    SURFACE_ALLOWED,
+                    f"amplitude_um must be at most {limit / 3 * 1e6:.4g} for "
+                    f"{name} (its peaks reach about 3 RMS; "
+                    f"{MAX_FORM_ERROR:.0%} of the ball diameter)",
+                )
             length_r, length_z = v["length_circ_mm"] * 1e-3, v["length_axial_mm"] * 1e-3
-            radius = 0.5 * (bearing.inner_raceway_diameter if race == "inner"
-                            else bearing.outer_raceway_diameter)
+            radius = 0.5 * (
+                bearing.inner_raceway_diameter
+                if race == "inner"
+                else bearing.outer_raceway_diameter
+            )
             if length_r > math.pi * radius:
-                raise OptionError("--surface3d", text, SURFACE_ALLOWED,
-                                  f"length_circ_mm must be at most {math.pi * radius * 1e3:.4g} "
-                                  f"for {name} (half the {race} raceway's circumference)")
+                raise OptionError(
+                    "--surface3d",
+                    text,
+                    SURFACE_ALLOWED,
+                    f"length_circ_mm must be at most {math.pi * radius * 1e3:.4g} "
+                    f"for {name} (half the {race} raceway's circumference)",
+                )
             points = _surface_points(bearing, race, length_r, length_z)
             if points > MAX_SURFACE_POINTS:
-                raise OptionError("--surface3d", text, SURFACE_ALLOWED,
-                                  f"the correlation lengths need a grid of {points:.3g} points "
-                                  f"on {name}, more than {MAX_SURFACE_POINTS:.3g}: give longer "
-                                  "length_circ_mm or length_axial_mm")
+                raise OptionError(
+                    "--surface3d",
+                    text,
+                    SURFACE_ALLOWED,
+                    f"the correlation lengths need a grid of {points:.3g} points "
+                    f"on {name}, more than {MAX_SURFACE_POINTS:.3g}: give longer "
+                    "length_circ_mm or length_axial_mm",
+                )
             try:
-                surfaces.append(RandomSurface.for_bearing(bearing, race, v["amplitude_um"] * 1e-6,
-                                                          length_r, length_z, seed + 1 + i))
+                surfaces.append(
+                    RandomSurface.for_bearing(
+                        bearing, race, v["amplitude_um"] * 1e-6, length_r, length_z, seed + 1 + i
+                    )
+                )
             except InputError as exc:
-                raise OptionError("--surface3d", text, SURFACE_ALLOWED,
-                                  f"for {name}: {exc}") from None
-        return Imperfections([w for _, w in self.waviness], ball_size_errors=errors,
-                             surfaces=surfaces)
+                raise OptionError(
+                    "--surface3d", text, SURFACE_ALLOWED, f"for {name}: {exc}"
+                ) from None
+        return Imperfections(
+            [w for _, w in self.waviness], ball_size_errors=errors, surfaces=surfaces
+        )
 
 
 def _surface_points(bearing, race: str, length_r: float, length_z: float) -> int:
     """Grid points RandomSurface.for_bearing generates (round x across with its margin)."""
     from ..imperfections.surface import AXIAL_MARGIN
 
-    radius = 0.5 * (bearing.inner_raceway_diameter if race == "inner"
-                    else bearing.outer_raceway_diameter)
+    radius = 0.5 * (
+        bearing.inner_raceway_diameter if race == "inner" else bearing.outer_raceway_diameter
+    )
     width = bearing.ball_diameter
     n_r = max(256, 1 << max(0, math.ceil(math.log2(8 * math.pi * radius / length_r))))
     n_z = max(17, math.ceil(4 * width / length_z) + 1)

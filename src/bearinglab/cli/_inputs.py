@@ -25,48 +25,124 @@ from ._app import System, console
 # ------------------------------------------------------------------ shared geometry options
 # name -> (flag, type, help, SI factor for BallBearing, BallBearing keyword or None)
 _GEOMETRY_OPTIONS = {
-    "system": ("--system", System | None, "Read the designation as GOST 3189-89 or ISO.",
-               None, None),
+    "system": (
+        "--system",
+        System | None,
+        "Read the designation as GOST 3189-89 or ISO.",
+        None,
+        None,
+    ),
     "balls": ("--balls", int | None, "Number of balls Z.", 1, "ball_count"),
-    "ball_diameter_mm": ("--ball-diameter-mm", float | None, "Ball diameter D_w [mm].",
-                         1e-3, "ball_diameter"),
-    "pitch_diameter_mm": ("--pitch-diameter-mm", float | None, "Pitch diameter d_m [mm].",
-                          1e-3, "pitch_diameter"),
-    "contact_angle_deg": ("--contact-angle-deg", float | None,
-                          "Nominal contact angle [deg].", math.pi / 180, "contact_angle"),
-    "inner_groove_factor": ("--inner-groove-factor", float | None,
-                            "Inner groove curvature factor f_i (> 0.5).", 1, "inner_groove_factor"),
-    "outer_groove_factor": ("--outer-groove-factor", float | None,
-                            "Outer groove curvature factor f_o (> 0.5).", 1, "outer_groove_factor"),
-    "clearance_um": ("--clearance-um", float | None, "Diametral clearance P_d [um].",
-                     1e-6, "diametral_clearance"),
-    "inner_arch_angle_deg": ("--inner-arch-angle-deg", float | None,
-                             "Gothic-arch angle of the inner groove [deg] (0 = circular).",
-                             math.pi / 180, "inner_arch_angle"),
-    "outer_arch_angle_deg": ("--outer-arch-angle-deg", float | None,
-                             "Gothic-arch angle of the outer groove [deg] (0 = circular).",
-                             math.pi / 180, "outer_arch_angle"),
+    "ball_diameter_mm": (
+        "--ball-diameter-mm",
+        float | None,
+        "Ball diameter D_w [mm].",
+        1e-3,
+        "ball_diameter",
+    ),
+    "pitch_diameter_mm": (
+        "--pitch-diameter-mm",
+        float | None,
+        "Pitch diameter d_m [mm].",
+        1e-3,
+        "pitch_diameter",
+    ),
+    "contact_angle_deg": (
+        "--contact-angle-deg",
+        float | None,
+        "Nominal contact angle [deg].",
+        math.pi / 180,
+        "contact_angle",
+    ),
+    "inner_groove_factor": (
+        "--inner-groove-factor",
+        float | None,
+        "Inner groove curvature factor f_i (> 0.5).",
+        1,
+        "inner_groove_factor",
+    ),
+    "outer_groove_factor": (
+        "--outer-groove-factor",
+        float | None,
+        "Outer groove curvature factor f_o (> 0.5).",
+        1,
+        "outer_groove_factor",
+    ),
+    "clearance_um": (
+        "--clearance-um",
+        float | None,
+        "Diametral clearance P_d [um].",
+        1e-6,
+        "diametral_clearance",
+    ),
+    "inner_arch_angle_deg": (
+        "--inner-arch-angle-deg",
+        float | None,
+        "Gothic-arch angle of the inner groove [deg] (0 = circular).",
+        math.pi / 180,
+        "inner_arch_angle",
+    ),
+    "outer_arch_angle_deg": (
+        "--outer-arch-angle-deg",
+        float | None,
+        "Gothic-arch angle of the outer groove [deg] (0 = circular).",
+        math.pi / 180,
+        "outer_arch_angle",
+    ),
     "bore_mm": ("--bore-mm", float | None, "Bore d [mm].", 1e-3, "bore"),
-    "outside_diameter_mm": ("--outside-diameter-mm", float | None,
-                            "Outside diameter D [mm].", 1e-3, "outside_diameter"),
+    "outside_diameter_mm": (
+        "--outside-diameter-mm",
+        float | None,
+        "Outside diameter D [mm].",
+        1e-3,
+        "outside_diameter",
+    ),
     "width_mm": ("--width-mm", float | None, "Width B [mm].", 1e-3, "width"),
-    "elastic_modulus_gpa": ("--elastic-modulus-gpa", float | None,
-                            "Young's modulus of rings and balls [GPa].", 1e9, None),
-    "poisson_ratio": ("--poisson-ratio", float | None, "Poisson's ratio of rings and balls.",
-                      1, None),
-    "density_kg_m3": ("--density-kg-m3", float | None, "Density of rings and balls [kg/m^3].",
-                      1, None),
-    "geometry": ("--geometry", Path | None, ("TOML file with any of the geometry values "
-                 "(keys as the option names with underscores, e.g. ball_diameter_mm = 7.94, "
-                 "balls = 9; also system and name)."), None, None),
+    "elastic_modulus_gpa": (
+        "--elastic-modulus-gpa",
+        float | None,
+        "Young's modulus of rings and balls [GPa].",
+        1e9,
+        None,
+    ),
+    "poisson_ratio": (
+        "--poisson-ratio",
+        float | None,
+        "Poisson's ratio of rings and balls.",
+        1,
+        None,
+    ),
+    "density_kg_m3": (
+        "--density-kg-m3",
+        float | None,
+        "Density of rings and balls [kg/m^3].",
+        1,
+        None,
+    ),
+    "geometry": (
+        "--geometry",
+        Path | None,
+        (
+            "TOML file with any of the geometry values "
+            "(keys as the option names with underscores, e.g. ball_diameter_mm = 7.94, "
+            "balls = 9; also system and name)."
+        ),
+        None,
+        None,
+    ),
 }
 
 
 def _geometry_parameters() -> list[inspect.Parameter]:
-    return [inspect.Parameter(name, inspect.Parameter.KEYWORD_ONLY, default=None,
-                              annotation=Annotated[kind, typer.Option(flag, help=text,
-                                                                      show_default=False)])
-            for name, (flag, kind, text, _, _) in _GEOMETRY_OPTIONS.items()]
+    return [
+        inspect.Parameter(
+            name,
+            inspect.Parameter.KEYWORD_ONLY,
+            default=None,
+            annotation=Annotated[kind, typer.Option(flag, help=text, show_default=False)],
+        )
+        for name, (flag, kind, text, _, _) in _GEOMETRY_OPTIONS.items()
+    ]
 
 
 def with_geometry(func):
@@ -89,9 +165,16 @@ def with_geometry(func):
 #: Range checks of the command line, in the options' units (the models check the rest):
 #: option name -> (low, high, low included, high included, what).
 _RANGES = {
-    **{name: (0.0, 1e5, False, True, "a length in (0, 100000] mm")
-       for name in ("ball_diameter_mm", "pitch_diameter_mm", "bore_mm", "outside_diameter_mm",
-                    "width_mm")},
+    **{
+        name: (0.0, 1e5, False, True, "a length in (0, 100000] mm")
+        for name in (
+            "ball_diameter_mm",
+            "pitch_diameter_mm",
+            "bore_mm",
+            "outside_diameter_mm",
+            "width_mm",
+        )
+    },
     "elastic_modulus_gpa": (0.0, 1e4, False, True, "a modulus in (0, 10000] GPa"),
     "poisson_ratio": (0.0, 0.5, True, False, "a value in [0, 0.5)"),
     "density_kg_m3": (0.0, 1e5, False, True, "a density in (0, 100000] kg/m^3"),
@@ -102,26 +185,49 @@ MAX_SPEED_RPM = 1e6
 MAX_LOAD_N = 1e7
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON object instead of tables.")]
 #: The options most commands share (each command gives its own default).
-RingSpeedOpt = Annotated[float, typer.Option("--speed-rpm",
-                                             help="Speed of the rotating ring [rpm].")]
-ShaftSpeedOpt = Annotated[float, typer.Option("--speed-rpm",
-                                              help="Shaft (inner-ring) speed [rpm].")]
-RadialLoadOpt = Annotated[float, typer.Option(
-    "--radial-load-n", help="Radial load F_r on the shaft, downwards [N].")]
-AxialLoadOpt = Annotated[float, typer.Option("--axial-load-n",
-                                             help="Axial load F_a on the inner ring [N].")]
-SchedulerOpt = Annotated[str | None, typer.Option(
-    "--scheduler", help="tcp://HOST:PORT of a running dask scheduler (default: "
-    "$DASK_SCHEDULER_ADDRESS, else a LocalCluster of this machine's cores); 'serial' runs in "
-    "this process.", show_default=False)]
-WorkersOpt = Annotated[int | None, typer.Option(
-    "--workers", help="Worker processes of the LocalCluster (default: the cores).",
-    show_default=False)]
-PlotOpt = Annotated[Path | None, typer.Option(
-    "--plot", help="Also draw the result to this .png, .svg or .pdf file.", show_default=False)]
-DesignationArg = Annotated[str | None, typer.Argument(
-    help="Bearing designation or catalogue name; optional with explicit geometry.",
-    show_default=False)]
+RingSpeedOpt = Annotated[
+    float, typer.Option("--speed-rpm", help="Speed of the rotating ring [rpm].")
+]
+ShaftSpeedOpt = Annotated[
+    float, typer.Option("--speed-rpm", help="Shaft (inner-ring) speed [rpm].")
+]
+RadialLoadOpt = Annotated[
+    float, typer.Option("--radial-load-n", help="Radial load F_r on the shaft, downwards [N].")
+]
+AxialLoadOpt = Annotated[
+    float, typer.Option("--axial-load-n", help="Axial load F_a on the inner ring [N].")
+]
+SchedulerOpt = Annotated[
+    str | None,
+    typer.Option(
+        "--scheduler",
+        help="tcp://HOST:PORT of a running dask scheduler (default: "
+        "$DASK_SCHEDULER_ADDRESS, else a LocalCluster of this machine's cores); 'serial' runs in "
+        "this process.",
+        show_default=False,
+    ),
+]
+WorkersOpt = Annotated[
+    int | None,
+    typer.Option(
+        "--workers",
+        help="Worker processes of the LocalCluster (default: the cores).",
+        show_default=False,
+    ),
+]
+PlotOpt = Annotated[
+    Path | None,
+    typer.Option(
+        "--plot", help="Also draw the result to this .png, .svg or .pdf file.", show_default=False
+    ),
+]
+DesignationArg = Annotated[
+    str | None,
+    typer.Argument(
+        help="Bearing designation or catalogue name; optional with explicit geometry.",
+        show_default=False,
+    ),
+]
 
 
 def speed_rad_s(speed_rpm: float, *, zero: bool = False) -> float:
@@ -129,8 +235,9 @@ def speed_rad_s(speed_rpm: float, *, zero: bool = False) -> float:
     with ``zero``)."""
     low_ok = speed_rpm >= 0 if zero else speed_rpm > 0
     if not (math.isfinite(speed_rpm) and low_ok and speed_rpm <= MAX_SPEED_RPM):
-        raise OptionError("--speed-rpm", speed_rpm,
-                          f"a speed in {'[' if zero else '('}0, {MAX_SPEED_RPM:g}] rpm")
+        raise OptionError(
+            "--speed-rpm", speed_rpm, f"a speed in {'[' if zero else '('}0, {MAX_SPEED_RPM:g}] rpm"
+        )
     return speed_rpm * math.pi / 30
 
 
@@ -148,13 +255,20 @@ def check_loads(radial: float, axial: float, unloaded: str | None = None) -> Non
     load_n("--radial-load-n", radial)
     load_n("--axial-load-n", axial, signed=True)
     if unloaded and radial == 0 and axial == 0:
-        raise OptionError("--radial-load-n", radial, "a load > 0 N (or an --axial-load-n)",
-                          unloaded)
+        raise OptionError(
+            "--radial-load-n", radial, "a load > 0 N (or an --axial-load-n)", unloaded
+        )
+
 
 #: BallBearing / Material keyword -> option name, to put errors in the user's terms.
 _KEYWORD_OPTION = {spec[4]: name for name, spec in _GEOMETRY_OPTIONS.items() if spec[4]}
-_KEYWORD_OPTION.update({"elastic_modulus": "elastic_modulus_gpa", "density": "density_kg_m3",
-                        "poisson_ratio": "poisson_ratio"})
+_KEYWORD_OPTION.update(
+    {
+        "elastic_modulus": "elastic_modulus_gpa",
+        "density": "density_kg_m3",
+        "poisson_ratio": "poisson_ratio",
+    }
+)
 #: Checks that involve other values: if the user did not give the value a check names,
 #: the error names the first of these the user did give.
 _PARTNERS = {
@@ -162,10 +276,20 @@ _PARTNERS = {
     "ball_count": ("ball_diameter", "pitch_diameter"),
     "ball_diameter": ("pitch_diameter", "bore", "outside_diameter", "diametral_clearance"),
     "bore": ("outside_diameter",),
-    "diametral_clearance": ("inner_groove_factor", "outer_groove_factor", "ball_diameter",
-                            "contact_angle"),
-    "width": ("ball_diameter", "outer_groove_factor", "inner_groove_factor", "pitch_diameter",
-              "outside_diameter", "diametral_clearance"),
+    "diametral_clearance": (
+        "inner_groove_factor",
+        "outer_groove_factor",
+        "ball_diameter",
+        "contact_angle",
+    ),
+    "width": (
+        "ball_diameter",
+        "outer_groove_factor",
+        "inner_groove_factor",
+        "pitch_diameter",
+        "outside_diameter",
+        "diametral_clearance",
+    ),
 }
 _UNITS = {"_mm": "mm", "_um": "um", "_deg": "deg", "_gpa": "GPa", "_kg_m3": "kg/m^3"}
 
@@ -193,8 +317,11 @@ class OptionError(InputError):
 
     def __init__(self, parameter: str, value, allowed: str, hint: str = "") -> None:
         super().__init__(parameter, value, allowed, hint)
-        message = (f"{parameter} is not given: expected {allowed}" if value is None
-                   else f"{parameter} = {_show(value)} is not allowed: expected {allowed}")
+        message = (
+            f"{parameter} is not given: expected {allowed}"
+            if value is None
+            else f"{parameter} = {_show(value)} is not allowed: expected {allowed}"
+        )
         self.args = (message + (f" ({hint})" if hint else ""),)
 
 
@@ -210,9 +337,11 @@ def _si_to_option_units(text: str, name: str) -> str:
     def one(m):
         return f"{float(m.group(1)) / factor:.6g}"
 
-    text = re.sub(rf"\[({number}), ({number})\] m\b",
-                  lambda m: f"[{float(m.group(1)) / factor:.6g}, "
-                            f"{float(m.group(2)) / factor:.6g}] {unit}", text)
+    text = re.sub(
+        rf"\[({number}), ({number})\] m\b",
+        lambda m: f"[{float(m.group(1)) / factor:.6g}, {float(m.group(2)) / factor:.6g}] {unit}",
+        text,
+    )
     text = re.sub(rf"({number}) m\b", lambda m: f"{one(m)} {unit}", text)
     return text.replace("[m]", f"[{unit}]")
 
@@ -248,8 +377,10 @@ class _Inputs:
                 raise OptionError(self.flag(name), value, "a finite number")
             if name in _RANGES:
                 low, high, low_in, high_in, what = _RANGES[name]
-                if not ((low <= value if low_in else low < value)
-                        and (value <= high if high_in else value < high)):
+                if not (
+                    (low <= value if low_in else low < value)
+                    and (value <= high if high_in else value < high)
+                ):
                     raise OptionError(self.flag(name), value, what)
 
     def _overrides(self) -> dict:
@@ -275,33 +406,49 @@ class _Inputs:
         if name is None:
             return exc
         if name in self.values:
-            return OptionError(self.flag(name), self.values[name],
-                               _si_to_option_units(exc.allowed, name),
-                               _si_to_option_units(exc.hint, name))
+            return OptionError(
+                self.flag(name),
+                self.values[name],
+                _si_to_option_units(exc.allowed, name),
+                _si_to_option_units(exc.hint, name),
+            )
         for partner in _PARTNERS.get(exc.parameter, ()):
             other = _KEYWORD_OPTION[partner]
             if other not in self.values:
                 continue
             unit = _unit(name)
             factor = _GEOMETRY_OPTIONS[name][3]
-            own = (f"{exc.value / factor:.6g}" if isinstance(exc.value, (int, float)) and factor
-                   else _show(exc.value))
+            own = (
+                f"{exc.value / factor:.6g}"
+                if isinstance(exc.value, (int, float)) and factor
+                else _show(exc.value)
+            )
             label = exc.parameter.replace("_", " ")
-            if (exc.parameter == "pitch_diameter" and partner == "ball_diameter"
-                    and exc.allowed.startswith("more than the ball diameter")):
-                return OptionError(self.flag(other), self.values[other],
-                                   f"less than the pitch diameter {own} {unit} (not given: "
-                                   "a catalogue or derived value)")
+            if (
+                exc.parameter == "pitch_diameter"
+                and partner == "ball_diameter"
+                and exc.allowed.startswith("more than the ball diameter")
+            ):
+                return OptionError(
+                    self.flag(other),
+                    self.values[other],
+                    f"less than the pitch diameter {own} {unit} (not given: "
+                    "a catalogue or derived value)",
+                )
             if exc.parameter == "bore" and partner == "outside_diameter":
-                return OptionError(self.flag(other), self.values[other],
-                                   f"more than the bore {own} {unit} (not given: a catalogue "
-                                   "or derived value)")
+                return OptionError(
+                    self.flag(other),
+                    self.values[other],
+                    f"more than the bore {own} {unit} (not given: a catalogue or derived value)",
+                )
             return OptionError(
-                self.flag(other), self.values[other],
+                self.flag(other),
+                self.values[other],
                 f"a value with which the {label} {own}{' ' + unit if unit else ''} (not given: "
                 f"a catalogue or derived value) passes its check: "
                 f"{_si_to_option_units(exc.allowed, name)}",
-                _si_to_option_units(exc.hint, name))
+                _si_to_option_units(exc.hint, name),
+            )
         return exc
 
 
@@ -318,11 +465,13 @@ def _read_geometry_file(path: Path) -> dict:
     except PermissionError:
         raise OptionError(flag, str(path), "a readable TOML file", "permission denied") from None
     except OSError as exc:
-        raise OptionError(flag, str(path), "a readable TOML file",
-                          exc.strerror or type(exc).__name__) from None
+        raise OptionError(
+            flag, str(path), "a readable TOML file", exc.strerror or type(exc).__name__
+        ) from None
     except UnicodeDecodeError as exc:
-        raise OptionError(flag, str(path), "a UTF-8 encoded TOML file",
-                          f"byte {exc.start} is not UTF-8") from None
+        raise OptionError(
+            flag, str(path), "a UTF-8 encoded TOML file", f"byte {exc.start} is not UTF-8"
+        ) from None
     except tomllib.TOMLDecodeError as exc:
         raise OptionError(flag, str(path), "a valid TOML file", str(exc)) from None
     aliases = {"ball_count": "balls", "diametral_clearance_um": "clearance_um"}
@@ -333,8 +482,11 @@ def _read_geometry_file(path: Path) -> dict:
         if key not in known:
             raise OptionError(f"--geometry key {written!r}", value, f"one of {known}")
         if key in out:
-            raise OptionError(f"--geometry key {written!r}", value,
-                              f"each value once ({out[key][0]!r} gives it too)")
+            raise OptionError(
+                f"--geometry key {written!r}",
+                value,
+                f"each value once ({out[key][0]!r} gives it too)",
+            )
         where = f"--geometry {written}"
         if key == "name":
             if not isinstance(value, str):
@@ -347,8 +499,11 @@ def _read_geometry_file(path: Path) -> dict:
             if type(value) is not int:
                 raise OptionError(where, value, "an integer number of balls (e.g. balls = 9)")
         elif isinstance(value, bool) or not isinstance(value, (int, float)):
-            raise OptionError(where, value, f"a number{' in ' + _unit(key) if _unit(key) else ''}"
-                                            " (TOML integer or float)")
+            raise OptionError(
+                where,
+                value,
+                f"a number{' in ' + _unit(key) if _unit(key) else ''} (TOML integer or float)",
+            )
         elif not math.isfinite(value):
             raise OptionError(where, value, "a finite number")
         else:
@@ -360,8 +515,9 @@ def _read_geometry_file(path: Path) -> dict:
 def _catalog_message(exc: CatalogError) -> str:
     """A catalogue error in the user's terms: the options to give instead of keywords."""
     if isinstance(exc, GeometryNeeded):
-        flags = [_GEOMETRY_OPTIONS[_KEYWORD_OPTION[k]][0] for k in exc.needed
-                 if k in _KEYWORD_OPTION]
+        flags = [
+            _GEOMETRY_OPTIONS[_KEYWORD_OPTION[k]][0] for k in exc.needed if k in _KEYWORD_OPTION
+        ]
         if flags:
             listed = flags[0] if len(flags) == 1 else ", ".join(flags[:-1]) + " and " + flags[-1]
             return f"{exc.reason}; give {listed}"
@@ -373,14 +529,18 @@ def _resolve(designation: str | None, inputs: _Inputs):
     overrides = inputs.overrides
     try:
         if designation:
-            return bearing_from_designation(designation, system=inputs.system,
-                                            overrides=overrides)
-        missing = [_GEOMETRY_OPTIONS[n][0] for n in ("balls", "ball_diameter_mm",
-                                                      "pitch_diameter_mm")
-                   if _GEOMETRY_OPTIONS[n][4] not in overrides]
+            return bearing_from_designation(designation, system=inputs.system, overrides=overrides)
+        missing = [
+            _GEOMETRY_OPTIONS[n][0]
+            for n in ("balls", "ball_diameter_mm", "pitch_diameter_mm")
+            if _GEOMETRY_OPTIONS[n][4] not in overrides
+        ]
         if missing:
-            raise InputError("DESIGNATION", None, "a designation, or explicit geometry with "
-                             + ", ".join(missing))
+            raise InputError(
+                "DESIGNATION",
+                None,
+                "a designation, or explicit geometry with " + ", ".join(missing),
+            )
         kwargs = dict(overrides)
         name = kwargs.pop("name", "user geometry")
         sources = {k: Source("user", "command line") for k in kwargs}
@@ -393,9 +553,12 @@ def _resolve(designation: str | None, inputs: _Inputs):
 
 def _check_designation_text(designation: str | None) -> None:
     if designation is not None and not designation.strip():
-        raise OptionError("DESIGNATION", designation,
-                          "a bearing designation (e.g. 6205-2RS, 180205) or catalogue name, or "
-                          "no designation and explicit geometry")
+        raise OptionError(
+            "DESIGNATION",
+            designation,
+            "a bearing designation (e.g. 6205-2RS, 180205) or catalogue name, or "
+            "no designation and explicit geometry",
+        )
 
 
 def resolve_bearing(designation: str | None, geometry: dict):
@@ -412,10 +575,13 @@ def _material(values: dict) -> Material | None:
     if e is None and nu is None and rho is None:
         return None
     base = BEARING_STEEL
-    return replace(base, name="user material",
-                   elastic_modulus=base.elastic_modulus if e is None else float(e) * 1e9,
-                   poisson_ratio=base.poisson_ratio if nu is None else float(nu),
-                   density=base.density if rho is None else float(rho))
+    return replace(
+        base,
+        name="user material",
+        elastic_modulus=base.elastic_modulus if e is None else float(e) * 1e9,
+        poisson_ratio=base.poisson_ratio if nu is None else float(nu),
+        density=base.density if rho is None else float(rho),
+    )
 
 
 def _geometry_warnings(bearing: BallBearing) -> list[str]:
@@ -423,26 +589,35 @@ def _geometry_warnings(bearing: BallBearing) -> list[str]:
     bearing (a lower bound), balls of a thrust bearing reaching past its outside diameter."""
     out = []
     src = bearing.sources.get("ball_count")
-    if (src is not None and src.kind == "estimated"
-            and bearing.bearing_type in ("angular_contact_ball", "four_point_contact_ball")):
-        out.append(f"ball count Z = {bearing.ball_count} is estimated with the Conrad "
-                   "filling-angle rule: for an angular-contact bearing that is a lower bound "
-                   "(they carry more balls); give --balls")
+    if (
+        src is not None
+        and src.kind == "estimated"
+        and bearing.bearing_type in ("angular_contact_ball", "four_point_contact_ball")
+    ):
+        out.append(
+            f"ball count Z = {bearing.ball_count} is estimated with the Conrad "
+            "filling-angle rule: for an angular-contact bearing that is a lower bound "
+            "(they carry more balls); give --balls"
+        )
     big_d = bearing.outside_diameter
     if bearing.is_thrust and big_d is not None:
         reach = bearing.pitch_diameter + bearing.ball_diameter
         if reach > big_d:
-            out.append(f"the balls reach to a diameter of {reach * 1e3:.4g} mm, beyond the "
-                       f"outside diameter {big_d * 1e3:.4g} mm: check --pitch-diameter-mm and "
-                       "--ball-diameter-mm")
+            out.append(
+                f"the balls reach to a diameter of {reach * 1e3:.4g} mm, beyond the "
+                f"outside diameter {big_d * 1e3:.4g} mm: check --pitch-diameter-mm and "
+                "--ball-diameter-mm"
+            )
     return out
 
 
 def _geometry_line(bearing: BallBearing, contact_angle: float | None = None) -> str:
     alpha = bearing.contact_angle if contact_angle is None else contact_angle
-    return (f"geometry ({bearing.geometry_source}): Z = {bearing.ball_count}, "
-            f"D_w = {bearing.ball_diameter * 1e3:.4g} mm, d_m = {bearing.pitch_diameter * 1e3:.4g} "
-            f"mm, contact angle {math.degrees(alpha):.4g} deg")
+    return (
+        f"geometry ({bearing.geometry_source}): Z = {bearing.ball_count}, "
+        f"D_w = {bearing.ball_diameter * 1e3:.4g} mm, d_m = {bearing.pitch_diameter * 1e3:.4g} "
+        f"mm, contact angle {math.degrees(alpha):.4g} deg"
+    )
 
 
 def _print_warnings(warnings: list[str]) -> None:
@@ -458,8 +633,9 @@ def save_plot_figure(fig, path: Path, flag: str = "--plot") -> None:
     try:
         save_figure(fig, path)
     except OSError as exc:
-        raise OptionError(flag, str(path), "a writable file",
-                          exc.strerror or type(exc).__name__) from None
+        raise OptionError(
+            flag, str(path), "a writable file", exc.strerror or type(exc).__name__
+        ) from None
     except InputError as exc:
         raise OptionError(flag, str(path), exc.allowed) from None
 
@@ -500,7 +676,7 @@ def option_error(exc: InputError, options: dict) -> InputError:
     parameter = _PARAMETER_OPTIONS.get(exc.parameter, exc.parameter)
     for name, typed in options.items():
         unit = unit_of(name)
-        base = name[:-len(unit.suffix) - 1] if unit is not None else name
+        base = name[: -len(unit.suffix) - 1] if unit is not None else name
         if base != parameter:
             continue
         value = typed

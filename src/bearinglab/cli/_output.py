@@ -33,8 +33,10 @@ def _tidy(value):
 def _check_finite(value, path: str = "") -> None:
     """Refuse to print a result that is not finite (inf or NaN) with a one-line error."""
     if isinstance(value, float) and not math.isfinite(value):
-        raise BearinglabError(f"the result {path.lstrip('.') or 'value'} = {value} is not "
-                              "finite for these inputs; check that they are in range")
+        raise BearinglabError(
+            f"the result {path.lstrip('.') or 'value'} = {value} is not "
+            "finite for these inputs; check that they are in range"
+        )
     if isinstance(value, dict):
         for k, v in value.items():
             _check_finite(v, f"{path}.{k}")
@@ -52,8 +54,9 @@ def _save_plot(result, plot: Path) -> None:
     try:
         save_figure(result.plot()[0], plot)
     except OSError as exc:
-        raise OptionError("--plot", str(plot), "a writable file",
-                          exc.strerror or type(exc).__name__) from None
+        raise OptionError(
+            "--plot", str(plot), "a writable file", exc.strerror or type(exc).__name__
+        ) from None
 
 
 def _fmt(value, digits: int = 4) -> str:
@@ -68,8 +71,11 @@ def _table(title: str, columns: list[str], rows: list[list]) -> Table:
     table = Table(title=title, title_justify="left", show_header=True, header_style="bold")
     for i, col in enumerate(columns):
         # a header's words are never cut: its column is at least as wide as its longest word
-        table.add_column(escape(col), justify="right" if i and col not in ("source", "meaning")
-                         else "left", min_width=max(map(len, col.split()), default=1))
+        table.add_column(
+            escape(col),
+            justify="right" if i and col not in ("source", "meaning") else "left",
+            min_width=max(map(len, col.split()), default=1),
+        )
     for row in rows:
         table.add_row(*(_fmt(v) for v in row))
     return table
@@ -105,8 +111,14 @@ def peak_rows(peaks) -> list[list]:
     rows = []
     for p in peaks:
         deviation = p.get("deviation")
-        rows.append([p["frequency_hz"], p["amplitude"], peak_label(p),
-                     None if deviation is None else 100.0 * deviation])
+        rows.append(
+            [
+                p["frequency_hz"],
+                p["amplitude"],
+                peak_label(p),
+                None if deviation is None else 100.0 * deviation,
+            ]
+        )
     return rows
 
 
@@ -120,9 +132,15 @@ def progress_bar(description: str, *, enabled: bool = True):
     from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
 
     err = Console(stderr=True)
-    with Progress(TextColumn("{task.description}"), BarColumn(),
-                  TextColumn("{task.percentage:>3.0f}%"), TimeElapsedColumn(), console=err,
-                  transient=True, disable=not enabled or not err.is_terminal) as progress:
+    with Progress(
+        TextColumn("{task.description}"),
+        BarColumn(),
+        TextColumn("{task.percentage:>3.0f}%"),
+        TimeElapsedColumn(),
+        console=err,
+        transient=True,
+        disable=not enabled or not err.is_terminal,
+    ) as progress:
         task = progress.add_task(description, total=1.0)
 
         def update(fraction: float | None = None, description: str | None = None) -> None:
@@ -146,33 +164,73 @@ def print_verdict(diag, name: str, bearing) -> None:
     ``to_dict``)."""
     speed = diag.speed
     measured = speed.get("measured_rpm")
-    console.print(_table(f"{escape(name)}: channel {diag.channel}", ["", "value"], [
-        ["sample rate", f"{diag.sample_rate:g} Hz"],
-        ["bearing", bearing.name or "bearing"],
-        ["speed used", f"{speed['used_rpm']:.6g} rpm ({speed['source']})"],
-        ["speed the signal shows",
-         "no shaft line found" if measured is None else f"{measured:.6g} rpm"],
-        ["methods", ", ".join(diag.methods)],
-        ["band", "; ".join(f"{m}: " + ("whole band" if s.band is None else
-                                        f"{s.band[0]:.6g} - {s.band[1]:.6g} Hz")
-                           for m, s in diag.spectra.items())],
-        ["resolution", f"{diag.resolution:.3g} Hz"]]))
+    console.print(
+        _table(
+            f"{escape(name)}: channel {diag.channel}",
+            ["", "value"],
+            [
+                ["sample rate", f"{diag.sample_rate:g} Hz"],
+                ["bearing", bearing.name or "bearing"],
+                ["speed used", f"{speed['used_rpm']:.6g} rpm ({speed['source']})"],
+                [
+                    "speed the signal shows",
+                    "no shaft line found" if measured is None else f"{measured:.6g} rpm",
+                ],
+                ["methods", ", ".join(diag.methods)],
+                [
+                    "band",
+                    "; ".join(
+                        f"{m}: "
+                        + (
+                            "whole band"
+                            if s.band is None
+                            else f"{s.band[0]:.6g} - {s.band[1]:.6g} Hz"
+                        )
+                        for m, s in diag.spectra.items()
+                    ),
+                ],
+                ["resolution", f"{diag.resolution:.3g} Hz"],
+            ],
+        )
+    )
     from ._inputs import _geometry_line
 
     console.print(escape(_geometry_line(bearing)))
-    rows = [[name, t["method"], t["kinematic_hz"], t["fundamental_hz"], 100 * t["slip"],
-             round(t["significance"], 2), "yes" if t["passed"] else "no"]
-            for name, t in diag.families.items()]
-    console.print(_table(f"Fault families: significance -log10 p, threshold "
-                         f"{diag.threshold:.3g} (false-alarm probability {diag.false_alarm:g})",
-                         ["family", "method", "f kin [Hz]", "f fit [Hz]", "slip [%]",
-                          "signif.", "found"], rows))
+    rows = [
+        [
+            name,
+            t["method"],
+            t["kinematic_hz"],
+            t["fundamental_hz"],
+            100 * t["slip"],
+            round(t["significance"], 2),
+            "yes" if t["passed"] else "no",
+        ]
+        for name, t in diag.families.items()
+    ]
+    console.print(
+        _table(
+            f"Fault families: significance -log10 p, threshold "
+            f"{diag.threshold:.3g} (false-alarm probability {diag.false_alarm:g})",
+            ["family", "method", "f kin [Hz]", "f fit [Hz]", "slip [%]", "signif.", "found"],
+            rows,
+        )
+    )
     from ..diagnosis import peak_label
 
-    lines = [[p["frequency_hz"], p["z"], peak_label(p),
-              None if p.get("deviation") is None else 100 * p["deviation"]]
-             for p in diag.peaks]
-    console.print(_table("Envelope lines", ["f [Hz]", "level over floor [-]", "matched",
-                                            "deviation [%]"], lines))
+    lines = [
+        [
+            p["frequency_hz"],
+            p["z"],
+            peak_label(p),
+            None if p.get("deviation") is None else 100 * p["deviation"],
+        ]
+        for p in diag.peaks
+    ]
+    console.print(
+        _table(
+            "Envelope lines", ["f [Hz]", "level over floor [-]", "matched", "deviation [%]"], lines
+        )
+    )
     console.print(f"verdict: [bold]{escape(diag.verdict.replace('_', ' '))}[/bold]")
     console.print(f"[dim]{escape(diag.reason)}[/dim]")

@@ -25,16 +25,30 @@ from ._inputs import (
 from ._output import _emit_json, _save_plot, print_verdict
 
 app = command_app()
-PlotOpt = Annotated[Path | None, typer.Option(
-    "--plot", help="Also draw the squared envelope spectrum to this .png, .svg or .pdf file.",
-    show_default=False)]
+PlotOpt = Annotated[
+    Path | None,
+    typer.Option(
+        "--plot",
+        help="Also draw the squared envelope spectrum to this .png, .svg or .pdf file.",
+        show_default=False,
+    ),
+]
 #: InputError parameter of the library -> the option (or argument) to blame.
-FLAGS = {"path": "SIGNAL_FILE", "sample_rate": "--sample-rate-hz",
-         "sample_rate_hz": "--sample-rate-hz", "channel": "--channel",
-         "shaft_speed": "--speed-rpm", "speed_range": "--speed-range-rpm",
-         "methods": "--method", "band": "--band-hz", "false_alarm": "--false-alarm",
-         "signal_or_array": "SIGNAL_FILE", "tolerances": "--tolerance",
-         "supply_frequency": "--supply-hz", "mesh_frequency": "--mesh-hz"}
+FLAGS = {
+    "path": "SIGNAL_FILE",
+    "sample_rate": "--sample-rate-hz",
+    "sample_rate_hz": "--sample-rate-hz",
+    "channel": "--channel",
+    "shaft_speed": "--speed-rpm",
+    "speed_range": "--speed-range-rpm",
+    "methods": "--method",
+    "band": "--band-hz",
+    "false_alarm": "--false-alarm",
+    "signal_or_array": "SIGNAL_FILE",
+    "tolerances": "--tolerance",
+    "supply_frequency": "--supply-hz",
+    "mesh_frequency": "--mesh-hz",
+}
 
 
 def parse_band(text: str | None):
@@ -49,8 +63,9 @@ def parse_band(text: str | None):
     except ValueError:
         low = high = math.nan
     if not (math.isfinite(low) and math.isfinite(high) and 0 < low < high):
-        raise OptionError("--band-hz", text, "none (each method's own band), auto or LO,HI "
-                          "in Hz with 0 < LO < HI")
+        raise OptionError(
+            "--band-hz", text, "none (each method's own band), auto or LO,HI in Hz with 0 < LO < HI"
+        )
     return low, high
 
 
@@ -92,8 +107,11 @@ def parse_tolerances(items: list[str] | None) -> dict | None:
         except ValueError:
             parts = ()
         if not sep or len(parts) not in (1, 2):
-            raise OptionError("--tolerance", item, "FAMILY=FRACTION or FAMILY=BELOW,ABOVE, "
-                              "e.g. ball=0.05 or outer=0.01,0.02")
+            raise OptionError(
+                "--tolerance",
+                item,
+                "FAMILY=FRACTION or FAMILY=BELOW,ABOVE, e.g. ball=0.05 or outer=0.01,0.02",
+            )
         out[family.strip()] = parts[0] if len(parts) == 1 else parts
     return out
 
@@ -107,58 +125,133 @@ def _methods(items: list[str] | None):
 @app.command("analyze")
 @with_geometry
 def analyze_command(
-        signal_file: Annotated[Path, typer.Argument(
+    signal_file: Annotated[
+        Path,
+        typer.Argument(
             help="Vibration record: .npz, .csv (with a time column), .wav or .mat (CWRU "
-                 "variables, MATLAB structs such as MFPT's bearing.gs, v7.3).",
-            show_default=False)],
-        channel: Annotated[str | None, typer.Option(
-            "--channel", help="Channel or struct field path (e.g. DE, acc_y, bearing.gs or "
+            "variables, MATLAB structs such as MFPT's bearing.gs, v7.3).",
+            show_default=False,
+        ),
+    ],
+    channel: Annotated[
+        str | None,
+        typer.Option(
+            "--channel",
+            help="Channel or struct field path (e.g. DE, acc_y, bearing.gs or "
             "gs); default acc_y, DE or gs if present, else the first.",
-            show_default=False)] = None,
-        sample_rate_hz: Annotated[float | None, typer.Option(
-            "--sample-rate-hz", help="Sample rate [Hz], when the file does not say (CWRU "
-            ".mat: 12000 or 48000) or to override it.", show_default=False)] = None,
-        designation: Annotated[str | None, typer.Option(
-            "--designation", help="Bearing designation or catalogue name (e.g. ER-16K, "
-            "6205); optional with explicit geometry.", show_default=False)] = None,
-        speed_rpm: Annotated[str | None, typer.Option(
-            "--speed-rpm", help="Shaft speed [rpm], or auto (the speed the signal shows); "
-            "default the speed the file records.", show_default=False)] = None,
-        speed_range_rpm: Annotated[str | None, typer.Option(
-            "--speed-range-rpm", help="LO,HI [rpm]: where --speed-rpm auto searches (default "
-            "+-5 % of the recorded speed).", show_default=False)] = None,
-        method: Annotated[list[str] | None, typer.Option(
-            "--method", help="raw, cpw, drs-sk or all (repeatable or comma-separated): "
+            show_default=False,
+        ),
+    ] = None,
+    sample_rate_hz: Annotated[
+        float | None,
+        typer.Option(
+            "--sample-rate-hz",
+            help="Sample rate [Hz], when the file does not say (CWRU "
+            ".mat: 12000 or 48000) or to override it.",
+            show_default=False,
+        ),
+    ] = None,
+    designation: Annotated[
+        str | None,
+        typer.Option(
+            "--designation",
+            help="Bearing designation or catalogue name (e.g. ER-16K, "
+            "6205); optional with explicit geometry.",
+            show_default=False,
+        ),
+    ] = None,
+    speed_rpm: Annotated[
+        str | None,
+        typer.Option(
+            "--speed-rpm",
+            help="Shaft speed [rpm], or auto (the speed the signal shows); "
+            "default the speed the file records.",
+            show_default=False,
+        ),
+    ] = None,
+    speed_range_rpm: Annotated[
+        str | None,
+        typer.Option(
+            "--speed-range-rpm",
+            help="LO,HI [rpm]: where --speed-rpm auto searches (default "
+            "+-5 % of the recorded speed).",
+            show_default=False,
+        ),
+    ] = None,
+    method: Annotated[
+        list[str] | None,
+        typer.Option(
+            "--method",
+            help="raw, cpw, drs-sk or all (repeatable or comma-separated): "
             "Smith & Randall's Methods 1-3; default cpw (raw for bearinglab "
-            "simulations).", show_default=False)] = None,
-        band_hz: Annotated[str | None, typer.Option(
-            "--band-hz", help="Demodulation band: none (each method's own: whole band, or "
+            "simulations).",
+            show_default=False,
+        ),
+    ] = None,
+    band_hz: Annotated[
+        str | None,
+        typer.Option(
+            "--band-hz",
+            help="Demodulation band: none (each method's own: whole band, or "
             "the kurtogram's for drs-sk), auto (the kurtogram's for every method) or LO,HI "
-            "[Hz].", show_default=False)] = None,
-        tolerance: Annotated[list[str] | None, typer.Option(
-            "--tolerance", help="Family tolerance FAMILY=FRACTION or FAMILY=BELOW,ABOVE "
+            "[Hz].",
+            show_default=False,
+        ),
+    ] = None,
+    tolerance: Annotated[
+        list[str] | None,
+        typer.Option(
+            "--tolerance",
+            help="Family tolerance FAMILY=FRACTION or FAMILY=BELOW,ABOVE "
             "(families outer, inner, ball, cage; defaults 0.02, 0.02, 0.07/0.02, 0.02); "
-            "repeatable.", show_default=False)] = None,
-        false_alarm: Annotated[float, typer.Option(
-            "--false-alarm", help="Largest probability of calling a fault on a record "
-            "without one.")] = 0.01,
-        supply_hz: Annotated[float | None, typer.Option(
-            "--supply-hz", help="Electrical supply frequency [Hz]: its harmonics are not "
-            "bearing lines.", show_default=False)] = None,
-        mesh_hz: Annotated[float | None, typer.Option(
-            "--mesh-hz", help="Gear-mesh frequency [Hz]: its harmonics are not bearing "
-            "lines.", show_default=False)] = None,
-        json_output: JsonOpt = False, plot: PlotOpt = None, *, geometry):
+            "repeatable.",
+            show_default=False,
+        ),
+    ] = None,
+    false_alarm: Annotated[
+        float,
+        typer.Option(
+            "--false-alarm", help="Largest probability of calling a fault on a record without one."
+        ),
+    ] = 0.01,
+    supply_hz: Annotated[
+        float | None,
+        typer.Option(
+            "--supply-hz",
+            help="Electrical supply frequency [Hz]: its harmonics are not bearing lines.",
+            show_default=False,
+        ),
+    ] = None,
+    mesh_hz: Annotated[
+        float | None,
+        typer.Option(
+            "--mesh-hz",
+            help="Gear-mesh frequency [Hz]: its harmonics are not bearing lines.",
+            show_default=False,
+        ),
+    ] = None,
+    json_output: JsonOpt = False,
+    plot: PlotOpt = None,
+    *,
+    geometry,
+):
     """Diagnose a vibration record by envelope analysis."""
     positive("--sample-rate-hz", sample_rate_hz, "a sample rate > 0 Hz")
     positive("--supply-hz", supply_hz, "a frequency > 0 Hz")
     positive("--mesh-hz", mesh_hz, "a frequency > 0 Hz")
     check_path("--plot", plot, (".png", ".svg", ".pdf"))
-    options = {"shaft_speed": parse_speed(speed_rpm), "speed_range": parse_range(speed_range_rpm),
-               "channel": channel, "sample_rate": sample_rate_hz, "band": parse_band(band_hz),
-               "methods": _methods(method), "tolerances": parse_tolerances(tolerance),
-               "false_alarm": false_alarm, "supply_frequency": supply_hz,
-               "mesh_frequency": mesh_hz}
+    options = {
+        "shaft_speed": parse_speed(speed_rpm),
+        "speed_range": parse_range(speed_range_rpm),
+        "channel": channel,
+        "sample_rate": sample_rate_hz,
+        "band": parse_band(band_hz),
+        "methods": _methods(method),
+        "tolerances": parse_tolerances(tolerance),
+        "false_alarm": false_alarm,
+        "supply_frequency": supply_hz,
+        "mesh_frequency": mesh_hz,
+    }
     bearing, _ = resolve_bearing(designation, geometry)
     from ..diagnosis import analyze_file
 
@@ -168,19 +261,34 @@ def analyze_command(
         flag = FLAGS.get(exc.parameter.split("[")[0])
         if flag is None:
             raise
-        given = {"SIGNAL_FILE": str(signal_file), "--speed-rpm": speed_rpm,
-                 "--method": method, "--band-hz": band_hz, "--channel": channel,
-                 "--sample-rate-hz": sample_rate_hz, "--tolerance": tolerance,
-                 "--speed-range-rpm": speed_range_rpm, "--false-alarm": false_alarm}
+        given = {
+            "SIGNAL_FILE": str(signal_file),
+            "--speed-rpm": speed_rpm,
+            "--method": method,
+            "--band-hz": band_hz,
+            "--channel": channel,
+            "--sample-rate-hz": sample_rate_hz,
+            "--tolerance": tolerance,
+            "--speed-range-rpm": speed_range_rpm,
+            "--false-alarm": false_alarm,
+        }
         value = given.get(flag, exc.value)
         if flag == "--speed-rpm" and speed_rpm is None:
-            raise OptionError(flag, None, "a speed in rpm or auto (the file does not record "
-                              "the shaft speed)") from None
+            raise OptionError(
+                flag, None, "a speed in rpm or auto (the file does not record the shaft speed)"
+            ) from None
         if flag == "--sample-rate-hz" and sample_rate_hz is None and exc.value is None:
-            raise OptionError(flag, None, "the sample rate in Hz (the file does not store it; "
-                              "CWRU records are 12000 or 48000 Hz)") from None
-        hint = exc.hint or (f"it holds {exc.value}" if flag == "SIGNAL_FILE"
-                            and exc.parameter == "signal_or_array" else "")
+            raise OptionError(
+                flag,
+                None,
+                "the sample rate in Hz (the file does not store it; "
+                "CWRU records are 12000 or 48000 Hz)",
+            ) from None
+        hint = exc.hint or (
+            f"it holds {exc.value}"
+            if flag == "SIGNAL_FILE" and exc.parameter == "signal_or_array"
+            else ""
+        )
         if flag == "--sample-rate-hz" and sample_rate_hz is None:
             value = exc.value  # the file's own rate
         raise OptionError(flag, value, exc.allowed, hint) from None

@@ -16,38 +16,64 @@ app = command_app()
 
 @app.command("benchmark")
 def benchmark_command(
-        folder: Annotated[Path, typer.Argument(
+    folder: Annotated[
+        Path,
+        typer.Argument(
             help="Folder with a labels.csv (file, channel, sample_rate_hz, speed_rpm, the "
-                 "bearing, fault) and the recordings it names.", show_default=False)],
-        method: Annotated[list[str] | None, typer.Option(
-            "--method", help="raw, cpw, drs-sk or all (repeatable or comma-separated); each "
-            "is also run on its own; default cpw.", show_default=False)] = None,
-        jobs: Annotated[int, typer.Option(
-            "--jobs", help="Records diagnosed at once (processes).")] = 1,
-        html: Annotated[Path | None, typer.Option(
-            "--html", help="Also write a page with each record's envelope spectrum and the "
-            "lines it matched.", show_default=False)] = None,
-        json_output: JsonOpt = False):
+            "bearing, fault) and the recordings it names.",
+            show_default=False,
+        ),
+    ],
+    method: Annotated[
+        list[str] | None,
+        typer.Option(
+            "--method",
+            help="raw, cpw, drs-sk or all (repeatable or comma-separated); each "
+            "is also run on its own; default cpw.",
+            show_default=False,
+        ),
+    ] = None,
+    jobs: Annotated[int, typer.Option("--jobs", help="Records diagnosed at once (processes).")] = 1,
+    html: Annotated[
+        Path | None,
+        typer.Option(
+            "--html",
+            help="Also write a page with each record's envelope spectrum and the lines it matched.",
+            show_default=False,
+        ),
+    ] = None,
+    json_output: JsonOpt = False,
+):
     """Run the diagnosis over a folder of labelled recordings."""
     if jobs < 1:
         raise OptionError("--jobs", jobs, "an integer >= 1")
     check_path("--html", html, (".html", ".htm"))
-    methods = None if not method else [m.strip() for item in method for m in item.split(",")
-                                       if m.strip()]
+    methods = (
+        None if not method else [m.strip() for item in method for m in item.split(",") if m.strip()]
+    )
     from ..diagnosis import run_benchmark
 
     with progress_bar("diagnosing records", enabled=not json_output) as update:
         try:
-            result = run_benchmark(folder, methods=methods, jobs=jobs,
-                                   progress=lambda done, total: update(done / total),
-                                   keep_spectra=html is not None)
+            result = run_benchmark(
+                folder,
+                methods=methods,
+                jobs=jobs,
+                progress=lambda done, total: update(done / total),
+                keep_spectra=html is not None,
+            )
         except InputError as exc:
-            flag = {"folder": "FOLDER", "labels.csv": "FOLDER", "methods": "--method",
-                    "jobs": "--jobs"}.get(exc.parameter)
+            flag = {
+                "folder": "FOLDER",
+                "labels.csv": "FOLDER",
+                "methods": "--method",
+                "jobs": "--jobs",
+            }.get(exc.parameter)
             if flag is None:
                 raise
-            raise OptionError(flag, exc.value if flag != "FOLDER" else str(folder),
-                              exc.allowed, exc.hint) from None
+            raise OptionError(
+                flag, exc.value if flag != "FOLDER" else str(folder), exc.allowed, exc.hint
+            ) from None
     if html is not None:
         result.write_html(html)
     out = result.to_dict()
@@ -55,20 +81,40 @@ def benchmark_command(
         _emit_json(out)
         return
     cols = out["columns"]
-    rows = [[r["file"], r["fault"], r["smith_randall_2015"] or "-",
-             *[r.get(c) or "error" for c in cols], "yes" if r["right"] else "no"]
-            for r in out["records"]]
-    console.print(_table(f"{folder}: verdicts", ["file", "label", "S&R 2015", *cols, "right"],
-                         rows))
+    rows = [
+        [
+            r["file"],
+            r["fault"],
+            r["smith_randall_2015"] or "-",
+            *[r.get(c) or "error" for c in cols],
+            "yes" if r["right"] else "no",
+        ]
+        for r in out["records"]
+    ]
+    console.print(
+        _table(f"{folder}: verdicts", ["file", "label", "S&R 2015", *cols, "right"], rows)
+    )
     together = cols[-1]
     matrix = out["confusion"][together]
     verdicts = [c for c in next(iter(matrix.values())) if any(m[c] for m in matrix.values())]
-    console.print(_table(f"confusion ({together}): label / verdict", ["label", *verdicts],
-                         [[k, *[v[c] for c in verdicts]] for k, v in matrix.items()]))
-    console.print(_table("right and recall per class", ["", *cols],
-                         [["right", *[f"{out['right'][c]} / {out['total']}" for c in cols]]]
-                         + [[f"recall {k}", *[out["recall"][c].get(k) for c in cols]]
-                            for k in out["recall"][together]]))
+    console.print(
+        _table(
+            f"confusion ({together}): label / verdict",
+            ["label", *verdicts],
+            [[k, *[v[c] for c in verdicts]] for k, v in matrix.items()],
+        )
+    )
+    console.print(
+        _table(
+            "right and recall per class",
+            ["", *cols],
+            [["right", *[f"{out['right'][c]} / {out['total']}" for c in cols]]]
+            + [
+                [f"recall {k}", *[out["recall"][c].get(k) for c in cols]]
+                for k in out["recall"][together]
+            ],
+        )
+    )
     errors = [r for r in out["records"] if r["error"]]
     for r in errors:
         console.print(f"[red]{r['file']}: {r['error']}[/red]")

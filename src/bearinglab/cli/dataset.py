@@ -19,81 +19,132 @@ app = command_app()
 CONFIRM_RECORDS = 1000
 _RANGE = "V, LOW:HIGH (uniform) or A,B,C (one of)"
 #: Library parameter -> the option the user typed.
-_FLAGS = {"output": "OUTPUT", "records": "--records", "scheduler": "--scheduler",
-          "workers": "--workers", "seed": "--seed", "partition_size": "--partition-size",
-          "bearings": "--bearings", "faults": "--faults", "model": "--model",
-          "resonances": "--resonance", "resonance frequency": "--resonance",
-          "damping ratio": "--resonance"}
+_FLAGS = {
+    "output": "OUTPUT",
+    "records": "--records",
+    "scheduler": "--scheduler",
+    "workers": "--workers",
+    "seed": "--seed",
+    "partition_size": "--partition-size",
+    "bearings": "--bearings",
+    "faults": "--faults",
+    "model": "--model",
+    "resonances": "--resonance",
+    "resonance frequency": "--resonance",
+    "damping ratio": "--resonance",
+}
 
 
 def _resonance(text: str):
     freq, at, zeta = text.partition("@")
     if not at or not freq.strip() or not zeta.strip():
-        raise OptionError("--resonance", text, "FREQ_HZ@DAMPING, each a value or LOW:HIGH, "
-                          "e.g. 2500:4500@0.02:0.08")
+        raise OptionError(
+            "--resonance",
+            text,
+            "FREQ_HZ@DAMPING, each a value or LOW:HIGH, e.g. 2500:4500@0.02:0.08",
+        )
     return freq.strip(), zeta.strip()
 
 
 def _remap(exc: InputError) -> InputError:
     if exc.parameter == "records" and "confirmation" in exc.allowed:
-        return OptionError("--records", exc.value, f"at most {CONFIRM_RECORDS} without --yes",
-                           "add --yes to make them all")
+        return OptionError(
+            "--records",
+            exc.value,
+            f"at most {CONFIRM_RECORDS} without --yes",
+            "add --yes to make them all",
+        )
     flag = _FLAGS.get(exc.parameter, "--" + exc.parameter.replace("_", "-"))
     return OptionError(flag, exc.value, exc.allowed, hint_of(exc))
 
 
 @app.command("dataset")
 def dataset(
-        output: Annotated[Path, typer.Argument(
+    output: Annotated[
+        Path,
+        typer.Argument(
             help="Folder of the data set; its name is the data set's name "
-            "(bearing_datasets.open(NAME, root=PARENT) reads it).", show_default=False)],
-        records: Annotated[int, typer.Option("--records", help="Number of records.")] = 100,
-        bearings: Annotated[str, typer.Option(
-            "--bearings", help="Designations, A,B,C (one drawn per record).")] = "6205-2RS",
-        speed_rpm: Annotated[str, typer.Option("--speed-rpm", help=f"Speed [rpm]: {_RANGE}.")
-                             ] = "1700:1800",
-        radial_load_n: Annotated[str, typer.Option(
-            "--radial-load-n", help=f"Radial load [N]: {_RANGE}.")] = "200:2000",
-        faults: Annotated[str, typer.Option(
-            "--faults", help="Fault classes, A,B,C among none, outer, inner, ball, compound "
-            "(two defects); cage is refused: the models have no cage defect.")
-                          ] = "none,outer,inner,ball",
-        defect_width_mm: Annotated[str, typer.Option(
-            "--defect-width-mm", help=f"Defect width [mm]: {_RANGE}.")] = "0.2:1.5",
-        defect_depth_mm: Annotated[str, typer.Option(
-            "--defect-depth-mm", help=f"Defect depth [mm]: {_RANGE}.")] = "0.1:0.3",
-        defect_position_deg: Annotated[str, typer.Option(
-            "--defect-position-deg", help="Outer-race defect position from +x towards +y "
-            f"[deg] (-90: bottom of the load zone): {_RANGE}.")] = "-135:-45",
-        waviness_um: Annotated[str, typer.Option(
-            "--waviness-um", help=f"Raceway waviness amplitude [um]: {_RANGE}.")] = "0",
-        waviness_orders: Annotated[str, typer.Option(
-            "--waviness-orders", help=f"Waviness orders: {_RANGE}.")] = "2:30",
-        ball_size_error_um: Annotated[str, typer.Option(
-            "--ball-size-error-um", help=f"Band of ball diameter errors [um]: {_RANGE}.")
-                                      ] = "0",
-        noise_ms2: Annotated[str, typer.Option(
-            "--noise-ms2", help=f"RMS of the measurement noise [m/s^2]: {_RANGE}.")
-                             ] = "0.5:5",
-        resonance: Annotated[list[str] | None, typer.Option(
-            "--resonance", help="A resonance of the path to the sensor, repeatable: "
+            "(bearing_datasets.open(NAME, root=PARENT) reads it).",
+            show_default=False,
+        ),
+    ],
+    records: Annotated[int, typer.Option("--records", help="Number of records.")] = 100,
+    bearings: Annotated[
+        str, typer.Option("--bearings", help="Designations, A,B,C (one drawn per record).")
+    ] = "6205-2RS",
+    speed_rpm: Annotated[
+        str, typer.Option("--speed-rpm", help=f"Speed [rpm]: {_RANGE}.")
+    ] = "1700:1800",
+    radial_load_n: Annotated[
+        str, typer.Option("--radial-load-n", help=f"Radial load [N]: {_RANGE}.")
+    ] = "200:2000",
+    faults: Annotated[
+        str,
+        typer.Option(
+            "--faults",
+            help="Fault classes, A,B,C among none, outer, inner, ball, compound "
+            "(two defects); cage is refused: the models have no cage defect.",
+        ),
+    ] = "none,outer,inner,ball",
+    defect_width_mm: Annotated[
+        str, typer.Option("--defect-width-mm", help=f"Defect width [mm]: {_RANGE}.")
+    ] = "0.2:1.5",
+    defect_depth_mm: Annotated[
+        str, typer.Option("--defect-depth-mm", help=f"Defect depth [mm]: {_RANGE}.")
+    ] = "0.1:0.3",
+    defect_position_deg: Annotated[
+        str,
+        typer.Option(
+            "--defect-position-deg",
+            help="Outer-race defect position from +x towards +y "
+            f"[deg] (-90: bottom of the load zone): {_RANGE}.",
+        ),
+    ] = "-135:-45",
+    waviness_um: Annotated[
+        str, typer.Option("--waviness-um", help=f"Raceway waviness amplitude [um]: {_RANGE}.")
+    ] = "0",
+    waviness_orders: Annotated[
+        str, typer.Option("--waviness-orders", help=f"Waviness orders: {_RANGE}.")
+    ] = "2:30",
+    ball_size_error_um: Annotated[
+        str,
+        typer.Option("--ball-size-error-um", help=f"Band of ball diameter errors [um]: {_RANGE}."),
+    ] = "0",
+    noise_ms2: Annotated[
+        str, typer.Option("--noise-ms2", help=f"RMS of the measurement noise [m/s^2]: {_RANGE}.")
+    ] = "0.5:5",
+    resonance: Annotated[
+        list[str] | None,
+        typer.Option(
+            "--resonance",
+            help="A resonance of the path to the sensor, repeatable: "
             "FREQ_HZ@DAMPING_RATIO, each a value or LOW:HIGH (default 2500:4500@0.02:0.08).",
-            show_default=False)] = None,
-        sample_rate_hz: Annotated[str, typer.Option(
-            "--sample-rate-hz", help="Sample rate [Hz]: V or A,B,C.")] = "20000",
-        duration_s: Annotated[str, typer.Option(
-            "--duration-s", help=f"Record length [s]: {_RANGE}.")] = "1",
-        model: Annotated[str, typer.Option(
-            "--model", help="rigid (seed 003) or slip (seed 004), or rigid,slip.")] = "rigid",
-        seed: Annotated[int, typer.Option(
-            "--seed", help="Record i's inputs come from the seed and i.")] = 0,
-        partition_size: Annotated[int | None, typer.Option(
-            "--partition-size", help="Records per partition.", show_default=False)] = None,
-        scheduler: SchedulerOpt = None,
-        workers: WorkersOpt = None,
-        yes: Annotated[bool, typer.Option(
-            "--yes", help=f"Make more than {CONFIRM_RECORDS} records.")] = False,
-        json_output: JsonOpt = False):
+            show_default=False,
+        ),
+    ] = None,
+    sample_rate_hz: Annotated[
+        str, typer.Option("--sample-rate-hz", help="Sample rate [Hz]: V or A,B,C.")
+    ] = "20000",
+    duration_s: Annotated[
+        str, typer.Option("--duration-s", help=f"Record length [s]: {_RANGE}.")
+    ] = "1",
+    model: Annotated[
+        str, typer.Option("--model", help="rigid (seed 003) or slip (seed 004), or rigid,slip.")
+    ] = "rigid",
+    seed: Annotated[
+        int, typer.Option("--seed", help="Record i's inputs come from the seed and i.")
+    ] = 0,
+    partition_size: Annotated[
+        int | None,
+        typer.Option("--partition-size", help="Records per partition.", show_default=False),
+    ] = None,
+    scheduler: SchedulerOpt = None,
+    workers: WorkersOpt = None,
+    yes: Annotated[
+        bool, typer.Option("--yes", help=f"Make more than {CONFIRM_RECORDS} records.")
+    ] = False,
+    json_output: JsonOpt = False,
+):
     """Make labelled synthetic vibration records in the bearing-datasets layout, on dask.
 
     Example: bearinglab dataset data/synth --records 40 --duration-s 0.25
@@ -101,19 +152,36 @@ def dataset(
     from ..dataset import make_dataset
 
     paths = [_resonance(r) for r in resonance] if resonance else None
-    ranges = {"bearings": bearings, "speed_rpm": speed_rpm, "radial_load_n": radial_load_n,
-              "faults": faults, "defect_width_mm": defect_width_mm,
-              "defect_depth_mm": defect_depth_mm, "defect_position_deg": defect_position_deg,
-              "waviness_amplitude_um": waviness_um, "waviness_orders": waviness_orders,
-              "ball_size_error_um": ball_size_error_um, "noise_ms2": noise_ms2,
-              "sample_rate_hz": sample_rate_hz, "duration_s": duration_s, "model": model}
+    ranges = {
+        "bearings": bearings,
+        "speed_rpm": speed_rpm,
+        "radial_load_n": radial_load_n,
+        "faults": faults,
+        "defect_width_mm": defect_width_mm,
+        "defect_depth_mm": defect_depth_mm,
+        "defect_position_deg": defect_position_deg,
+        "waviness_amplitude_um": waviness_um,
+        "waviness_orders": waviness_orders,
+        "ball_size_error_um": ball_size_error_um,
+        "noise_ms2": noise_ms2,
+        "sample_rate_hz": sample_rate_hz,
+        "duration_s": duration_s,
+        "model": model,
+    }
     if paths is not None:
         ranges["resonances"] = paths
     try:
-        result = make_dataset(output, records, seed=seed, partition_size=partition_size,
-                              scheduler=scheduler, workers=workers,
-                              max_records=None if yes else CONFIRM_RECORDS, progress=True,
-                              **ranges)
+        result = make_dataset(
+            output,
+            records,
+            seed=seed,
+            partition_size=partition_size,
+            scheduler=scheduler,
+            workers=workers,
+            max_records=None if yes else CONFIRM_RECORDS,
+            progress=True,
+            **ranges,
+        )
     except InputError as exc:
         raise _remap(exc) from None
     d = result.to_dict()
@@ -121,16 +189,32 @@ def dataset(
         _emit_json(d)
         return
     rate = d["records_per_s"]
-    console.print(_table(f"data set {d['name']}", ["", "value", "unit"], [
-        ["records written", d["records_written"], ""],
-        ["records failed", d["records_failed"], ""],
-        ["partitions computed / reused",
-         f"{d['partitions_computed']} / {d['partitions_reused']}", ""],
-        ["wall time", d["wall_time_s"], "s"],
-        ["records per second", "-" if rate is None else rate, "1/s"],
-        ["workers", d["workers"], ""], ["scheduler", d["scheduler"], ""],
-        ["output", d["output"], ""]]))
+    console.print(
+        _table(
+            f"data set {d['name']}",
+            ["", "value", "unit"],
+            [
+                ["records written", d["records_written"], ""],
+                ["records failed", d["records_failed"], ""],
+                [
+                    "partitions computed / reused",
+                    f"{d['partitions_computed']} / {d['partitions_reused']}",
+                    "",
+                ],
+                ["wall time", d["wall_time_s"], "s"],
+                ["records per second", "-" if rate is None else rate, "1/s"],
+                ["workers", d["workers"], ""],
+                ["scheduler", d["scheduler"], ""],
+                ["output", d["output"], ""],
+            ],
+        )
+    )
     counts = result.to_pandas()["fault_type"].value_counts().sort_index()
-    console.print(_table("records per fault type", ["fault_type", "records"],
-                         [[k, int(v)] for k, v in counts.items()]))
+    console.print(
+        _table(
+            "records per fault type",
+            ["fault_type", "records"],
+            [[k, int(v)] for k, v in counts.items()],
+        )
+    )
     console.print(f"[dim]read it with {escape(d['open_with'])}[/dim]")

@@ -32,22 +32,38 @@ from ._output import _emit_json, _table
 
 app = command_app()
 
-DesignationArg = Annotated[str | None, typer.Argument(
-    help="Bearing designation or catalogue name; optional with --bore-mm and "
-         "--outside-diameter-mm.", show_default=False)]
+DesignationArg = Annotated[
+    str | None,
+    typer.Argument(
+        help="Bearing designation or catalogue name; optional with --bore-mm and "
+        "--outside-diameter-mm.",
+        show_default=False,
+    ),
+]
 #: The lubricant when neither --lubricant nor --viscosity-mm2-s is given.
 DEFAULT_LUBRICANT = "iso-vg68"
 #: Library parameter -> the option that holds it.
 _FLAGS = {
-    "shaft_speed": "--speed-rpm", "radial_load": "--radial-load-n",
-    "axial_load": "--axial-load-n", "equivalent_load": "--equivalent-load-n",
-    "static_load_rating": "--static-load-rating-kn", "viscosity": "--viscosity-mm2-s",
-    "temperature": "--temperature-c", "lubricant": "--lubricant",
-    "lubrication": "--lubrication", "lubricant_kind": "--oil", "friction_type": "--type",
-    "bearing_type": "DESIGNATION", "series": "DESIGNATION", "constants": "--skf-constants",
-    "seals": "--seals", "seal_constants": "--seal-constants",
-    "seal_diameter": "--seal-diameter-mm", "bore": "--bore-mm",
-    "outside_diameter": "--outside-diameter-mm", "pitch_diameter": "--pitch-diameter-mm",
+    "shaft_speed": "--speed-rpm",
+    "radial_load": "--radial-load-n",
+    "axial_load": "--axial-load-n",
+    "equivalent_load": "--equivalent-load-n",
+    "static_load_rating": "--static-load-rating-kn",
+    "viscosity": "--viscosity-mm2-s",
+    "temperature": "--temperature-c",
+    "lubricant": "--lubricant",
+    "lubrication": "--lubrication",
+    "lubricant_kind": "--oil",
+    "friction_type": "--type",
+    "bearing_type": "DESIGNATION",
+    "series": "DESIGNATION",
+    "constants": "--skf-constants",
+    "seals": "--seals",
+    "seal_constants": "--seal-constants",
+    "seal_diameter": "--seal-diameter-mm",
+    "bore": "--bore-mm",
+    "outside_diameter": "--outside-diameter-mm",
+    "pitch_diameter": "--pitch-diameter-mm",
 }
 
 
@@ -75,8 +91,9 @@ class OilKind(str, Enum):
     transmission_fluid = "transmission-fluid"
 
 
-def _in_range(flag: str, value: float | None, low: float, high: float, what: str,
-              low_open: bool = True) -> float | None:
+def _in_range(
+    flag: str, value: float | None, low: float, high: float, what: str, low_open: bool = True
+) -> float | None:
     """An option's value checked against its range, in the option's unit (its suffix)."""
     if value is None:
         return None
@@ -84,8 +101,9 @@ def _in_range(flag: str, value: float | None, low: float, high: float, what: str
     if not ok:
         unit = unit_of(flag)
         symbol = f" {unit.symbol}" if unit is not None else ""
-        raise OptionError(flag, value, f"{what} in {'(' if low_open else '['}{low:g}, "
-                                       f"{high:g}]{symbol}")
+        raise OptionError(
+            flag, value, f"{what} in {'(' if low_open else '['}{low:g}, {high:g}]{symbol}"
+        )
     return float(value)
 
 
@@ -114,20 +132,30 @@ def _bearing(designation: str | None, geometry: dict, type_option: str | None):
     if designation is not None and not designation.strip():
         raise OptionError("DESIGNATION", designation, "a bearing designation (e.g. 6205, NU205)")
     sizes = {k: _mm(geometry, f"{k}_mm") for k in ("bore", "outside_diameter", "pitch_diameter")}
-    ball_given = any(geometry.get(k) is not None for k in ("balls", "ball_diameter_mm",
-                                                           "geometry"))
+    ball_given = any(geometry.get(k) is not None for k in ("balls", "ball_diameter_mm", "geometry"))
     if designation is None and not ball_given:
         if sizes["bore"] is None or sizes["outside_diameter"] is None:
-            raise OptionError("DESIGNATION", None, "a designation, or --bore-mm and "
-                              "--outside-diameter-mm (with --type)")
+            raise OptionError(
+                "DESIGNATION",
+                None,
+                "a designation, or --bore-mm and --outside-diameter-mm (with --type)",
+            )
         try:
-            return FrictionBearing.from_dimensions(
-                sizes["bore"], sizes["outside_diameter"], bearing_type=type_option,
-                pitch_diameter=sizes["pitch_diameter"]), None, []
+            return (
+                FrictionBearing.from_dimensions(
+                    sizes["bore"],
+                    sizes["outside_diameter"],
+                    bearing_type=type_option,
+                    pitch_diameter=sizes["pitch_diameter"],
+                ),
+                None,
+                [],
+            )
         except InputError as exc:
             if exc.parameter == "bearing_type":
-                raise OptionError("--type", type_option, exc.allowed + ", or a friction type "
-                                  "of seed 003") from None
+                raise OptionError(
+                    "--type", type_option, exc.allowed + ", or a friction type of seed 003"
+                ) from None
             raise
     try:
         bearing, des = resolve_bearing(designation, geometry)
@@ -137,8 +165,13 @@ def _bearing(designation: str | None, geometry: dict, type_option: str | None):
             raise
         system = geometry.get("system")
         try:
-            return FrictionBearing.from_designation(
-                designation, system.value if system is not None else None, **sizes), None, []
+            return (
+                FrictionBearing.from_designation(
+                    designation, system.value if system is not None else None, **sizes
+                ),
+                None,
+                [],
+            )
         except InputError:
             raise
         except BearinglabError:
@@ -161,55 +194,122 @@ def _option_error(exc: InputError, typed: dict) -> InputError:
 @app.command("friction")
 @with_geometry
 def friction_command(
-        designation: DesignationArg = None,
-        speed_rpm: RingSpeedOpt = ...,
-        radial_load_n: RadialLoadOpt = 0.0,
-        axial_load_n: AxialLoadOpt = 0.0,
-        model: Annotated[FrictionModel, typer.Option(
-            "--model", help="constant: seed 003's M = mu P d_m / 2; skf: SKF's rolling + "
-            "sliding + seal (+ drag) model.")] = FrictionModel.constant,
-        type_option: Annotated[str | None, typer.Option(
-            "--type", help="Friction type (constant model: " + ", ".join(SEED003_COEFFICIENTS)
-            + "; skf: " + ", ".join(SKF_BEARING_TYPES) + "). Default: from the designation.",
-            show_default=False)] = None,
-        equivalent_load_n: Annotated[float | None, typer.Option(
-            "--equivalent-load-n", help="Equivalent load P [N] (constant model; default: "
-            "F_r, or ISO 281 from a ball bearing's geometry).", show_default=False)] = None,
-        static_load_rating_kn: Annotated[float | None, typer.Option(
-            "--static-load-rating-kn", help="Basic static load rating C_0 [kN] for the SKF "
+    designation: DesignationArg = None,
+    speed_rpm: RingSpeedOpt = ...,
+    radial_load_n: RadialLoadOpt = 0.0,
+    axial_load_n: AxialLoadOpt = 0.0,
+    model: Annotated[
+        FrictionModel,
+        typer.Option(
+            "--model",
+            help="constant: seed 003's M = mu P d_m / 2; skf: SKF's rolling + "
+            "sliding + seal (+ drag) model.",
+        ),
+    ] = FrictionModel.constant,
+    type_option: Annotated[
+        str | None,
+        typer.Option(
+            "--type",
+            help="Friction type (constant model: "
+            + ", ".join(SEED003_COEFFICIENTS)
+            + "; skf: "
+            + ", ".join(SKF_BEARING_TYPES)
+            + "). Default: from the designation.",
+            show_default=False,
+        ),
+    ] = None,
+    equivalent_load_n: Annotated[
+        float | None,
+        typer.Option(
+            "--equivalent-load-n",
+            help="Equivalent load P [N] (constant model; default: "
+            "F_r, or ISO 281 from a ball bearing's geometry).",
+            show_default=False,
+        ),
+    ] = None,
+    static_load_rating_kn: Annotated[
+        float | None,
+        typer.Option(
+            "--static-load-rating-kn",
+            help="Basic static load rating C_0 [kN] for the SKF "
             "model with an axial load on a deep-groove bearing (default: ISO 76 from the "
-            "geometry).", show_default=False)] = None,
-        lubricant: Annotated[str | None, typer.Option(
-            "--lubricant", help="Lubricant (built-in: iso-vg68, seed004-grease) for the viscosity "
+            "geometry).",
+            show_default=False,
+        ),
+    ] = None,
+    lubricant: Annotated[
+        str | None,
+        typer.Option(
+            "--lubricant",
+            help="Lubricant (built-in: iso-vg68, seed004-grease) for the viscosity "
             "at --temperature-c, and grease or oil for the --lubrication default (SKF model; "
             f"default {DEFAULT_LUBRICANT} unless --viscosity-mm2-s is given).",
-            show_default=False)] = None,
-        viscosity_mm2_s: Annotated[float | None, typer.Option(
-            "--viscosity-mm2-s", help="Operating kinematic viscosity of the oil or the "
+            show_default=False,
+        ),
+    ] = None,
+    viscosity_mm2_s: Annotated[
+        float | None,
+        typer.Option(
+            "--viscosity-mm2-s",
+            help="Operating kinematic viscosity of the oil or the "
             "grease's base oil [mm^2/s] (instead of the lubricant's at --temperature-c).",
-            show_default=False)] = None,
-        temperature_c: Annotated[float | None, typer.Option(
-            "--temperature-c", help="Operating temperature of the lubricant [degC] (default: "
-            "its reference).", show_default=False)] = None,
-        lubrication: Annotated[Lubrication | None, typer.Option(
-            "--lubrication", help="Lubrication method, sets K_rs (default: grease for a "
+            show_default=False,
+        ),
+    ] = None,
+    temperature_c: Annotated[
+        float | None,
+        typer.Option(
+            "--temperature-c",
+            help="Operating temperature of the lubricant [degC] (default: its reference).",
+            show_default=False,
+        ),
+    ] = None,
+    lubrication: Annotated[
+        Lubrication | None,
+        typer.Option(
+            "--lubrication",
+            help="Lubrication method, sets K_rs (default: grease for a "
             "grease, oil-jet for an oil, grease for a viscosity alone).",
-            show_default=False)] = None,
-        oil: Annotated[OilKind, typer.Option(
-            "--oil", help="Kind of oil, sets mu_EHL.")] = OilKind.mineral,
-        skf_constants: Annotated[str | None, typer.Option(
-            "--skf-constants", help="SKF geometry constants R1,R2,S1,S2 (deep groove) or "
-            "R1,R2,S1,S2,R3,S3 (angular contact).", show_default=False)] = None,
-        seals: Annotated[Seals | None, typer.Option(
-            "--seals", help="Seals (default: from the designation's suffix).",
-            show_default=False)] = None,
-        seal_constants: Annotated[str | None, typer.Option(
-            "--seal-constants", help="SKF seal constants K_S1,K_S2,BETA (M_seal = K_S1 "
-            "d_s^BETA + K_S2 in N mm, d_s in mm).", show_default=False)] = None,
-        seal_diameter_mm: Annotated[float | None, typer.Option(
-            "--seal-diameter-mm", help="Seal counterface diameter d_s [mm].",
-            show_default=False)] = None,
-        json_output: JsonOpt = False, *, geometry):
+            show_default=False,
+        ),
+    ] = None,
+    oil: Annotated[
+        OilKind, typer.Option("--oil", help="Kind of oil, sets mu_EHL.")
+    ] = OilKind.mineral,
+    skf_constants: Annotated[
+        str | None,
+        typer.Option(
+            "--skf-constants",
+            help="SKF geometry constants R1,R2,S1,S2 (deep groove) or "
+            "R1,R2,S1,S2,R3,S3 (angular contact).",
+            show_default=False,
+        ),
+    ] = None,
+    seals: Annotated[
+        Seals | None,
+        typer.Option(
+            "--seals", help="Seals (default: from the designation's suffix).", show_default=False
+        ),
+    ] = None,
+    seal_constants: Annotated[
+        str | None,
+        typer.Option(
+            "--seal-constants",
+            help="SKF seal constants K_S1,K_S2,BETA (M_seal = K_S1 "
+            "d_s^BETA + K_S2 in N mm, d_s in mm).",
+            show_default=False,
+        ),
+    ] = None,
+    seal_diameter_mm: Annotated[
+        float | None,
+        typer.Option(
+            "--seal-diameter-mm", help="Seal counterface diameter d_s [mm].", show_default=False
+        ),
+    ] = None,
+    json_output: JsonOpt = False,
+    *,
+    geometry,
+):
     """Friction torque and power loss: seed 003's constant coefficient or the SKF model."""
     from ..friction import SkfGeometryConstants, bearing_friction
     from ..lubrication.lubricant import OPERATING_TEMPERATURE_RANGE, ZERO_CELSIUS
@@ -221,35 +321,65 @@ def friction_command(
     c0 = _in_range("--static-load-rating-kn", static_load_rating_kn, 0.0, 1e5, "a rating")
     nu = _in_range("--viscosity-mm2-s", viscosity_mm2_s, 0.0, 1e6, "a viscosity")
     t_low, t_high = (t - ZERO_CELSIUS for t in OPERATING_TEMPERATURE_RANGE)
-    t = _in_range("--temperature-c", temperature_c, t_low, t_high, "a temperature",
-                  low_open=False)
+    t = _in_range("--temperature-c", temperature_c, t_low, t_high, "a temperature", low_open=False)
     ds = _in_range("--seal-diameter-mm", seal_diameter_mm, 0.0, 1e5, "a diameter")
-    c = _numbers("--skf-constants", skf_constants, (4, 6), "R1,R2,S1,S2 (deep-groove) or "
-                 "R1,R2,S1,S2,R3,S3 (angular contact), numbers >= 0 in SKF units")
-    ks = _numbers("--seal-constants", seal_constants, (3,),
-                  "K_S1,K_S2,BETA, numbers >= 0 in SKF units")
-    typed = {"shaft_speed": speed_rpm, "radial_load": radial_load_n, "axial_load": axial_load_n,
-             "equivalent_load": equivalent_load_n, "static_load_rating": static_load_rating_kn,
-             "viscosity": viscosity_mm2_s, "temperature": temperature_c, "lubricant": lubricant,
-             "friction_type": type_option, "bearing_type": designation, "series": designation,
-             "constants": skf_constants, "seal_constants": seal_constants,
-             "seal_diameter": seal_diameter_mm, "seals": seals and seals.value,
-             "bore": geometry.get("bore_mm"), "pitch_diameter": geometry.get("pitch_diameter_mm"),
-             "outside_diameter": geometry.get("outside_diameter_mm")}
+    c = _numbers(
+        "--skf-constants",
+        skf_constants,
+        (4, 6),
+        "R1,R2,S1,S2 (deep-groove) or "
+        "R1,R2,S1,S2,R3,S3 (angular contact), numbers >= 0 in SKF units",
+    )
+    ks = _numbers(
+        "--seal-constants", seal_constants, (3,), "K_S1,K_S2,BETA, numbers >= 0 in SKF units"
+    )
+    typed = {
+        "shaft_speed": speed_rpm,
+        "radial_load": radial_load_n,
+        "axial_load": axial_load_n,
+        "equivalent_load": equivalent_load_n,
+        "static_load_rating": static_load_rating_kn,
+        "viscosity": viscosity_mm2_s,
+        "temperature": temperature_c,
+        "lubricant": lubricant,
+        "friction_type": type_option,
+        "bearing_type": designation,
+        "series": designation,
+        "constants": skf_constants,
+        "seal_constants": seal_constants,
+        "seal_diameter": seal_diameter_mm,
+        "seals": seals and seals.value,
+        "bore": geometry.get("bore_mm"),
+        "pitch_diameter": geometry.get("pitch_diameter_mm"),
+        "outside_diameter": geometry.get("outside_diameter_mm"),
+    }
     try:
         bearing, des, warnings = _bearing(designation, geometry, type_option)
         result = bearing_friction(
-            bearing, omega, fr, fa, model=model.value, designation=des, friction_type=type_option,
-            equivalent_load=p, static_load_rating=None if c0 is None else UNITS["kn"].to_si(c0),
+            bearing,
+            omega,
+            fr,
+            fa,
+            model=model.value,
+            designation=des,
+            friction_type=type_option,
+            equivalent_load=p,
+            static_load_rating=None if c0 is None else UNITS["kn"].to_si(c0),
             viscosity=None if nu is None else UNITS["mm2_s"].to_si(nu),
-            lubricant=lubricant or (DEFAULT_LUBRICANT if nu is None
-                                    and model is FrictionModel.skf else None),
+            lubricant=lubricant
+            or (DEFAULT_LUBRICANT if nu is None and model is FrictionModel.skf else None),
             temperature=None if t is None else t + ZERO_CELSIUS,
-            lubrication=lubrication and lubrication.value, lubricant_kind=oil.value,
-            constants=None if c is None else SkfGeometryConstants(
-                *c[:4], *(c[4:] or (None, None)), source="user (--skf-constants)"),
-            seals=seals and seals.value, seal_constants=ks,
-            seal_diameter=None if ds is None else UNITS["mm"].to_si(ds))
+            lubrication=lubrication and lubrication.value,
+            lubricant_kind=oil.value,
+            constants=None
+            if c is None
+            else SkfGeometryConstants(
+                *c[:4], *(c[4:] or (None, None)), source="user (--skf-constants)"
+            ),
+            seals=seals and seals.value,
+            seal_constants=ks,
+            seal_diameter=None if ds is None else UNITS["mm"].to_si(ds),
+        )
     except InputError as exc:
         raise _option_error(exc, typed) from None
     d = result.to_dict()
@@ -274,26 +404,31 @@ def _number(value) -> str:
 
 
 def _print(result, out: dict) -> None:
-    title = (f"{out['name']}: {out['speed_rpm']:g} rpm, F_r = {out['radial_load_n']:g} N, "
-             f"F_a = {out['axial_load_n']:g} N ({out['model']} model)")
+    title = (
+        f"{out['name']}: {out['speed_rpm']:g} rpm, F_r = {out['radial_load_n']:g} N, "
+        f"F_a = {out['axial_load_n']:g} N ({out['model']} model)"
+    )
     rows = []
     for what, key in result.quantities():
         unit = unit_of(key)
-        rows.append([label(what, unit.suffix) if unit is not None else what,
-                     _number(out[key])])
+        rows.append([label(what, unit.suffix) if unit is not None else what, _number(out[key])])
     console.print(f"[bold]{escape(title)}[/bold]")
     console.print(_table("", ["quantity", "value"], rows))
     if out["model"] == "constant":
-        notes = [f"P: {out['equivalent_load_source']}",
-                 f"d_m: {out['pitch_diameter_source']}"]
+        notes = [f"P: {out['equivalent_load_source']}", f"d_m: {out['pitch_diameter_source']}"]
     else:
         k = out["geometry_constants"]
-        notes = [f"viscosity: {out['viscosity_source']}",
-                 f"lubrication: {out['lubrication']} ({out['lubrication_source']}), "
-                 f"K_rs {out['k_rs']:g}, K_Z {out['k_z']:g}",
-                 "SKF constants: " + ", ".join(f"{n.upper()} {k[n]:g}" for n in
-                                               ("r1", "r2", "s1", "s2", "r3", "s3")
-                                               if k[n] is not None)]
+        notes = [
+            f"viscosity: {out['viscosity_source']}",
+            f"lubrication: {out['lubrication']} ({out['lubrication_source']}), "
+            f"K_rs {out['k_rs']:g}, K_Z {out['k_z']:g}",
+            "SKF constants: "
+            + ", ".join(
+                f"{n.upper()} {k[n]:g}"
+                for n in ("r1", "r2", "s1", "s2", "r3", "s3")
+                if k[n] is not None
+            ),
+        ]
         if "static_rating_source" in out:
             notes.append(f"C_0: {out['static_rating_source']}")
     notes.append(f"bearing type {out['bearing_type']}, seals: {out['seals']}")

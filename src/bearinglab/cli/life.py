@@ -32,15 +32,25 @@ from ._output import _check_finite, _emit_json, _save_plot, _table
 
 app = command_app()
 
-PlotOpt = Annotated[Path | None, typer.Option(
-    "--plot", help="Also draw life against load to this .png, .svg or .pdf file.",
-    show_default=False)]
+PlotOpt = Annotated[
+    Path | None,
+    typer.Option(
+        "--plot",
+        help="Also draw life against load to this .png, .svg or .pdf file.",
+        show_default=False,
+    ),
+]
 #: Library parameter -> the option that holds it.
-_FLAGS = {"shaft_speed": "--speed-rpm", "radial_load": "--radial-load-n",
-          "axial_load": "--axial-load-n", "reliability_percent": "--reliability-percent",
-          "viscosity": "--viscosity-mm2-s", "contamination": "--contamination",
-          "dynamic_load_rating": "--dynamic-load-rating-kn",
-          "static_load_rating": "--static-load-rating-kn"}
+_FLAGS = {
+    "shaft_speed": "--speed-rpm",
+    "radial_load": "--radial-load-n",
+    "axial_load": "--axial-load-n",
+    "reliability_percent": "--reliability-percent",
+    "viscosity": "--viscosity-mm2-s",
+    "contamination": "--contamination",
+    "dynamic_load_rating": "--dynamic-load-rating-kn",
+    "static_load_rating": "--static-load-rating-kn",
+}
 #: Largest rating accepted [kN].
 MAX_RATING_KN = 1e5
 
@@ -50,17 +60,18 @@ class LifeMethod(str, Enum):
     iso16281 = "iso16281"
 
 
-def _in_range(flag: str, value: float | None, low: float, high: float, what: str,
-              low_open: bool = False) -> float | None:
+def _in_range(
+    flag: str, value: float | None, low: float, high: float, what: str, low_open: bool = False
+) -> float | None:
     """An option's value checked against its range, in the option's unit (its suffix)."""
     if value is None:
         return None
-    if not (math.isfinite(value) and (low < value if low_open else low <= value)
-            and value <= high):
+    if not (math.isfinite(value) and (low < value if low_open else low <= value) and value <= high):
         unit = unit_of(flag)
         symbol = f" {unit.symbol}" if unit is not None else ""
-        raise OptionError(flag, value, f"{what} in {'(' if low_open else '['}{low:g}, "
-                                       f"{high:g}]{symbol}")
+        raise OptionError(
+            flag, value, f"{what} in {'(' if low_open else '['}{low:g}, {high:g}]{symbol}"
+        )
     return float(value)
 
 
@@ -78,41 +89,88 @@ def _contamination(text: str | None):
 @app.command("life")
 @with_geometry
 def life_command(
-        designation: DesignationArg = None,
-        speed_rpm: RingSpeedOpt = ...,
-        radial_load_n: RadialLoadOpt = 0.0,
-        axial_load_n: AxialLoadOpt = 0.0,
-        reliability_percent: Annotated[float, typer.Option(
-            "--reliability-percent", help="Reliability for the modified life, 90-99.95 "
-            "[%] (a_1 of ISO 281 Table 12).")] = 90.0,
-        viscosity_mm2_s: Annotated[float | None, typer.Option(
-            "--viscosity-mm2-s", help="Operating kinematic viscosity of the lubricant "
+    designation: DesignationArg = None,
+    speed_rpm: RingSpeedOpt = ...,
+    radial_load_n: RadialLoadOpt = 0.0,
+    axial_load_n: AxialLoadOpt = 0.0,
+    reliability_percent: Annotated[
+        float,
+        typer.Option(
+            "--reliability-percent",
+            help="Reliability for the modified life, 90-99.95 [%] (a_1 of ISO 281 Table 12).",
+        ),
+    ] = 90.0,
+    viscosity_mm2_s: Annotated[
+        float | None,
+        typer.Option(
+            "--viscosity-mm2-s",
+            help="Operating kinematic viscosity of the lubricant "
             "[mm^2/s]; needed for kappa, a_ISO and the modified life.",
-            show_default=False)] = None,
-        contamination: Annotated[str | None, typer.Option(
-            "--contamination", help="Contamination factor e_C: a number in [0, 1] or a level "
+            show_default=False,
+        ),
+    ] = None,
+    contamination: Annotated[
+        str | None,
+        typer.Option(
+            "--contamination",
+            help="Contamination factor e_C: a number in [0, 1] or a level "
             "of ISO 281 Table 13 (extreme, high, normal, slight, typical, severe, "
-            "very-severe); default normal with a viscosity.", show_default=False)] = None,
-        method: Annotated[LifeMethod, typer.Option(
-            "--method", help="iso281: L10 = (C/P)^3; iso16281: reference life from the "
-            "solved load distribution (clearance, misalignment).")] = LifeMethod.iso281,
-        misalignment_mrad: Annotated[float, typer.Option(
-            "--misalignment-mrad", help="Imposed tilt of the inner ring across the radial "
-            "load [mrad] (iso16281 only).")] = 0.0,
-        outer_rotating: Annotated[bool, typer.Option(
-            "--outer-rotating", help="The outer ring turns (iso16281: which ring's "
-            "equivalent load uses exponent 3).")] = False,
-        ep_additives: Annotated[bool, typer.Option(
-            "--ep-additives", help="The lubricant has proven EP additives (ISO 281 rule for "
-            "kappa < 1).")] = False,
-        dynamic_load_rating_kn: Annotated[float | None, typer.Option(
-            "--dynamic-load-rating-kn", help="Basic dynamic load rating C [kN], e.g. the "
+            "very-severe); default normal with a viscosity.",
+            show_default=False,
+        ),
+    ] = None,
+    method: Annotated[
+        LifeMethod,
+        typer.Option(
+            "--method",
+            help="iso281: L10 = (C/P)^3; iso16281: reference life from the "
+            "solved load distribution (clearance, misalignment).",
+        ),
+    ] = LifeMethod.iso281,
+    misalignment_mrad: Annotated[
+        float,
+        typer.Option(
+            "--misalignment-mrad",
+            help="Imposed tilt of the inner ring across the radial load [mrad] (iso16281 only).",
+        ),
+    ] = 0.0,
+    outer_rotating: Annotated[
+        bool,
+        typer.Option(
+            "--outer-rotating",
+            help="The outer ring turns (iso16281: which ring's equivalent load uses exponent 3).",
+        ),
+    ] = False,
+    ep_additives: Annotated[
+        bool,
+        typer.Option(
+            "--ep-additives",
+            help="The lubricant has proven EP additives (ISO 281 rule for kappa < 1).",
+        ),
+    ] = False,
+    dynamic_load_rating_kn: Annotated[
+        float | None,
+        typer.Option(
+            "--dynamic-load-rating-kn",
+            help="Basic dynamic load rating C [kN], e.g. the "
             "maker's (default: ISO 281 from the geometry); used by both methods.",
-            show_default=False)] = None,
-        static_load_rating_kn: Annotated[float | None, typer.Option(
-            "--static-load-rating-kn", help="Basic static load rating C0 [kN] (default: "
-            "ISO 76 from the geometry); sets s0 and Cu.", show_default=False)] = None,
-        json_output: JsonOpt = False, plot: PlotOpt = None, *, geometry):
+            show_default=False,
+        ),
+    ] = None,
+    static_load_rating_kn: Annotated[
+        float | None,
+        typer.Option(
+            "--static-load-rating-kn",
+            help="Basic static load rating C0 [kN] (default: "
+            "ISO 76 from the geometry); sets s0 and Cu.",
+            show_default=False,
+        ),
+    ] = None,
+    json_output: JsonOpt = False,
+    plot: PlotOpt = None,
+    *,
+    geometry,
+):
     """Load ratings C, C0, Cu, equivalent loads, basic and modified rating life."""
     from ..life import ViscosityTooLow, rating_life
     from ..operating import OperatingCondition
@@ -123,43 +181,69 @@ def life_command(
     nu = _in_range("--viscosity-mm2-s", viscosity_mm2_s, 0.0, 1e6, "a viscosity", low_open=True)
     tilt = _in_range("--misalignment-mrad", misalignment_mrad, -20.0, 20.0, "a tilt")
     if tilt and method is not LifeMethod.iso16281:
-        raise OptionError("--misalignment-mrad", misalignment_mrad, "0 with --method iso281",
-                          "ISO 281 has no misalignment; use --method iso16281")
-    c, c0 = (_in_range(flag, value, 0.0, MAX_RATING_KN, "a rating", low_open=True)
-             for flag, value in (("--dynamic-load-rating-kn", dynamic_load_rating_kn),
-                                 ("--static-load-rating-kn", static_load_rating_kn)))
+        raise OptionError(
+            "--misalignment-mrad",
+            misalignment_mrad,
+            "0 with --method iso281",
+            "ISO 281 has no misalignment; use --method iso16281",
+        )
+    c, c0 = (
+        _in_range(flag, value, 0.0, MAX_RATING_KN, "a rating", low_open=True)
+        for flag, value in (
+            ("--dynamic-load-rating-kn", dynamic_load_rating_kn),
+            ("--static-load-rating-kn", static_load_rating_kn),
+        )
+    )
     if plot is not None and not Path(plot).parent.exists():
         raise OptionError("--plot", str(plot), "a path in an existing directory")
     bearing, _ = resolve_bearing(designation, geometry)
     kn = UNITS["kn"]
-    typed = {"shaft_speed": speed_rpm, "radial_load": radial_load_n, "axial_load": axial_load_n,
-             "reliability_percent": reliability_percent, "viscosity": viscosity_mm2_s,
-             "contamination": contamination, "dynamic_load_rating": dynamic_load_rating_kn,
-             "static_load_rating": static_load_rating_kn}
+    typed = {
+        "shaft_speed": speed_rpm,
+        "radial_load": radial_load_n,
+        "axial_load": axial_load_n,
+        "reliability_percent": reliability_percent,
+        "viscosity": viscosity_mm2_s,
+        "contamination": contamination,
+        "dynamic_load_rating": dynamic_load_rating_kn,
+        "static_load_rating": static_load_rating_kn,
+    }
     try:
         # the tilt turns the inner ring about the axis across the (downward) radial load
-        condition = OperatingCondition(radial_load=radial_load_n, axial_load=axial_load_n,
-                                       misalignment=(UNITS["mrad"].to_si(tilt), 0.0),
-                                       shaft_speed=omega)
+        condition = OperatingCondition(
+            radial_load=radial_load_n,
+            axial_load=axial_load_n,
+            misalignment=(UNITS["mrad"].to_si(tilt), 0.0),
+            shaft_speed=omega,
+        )
         result = rating_life(
-            bearing, condition, reliability_percent=reliability_percent,
+            bearing,
+            condition,
+            reliability_percent=reliability_percent,
             viscosity=None if nu is None else UNITS["mm2_s"].to_si(nu),
-            contamination=_contamination(contamination), method=method.value,
-            rotating="outer" if outer_rotating else "inner", ep_additives=ep_additives,
+            contamination=_contamination(contamination),
+            method=method.value,
+            rotating="outer" if outer_rotating else "inner",
+            ep_additives=ep_additives,
             dynamic_load_rating=None if c is None else kn.to_si(c),
-            static_load_rating=None if c0 is None else kn.to_si(c0))
+            static_load_rating=None if c0 is None else kn.to_si(c0),
+        )
     except ViscosityTooLow as exc:
-        raise OptionError("--viscosity-mm2-s", viscosity_mm2_s, "a viscosity of at least "
-                          f"{UNITS['mm2_s'].from_si(exc.minimum):.3g} mm²/s at this speed and "
-                          "size", exc.hint) from None
+        raise OptionError(
+            "--viscosity-mm2-s",
+            viscosity_mm2_s,
+            "a viscosity of at least "
+            f"{UNITS['mm2_s'].from_si(exc.minimum):.3g} mm²/s at this speed and "
+            "size",
+            exc.hint,
+        ) from None
     except InputError as exc:
         flag = _FLAGS.get(exc.parameter)
         if flag is None:
             raise
         raise OptionError(flag, typed[exc.parameter], exc.allowed, exc.hint) from None
     d = result.to_dict()
-    out = {"designation": designation, **d,
-           "warnings": _geometry_warnings(bearing) + d["warnings"]}
+    out = {"designation": designation, **d, "warnings": _geometry_warnings(bearing) + d["warnings"]}
     if plot is not None:
         _save_plot(result, plot)
     if json_output:
@@ -181,8 +265,10 @@ def _number(value) -> str:
 def _print(result, out: dict, bearing) -> None:
     """The result as a table of (quantity [unit], value, given or computed), ratings in kN,
     and the sources underneath."""
-    title = (f"{bearing.name or 'bearing'}: F_r = {out['radial_load_n']:g} N, F_a = "
-             f"{out['axial_load_n']:g} N, {out['speed_rpm']:g} rpm ({out['method']})")
+    title = (
+        f"{bearing.name or 'bearing'}: F_r = {out['radial_load_n']:g} N, F_a = "
+        f"{out['axial_load_n']:g} N, {out['speed_rpm']:g} rpm ({out['method']})"
+    )
     console.print(f"[bold]{escape(title)}[/bold]")
     rows = []
     for row in result.to_pandas().itertuples(index=False):
@@ -195,14 +281,24 @@ def _print(result, out: dict, bearing) -> None:
         source = "given" if row.source.startswith("given") else "computed" if row.source else ""
         rows.append([what, _number(value), source])
     console.print(_table("", ["quantity", "value", "source"], rows))
-    for name, key in (("C", "dynamic_rating_source"), ("C0", "static_rating_source"),
-                      ("Cu", "fatigue_load_limit_source")):
+    for name, key in (
+        ("C", "dynamic_rating_source"),
+        ("C0", "static_rating_source"),
+        ("Cu", "fatigue_load_limit_source"),
+    ):
         console.print(escape(f"{name}: {out[key]}"))
     console.print(escape(_geometry_line(bearing)))
-    factors = ", ".join(f"{name} {out[key]:.4g}" for name, key in
-                        (("f_c", "fc"), ("f_0", "f0"), ("b_m", "rating_factor_bm"))
-                        if out[key] is not None)
-    console.print(escape(f"{factors}; X {out['x_factor']:.3g}, Y {out['y_factor']:.3g}, "
-                         f"e {out['e_limit']:.3g}; a_1 {out['a1']:.3g} at "
-                         f"{out['reliability_percent']:g} %"), style="dim")
+    factors = ", ".join(
+        f"{name} {out[key]:.4g}"
+        for name, key in (("f_c", "fc"), ("f_0", "f0"), ("b_m", "rating_factor_bm"))
+        if out[key] is not None
+    )
+    console.print(
+        escape(
+            f"{factors}; X {out['x_factor']:.3g}, Y {out['y_factor']:.3g}, "
+            f"e {out['e_limit']:.3g}; a_1 {out['a1']:.3g} at "
+            f"{out['reliability_percent']:g} %"
+        ),
+        style="dim",
+    )
     _print_warnings(out["warnings"])

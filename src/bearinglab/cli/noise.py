@@ -62,37 +62,75 @@ class BandsFrom(str, Enum):
 @app.command("noise")
 @with_geometry
 def noise_command(
-        designation: DesignationArg = None,
-        speed_rpm: ShaftSpeedOpt = ...,
-        radial_load_n: Annotated[float, typer.Option(
-            "--radial-load-n", help="Radial load F_r on the shaft, downwards [N] (> 0).")] = ...,
-        waviness: WavinessOpt = None, ball_size_error_um: BallErrorOpt = None,
-        surface3d: Surface3dOpt = None, seed: SeedOpt = None,
-        distance_mm: Annotated[float | None, typer.Option(
-            "--distance-mm", help="Distance of the field point from the bearing centre [mm] "
+    designation: DesignationArg = None,
+    speed_rpm: ShaftSpeedOpt = ...,
+    radial_load_n: Annotated[
+        float,
+        typer.Option("--radial-load-n", help="Radial load F_r on the shaft, downwards [N] (> 0)."),
+    ] = ...,
+    waviness: WavinessOpt = None,
+    ball_size_error_um: BallErrorOpt = None,
+    surface3d: Surface3dOpt = None,
+    seed: SeedOpt = None,
+    distance_mm: Annotated[
+        float | None,
+        typer.Option(
+            "--distance-mm",
+            help="Distance of the field point from the bearing centre [mm] "
             "(default: 10 mm outside the outside diameter; seed 003's point A is 10 mm from "
-            "the centre).", show_default=False)] = None,
-        angle_deg: Annotated[float, typer.Option(
-            "--angle-deg", help="Direction of the field point in the radial plane, from +x "
-            "towards +y [deg] (90 = straight up, against the load).")] = 90.0,
-        duration_s: Annotated[float | None, typer.Option(
-            "--duration-s", help="Length of the orbit record [s] (default: one cage "
+            "the centre).",
+            show_default=False,
+        ),
+    ] = None,
+    angle_deg: Annotated[
+        float,
+        typer.Option(
+            "--angle-deg",
+            help="Direction of the field point in the radial plane, from +x "
+            "towards +y [deg] (90 = straight up, against the load).",
+        ),
+    ] = 90.0,
+    duration_s: Annotated[
+        float | None,
+        typer.Option(
+            "--duration-s",
+            help="Length of the orbit record [s] (default: one cage "
             "revolution, so each ball carries its size error round once).",
-            show_default=False)] = None,
-        points: Annotated[int | None, typer.Option(
-            "--points", help="Instants of the orbit (default: 8192 per second, at least "
+            show_default=False,
+        ),
+    ] = None,
+    points: Annotated[
+        int | None,
+        typer.Option(
+            "--points",
+            help="Instants of the orbit (default: 8192 per second, at least "
             "256). More points resolve higher frequencies; the time-mean SPL hardly changes.",
-            show_default=False)] = None,
-        bands_from: Annotated[BandsFrom, typer.Option(
-            "--bands-from", help="Source of the ISO 15242 velocity bands (edges scaled with "
+            show_default=False,
+        ),
+    ] = None,
+    bands_from: Annotated[
+        BandsFrom,
+        typer.Option(
+            "--bands-from",
+            help="Source of the ISO 15242 velocity bands (edges scaled with "
             "the speed from their 1800 rpm values): auto (the orbit if it is sampled above "
             "twice the top band edge for long enough, else the rigid dynamic model), orbit "
-            "(a second, finer orbit if needed) or rigid.")] = BandsFrom.auto,
-        json_output: JsonOpt = False,
-        plot: Annotated[Path | None, typer.Option(
-            "--plot", help="Draw the pressure and SPL over time, the pressure spectrum and "
-            "the directivity to this .png, .svg or .pdf file.", show_default=False)] = None,
-        *, geometry):
+            "(a second, finer orbit if needed) or rigid.",
+        ),
+    ] = BandsFrom.auto,
+    json_output: JsonOpt = False,
+    plot: Annotated[
+        Path | None,
+        typer.Option(
+            "--plot",
+            help="Draw the pressure and SPL over time, the pressure spectrum and "
+            "the directivity to this .png, .svg or .pdf file.",
+            show_default=False,
+        ),
+    ] = None,
+    *,
+    geometry,
+):
     """Noise of a running ball bearing with waviness, ball-size errors and random
     surfaces (seed 003 part 4, seed 002): SPL at a point, pressure spectrum lines, and the
     ISO 15242 vibration velocity bands."""
@@ -101,8 +139,11 @@ def noise_command(
 
     speed_rad_s(speed_rpm)
     if not (math.isfinite(radial_load_n) and 0 < radial_load_n <= MAX_LOAD_N):
-        raise OptionError("--radial-load-n", radial_load_n,
-                          f"a load in (0, {MAX_LOAD_N:g}] N (the orbit needs a load)")
+        raise OptionError(
+            "--radial-load-n",
+            radial_load_n,
+            f"a load in (0, {MAX_LOAD_N:g}] N (the orbit needs a load)",
+        )
     positive("--distance-mm", distance_mm, "a distance > 0 mm")
     if not math.isfinite(angle_deg):
         raise OptionError("--angle-deg", angle_deg, "a finite angle [deg]")
@@ -112,8 +153,11 @@ def noise_command(
     if seed is not None and seed < 0:
         raise OptionError("--seed", seed, "an integer >= 0")
     if duration_s is not None and points is None and duration_s * SAMPLE_RATE > MAX_POINTS:
-        raise OptionError("--duration-s", duration_s, f"at most {MAX_POINTS / SAMPLE_RATE:g} s "
-                          "with the default sampling (or give --points)")
+        raise OptionError(
+            "--duration-s",
+            duration_s,
+            f"at most {MAX_POINTS / SAMPLE_RATE:g} s with the default sampling (or give --points)",
+        )
     check_path("--plot", plot, (".png", ".svg", ".pdf"))
     forms = FormErrors(waviness, ball_size_error_um, surface3d)
     bearing, _ = resolve_bearing(designation, geometry)
@@ -123,27 +167,46 @@ def noise_command(
     point = None if distance_mm is None else FieldPoint(distance_mm * 1e-3, angle)
     with progress_bar("orbit and sound pressure", enabled=not json_output) as update:
         try:
-            result = noise_analysis(bearing, condition, imperfections, point=point,
-                                    angle=None if point is not None else angle,
-                                    duration=duration_s, points=points,
-                                    bands_from=bands_from.value,
-                                    progress=lambda f, stage: update(f, stage))
+            result = noise_analysis(
+                bearing,
+                condition,
+                imperfections,
+                point=point,
+                angle=None if point is not None else angle,
+                duration=duration_s,
+                points=points,
+                bands_from=bands_from.value,
+                progress=lambda f, stage: update(f, stage),
+            )
         except InputError as exc:
             if exc.parameter == "point":
                 radius, how = outer_radius(bearing)
                 raise OptionError(
-                    "--distance-mm", distance_mm,
+                    "--distance-mm",
+                    distance_mm,
                     f"a distance > {least_field_distance(bearing) * 1e3:.4g} mm (outside the "
                     "inner ring and the balls' path)",
-                    f"the bearing's outside radius {how} is {radius * 1e3:.4g} mm") from None
-            raise option_error(exc, {"speed_rpm": speed_rpm, "radial_load_n": radial_load_n,
-                                     "duration_s": duration_s, "points": points}) from None
+                    f"the bearing's outside radius {how} is {radius * 1e3:.4g} mm",
+                ) from None
+            raise option_error(
+                exc,
+                {
+                    "speed_rpm": speed_rpm,
+                    "radial_load_n": radial_load_n,
+                    "duration_s": duration_s,
+                    "points": points,
+                },
+            ) from None
         if plot is not None:
             update(None, "plot (directivity)")
             save_plot_figure(result.plot()[0], plot)
     d = result.to_dict()
-    out = {"designation": designation, "seed": 0 if seed is None else seed, **d,
-           "warnings": _geometry_warnings(bearing) + d["warnings"]}
+    out = {
+        "designation": designation,
+        "seed": 0 if seed is None else seed,
+        **d,
+        "warnings": _geometry_warnings(bearing) + d["warnings"],
+    }
     if json_output:
         _emit_json(out)
         return
@@ -154,32 +217,51 @@ def _print(out: dict, bearing, imperfections, result) -> None:
     from ..noise import LEVEL_ROWS
 
     name = bearing.name or "bearing"
-    console.print(f"[bold]{escape(name)}: noise at {out['speed_rpm']:g} rpm, "
-                  f"F_r = {out['radial_load_n']:g} N[/bold]")
+    console.print(
+        f"[bold]{escape(name)}: noise at {out['speed_rpm']:g} rpm, "
+        f"F_r = {out['radial_load_n']:g} N[/bold]"
+    )
     console.print(escape(_geometry_line(bearing)))
     console.print(f"form errors: {escape(form_errors_text(imperfections))}")
-    console.print(f"field point: {out['distance_mm']:.4g} mm from the centre, "
-                  f"{out['angle_deg']:g} deg from +x ({escape(out['field_point_source'])})")
-    console.print(f"record: {out['points']} instants over {out['duration_s']:.4g} s "
-                  f"({out['sample_rate_hz']:.5g} Hz); orbit peak to peak "
-                  f"{out['orbit_peak_to_peak_um']:.4g} µm")
-    rows = [[label(what, unit_of(key).suffix), _fmt(out.get(key), 3 if key.endswith("_db")
-                                                     else 4)]
-            for what, key in LEVEL_ROWS]
+    console.print(
+        f"field point: {out['distance_mm']:.4g} mm from the centre, "
+        f"{out['angle_deg']:g} deg from +x ({escape(out['field_point_source'])})"
+    )
+    console.print(
+        f"record: {out['points']} instants over {out['duration_s']:.4g} s "
+        f"({out['sample_rate_hz']:.5g} Hz); orbit peak to peak "
+        f"{out['orbit_peak_to_peak_um']:.4g} µm"
+    )
+    rows = [
+        [label(what, unit_of(key).suffix), _fmt(out.get(key), 3 if key.endswith("_db") else 4)]
+        for what, key in LEVEL_ROWS
+    ]
     console.print(_table("Sound at the field point", ["level", "value"], rows))
     vb, hz = out["velocity_bands_um_s"], out["velocity_bands_hz"]
-    console.print(_table(f"ISO 15242 velocity bands at {out['speed_rpm']:g} rpm, from the "
-                         f"{out['velocity_bands_source']}",
-                         ["band", label("from", "hz"), label("to", "hz"),
-                          label("RMS velocity", "um_s")],
-                         [[k, hz[k][0], hz[k][1], vb[k]] for k in vb]))
+    console.print(
+        _table(
+            f"ISO 15242 velocity bands at {out['speed_rpm']:g} rpm, from the "
+            f"{out['velocity_bands_source']}",
+            ["band", label("from", "hz"), label("to", "hz"), label("RMS velocity", "um_s")],
+            [[k, hz[k][0], hz[k][1], vb[k]] for k in vb],
+        )
+    )
     console.print(f"[dim]{escape(out['velocity_bands_note'])}[/dim]")
-    console.print(_table(f"Sound-pressure spectrum lines (resolution "
-                         f"{out['peaks_resolution_hz']:.3g} Hz)",
-                         [label("frequency", "hz"), label("amplitude", "pa"), "matched",
-                          label("deviation", "pct")],
-                         peak_rows(result.peaks)))
+    console.print(
+        _table(
+            f"Sound-pressure spectrum lines (resolution {out['peaks_resolution_hz']:.3g} Hz)",
+            [
+                label("frequency", "hz"),
+                label("amplitude", "pa"),
+                "matched",
+                label("deviation", "pct"),
+            ],
+            peak_rows(result.peaks),
+        )
+    )
     kin = out["kinematic"]
-    console.print(f"BPFO {kin['bpfo_hz']:.4g} Hz, BPFI {kin['bpfi_hz']:.4g} Hz, FTF "
-                  f"{kin['ftf_hz']:.4g} Hz, shaft {kin['shaft_hz']:.4g} Hz")
+    console.print(
+        f"BPFO {kin['bpfo_hz']:.4g} Hz, BPFI {kin['bpfi_hz']:.4g} Hz, FTF "
+        f"{kin['ftf_hz']:.4g} Hz, shaft {kin['shaft_hz']:.4g} Hz"
+    )
     _print_warnings(out["warnings"])

@@ -32,9 +32,14 @@ from ._output import _emit_json, progress_bar
 
 app = command_app()
 
-DesignationArg = Annotated[str | None, typer.Argument(
-    help="Bearing designation or catalogue name (e.g. 6205, 180205, ER-16K); optional with "
-         "explicit geometry.", show_default=False)]
+DesignationArg = Annotated[
+    str | None,
+    typer.Argument(
+        help="Bearing designation or catalogue name (e.g. 6205, 180205, ER-16K); optional with "
+        "explicit geometry.",
+        show_default=False,
+    ),
+]
 
 
 def _check(speed_rpm, radial, axial, duration, slip_duration, sample_rate, viscosity, output):
@@ -57,35 +62,66 @@ def _check(speed_rpm, radial, axial, duration, slip_duration, sample_rate, visco
 @app.command("report")
 @with_geometry
 def report_command(
-        designation: DesignationArg = None,
-        speed_rpm: ShaftSpeedOpt = ...,
-        radial_load_n: RadialLoadOpt = ...,
-        axial_load_n: AxialLoadOpt = 0.0,
-        lubricant: Annotated[str, typer.Option(
-            "--lubricant", help="Built-in lubricant for the viscosity (friction, a_ISO), at "
-            "its reference temperature: iso-vg68 or seed004-grease.")] = "iso-vg68",
-        viscosity_mm2_s: Annotated[float | None, typer.Option(
-            "--viscosity-mm2-s", help="Operating kinematic viscosity [mm^2/s] instead of "
-            "--lubricant.", show_default=False)] = None,
-        defect: Annotated[list[str] | None, typer.Option(
-            "--defect", help="A defect to simulate, repeatable, as for 'simulate': "
+    designation: DesignationArg = None,
+    speed_rpm: ShaftSpeedOpt = ...,
+    radial_load_n: RadialLoadOpt = ...,
+    axial_load_n: AxialLoadOpt = 0.0,
+    lubricant: Annotated[
+        str,
+        typer.Option(
+            "--lubricant",
+            help="Built-in lubricant for the viscosity (friction, a_ISO), at "
+            "its reference temperature: iso-vg68 or seed004-grease.",
+        ),
+    ] = "iso-vg68",
+    viscosity_mm2_s: Annotated[
+        float | None,
+        typer.Option(
+            "--viscosity-mm2-s",
+            help="Operating kinematic viscosity [mm^2/s] instead of --lubricant.",
+            show_default=False,
+        ),
+    ] = None,
+    defect: Annotated[
+        list[str] | None,
+        typer.Option(
+            "--defect",
+            help="A defect to simulate, repeatable, as for 'simulate': "
             "outer:width_mm=1.2,depth_mm=0.25[,angle_deg=270], inner:..., "
             "ball:width_mm=1.2[,ball=0]. Default: an example outer-race defect (said so in "
-            "the report).", show_default=False)] = None,
-        duration_s: Annotated[float, typer.Option(
-            "--duration-s", help="Length of the simulated vibration record (rigid model) "
-            "[s].")] = 1.0,
-        slip_duration_s: Annotated[float, typer.Option(
-            "--slip-duration-s", help="Length of the slip-model run for the defect "
+            "the report).",
+            show_default=False,
+        ),
+    ] = None,
+    duration_s: Annotated[
+        float,
+        typer.Option(
+            "--duration-s", help="Length of the simulated vibration record (rigid model) [s]."
+        ),
+    ] = 1.0,
+    slip_duration_s: Annotated[
+        float,
+        typer.Option(
+            "--slip-duration-s",
+            help="Length of the slip-model run for the defect "
             "frequencies with slip [s] (about 5 s of computing per simulated second); 0 "
-            "skips it.")] = 0.1,
-        sample_rate_hz: Annotated[float | None, typer.Option(
-            "--sample-rate-hz", help="Sample rate of the simulated record [Hz] (default: "
+            "skips it.",
+        ),
+    ] = 0.1,
+    sample_rate_hz: Annotated[
+        float | None,
+        typer.Option(
+            "--sample-rate-hz",
+            help="Sample rate of the simulated record [Hz] (default: "
             "25.6 kHz, more at high speed so the ISO 15242 bands are resolved).",
-            show_default=False)] = None,
-        output: Annotated[Path, typer.Option(
-            "-o", "--output", help="The HTML file to write.")] = ...,
-        json_output: JsonOpt = False, *, geometry):
+            show_default=False,
+        ),
+    ] = None,
+    output: Annotated[Path, typer.Option("-o", "--output", help="The HTML file to write.")] = ...,
+    json_output: JsonOpt = False,
+    *,
+    geometry,
+):
     """Write an engineer's report of a bearing at an operating point to one self-contained
     HTML page: geometry and sources, load distribution, contact, stiffness, ring
     resonances, defect frequencies, simulated envelope spectrum, vibration bands, sound,
@@ -93,8 +129,16 @@ def report_command(
     listed on stderr; the report is still written, and the exit code is 1."""
     from ..report import build_report
 
-    _check(speed_rpm, radial_load_n, axial_load_n, duration_s, slip_duration_s, sample_rate_hz,
-           viscosity_mm2_s, output)
+    _check(
+        speed_rpm,
+        radial_load_n,
+        axial_load_n,
+        duration_s,
+        slip_duration_s,
+        sample_rate_hz,
+        viscosity_mm2_s,
+        output,
+    )
     specs = list(defect or [])
     defects = [parse_defect(text) for text in specs]
     bearing, decoded = resolve_bearing(designation, geometry)
@@ -102,52 +146,83 @@ def report_command(
         try:
             d.check(bearing)
         except InputError as exc:
-            shown = (f"width_mm = {exc.value * 1e3:g}" if exc.parameter == "width"
-                     else f"{exc.parameter} = {exc.value!r}")
-            raise OptionError("--defect", text, DEFECT_ALLOWED,
-                              f"for {bearing.name or 'this bearing'}: {shown} must be "
-                              f"{exc.allowed}") from None
+            shown = (
+                f"width_mm = {exc.value * 1e3:g}"
+                if exc.parameter == "width"
+                else f"{exc.parameter} = {exc.value!r}"
+            )
+            raise OptionError(
+                "--defect",
+                text,
+                DEFECT_ALLOWED,
+                f"for {bearing.name or 'this bearing'}: {shown} must be {exc.allowed}",
+            ) from None
     if viscosity_mm2_s is None:
         from ..lubrication import LUBRICANTS
 
         if lubricant not in LUBRICANTS:
             raise OptionError("--lubricant", lubricant, f"one of {', '.join(LUBRICANTS)}")
-    condition = OperatingCondition(radial_load=radial_load_n, axial_load=axial_load_n,
-                                   shaft_speed=rpm_to_rad_s(speed_rpm))
+    condition = OperatingCondition(
+        radial_load=radial_load_n, axial_load=axial_load_n, shaft_speed=rpm_to_rad_s(speed_rpm)
+    )
     with progress_bar("report", enabled=not json_output) as update:
         try:
             report = build_report(
-                bearing, condition, designation=decoded, defects=defects,
+                bearing,
+                condition,
+                designation=decoded,
+                defects=defects,
                 lubricant=None if viscosity_mm2_s is not None else lubricant,
                 viscosity=None if viscosity_mm2_s is None else viscosity_mm2_s * 1e-6,
-                duration=duration_s, sample_rate=sample_rate_hz, slip_duration=slip_duration_s,
-                progress=lambda title, done, total: update(done / total, f"report: {title}"))
+                duration=duration_s,
+                sample_rate=sample_rate_hz,
+                slip_duration=slip_duration_s,
+                progress=lambda title, done, total: update(done / total, f"report: {title}"),
+            )
         except InputError as exc:
-            raise option_error(exc, {"radial_load_n": radial_load_n,
-                                     "axial_load_n": axial_load_n, "speed_rpm": speed_rpm,
-                                     "sample_rate_hz": sample_rate_hz,
-                                     "duration_s": duration_s}) from None
+            raise option_error(
+                exc,
+                {
+                    "radial_load_n": radial_load_n,
+                    "axial_load_n": axial_load_n,
+                    "speed_rpm": speed_rpm,
+                    "sample_rate_hz": sample_rate_hz,
+                    "duration_s": duration_s,
+                },
+            ) from None
     try:
         report.write(output)
     except OSError as exc:
-        raise OptionError("--output", str(output), "a writable file",
-                          exc.strerror or type(exc).__name__) from None
+        raise OptionError(
+            "--output", str(output), "a writable file", exc.strerror or type(exc).__name__
+        ) from None
     failed = [{"section": s.key, "title": s.title, "error": s.error} for s in report.failed]
     warnings = _geometry_warnings(bearing) + list(report.warnings)
     err = Console(stderr=True)
     for f in failed:
-        err.print(f"[yellow]warning:[/yellow] section {escape(f['title'])!s} failed: "
-                  f"{escape(f['error'])}", highlight=False, soft_wrap=True)
+        err.print(
+            f"[yellow]warning:[/yellow] section {escape(f['title'])!s} failed: "
+            f"{escape(f['error'])}",
+            highlight=False,
+            soft_wrap=True,
+        )
     if json_output:
-        _emit_json({"designation": designation, "output": str(output),
-                    "sections": [s.key for s in report.sections],
-                    "failed_sections": failed, "warnings": warnings})
+        _emit_json(
+            {
+                "designation": designation,
+                "output": str(output),
+                "sections": [s.key for s in report.sections],
+                "failed_sections": failed,
+                "warnings": warnings,
+            }
+        )
     else:
         ok = len(report.sections) - len(failed)
-        console.print(f"report written to [bold]{escape(str(output))}[/bold] ({ok} of "
-                      f"{len(report.sections)} sections"
-                      + (f"; failed: {escape(', '.join(f['title'] for f in failed))})"
-                         if failed else ")"))
+        console.print(
+            f"report written to [bold]{escape(str(output))}[/bold] ({ok} of "
+            f"{len(report.sections)} sections"
+            + (f"; failed: {escape(', '.join(f['title'] for f in failed))})" if failed else ")")
+        )
         _print_warnings(warnings)
-    if failed:   # the page is written and lists them; the exit code says it is incomplete
+    if failed:  # the page is written and lists them; the exit code says it is incomplete
         raise typer.Exit(code=1)

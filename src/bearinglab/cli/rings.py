@@ -70,36 +70,81 @@ def _ring_level_only(designation: str | None, geometry: dict) -> bool:
 @app.command("ring-modes")
 @with_geometry
 def ring_modes_command(
-        designation: DesignationArg = None,
-        axial_load_n: Annotated[float, typer.Option(
-            "--axial-load-n", help="Axial load A [N], for K_x from the bearing.")] = 200.0,
-        modes: Annotated[str, typer.Option("--modes", help="Modes FIRST:LAST or m1,m2,...; "
-                                           "m = 1 is the rigid-body mode.")] = "2:6",
-        ring_mass_kg: Annotated[float | None, typer.Option(
-            "--ring-mass-kg", help="Vibrating mass of the outer ring incl. sensors [kg].",
-            show_default=False)] = None,
-        radial_stiffness_n_per_m: Annotated[float | None, typer.Option(
-            "--radial-stiffness-n-per-m", help="Radial bearing stiffness K_x [N/m].",
-            show_default=False)] = None,
-        rigid_body_frequency_hz: Annotated[float | None, typer.Option(
-            "--rigid-body-frequency-hz", help="f_1 of the ring on the ball springs [Hz] "
-            "(instead of sqrt(K_x / ring mass) / 2 pi).", show_default=False)] = None,
-        free_frequencies_hz: Annotated[str | None, typer.Option(
-            "--free-frequencies-hz", help="Measured free-ring frequencies f2,f3,... [Hz], one "
-            "per flexural mode asked for.", show_default=False)] = None,
-        ball_mass_ratio: Annotated[float | None, typer.Option(
-            "--ball-mass-ratio", help="kappa = n m_b / m_k.", show_default=False)] = None,
-        contact_stiffness_ratio: Annotated[float | None, typer.Option(
-            "--contact-stiffness-ratio", help="K1/K2 (outer over inner contact stiffness).",
-            show_default=False)] = None,
-        stiffness_from: Annotated[StiffnessSource, typer.Option(
-            "--stiffness-from", help="K_x from seed 000's closed form (axial load, contact "
-            "angle) or from the load-distribution stiffness at the axial load.")]
-        = StiffnessSource.closed_form,
-        json_output: JsonOpt = False,
-        plot: Annotated[Path | None, typer.Option(
-            "--plot", help="Also draw the frequencies to this .png, .svg or .pdf file.",
-            show_default=False)] = None, *, geometry):
+    designation: DesignationArg = None,
+    axial_load_n: Annotated[
+        float, typer.Option("--axial-load-n", help="Axial load A [N], for K_x from the bearing.")
+    ] = 200.0,
+    modes: Annotated[
+        str,
+        typer.Option(
+            "--modes", help="Modes FIRST:LAST or m1,m2,...; m = 1 is the rigid-body mode."
+        ),
+    ] = "2:6",
+    ring_mass_kg: Annotated[
+        float | None,
+        typer.Option(
+            "--ring-mass-kg",
+            help="Vibrating mass of the outer ring incl. sensors [kg].",
+            show_default=False,
+        ),
+    ] = None,
+    radial_stiffness_n_per_m: Annotated[
+        float | None,
+        typer.Option(
+            "--radial-stiffness-n-per-m",
+            help="Radial bearing stiffness K_x [N/m].",
+            show_default=False,
+        ),
+    ] = None,
+    rigid_body_frequency_hz: Annotated[
+        float | None,
+        typer.Option(
+            "--rigid-body-frequency-hz",
+            help="f_1 of the ring on the ball springs [Hz] "
+            "(instead of sqrt(K_x / ring mass) / 2 pi).",
+            show_default=False,
+        ),
+    ] = None,
+    free_frequencies_hz: Annotated[
+        str | None,
+        typer.Option(
+            "--free-frequencies-hz",
+            help="Measured free-ring frequencies f2,f3,... [Hz], one per flexural mode asked for.",
+            show_default=False,
+        ),
+    ] = None,
+    ball_mass_ratio: Annotated[
+        float | None,
+        typer.Option("--ball-mass-ratio", help="kappa = n m_b / m_k.", show_default=False),
+    ] = None,
+    contact_stiffness_ratio: Annotated[
+        float | None,
+        typer.Option(
+            "--contact-stiffness-ratio",
+            help="K1/K2 (outer over inner contact stiffness).",
+            show_default=False,
+        ),
+    ] = None,
+    stiffness_from: Annotated[
+        StiffnessSource,
+        typer.Option(
+            "--stiffness-from",
+            help="K_x from seed 000's closed form (axial load, contact "
+            "angle) or from the load-distribution stiffness at the axial load.",
+        ),
+    ] = StiffnessSource.closed_form,
+    json_output: JsonOpt = False,
+    plot: Annotated[
+        Path | None,
+        typer.Option(
+            "--plot",
+            help="Also draw the frequencies to this .png, .svg or .pdf file.",
+            show_default=False,
+        ),
+    ] = None,
+    *,
+    geometry,
+):
     """Natural frequencies of the outer ring in the loaded bearing (seed 000).
 
     Give a bearing (designation or geometry), or the paper's ring-level inputs alone:
@@ -111,14 +156,19 @@ def ring_modes_command(
     free = _frequencies(free_frequencies_hz)
     if free is not None:
         if len(free) != len(flexural):
-            raise OptionError("--free-frequencies-hz", free_frequencies_hz,
-                              f"{len(flexural)} values, one per flexural mode {flexural}")
+            raise OptionError(
+                "--free-frequencies-hz",
+                free_frequencies_hz,
+                f"{len(flexural)} values, one per flexural mode {flexural}",
+            )
         free = dict(zip(flexural, free, strict=True))
-    for flag, value in (("--ring-mass-kg", ring_mass_kg),
-                        ("--radial-stiffness-n-per-m", radial_stiffness_n_per_m),
-                        ("--rigid-body-frequency-hz", rigid_body_frequency_hz),
-                        ("--ball-mass-ratio", ball_mass_ratio),
-                        ("--contact-stiffness-ratio", contact_stiffness_ratio)):
+    for flag, value in (
+        ("--ring-mass-kg", ring_mass_kg),
+        ("--radial-stiffness-n-per-m", radial_stiffness_n_per_m),
+        ("--rigid-body-frequency-hz", rigid_body_frequency_hz),
+        ("--ball-mass-ratio", ball_mass_ratio),
+        ("--contact-stiffness-ratio", contact_stiffness_ratio),
+    ):
         if value is not None and not (math.isfinite(value) and 0 < value < 1e15):
             raise OptionError(flag, value, "a finite value > 0")
     if not (math.isfinite(axial_load_n) and 0 < axial_load_n <= MAX_LOAD_N):
@@ -126,27 +176,43 @@ def ring_modes_command(
     if _ring_level_only(designation, geometry):
         bearing, ball_count = None, geometry.get("balls")
         if ball_count is None:
-            raise OptionError("DESIGNATION", None, "a designation, explicit geometry, or the "
-                              "ring-level inputs --balls, --ring-mass-kg with "
-                              "--radial-stiffness-n-per-m (or --rigid-body-frequency-hz), "
-                              "--free-frequencies-hz and --ball-mass-ratio")
+            raise OptionError(
+                "DESIGNATION",
+                None,
+                "a designation, explicit geometry, or the "
+                "ring-level inputs --balls, --ring-mass-kg with "
+                "--radial-stiffness-n-per-m (or --rigid-body-frequency-hz), "
+                "--free-frequencies-hz and --ball-mass-ratio",
+            )
     else:
         (bearing, _), ball_count = resolve_bearing(designation, geometry), None
     try:
-        result = ring_modes(bearing, axial_load=axial_load_n if bearing is not None else None,
-                            modes=ms, ring_mass=ring_mass_kg,
-                            radial_stiffness=radial_stiffness_n_per_m,
-                            rigid_body_frequency=rigid_body_frequency_hz,
-                            free_frequencies=free, ball_mass_ratio=ball_mass_ratio,
-                            contact_stiffness_ratio=contact_stiffness_ratio,
-                            ball_count=ball_count,
-                            radial_stiffness_from=stiffness_from.value.replace("-", "_"))
+        result = ring_modes(
+            bearing,
+            axial_load=axial_load_n if bearing is not None else None,
+            modes=ms,
+            ring_mass=ring_mass_kg,
+            radial_stiffness=radial_stiffness_n_per_m,
+            rigid_body_frequency=rigid_body_frequency_hz,
+            free_frequencies=free,
+            ball_mass_ratio=ball_mass_ratio,
+            contact_stiffness_ratio=contact_stiffness_ratio,
+            ball_count=ball_count,
+            radial_stiffness_from=stiffness_from.value.replace("-", "_"),
+        )
     except InputError as exc:
-        raise option_error(exc, {
-            "ring_mass_kg": ring_mass_kg, "radial_stiffness_n_per_m": radial_stiffness_n_per_m,
-            "rigid_body_frequency_hz": rigid_body_frequency_hz,
-            "free_frequencies_hz": free_frequencies_hz, "ball_mass_ratio": ball_mass_ratio,
-            "contact_stiffness_ratio": contact_stiffness_ratio, "balls": ball_count}) from None
+        raise option_error(
+            exc,
+            {
+                "ring_mass_kg": ring_mass_kg,
+                "radial_stiffness_n_per_m": radial_stiffness_n_per_m,
+                "rigid_body_frequency_hz": rigid_body_frequency_hz,
+                "free_frequencies_hz": free_frequencies_hz,
+                "ball_mass_ratio": ball_mass_ratio,
+                "contact_stiffness_ratio": contact_stiffness_ratio,
+                "balls": ball_count,
+            },
+        ) from None
     if plot is not None:
         _save_plot(result, plot)
     d = result.to_dict()
@@ -160,20 +226,35 @@ def _print(d: dict, bearing, axial_load_n: float) -> None:
     def khz(values) -> str:
         return ", ".join(f"{f / 1e3:.4g}" for f in values) or "-"
 
-    rows = [[m["m"], m["free_hz"] / 1e3 if m["m"] > 1 else None, khz(m["approx_hz"]),
-             khz(m["refined_hz"]),
-             ", ".join("-" if e is None else f"{e:.4g}" for e in m["epsilon"]) or "-"]
-            for m in d["modes"]]
+    rows = [
+        [
+            m["m"],
+            m["free_hz"] / 1e3 if m["m"] > 1 else None,
+            khz(m["approx_hz"]),
+            khz(m["refined_hz"]),
+            ", ".join("-" if e is None else f"{e:.4g}" for e in m["epsilon"]) or "-",
+        ]
+        for m in d["modes"]
+    ]
     where = f" at A = {axial_load_n:g} N" if d["axial_load_n"] is not None else ""
     name = bearing.name if bearing is not None and bearing.name else "outer ring"
-    console.print(_table(f"{name}: outer-ring modes{where}",
-                         ["m", "free ring [kHz]", "approximate [kHz]",
-                          "refined, ball masses [kHz]", "epsilon"], rows))
+    console.print(
+        _table(
+            f"{name}: outer-ring modes{where}",
+            ["m", "free ring [kHz]", "approximate [kHz]", "refined, ball masses [kHz]", "epsilon"],
+            rows,
+        )
+    )
     mass = "-" if d["ring_mass_kg"] is None else f"{d['ring_mass_kg']:.4g} kg"
-    k_x = ("-" if d["radial_stiffness_n_per_m"] is None
-           else f"{d['radial_stiffness_n_per_m'] / 1e6:.4g} N/µm")
-    console.print(f"ring mass {mass}, K_x {k_x}, f_1 {d['rigid_body_frequency_hz'] / 1e3:.4g} "
-                  f"kHz, kappa {d['ball_mass_ratio']:.3g}, K1/K2 "
-                  f"{d['contact_stiffness_ratio']:.3g}")
+    k_x = (
+        "-"
+        if d["radial_stiffness_n_per_m"] is None
+        else f"{d['radial_stiffness_n_per_m'] / 1e6:.4g} N/µm"
+    )
+    console.print(
+        f"ring mass {mass}, K_x {k_x}, f_1 {d['rigid_body_frequency_hz'] / 1e3:.4g} "
+        f"kHz, kappa {d['ball_mass_ratio']:.3g}, K1/K2 "
+        f"{d['contact_stiffness_ratio']:.3g}"
+    )
     if bearing is not None:
         _print_warnings(_geometry_warnings(bearing))

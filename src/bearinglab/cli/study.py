@@ -20,9 +20,18 @@ CONFIRM_CASES = 100_000
 PREVIEW_ROWS = 10
 PREVIEW_OUTPUTS = 4
 #: Library parameter -> the option the user typed.
-_FLAGS = {"output": "--output", "scheduler": "--scheduler", "workers": "--workers",
-          "seed": "--seed", "repeats": "--repeats", "partition_size": "--partition-size",
-          "cases": "--cases", "grid": "--set", "option": "--set", "analysis": "ANALYSIS"}
+_FLAGS = {
+    "output": "--output",
+    "scheduler": "--scheduler",
+    "workers": "--workers",
+    "seed": "--seed",
+    "repeats": "--repeats",
+    "partition_size": "--partition-size",
+    "cases": "--cases",
+    "grid": "--set",
+    "option": "--set",
+    "analysis": "ANALYSIS",
+}
 
 
 def _grid(items: list[str]) -> dict:
@@ -31,8 +40,11 @@ def _grid(items: list[str]) -> dict:
         name, eq, values = item.partition("=")
         name = name.strip()
         if not eq or not name:
-            raise OptionError("--set", item, "NAME=VALUES, e.g. radial_load_n=100:2000:20 or "
-                              "designation=6205,6206")
+            raise OptionError(
+                "--set",
+                item,
+                "NAME=VALUES, e.g. radial_load_n=100:2000:20 or designation=6205,6206",
+            )
         if name in grid:
             raise OptionError("--set", item, f"each option once ({name} is given twice)")
         grid[name] = values
@@ -42,15 +54,19 @@ def _grid(items: list[str]) -> dict:
 def hint_of(exc: InputError) -> str:
     """The "(...)" part of an InputError's message, if any."""
     text, head = str(exc), f"expected {exc.allowed}"
-    rest = text[text.find(head) + len(head):] if head in text else ""
+    rest = text[text.find(head) + len(head) :] if head in text else ""
     return rest[2:-1] if rest.startswith(" (") and rest.endswith(")") else ""
 
 
 def _remap(exc: InputError) -> InputError:
     """The library's error in the command line's terms (the flag the user typed)."""
     if exc.parameter == "cases" and "confirmation" in exc.allowed:
-        return OptionError("cases", exc.value, f"at most {CONFIRM_CASES} cases without --yes",
-                           "add --yes to run them all")
+        return OptionError(
+            "cases",
+            exc.value,
+            f"at most {CONFIRM_CASES} cases without --yes",
+            "add --yes to run them all",
+        )
     flag = _FLAGS.get(exc.parameter, f"--set {exc.parameter}")
     return OptionError(flag, exc.value, exc.allowed, hint_of(exc))
 
@@ -63,40 +79,84 @@ def _label(name: str) -> str:
 
 @app.command("study")
 def study(
-        analysis: Annotated[str, typer.Argument(
-            help="stiffness, static, frequencies, life, friction, ring-modes, noise or "
-                 "simulate.", show_default=False)],
-        output: Annotated[Path, typer.Option(
-            "-o", "--output", help="Folder of the results (one Parquet file per partition); "
+    analysis: Annotated[
+        str,
+        typer.Argument(
+            help="stiffness, static, frequencies, life, friction, ring-modes, noise or simulate.",
+            show_default=False,
+        ),
+    ],
+    output: Annotated[
+        Path,
+        typer.Option(
+            "-o",
+            "--output",
+            help="Folder of the results (one Parquet file per partition); "
             "rerun with the same folder to finish an interrupted study.",
-            show_default=False)],
-        set_: Annotated[list[str] | None, typer.Option(
-            "--set", help="An input and its values, repeatable: NAME=V, NAME=A,B,C, "
+            show_default=False,
+        ),
+    ],
+    set_: Annotated[
+        list[str] | None,
+        typer.Option(
+            "--set",
+            help="An input and its values, repeatable: NAME=V, NAME=A,B,C, "
             "NAME=START:STOP:COUNT, NAME=log:START:STOP:COUNT or NAME=uniform:LOW:HIGH "
             "(random per case). Names as the analysis' options, e.g. designation, "
-            "radial_load_n, speed_rpm, clearance_um.", show_default=False)] = None,
-        cases: Annotated[Path | None, typer.Option(
-            "--cases", help="A .csv or .parquet file of cases instead of --set (one row per "
-            "case, columns named as the options).", show_default=False)] = None,
-        seed: Annotated[int, typer.Option(
-            "--seed", help="Study seed: random inputs come from the seed and the case "
-            "index.")] = 0,
-        repeats: Annotated[int, typer.Option(
-            "--repeats", help="Repeat each grid point (with fresh random inputs).")] = 1,
-        partition_size: Annotated[int | None, typer.Option(
-            "--partition-size", help="Cases per partition (default: from the analysis and "
-            "the case count).", show_default=False)] = None,
-        scheduler: SchedulerOpt = None,
-        workers: WorkersOpt = None,
-        yes: Annotated[bool, typer.Option(
-            "--yes", help=f"Run a study of more than {CONFIRM_CASES} cases.")] = False,
-        plot: Annotated[Path | None, typer.Option(
-            "--plot", help="Also draw one output over two inputs to this .png, .svg or .pdf "
-            "(see --plot-of).", show_default=False)] = None,
-        plot_of: Annotated[str | None, typer.Option(
-            "--plot-of", help="OUTPUT,X,Y for --plot (default: the first output over the "
-            "first two inputs that vary).", show_default=False)] = None,
-        json_output: JsonOpt = False):
+            "radial_load_n, speed_rpm, clearance_um.",
+            show_default=False,
+        ),
+    ] = None,
+    cases: Annotated[
+        Path | None,
+        typer.Option(
+            "--cases",
+            help="A .csv or .parquet file of cases instead of --set (one row per "
+            "case, columns named as the options).",
+            show_default=False,
+        ),
+    ] = None,
+    seed: Annotated[
+        int,
+        typer.Option(
+            "--seed", help="Study seed: random inputs come from the seed and the case index."
+        ),
+    ] = 0,
+    repeats: Annotated[
+        int, typer.Option("--repeats", help="Repeat each grid point (with fresh random inputs).")
+    ] = 1,
+    partition_size: Annotated[
+        int | None,
+        typer.Option(
+            "--partition-size",
+            help="Cases per partition (default: from the analysis and the case count).",
+            show_default=False,
+        ),
+    ] = None,
+    scheduler: SchedulerOpt = None,
+    workers: WorkersOpt = None,
+    yes: Annotated[
+        bool, typer.Option("--yes", help=f"Run a study of more than {CONFIRM_CASES} cases.")
+    ] = False,
+    plot: Annotated[
+        Path | None,
+        typer.Option(
+            "--plot",
+            help="Also draw one output over two inputs to this .png, .svg or .pdf (see --plot-of).",
+            show_default=False,
+        ),
+    ] = None,
+    plot_of: Annotated[
+        str | None,
+        typer.Option(
+            "--plot-of",
+            help="OUTPUT,X,Y for --plot (default: the first output over the "
+            "first two inputs that vary).",
+            show_default=False,
+        ),
+    ] = None,
+    json_output: JsonOpt = False,
+):
     """Run one analysis over a grid of inputs or a table of cases, on dask.
 
     Example: bearinglab study stiffness --set designation=6205 --set radial_load_n=0:2000:21
@@ -114,10 +174,19 @@ def study(
         raise OptionError("--plot-of", plot_of, "use with --plot FILE")
     try:
         describe_options(analysis)
-        result = run_study(analysis, grid or None, cases=cases, output=output, seed=seed,
-                           repeats=repeats, partition_size=partition_size,
-                           scheduler=scheduler, workers=workers,
-                           max_cases=None if yes else CONFIRM_CASES, progress=True)
+        result = run_study(
+            analysis,
+            grid or None,
+            cases=cases,
+            output=output,
+            seed=seed,
+            repeats=repeats,
+            partition_size=partition_size,
+            scheduler=scheduler,
+            workers=workers,
+            max_cases=None if yes else CONFIRM_CASES,
+            progress=True,
+        )
     except InputError as exc:
         raise _remap(exc) from None
     if plot is not None:
@@ -133,8 +202,9 @@ def _plot(result, path: Path, plot_of: str | None) -> None:
     if plot_of is None:
         varying = [c for c in result.inputs if table[c].nunique() > 1]
         if len(varying) < 2:
-            raise OptionError("--plot", str(path), "a study with two inputs that vary (or "
-                              "--plot-of OUTPUT,X,Y)")
+            raise OptionError(
+                "--plot", str(path), "a study with two inputs that vary (or --plot-of OUTPUT,X,Y)"
+            )
         names = [result.outputs[0], varying[0], varying[1]]
     else:
         names = [n.strip() for n in plot_of.split(",")]
@@ -157,14 +227,21 @@ def _natural_width(table) -> int:
 def _print(result, table) -> None:
     d = result.to_dict()
     rate = d["cases_per_s"]
-    rows = [["analysis", d["analysis"], ""], ["cases", d["cases"], ""],
-            ["failed cases", d["failed_cases"], ""],
-            ["partitions computed / reused",
-             f"{d['partitions_computed']} / {d['partitions_reused']}", ""],
-            ["wall time", d["wall_time_s"], "s"],
-            ["cases per second", "-" if rate is None else rate, "1/s"],
-            ["workers", d["workers"], ""], ["scheduler", d["scheduler"], ""],
-            ["output", d["output"], ""]]
+    rows = [
+        ["analysis", d["analysis"], ""],
+        ["cases", d["cases"], ""],
+        ["failed cases", d["failed_cases"], ""],
+        [
+            "partitions computed / reused",
+            f"{d['partitions_computed']} / {d['partitions_reused']}",
+            "",
+        ],
+        ["wall time", d["wall_time_s"], "s"],
+        ["cases per second", "-" if rate is None else rate, "1/s"],
+        ["workers", d["workers"], ""],
+        ["scheduler", d["scheduler"], ""],
+        ["output", d["output"], ""],
+    ]
     console.print(_table("study", ["", "value", "unit"], rows))
     ok = table[table["error"].isna()]
     shown = ok.head(PREVIEW_ROWS)
@@ -173,9 +250,11 @@ def _print(result, table) -> None:
     outputs = [c for c in result.outputs if table[c].notna().any()][:PREVIEW_OUTPUTS]
     while True:
         columns = ["case", *result.inputs, *outputs]
-        preview = _table(f"first {len(shown)} of {len(ok)} cases that ran",
-                         [_label(c).replace(" [", "\n[") for c in columns],
-                         [[row[c] for c in columns] for _, row in shown.iterrows()])
+        preview = _table(
+            f"first {len(shown)} of {len(ok)} cases that ran",
+            [_label(c).replace(" [", "\n[") for c in columns],
+            [[row[c] for c in columns] for _, row in shown.iterrows()],
+        )
         if not outputs or _natural_width(preview) <= console.width:
             break
         outputs.pop()
@@ -184,8 +263,12 @@ def _print(result, table) -> None:
     for _, row in failed.head(PREVIEW_ROWS).iterrows():
         console.print(f"[yellow]case {row['case']} failed:[/yellow] {escape(row['error'])}")
     if len(failed) > PREVIEW_ROWS:
-        console.print(f"[yellow]... and {len(failed) - PREVIEW_ROWS} more failed cases "
-                      "(column 'error')[/yellow]")
+        console.print(
+            f"[yellow]... and {len(failed) - PREVIEW_ROWS} more failed cases "
+            "(column 'error')[/yellow]"
+        )
     more = len(result.outputs) - len(outputs)
-    console.print(f"[dim]{f'{more} more output columns; ' if more else ''}the whole table: "
-                  f"pandas.read_parquet({escape(repr(str(result.path)))})[/dim]")
+    console.print(
+        f"[dim]{f'{more} more output columns; ' if more else ''}the whole table: "
+        f"pandas.read_parquet({escape(repr(str(result.path)))})[/dim]"
+    )

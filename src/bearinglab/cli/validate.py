@@ -16,26 +16,43 @@ from ._output import _emit_json, progress_bar
 
 app = command_app()
 
+
 def _cell(value, digits: int = 5) -> str:
     return "-" if value is None else f"{value:.{digits}g}"
 
 
 def _print(results: list[dict], summary: dict) -> None:
     """One table per source, numbered reasons of the known failures and errors below."""
-    styles = {"pass": "green", "known failure": "yellow", "fail": "bold red",
-              "unexpected pass": "bold red", "error": "bold red"}
+    styles = {
+        "pass": "green",
+        "known failure": "yellow",
+        "fail": "bold red",
+        "unexpected pass": "bold red",
+        "error": "bold red",
+    }
     reasons: list[str] = []
     sources: dict[str, list[dict]] = {}
     for r in results:
         sources.setdefault(r["source"], []).append(r)
     for source, group in sources.items():
-        table = Table(title=escape(source), title_justify="left", title_style="bold",
-                      header_style="bold")
-        for name, justify in (("quantity", "left"), ("published", "right"),
-                              ("computed", "right"), ("unit", "left"), ("error %", "right"),
-                              ("tol. %", "right"), ("verdict", "left")):
-            table.add_column(name, justify=justify, overflow="fold",
-                             no_wrap=name in ("verdict", "published", "computed"))
+        table = Table(
+            title=escape(source), title_justify="left", title_style="bold", header_style="bold"
+        )
+        for name, justify in (
+            ("quantity", "left"),
+            ("published", "right"),
+            ("computed", "right"),
+            ("unit", "left"),
+            ("error %", "right"),
+            ("tol. %", "right"),
+            ("verdict", "left"),
+        ):
+            table.add_column(
+                name,
+                justify=justify,
+                overflow="fold",
+                no_wrap=name in ("verdict", "published", "computed"),
+            )
         for r in group:
             note = r["known_failure"] if r["verdict"] == "known failure" else r["error"]
             text = r["verdict"]
@@ -43,26 +60,39 @@ def _print(results: list[dict], summary: dict) -> None:
                 if note not in reasons:
                     reasons.append(note)
                 text += f" [{reasons.index(note) + 1}]"
-            table.add_row(escape(r["quantity"]), _cell(r["published"]), _cell(r["computed"]),
-                          escape(r["unit"]), _cell(r["error_percent"], 3),
-                          _cell(r["tolerance_percent"], 3),
-                          f"[{styles[r['verdict']]}]{escape(text)}[/]")
+            table.add_row(
+                escape(r["quantity"]),
+                _cell(r["published"]),
+                _cell(r["computed"]),
+                escape(r["unit"]),
+                _cell(r["error_percent"], 3),
+                _cell(r["tolerance_percent"], 3),
+                f"[{styles[r['verdict']]}]{escape(text)}[/]",
+            )
         console.print(table)
     for i, text in enumerate(reasons, start=1):
         console.print(f"[dim]\\[{i}] {escape(text)}[/dim]")
     s = summary
-    line = (f"{s['total']} cases: {s['passed']} pass, {s['known_failures']} known failures "
-            f"(documented), {s['failed']} fail, {s['unexpected_passes']} unexpected passes, "
-            f"{s['errors']} errors ({s['duration_s']:.1f} s)")
+    line = (
+        f"{s['total']} cases: {s['passed']} pass, {s['known_failures']} known failures "
+        f"(documented), {s['failed']} fail, {s['unexpected_passes']} unexpected passes, "
+        f"{s['errors']} errors ({s['duration_s']:.1f} s)"
+    )
     console.print(f"[{'green' if s['ok'] else 'bold red'}]{escape(line)}[/]")
 
 
 @app.command("validate")
 def validate_command(
-        json_output: JsonOpt = False,
-        html: Annotated[Path | None, typer.Option(
-            "--html", help="Also write the table as one self-contained HTML page.",
-            show_default=False)] = None):
+    json_output: JsonOpt = False,
+    html: Annotated[
+        Path | None,
+        typer.Option(
+            "--html",
+            help="Also write the table as one self-contained HTML page.",
+            show_default=False,
+        ),
+    ] = None,
+):
     """Run every published case bearinglab reproduces (seed papers, data-set frequency
     factors, textbook examples, catalogue ratings) and show published and computed
     values, error and verdict: pass, fail, or known failure (a documented
@@ -71,13 +101,18 @@ def validate_command(
     unexpectedly passes. Some cases run simulations: expect a minute or two."""
     from ..validation.run import run_validation
 
-    if html is not None and (html.suffix.lower() not in (".html", ".htm")
-                             or not html.parent.is_dir()):
-        raise OptionError("--html", str(html), "a file name ending in .html or .htm in an "
-                          "existing directory")
+    if html is not None and (
+        html.suffix.lower() not in (".html", ".htm") or not html.parent.is_dir()
+    ):
+        raise OptionError(
+            "--html", str(html), "a file name ending in .html or .htm in an existing directory"
+        )
     with progress_bar("validate", enabled=not json_output) as update:
-        result = run_validation(progress=lambda done, total, label: update(
-            done / total, escape(f"validate {done + 1}/{total}: {label}"[:70])))
+        result = run_validation(
+            progress=lambda done, total, label: update(
+                done / total, escape(f"validate {done + 1}/{total}: {label}"[:70])
+            )
+        )
     results, summary = list(result.results), result.summary
     if html is not None:
         _write_html(html, results, summary)
@@ -97,10 +132,14 @@ def _write_html(path: Path, results: list[dict], summary: dict) -> None:
     from ..report import validation_page
 
     now = datetime.datetime.now().strftime("%Y-%m-%d %H:%M")
-    text = validation_page(results, summary, f"generated {now} by bearinglab {__version__} "
-                                             f"in {summary['duration_s']:.1f} s")
+    text = validation_page(
+        results,
+        summary,
+        f"generated {now} by bearinglab {__version__} in {summary['duration_s']:.1f} s",
+    )
     try:
         write_atomically(path, lambda tmp: Path(tmp).write_text(text, encoding="utf-8"))
     except OSError as exc:
-        raise OptionError("--html", str(path), "a writable file",
-                          exc.strerror or type(exc).__name__) from None
+        raise OptionError(
+            "--html", str(path), "a writable file", exc.strerror or type(exc).__name__
+        ) from None

@@ -54,8 +54,10 @@ class BallContacts:
         b = self.bearing
         axis = 0.5 * math.pi if b.is_thrust else 0.0
         loads = np.broadcast_to(np.asarray(self.load, dtype=float), np.shape(self.inner.semi_major))
-        for race, c, f in (("inner", self.inner, b.inner_groove_factor),
-                           ("outer", self.outer, b.outer_groove_factor)):
+        for race, c, f in (
+            ("inner", self.inner, b.inner_groove_factor),
+            ("outer", self.outer, b.outer_groove_factor),
+        ):
             radius = f * b.ball_diameter
             side = 1 if self.contact_angle >= 0 else -1
             shoulder = b.shoulder_angle(race, side)
@@ -71,7 +73,8 @@ class BallContacts:
                     f"{angle_text} + a/(f D_w) = {math.degrees(reach.ravel()[i]):.3g} deg > "
                     f"shoulder angle {math.degrees(shoulder):.3g} deg, groove depth "
                     f"{b.shoulder_depth(side) / b.ball_diameter:g} D_w assumed); Hertz results are "
-                    "not valid there")
+                    "not valid there"
+                )
         return out
 
     @property
@@ -83,6 +86,7 @@ class BallContacts:
         """JSON-ready dict in engineering units (keys carry the unit): the geometry used
         (``ball_count``, ``ball_diameter_mm``, ``pitch_diameter_mm``, ``contact_angle_deg``,
         ``geometry_source``), ``inner`` and ``outer`` contacts and ``warnings``."""
+
         def one(c: hertz.PointContact, constant: float) -> dict:
             return {
                 "semi_major_mm": _num(c.semi_major * 1e3),
@@ -94,10 +98,12 @@ class BallContacts:
                 "stiffness_n_per_um": _num(c.stiffness * 1e-6),
                 "load_deflection_constant_n_per_m1_5": float(constant),
             }
+
         b = self.bearing
         return {
             "ball_load_n": _num(self.load),
-            "ball_count": int(b.ball_count), "ball_diameter_mm": b.ball_diameter * 1e3,
+            "ball_count": int(b.ball_count),
+            "ball_diameter_mm": b.ball_diameter * 1e3,
             "pitch_diameter_mm": b.pitch_diameter * 1e3,
             "contact_angle_deg": float(np.degrees(self.contact_angle)),
             "geometry_source": b.geometry_source,
@@ -114,8 +120,9 @@ class BallContacts:
         from ..plotting import ball_contacts_figure
 
         q_max = float(np.max(self.load))
-        curve = ball_contacts(self.bearing, np.linspace(0.0, q_max, 121), self.contact_angle,
-                              self.method)
+        curve = ball_contacts(
+            self.bearing, np.linspace(0.0, q_max, 121), self.contact_angle, self.method
+        )
         final = ball_contacts(self.bearing, q_max, self.contact_angle, self.method)
         return ball_contacts_figure(curve, final, axes)
 
@@ -126,13 +133,23 @@ class BallContacts:
         rows = []
         loads = np.atleast_1d(self.load)
         for race, c in (("inner", self.inner), ("outer", self.outer)):
-            columns = {"semi_major_mm": c.semi_major * 1e3, "semi_minor_mm": c.semi_minor * 1e3,
-                       "max_pressure_gpa": c.max_pressure / 1e9, "approach_um": c.approach * 1e6,
-                       "ellipticity": c.ellipticity, "stiffness_n_per_um": c.stiffness * 1e-6}
+            columns = {
+                "semi_major_mm": c.semi_major * 1e3,
+                "semi_minor_mm": c.semi_minor * 1e3,
+                "max_pressure_gpa": c.max_pressure / 1e9,
+                "approach_um": c.approach * 1e6,
+                "ellipticity": c.ellipticity,
+                "stiffness_n_per_um": c.stiffness * 1e-6,
+            }
             columns = {k: np.broadcast_to(v, loads.shape) for k, v in columns.items()}
             for i, q in enumerate(loads):
-                rows.append({"contact": race, "ball_load_n": q,
-                             **{k: float(v[i]) for k, v in columns.items()}})
+                rows.append(
+                    {
+                        "contact": race,
+                        "ball_load_n": q,
+                        **{k: float(v[i]) for k, v in columns.items()},
+                    }
+                )
         return pd.DataFrame(rows)
 
 
@@ -141,8 +158,9 @@ def _num(value):
     return float(arr) if arr.ndim == 0 else arr.tolist()
 
 
-def load_deflection_constants(bearing: BallBearing, contact_angle: float | None = None,
-                              method: hertz.Method = "exact"):
+def load_deflection_constants(
+    bearing: BallBearing, contact_angle: float | None = None, method: hertz.Method = "exact"
+):
     """(K_i, K_o, K_n): Q = K delta^1.5 for the inner, outer and both contacts of a ball.
 
     Parameters
@@ -160,15 +178,25 @@ def load_deflection_constants(bearing: BallBearing, contact_angle: float | None 
         K_i, K_o, K_n [N/m^1.5].
     """
     e_prime = effective_modulus(bearing.ball_material, bearing.ring_material)
-    k_i = float(hertz.load_deflection_constant(*bearing.contact_radii("inner", contact_angle),
-                                               e_prime, method))
-    k_o = float(hertz.load_deflection_constant(*bearing.contact_radii("outer", contact_angle),
-                                               e_prime, method))
+    k_i = float(
+        hertz.load_deflection_constant(
+            *bearing.contact_radii("inner", contact_angle), e_prime, method
+        )
+    )
+    k_o = float(
+        hertz.load_deflection_constant(
+            *bearing.contact_radii("outer", contact_angle), e_prime, method
+        )
+    )
     return k_i, k_o, float(hertz.series_constant(k_i, k_o))
 
 
-def ball_contacts(bearing: BallBearing, ball_load, contact_angle: float | None = None,
-                  method: hertz.Method = "exact") -> BallContacts:
+def ball_contacts(
+    bearing: BallBearing,
+    ball_load,
+    contact_angle: float | None = None,
+    method: hertz.Method = "exact",
+) -> BallContacts:
     """Hertz contacts of one ball loaded by Q against the inner and outer raceway.
 
     Parameters

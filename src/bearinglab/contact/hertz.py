@@ -96,11 +96,18 @@ def _solve_log_k(target, iterations: int = 60):
     for i in zip(*np.nonzero(bad), strict=False):
         t = float(target[i])
         try:
-            u[i] = optimize.brentq(lambda x, t=t: float(_log_ratio(x)) - t, 0.5 * t, t,
-                                   xtol=1e-15 * t, rtol=4 * np.finfo(float).eps, maxiter=200)
+            u[i] = optimize.brentq(
+                lambda x, t=t: float(_log_ratio(x)) - t,
+                0.5 * t,
+                t,
+                xtol=1e-15 * t,
+                rtol=4 * np.finfo(float).eps,
+                maxiter=200,
+            )
         except (ValueError, RuntimeError) as exc:
-            raise ConvergenceError(f"ellipticity: no solution for R_y/R_x = {np.exp(t)!r} "
-                                   f"({exc})") from None
+            raise ConvergenceError(
+                f"ellipticity: no solution for R_y/R_x = {np.exp(t)!r} ({exc})"
+            ) from None
     return u
 
 
@@ -140,14 +147,16 @@ def ellipticity(radius_ratio, method: Method = "exact"):
         return (1.0339 * ratio**0.6360)[()]
     if method != "exact":
         raise InputError("method", method, f"one of {METHODS}")
-    near_circle = ratio < 1.0 + 1e-14        # k - 1 < 1e-14: the circle to double precision
+    near_circle = ratio < 1.0 + 1e-14  # k - 1 < 1e-14: the circle to double precision
     target = np.atleast_1d(np.log(np.where(near_circle, 2.0, ratio)))
     u = _solve_log_k(target).reshape(ratio.shape)
     k = np.exp(u)
     residual = np.abs(np.expm1(_log_ratio(u) - target.reshape(ratio.shape)))
     if np.any(~np.isfinite(k)) or np.any(~(residual <= 1e-10)):
-        raise ConvergenceError(f"ellipticity: no solution for R_y/R_x = {ratio!r} "
-                               f"(relative residual {np.nanmax(residual):.2e})")
+        raise ConvergenceError(
+            f"ellipticity: no solution for R_y/R_x = {ratio!r} "
+            f"(relative residual {np.nanmax(residual):.2e})"
+        )
     return np.where(near_circle, 1.0, k)[()]
 
 
@@ -203,8 +212,11 @@ class PointContact:
 def _radii(rx, ry):
     rx, ry = np.asarray(rx, dtype=float), np.asarray(ry, dtype=float)
     if np.any(~np.isfinite(rx)) or np.any(rx <= 0) or np.any(~np.isfinite(ry)) or np.any(ry <= 0):
-        raise InputError("rx, ry", (rx, ry), "positive effective radii [m] (convex-equivalent "
-                         "contact: 1/R_x > 0 and 1/R_y > 0)")
+        raise InputError(
+            "rx, ry",
+            (rx, ry),
+            "positive effective radii [m] (convex-equivalent contact: 1/R_x > 0 and 1/R_y > 0)",
+        )
     return rx, ry
 
 
@@ -256,10 +268,23 @@ def point_contact(load, rx, ry, effective_modulus, method: Method = "exact") -> 
         p_max = np.where(q > 0, 1.5 * q / (np.pi * a * b), 0.0)
         # dQ/d(delta) = 1.5 K delta^0.5 = 1.5 Q / delta (Q = K delta^1.5); 0 at zero load
         stiffness = np.where(delta > 0, 1.5 * q / delta, 0.0)
-    return PointContact(*(np.asarray(v)[()] for v in (
-        q, a, b, np.broadcast_to(k, np.shape(a)), p_max, delta, stiffness,
-        np.broadcast_to(first, np.shape(a)), np.broadcast_to(second, np.shape(a)),
-        np.broadcast_to(r, np.shape(a)))))
+    return PointContact(
+        *(
+            np.asarray(v)[()]
+            for v in (
+                q,
+                a,
+                b,
+                np.broadcast_to(k, np.shape(a)),
+                p_max,
+                delta,
+                stiffness,
+                np.broadcast_to(first, np.shape(a)),
+                np.broadcast_to(second, np.shape(a)),
+                np.broadcast_to(r, np.shape(a)),
+            )
+        )
+    )
 
 
 def load_deflection_constant(rx, ry, effective_modulus, method: Method = "exact"):
@@ -334,5 +359,7 @@ def series_constant(inner_constant, outer_constant):
     >>> round(float(series_constant(8.0, 8.0)), 6)  # equal springs: K / 2^1.5
     2.828427
     """
-    return (np.asarray(inner_constant, float) ** (-2.0 / 3.0)
-            + np.asarray(outer_constant, float) ** (-2.0 / 3.0)) ** -1.5
+    return (
+        np.asarray(inner_constant, float) ** (-2.0 / 3.0)
+        + np.asarray(outer_constant, float) ** (-2.0 / 3.0)
+    ) ** -1.5

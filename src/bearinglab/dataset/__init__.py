@@ -12,5 +12,13 @@ from .generate import DatasetResult, make_dataset, make_record
 from .path import TransferPath
 from .sampling import FAULTS, DatasetSpec, draw_record, parse_range
 
-__all__ = ["FAULTS", "DatasetResult", "DatasetSpec", "TransferPath", "draw_record",
-           "make_dataset", "make_record", "parse_range"]
+__all__ = [
+    "FAULTS",
+    "DatasetResult",
+    "DatasetSpec",
+    "TransferPath",
+    "draw_record",
+    "make_dataset",
+    "make_record",
+    "parse_range",
+]

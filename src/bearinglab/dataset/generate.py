@@ -52,25 +52,51 @@ def make_record(spec: DatasetSpec, seed: int, index: int) -> tuple[np.ndarray, d
     r = draw_record(spec, seed, index)
     bearing = bearing_of(r["bearing"])
     z = bearing.ball_count
-    defects = [Defect(d["location"], d["width_mm"] * 1e-3, d["depth_mm"] * 1e-3,
-                      angle=math.radians(d["angle_deg"]),
-                      ball=r["ball_index"] % z if d["location"] == "ball" else 0)
-               for d in r["defects"]]
+    defects = [
+        Defect(
+            d["location"],
+            d["width_mm"] * 1e-3,
+            d["depth_mm"] * 1e-3,
+            angle=math.radians(d["angle_deg"]),
+            ball=r["ball_index"] % z if d["location"] == "ball" else 0,
+        )
+        for d in r["defects"]
+    ]
     for d, spec_d in zip(defects, r["defects"], strict=True):
         if d.location == "ball":
             spec_d["ball"] = d.ball
-    waves = [Waviness(w["race"], w["order"], r["waviness_amplitude_um"] * 1e-6,
-                      math.radians(w["phase_deg"]))
-             for w in r["waviness"]] if r["waviness_amplitude_um"] > 0 else []
-    errors = (BallSizeErrors.random(z, r["ball_size_error_um"] * 1e-6, seed=r["seed"])
-              if r["ball_size_error_um"] > 0 else None)
-    imperfections = Imperfections(waves, ball_size_errors=errors) if (waves or errors) \
+    waves = (
+        [
+            Waviness(
+                w["race"],
+                w["order"],
+                r["waviness_amplitude_um"] * 1e-6,
+                math.radians(w["phase_deg"]),
+            )
+            for w in r["waviness"]
+        ]
+        if r["waviness_amplitude_um"] > 0
+        else []
+    )
+    errors = (
+        BallSizeErrors.random(z, r["ball_size_error_um"] * 1e-6, seed=r["seed"])
+        if r["ball_size_error_um"] > 0
         else None
-    condition = OperatingCondition(radial_load=r["radial_load_n"],
-                                   shaft_speed=r["speed_rpm"] * math.pi / 30.0)
+    )
+    imperfections = Imperfections(waves, ball_size_errors=errors) if (waves or errors) else None
+    condition = OperatingCondition(
+        radial_load=r["radial_load_n"], shaft_speed=r["speed_rpm"] * math.pi / 30.0
+    )
     fs = r["sample_rate_hz"]
-    sim = simulate(bearing, condition, defects, model=r["model"], duration=r["duration_s"],
-                   sample_rate=fs, imperfections=imperfections)
+    sim = simulate(
+        bearing,
+        condition,
+        defects,
+        model=r["model"],
+        duration=r["duration_s"],
+        sample_rate=fs,
+        imperfections=imperfections,
+    )
     x = TransferPath(tuple(r["resonances"])).apply(sim.signal.channels["acc_y"], fs)
     if r["noise_ms2"] > 0:
         x = x + np.random.default_rng(r["seed"]).normal(0.0, r["noise_ms2"], x.size)
@@ -90,10 +116,16 @@ def _partition(task):
 
             rows.append({"recording_id": recording, "error": error_text(exc)})
             continue
-        row = layout.metadata_row(name, recording, r, bearing, kin, x.size,
-                                  r["sample_rate_hz"])
-        row.update({"signal_file": file, "signal_row_group": 0, "signal_row": len(ids),
-                    "sha256": layout.digest(x), "error": None})
+        row = layout.metadata_row(name, recording, r, bearing, kin, x.size, r["sample_rate_hz"])
+        row.update(
+            {
+                "signal_file": file,
+                "signal_row_group": 0,
+                "signal_row": len(ids),
+                "sha256": layout.digest(x),
+                "error": None,
+            }
+        )
         ids.append(row["signal_id"])
         signals.append(x)
         rows.append(row)
@@ -125,8 +157,7 @@ class DatasetResult:
     @property
     def records_per_second(self) -> float | None:
         """Records made by this run per wall second."""
-        return self.computed_records / self.seconds if self.computed and self.seconds > 0 \
-            else None
+        return self.computed_records / self.seconds if self.computed and self.seconds > 0 else None
 
     def to_pandas(self):
         """The metadata table (one row per signal)."""
@@ -136,17 +167,24 @@ class DatasetResult:
 
     def to_dict(self) -> dict:
         """JSON-ready summary; ``open_with`` is how bearing-datasets opens the set."""
-        return {"output": str(self.path), "name": self.name, "records": self.records,
-                "records_written": self.written, "records_failed": self.failed,
-                "partitions": self.partitions, "partitions_computed": self.computed,
-                "partitions_reused": self.partitions - self.computed,
-                "records_computed": self.computed_records, "wall_time_s": self.seconds,
-                "records_per_s": self.records_per_second,
-                "worker_cpu_time_s": sum(self.worker_cpu_seconds.values()),
-                "workers": self.workers,
-                "scheduler": self.scheduler, "dashboard": self.dashboard,
-                "open_with": f"bearing_datasets.open({self.name!r}, "
-                             f"root={str(self.path.parent)!r})"}
+        return {
+            "output": str(self.path),
+            "name": self.name,
+            "records": self.records,
+            "records_written": self.written,
+            "records_failed": self.failed,
+            "partitions": self.partitions,
+            "partitions_computed": self.computed,
+            "partitions_reused": self.partitions - self.computed,
+            "records_computed": self.computed_records,
+            "wall_time_s": self.seconds,
+            "records_per_s": self.records_per_second,
+            "worker_cpu_time_s": sum(self.worker_cpu_seconds.values()),
+            "workers": self.workers,
+            "scheduler": self.scheduler,
+            "dashboard": self.dashboard,
+            "open_with": f"bearing_datasets.open({self.name!r}, root={str(self.path.parent)!r})",
+        }
 
     def plot(self, ax=None):
         """Records per fault type against speed (a scatter of the set's coverage)."""
@@ -158,8 +196,9 @@ class DatasetResult:
         else:
             fig = ax.figure
         for i, (fault, part) in enumerate(meta.groupby("fault_type")):
-            ax.scatter(part["speed_rpm"], part["load"], s=8, color=f"C{i}",
-                       label=f"{fault} ({len(part)})")
+            ax.scatter(
+                part["speed_rpm"], part["load"], s=8, color=f"C{i}", label=f"{fault} ({len(part)})"
+            )
         ax.set_xlabel("speed [rpm]")
         ax.set_ylabel("radial load [N]")
         ax.legend(fontsize=8)
@@ -170,19 +209,36 @@ def _check_folder(folder: Path, identity: dict) -> None:
     held = held_description(folder / OWN / MARKER)
     if held is not None:
         if canonical(held.get("identity")) != canonical(identity):
-            raise InputError("output", str(folder), "a new folder or one holding this same "
-                             "data set", f"it holds a different data set ({held.get('records')}"
-                             f" records, seed {held.get('seed')}); choose another output "
-                             "folder or remove that one")
+            raise InputError(
+                "output",
+                str(folder),
+                "a new folder or one holding this same data set",
+                f"it holds a different data set ({held.get('records')}"
+                f" records, seed {held.get('seed')}); choose another output "
+                "folder or remove that one",
+            )
     elif folder.exists() and (not folder.is_dir() or any(folder.iterdir())):
-        raise InputError("output", str(folder), "a new or empty folder, or one holding "
-                         "this same data set", "it holds other files")
+        raise InputError(
+            "output",
+            str(folder),
+            "a new or empty folder, or one holding this same data set",
+            "it holds other files",
+        )
 
 
-def make_dataset(output, records: int, *, seed: int = 0, partition_size: int | None = None,
-                 scheduler: str | None = None, workers: int | None = None,
-                 max_records: int | None = None, progress: bool = False,
-                 connect_timeout: float = execute.CONNECT_TIMEOUT, **ranges) -> DatasetResult:
+def make_dataset(
+    output,
+    records: int,
+    *,
+    seed: int = 0,
+    partition_size: int | None = None,
+    scheduler: str | None = None,
+    workers: int | None = None,
+    max_records: int | None = None,
+    progress: bool = False,
+    connect_timeout: float = execute.CONNECT_TIMEOUT,
+    **ranges,
+) -> DatasetResult:
     """Make ``records`` labelled synthetic vibration records in the bearing-datasets layout.
 
     Parameters
@@ -220,15 +276,23 @@ def make_dataset(output, records: int, *, seed: int = 0, partition_size: int | N
     if records > MAX_RECORDS:
         raise InputError("records", records, f"at most {MAX_RECORDS:g}")
     if max_records is not None and records > max_records:
-        raise InputError("records", records, f"at most {max_records} without confirmation",
-                         "confirm with --yes (or raise max_records) to make them all")
+        raise InputError(
+            "records",
+            records,
+            f"at most {max_records} without confirmation",
+            "confirm with --yes (or raise max_records) to make them all",
+        )
     partition_size = partition_size_for(partition_size, records, LARGEST_PARTITION)
     folder = Path(output)
     name = folder.resolve().name
     if not name:
         raise InputError("output", str(output), "a folder with a name (the data set's name)")
-    identity = {"spec": spec.identity(), "seed": seed, "partition_size": partition_size,
-                "name": name}
+    identity = {
+        "spec": spec.identity(),
+        "seed": seed,
+        "partition_size": partition_size,
+        "name": name,
+    }
     _check_folder(folder, identity)
     spans = partitions(records, partition_size)
     width = max(6, len(str(records - 1)))
@@ -237,9 +301,17 @@ def make_dataset(output, records: int, *, seed: int = 0, partition_size: int | N
     metas = [own / f"meta-{i:0{pwidth}d}.parquet" for i in range(len(spans))]
     files = [f"part-{layout.DTYPE}-{i:0{pwidth}d}.parquet" for i in range(len(spans))]
     todo = [i for i in range(len(spans)) if not metas[i].exists()]
-    marker = json.dumps({"kind": "bearinglab dataset", "bearinglab_version": __version__,
-                         "records": records, "seed": seed, "identity": identity}, indent=1,
-                        default=str)
+    marker = json.dumps(
+        {
+            "kind": "bearinglab dataset",
+            "bearinglab_version": __version__,
+            "records": records,
+            "seed": seed,
+            "identity": identity,
+        },
+        indent=1,
+        default=str,
+    )
     tasks = [(spec, seed, name, *spans[i], width, files[i]) for i in todo]
     units = [spans[i][1] - spans[i][0] for i in todo]
     where = {spans[i]: i for i in todo}
@@ -250,8 +322,10 @@ def make_dataset(output, records: int, *, seed: int = 0, partition_size: int | N
 
         table, rows = result
         i = where[(task[3], task[4])]
-        write_atomically(folder / "signals" / files[i],
-                         lambda tmp: pq.write_table(table, tmp, compression="zstd"))
+        write_atomically(
+            folder / "signals" / files[i],
+            lambda tmp: pq.write_table(table, tmp, compression="zstd"),
+        )
         frame = pd.DataFrame(rows)
         write_atomically(metas[i], lambda tmp: frame.to_parquet(tmp, index=False))
 
@@ -261,19 +335,42 @@ def make_dataset(output, records: int, *, seed: int = 0, partition_size: int | N
         with execute.open_runner(scheduler, workers, connect_timeout) as runner:
             (folder / "signals").mkdir(parents=True, exist_ok=True)
             own.mkdir(exist_ok=True)
-            write_atomically(own / MARKER, lambda tmp: Path(tmp).write_text(
-                marker, encoding="utf-8"))
+            write_atomically(
+                own / MARKER, lambda tmp: Path(tmp).write_text(marker, encoding="utf-8")
+            )
             info = (runner.scheduler, runner.workers, runner.dashboard)
             execute.warm(runner, ("bearinglab.dynamics",), (_warm, (spec, seed)))
             cpu0 = execute.cpu_seconds(runner)
-            seconds = execute.run_partitions(runner, _partition, tasks, units, write,
-                                             progress=progress, label="records",
-                                             total=records, done=records - sum(units))
+            seconds = execute.run_partitions(
+                runner,
+                _partition,
+                tasks,
+                units,
+                write,
+                progress=progress,
+                label="records",
+                total=records,
+                done=records - sum(units),
+            )
             cpu = {w: t - cpu0.get(w, 0.0) for w, t in execute.cpu_seconds(runner).items()}
             memory = execute.peak_memory(runner)
     written, failed = _finish(folder, name, metas, seed, records)
-    return DatasetResult(folder, name, records, written, failed, len(spans), len(tasks),
-                         sum(units), seconds, info[1], info[0], info[2], memory, cpu)
+    return DatasetResult(
+        folder,
+        name,
+        records,
+        written,
+        failed,
+        len(spans),
+        len(tasks),
+        sum(units),
+        seconds,
+        info[1],
+        info[0],
+        info[2],
+        memory,
+        cpu,
+    )
 
 
 def _warm(args) -> None:
@@ -281,8 +378,9 @@ def _warm(args) -> None:
     spec, seed = args
     import dataclasses
 
-    make_record(dataclasses.replace(spec, duration_s=0.02, sample_rate_hz=20000.0,
-                                    resonances=()), seed, 0)
+    make_record(
+        dataclasses.replace(spec, duration_s=0.02, sample_rate_hz=20000.0, resonances=()), seed, 0
+    )
 
 
 def _finish(folder: Path, name: str, metas: list[Path], seed: int, records: int):
@@ -297,19 +395,35 @@ def _finish(folder: Path, name: str, metas: list[Path], seed: int, records: int)
     if len(bad):
         bad[["recording_id", "error"]].to_csv(folder / OWN / "failed.csv", index=False)
     if good.empty:
-        raise InputError("records", records, "settings with which at least one record can "
-                         "be made", f"every record failed, e.g. {bad['error'].iloc[0]}")
+        raise InputError(
+            "records",
+            records,
+            "settings with which at least one record can be made",
+            f"every record failed, e.g. {bad['error'].iloc[0]}",
+        )
     digests = dict(zip(good["signal_id"], good.pop("sha256"), strict=True))
     good = layout.order_columns(good.reset_index(drop=True))
-    for column in ("signal_row_group", "signal_row", "n_samples", "fault_severity_level",
-                   "record_seed"):
+    for column in (
+        "signal_row_group",
+        "signal_row",
+        "n_samples",
+        "fault_severity_level",
+        "record_seed",
+    ):
         good[column] = good[column].astype("int64")
     good["sensor_at_fault"] = good["sensor_at_fault"].astype(bool)
-    write_atomically(folder / "metadata.parquet", lambda tmp: pq.write_table(
-        pa.Table.from_pandas(good, preserve_index=False), tmp, compression="zstd"))
-    citation = (f"Synthetic records made with bearinglab {__version__} (seed {seed}); "
-                "models: seed 003 rigid / seed 004 slip, see bearinglab's docs")
+    write_atomically(
+        folder / "metadata.parquet",
+        lambda tmp: pq.write_table(
+            pa.Table.from_pandas(good, preserve_index=False), tmp, compression="zstd"
+        ),
+    )
+    citation = (
+        f"Synthetic records made with bearinglab {__version__} (seed {seed}); "
+        "models: seed 003 rigid / seed 004 slip, see bearinglab's docs"
+    )
     text = json.dumps(layout.manifest(name, good, __version__, citation, digests), indent=1)
-    write_atomically(folder / "manifest.json", lambda tmp: Path(tmp).write_text(
-        text, encoding="utf-8"))
+    write_atomically(
+        folder / "manifest.json", lambda tmp: Path(tmp).write_text(text, encoding="utf-8")
+    )
     return len(good), len(bad)

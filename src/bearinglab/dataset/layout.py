@@ -37,9 +37,9 @@ COLUMNS = {
     "signal_id": "unique id of the signal: <recording_id>/<channel>",
     "recording_id": "id of the simulated record",
     "native_label": "bearinglab's fault class: normal, outer, inner, ball or a '+'-joined "
-                    "compound (e.g. outer+ball)",
+    "compound (e.g. outer+ball)",
     "channel": "acc_y: acceleration in the load direction at the sensor (after the transfer "
-               "path and the measurement noise)",
+    "path and the measurement noise)",
     "sensor_location": "the sensor measures the simulated test bearing",
     "fs": "sampling rate in Hz",
     "n_samples": "number of samples",
@@ -60,7 +60,7 @@ COLUMNS = {
     "load_unit": "N",
     "fault_origin": "artificial: a defect of given size put in the model; none if healthy",
     "fault_size_mm": "width of the defect along the rolling direction in mm (compound: the "
-                     "widest); 0 if healthy",
+    "widest); 0 if healthy",
     "fault_severity": "not graded (see fault_size_mm); none if healthy",
     "fault_severity_level": "0 healthy, 1 faulty (not graded)",
     "bearing_id": "each simulated record is its own bearing: the recording_id",
@@ -76,14 +76,14 @@ COLUMNS = {
     "ball_defect_hz": "kinematic ball-defect rate 2 x BSF at the true speed [Hz]",
     "fault_depth_mm": "depth of the (first) defect in mm; 0 if healthy",
     "fault_position_deg": "position of the (first) defect: outer race, fixed angle from +x "
-                          "towards +y (-90 = bottom of the load zone); inner race, its angle "
-                          "at t = 0; ball, its spin phase at t = 0; 0 if healthy",
+    "towards +y (-90 = bottom of the load zone); inner race, its angle "
+    "at t = 0; ball, its spin phase at t = 0; 0 if healthy",
     "defects_json": "every defect of the record (location, width_mm, depth_mm, angle_deg, "
-                    "ball) as JSON",
+    "ball) as JSON",
     "simulation_model": "bearinglab dynamic model: rigid (seed 003) or slip (seed 004)",
     "noise_rms_m_s2": "RMS of the white measurement noise added at the sensor [m/s^2]",
     "transfer_path_json": "resonances of the path to the sensor: frequencies [Hz] and damping "
-                          "ratios, as JSON",
+    "ratios, as JSON",
     "waviness_amplitude_um": "amplitude of the outer and inner raceway waviness [um]",
     "waviness_json": "raceway waviness (race, order, phase_deg) as JSON",
     "ball_size_error_band_um": "band of the random ball diameter errors [um]",
@@ -104,8 +104,9 @@ def content_hash(digests: dict) -> str:
     return h.hexdigest()
 
 
-def metadata_row(name: str, recording: str, record: dict, bearing, kinematic, n: int,
-                 sample_rate: float) -> dict:
+def metadata_row(
+    name: str, recording: str, record: dict, bearing, kinematic, n: int, sample_rate: float
+) -> dict:
     """One metadata row (without the signal location) of a record."""
     defects = record["defects"]
     parts = [FAULT_TYPE[d["location"]] for d in defects]
@@ -114,33 +115,50 @@ def metadata_row(name: str, recording: str, record: dict, bearing, kinematic, n:
     first = defects[0] if defects else {}
     orders = kinematic.orders
     return {
-        "dataset": name, "signal_id": f"{recording}/{CHANNEL}", "recording_id": recording,
+        "dataset": name,
+        "signal_id": f"{recording}/{CHANNEL}",
+        "recording_id": recording,
         "native_label": "+".join(d["location"] for d in defects) or "normal",
-        "channel": CHANNEL, "sensor_location": "test_bearing", "fs": float(sample_rate),
-        "n_samples": int(n), "fault_type": fault_type,
+        "channel": CHANNEL,
+        "sensor_location": "test_bearing",
+        "fs": float(sample_rate),
+        "n_samples": int(n),
+        "fault_type": fault_type,
         "fault_location": "+".join(["test_bearing"] * len(parts)) or "none",
-        "sensor_at_fault": faulty, "quantity": "acceleration", "unit": "m/s^2",
-        "sensitivity": "none", "axis": "vertical", "sensor_mounting": "pedestal",
-        "speed_rpm": float(record["speed_rpm"]), "speed_profile": "constant",
-        "load": float(record["radial_load_n"]), "load_unit": "N",
+        "sensor_at_fault": faulty,
+        "quantity": "acceleration",
+        "unit": "m/s^2",
+        "sensitivity": "none",
+        "axis": "vertical",
+        "sensor_mounting": "pedestal",
+        "speed_rpm": float(record["speed_rpm"]),
+        "speed_profile": "constant",
+        "load": float(record["radial_load_n"]),
+        "load_unit": "N",
         "fault_origin": "artificial" if faulty else "none",
         "fault_size_mm": max((d["width_mm"] for d in defects), default=0.0),
         "fault_severity": "not graded" if faulty else "none",
         "fault_severity_level": int(faulty),
-        "bearing_id": recording, "bearing_model": bearing.name or "user geometry",
-        "bpfo": float(orders["bpfo"]), "bpfi": float(orders["bpfi"]),
-        "bsf": float(orders["bsf"]), "ftf": float(orders["ftf"]),
+        "bearing_id": recording,
+        "bearing_model": bearing.name or "user geometry",
+        "bpfo": float(orders["bpfo"]),
+        "bpfi": float(orders["bpfi"]),
+        "bsf": float(orders["bsf"]),
+        "ftf": float(orders["ftf"]),
         **{f"{k}_hz": kinematic.hz(k) for k in ("bpfo", "bpfi", "bsf", "ftf", "ball_defect")},
         "fault_depth_mm": float(first.get("depth_mm", 0.0)),
         "fault_position_deg": float(first.get("angle_deg", 0.0)),
         "defects_json": json.dumps(defects),
-        "simulation_model": record["model"], "noise_rms_m_s2": float(record["noise_ms2"]),
-        "transfer_path_json": json.dumps({"resonances_hz": [f for f, _ in record["resonances"]],
-                                          "damping_ratios": [z for _, z in
-                                                             record["resonances"]]}),
+        "simulation_model": record["model"],
+        "noise_rms_m_s2": float(record["noise_ms2"]),
+        "transfer_path_json": json.dumps(
+            {
+                "resonances_hz": [f for f, _ in record["resonances"]],
+                "damping_ratios": [z for _, z in record["resonances"]],
+            }
+        ),
         "waviness_amplitude_um": float(record["waviness_amplitude_um"]),
-        "waviness_json": json.dumps(record["waviness"] if record["waviness_amplitude_um"]
-                                    else []),
+        "waviness_json": json.dumps(record["waviness"] if record["waviness_amplitude_um"] else []),
         "ball_size_error_band_um": float(record["ball_size_error_um"]),
         "record_seed": int(record["seed"]),
     }
@@ -152,25 +170,33 @@ def signal_table(ids: list[str], signals: list[np.ndarray]):
 
     offsets = np.concatenate([[0], np.cumsum([len(x) for x in signals])]).astype(np.int32)
     values = pa.array(np.concatenate(signals) if signals else np.zeros(0, np.float32))
-    return pa.table({"signal_id": pa.array(ids, pa.string()),
-                     "signal": pa.ListArray.from_arrays(pa.array(offsets), values)})
+    return pa.table(
+        {
+            "signal_id": pa.array(ids, pa.string()),
+            "signal": pa.ListArray.from_arrays(pa.array(offsets), values),
+        }
+    )
 
 
 def manifest(name: str, meta, bearinglab_version: str, citation: str, digests: dict) -> dict:
     """manifest.json of the finished set."""
     import time
 
-    return {"dataset": name, "title": f"bearinglab synthetic bearing-fault data set {name}",
-            "license": "CC0-1.0 (synthetic data generated by the user with bearinglab)",
-            "citation": citation, "generator": f"bearinglab {bearinglab_version}",
-            "schema_version": SCHEMA_VERSION, "built_at": time.strftime("%Y-%m-%dT%H:%M:%S"),
-            "content_hash": content_hash(digests),
-            "n_recordings": int(meta["recording_id"].nunique()), "n_signals": len(meta),
-            "columns": {c: COLUMNS[c] for c in meta.columns}}
+    return {
+        "dataset": name,
+        "title": f"bearinglab synthetic bearing-fault data set {name}",
+        "license": "CC0-1.0 (synthetic data generated by the user with bearinglab)",
+        "citation": citation,
+        "generator": f"bearinglab {bearinglab_version}",
+        "schema_version": SCHEMA_VERSION,
+        "built_at": time.strftime("%Y-%m-%dT%H:%M:%S"),
+        "content_hash": content_hash(digests),
+        "n_recordings": int(meta["recording_id"].nunique()),
+        "n_signals": len(meta),
+        "columns": {c: COLUMNS[c] for c in meta.columns},
+    }
 
 
 def order_columns(meta):
     """Columns in the order of COLUMNS (the schema's required ones first)."""
     return meta[[c for c in COLUMNS if c in meta.columns]]
-
-

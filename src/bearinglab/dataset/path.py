@@ -50,8 +50,9 @@ class TransferPath:
             try:
                 f, zeta = (float(v) for v in item)
             except (TypeError, ValueError):
-                raise InputError("resonances", item, "pairs (frequency [Hz], damping ratio)"
-                                 ) from None
+                raise InputError(
+                    "resonances", item, "pairs (frequency [Hz], damping ratio)"
+                ) from None
             if not (math.isfinite(f) and f > 0):
                 raise InputError("resonance frequency", f, "a frequency > 0 [Hz]")
             if not (math.isfinite(zeta) and 0 < zeta < 1):
@@ -63,8 +64,12 @@ class TransferPath:
         """Refuse a resonance at or above MAX_FRACTION of the sample rate."""
         for f, _ in self.resonances:
             if f > MAX_FRACTION * sample_rate:
-                raise InputError("resonance frequency", f, f"at most {MAX_FRACTION:g} x the "
-                                 f"sample rate ({MAX_FRACTION * sample_rate:g} Hz)")
+                raise InputError(
+                    "resonance frequency",
+                    f,
+                    f"at most {MAX_FRACTION:g} x the "
+                    f"sample rate ({MAX_FRACTION * sample_rate:g} Hz)",
+                )
 
     def sos(self, sample_rate: float) -> np.ndarray:
         """Second-order sections of the digital path at ``sample_rate`` [Hz]."""
@@ -92,5 +97,7 @@ class TransferPath:
         return y
 
     def to_dict(self) -> dict:
-        return {"resonances_hz": [f for f, _ in self.resonances],
-                "damping_ratios": [z for _, z in self.resonances]}
+        return {
+            "resonances_hz": [f for f, _ in self.resonances],
+            "damping_ratios": [z for _, z in self.resonances],
+        }

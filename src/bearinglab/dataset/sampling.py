@@ -21,8 +21,9 @@ MODELS = ("rigid", "slip")
 LOCATIONS = ("outer", "inner", "ball")
 
 
-def parse_range(name: str, value, *, text: bool = False, positive: bool = False,
-                signed: bool = False):
+def parse_range(
+    name: str, value, *, text: bool = False, positive: bool = False, signed: bool = False
+):
     """("fixed", v) / ("uniform", low, high) / ("choice", [values]) from a value, a pair,
     a list or the command line's text ("V", "LOW:HIGH", "A,B,C").
 
@@ -31,6 +32,7 @@ def parse_range(name: str, value, *, text: bool = False, positive: bool = False,
     >>> parse_range("model", "rigid,slip", text=True)
     ('choice', ['rigid', 'slip'])
     """
+
     def number(v):
         if isinstance(v, bool):
             raise InputError(name, value, "numbers")
@@ -38,10 +40,12 @@ def parse_range(name: str, value, *, text: bool = False, positive: bool = False,
             x = float(v)
         except (TypeError, ValueError):
             raise InputError(name, value, "a number, LOW:HIGH or A,B,C") from None
-        if not math.isfinite(x) or (positive and x <= 0) or (not (positive or signed)
-                                                              and x < 0):
-            raise InputError(name, value, "finite values" if signed else
-                             "values > 0" if positive else "values >= 0")
+        if not math.isfinite(x) or (positive and x <= 0) or (not (positive or signed) and x < 0):
+            raise InputError(
+                name,
+                value,
+                "finite values" if signed else "values > 0" if positive else "values >= 0",
+            )
         return x
 
     def word(v):
@@ -53,7 +57,7 @@ def parse_range(name: str, value, *, text: bool = False, positive: bool = False,
         s = value.strip()
         if not s:
             raise InputError(name, value, "a value, LOW:HIGH or A,B,C", "it is empty")
-        if not text and ":" in s[1:]:     # a leading '-' is a sign, not a range
+        if not text and ":" in s[1:]:  # a leading '-' is a sign, not a range
             parts = s.split(":")
             if len(parts) != 2:
                 raise InputError(name, value, "LOW:HIGH")
@@ -131,47 +135,65 @@ class DatasetSpec:
     parsed: dict = field(default_factory=dict, compare=False, repr=False)
 
     def __post_init__(self) -> None:
-        if isinstance(self.records, bool) or not isinstance(self.records, int) \
-                or self.records < 1:
+        if isinstance(self.records, bool) or not isinstance(self.records, int) or self.records < 1:
             raise InputError("records", self.records, "a whole number >= 1")
-        bearings = self.bearings if isinstance(self.bearings, (list, tuple)) else [
-            self.bearings]
+        bearings = self.bearings if isinstance(self.bearings, (list, tuple)) else [self.bearings]
         if isinstance(self.bearings, str):
             bearings = [b for b in self.bearings.split(",")]
         if not bearings:
             raise InputError("bearings", self.bearings, "at least one bearing")
         p = {"bearings": [_bearing_options(b) for b in bearings]}
-        faults = parse_range("faults", list(self.faults) if isinstance(self.faults, tuple)
-                             else self.faults, text=True)
+        faults = parse_range(
+            "faults",
+            list(self.faults) if isinstance(self.faults, tuple) else self.faults,
+            text=True,
+        )
         names = faults[1] if faults[0] == "choice" else [faults[1]]
         for f in names:
             if f not in FAULTS:
                 raise InputError("faults", f, "some of " + ", ".join(FAULTS))
             if f == "cage":
-                raise InputError("faults", f, "none, outer, inner, ball or compound",
-                                 "the dynamic models have no cage defect model, so no "
-                                 "cage-fault record can be made")
+                raise InputError(
+                    "faults",
+                    f,
+                    "none, outer, inner, ball or compound",
+                    "the dynamic models have no cage defect model, so no "
+                    "cage-fault record can be made",
+                )
         p["faults"] = faults
-        model = parse_range("model", list(self.model) if isinstance(self.model, tuple)
-                            else self.model, text=True)
-        for m in (model[1] if model[0] == "choice" else [model[1]]):
+        model = parse_range(
+            "model", list(self.model) if isinstance(self.model, tuple) else self.model, text=True
+        )
+        for m in model[1] if model[0] == "choice" else [model[1]]:
             if m not in MODELS:
                 raise InputError("model", m, "rigid or slip")
         p["model"] = model
-        for name, positive in (("speed_rpm", True), ("radial_load_n", False),
-                               ("defect_width_mm", True), ("defect_depth_mm", True),
-                               ("waviness_amplitude_um", False), ("waviness_orders", True),
-                               ("ball_size_error_um", False), ("noise_ms2", False),
-                               ("sample_rate_hz", True), ("duration_s", True)):
+        for name, positive in (
+            ("speed_rpm", True),
+            ("radial_load_n", False),
+            ("defect_width_mm", True),
+            ("defect_depth_mm", True),
+            ("waviness_amplitude_um", False),
+            ("waviness_orders", True),
+            ("ball_size_error_um", False),
+            ("noise_ms2", False),
+            ("sample_rate_hz", True),
+            ("duration_s", True),
+        ):
             p[name] = parse_range(name, getattr(self, name), positive=positive)
-        p["defect_position_deg"] = parse_range("defect_position_deg",
-                                               self.defect_position_deg, signed=True)
+        p["defect_position_deg"] = parse_range(
+            "defect_position_deg", self.defect_position_deg, signed=True
+        )
         path = []
         for item in self.resonances:
             if not (isinstance(item, (list, tuple)) and len(item) == 2):
                 raise InputError("resonances", item, "(frequency range [Hz], damping range)")
-            path.append((parse_range("resonance frequency", item[0], positive=True),
-                         parse_range("damping ratio", item[1], positive=True)))
+            path.append(
+                (
+                    parse_range("resonance frequency", item[0], positive=True),
+                    parse_range("damping ratio", item[1], positive=True),
+                )
+            )
         p["resonances"] = path
         _check_path(path, p["sample_rate_hz"])
         object.__setattr__(self, "parsed", p)
@@ -189,8 +211,11 @@ def _check_path(path, rates) -> None:
     for f, z in path:
         top = f[1] if f[0] == "fixed" else (f[2] if f[0] == "uniform" else max(f[1]))
         if top > MAX_FRACTION * lowest:
-            raise InputError("resonance frequency", top, f"at most {MAX_FRACTION:g} x the "
-                             f"lowest sample rate ({MAX_FRACTION * lowest:g} Hz)")
+            raise InputError(
+                "resonance frequency",
+                top,
+                f"at most {MAX_FRACTION:g} x the lowest sample rate ({MAX_FRACTION * lowest:g} Hz)",
+            )
         zeta = z[2] if z[0] == "uniform" else (max(z[1]) if z[0] == "choice" else z[1])
         if zeta >= 1:
             raise InputError("damping ratio", zeta, "ratios in (0, 1)")
@@ -213,23 +238,31 @@ def draw_record(spec: DatasetSpec, seed: int, index: int) -> dict:
         width, depth = draw(p["defect_width_mm"], rng), draw(p["defect_depth_mm"], rng)
         if part == "outer":
             angle = draw(p["defect_position_deg"], rng)
-        else:    # inner ring angle at t = 0, or the ball's spin phase: anywhere
+        else:  # inner ring angle at t = 0, or the ball's spin phase: anywhere
             angle = float(rng.uniform(0.0, 360.0))
-        defects.append({"location": part, "width_mm": width, "depth_mm": depth,
-                        "angle_deg": angle})
-    record = {"bearing": bearing, "fault": fault, "defects": defects,
-              "speed_rpm": draw(p["speed_rpm"], rng),
-              "radial_load_n": draw(p["radial_load_n"], rng),
-              "model": draw(p["model"], rng),
-              "sample_rate_hz": draw(p["sample_rate_hz"], rng),
-              "duration_s": draw(p["duration_s"], rng),
-              "noise_ms2": draw(p["noise_ms2"], rng),
-              "ball_size_error_um": draw(p["ball_size_error_um"], rng),
-              "waviness_amplitude_um": draw(p["waviness_amplitude_um"], rng),
-              "resonances": [(draw(f, rng), draw(z, rng)) for f, z in p["resonances"]]}
-    record["waviness"] = [{"race": race, "order": round(draw(p["waviness_orders"], rng)),
-                           "phase_deg": float(rng.uniform(0.0, 360.0))}
-                          for race in ("outer", "inner")]
-    record["ball_index"] = int(rng.integers(1 << 30))   # which ball (mod Z) has the defect
-    record["seed"] = int(rng.integers(1 << 31))         # noise and ball-size errors
+        defects.append({"location": part, "width_mm": width, "depth_mm": depth, "angle_deg": angle})
+    record = {
+        "bearing": bearing,
+        "fault": fault,
+        "defects": defects,
+        "speed_rpm": draw(p["speed_rpm"], rng),
+        "radial_load_n": draw(p["radial_load_n"], rng),
+        "model": draw(p["model"], rng),
+        "sample_rate_hz": draw(p["sample_rate_hz"], rng),
+        "duration_s": draw(p["duration_s"], rng),
+        "noise_ms2": draw(p["noise_ms2"], rng),
+        "ball_size_error_um": draw(p["ball_size_error_um"], rng),
+        "waviness_amplitude_um": draw(p["waviness_amplitude_um"], rng),
+        "resonances": [(draw(f, rng), draw(z, rng)) for f, z in p["resonances"]],
+    }
+    record["waviness"] = [
+        {
+            "race": race,
+            "order": round(draw(p["waviness_orders"], rng)),
+            "phase_deg": float(rng.uniform(0.0, 360.0)),
+        }
+        for race in ("outer", "inner")
+    ]
+    record["ball_index"] = int(rng.integers(1 << 30))  # which ball (mod Z) has the defect
+    record["seed"] = int(rng.integers(1 << 31))  # noise and ball-size errors
     return record

@@ -31,8 +31,10 @@ def normalise_dashes(text: str) -> str:
 
 
 def _foreign_digit(raw: str) -> bool:
-    return any(ch not in ASCII_DIGITS and unicodedata.category(ch) == "Nd"
-               for ch in unicodedata.normalize("NFKC", raw))
+    return any(
+        ch not in ASCII_DIGITS and unicodedata.category(ch) == "Nd"
+        for ch in unicodedata.normalize("NFKC", raw)
+    )
 
 
 def nfkc_chars(text: str) -> list[tuple[int, str]]:
@@ -57,9 +59,13 @@ def nfkc_chars(text: str) -> list[tuple[int, str]]:
                 j = i
                 while j < len(text) and _foreign_digit(text[j]):
                     j += 1
-                raise ReadError(text, text[i:j] or raw,
-                                "digits must be the ASCII digits 0-9 (full-width digits are "
-                                "accepted; other scripts' digits are not)", progress=len(out))
+                raise ReadError(
+                    text,
+                    text[i:j] or raw,
+                    "digits must be the ASCII digits 0-9 (full-width digits are "
+                    "accepted; other scripts' digits are not)",
+                    progress=len(out),
+                )
             out.append((i, ch))
     return out
 

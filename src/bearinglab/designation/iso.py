@@ -43,9 +43,7 @@ from .model import Designation
 
 __all__ = ["parse_iso"]
 
-_BASIC_RE = re.compile(
-    r"(?P<pre>[A-Z]*) ?(?P<digits>[0-9]+)(?:/(?P<d>[0-9]+(?:[.,][0-9]+)?))?"
-)
+_BASIC_RE = re.compile(r"(?P<pre>[A-Z]*) ?(?P<digits>[0-9]+)(?:/(?P<d>[0-9]+(?:[.,][0-9]+)?))?")
 #: Separators with no suffix between them, or after the last one ("6205--2RS", "6205-").
 _EMPTY_GROUP_RE = re.compile(r"[-/](?: ?[-/])+| ?[-/] ?$")
 _GROUP_RE = re.compile(r"[^-/ ]+")
@@ -221,8 +219,7 @@ def parse_iso(text: str) -> Designation:
             )
         for code, _ in decoded:
             if code in seen:
-                raise ReadError(text, code, "repeated suffix: the code is written twice",
-                                g.start())
+                raise ReadError(text, code, "repeated suffix: the code is written twice", g.start())
             seen.add(code)
         groups.append(decoded)
     return _build(text, fam, pre, digits, slash, bore_text, bore_code, bore_mm, groups)

@@ -43,7 +43,23 @@ from .recording import analyze_file
 from .result import Diagnosis, measured_ball_defect_frequency, peak_label
 from .verdict import NO_FAULT
 
-__all__ = ["COUNT", "DEFAULT_METHODS", "FALSE_ALARM", "FAMILIES", "HARMONICS",
-           "MAX_FREQUENCY_FACTOR", "METHODS", "NO_FAULT", "PREFERRED_CHANNELS",
-           "SIMULATED_METHODS", "TOLERANCES", "BenchmarkResult", "Diagnosis", "analyze_file",
-           "analyze_signal", "measured_ball_defect_frequency", "peak_label", "run_benchmark"]
+__all__ = [
+    "COUNT",
+    "DEFAULT_METHODS",
+    "FALSE_ALARM",
+    "FAMILIES",
+    "HARMONICS",
+    "MAX_FREQUENCY_FACTOR",
+    "METHODS",
+    "NO_FAULT",
+    "PREFERRED_CHANNELS",
+    "SIMULATED_METHODS",
+    "TOLERANCES",
+    "BenchmarkResult",
+    "Diagnosis",
+    "analyze_file",
+    "analyze_signal",
+    "measured_ball_defect_frequency",
+    "peak_label",
+    "run_benchmark",
+]

@@ -66,15 +66,16 @@ def _samples(signal_or_array, sample_rate, channel):
             except (TypeError, ValueError):
                 fs = math.nan
             if not math.isclose(fs, signal.sample_rate, rel_tol=1e-9):
-                raise InputError("sample_rate", sample_rate,
-                                 f"None or the record's own rate {signal.sample_rate:g} Hz")
+                raise InputError(
+                    "sample_rate",
+                    sample_rate,
+                    f"None or the record's own rate {signal.sample_rate:g} Hz",
+                )
         if channel is None:
-            channel = next((c for c in PREFERRED_CHANNELS if c in signal.channels),
-                           signal.names[0])
+            channel = next((c for c in PREFERRED_CHANNELS if c in signal.channels), signal.names[0])
         return signal.channel(channel), signal.sample_rate, channel
     if channel is not None:
-        raise InputError("channel", channel, "None for a bare array (name channels of a "
-                         "Signal)")
+        raise InputError("channel", channel, "None for a bare array (name channels of a Signal)")
     if sample_rate is None:
         raise InputError("sample_rate", None, "the sample rate in Hz of the array")
     from ..signal.spectra import rate, samples
@@ -102,9 +103,12 @@ def _speed(frequencies, shaft_speed, speed_range, x, fs, warnings):
     elif isinstance(frequencies, BallBearing):
         bearing, nominal, outer, alpha = frequencies, None, False, None
     else:
-        raise InputError("frequencies", type(frequencies).__name__,
-                         "bearinglab.kinematics.DefectFrequencies (defect_frequencies()) or "
-                         "a BallBearing with shaft_speed")
+        raise InputError(
+            "frequencies",
+            type(frequencies).__name__,
+            "bearinglab.kinematics.DefectFrequencies (defect_frequencies()) or "
+            "a BallBearing with shaft_speed",
+        )
     auto = isinstance(shaft_speed, str)
     if auto and shaft_speed.strip().lower() != "auto":
         raise InputError("shaft_speed", shaft_speed, 'a speed > 0 rad/s or "auto"')
@@ -124,36 +128,48 @@ def _speed(frequencies, shaft_speed, speed_range, x, fs, warnings):
     elif nominal is not None:
         low, high = (nominal / (2 * math.pi) * (1 + s) for s in (-SEARCH, SEARCH))
     else:
-        raise InputError("speed_range", None, 'a (low, high) range in rad/s for shaft_speed="auto"'
-                         " without a nominal speed")
+        raise InputError(
+            "speed_range",
+            None,
+            'a (low, high) range in rad/s for shaft_speed="auto" without a nominal speed',
+        )
     if high >= fs / 2:
         raise InputError("speed_range", speed_range, f"speeds below Nyquist ({fs / 2:g} Hz)")
     found = shaft_frequency(x, fs, low, high)
-    record = {"given_rpm": None if nominal is None else nominal * 30 / math.pi,
-              **found.to_dict()}
+    record = {"given_rpm": None if nominal is None else nominal * 30 / math.pi, **found.to_dict()}
     if auto:
         if found.frequency is None:
-            raise InputError("shaft_speed", "auto",
-                             f"a record whose shaft line stands out between {60 * low:.6g} and "
-                             f"{60 * high:.6g} rpm, or a speed", hint="no shaft line found")
+            raise InputError(
+                "shaft_speed",
+                "auto",
+                f"a record whose shaft line stands out between {60 * low:.6g} and "
+                f"{60 * high:.6g} rpm, or a speed",
+                hint="no shaft line found",
+            )
         used, record["source"] = 2 * math.pi * found.frequency, "signal"
     else:
         used, record["source"] = nominal, "given"
         if found.frequency is None:
-            warnings.append(f"no shaft line found within {100 * SEARCH:g} % of the given "
-                            f"{nominal * 30 / math.pi:.6g} rpm: the speed is not checked")
+            warnings.append(
+                f"no shaft line found within {100 * SEARCH:g} % of the given "
+                f"{nominal * 30 / math.pi:.6g} rpm: the speed is not checked"
+            )
         elif found.sub_multiple:
             k = found.sub_multiple
-            warnings.append(f"the shaft series near {nominal * 30 / math.pi:.6g} rpm is also a "
-                            f"series at 1/{k} of it ({60 * found.frequency / k:.6g} rpm): "
-                            f"the lines may be harmonic {k} of the real shaft - check "
-                            f"the speed and the sample rate (a rate {k} times too low reads "
-                            f"every frequency {k} times too high)")
+            warnings.append(
+                f"the shaft series near {nominal * 30 / math.pi:.6g} rpm is also a "
+                f"series at 1/{k} of it ({60 * found.frequency / k:.6g} rpm): "
+                f"the lines may be harmonic {k} of the real shaft - check "
+                f"the speed and the sample rate (a rate {k} times too low reads "
+                f"every frequency {k} times too high)"
+            )
         elif abs(found.frequency / (nominal / (2 * math.pi)) - 1) > SPEED_WARNING:
-            warnings.append(f"the signal shows the shaft at {60 * found.frequency:.6g} rpm, "
-                            f"{100 * (found.frequency / (nominal / (2 * math.pi)) - 1):+.1f} % "
-                            f"from the given {nominal * 30 / math.pi:.6g} rpm (tolerance "
-                            f"{100 * SPEED_WARNING:g} %): check the speed and the sample rate")
+            warnings.append(
+                f"the signal shows the shaft at {60 * found.frequency:.6g} rpm, "
+                f"{100 * (found.frequency / (nominal / (2 * math.pi)) - 1):+.1f} % "
+                f"from the given {nominal * 30 / math.pi:.6g} rpm (tolerance "
+                f"{100 * SPEED_WARNING:g} %): check the speed and the sample rate"
+            )
     record["used_rpm"] = used * 30 / math.pi
     kin = defect_frequencies(bearing, used, outer_rotating=outer, contact_angle=alpha)
     measured = found.frequency if found.frequency is not None else kin.shaft_hz
@@ -166,33 +182,59 @@ def _checks(kin, n, fs, max_frequency, harmonics, warnings):
     ftf, bpfo = kin.hz("ftf"), kin.hz("bpfo")
     duration = n / fs
     if duration * ftf < MIN_CAGE_REVOLUTIONS:
-        raise InputError("signal_or_array", f"{n} samples ({duration:.4g} s)",
-                         f"at least {MIN_CAGE_REVOLUTIONS / ftf:.4g} s "
-                         f"({MIN_CAGE_REVOLUTIONS:g} cage revolutions at FTF = {ftf:.4g} Hz)")
+        raise InputError(
+            "signal_or_array",
+            f"{n} samples ({duration:.4g} s)",
+            f"at least {MIN_CAGE_REVOLUTIONS / ftf:.4g} s "
+            f"({MIN_CAGE_REVOLUTIONS:g} cage revolutions at FTF = {ftf:.4g} Hz)",
+        )
     if bpfo >= nyquist:
-        raise InputError("sample_rate", fs, f"a sample rate above 2 x BPFO = {2 * bpfo:.6g} Hz "
-                         f"(BPFO {bpfo:.6g} Hz is above the Nyquist frequency {nyquist:g} Hz)")
+        raise InputError(
+            "sample_rate",
+            fs,
+            f"a sample rate above 2 x BPFO = {2 * bpfo:.6g} Hz "
+            f"(BPFO {bpfo:.6g} Hz is above the Nyquist frequency {nyquist:g} Hz)",
+        )
     if duration * ftf < COARSE_CAGE_REVOLUTIONS:
-        warnings.append(f"the record holds {duration * ftf:.3g} cage revolutions: the "
-                        f"resolution {1 / duration:.3g} Hz is coarse for the cage line "
-                        f"(FTF {ftf:.4g} Hz) and the cage sidebands of ball lines")
+        warnings.append(
+            f"the record holds {duration * ftf:.3g} cage revolutions: the "
+            f"resolution {1 / duration:.3g} Hz is coarse for the cage line "
+            f"(FTF {ftf:.4g} Hz) and the cage sidebands of ball lines"
+        )
     for name in ("bpfo", "bpfi", "ball_defect"):
         f = kin.hz(name)
         wanted = min(harmonics, 3) * f + (2 * kin.shaft_hz if name == "bpfi" else 0.0)
         if wanted > nyquist:
-            warnings.append(f"{name.upper()} ({f:.5g} Hz): fewer than 3 harmonics with their "
-                            f"sidebands lie below the Nyquist frequency {nyquist:g} Hz")
+            warnings.append(
+                f"{name.upper()} ({f:.5g} Hz): fewer than 3 harmonics with their "
+                f"sidebands lie below the Nyquist frequency {nyquist:g} Hz"
+            )
         elif wanted > max_frequency:
-            warnings.append(f"{name.upper()} ({f:.5g} Hz): fewer than 3 harmonics lie below the "
-                            f"search limit {max_frequency:.5g} Hz")
+            warnings.append(
+                f"{name.upper()} ({f:.5g} Hz): fewer than 3 harmonics lie below the "
+                f"search limit {max_frequency:.5g} Hz"
+            )
 
 
-def analyze_signal(signal_or_array, sample_rate, frequencies, *, channel: str | None = None,
-                   methods=None, band=None, tolerances=None,
-                   false_alarm: float = FALSE_ALARM, shaft_speed=None, speed_range=None,
-                   supply_frequency: float | None = None, mesh_frequency: float | None = None,
-                   max_frequency: float | None = None, resolution: float | None = None,
-                   count: int = COUNT, harmonics: int = HARMONICS) -> Diagnosis:
+def analyze_signal(
+    signal_or_array,
+    sample_rate,
+    frequencies,
+    *,
+    channel: str | None = None,
+    methods=None,
+    band=None,
+    tolerances=None,
+    false_alarm: float = FALSE_ALARM,
+    shaft_speed=None,
+    speed_range=None,
+    supply_frequency: float | None = None,
+    mesh_frequency: float | None = None,
+    max_frequency: float | None = None,
+    resolution: float | None = None,
+    count: int = COUNT,
+    harmonics: int = HARMONICS,
+) -> Diagnosis:
     """Diagnose a vibration record: which fault families stand out of the noise.
 
     See the package docstring (:mod:`bearinglab.diagnosis`) for the method and its
@@ -276,8 +318,11 @@ def analyze_signal(signal_or_array, sample_rate, frequencies, *, channel: str | 
     pfa = _positive("false_alarm", false_alarm, "a probability in (0, 0.5)", optional=False)
     if not pfa < 0.5:
         raise InputError("false_alarm", false_alarm, "a probability in (0, 0.5)")
-    if isinstance(harmonics, bool) or not isinstance(harmonics, (int, np.integer)) \
-            or not 1 <= harmonics <= 50:
+    if (
+        isinstance(harmonics, bool)
+        or not isinstance(harmonics, (int, np.integer))
+        or not 1 <= harmonics <= 50
+    ):
         raise InputError("harmonics", harmonics, "an integer from 1 to 50")
     if isinstance(count, bool) or not isinstance(count, (int, np.integer)) or count < 1:
         raise InputError("count", count, "an integer >= 1")
@@ -291,11 +336,13 @@ def analyze_signal(signal_or_array, sample_rate, frequencies, *, channel: str | 
     if max_frequency is None:
         max_frequency = min(MAX_FREQUENCY_FACTOR * largest, nyquist)
     else:
-        max_frequency = _positive("max_frequency", max_frequency,
-                                  f"a frequency in (0, {nyquist:g}] Hz (Nyquist)", False)
+        max_frequency = _positive(
+            "max_frequency", max_frequency, f"a frequency in (0, {nyquist:g}] Hz (Nyquist)", False
+        )
         if max_frequency > nyquist:
-            raise InputError("max_frequency", max_frequency,
-                             f"a frequency in (0, {nyquist:g}] Hz (Nyquist)")
+            raise InputError(
+                "max_frequency", max_frequency, f"a frequency in (0, {nyquist:g}] Hz (Nyquist)"
+            )
     _checks(kin, x.size, fs, max_frequency, harmonics, warnings)
     if isinstance(band, str):
         if band.strip().lower() != "auto":
@@ -309,48 +356,82 @@ def analyze_signal(signal_or_array, sample_rate, frequencies, *, channel: str | 
     if resolution is None:
         resolution = max(RESOLUTION_FTF * freqs["ftf"], floor_res)
     else:
-        resolution = _positive("resolution", resolution, f"a resolution >= {floor_res:.4g} "
-                               "Hz (1 / record length)", False)
+        resolution = _positive(
+            "resolution",
+            resolution,
+            f"a resolution >= {floor_res:.4g} Hz (1 / record length)",
+            False,
+        )
         if resolution < floor_res * (1 - 1e-9):
-            raise InputError("resolution", resolution,
-                             f"a resolution >= {floor_res:.4g} Hz (1 / record length)")
+            raise InputError(
+                "resolution", resolution, f"a resolution >= {floor_res:.4g} Hz (1 / record length)"
+            )
     spectra = [with_z(method_spectrum(m, x, fs, resolution, band, largest)) for m in names]
     fams = families(freqs, windows)
-    valid, masked = discrete_mask(spectra, {"shaft": shaft_hz, "supply": supply,
-                                            "mesh": mesh}, max_frequency)
-    decision = decide(spectra, fams, valid, max_frequency, harmonics, pfa,
-                      (shaft_hz, freqs["ftf"]))
+    valid, masked = discrete_mask(
+        spectra, {"shaft": shaft_hz, "supply": supply, "mesh": mesh}, max_frequency
+    )
+    decision = decide(spectra, fams, valid, max_frequency, harmonics, pfa, (shaft_hz, freqs["ftf"]))
     faults = tuple(decision["faults"])
-    verdict = NO_FAULT if not faults else (faults[0] if len(faults) == 1
-                                           else "compound: " + " + ".join(faults))
+    verdict = (
+        NO_FAULT
+        if not faults
+        else (faults[0] if len(faults) == 1 else "compound: " + " + ".join(faults))
+    )
     table = {}
     for fam in fams:
         method, test = decision["tests"][fam.name]
         table[fam.name] = {
-            "p_value": test.p_value, "significance": test.significance,
+            "p_value": test.p_value,
+            "significance": test.significance,
             "support_significance": -test.support_log_p / math.log(10.0),
             "harmonic_significance": -test.harmonic_log_p / math.log(10.0),
             "passed": fam.name in faults,
-            "method": method, "fundamental_hz": test.fundamental_hz, "slip": test.slip,
-            "kinematic_hz": fam.frequency, "tolerance_below": fam.below,
+            "method": method,
+            "fundamental_hz": test.fundamental_hz,
+            "slip": test.slip,
+            "kinematic_hz": fam.frequency,
+            "tolerance_below": fam.below,
             "tolerance_above": fam.above,
-            "lines": [{"kind": ln.kind, "n": ln.n, "k": ln.k, "expected_hz": ln.expected_hz,
-                       "frequency_hz": ln.frequency_hz, "z": ln.z,
-                       "significance": -ln.log_p / math.log(10.0)}
-                      for ln in test.lines if ln.log_p < math.log(LINE_ALPHA)],
+            "lines": [
+                {
+                    "kind": ln.kind,
+                    "n": ln.n,
+                    "k": ln.k,
+                    "expected_hz": ln.expected_hz,
+                    "frequency_hz": ln.frequency_hz,
+                    "z": ln.z,
+                    "significance": -ln.log_p / math.log(10.0),
+                }
+                for ln in test.lines
+                if ln.log_p < math.log(LINE_ALPHA)
+            ],
         }
     shown_method = table[faults[0]]["method"] if faults else names[0]
     shown = next(s for s in spectra if s.method == shown_method)
     peaks = label_peaks(shown, decision, fams, masked, count, max_frequency)
     reason = _reason(faults, table, decision, pfa)
     return Diagnosis(
-        verdict=verdict, faults=faults, families=table, false_alarm=pfa,
+        verdict=verdict,
+        faults=faults,
+        families=table,
+        false_alarm=pfa,
         alpha=decision["alpha"],
         spectrum=EnvelopeSpectrum(shown.frequency, shown.amplitude, shown.band),
-        spectra={s.method: s for s in spectra}, peaks=tuple(peaks), frequencies=kin,
-        speed=speed, sample_rate=fs, channel=channel, max_frequency=float(max_frequency),
-        methods=names, tolerances=windows, harmonics=int(harmonics),
-        warnings=tuple(warnings), reason=reason, modulation=tuple(decision["modulation"]))
+        spectra={s.method: s for s in spectra},
+        peaks=tuple(peaks),
+        frequencies=kin,
+        speed=speed,
+        sample_rate=fs,
+        channel=channel,
+        max_frequency=float(max_frequency),
+        methods=names,
+        tolerances=windows,
+        harmonics=int(harmonics),
+        warnings=tuple(warnings),
+        reason=reason,
+        modulation=tuple(decision["modulation"]),
+    )
 
 
 def _tolerances(overrides):
@@ -362,23 +443,35 @@ def _reason(faults, table, decision, pfa) -> str:
     threshold = significance(decision["alpha"])
     if not faults:
         best = max(FAMILIES, key=lambda f: table[f]["significance"])
-        return (f"no family's harmonic series stands out of the noise floor at a false-alarm "
-                f"probability of {pfa:g} (threshold {threshold:.3g}; best: {best} "
-                f"{table[best]['significance']:.3g} by {table[best]['method']})")
+        return (
+            f"no family's harmonic series stands out of the noise floor at a false-alarm "
+            f"probability of {pfa:g} (threshold {threshold:.3g}; best: {best} "
+            f"{table[best]['significance']:.3g} by {table[best]['method']})"
+        )
     parts = []
     for f in faults:
         t = table[f]
         found = t["lines"]
         harm = sorted({ln["n"] for ln in found if ln["kind"] == "harmonic"})
         side = sum(ln["kind"] == "sideband" for ln in found)
-        parts.append(f"{f}: harmonics {harm} of {FREQUENCY[f]} {t['fundamental_hz']:.5g} Hz "
-                     f"({100 * t['slip']:+.2f} %), {side} sidebands, significance "
-                     f"{t['significance']:.3g} > {threshold:.3g} ({t['method']}, "
-                     f"{DESCRIPTIONS[t['method']].split(' (')[0]})")
+        parts.append(
+            f"{f}: harmonics {harm} of {FREQUENCY[f]} {t['fundamental_hz']:.5g} Hz "
+            f"({100 * t['slip']:+.2f} %), {side} sidebands, significance "
+            f"{t['significance']:.3g} > {threshold:.3g} ({t['method']}, "
+            f"{DESCRIPTIONS[t['method']].split(' (')[0]})"
+        )
     if decision["modulation"]:
         parts.append("FTF lines counted as the cage-rate modulation of the fault")
     return "; ".join(parts)
 
 
-__all__ = ["COUNT", "DEFAULT_METHODS", "FALSE_ALARM", "HARMONICS", "MAX_FREQUENCY_FACTOR",
-           "METHODS", "SIMULATED_METHODS", "analyze_signal"]
+__all__ = [
+    "COUNT",
+    "DEFAULT_METHODS",
+    "FALSE_ALARM",
+    "HARMONICS",
+    "MAX_FREQUENCY_FACTOR",
+    "METHODS",
+    "SIMULATED_METHODS",
+    "analyze_signal",
+]

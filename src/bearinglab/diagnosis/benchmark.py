@@ -22,8 +22,14 @@ from ..errors import InputError
 from .methods import parse_methods
 
 #: Label in labels.csv -> the verdict that is right.
-EXPECTED = {"normal": "no fault detected", "healthy": "no fault detected",
-            "inner": "inner_race", "outer": "outer_race", "ball": "ball", "cage": "cage"}
+EXPECTED = {
+    "normal": "no fault detected",
+    "healthy": "no fault detected",
+    "inner": "inner_race",
+    "outer": "outer_race",
+    "ball": "ball",
+    "cage": "cage",
+}
 #: Rows and columns of the confusion matrix.
 CLASSES = ("no fault detected", "outer_race", "inner_race", "ball", "cage", "compound")
 
@@ -53,13 +59,18 @@ def _bearing(row: dict):
     if row.get("designation"):
         return bearing_from_designation(row["designation"].strip())[0]
     try:
-        return BallBearing(ball_count=int(float(row["balls"])),
-                           ball_diameter=float(row["ball_diameter_mm"]) * 1e-3,
-                           pitch_diameter=float(row["pitch_diameter_mm"]) * 1e-3,
-                           contact_angle=math.radians(float(row.get("contact_angle_deg") or 0)))
+        return BallBearing(
+            ball_count=int(float(row["balls"])),
+            ball_diameter=float(row["ball_diameter_mm"]) * 1e-3,
+            pitch_diameter=float(row["pitch_diameter_mm"]) * 1e-3,
+            contact_angle=math.radians(float(row.get("contact_angle_deg") or 0)),
+        )
     except (KeyError, TypeError, ValueError):
-        raise InputError("labels.csv", row.get("file"), "a designation, or balls, "
-                         "ball_diameter_mm and pitch_diameter_mm") from None
+        raise InputError(
+            "labels.csv",
+            row.get("file"),
+            "a designation, or balls, ball_diameter_mm and pitch_diameter_mm",
+        ) from None
 
 
 def _category(verdict: str) -> str:
@@ -72,9 +83,13 @@ def run_record(folder: str, row: dict, methods: tuple, keep_spectra: bool = True
     from ..signal import read_signal
     from .analysis import analyze_signal
 
-    out = {"file": row["file"], "fault": row["fault"].strip().lower(),
-           "smith_randall_2015": row.get("smith_randall_2015") or None,
-           "expected": EXPECTED[row["fault"].strip().lower()], "error": None}
+    out = {
+        "file": row["file"],
+        "fault": row["fault"].strip().lower(),
+        "smith_randall_2015": row.get("smith_randall_2015") or None,
+        "expected": EXPECTED[row["fault"].strip().lower()],
+        "error": None,
+    }
     try:
         fs = float(row["sample_rate_hz"]) if row.get("sample_rate_hz") else None
         signal = read_signal(Path(folder) / row["file"], sample_rate=fs)
@@ -83,8 +98,11 @@ def run_record(folder: str, row: dict, methods: tuple, keep_spectra: bool = True
             channel = next((c for c in signal.names if c.rsplit(".", 1)[-1] == channel), channel)
         speed = float(row["speed_rpm"]) * math.pi / 30
         kin = defect_frequencies(_bearing(row), speed)
-        runs = {"+".join(methods): methods} if len(methods) == 1 else \
-            {**{m: (m,) for m in methods}, "+".join(methods): methods}
+        runs = (
+            {"+".join(methods): methods}
+            if len(methods) == 1
+            else {**{m: (m,) for m in methods}, "+".join(methods): methods}
+        )
         for name, ms in runs.items():
             d = analyze_signal(signal, None, kin, channel=channel, methods=ms)
             out[name] = d.verdict
@@ -123,7 +141,7 @@ class BenchmarkResult:
     def columns(self) -> list[str]:
         """Verdict columns: each method, then the methods together."""
         together = "+".join(self.methods)
-        return ([*self.methods, together] if len(self.methods) > 1 else [together])
+        return [*self.methods, together] if len(self.methods) > 1 else [together]
 
     def confusion(self, column: str | None = None) -> dict:
         """Confusion matrix of ``column`` (default: the methods together): expected ->
@@ -147,21 +165,31 @@ class BenchmarkResult:
     def to_dict(self) -> dict:
         """JSON-ready summary and per-record table."""
         cols = self.columns
-        return {"folder": self.folder, "methods": list(self.methods), "columns": cols,
-                "records": [{k: v for k, v in r.items() if k != "diagnosis"}
-                            for r in self.records],
-                "right": {c: sum(r.get(c) == r["expected"] for r in self.records)
-                          for c in cols},
-                "total": len(self.records),
-                "confusion": {c: self.confusion(c) for c in cols},
-                "recall": {c: self.recall(c) for c in cols}}
+        return {
+            "folder": self.folder,
+            "methods": list(self.methods),
+            "columns": cols,
+            "records": [{k: v for k, v in r.items() if k != "diagnosis"} for r in self.records],
+            "right": {c: sum(r.get(c) == r["expected"] for r in self.records) for c in cols},
+            "total": len(self.records),
+            "confusion": {c: self.confusion(c) for c in cols},
+            "recall": {c: self.recall(c) for c in cols},
+        }
 
     def to_pandas(self):
         """Per-record table (one row per record)."""
         import pandas as pd
 
-        keys = ["file", "fault", "smith_randall_2015", "expected", *self.columns, "right",
-                "measured_rpm", "error"]
+        keys = [
+            "file",
+            "fault",
+            "smith_randall_2015",
+            "expected",
+            *self.columns,
+            "right",
+            "measured_rpm",
+            "error",
+        ]
         return pd.DataFrame([{k: r.get(k) for k in keys} for r in self.records], columns=keys)
 
     def plot(self, ax=None, column: str | None = None):
@@ -196,17 +224,33 @@ class BenchmarkResult:
 
         d = self.to_dict()
         cols = self.columns
-        summary = table(["", *cols], [["right", *[f"{d['right'][c]} / {d['total']}"
-                                                  for c in cols]]] +
-                        [[f"recall {k}", *[d["recall"][c].get(k) for c in cols]]
-                         for k in d["recall"][cols[-1]]], "Summary")
-        rows = [[r["file"], r["fault"], r["smith_randall_2015"] or "",
-                 *[r.get(c) or r.get("error") for c in cols], "yes" if r["right"] else "no"]
-                for r in self.records]
-        body = [paragraph(f"Folder {self.folder}; methods {', '.join(self.methods)}."), summary,
-                figure(self.plot()[0], "Confusion matrix (methods together)", 60),
-                table(["file", "label", "Smith & Randall", *cols, "right"], rows, "Records",
-                      numeric=())]
+        summary = table(
+            ["", *cols],
+            [["right", *[f"{d['right'][c]} / {d['total']}" for c in cols]]]
+            + [
+                [f"recall {k}", *[d["recall"][c].get(k) for c in cols]]
+                for k in d["recall"][cols[-1]]
+            ],
+            "Summary",
+        )
+        rows = [
+            [
+                r["file"],
+                r["fault"],
+                r["smith_randall_2015"] or "",
+                *[r.get(c) or r.get("error") for c in cols],
+                "yes" if r["right"] else "no",
+            ]
+            for r in self.records
+        ]
+        body = [
+            paragraph(f"Folder {self.folder}; methods {', '.join(self.methods)}."),
+            summary,
+            figure(self.plot()[0], "Confusion matrix (methods together)", 60),
+            table(
+                ["file", "label", "Smith & Randall", *cols, "right"], rows, "Records", numeric=()
+            ),
+        ]
         for r in self.records:
             diag = self.diagnoses.get(r["file"])
             body.append(f"<h3>{r['file']}: {r['verdict']} (label {r['fault']})</h3>")
@@ -223,8 +267,9 @@ class BenchmarkResult:
         return write_atomically(path, lambda tmp: Path(tmp).write_text(text, encoding="utf-8"))
 
 
-def run_benchmark(folder, methods=None, jobs: int = 1, progress=None,
-                  keep_spectra: bool = True) -> BenchmarkResult:
+def run_benchmark(
+    folder, methods=None, jobs: int = 1, progress=None, keep_spectra: bool = True
+) -> BenchmarkResult:
     """Diagnose every record of ``folder/labels.csv``.
 
     Parameters
@@ -261,8 +306,10 @@ def run_benchmark(folder, methods=None, jobs: int = 1, progress=None,
         import concurrent.futures
 
         with concurrent.futures.ProcessPoolExecutor(max_workers=jobs) as pool:
-            futures = {pool.submit(run_record, str(folder), row, names, keep_spectra): i
-                       for i, row in enumerate(rows)}
+            futures = {
+                pool.submit(run_record, str(folder), row, names, keep_spectra): i
+                for i, row in enumerate(rows)
+            }
             for done, future in enumerate(concurrent.futures.as_completed(futures), 1):
                 results[futures[future]] = future.result()
                 if progress:

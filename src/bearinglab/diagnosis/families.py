@@ -52,11 +52,19 @@ FAMILIES = ("outer_race", "inner_race", "ball", "cage")
 #: Family -> name of its kinematic frequency (bearinglab.kinematics names).
 FREQUENCY = {"outer_race": "bpfo", "inner_race": "bpfi", "ball": "ball_defect", "cage": "ftf"}
 #: Family -> (modulating frequency name, sideband orders either side).
-SIDEBANDS = {"outer_race": ("shaft", 2), "inner_race": ("shaft", 2), "ball": ("ftf", 2),
-             "cage": (None, 0)}
+SIDEBANDS = {
+    "outer_race": ("shaft", 2),
+    "inner_race": ("shaft", 2),
+    "ball": ("ftf", 2),
+    "cage": (None, 0),
+}
 #: Default tolerance windows (below, above), fractions of the kinematic value.
-TOLERANCES = {"outer_race": (0.02, 0.02), "inner_race": (0.02, 0.02), "ball": (0.07, 0.02),
-              "cage": (0.02, 0.02)}
+TOLERANCES = {
+    "outer_race": (0.02, 0.02),
+    "inner_race": (0.02, 0.02),
+    "ball": (0.07, 0.02),
+    "cage": (0.02, 0.02),
+}
 #: Family -> sideband orders counted with its harmonics when asking whether the series
 #: stands without its sidebands: the first sidebands where the load zone modulates the
 #: defect deeply, once per revolution of what carries it (inner race: shaft; ball: cage;
@@ -64,10 +72,19 @@ TOLERANCES = {"outer_race": (0.02, 0.02), "inner_race": (0.02, 0.02), "ball": (0
 #: their sidebands; none for the outer race, whose defect does not move.
 GATE_ORDERS = {"outer_race": 0, "inner_race": 1, "ball": 1, "cage": 0}
 #: Keys accepted for a family in ``tolerances`` (JSON and CLI spellings too).
-ALIASES = {"outer_race": "outer_race", "outer": "outer_race", "bpfo": "outer_race",
-           "inner_race": "inner_race", "inner": "inner_race", "bpfi": "inner_race",
-           "ball": "ball", "bsf": "ball", "ball_defect": "ball", "cage": "cage",
-           "ftf": "cage"}
+ALIASES = {
+    "outer_race": "outer_race",
+    "outer": "outer_race",
+    "bpfo": "outer_race",
+    "inner_race": "inner_race",
+    "inner": "inner_race",
+    "bpfi": "inner_race",
+    "ball": "ball",
+    "bsf": "ball",
+    "ball_defect": "ball",
+    "cage": "cage",
+    "ftf": "cage",
+}
 #: Highest harmonic order read per family (the search stops at the upper frequency too).
 HARMONICS = 8
 
@@ -89,9 +106,13 @@ class Family:
     def to_dict(self) -> dict:
         """JSON form: ``kinematic_hz``, ``tolerance_below``, ``tolerance_above``,
         ``modulation_hz``, ``sideband_orders``."""
-        return {"kinematic_hz": self.frequency, "tolerance_below": self.below,
-                "tolerance_above": self.above, "modulation_hz": self.modulation,
-                "sideband_orders": self.orders}
+        return {
+            "kinematic_hz": self.frequency,
+            "tolerance_below": self.below,
+            "tolerance_above": self.above,
+            "modulation_hz": self.modulation,
+            "sideband_orders": self.orders,
+        }
 
 
 def tolerances(overrides=None) -> dict[str, tuple[float, float]]:
@@ -118,8 +139,11 @@ def tolerances(overrides=None) -> dict[str, tuple[float, float]]:
         except (TypeError, ValueError):
             below = above = math.nan
         if not (0.0 <= below < 0.3 and 0.0 <= above < 0.3):
-            raise InputError(f"tolerances[{key!r}]", value,
-                             "a fraction in [0, 0.3) or (below, above) fractions in [0, 0.3)")
+            raise InputError(
+                f"tolerances[{key!r}]",
+                value,
+                "a fraction in [0, 0.3) or (below, above) fractions in [0, 0.3)",
+            )
         out[family] = (below, above)
     return out
 
@@ -130,7 +154,15 @@ def families(frequencies, windows: dict[str, tuple[float, float]]) -> list[Famil
     for name in FAMILIES:
         modulation, orders = SIDEBANDS[name]
         below, above = windows[name]
-        out.append(Family(name, float(frequencies[FREQUENCY[name]]), below, above,
-                          None if modulation is None else float(frequencies[modulation]),
-                          orders, GATE_ORDERS[name]))
+        out.append(
+            Family(
+                name,
+                float(frequencies[FREQUENCY[name]]),
+                below,
+                above,
+                None if modulation is None else float(frequencies[modulation]),
+                orders,
+                GATE_ORDERS[name],
+            )
+        )
     return out

@@ -104,8 +104,7 @@ def segment_length(n: int, sample_rate: float, resolution: float) -> int:
     return m
 
 
-def squared_envelope_power(x: np.ndarray, sample_rate: float, resolution: float,
-                           band=None):
+def squared_envelope_power(x: np.ndarray, sample_rate: float, resolution: float, band=None):
     """(frequency [Hz], Welch power of the squared envelope, nu) at ``resolution`` [Hz]."""
     from ..signal.spectra import envelope, welch_power
     from .statistics import welch_dof
@@ -127,8 +126,14 @@ def _inside(band, sample_rate: float):
     return max(low, 1e-3 * nyquist), min(high, 0.98 * nyquist)
 
 
-def method_spectrum(method: str, x: np.ndarray, sample_rate: float, resolution: float,
-                    band=None, largest_defect: float = 0.0) -> MethodSpectrum:
+def method_spectrum(
+    method: str,
+    x: np.ndarray,
+    sample_rate: float,
+    resolution: float,
+    band=None,
+    largest_defect: float = 0.0,
+) -> MethodSpectrum:
     """The squared envelope spectrum of ``x`` by ``method`` (see the module docstring).
 
     Parameters

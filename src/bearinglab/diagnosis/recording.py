@@ -13,8 +13,9 @@ import math
 from ..errors import InputError
 
 
-def analyze_file(path, bearing, *, shaft_speed=None, speed_range=None, channel=None,
-                 sample_rate=None, **options):
+def analyze_file(
+    path, bearing, *, shaft_speed=None, speed_range=None, channel=None, sample_rate=None, **options
+):
     """Diagnose the recording ``path`` of ``bearing``.
 
     Parameters
@@ -50,14 +51,20 @@ def analyze_file(path, bearing, *, shaft_speed=None, speed_range=None, channel=N
         signal = read_signal(path, sample_rate=sample_rate, channel=channel)
         channel = signal.names[0]
     recorded = signal.metadata.get("speed_rpm")
-    recorded = float(recorded) * math.pi / 30 if isinstance(recorded, (int, float)) \
-        and not isinstance(recorded, bool) and recorded > 0 else None
+    recorded = (
+        float(recorded) * math.pi / 30
+        if isinstance(recorded, (int, float)) and not isinstance(recorded, bool) and recorded > 0
+        else None
+    )
     auto = isinstance(shaft_speed, str)
     nominal = shaft_speed if shaft_speed is not None and not auto else recorded
     if nominal is None and not (auto and speed_range is not None):
-        raise InputError("shaft_speed", shaft_speed,
-                         'a speed > 0 rad/s, or "auto" with a speed range (the file does not '
-                         "record the shaft speed)")
+        raise InputError(
+            "shaft_speed",
+            shaft_speed,
+            'a speed > 0 rad/s, or "auto" with a speed range (the file does not '
+            "record the shaft speed)",
+        )
     if nominal is not None:
         try:
             nominal = float(nominal)
@@ -68,9 +75,15 @@ def analyze_file(path, bearing, *, shaft_speed=None, speed_range=None, channel=N
         frequencies = defect_frequencies(bearing, nominal)
     else:
         frequencies = bearing
-    diagnosis = analyze_signal(signal, None, frequencies, channel=channel,
-                               shaft_speed="auto" if auto else None, speed_range=speed_range,
-                               **options)
+    diagnosis = analyze_signal(
+        signal,
+        None,
+        frequencies,
+        channel=channel,
+        shaft_speed="auto" if auto else None,
+        speed_range=speed_range,
+        **options,
+    )
     if not auto and shaft_speed is None:
         diagnosis.speed["source"] = "file"
     return diagnosis

@@ -121,25 +121,35 @@ class Diagnosis:
         """JSON-ready dict in engineering units (Hz, rpm; amplitudes in the squared
         envelope's unit)."""
         return {
-            "verdict": self.verdict, "likely_fault": self.likely_fault,
-            "primary_fault": self.primary_fault, "faults": list(self.faults),
-            "false_alarm_probability": self.false_alarm, "test_level": self.alpha,
+            "verdict": self.verdict,
+            "likely_fault": self.likely_fault,
+            "primary_fault": self.primary_fault,
+            "faults": list(self.faults),
+            "false_alarm_probability": self.false_alarm,
+            "test_level": self.alpha,
             "threshold_significance": self.threshold,
             "families": {k: dict(v) for k, v in self.families.items()},
-            "scores": self.scores, "reason": self.reason,
+            "scores": self.scores,
+            "reason": self.reason,
             "cage_modulation_of": list(self.modulation),
-            "channel": self.channel, "sample_rate_hz": self.sample_rate,
+            "channel": self.channel,
+            "sample_rate_hz": self.sample_rate,
             "methods": list(self.methods),
-            "method_shown": next(iter(self.spectra)) if not self.faults
+            "method_shown": next(iter(self.spectra))
+            if not self.faults
             else self.families[self.faults[0]]["method"],
             "band_hz": None if self.band is None else [float(b) for b in self.band],
-            "bands_hz": {m: None if s.band is None else [float(b) for b in s.band]
-                         for m, s in self.spectra.items()},
+            "bands_hz": {
+                m: None if s.band is None else [float(b) for b in s.band]
+                for m, s in self.spectra.items()
+            },
             "band_kurtosis": None if self.kurtogram is None else self.kurtogram.kurtosis,
-            "resolution_hz": self.resolution, "max_frequency_hz": self.max_frequency,
+            "resolution_hz": self.resolution,
+            "max_frequency_hz": self.max_frequency,
             "harmonics": self.harmonics,
             "tolerances": {k: {"below": v[0], "above": v[1]} for k, v in self.tolerances.items()},
-            "speed": dict(self.speed), "kinematic": self.frequencies.to_dict(),
+            "speed": dict(self.speed),
+            "kinematic": self.frequencies.to_dict(),
             "peaks": [dict(p) for p in self.peaks],
             "ball_defect_frequency_hz": self.ball_defect_frequency_hz,
             "warnings": list(self.warnings),
@@ -149,21 +159,39 @@ class Diagnosis:
         """Table of the labelled envelope lines (one row per peak, most significant first)."""
         import pandas as pd
 
-        columns = ["frequency_hz", "amplitude", "z", "significance", "matched", "harmonic",
-                   "deviation", "sideband_of", "sideband_harmonic", "sideband_order",
-                   "modulation"]
-        return pd.DataFrame([{c: p.get(c) for c in columns} for p in self.peaks],
-                            columns=columns)
+        columns = [
+            "frequency_hz",
+            "amplitude",
+            "z",
+            "significance",
+            "matched",
+            "harmonic",
+            "deviation",
+            "sideband_of",
+            "sideband_harmonic",
+            "sideband_order",
+            "modulation",
+        ]
+        return pd.DataFrame([{c: p.get(c) for c in columns} for p in self.peaks], columns=columns)
 
     def families_table(self):
         """Table of the family tests: family, method, significance, threshold, passed,
         fundamental_hz, slip, lines."""
         import pandas as pd
 
-        rows = [{"family": k, "method": v["method"], "significance": v["significance"],
-                 "threshold": self.threshold, "passed": v["passed"],
-                 "fundamental_hz": v["fundamental_hz"], "slip": v["slip"],
-                 "lines": len(v["lines"])} for k, v in self.families.items()]
+        rows = [
+            {
+                "family": k,
+                "method": v["method"],
+                "significance": v["significance"],
+                "threshold": self.threshold,
+                "passed": v["passed"],
+                "fundamental_hz": v["fundamental_hz"],
+                "slip": v["slip"],
+                "lines": len(v["lines"]),
+            }
+            for k, v in self.families.items()
+        ]
         return pd.DataFrame(rows)
 
     def plot(self, path=None, ax=None):
@@ -197,20 +225,37 @@ class Diagnosis:
             marks = np.arange(1, self.harmonics + 1) * base
             marks = marks[marks <= self.max_frequency]
             if marks.size:
-                ax.vlines(marks, 0, 1.05 * top, colors=f"C{i}", linestyles="--", lw=0.7,
-                          alpha=0.6, label=f"{name.upper()} {base:.2f} Hz and harmonics")
+                ax.vlines(
+                    marks,
+                    0,
+                    1.05 * top,
+                    colors=f"C{i}",
+                    linestyles="--",
+                    lw=0.7,
+                    alpha=0.6,
+                    label=f"{name.upper()} {base:.2f} Hz and harmonics",
+                )
         for p in self.peaks:
             label = peak_label(p)
             ours = p.get("matched") in FREQUENCY.values() or p.get("sideband_of")
             ax.plot(p["frequency_hz"], p["amplitude"], "o", ms=4, color="C3" if ours else "k")
-            ax.annotate(label, (p["frequency_hz"], p["amplitude"]), textcoords="offset points",
-                        xytext=(2, 4), fontsize=7, rotation=60)
+            ax.annotate(
+                label,
+                (p["frequency_hz"], p["amplitude"]),
+                textcoords="offset points",
+                xytext=(2, 4),
+                fontsize=7,
+                rotation=60,
+            )
         method = self.to_dict()["method_shown"]
-        band = ("whole band" if self.band is None
-                else f"band {self.band[0]:.0f}-{self.band[1]:.0f} Hz")
-        ax.set_title(f"{self.frequencies.bearing.name or 'bearing'} at "
-                     f"{self.frequencies.shaft_hz * 60:.6g} rpm, channel "
-                     f"{self.channel or '-'}, {method}, {band}: {self.verdict}")
+        band = (
+            "whole band" if self.band is None else f"band {self.band[0]:.0f}-{self.band[1]:.0f} Hz"
+        )
+        ax.set_title(
+            f"{self.frequencies.bearing.name or 'bearing'} at "
+            f"{self.frequencies.shaft_hz * 60:.6g} rpm, channel "
+            f"{self.channel or '-'}, {method}, {band}: {self.verdict}"
+        )
         ax.set_xlabel("f [Hz]")
         ax.set_ylabel("squared envelope amplitude")
         ax.set_xlim(0, self.max_frequency)
@@ -235,8 +280,10 @@ def peak_label(p: dict) -> str:
     if p.get("matched"):
         return f"{p['harmonic']}x {p['matched']}"
     if p.get("sideband_of"):
-        return (f"{p['sideband_harmonic']}x {p['sideband_of']} {p['sideband_order']:+d} "
-                f"{p['modulation']}")
+        return (
+            f"{p['sideband_harmonic']}x {p['sideband_of']} {p['sideband_order']:+d} "
+            f"{p['modulation']}"
+        )
     return "-"
 
 
@@ -251,8 +298,9 @@ def measured_ball_defect_frequency(matched_peaks) -> float | None:
     135.0
     """
     for n in (1, 2):
-        lines = [p for p in matched_peaks
-                 if p.get("matched") == "ball_defect" and p.get("harmonic") == n]
+        lines = [
+            p for p in matched_peaks if p.get("matched") == "ball_defect" and p.get("harmonic") == n
+        ]
         if lines:
             return float(max(lines, key=lambda p: p["amplitude"])["frequency_hz"]) / n
     return None

@@ -50,13 +50,19 @@ class ShaftEstimate:
     def to_dict(self) -> dict:
         """JSON form (Hz and rpm)."""
         f = self.frequency
-        return {"measured_hz": f, "measured_rpm": None if f is None else 60.0 * f,
-                "search_rpm": [60.0 * self.low, 60.0 * self.high], "p_value": self.p_value,
-                "harmonics_found": self.harmonics, "sub_multiple": self.sub_multiple}
+        return {
+            "measured_hz": f,
+            "measured_rpm": None if f is None else 60.0 * f,
+            "search_rpm": [60.0 * self.low, 60.0 * self.high],
+            "p_value": self.p_value,
+            "harmonics_found": self.harmonics,
+            "sub_multiple": self.sub_multiple,
+        }
 
 
-def shaft_frequency(x: np.ndarray, sample_rate: float, low: float, high: float,
-                    harmonics: int = SHAFT_HARMONICS) -> ShaftEstimate:
+def shaft_frequency(
+    x: np.ndarray, sample_rate: float, low: float, high: float, harmonics: int = SHAFT_HARMONICS
+) -> ShaftEstimate:
     """Shaft frequency [Hz] in [``low``, ``high``] shown by the record ``x``.
 
     Parameters
@@ -95,8 +101,9 @@ def shaft_frequency(x: np.ndarray, sample_rate: float, low: float, high: float,
     z = normalised(power, 2.0)
     centre = 0.5 * (low + high)
     top = min(0.5 * sample_rate, (harmonics + 0.5) * high)
-    test = series_test(z, resolution, 2.0, centre, 1.0 - low / centre, high / centre - 1.0,
-                       harmonics, top)
+    test = series_test(
+        z, resolution, 2.0, centre, 1.0 - low / centre, high / centre - 1.0, harmonics, top
+    )
     found = [ln for ln in test.lines if ln.p_value < SPEED_ALPHA]
     if test.p_value >= SPEED_ALPHA or not found:
         return ShaftEstimate(None, low, high, test.p_value, 0)
@@ -107,7 +114,7 @@ def shaft_frequency(x: np.ndarray, sample_rate: float, low: float, high: float,
     own = np.ones(z.size, bool)
     for m in range(1, int(top / test.fundamental_hz) + 2):
         i = int(round(m * test.fundamental_hz / resolution))
-        own[max(i - 2, 0):i + 3] = False
+        own[max(i - 2, 0) : i + 3] = False
     for k in (4, 3, 2):
         sub = test.fundamental_hz / k
         lower = series_test(z, resolution, 2.0, sub, 0.01, 0.01, harmonics, top, valid=own)
@@ -123,8 +130,8 @@ def shaft_frequency(x: np.ndarray, sample_rate: float, low: float, high: float,
     refined = []
     for line in found:
         i = int(round(line.frequency_hz / resolution))
-        if 1 <= i < power.size - 1 and min(power[i - 1:i + 2]) > 0:
-            a, b, c = np.log(power[i - 1:i + 2])
+        if 1 <= i < power.size - 1 and min(power[i - 1 : i + 2]) > 0:
+            a, b, c = np.log(power[i - 1 : i + 2])
             shift = 0.5 * (a - c) / (a - 2 * b + c) if a - 2 * b + c < 0 else 0.0
             refined.append((line.n, (i + max(-0.5, min(0.5, shift))) * resolution))
     k = np.array([r[0] for r in refined], float)

@@ -93,8 +93,10 @@ def welch_dof(nperseg: int, noverlap: int, n: int, window: np.ndarray | None = N
     k = max(1 + (n - nperseg) // hop, 1)
     w2 = window**2
     total = float(np.sum(w2))
-    rho = [float(np.sum(w2[m * hop:] * w2[:nperseg - m * hop])) / total
-           if m * hop < nperseg else 0.0 for m in range(1, k)]
+    rho = [
+        float(np.sum(w2[m * hop :] * w2[: nperseg - m * hop])) / total if m * hop < nperseg else 0.0
+        for m in range(1, k)
+    ]
     correction = 1.0 + 2.0 * sum((1.0 - m / k) * r**2 for m, r in enumerate(rho, start=1))
     return 2.0 * k / correction
 
@@ -240,10 +242,20 @@ def _window_max(z: np.ndarray, valid: np.ndarray):
     return stack.max(axis=0), count, stack.argmax(axis=0) - 1
 
 
-def series_test(z: np.ndarray, resolution: float, nu: float, fundamental: float,
-                below: float, above: float, harmonics: int, max_frequency: float,
-                modulation: float | None = None, orders: int = 0,
-                valid: np.ndarray | None = None, gate_orders: int = 0) -> SeriesTest:
+def series_test(
+    z: np.ndarray,
+    resolution: float,
+    nu: float,
+    fundamental: float,
+    below: float,
+    above: float,
+    harmonics: int,
+    max_frequency: float,
+    modulation: float | None = None,
+    orders: int = 0,
+    valid: np.ndarray | None = None,
+    gate_orders: int = 0,
+) -> SeriesTest:
     """Significance of the harmonic series n f' (n = 1..``harmonics``) with its sidebands
     n f' +- k ``modulation`` (k = 1..``orders``), f' scanned over
     [(1 - below) f, (1 + above) f] (see the module docstring).
@@ -288,8 +300,12 @@ def series_test(z: np.ndarray, resolution: float, nu: float, fundamental: float,
     # expected lines: (kind, n, k) rows, frequencies = n f' + k f_m
     spec = [("harmonic", n, 0) for n in range(1, n_max + 1)]
     if modulation and orders:
-        spec += [("sideband", n, s * k) for n in range(1, n_max + 1)
-                 for k in range(1, orders + 1) for s in (-1, 1)]
+        spec += [
+            ("sideband", n, s * k)
+            for n in range(1, n_max + 1)
+            for k in range(1, orders + 1)
+            for s in (-1, 1)
+        ]
     n_arr = np.array([r[1] for r in spec], float)
     k_arr = np.array([r[2] for r in spec], float)
     freq = grid[:, None] * n_arr[None, :] + k_arr[None, :] * (modulation or 0.0)
@@ -299,8 +315,11 @@ def series_test(z: np.ndarray, resolution: float, nu: float, fundamental: float,
     zmax, count, offset = _window_max(z, valid)
     values, bins = zmax[index], count[index]
     readable = inside & (bins > 0)
-    logp = np.where(readable, line_logp(zmax, count, top / resolution,
-                                        np.where(readable, values, 0.0), index), 0.0)
+    logp = np.where(
+        readable,
+        line_logp(zmax, count, top / resolution, np.where(readable, values, 0.0), index),
+        0.0,
+    )
     if not np.any(readable):
         return SeriesTest(0.0, 0.0, 0.0, fundamental, 0.0, (), 0)
     # nested templates: harmonics alone, then with sidebands up to each order (the depth
@@ -318,7 +337,7 @@ def series_test(z: np.ndarray, resolution: float, nu: float, fundamental: float,
         trials.append((math.log(m) + float(combined[row_best]), row_best, m, use))
     log_k = math.log(len(trials))
     log_p, best, candidates, readable = min(trials, key=lambda t: t[0])
-    log_m = math.log(candidates) + log_k          # Bonferroni: scan x templates
+    log_m = math.log(candidates) + log_k  # Bonferroni: scan x templates
     log_p = min(0.0, log_p + log_k)
     row = readable[best]
     lps = logp[best][row]
@@ -330,19 +349,30 @@ def series_test(z: np.ndarray, resolution: float, nu: float, fundamental: float,
     for j in np.flatnonzero(row):
         kind, n, k = spec[j]
         i = int(index[best, j]) + int(offset[index[best, j]])
-        lines.append(Line(kind, n, k, float(freq[best, j]), i * resolution,
-                          float(values[best, j]), float(logp[best, j])))
+        lines.append(
+            Line(
+                kind,
+                n,
+                k,
+                float(freq[best, j]),
+                i * resolution,
+                float(values[best, j]),
+                float(logp[best, j]),
+            )
+        )
     f_best = float(grid[best])
-    return SeriesTest(log_p, support, harmonic, f_best, f_best / fundamental - 1.0,
-                      tuple(lines), candidates)
+    return SeriesTest(
+        log_p, support, harmonic, f_best, f_best / fundamental - 1.0, tuple(lines), candidates
+    )
 
 
 #: Bins either side of each of a family's own lines left out of its reference.
 OWN_BINS = 2
 
 
-def line_logp(zmax: np.ndarray, count: np.ndarray, top_bin: float, values,
-              index: np.ndarray) -> np.ndarray:
+def line_logp(
+    zmax: np.ndarray, count: np.ndarray, top_bin: float, values, index: np.ndarray
+) -> np.ndarray:
     """ln p of lines read as ``values`` (largest z over three bins, one row per candidate
     fundamental, at bins ``index``) against the same reading at every other valid
     position of the spectrum from bin 1 to ``top_bin``: the empirical null
@@ -357,8 +387,8 @@ def line_logp(zmax: np.ndarray, count: np.ndarray, top_bin: float, values,
     no different from any others (exchangeable bins).
     """
     stop = int(min(top_bin, zmax.size - 1))
-    live = count[1:stop + 1] > 0
-    ref = np.sort(zmax[1:stop + 1][live])
+    live = count[1 : stop + 1] > 0
+    ref = np.sort(zmax[1 : stop + 1][live])
     values = np.asarray(values, dtype=float)
     above = ref.size - np.searchsorted(ref, values, side="left")
     # the candidate's own positions (deduplicated), and how many of them reach each value
@@ -371,8 +401,7 @@ def line_logp(zmax: np.ndarray, count: np.ndarray, top_bin: float, values,
     own_live = inside & np.isfinite(own_z)
     own_above = np.sum(own_z[:, None, :] >= values[:, :, None], axis=2)
     n_ref = ref.size - own_live.sum(axis=1)
-    return np.log((1.0 + np.maximum(above - own_above, 0))
-                  / (1.0 + np.maximum(n_ref, 0))[:, None])
+    return np.log((1.0 + np.maximum(above - own_above, 0)) / (1.0 + np.maximum(n_ref, 0))[:, None])
 
 
 def _fisher_rows(logp: np.ndarray, readable: np.ndarray) -> np.ndarray:
@@ -397,8 +426,8 @@ def local_maxima(x) -> np.ndarray:
     x = np.asarray(x, dtype=float)
     if x.size < 3:
         return np.zeros(0, dtype=int)
-    change = np.flatnonzero(np.diff(x))              # x[i] != x[i + 1]
-    starts = np.concatenate(([0], change + 1))       # runs of equal values
+    change = np.flatnonzero(np.diff(x))  # x[i] != x[i + 1]
+    starts = np.concatenate(([0], change + 1))  # runs of equal values
     ends = np.concatenate((change, [x.size - 1]))
     v = x[starts]
     peak = np.zeros(v.size, dtype=bool)

@@ -70,11 +70,12 @@ def mask_line(valid: np.ndarray, z: np.ndarray, i: int) -> None:
     if lo >= hi:
         return
     d = leakage_halfwidth(float(np.max(z[lo:hi])))
-    valid[max(i - d, 0):min(i + d + 1, valid.size)] = False
+    valid[max(i - d, 0) : min(i + d + 1, valid.size)] = False
 
 
-def discrete_mask(spectra, lines: dict[str, float | None],
-                  max_frequency: float) -> tuple[dict, dict]:
+def discrete_mask(
+    spectra, lines: dict[str, float | None], max_frequency: float
+) -> tuple[dict, dict]:
     """Per method, the bins that may be read (True) once the harmonics of each frequency
     in ``lines`` (name -> Hz: shaft, supply, mesh) are masked with their leakage; and the
     harmonics masked, name -> list of (order, Hz)."""
@@ -94,16 +95,28 @@ def discrete_mask(spectra, lines: dict[str, float | None],
     return valid, masked
 
 
-def test_all(spectra, fams: list[Family], valid: dict, max_frequency: float,
-             harmonics: int) -> dict:
+def test_all(
+    spectra, fams: list[Family], valid: dict, max_frequency: float, harmonics: int
+) -> dict:
     """(method, family) -> SeriesTest for every method spectrum and family."""
     out = {}
     for spec in spectra:
         z = spec.z
         for fam in fams:
             out[spec.method, fam.name] = series_test(
-                z, spec.resolution, spec.nu, fam.frequency, fam.below, fam.above, harmonics,
-                max_frequency, fam.modulation, fam.orders, valid[spec.method], fam.gate_orders)
+                z,
+                spec.resolution,
+                spec.nu,
+                fam.frequency,
+                fam.below,
+                fam.above,
+                harmonics,
+                max_frequency,
+                fam.modulation,
+                fam.orders,
+                valid[spec.method],
+                fam.gate_orders,
+            )
     return out
 
 
@@ -122,8 +135,15 @@ def explained(test, modulations: tuple) -> list[float]:
     return out
 
 
-def decide(spectra, fams: list[Family], base_valid: dict, max_frequency: float,
-           harmonics: int, false_alarm: float, modulations: tuple = (0.0, 0.0)) -> dict:
+def decide(
+    spectra,
+    fams: list[Family],
+    base_valid: dict,
+    max_frequency: float,
+    harmonics: int,
+    false_alarm: float,
+    modulations: tuple = (0.0, 0.0),
+) -> dict:
     """The greedy verdict over all methods (see the module docstring).
 
     Returns a dict with ``faults`` (accepted, most significant first), ``tests``
@@ -138,15 +158,22 @@ def decide(spectra, fams: list[Family], base_valid: dict, max_frequency: float,
     best: dict[str, tuple] = {}
     remaining = [f.name for f in fams]
     while remaining:
-        tests = test_all(spectra, [f for f in fams if f.name in remaining], valid,
-                         max_frequency, harmonics)
+        tests = test_all(
+            spectra, [f for f in fams if f.name in remaining], valid, max_frequency, harmonics
+        )
         for name in remaining:
-            method, test = min(((m, t) for (m, f), t in tests.items() if f == name),
-                               key=lambda mt: (mt[1].log_p, mt[1].support_log_p))
+            method, test = min(
+                ((m, t) for (m, f), t in tests.items() if f == name),
+                key=lambda mt: (mt[1].log_p, mt[1].support_log_p),
+            )
             best[name] = (method, test)
-        passing = [n for n in remaining if best[n][1].log_p < log_alpha
-                   and best[n][1].harmonic_log_p < log_support
-                   and best[n][1].support_log_p < log_support]
+        passing = [
+            n
+            for n in remaining
+            if best[n][1].log_p < log_alpha
+            and best[n][1].harmonic_log_p < log_support
+            and best[n][1].support_log_p < log_support
+        ]
         if not passing:
             break
         winner = min(passing, key=lambda n: (best[n][1].log_p, best[n][1].support_log_p))
@@ -162,8 +189,9 @@ def decide(spectra, fams: list[Family], base_valid: dict, max_frequency: float,
     if "cage" in accepted and ({"ball", "outer_race"} & set(accepted)):
         accepted.remove("cage")
         modulation = ["cage"]
-    elif "cage" in accepted and "ball" in best and \
-            best["ball"][1].log_p < math.log(BALL_GIVEN_CAGE):
+    elif (
+        "cage" in accepted and "ball" in best and best["ball"][1].log_p < math.log(BALL_GIVEN_CAGE)
+    ):
         # a cage-rate series with ball lines beside it: the cage carries a ball defect
         accepted[accepted.index("cage")] = "ball"
         modulation = ["cage"]
@@ -177,8 +205,9 @@ def with_z(spec):
     return dataclasses.replace(spec, z=normalised(spec.power, spec.nu))
 
 
-def label_peaks(spec, decision: dict, fams: list[Family], masked: dict, count: int,
-                max_frequency: float) -> list[dict]:
+def label_peaks(
+    spec, decision: dict, fams: list[Family], masked: dict, count: int, max_frequency: float
+) -> list[dict]:
     """The ``count`` most significant local maxima of ``spec`` up to ``max_frequency``,
     labelled by the accepted families' lines or as a masked discrete line (shaft,
     supply, mesh harmonic of any order)."""
@@ -209,30 +238,39 @@ def label_peaks(spec, decision: dict, fams: list[Family], masked: dict, count: i
     out = []
     for j in keep:
         i = int(inside[j])
-        peak = {"frequency_hz": float(f[i]), "amplitude": float(amplitude[i]),
-                "z": float(z[i]),
-                "significance": float(-bin_logp(z[i], spec.nu) / math.log(10.0)),
-                "matched": None, "harmonic": None, "deviation": None}
+        peak = {
+            "frequency_hz": float(f[i]),
+            "amplitude": float(amplitude[i]),
+            "z": float(z[i]),
+            "significance": float(-bin_logp(z[i], spec.nu) / math.log(10.0)),
+            "matched": None,
+            "harmonic": None,
+            "deviation": None,
+        }
         hit = next((known[k] for k in (i, i - 1, i + 1) if k in known), None)
         if hit is not None:
             fam, line = hit
             name = FREQUENCY[fam.name]
             if line.kind == "harmonic":
-                peak.update(matched=name, harmonic=line.n,
-                            deviation=float(f[i] / (line.n * fam.frequency) - 1.0))
+                peak.update(
+                    matched=name,
+                    harmonic=line.n,
+                    deviation=float(f[i] / (line.n * fam.frequency) - 1.0),
+                )
             else:
-                peak.update(sideband_of=name, sideband_harmonic=line.n,
-                            sideband_order=int(round(line.k)),
-                            modulation="shaft" if fam.name in ("outer_race", "inner_race")
-                            else "ftf")
+                peak.update(
+                    sideband_of=name,
+                    sideband_harmonic=line.n,
+                    sideband_order=int(round(line.k)),
+                    modulation="shaft" if fam.name in ("outer_race", "inner_race") else "ftf",
+                )
         else:
             for name, orders in masked.items():
                 near = [k for k, fk in orders if abs(f[i] - fk) <= 1.5 * res]
                 if near:
                     k = near[0]
                     base = orders[0][1]
-                    peak.update(matched=name, harmonic=k,
-                                deviation=float(f[i] / (k * base) - 1.0))
+                    peak.update(matched=name, harmonic=k, deviation=float(f[i] / (k * base) - 1.0))
                     break
         out.append(peak)
     return out

@@ -12,6 +12,11 @@ from .simulation import MODELS, Simulation, needs_compiling, simulate
 from .slip import SlipParameters
 
 __all__ = [
-    "MODELS", "Defect", "RigidParameters", "Simulation", "SlipParameters", "needs_compiling",
+    "MODELS",
+    "Defect",
+    "RigidParameters",
+    "Simulation",
+    "SlipParameters",
+    "needs_compiling",
     "simulate",
 ]

@@ -26,33 +26,40 @@ import numpy as np
 from . import _kernels
 
 OK, TOO_MANY_STEPS, STEP_TOO_SMALL, NOT_FINITE = 0, 1, 2, 3
-STATUS_TEXT = {TOO_MANY_STEPS: "the step limit was reached",
-               STEP_TOO_SMALL: "the step size fell below 1e-14 s",
-               NOT_FINITE: "the state became non-finite"}
+STATUS_TEXT = {
+    TOO_MANY_STEPS: "the step limit was reached",
+    STEP_TOO_SMALL: "the step size fell below 1e-14 s",
+    NOT_FINITE: "the state became non-finite",
+}
 
 # Dormand-Prince coefficients
 _C = np.array([0.0, 1 / 5, 3 / 10, 4 / 5, 8 / 9, 1.0, 1.0])
-_A = np.array([
-    [0, 0, 0, 0, 0, 0],
-    [1 / 5, 0, 0, 0, 0, 0],
-    [3 / 40, 9 / 40, 0, 0, 0, 0],
-    [44 / 45, -56 / 15, 32 / 9, 0, 0, 0],
-    [19372 / 6561, -25360 / 2187, 64448 / 6561, -212 / 729, 0, 0],
-    [9017 / 3168, -355 / 33, 46732 / 5247, 49 / 176, -5103 / 18656, 0],
-    [35 / 384, 0, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84]])
+_A = np.array(
+    [
+        [0, 0, 0, 0, 0, 0],
+        [1 / 5, 0, 0, 0, 0, 0],
+        [3 / 40, 9 / 40, 0, 0, 0, 0],
+        [44 / 45, -56 / 15, 32 / 9, 0, 0, 0],
+        [19372 / 6561, -25360 / 2187, 64448 / 6561, -212 / 729, 0, 0],
+        [9017 / 3168, -355 / 33, 46732 / 5247, 49 / 176, -5103 / 18656, 0],
+        [35 / 384, 0, 500 / 1113, 125 / 192, -2187 / 6784, 11 / 84],
+    ]
+)
 _E = np.array([71 / 57600, 0, -71 / 16695, 71 / 1920, -17253 / 339200, 22 / 525, -1 / 40])
 # A continuous extension of order 4 of the Dormand-Prince pair (Shampine L. F., "Some
 # practical Runge-Kutta formulas", Math. Comp. 46 (1986) 135-150; the coefficients of
 # SciPy's RK45.P): y(t + x h) = y + h sum_k K_k (P_k1 x + P_k2 x^2 + P_k3 x^3 + P_k4 x^4)
-_P = np.array([
-    [1, -8048581381 / 2820520608, 8663915743 / 2820520608, -12715105075 / 11282082432],
-    [0, 0, 0, 0],
-    [0, 131558114200 / 32700410799, -68118460800 / 10900136933, 87487479700 / 32700410799],
-    [0, -1754552775 / 470086768, 14199869525 / 1410260304, -10690763975 / 1880347072],
-    [0, 127303824393 / 49829197408, -318862633887 / 49829197408,
-     701980252875 / 199316789632],
-    [0, -282668133 / 205662961, 2019193451 / 616988883, -1453857185 / 822651844],
-    [0, 40617522 / 29380423, -110615467 / 29380423, 69997945 / 29380423]])
+_P = np.array(
+    [
+        [1, -8048581381 / 2820520608, 8663915743 / 2820520608, -12715105075 / 11282082432],
+        [0, 0, 0, 0],
+        [0, 131558114200 / 32700410799, -68118460800 / 10900136933, 87487479700 / 32700410799],
+        [0, -1754552775 / 470086768, 14199869525 / 1410260304, -10690763975 / 1880347072],
+        [0, 127303824393 / 49829197408, -318862633887 / 49829197408, 701980252875 / 199316789632],
+        [0, -282668133 / 205662961, 2019193451 / 616988883, -1453857185 / 822651844],
+        [0, 40617522 / 29380423, -110615467 / 29380423, 69997945 / 29380423],
+    ]
+)
 
 
 @numba.njit(cache=True)
@@ -153,7 +160,7 @@ def dopri_chunk(rhs, p, table, t, y, h, t_out, rtol, atol, h_max, max_steps):
                 ytmp[i] = acc
             rhs(t + _C[s] * h, ytmp, p, table, k[s])
         for i in range(n):
-            ynew[i] = ytmp[i]               # the 7th stage point is the 5th-order solution
+            ynew[i] = ytmp[i]  # the 7th stage point is the 5th-order solution
             acc = 0.0
             for m in range(7):
                 acc += _E[m] * k[m, i]
@@ -174,11 +181,11 @@ def dopri_chunk(rhs, p, table, t, y, h, t_out, rtol, atol, h_max, max_steps):
             y = ynew.copy()
             k[0] = k[6]
             steps += 1
-            factor = 5.0 if norm == 0.0 else min(5.0, max(0.2, 0.9 * norm ** -0.2))
+            factor = 5.0 if norm == 0.0 else min(5.0, max(0.2, 0.9 * norm**-0.2))
             h *= factor
         else:
             rejected += 1
-            h *= max(0.2, 0.9 * norm ** -0.2)
+            h *= max(0.2, 0.9 * norm**-0.2)
     return out, t, y, h, steps, rejected, OK
 
 
@@ -191,8 +198,9 @@ def dopri_chunk_rigid(p, table, t, y, h, t_out, rtol, atol, h_max, max_steps):
     argument (or a name imported with ``from ... import``) cannot be cached, and every new
     process would compile the integrator again (several seconds).
     """
-    return dopri_chunk(_kernels.rigid_rhs_numba, p, table, t, y, h, t_out, rtol, atol, h_max,
-                       max_steps)
+    return dopri_chunk(
+        _kernels.rigid_rhs_numba, p, table, t, y, h, t_out, rtol, atol, h_max, max_steps
+    )
 
 
 def cached_on_disk(dispatcher) -> bool:

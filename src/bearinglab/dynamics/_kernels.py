@@ -17,9 +17,28 @@ import numba
 import numpy as np
 
 # ---- packed parameters of the rigid model
-(M_S, M_P, K_S, C_S, K_P, C_P, K_HERTZ, HALF_CLEARANCE, C_BEARING, BALLS, CAGE_SPEED,
- SPIN_SPEED, SHAFT_SPEED, F_X, F_Y, UNBALANCE, BALL_RADIUS, INNER_RADIUS, OUTER_RADIUS,
- CAGE_PHASE) = range(20)
+(
+    M_S,
+    M_P,
+    K_S,
+    C_S,
+    K_P,
+    C_P,
+    K_HERTZ,
+    HALF_CLEARANCE,
+    C_BEARING,
+    BALLS,
+    CAGE_SPEED,
+    SPIN_SPEED,
+    SHAFT_SPEED,
+    F_X,
+    F_Y,
+    UNBALANCE,
+    BALL_RADIUS,
+    INNER_RADIUS,
+    OUTER_RADIUS,
+    CAGE_PHASE,
+) = range(20)
 RIGID_PARAMETER_COUNT = 20
 
 
@@ -64,7 +83,7 @@ def surface_deviation(psi, spin, shaft_angle, r_ball, r_in, r_out, table, dev_in
     row = 0
     while row < table.shape[0]:
         kind = int(table[row, 0])
-        if kind <= 2:                          # pits
+        if kind <= 2:  # pits
             half = 0.5 * table[row, 1]
             depth = table[row, 2]
             angle = table[row, 3]
@@ -85,22 +104,22 @@ def surface_deviation(psi, spin, shaft_angle, r_ball, r_in, r_out, table, dev_in
                     dev_out[j] += _pit_drop(half - abs(off) * r_ball, r_ball, r_out, True, depth)
                     off = (spin[j] - angle) % two_pi - math.pi
                     dev_in[j] += _pit_drop(half - abs(off) * r_ball, r_ball, r_in, False, depth)
-        elif kind <= 5:                        # waviness A cos(q angle + phase)
+        elif kind <= 5:  # waviness A cos(q angle + phase)
             order, amplitude, phase = table[row, 1], table[row, 2], table[row, 3]
             ball = int(table[row, 4])
             for j in range(z):
-                if kind == 3:                  # outer race: a larger radius opens the contact
+                if kind == 3:  # outer race: a larger radius opens the contact
                     dev_out[j] += amplitude * math.cos(order * psi[j] + phase)
-                elif kind == 4:                # inner race, in the turning ring's frame
+                elif kind == 4:  # inner race, in the turning ring's frame
                     dev_in[j] -= amplitude * math.cos(order * (psi[j] - shaft_angle) + phase)
-                elif ball < 0 or ball == j:    # ball: the points facing each race
+                elif ball < 0 or ball == j:  # ball: the points facing each race
                     dev_out[j] -= amplitude * math.cos(order * spin[j] + phase)
                     dev_in[j] -= amplitude * math.cos(order * (spin[j] + math.pi) + phase)
-        elif kind == 6:                        # ball-size error D_wj - D_w
+        elif kind == 6:  # ball-size error D_wj - D_w
             j = int(table[row, 4])
             dev_in[j] -= 0.5 * table[row, 1]
             dev_out[j] -= 0.5 * table[row, 1]
-        elif kind == 7:                        # sampled track: ``count`` rows of heights follow
+        elif kind == 7:  # sampled track: ``count`` rows of heights follow
             outer = table[row, 1] == 0.0
             count = int(table[row, 2])
             for j in range(z):
@@ -108,8 +127,9 @@ def surface_deviation(psi, spin, shaft_angle, r_ball, r_in, r_out, table, dev_in
                 u = (angle % two_pi) / two_pi * count
                 k = min(int(u), count - 1)
                 frac = u - k
-                height = ((1.0 - frac) * table[row + 1 + k, 1]
-                          + frac * table[row + 1 + (k + 1) % count, 1])
+                height = (1.0 - frac) * table[row + 1 + k, 1] + frac * table[
+                    row + 1 + (k + 1) % count, 1
+                ]
                 if outer:
                     dev_out[j] += height
                 else:
@@ -134,13 +154,18 @@ def surface_deviation_numpy(psi, spin, shaft_angle, r_ball, r_in, r_out, table):
             radius = r_out if outer else r_in
             ref = angle if outer else angle + shaft_angle
             d = 0.5 * width - np.abs(wrap_angle(psi - ref)) * radius
-            drop = np.where(d > 0, np.minimum(edge_drop(d, r_ball, radius,
-                                                        "outer" if outer else "inner"), depth), 0)
+            drop = np.where(
+                d > 0,
+                np.minimum(edge_drop(d, r_ball, radius, "outer" if outer else "inner"), depth),
+                0,
+            )
             (dev_out if outer else dev_in)[:] += drop
         elif kind == 2:
             width, depth, angle, j = a, b, c, int(ball)
-            for shift, radius, race, dev in ((0.0, r_out, "outer", dev_out),
-                                             (math.pi, r_in, "inner", dev_in)):
+            for shift, radius, race, dev in (
+                (0.0, r_out, "outer", dev_out),
+                (math.pi, r_in, "inner", dev_in),
+            ):
                 d = 0.5 * width - abs(float(wrap_angle(spin[j] - angle - shift))) * r_ball
                 if d > 0:
                     dev[j] += min(float(edge_drop(d, r_ball, radius, race)), depth)
@@ -157,13 +182,14 @@ def surface_deviation_numpy(psi, spin, shaft_angle, r_ball, r_in, r_out, table):
             dev_out[int(ball)] -= 0.5 * a
         elif kind == 7:
             count = int(b)
-            heights = table[row + 1:row + 1 + count, 1]
+            heights = table[row + 1 : row + 1 + count, 1]
             grid = 2 * np.pi * np.arange(count + 1) / count
             if a == 0:
                 dev_out += np.interp(np.mod(psi, 2 * np.pi), grid, np.append(heights, heights[0]))
             else:
-                dev_in -= np.interp(np.mod(psi - shaft_angle, 2 * np.pi), grid,
-                                    np.append(heights, heights[0]))
+                dev_in -= np.interp(
+                    np.mod(psi - shaft_angle, 2 * np.pi), grid, np.append(heights, heights[0])
+                )
             row += count
         row += 1
     return dev_in, dev_out
@@ -188,8 +214,17 @@ def rigid_rhs(t, y, p, table, dydt):
     for j in range(z):
         psi[j] = p[CAGE_PHASE] + 2.0 * math.pi * j / z + p[CAGE_SPEED] * t
         spin[j] = p[SPIN_SPEED] * t
-    surface_deviation_numba(psi, spin, p[SHAFT_SPEED] * t, p[BALL_RADIUS], p[INNER_RADIUS],
-                      p[OUTER_RADIUS], table, dev_in, dev_out)
+    surface_deviation_numba(
+        psi,
+        spin,
+        p[SHAFT_SPEED] * t,
+        p[BALL_RADIUS],
+        p[INNER_RADIUS],
+        p[OUTER_RADIUS],
+        table,
+        dev_in,
+        dev_out,
+    )
     rx = y[0] - y[2]
     ry = y[1] - y[3]
     fx = p[C_BEARING] * (y[4] - y[6])
@@ -219,8 +254,9 @@ def rigid_rhs_numpy(t, y, p, table):
     z = int(p[BALLS])
     psi = p[CAGE_PHASE] + 2.0 * np.pi * np.arange(z) / z + p[CAGE_SPEED] * t
     spin = np.full(z, p[SPIN_SPEED] * t)
-    dev_in, dev_out = surface_deviation_numpy(psi, spin, p[SHAFT_SPEED] * t, p[BALL_RADIUS],
-                                              p[INNER_RADIUS], p[OUTER_RADIUS], table)
+    dev_in, dev_out = surface_deviation_numpy(
+        psi, spin, p[SHAFT_SPEED] * t, p[BALL_RADIUS], p[INNER_RADIUS], p[OUTER_RADIUS], table
+    )
     rel = y[0:2] - y[2:4]
     e = np.stack([np.cos(psi), np.sin(psi)])
     delta = rel @ e - p[HALF_CLEARANCE] - dev_in - dev_out

@@ -27,16 +27,57 @@ import numpy as np
 from ._integrate import OK, error_norm, outputs_before, retry_not_finite, step_limits
 from ._kernels import surface_deviation_numba
 
-NG = 10          # global states
-NB = 6           # states per ball
-(BALLS, M_I, M_O, K_O, C_O, M_B, J_B, J_C, R_M, R_B, R_IN, R_OUT, QUARTER_CLEARANCE,
- K_IN, K_OUT, H_IN, H_OUT, C_IN, C_OUT, P1_IN, P1_OUT, OMEGA_I, F_X, F_Y, UNBALANCE,
- GRAVITY, K_CAGE, C_CAGE, POCKET, TRACTION, ETA0, ALPHA, MU_LIMIT, FLOW_INDEX,
- G_OIL, V_REG, DRAG, CAGE_DRAG, IMPACTS, DEFECT_ANGLE, ONSET, CAGE_MU, SPIN_RHO,
- SPIN_MU) = range(44)
+NG = 10  # global states
+NB = 6  # states per ball
+(
+    BALLS,
+    M_I,
+    M_O,
+    K_O,
+    C_O,
+    M_B,
+    J_B,
+    J_C,
+    R_M,
+    R_B,
+    R_IN,
+    R_OUT,
+    QUARTER_CLEARANCE,
+    K_IN,
+    K_OUT,
+    H_IN,
+    H_OUT,
+    C_IN,
+    C_OUT,
+    P1_IN,
+    P1_OUT,
+    OMEGA_I,
+    F_X,
+    F_Y,
+    UNBALANCE,
+    GRAVITY,
+    K_CAGE,
+    C_CAGE,
+    POCKET,
+    TRACTION,
+    ETA0,
+    ALPHA,
+    MU_LIMIT,
+    FLOW_INDEX,
+    G_OIL,
+    V_REG,
+    DRAG,
+    CAGE_DRAG,
+    IMPACTS,
+    DEFECT_ANGLE,
+    ONSET,
+    CAGE_MU,
+    SPIN_RHO,
+    SPIN_MU,
+) = range(44)
 SLIP_PARAMETER_COUNT = 44
 SEED004, BAIR_WINER = 0, 1
-JACOBIAN_AGE = 8          # steps a Jacobian is reused for (see rosenbrock_chunk)
+JACOBIAN_AGE = 8  # steps a Jacobian is reused for (see rosenbrock_chunk)
 # Masjedi & Khonsari boundary friction curve, seed 004 eq. 11 (ball-cage contact)
 CAGE_A, CAGE_B, CAGE_C, CAGE_D = -0.1, 22.28, 181.46, 0.1
 #: ... at the slide-roll ratio 2 of a pocket contact (the ball surface slides on the pocket):
@@ -46,10 +87,8 @@ CAGE_SLIDING_MU = (CAGE_A + CAGE_B * 2.0) * math.exp(-CAGE_C * 2.0) + CAGE_D
 #: below Re_r = 32, their fit C_R = 12.9 Re_r^-1/2 + 128.4 / Re_r above
 SPIN_STOKES_REYNOLDS = 32.0
 # 4-point Gauss-Legendre rule on [0, 1] for the pressure averages of Bair-Winer traction
-_GL_X = np.array([0.0694318442029737, 0.3300094782075719, 0.6699905217924281,
-                  0.9305681557970263])
-_GL_W = np.array([0.1739274225687269, 0.3260725774312731, 0.3260725774312731,
-                  0.1739274225687269])
+_GL_X = np.array([0.0694318442029737, 0.3300094782075719, 0.6699905217924281, 0.9305681557970263])
+_GL_W = np.array([0.1739274225687269, 0.3260725774312731, 0.3260725774312731, 0.1739274225687269])
 
 
 @numba.njit(cache=True)
@@ -64,9 +103,11 @@ def _traction_raw(speed, load, p_1, h, p):
         # seed 004 eq. 12: power-law shear stress over the Hertz pressure, capped at tau_L/p
         n = p[FLOW_INDEX]
         na = n * alpha * pmax
-        bracket = (4.0 / (math.pi * pmax) + n * alpha / 3.0 * (
-            1.866 * math.exp(na * math.sqrt(0.067)) + math.exp(0.707 * na)
-            + 0.134 * math.exp(na * math.sqrt(0.933))))
+        bracket = 4.0 / (math.pi * pmax) + n * alpha / 3.0 * (
+            1.866 * math.exp(na * math.sqrt(0.067))
+            + math.exp(0.707 * na)
+            + 0.134 * math.exp(na * math.sqrt(0.933))
+        )
         mu = (p[ETA0] * speed / h) ** n * p[G_OIL] ** (1.0 - n) * bracket
         return min(mu, limit)
     # Bair & Winer (1979): tau = tau_L (1 - exp(-eta gamma / tau_L)), tau_L = limit * pressure,
@@ -112,8 +153,8 @@ def spin_drag(w_r, p):
     r_b = p[R_B]
     re = rho * abs(w_r) * 4.0 * r_b * r_b / p[SPIN_MU]
     if re < SPIN_STOKES_REYNOLDS:
-        return 8.0 * math.pi * p[SPIN_MU] * r_b ** 3 * w_r
-    return 0.5 * rho * r_b ** 5 * (12.9 / math.sqrt(re) + 128.4 / re) * abs(w_r) * w_r
+        return 8.0 * math.pi * p[SPIN_MU] * r_b**3 * w_r
+    return 0.5 * rho * r_b**5 * (12.9 / math.sqrt(re) + 128.4 / re) * abs(w_r) * w_r
 
 
 @numba.njit(cache=True)
@@ -129,8 +170,7 @@ def slip_rhs(t, y, p, table, dydt, parts):
         psi[j] = y[NG + NB * j + 2]
         spin[j] = y[NG + NB * j + 4]
     w_i = p[OMEGA_I]
-    surface_deviation_numba(psi, spin, w_i * t, p[R_B], p[R_IN], p[R_OUT], table,
-                            dev_in, dev_out)
+    surface_deviation_numba(psi, spin, w_i * t, p[R_B], p[R_IN], p[R_OUT], table, dev_in, dev_out)
     for i in range(NG):
         dydt[i] = 0.0
     xi, yi, xo, yo = y[0], y[1], y[2], y[3]
@@ -164,9 +204,8 @@ def slip_rhs(t, y, p, table, dydt, parts):
         gap = (ps - theta_c - 2.0 * math.pi * j / z) * r_m
         n_c = 0.0
         if abs(gap) > p[POCKET]:
-            n_c = p[K_CAGE] * (gap - math.copysign(p[POCKET], gap)) + p[C_CAGE] * r_m * (
-                w_m - w_c)
-        mu_c = cage_friction(w_r * r_b, p[CAGE_MU])     # signed with the spin: opposes it
+            n_c = p[K_CAGE] * (gap - math.copysign(p[POCKET], gap)) + p[C_CAGE] * r_m * (w_m - w_c)
+        mu_c = cage_friction(w_r * r_b, p[CAGE_MU])  # signed with the spin: opposes it
         # ball drag (seed 004 eq. 14 in SI, mixture mass density)
         drag = p[DRAG] * abs(2.0 * r_m * w_m) ** 1.95 * math.copysign(1.0, w_m)
         # ball-defect impacts (seed 004 eqs. 16-19), radial, for a defective ball only
@@ -230,10 +269,11 @@ def _traction_numpy(dv, load, p_1, h, p):
         n = p[FLOW_INDEX]
         na = n * p[ALPHA] * pmax
         bracket = 4.0 / (np.pi * pmax) + n * p[ALPHA] / 3.0 * (
-            1.866 * np.exp(na * np.sqrt(0.067)) + np.exp(0.707 * na)
-            + 0.134 * np.exp(na * np.sqrt(0.933)))
-        mu = np.minimum((p[ETA0] * speed / h) ** n * p[G_OIL] ** (1.0 - n) * bracket,
-                        p[MU_LIMIT])
+            1.866 * np.exp(na * np.sqrt(0.067))
+            + np.exp(0.707 * na)
+            + 0.134 * np.exp(na * np.sqrt(0.933))
+        )
+        mu = np.minimum((p[ETA0] * speed / h) ** n * p[G_OIL] ** (1.0 - n) * bracket, p[MU_LIMIT])
     else:
         pressure = pmax[..., None] * _GL_X
         eta = p[ETA0] * np.exp(np.minimum(p[ALPHA] * pressure, 600.0))
@@ -263,9 +303,8 @@ def slip_rhs_numpy(t, y, p, table):
     balls = y[NG:].reshape(z, NB)
     rho, vrho, psi, w_m, phi, w_r = balls.T
     w_i = p[OMEGA_I]
-    dev_in, dev_out = surface_deviation_numpy(psi, phi, w_i * t, p[R_B], p[R_IN], p[R_OUT],
-                                              table)
-    e = np.stack([np.cos(psi), np.sin(psi)])            # (2, Z)
+    dev_in, dev_out = surface_deviation_numpy(psi, phi, w_i * t, p[R_B], p[R_IN], p[R_OUT], table)
+    e = np.stack([np.cos(psi), np.sin(psi)])  # (2, Z)
     tang = np.stack([-np.sin(psi), np.cos(psi)])
     u_i, u_o, v_i, v_o = y[0:2], y[2:4], y[4:6], y[6:8]
     theta_c, w_c = y[8], y[9]
@@ -280,8 +319,11 @@ def slip_rhs_numpy(t, y, p, table):
     f_in = _traction_numpy(dv_in, n_in, p[P1_IN], p[H_IN], p) * n_in
     f_out = _traction_numpy(dv_out, n_out, p[P1_OUT], p[H_OUT], p) * n_out
     gap = (psi - theta_c - 2 * np.pi * np.arange(z) / z) * p[R_M]
-    n_c = np.where(np.abs(gap) > p[POCKET], p[K_CAGE] * (gap - np.sign(gap) * p[POCKET])
-                   + p[C_CAGE] * p[R_M] * (w_m - w_c), 0.0)
+    n_c = np.where(
+        np.abs(gap) > p[POCKET],
+        p[K_CAGE] * (gap - np.sign(gap) * p[POCKET]) + p[C_CAGE] * p[R_M] * (w_m - w_c),
+        0.0,
+    )
     mu_c = p[CAGE_MU] * np.clip(w_r * p[R_B] / 1e-3, -1, 1)
     drag = p[DRAG] * np.abs(2 * p[R_M] * w_m) ** 1.95 * np.where(w_m >= 0, 1.0, -1.0)
     f_imp = np.zeros(z)
@@ -296,10 +338,17 @@ def slip_rhs_numpy(t, y, p, table):
     m_b, r = p[M_B], p[R_M] + rho
     radial = n_in - n_out - mu_c * n_c + f_imp - m_b * p[GRAVITY] * np.sin(psi)
     tangential = f_in + f_out - n_c - drag - m_b * p[GRAVITY] * np.cos(psi)
-    dballs = np.stack([vrho, radial / m_b + r * w_m**2, w_m,
-                       (tangential / m_b - 2 * vrho * w_m) / r, w_r,
-                       ((f_in - f_out - mu_c * np.abs(n_c)) * p[R_B]
-                        - spin_drag_numpy(w_r, p)) / p[J_B]], axis=1)
+    dballs = np.stack(
+        [
+            vrho,
+            radial / m_b + r * w_m**2,
+            w_m,
+            (tangential / m_b - 2 * vrho * w_m) / r,
+            w_r,
+            ((f_in - f_out - mu_c * np.abs(n_c)) * p[R_B] - spin_drag_numpy(w_r, p)) / p[J_B],
+        ],
+        axis=1,
+    )
     # ring reactions: inner -N e_r - F e_t, outer +N e_r - F e_t (impacts split by sign)
     force_i = -(e @ (n_in + np.maximum(f_imp, 0))) - tang @ f_in
     force_o = e @ (n_out - np.minimum(f_imp, 0)) - tang @ f_out
@@ -430,7 +479,7 @@ def _solve(gh, jac_gb, lu_b, piv_b, m_bg, lu_s, piv_s, rhs, out):
     column = out.reshape((out.shape[0], 1))
     for j in range(z):
         b = NG + NB * j
-        _lu_solve(lu_b[j], piv_b[j], column[b:b + NB])    # D_j^-1 r_j
+        _lu_solve(lu_b[j], piv_b[j], column[b : b + NB])  # D_j^-1 r_j
         for r in range(NG):
             for k in range(NB):
                 out[r] += gh * jac_gb[j, r, k] * out[b + k]

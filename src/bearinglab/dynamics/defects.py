@@ -111,28 +111,41 @@ class Defect:
         for name, value in (("width", self.width), ("depth", self.depth)):
             if name == "depth" and value is None:
                 continue
-            if (isinstance(value, bool) or not isinstance(value, (int, float, np.floating))
-                    or not math.isfinite(value) or value <= 0):
+            if (
+                isinstance(value, bool)
+                or not isinstance(value, (int, float, np.floating))
+                or not math.isfinite(value)
+                or value <= 0
+            ):
                 raise InputError(name, value, "a positive length [m]")
         if not (isinstance(self.angle, (int, float, np.floating)) and math.isfinite(self.angle)):
             raise InputError("angle", self.angle, "a finite angle [rad]")
-        if isinstance(self.ball, bool) or not isinstance(self.ball, (int, np.integer)) \
-                or self.ball < 0:
+        if (
+            isinstance(self.ball, bool)
+            or not isinstance(self.ball, (int, np.integer))
+            or self.ball < 0
+        ):
             raise InputError("ball", self.ball, "a ball index >= 0")
 
     def check(self, bearing) -> None:
         """Refuse a defect that does not fit ``bearing`` (width below D_w, ball index < Z)."""
         if self.width >= bearing.ball_diameter:
-            raise InputError("width", self.width,
-                             f"less than the ball diameter {bearing.ball_diameter * 1e3:g} mm")
+            raise InputError(
+                "width",
+                self.width,
+                f"less than the ball diameter {bearing.ball_diameter * 1e3:g} mm",
+            )
         if self.location == "ball" and self.ball >= bearing.ball_count:
             raise InputError("ball", self.ball, f"a ball index in [0, {bearing.ball_count - 1}]")
 
     def to_dict(self) -> dict:
         """JSON-ready description in engineering units."""
-        out = {"location": self.location, "width_mm": self.width * 1e3,
-               "depth_mm": None if self.depth is None else self.depth * 1e3,
-               "angle_deg": math.degrees(self.angle)}
+        out = {
+            "location": self.location,
+            "width_mm": self.width * 1e3,
+            "depth_mm": None if self.depth is None else self.depth * 1e3,
+            "angle_deg": math.degrees(self.angle),
+        }
         if self.location == "ball":
             out["ball"] = self.ball
         return out
@@ -164,8 +177,9 @@ def pack_defects(defects, bearing, imperfections=None) -> np.ndarray:
         if not isinstance(d, Defect):
             raise InputError("defects", d, "Defect objects")
         d.check(bearing)
-        rows.append((KIND[d.location], d.width, math.inf if d.depth is None else d.depth,
-                     d.angle, d.ball))
+        rows.append(
+            (KIND[d.location], d.width, math.inf if d.depth is None else d.depth, d.angle, d.ball)
+        )
     if imperfections is not None:
         from ..imperfections import Imperfections
 
@@ -174,8 +188,7 @@ def pack_defects(defects, bearing, imperfections=None) -> np.ndarray:
         imperfections.check(bearing)
         for w in imperfections.waviness:
             kind = {"outer": 3, "inner": 4, "ball": 5}[w.race]
-            rows.append((kind, w.order, w.amplitude, w.phase,
-                         -1 if w.ball is None else w.ball))
+            rows.append((kind, w.order, w.amplitude, w.phase, -1 if w.ball is None else w.ball))
         errors = imperfections.ball_size_errors
         if errors is not None:
             rows += [(6, e, 0.0, 0.0, j) for j, e in enumerate(errors.errors) if e]

@@ -49,13 +49,19 @@ class SimulatedRecord:
 
         diag = self.diagnosis
         out = self.simulation.to_dict()
-        out.update({
-            "likely_fault": diag.likely_fault, "faults": list(diag.faults),
-            "diagnosis": diag.to_dict(),
-            "spectrum": {"channel": self.spectrum_channel,
-                         "resolution_hz": self.spectrum.resolution,
-                         "peaks": lines_to_dict(self.spectrum_lines)},
-            "warnings": list(self.warnings)})
+        out.update(
+            {
+                "likely_fault": diag.likely_fault,
+                "faults": list(diag.faults),
+                "diagnosis": diag.to_dict(),
+                "spectrum": {
+                    "channel": self.spectrum_channel,
+                    "resolution_hz": self.spectrum.resolution,
+                    "peaks": lines_to_dict(self.spectrum_lines),
+                },
+                "warnings": list(self.warnings),
+            }
+        )
         return out
 
     def to_pandas(self):
@@ -72,18 +78,28 @@ class SimulatedRecord:
             fig = axes[0].figure
         diag, spec, channel = self.diagnosis, self.spectrum, self.spectrum_channel
         diag.plot(ax=axes[0])
-        draw_spectrum(axes[1], spec, self.spectrum_lines, diag.frequencies,
-                      diag.max_frequency,
-                      title=f"plain spectrum of {channel} (resolution "
-                            f"{spec.resolution:.3g} Hz)",
-                      ylabel=f"amplitude [{'m' if channel.startswith('disp') else 'm/s^2'}]")
+        draw_spectrum(
+            axes[1],
+            spec,
+            self.spectrum_lines,
+            diag.frequencies,
+            diag.max_frequency,
+            title=f"plain spectrum of {channel} (resolution {spec.resolution:.3g} Hz)",
+            ylabel=f"amplitude [{'m' if channel.startswith('disp') else 'm/s^2'}]",
+        )
         fig.tight_layout()
         return fig, axes
 
 
-def simulate_record(bearing, condition, defects=(), *, spectrum_channel: str = "disp_y",
-                    progress: Callable[[float], None] | None = None,
-                    **options) -> SimulatedRecord:
+def simulate_record(
+    bearing,
+    condition,
+    defects=(),
+    *,
+    spectrum_channel: str = "disp_y",
+    progress: Callable[[float], None] | None = None,
+    **options,
+) -> SimulatedRecord:
     """Simulate, diagnose and read the plain spectrum of one record.
 
     Parameters
@@ -115,28 +131,38 @@ def simulate_record(bearing, condition, defects=(), *, spectrum_channel: str = "
     from ..signal.lines import spectrum_lines
 
     if spectrum_channel not in SPECTRUM_CHANNELS:
-        raise InputError("spectrum_channel", spectrum_channel,
-                         f"one of {', '.join(SPECTRUM_CHANNELS)}")
+        raise InputError(
+            "spectrum_channel", spectrum_channel, f"one of {', '.join(SPECTRUM_CHANNELS)}"
+        )
     defects = tuple(defects)
     # a record that cannot show the simulated defects (healthy: even BPFO) is refused
     families = [LOCATION_FAMILY[d.location] for d in defects] or ["outer_race"]
     warnings = operating_warnings(bearing, condition)
     if condition.shaft_speed > 0:
         kin = defect_frequencies(bearing, condition.shaft_speed)
-        warnings += sampling_warnings(kin, options.get("sample_rate", 50e3),
-                                      options.get("duration", 1.0), families)
+        warnings += sampling_warnings(
+            kin, options.get("sample_rate", 50e3), options.get("duration", 1.0), families
+        )
         check_record_length(kin, options.get("duration", 1.0))
     sim = simulate(bearing, condition, defects, progress=progress, **options)
     diag = analyze_signal(sim.signal, None, sim.kinematic, channel="acc_y")
-    spec, lines = spectrum_lines(sim.signal.channel(spectrum_channel),
-                                 sim.signal.sample_rate, sim.kinematic, diag.max_frequency)
+    spec, lines = spectrum_lines(
+        sim.signal.channel(spectrum_channel),
+        sim.signal.sample_rate,
+        sim.kinematic,
+        diag.max_frequency,
+    )
     warnings += list(sim.warnings)
     if condition.axial_load:
-        warnings.append(f"the axial load {condition.axial_load:g} N does not enter the "
-                        f"{sim.model} model (it is planar: radial load only)")
+        warnings.append(
+            f"the axial load {condition.axial_load:g} N does not enter the "
+            f"{sim.model} model (it is planar: radial load only)"
+        )
     imperfections = options.get("imperfections")
     if imperfections is not None and not defects:
-        warnings.append("no defects were simulated: the lines at the defect frequencies come "
-                        "from the form errors (e.g. outer-race waviness of order kZ +- 1 "
-                        "gives k x BPFO), so a fault found is not a defect")
+        warnings.append(
+            "no defects were simulated: the lines at the defect frequencies come "
+            "from the form errors (e.g. outer-race waviness of order kZ +- 1 "
+            "gives k x BPFO), so a fault found is not a defect"
+        )
     return SimulatedRecord(sim, diag, spectrum_channel, spec, tuple(lines), tuple(warnings))

@@ -76,20 +76,29 @@ class RigidParameters:
     def __post_init__(self) -> None:
         for name, value in asdict(self).items():
             positive = name.endswith("mass")
-            if (isinstance(value, bool) or not isinstance(value, (int, float, np.floating))
-                    or not math.isfinite(value) or value < 0 or (positive and value == 0)):
-                raise InputError(name, value, "a positive value" if positive else
-                                 "a value >= 0 (SI units)")
+            if (
+                isinstance(value, bool)
+                or not isinstance(value, (int, float, np.floating))
+                or not math.isfinite(value)
+                or value < 0
+                or (positive and value == 0)
+            ):
+                raise InputError(
+                    name, value, "a positive value" if positive else "a value >= 0 (SI units)"
+                )
 
     def to_dict(self) -> dict:
         """JSON-ready values (SI, with units in the keys)."""
-        return {"shaft_mass_kg": self.shaft_mass, "pedestal_mass_kg": self.pedestal_mass,
-                "shaft_stiffness_n_per_m": self.shaft_stiffness,
-                "shaft_damping_n_s_per_m": self.shaft_damping,
-                "pedestal_stiffness_n_per_m": self.pedestal_stiffness,
-                "pedestal_damping_n_s_per_m": self.pedestal_damping,
-                "bearing_damping_n_s_per_m": self.bearing_damping,
-                "unbalance_kg_m": self.unbalance}
+        return {
+            "shaft_mass_kg": self.shaft_mass,
+            "pedestal_mass_kg": self.pedestal_mass,
+            "shaft_stiffness_n_per_m": self.shaft_stiffness,
+            "shaft_damping_n_s_per_m": self.shaft_damping,
+            "pedestal_stiffness_n_per_m": self.pedestal_stiffness,
+            "pedestal_damping_n_s_per_m": self.pedestal_damping,
+            "bearing_damping_n_s_per_m": self.bearing_damping,
+            "unbalance_kg_m": self.unbalance,
+        }
 
 
 def hertz_constant(bearing) -> float:
@@ -102,8 +111,9 @@ def hertz_constant(bearing) -> float:
 
 def pack(bearing, condition, params: RigidParameters, table, cage_phase: float = 0.0):
     """The kernel's parameter array for ``bearing`` under ``condition``."""
-    orders = frequency_orders(bearing.ball_count, bearing.ball_diameter,
-                              bearing.pitch_diameter, bearing.contact_angle)
+    orders = frequency_orders(
+        bearing.ball_count, bearing.ball_diameter, bearing.pitch_diameter, bearing.contact_angle
+    )
     w = condition.shaft_speed
     load = condition.load_vector()
     p = np.zeros(kern.RIGID_PARAMETER_COUNT)
@@ -115,7 +125,7 @@ def pack(bearing, condition, params: RigidParameters, table, cage_phase: float =
     p[kern.C_BEARING] = params.bearing_damping
     p[kern.BALLS] = bearing.ball_count
     p[kern.CAGE_SPEED] = float(orders["ftf"]) * w
-    p[kern.SPIN_SPEED] = float(orders["bsf"]) * w      # ball spin relative to the cage
+    p[kern.SPIN_SPEED] = float(orders["bsf"]) * w  # ball spin relative to the cage
     p[kern.SHAFT_SPEED] = w
     p[kern.F_X], p[kern.F_Y] = load[0], load[1]
     p[kern.UNBALANCE] = params.unbalance
@@ -160,10 +170,9 @@ def static_state(p) -> np.ndarray:
     z = int(p[kern.BALLS])
     psi = p[kern.CAGE_PHASE] + 2 * np.pi * np.arange(z) / z
     k_s, k_p = p[kern.K_S], p[kern.K_P]
-    share = 1.0 if k_s == 0.0 else k_p / (k_p + k_s)     # approximate when k_s > 0
+    share = 1.0 if k_s == 0.0 else k_p / (k_p + k_s)  # approximate when k_s > 0
     u = static_offset(p[kern.K_HERTZ], psi, force * share, p[kern.HALF_CLEARANCE], theta)
-    x_p = (force * share / k_p if k_p > 0 else 0.0) * np.array([math.cos(theta),
-                                                                 math.sin(theta)])
+    x_p = (force * share / k_p if k_p > 0 else 0.0) * np.array([math.cos(theta), math.sin(theta)])
     y[2:4] = x_p
     y[0:2] = x_p + u
     return y

@@ -73,18 +73,26 @@ class Simulation:
     def to_dict(self) -> dict:
         """JSON-ready summary in engineering units (no samples: :meth:`to_pandas` has them)."""
         c, sig = self.condition, self.signal
-        return {"model": self.model, "bearing": getattr(self.bearing, "name", "") or None,
-                "speed_rpm": c.speed_rpm, "radial_load_n": c.radial_load,
-                "axial_load_n": c.axial_load, "sample_rate_hz": sig.sample_rate,
-                "duration_s": sig.duration, "start_time_s": sig.metadata.get("start_time_s"),
-                "channels": list(sig.names), "defects": [d.to_dict() for d in self.defects],
-                "imperfections": (None if self.imperfections is None
-                                  else self.imperfections.to_dict()),
-                "kinematic": self.kinematic.to_dict(),
-                "cage_speed_ratio": self.cage_speed_ratio,
-                "spin_speed_ratio": self.spin_speed_ratio, "halves": self.halves,
-                "parameters": self.parameters.to_dict(), "stats": dict(self.stats),
-                "warnings": list(self.warnings)}
+        return {
+            "model": self.model,
+            "bearing": getattr(self.bearing, "name", "") or None,
+            "speed_rpm": c.speed_rpm,
+            "radial_load_n": c.radial_load,
+            "axial_load_n": c.axial_load,
+            "sample_rate_hz": sig.sample_rate,
+            "duration_s": sig.duration,
+            "start_time_s": sig.metadata.get("start_time_s"),
+            "channels": list(sig.names),
+            "defects": [d.to_dict() for d in self.defects],
+            "imperfections": (None if self.imperfections is None else self.imperfections.to_dict()),
+            "kinematic": self.kinematic.to_dict(),
+            "cage_speed_ratio": self.cage_speed_ratio,
+            "spin_speed_ratio": self.spin_speed_ratio,
+            "halves": self.halves,
+            "parameters": self.parameters.to_dict(),
+            "stats": dict(self.stats),
+            "warnings": list(self.warnings),
+        }
 
     def to_pandas(self):
         """The record as a table: ``time_s`` and one column per channel (SI units:
@@ -102,8 +110,9 @@ class Simulation:
         from ..plotting import _pyplot
 
         if axes is None:
-            fig, axes = _pyplot().subplots(len(channels), 1, figsize=(10, 2.6 * len(channels)),
-                                           sharex=True, squeeze=False)
+            fig, axes = _pyplot().subplots(
+                len(channels), 1, figsize=(10, 2.6 * len(channels)), sharex=True, squeeze=False
+            )
             axes = axes[:, 0]
         else:
             fig = axes[0].figure
@@ -114,9 +123,11 @@ class Simulation:
             ax.plot(table["time_s"], values, lw=0.6)
             ax.set_ylabel(f"{name} [{units[name[:3]]}]")
         axes[-1].set_xlabel("time [s]")
-        axes[0].set_title(f"{getattr(self.bearing, 'name', '') or 'bearing'}: {self.model} "
-                          f"model, {self.condition.speed_rpm:g} rpm, "
-                          f"{self.condition.radial_load:g} N")
+        axes[0].set_title(
+            f"{getattr(self.bearing, 'name', '') or 'bearing'}: {self.model} "
+            f"model, {self.condition.speed_rpm:g} rpm, "
+            f"{self.condition.radial_load:g} N"
+        )
         fig.tight_layout()
         return fig, axes
 
@@ -146,17 +157,34 @@ class Simulation:
 
 
 def _check_number(name, value, allowed, low=0.0, inclusive=False):
-    if (isinstance(value, bool) or not isinstance(value, (int, float, np.floating))
-            or not math.isfinite(value) or value < low or (value == low and not inclusive)):
+    if (
+        isinstance(value, bool)
+        or not isinstance(value, (int, float, np.floating))
+        or not math.isfinite(value)
+        or value < low
+        or (value == low and not inclusive)
+    ):
         raise InputError(name, value, allowed)
     return float(value)
 
 
-def simulate(bearing, condition, defects=(), *, model: str = "rigid",
-             duration: float = 1.0, sample_rate: float = 50e3, parameters=None,
-             lubricant=None, settle: float | None = None, rtol: float | None = None,
-             noise: float = 0.0, seed: int | None = None, imperfections=None,
-             progress: Callable[[float], None] | None = None) -> Simulation:
+def simulate(
+    bearing,
+    condition,
+    defects=(),
+    *,
+    model: str = "rigid",
+    duration: float = 1.0,
+    sample_rate: float = 50e3,
+    parameters=None,
+    lubricant=None,
+    settle: float | None = None,
+    rtol: float | None = None,
+    noise: float = 0.0,
+    seed: int | None = None,
+    imperfections=None,
+    progress: Callable[[float], None] | None = None,
+) -> Simulation:
     """Simulate the vibration of ``bearing`` under ``condition`` with ``defects``.
 
     Parameters
@@ -198,8 +226,7 @@ def simulate(bearing, condition, defects=(), *, model: str = "rigid",
     duration = _check_number("duration", duration, "a duration > 0 [s]")
     sample_rate = _check_number("sample_rate", sample_rate, "a rate > 0 [Hz]")
     if duration * sample_rate < 64:
-        raise InputError("duration", duration, f"at least {64 / sample_rate:g} s "
-                         "(64 samples)")
+        raise InputError("duration", duration, f"at least {64 / sample_rate:g} s (64 samples)")
     if duration * sample_rate > 5e7:
         raise InputError("duration", duration, "at most 5e7 samples in one record")
     noise = _check_number("noise", noise, "an RMS >= 0 [m/s^2]", inclusive=True)
@@ -226,7 +253,7 @@ def simulate(bearing, condition, defects=(), *, model: str = "rigid",
         y0 = slip.initial_state(p)
         atol = slip.atol(bearing.ball_count)
         rtol = 1e-3 if rtol is None else rtol
-    if settle is not None:      # slip default: detected below (slip.settle)
+    if settle is not None:  # slip default: detected below (slip.settle)
         settle = _check_number("settle", settle, "a time >= 0 [s]", inclusive=True)
     rtol = _check_number("rtol", rtol, "a tolerance in (0, 0.1]")
     if rtol > 0.1:
@@ -238,38 +265,54 @@ def simulate(bearing, condition, defects=(), *, model: str = "rigid",
         t_s, y0, h_s, settled = slip.settle(p, table, y0, rtol, atol, 1.0 / sample_rate)
         start, settle = (t_s, h_s), t_s
         if not settled["settled"]:
-            notes.append(f"not settled after {settled['turns']} cage revolutions "
-                         f"({settle:.3g} s): the speed ratios still change by "
-                         f"{settled['change']:.2g} per two revolutions (rule: "
-                         f"{slip.SETTLE_TOLERANCE:g}); give a longer settle")
+            notes.append(
+                f"not settled after {settled['turns']} cage revolutions "
+                f"({settle:.3g} s): the speed ratios still change by "
+                f"{settled['change']:.2g} per two revolutions (rule: "
+                f"{slip.SETTLE_TOLERANCE:g}); give a longer settle"
+            )
     n = round(duration * sample_rate)
     t_out = settle + np.arange(n) / sample_rate
     # the rigid model's dense output is 4th order, so its step may span two samples (30 %
     # fewer step attempts at equal accuracy, benchmarks/README.md); the slip model
     # interpolates by cubic Hermite and keeps one
     h_max = (RIGID_STEPS_PER_SAMPLE if model == "rigid" else 1.0) / sample_rate
-    states, stats = _integrate_chunks(model, p, table, y0, t_out, rtol, atol, h_max, progress,
-                                      start)
+    states, stats = _integrate_chunks(
+        model, p, table, y0, t_out, rtol, atol, h_max, progress, start
+    )
     stats["settle_s"] = settle
-    if settled is not None:      # the settling run's steps count too
+    if settled is not None:  # the settling run's steps count too
         stats["settle_turns"] = settled["turns"]
         stats["steps"] += settled["steps"]
         stats["rejected_steps"] += settled["rejected_steps"]
-    sim = _result(model, bearing, condition, defects, params, kin, p, table, t_out, states,
-                  stats, noise, seed, sample_rate, notes)
+    sim = _result(
+        model,
+        bearing,
+        condition,
+        defects,
+        params,
+        kin,
+        p,
+        table,
+        t_out,
+        states,
+        stats,
+        noise,
+        seed,
+        sample_rate,
+        notes,
+    )
     return dataclasses.replace(sim, imperfections=imperfections)
 
 
 def needs_compiling(model: str = "rigid") -> bool:
     """True when the integrator of ``model`` is not yet in numba's on-disk cache: the first
     simulation in this install will compile it (several seconds; later ones load it)."""
-    kernel = (_integrate.dopri_chunk_rigid if model == "rigid"
-              else _slip_kernels.rosenbrock_chunk)
+    kernel = _integrate.dopri_chunk_rigid if model == "rigid" else _slip_kernels.rosenbrock_chunk
     return not _integrate.cached_on_disk(kernel)
 
 
-def _integrate_chunks(model, p, table, y0, t_out, rtol, atol, h_max, progress,
-                      start=(0.0, 1e-6)):
+def _integrate_chunks(model, p, table, y0, t_out, rtol, atol, h_max, progress, start=(0.0, 1e-6)):
     """Run the integrator chunk by chunk (progress between chunks) from the time and
     step ``start``; raise if it fails."""
     (t, h), y = start, y0.copy()
@@ -277,20 +320,23 @@ def _integrate_chunks(model, p, table, y0, t_out, rtol, atol, h_max, progress,
     steps = rejected = 0
     bounds = np.linspace(0, t_out.size, min(CHUNKS, t_out.size) + 1).astype(int)
     for k in range(bounds.size - 1):
-        chunk = t_out[bounds[k]:bounds[k + 1]]
+        chunk = t_out[bounds[k] : bounds[k + 1]]
         if model == "rigid":
             out, t, y, h, s, r, status = _integrate.dopri_chunk_rigid(
-                p, table, t, y, h, chunk, rtol, atol, h_max, MAX_STEPS_PER_CHUNK)
+                p, table, t, y, h, chunk, rtol, atol, h_max, MAX_STEPS_PER_CHUNK
+            )
         else:
             out, t, y, h, s, r, status = _slip_kernels.rosenbrock_chunk(
-                p, table, t, y, h, chunk, rtol, atol, h_max, MAX_STEPS_PER_CHUNK)
+                p, table, t, y, h, chunk, rtol, atol, h_max, MAX_STEPS_PER_CHUNK
+            )
         steps += s
         rejected += r
         if status != _integrate.OK:
             raise ConvergenceError(
                 f"{model} model: integration stopped at t = {t:.6g} s: "
                 f"{_integrate.STATUS_TEXT[status]} (steps {steps}, rejected {rejected}); "
-                "try a smaller load step, a looser rtol or check the inputs")
+                "try a smaller load step, a looser rtol or check the inputs"
+            )
         pieces.append(out)
         if progress is not None:
             progress(bounds[k + 1] / t_out.size)
@@ -300,27 +346,45 @@ def _integrate_chunks(model, p, table, y0, t_out, rtol, atol, h_max, progress,
     return states, {"steps": int(steps), "rejected_steps": int(rejected)}
 
 
-def _result(model, bearing, condition, defects, params, kin, p, table, t_out, states, stats,
-            noise, seed, sample_rate, notes=()):
-    accelerations = (_kernels.rigid_accelerations if model == "rigid"
-                     else _slip_kernels.slip_accelerations)
+def _result(
+    model,
+    bearing,
+    condition,
+    defects,
+    params,
+    kin,
+    p,
+    table,
+    t_out,
+    states,
+    stats,
+    noise,
+    seed,
+    sample_rate,
+    notes=(),
+):
+    accelerations = (
+        _kernels.rigid_accelerations if model == "rigid" else _slip_kernels.slip_accelerations
+    )
     acc = accelerations(p, table, t_out, states)
-    disp = states[:, 0:2] - states[:, 2:4]      # both models start with (x_i, y_i, x_o, y_o)
+    disp = states[:, 0:2] - states[:, 2:4]  # both models start with (x_i, y_i, x_o, y_o)
     if noise > 0:
         acc = acc + np.random.default_rng(seed).normal(0.0, noise, acc.shape)
-    channels = {"acc_x": acc[:, 0], "acc_y": acc[:, 1], "disp_x": disp[:, 0],
-                "disp_y": disp[:, 1]}
+    channels = {"acc_x": acc[:, 0], "acc_y": acc[:, 1], "disp_x": disp[:, 0], "disp_y": disp[:, 1]}
     extra = {}
     if model == "slip":
         z = bearing.ball_count
-        balls = states[:, _slip_kernels.NG:].reshape(t_out.size, z, _slip_kernels.NB)
+        balls = states[:, _slip_kernels.NG :].reshape(t_out.size, z, _slip_kernels.NB)
         channels["cage_speed"] = states[:, 9]
         w_m = balls[:, :, 3].T
         w_r = balls[:, :, 5].T
         r_b, r_in, r_out = p[_slip_kernels.R_B], p[_slip_kernels.R_IN], p[_slip_kernels.R_OUT]
-        extra = {"ball_orbital_speed": w_m, "ball_spin_speed": w_r,
-                 "slip_inner": (p[_slip_kernels.OMEGA_I] - w_m) * r_in - w_r * r_b,
-                 "slip_outer": w_r * r_b - w_m * r_out}
+        extra = {
+            "ball_orbital_speed": w_m,
+            "ball_spin_speed": w_r,
+            "slip_inner": (p[_slip_kernels.OMEGA_I] - w_m) * r_in - w_r * r_b,
+            "slip_outer": w_r * r_b - w_m * r_out,
+        }
         # the continuous spin phases and cage angle carry the speed ratios and the check
         # that the record's two halves agree
         extra["ball_spin_phase"] = balls[:, :, 4].T
@@ -330,18 +394,26 @@ def _result(model, bearing, condition, defects, params, kin, p, table, t_out, st
         notes = list(notes)
         if not halves["agree"]:
             (c1, c2), (s1, s2) = halves["cage_speed_ratio"], halves["spin_speed_ratio"]
-            notes.append(f"the two halves of the record disagree: spin ratio {s1:.4f} / "
-                         f"{s2:.4f}, cage speed ratio {c1:.4f} / {c2:.4f} (allowed "
-                         f"difference {halves['tolerance']:g}); the record is not "
-                         "stationary: settle longer or record longer")
+            notes.append(
+                f"the two halves of the record disagree: spin ratio {s1:.4f} / "
+                f"{s2:.4f}, cage speed ratio {c1:.4f} / {c2:.4f} (allowed "
+                f"difference {halves['tolerance']:g}); the record is not "
+                "stationary: settle longer or record longer"
+            )
         extra["warnings"] = tuple(notes)
-    metadata = {"source": f"bearinglab {model} model", "model": model,
-                "speed_rpm": condition.shaft_speed * 30.0 / math.pi,
-                "radial_load_n": condition.radial_load, "bearing": bearing.name or "",
-                "defects": [d.to_dict() for d in defects], "start_time_s": float(t_out[0])}
+    metadata = {
+        "source": f"bearinglab {model} model",
+        "model": model,
+        "speed_rpm": condition.shaft_speed * 30.0 / math.pi,
+        "radial_load_n": condition.radial_load,
+        "bearing": bearing.name or "",
+        "defects": [d.to_dict() for d in defects],
+        "start_time_s": float(t_out[0]),
+    }
     signal = Signal(channels, sample_rate, metadata)
-    return Simulation(model, bearing, condition, tuple(defects), signal, kin, params, stats,
-                      **extra)
+    return Simulation(
+        model, bearing, condition, tuple(defects), signal, kin, params, stats, **extra
+    )
 
 
 __all__ = ["MODELS", "Defect", "Simulation", "needs_compiling", "simulate"]

@@ -170,19 +170,36 @@ class SlipParameters:
             if not isinstance(getattr(self, name), bool):
                 raise InputError(name, getattr(self, name), "True or False")
         mu_c = self.cage_friction
-        if (isinstance(mu_c, bool) or not isinstance(mu_c, (int, float, np.floating))
-                or not 0 <= mu_c <= MAX_CAGE_FRICTION):     # False for NaN too
-            raise InputError("cage_friction", mu_c,
-                             f"a friction coefficient in [0, {MAX_CAGE_FRICTION}]",
-                             "lubricated cage pockets run at about 0.05-0.2")
+        if (
+            isinstance(mu_c, bool)
+            or not isinstance(mu_c, (int, float, np.floating))
+            or not 0 <= mu_c <= MAX_CAGE_FRICTION
+        ):  # False for NaN too
+            raise InputError(
+                "cage_friction",
+                mu_c,
+                f"a friction coefficient in [0, {MAX_CAGE_FRICTION}]",
+                "lubricated cage pockets run at about 0.05-0.2",
+            )
         for name, value in asdict(self).items():
             if name in ("traction", "impact_forces", "spin_drag") or value is None:
                 continue
-            if (isinstance(value, bool) or not isinstance(value, (int, float, np.floating))
-                    or not math.isfinite(value) or value < 0):
+            if (
+                isinstance(value, bool)
+                or not isinstance(value, (int, float, np.floating))
+                or not math.isfinite(value)
+                or value < 0
+            ):
                 raise InputError(name, value, "a finite value >= 0 (SI units)")
-        for name in ("flow_index", "regularisation_speed", "damping_onset", "cage_stiffness",
-                     "cage_mass_ratio", "inner_mass", "outer_mass"):
+        for name in (
+            "flow_index",
+            "regularisation_speed",
+            "damping_onset",
+            "cage_stiffness",
+            "cage_mass_ratio",
+            "inner_mass",
+            "outer_mass",
+        ):
             if getattr(self, name) == 0:
                 raise InputError(name, 0, "a positive value")
         if self.flow_index > 1:
@@ -190,16 +207,28 @@ class SlipParameters:
         if self.oil_fraction > 1:
             raise InputError("oil_fraction", self.oil_fraction, "a fraction in [0, 1]")
         if self.spin_drag and self.oil_fraction == 0:
-            raise InputError("oil_fraction", 0, "a fraction > 0 when spin_drag is on",
-                             "the spin drag acts in the oil-air mixture")
+            raise InputError(
+                "oil_fraction",
+                0,
+                "a fraction > 0 when spin_drag is on",
+                "the spin drag acts in the oil-air mixture",
+            )
 
     def to_dict(self) -> dict:
         """JSON-ready values (SI, units in the keys where they have one)."""
-        units = {"oil_shear_modulus": "_pa", "regularisation_speed": "_m_s",
-                 "cage_stiffness": "_n_per_m", "cage_damping": "_n_s_per_m",
-                 "pocket_clearance": "_m", "housing_stiffness": "_n_per_m",
-                 "housing_damping": "_n_s_per_m", "inner_mass": "_kg", "outer_mass": "_kg",
-                 "unbalance": "_kg_m", "damping_onset": "_m"}
+        units = {
+            "oil_shear_modulus": "_pa",
+            "regularisation_speed": "_m_s",
+            "cage_stiffness": "_n_per_m",
+            "cage_damping": "_n_s_per_m",
+            "pocket_clearance": "_m",
+            "housing_stiffness": "_n_per_m",
+            "housing_damping": "_n_s_per_m",
+            "inner_mass": "_kg",
+            "outer_mass": "_kg",
+            "unbalance": "_kg_m",
+            "damping_onset": "_m",
+        }
         return {k + units.get(k, ""): v for k, v in asdict(self).items()}
 
 
@@ -209,37 +238,61 @@ def _ring_mass(bearing, which: str, given):
     try:
         return getattr(bearing, f"{which}_ring_mass")
     except InputError as exc:
-        raise InputError(f"{which}_mass", None, "a ring mass [kg]",
-                         f"the bearing has no boundary dimensions to compute it ({exc})") from None
+        raise InputError(
+            f"{which}_mass",
+            None,
+            "a ring mass [kg]",
+            f"the bearing has no boundary dimensions to compute it ({exc})",
+        ) from None
 
 
-def pack(bearing, condition, params: SlipParameters, table, lubricant: Lubricant | None = None,
-         defect_width: float = 0.0):
+def pack(
+    bearing,
+    condition,
+    params: SlipParameters,
+    table,
+    lubricant: Lubricant | None = None,
+    defect_width: float = 0.0,
+):
     """The kernel's parameter array for ``bearing`` under ``condition``."""
     lub = lubricant or LUBRICANTS["seed004-grease"]
     if lub.limiting_shear_coefficient is None:
-        raise InputError("lubricant", lub.name, "a lubricant with a limiting_shear_coefficient",
-                         "the traction models need tau_L/p")
+        raise InputError(
+            "lubricant",
+            lub.name,
+            "a lubricant with a limiting_shear_coefficient",
+            "the traction models need tau_L/p",
+        )
     if bearing.contact_angle > math.radians(1.0):
-        raise InputError("contact_angle", math.degrees(bearing.contact_angle),
-                         "0 deg (the slip model is planar: deep-groove bearings, radial load)")
+        raise InputError(
+            "contact_angle",
+            math.degrees(bearing.contact_angle),
+            "0 deg (the slip model is planar: deep-groove bearings, radial load)",
+        )
     if condition.shaft_speed <= 0:
-        raise InputError("shaft_speed", condition.shaft_speed, "a speed > 0 [rad/s]",
-                         "the slip model needs the inner ring turning")
+        raise InputError(
+            "shaft_speed",
+            condition.shaft_speed,
+            "a speed > 0 [rad/s]",
+            "the slip model needs the inner ring turning",
+        )
     z = bearing.ball_count
     dw = bearing.ball_diameter
     e_prime = effective_modulus(bearing.ball_material, bearing.ring_material)
     load = condition.load_vector()
-    q_max = max(5.0 * condition.radial_load / z, 1.0)           # Stribeck's estimate
+    q_max = max(5.0 * condition.radial_load / z, 1.0)  # Stribeck's estimate
     u = float(entrainment_speed(bearing, condition.shaft_speed))
     eta = lub.dynamic_viscosity
     p = np.zeros(sk.SLIP_PARAMETER_COUNT)
-    for race, k_i, h_i, c_i, p1_i in (("inner", sk.K_IN, sk.H_IN, sk.C_IN, sk.P1_IN),
-                                      ("outer", sk.K_OUT, sk.H_OUT, sk.C_OUT, sk.P1_OUT)):
+    for race, k_i, h_i, c_i, p1_i in (
+        ("inner", sk.K_IN, sk.H_IN, sk.C_IN, sk.P1_IN),
+        ("outer", sk.K_OUT, sk.H_OUT, sk.C_OUT, sk.P1_OUT),
+    ):
         rx, ry = bearing.contact_radii(race)
         p[k_i] = float(hertz.load_deflection_constant(rx, ry, e_prime))
-        h = float(hamrock_dowson_film(q_max, u, rx, ry, e_prime, eta,
-                                      lub.pressure_viscosity_coefficient))
+        h = float(
+            hamrock_dowson_film(q_max, u, rx, ry, e_prime, eta, lub.pressure_viscosity_coefficient)
+        )
         p[h_i] = h
         contact = hertz.point_contact(q_max, rx, ry, e_prime)
         p[c_i] = 6 * math.pi * eta * rx**1.5 * float(contact.semi_major) / (1.414 * h**1.5)
@@ -275,9 +328,10 @@ def pack(bearing, condition, params: SlipParameters, table, lubricant: Lubricant
     p[sk.V_REG] = params.regularisation_speed
     p[sk.ONSET] = params.damping_onset
     p[sk.DRAG] = math.pi * rho_e * params.ball_drag_coefficient * (0.5 * dw) ** 2 / 8.0
-    p[sk.CAGE_DRAG] = (0.5 * rho_e * params.cage_drag_coefficient * r_co**3
-                       * (r_co**2 - r_ci**2)
-                       + 0.125 * sk.CAGE_D * rho_e * (2 * math.pi * r_co * 0.5 * dw) * r_ci**3)
+    p[sk.CAGE_DRAG] = (
+        0.5 * rho_e * params.cage_drag_coefficient * r_co**3 * (r_co**2 - r_ci**2)
+        + 0.125 * sk.CAGE_D * rho_e * (2 * math.pi * r_co * 0.5 * dw) * r_ci**3
+    )
     p[sk.IMPACTS] = 1.0 if params.impact_forces else 0.0
     p[sk.CAGE_MU] = params.cage_friction
     # spin drag: mixture density and viscosity by the linear rule (air neglected)
@@ -296,16 +350,21 @@ def initial_state(p, cage_phase: float = 0.0) -> np.ndarray:
     y = np.zeros(sk.NG + sk.NB * z)
     w_i = p[sk.OMEGA_I]
     r_in, r_out, r_b = p[sk.R_IN], p[sk.R_OUT], p[sk.R_B]
-    w_c = w_i * r_in / (r_in + r_out)                   # eq. 13 with zero slip
+    w_c = w_i * r_in / (r_in + r_out)  # eq. 13 with zero slip
     w_r = w_c * r_out / r_b
     psi = cage_phase + 2 * np.pi * np.arange(z) / z
     force = math.hypot(p[sk.F_X], p[sk.F_Y])
     k = float(hertz.series_constant(p[sk.K_IN], p[sk.K_OUT]))
-    offset = static_offset(k, psi, force, 2 * p[sk.QUARTER_CLEARANCE] - p[sk.H_IN]
-                           - p[sk.H_OUT], math.atan2(p[sk.F_Y], p[sk.F_X]))
+    offset = static_offset(
+        k,
+        psi,
+        force,
+        2 * p[sk.QUARTER_CLEARANCE] - p[sk.H_IN] - p[sk.H_OUT],
+        math.atan2(p[sk.F_Y], p[sk.F_X]),
+    )
     y[0:2] = offset
     y[8], y[9] = cage_phase, w_c
-    balls = y[sk.NG:].reshape(z, sk.NB)
+    balls = y[sk.NG :].reshape(z, sk.NB)
     balls[:, 0] = 0.5 * (offset[0] * np.cos(psi) + offset[1] * np.sin(psi))
     balls[:, 2] = psi
     balls[:, 3] = w_c
@@ -374,8 +433,10 @@ def phase_ratios(t, cage_angle, spin_phase, p) -> tuple[float, float]:
     span = float(t[-1] - t[0])
     w_c, w_r = pure_rolling_speeds(p)
     phase = np.asarray(spin_phase)
-    return (float((cage_angle[-1] - cage_angle[0]) / span / w_c),
-            float(np.mean(phase[:, -1] - phase[:, 0]) / span / w_r))
+    return (
+        float((cage_angle[-1] - cage_angle[0]) / span / w_c),
+        float(np.mean(phase[:, -1] - phase[:, 0]) / span / w_r),
+    )
 
 
 def halves_check(t, cage_angle, spin_phase, p, tolerance: float = HALVES_TOLERANCE) -> dict:
@@ -385,16 +446,29 @@ def halves_check(t, cage_angle, spin_phase, p, tolerance: float = HALVES_TOLERAN
     first/second half), ``difference`` (largest |second - first|), ``tolerance``,
     ``agree``."""
     mid = len(t) // 2
-    first = phase_ratios(t[:mid + 1], cage_angle[:mid + 1], spin_phase[:, :mid + 1], p)
+    first = phase_ratios(t[: mid + 1], cage_angle[: mid + 1], spin_phase[:, : mid + 1], p)
     second = phase_ratios(t[mid:], cage_angle[mid:], spin_phase[:, mid:], p)
     diff = float(max(abs(second[0] - first[0]), abs(second[1] - first[1])))
-    return {"cage_speed_ratio": (first[0], second[0]),
-            "spin_speed_ratio": (first[1], second[1]),
-            "difference": diff, "tolerance": tolerance, "agree": diff <= tolerance}
+    return {
+        "cage_speed_ratio": (first[0], second[0]),
+        "spin_speed_ratio": (first[1], second[1]),
+        "difference": diff,
+        "tolerance": tolerance,
+        "agree": diff <= tolerance,
+    }
 
 
-def settle(p, table, y0, rtol, atol, h_max, tolerance: float | None = None,
-           min_turns: int | None = None, max_turns: int | None = None):
+def settle(
+    p,
+    table,
+    y0,
+    rtol,
+    atol,
+    h_max,
+    tolerance: float | None = None,
+    min_turns: int | None = None,
+    max_turns: int | None = None,
+):
     """Integrate from ``y0`` until the motion has settled.
 
     How long that takes depends on how firmly the races grip the balls and on the
@@ -432,21 +506,29 @@ def settle(p, table, y0, rtol, atol, h_max, tolerance: float | None = None,
     t, y, h = 0.0, np.array(y0, dtype=float), 1e-6
     spin_cols = sk.NG + 4 + sk.NB * np.arange(int(p[sk.BALLS]))
     mark = y.copy()
-    ratios = []                       # (cage, spin) per revolution
+    ratios = []  # (cage, spin) per revolution
     change = math.inf
     turn = steps = rejected = 0
     while turn < max(max_turns, min_turns):
         turn += 1
         out, t, y, h, s, r, status = sk.rosenbrock_chunk(
-            p, table, t, y, h, np.array([turn * period]), rtol, atol, h_max,
-            _MAX_STEPS_PER_TURN)
+            p, table, t, y, h, np.array([turn * period]), rtol, atol, h_max, _MAX_STEPS_PER_TURN
+        )
         if status != OK:
-            raise ConvergenceError(f"slip model: settling stopped at t = {t:.6g} s: "
-                                   f"{STATUS_TEXT[status]}; try a looser rtol or check "
-                                   "the inputs")
+            raise ConvergenceError(
+                f"slip model: settling stopped at t = {t:.6g} s: "
+                f"{STATUS_TEXT[status]}; try a looser rtol or check "
+                "the inputs"
+            )
         steps, rejected = steps + s, rejected + r
-        ratios.append(phase_ratios(np.array([0.0, period]), np.array([mark[8], out[0, 8]]),
-                                   np.stack([mark[spin_cols], out[0, spin_cols]], axis=1), p))
+        ratios.append(
+            phase_ratios(
+                np.array([0.0, period]),
+                np.array([mark[8], out[0, 8]]),
+                np.stack([mark[spin_cols], out[0, spin_cols]], axis=1),
+                p,
+            )
+        )
         mark = out[0]
         if turn >= 4:
             recent = np.mean(ratios[-2:], axis=0)
@@ -455,6 +537,17 @@ def settle(p, table, y0, rtol, atol, h_max, tolerance: float | None = None,
         if turn >= min_turns and change <= tolerance:
             break
     cage, spin = (list(map(float, col)) for col in zip(*ratios, strict=True))
-    return t, y, h, {"turns": turn, "settled": change <= tolerance, "change": change,
-                     "cage_speed_ratios": cage, "spin_speed_ratios": spin,
-                     "steps": int(steps), "rejected_steps": int(rejected)}
+    return (
+        t,
+        y,
+        h,
+        {
+            "turns": turn,
+            "settled": change <= tolerance,
+            "change": change,
+            "cage_speed_ratios": cage,
+            "spin_speed_ratios": spin,
+            "steps": int(steps),
+            "rejected_steps": int(rejected),
+        },
+    )

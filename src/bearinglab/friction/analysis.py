@@ -55,19 +55,37 @@ from .skf import (
 )
 
 MODELS = ("constant", "skf")
-_CONSTANT_CAVEAT = ("seed 003's coefficients hold for a lubricant of about 20 mm^2/s at the "
-                    "operating temperature and do not depend on speed; seals not included")
-_NO_LOAD = ("no load: the model gives no load-dependent moment (a running bearing needs its "
-            "minimum load, and real unloaded bearings still have drag and seal friction)")
+_CONSTANT_CAVEAT = (
+    "seed 003's coefficients hold for a lubricant of about 20 mm^2/s at the "
+    "operating temperature and do not depend on speed; seals not included"
+)
+_NO_LOAD = (
+    "no load: the model gives no load-dependent moment (a running bearing needs its "
+    "minimum load, and real unloaded bearings still have drag and seal friction)"
+)
 _ISO76_C0 = "ISO 76 from the internal geometry (bearinglab.life)"
 
-__all__ = ["MODELS", "SEALS", "FrictionBearing", "FrictionResult", "bearing_friction",
-           "constant_friction", "skf_friction"]
+__all__ = [
+    "MODELS",
+    "SEALS",
+    "FrictionBearing",
+    "FrictionResult",
+    "bearing_friction",
+    "constant_friction",
+    "skf_friction",
+]
 
 
-def constant_friction(equivalent_load: float, pitch_diameter: float, shaft_speed: float,
-                      friction_type: str, *, name: str = "", radial_load: float | None = None,
-                      axial_load: float = 0.0) -> FrictionResult:
+def constant_friction(
+    equivalent_load: float,
+    pitch_diameter: float,
+    shaft_speed: float,
+    friction_type: str,
+    *,
+    name: str = "",
+    radial_load: float | None = None,
+    axial_load: float = 0.0,
+) -> FrictionResult:
     """Seed 003's constant-coefficient estimate M = mu P d_m / 2, N = M omega.
 
     Parameters
@@ -95,20 +113,43 @@ def constant_friction(equivalent_load: float, pitch_diameter: float, shaft_speed
     torque = float(constant_coefficient_torque(mu, p, pitch_diameter))
     fr = p if radial_load is None else check_load("radial_load", radial_load)
     return FrictionResult(
-        "constant", name, w, fr, check_load("axial_load", axial_load), torque,
-        parameters={"friction_type": friction_type, "friction_coefficient": mu,
-                    "equivalent_load": p, "pitch_diameter": float(pitch_diameter)},
+        "constant",
+        name,
+        w,
+        fr,
+        check_load("axial_load", axial_load),
+        torque,
+        parameters={
+            "friction_type": friction_type,
+            "friction_coefficient": mu,
+            "equivalent_load": p,
+            "pitch_diameter": float(pitch_diameter),
+        },
         sources=(SEED003_SOURCE,),
-        warnings=(_CONSTANT_CAVEAT,) + ((_NO_LOAD,) if p == 0.0 else ()))
+        warnings=(_CONSTANT_CAVEAT,) + ((_NO_LOAD,) if p == 0.0 else ()),
+    )
 
 
-def skf_friction(bearing_type: str, bore: float, outside_diameter: float, radial_load: float,
-                 axial_load: float, shaft_speed: float, viscosity: float,
-                 constants: SkfGeometryConstants, *, name: str = "",
-                 static_load_rating: float | None = None, lubrication: str = "grease",
-                 k_z: float | None = None, lubricant_kind: str = "mineral", mu_bl: float = MU_BL,
-                 seal: float = 0.0, drag: float = 0.0,
-                 notes: tuple = ()) -> FrictionResult:
+def skf_friction(
+    bearing_type: str,
+    bore: float,
+    outside_diameter: float,
+    radial_load: float,
+    axial_load: float,
+    shaft_speed: float,
+    viscosity: float,
+    constants: SkfGeometryConstants,
+    *,
+    name: str = "",
+    static_load_rating: float | None = None,
+    lubrication: str = "grease",
+    k_z: float | None = None,
+    lubricant_kind: str = "mineral",
+    mu_bl: float = MU_BL,
+    seal: float = 0.0,
+    drag: float = 0.0,
+    notes: tuple = (),
+) -> FrictionResult:
     """The SKF model (:func:`~bearinglab.friction.skf.skf_frictional_moment`) as a result.
 
     Parameters
@@ -155,16 +196,32 @@ def skf_friction(bearing_type: str, bore: float, outside_diameter: float, radial
     w = check_speed(shaft_speed)
     fr = check_load("radial_load", radial_load)
     fa = check_load("axial_load", axial_load)
-    m = skf_frictional_moment(bearing_type, bore, outside_diameter, fr, fa, w, viscosity,
-                              constants, static_load_rating=static_load_rating,
-                              k_rs=K_RS[lubrication], k_z=k_z, mu_bl=mu_bl,
-                              mu_ehl=MU_EHL[lubricant_kind], seal=seal, drag=drag)
+    m = skf_frictional_moment(
+        bearing_type,
+        bore,
+        outside_diameter,
+        fr,
+        fa,
+        w,
+        viscosity,
+        constants,
+        static_load_rating=static_load_rating,
+        k_rs=K_RS[lubrication],
+        k_z=k_z,
+        mu_bl=mu_bl,
+        mu_ehl=MU_EHL[lubricant_kind],
+        seal=seal,
+        drag=drag,
+    )
     dm = 0.5 * (float(bore) + float(outside_diameter))
     nu1 = float(viscosity) / viscosity_ratio(viscosity, w, dm) if w > 0 else None
     warnings = list(notes)
     if not constants.verified:
-        warnings.append("SKF geometry constants not checked against the catalogue table ("
-                        + constants.source + ")")
+        warnings.append(
+            "SKF geometry constants not checked against the catalogue table ("
+            + constants.source
+            + ")"
+        )
     if fr == 0.0 and fa == 0.0:
         warnings.append(_NO_LOAD)
     if lubrication == "low-oil-bath" and drag == 0.0:
@@ -172,33 +229,58 @@ def skf_friction(bearing_type: str, bore: float, outside_diameter: float, radial
     if static_load_rating is not None and fa > 0.5 * static_load_rating:
         warnings.append("F_a > 0.5 C_0: beyond the axial load a deep-groove bearing should carry")
     return FrictionResult(
-        "skf", name, w, fr, fa, m.total,
-        components={"rolling": m.rolling, "sliding": m.sliding, "seal": m.seal,
-                    "drag": m.drag},
-        parameters={"mean_diameter": dm, "viscosity": float(viscosity), "rated_viscosity": nu1,
-                    "viscosity_ratio": None if nu1 is None else float(viscosity) / nu1,
-                    "inlet_shear_factor": m.inlet_shear_factor,
-                    "replenishment_factor": m.replenishment_factor,
-                    "sliding_weighting_factor": m.sliding_weighting_factor,
-                    "sliding_friction_coefficient": m.sliding_friction_coefficient,
-                    "rolling_variable": m.rolling_variable,
-                    "sliding_variable": m.sliding_variable, "k_rs": K_RS[lubrication],
-                    "k_z": K_Z.get(bearing_type) if k_z is None else k_z,
-                    "lubrication": lubrication, "constants": constants},
+        "skf",
+        name,
+        w,
+        fr,
+        fa,
+        m.total,
+        components={"rolling": m.rolling, "sliding": m.sliding, "seal": m.seal, "drag": m.drag},
+        parameters={
+            "mean_diameter": dm,
+            "viscosity": float(viscosity),
+            "rated_viscosity": nu1,
+            "viscosity_ratio": None if nu1 is None else float(viscosity) / nu1,
+            "inlet_shear_factor": m.inlet_shear_factor,
+            "replenishment_factor": m.replenishment_factor,
+            "sliding_weighting_factor": m.sliding_weighting_factor,
+            "sliding_friction_coefficient": m.sliding_friction_coefficient,
+            "rolling_variable": m.rolling_variable,
+            "sliding_variable": m.sliding_variable,
+            "k_rs": K_RS[lubrication],
+            "k_z": K_Z.get(bearing_type) if k_z is None else k_z,
+            "lubrication": lubrication,
+            "constants": constants,
+        },
         sources=(SKF_SOURCE, "ISO 281:2007 rated viscosity nu_1"),
-        warnings=tuple(warnings))
+        warnings=tuple(warnings),
+    )
 
 
 # ------------------------------------------------------------------ the analysis
-def bearing_friction(bearing, shaft_speed: float, radial_load: float, axial_load: float = 0.0,
-                     *, model: str = "constant", designation=None,
-                     friction_type: str | None = None, equivalent_load: float | None = None,
-                     static_load_rating: float | None = None, viscosity: float | None = None,
-                     lubricant=None, temperature: float | None = None,
-                     lubrication: str | None = None, lubricant_kind: str = "mineral",
-                     constants: SkfGeometryConstants | None = None, series: str | None = None,
-                     seals: str | None = None, seal_constants=None,
-                     seal_diameter: float | None = None, **skf_options) -> FrictionResult:
+def bearing_friction(
+    bearing,
+    shaft_speed: float,
+    radial_load: float,
+    axial_load: float = 0.0,
+    *,
+    model: str = "constant",
+    designation=None,
+    friction_type: str | None = None,
+    equivalent_load: float | None = None,
+    static_load_rating: float | None = None,
+    viscosity: float | None = None,
+    lubricant=None,
+    temperature: float | None = None,
+    lubrication: str | None = None,
+    lubricant_kind: str = "mineral",
+    constants: SkfGeometryConstants | None = None,
+    series: str | None = None,
+    seals: str | None = None,
+    seal_constants=None,
+    seal_diameter: float | None = None,
+    **skf_options,
+) -> FrictionResult:
     """Friction torque and power loss of a bearing by either model.
 
     ``model="constant"`` (seed 003, :func:`constant_friction`): the friction type is
@@ -289,98 +371,182 @@ def bearing_friction(bearing, shaft_speed: float, radial_load: float, axial_load
     if seal_diameter is not None:
         check_positive("seal_diameter", seal_diameter, "a diameter > 0 [m]")
     if model == "constant" and lubricant is None and viscosity is None:
-        check_temperature(temperature)          # unused by this model, but checked
+        check_temperature(temperature)  # unused by this model, but checked
         nu, nu_how, lub = None, None, None
     else:
         nu, nu_how, lub = viscosity_of(viscosity, lubricant, temperature)
     ks = check_seal_constants(seal_constants, seal_kind)
     if model == "constant":
-        unused = {"viscosity": viscosity, "lubricant": lubricant, "temperature": temperature,
-                  "lubrication": lubrication, "static_load_rating": static_load_rating,
-                  "constants": constants, "seal_constants": seal_constants,
-                  "seal_diameter": seal_diameter}
+        unused = {
+            "viscosity": viscosity,
+            "lubricant": lubricant,
+            "temperature": temperature,
+            "lubrication": lubrication,
+            "static_load_rating": static_load_rating,
+            "constants": constants,
+            "seal_constants": seal_constants,
+            "seal_diameter": seal_diameter,
+        }
         if lubrication is not None:
             lubrication_of(lubrication, lub)
-        return _constant(b, w, fr, fa, friction_type, equivalent_load, seal_kind,
-                         unused_note("constant", unused))
+        return _constant(
+            b, w, fr, fa, friction_type, equivalent_load, seal_kind, unused_note("constant", unused)
+        )
     kind = friction_type or b.bearing_type
     if kind not in SKF_BEARING_TYPES:
         what = "for the SKF model a ball bearing: " + ", ".join(SKF_BEARING_TYPES)
         if friction_type is not None:
             raise InputError("friction_type", friction_type, what)
-        raise InputError("bearing_type", kind, what, f"this bearing is {kind}; use --model "
-                         "constant (model='constant'), which covers every type")
+        raise InputError(
+            "bearing_type",
+            kind,
+            what,
+            f"this bearing is {kind}; use --model "
+            "constant (model='constant'), which covers every type",
+        )
     if b.bore is None or b.outside_diameter is None:
-        raise InputError("bore", None, "the bore and outside diameter (the SKF model uses "
-                         "d_m = 0.5 (d + D))", "command line: --bore-mm, --outside-diameter-mm")
+        raise InputError(
+            "bore",
+            None,
+            "the bore and outside diameter (the SKF model uses d_m = 0.5 (d + D))",
+            "command line: --bore-mm, --outside-diameter-mm",
+        )
     if nu is None:
-        raise InputError("viscosity", None, "the operating kinematic viscosity [m^2/s], or a "
-                         "lubricant (and its temperature)")
+        raise InputError(
+            "viscosity",
+            None,
+            "the operating kinematic viscosity [m^2/s], or a lubricant (and its temperature)",
+        )
     method, method_how = lubrication_of(lubrication, lub)
     if constants is None:
         if kind != "radial_ball":
-            raise InputError("constants", None, "SKF geometry constants R1, R2, S1, S2, R3, S3 "
-                             f"for {kind} (SKF's table is not shipped)",
-                             "command line: --skf-constants")
+            raise InputError(
+                "constants",
+                None,
+                "SKF geometry constants R1, R2, S1, S2, R3, S3 "
+                f"for {kind} (SKF's table is not shipped)",
+                "command line: --skf-constants",
+            )
         constants = deep_groove_constants(series or b.series)
     notes = list(skf_options.pop("notes", ()))
     c0, c0_how = static_load_rating, "given"
     if kind == "radial_ball" and fa > 0 and c0 is None:
         ball = b.ball_bearing
         if ball is None or ball.bearing_type != "radial_ball":
-            raise InputError("static_load_rating", None, "the basic static load rating C_0 "
-                             "[N] when there is an axial load (SKF: alpha_F = 24.6 "
-                             "(F_a/C_0)^0.24)", "command line: --static-load-rating-kn")
+            raise InputError(
+                "static_load_rating",
+                None,
+                "the basic static load rating C_0 "
+                "[N] when there is an axial load (SKF: alpha_F = 24.6 "
+                "(F_a/C_0)^0.24)",
+                "command line: --static-load-rating-kn",
+            )
         from ..life import load_ratings
 
         c0, c0_how = load_ratings(ball).static, _ISO76_C0
-        notes.append(f"C_0 = {c0:.5g} N from ISO 76 and the internal geometry "
-                     "(bearinglab.life); give the maker's (--static-load-rating-kn)")
+        notes.append(
+            f"C_0 = {c0:.5g} N from ISO 76 and the internal geometry "
+            "(bearinglab.life); give the maker's (--static-load-rating-kn)"
+        )
     if c0 is not None and fa > c0:
         raise InputError("axial_load", fa, f"at most C_0 = {c0:g} N")
     seal = 0.0
     if seal_kind == "contact":
         if ks is None:
-            notes.append("contact seals: M_seal is not included (SKF's seal constants are not "
-                         "shipped; give K_S1, K_S2, beta and d_s: --seal-constants, "
-                         "--seal-diameter-mm)")
+            notes.append(
+                "contact seals: M_seal is not included (SKF's seal constants are not "
+                "shipped; give K_S1, K_S2, beta and d_s: --seal-constants, "
+                "--seal-diameter-mm)"
+            )
         elif seal_diameter is None:
-            raise InputError("seal_diameter", None, "the seal counterface diameter d_s with "
-                             "seal constants")
+            raise InputError(
+                "seal_diameter", None, "the seal counterface diameter d_s with seal constants"
+            )
         else:
             seal = seal_moment(*ks, seal_diameter)
-    result = skf_friction(kind, b.bore, b.outside_diameter, fr, fa, w, nu, constants,
-                          name=b.name, static_load_rating=c0, lubrication=method,
-                          lubricant_kind=lubricant_kind, seal=seal, notes=tuple(notes),
-                          **skf_options)
-    parameters = {**result.parameters, "viscosity_source": nu_how,
-                  "lubrication_source": method_how, "lubricant_kind": lubricant_kind,
-                  "static_rating": c0, "static_rating_source": c0_how}
+    result = skf_friction(
+        kind,
+        b.bore,
+        b.outside_diameter,
+        fr,
+        fa,
+        w,
+        nu,
+        constants,
+        name=b.name,
+        static_load_rating=c0,
+        lubrication=method,
+        lubricant_kind=lubricant_kind,
+        seal=seal,
+        notes=tuple(notes),
+        **skf_options,
+    )
+    parameters = {
+        **result.parameters,
+        "viscosity_source": nu_how,
+        "lubrication_source": method_how,
+        "lubricant_kind": lubricant_kind,
+        "static_rating": c0,
+        "static_rating_source": c0_how,
+    }
     if lub is not None:
         parameters["lubricant"] = lub.name
-    unused = unused_note("SKF", {"equivalent_load": equivalent_load,
-                             "seal_diameter": seal_diameter if ks is None else None})
-    return replace(result, parameters=parameters, bearing_type=b.bearing_type, seals=seal_kind,
-                   warnings=result.warnings + unused)
+    unused = unused_note(
+        "SKF",
+        {
+            "equivalent_load": equivalent_load,
+            "seal_diameter": seal_diameter if ks is None else None,
+        },
+    )
+    return replace(
+        result,
+        parameters=parameters,
+        bearing_type=b.bearing_type,
+        seals=seal_kind,
+        warnings=result.warnings + unused,
+    )
 
 
-def _constant(b: FrictionBearing, w: float, fr: float, fa: float, friction_type, given_load,
-              seal_kind: str, unused: tuple) -> FrictionResult:
+def _constant(
+    b: FrictionBearing,
+    w: float,
+    fr: float,
+    fa: float,
+    friction_type,
+    given_load,
+    seal_kind: str,
+    unused: tuple,
+) -> FrictionResult:
     kind = friction_type
     if kind is None:
         try:
             kind = friction_type_of(b.bearing_type, b.design_variant)
         except InputError:
-            raise InputError("friction_type", None, f"a friction type for this {b.bearing_type} "
-                             "bearing, one of " + ", ".join(SEED003_COEFFICIENTS),
-                             "seed 003's Table III has no row for it") from None
+            raise InputError(
+                "friction_type",
+                None,
+                f"a friction type for this {b.bearing_type} "
+                "bearing, one of " + ", ".join(SEED003_COEFFICIENTS),
+                "seed 003's Table III has no row for it",
+            ) from None
     friction_coefficient(kind)
     p, how = equivalent_load_of(b, kind, fr, fa, given_load)
-    result = constant_friction(p, b.pitch_diameter, w, kind, name=b.name, radial_load=fr,
-                               axial_load=fa)
-    seal_note = (("contact seals add friction that the constant model leaves out",)
-                 if seal_kind == "contact" else ())
-    return replace(result, parameters={**result.parameters, "equivalent_load_source": how,
-                                       "pitch_diameter_source": b.pitch_diameter_source},
-                   bearing_type=b.bearing_type, seals=seal_kind,
-                   warnings=result.warnings + seal_note + unused)
+    result = constant_friction(
+        p, b.pitch_diameter, w, kind, name=b.name, radial_load=fr, axial_load=fa
+    )
+    seal_note = (
+        ("contact seals add friction that the constant model leaves out",)
+        if seal_kind == "contact"
+        else ()
+    )
+    return replace(
+        result,
+        parameters={
+            **result.parameters,
+            "equivalent_load_source": how,
+            "pitch_diameter_source": b.pitch_diameter_source,
+        },
+        bearing_type=b.bearing_type,
+        seals=seal_kind,
+        warnings=result.warnings + seal_note + unused,
+    )

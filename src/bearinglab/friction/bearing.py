@@ -35,8 +35,12 @@ _FRICTION_TYPE_BEARING = {
 def _length(name: str, value, *, optional: bool = False) -> float | None:
     if value is None and optional:
         return None
-    if isinstance(value, bool) or not isinstance(value, (int, float)) \
-            or not math.isfinite(value) or not 0.0 < value <= 100.0:
+    if (
+        isinstance(value, bool)
+        or not isinstance(value, (int, float))
+        or not math.isfinite(value)
+        or not 0.0 < value <= 100.0
+    ):
         raise InputError(name, value, "a length in (0, 100] m")
     return float(value)
 
@@ -86,8 +90,9 @@ class FrictionBearing:
         from ..designation import BEARING_TYPES
 
         if self.bearing_type not in BEARING_TYPES:
-            raise InputError("bearing_type", self.bearing_type,
-                             "one of " + ", ".join(BEARING_TYPES))
+            raise InputError(
+                "bearing_type", self.bearing_type, "one of " + ", ".join(BEARING_TYPES)
+            )
         d = _length("bore", self.bore, optional=True)
         big_d = _length("outside_diameter", self.outside_diameter, optional=True)
         dm = _length("pitch_diameter", self.pitch_diameter)
@@ -95,8 +100,11 @@ class FrictionBearing:
             if big_d <= d:
                 raise InputError("outside_diameter", big_d, f"more than the bore {d:.6g} m")
             if not d < dm < big_d:
-                raise InputError("pitch_diameter", dm, f"between the bore {d:.6g} m and the "
-                                 f"outside diameter {big_d:.6g} m")
+                raise InputError(
+                    "pitch_diameter",
+                    dm,
+                    f"between the bore {d:.6g} m and the outside diameter {big_d:.6g} m",
+                )
 
     @classmethod
     def from_ball_bearing(cls, bearing, designation=None) -> FrictionBearing:
@@ -111,18 +119,28 @@ class FrictionBearing:
         if designation is None:
             designation = _designation_of(bearing.name)
         return cls(
-            name=bearing.name or "bearing", bearing_type=bearing.bearing_type,
-            bore=bearing.bore, outside_diameter=bearing.outside_diameter,
+            name=bearing.name or "bearing",
+            bearing_type=bearing.bearing_type,
+            bore=bearing.bore,
+            outside_diameter=bearing.outside_diameter,
             pitch_diameter=bearing.pitch_diameter,
             pitch_diameter_source=f"ball pitch diameter ({bearing.geometry_source})",
             series=getattr(designation, "series", None),
             design_variant=getattr(designation, "design_variant", None),
-            closures=getattr(designation, "closures", "unknown"), ball_bearing=bearing)
+            closures=getattr(designation, "closures", "unknown"),
+            ball_bearing=bearing,
+        )
 
     @classmethod
-    def from_designation(cls, text: str, system: str | None = None, *,
-                         bore: float | None = None, outside_diameter: float | None = None,
-                         pitch_diameter: float | None = None) -> FrictionBearing:
+    def from_designation(
+        cls,
+        text: str,
+        system: str | None = None,
+        *,
+        bore: float | None = None,
+        outside_diameter: float | None = None,
+        pitch_diameter: float | None = None,
+    ) -> FrictionBearing:
         """Any designation through its ISO boundary dimensions (no internal geometry); d,
         D and d_m may be given to replace the table's values and the estimate.
 
@@ -144,19 +162,37 @@ class FrictionBearing:
 
         des = parse(text, system)
         dims = boundary_dimensions(des)
-        given = {k for k, v in (("bore", bore), ("outside_diameter", outside_diameter))
-                 if v is not None}
+        given = {
+            k for k, v in (("bore", bore), ("outside_diameter", outside_diameter)) if v is not None
+        }
         d = dims.bore if bore is None else _length("bore", bore)
-        big_d = (dims.outside_diameter if outside_diameter is None
-                 else _length("outside_diameter", outside_diameter))
-        return cls._with_pitch(text, des.bearing_type, d, big_d, pitch_diameter, given,
-                               series=des.series, design_variant=des.design_variant,
-                               closures=des.closures)
+        big_d = (
+            dims.outside_diameter
+            if outside_diameter is None
+            else _length("outside_diameter", outside_diameter)
+        )
+        return cls._with_pitch(
+            text,
+            des.bearing_type,
+            d,
+            big_d,
+            pitch_diameter,
+            given,
+            series=des.series,
+            design_variant=des.design_variant,
+            closures=des.closures,
+        )
 
     @classmethod
-    def from_dimensions(cls, bore: float, outside_diameter: float, *,
-                        bearing_type: str | None = None, pitch_diameter: float | None = None,
-                        name: str = "user geometry") -> FrictionBearing:
+    def from_dimensions(
+        cls,
+        bore: float,
+        outside_diameter: float,
+        *,
+        bearing_type: str | None = None,
+        pitch_diameter: float | None = None,
+        name: str = "user geometry",
+    ) -> FrictionBearing:
         """A bearing known only by d and D (and perhaps d_m).
 
         Parameters
@@ -173,9 +209,14 @@ class FrictionBearing:
         """
         kind = bearing_type or "radial_ball"
         kind = _FRICTION_TYPE_BEARING.get(kind, kind)
-        return cls._with_pitch(name, kind, _length("bore", bore),
-                               _length("outside_diameter", outside_diameter), pitch_diameter,
-                               {"bore", "outside_diameter"})
+        return cls._with_pitch(
+            name,
+            kind,
+            _length("bore", bore),
+            _length("outside_diameter", outside_diameter),
+            pitch_diameter,
+            {"bore", "outside_diameter"},
+        )
 
     @classmethod
     def _with_pitch(cls, name, kind, bore, outside, pitch, given, **kwargs) -> FrictionBearing:
@@ -186,12 +227,16 @@ class FrictionBearing:
                 raise InputError("outside_diameter", outside, f"more than the bore {bore:.6g} m")
             raise InputError("bore", bore, f"less than the outside diameter {outside:.6g} m")
         if pitch is None:
-            return cls(name, kind, bore, outside, 0.5 * (bore + outside),
-                       MEAN_DIAMETER_ESTIMATE, **kwargs)
+            return cls(
+                name, kind, bore, outside, 0.5 * (bore + outside), MEAN_DIAMETER_ESTIMATE, **kwargs
+            )
         pitch = _length("pitch_diameter", pitch)
         if not bore < pitch < outside:
-            raise InputError("pitch_diameter", pitch, f"between the bore {bore:.6g} m and the "
-                             f"outside diameter {outside:.6g} m")
+            raise InputError(
+                "pitch_diameter",
+                pitch,
+                f"between the bore {bore:.6g} m and the outside diameter {outside:.6g} m",
+            )
         return cls(name, kind, bore, outside, pitch, "given", **kwargs)
 
 

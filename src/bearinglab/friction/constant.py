@@ -51,14 +51,15 @@ SEED003_COEFFICIENTS: dict[str, float] = {
 }
 
 #: Where the coefficients and the torque formula come from.
-SEED003_SOURCE = ("seed 003, bearing friction section: Table III (coefficients, lines "
-                  "1087-1097), M = mu P d_m / 2 with d_m the pitch diameter (symbols, lines "
-                  "1105-1111); coefficients for 20 cSt at operating temperature (line 1101)")
+SEED003_SOURCE = (
+    "seed 003, bearing friction section: Table III (coefficients, lines "
+    "1087-1097), M = mu P d_m / 2 with d_m the pitch diameter (symbols, lines "
+    "1105-1111); coefficients for 20 cSt at operating temperature (line 1101)"
+)
 
 #: Cylindrical-roller design prefixes that mean a full complement (no cage): SKF/ISO NCF,
 #: NJG (single row) and NNC, NNCF, NNCL (double row).
 FULL_COMPLEMENT_PREFIXES = ("NCF", "NJG", "NNC", "NNCF", "NNCL")
-
 
 
 def _out(a):
@@ -108,9 +109,12 @@ def friction_type_of(bearing_type: str, design_variant: str | None = None) -> st
         return "cylindrical_roller"
     if bearing_type in SEED003_COEFFICIENTS:
         return bearing_type
-    raise InputError("bearing_type", bearing_type,
-                     "a type that seed 003's Table III names: " + ", ".join(SEED003_COEFFICIENTS),
-                     "give the friction type explicitly (command line: --type)")
+    raise InputError(
+        "bearing_type",
+        bearing_type,
+        "a type that seed 003's Table III names: " + ", ".join(SEED003_COEFFICIENTS),
+        "give the friction type explicitly (command line: --type)",
+    )
 
 
 def friction_coefficient(friction_type: str) -> float:
@@ -125,8 +129,9 @@ def friction_coefficient(friction_type: str) -> float:
     0.0015
     """
     if friction_type not in SEED003_COEFFICIENTS:
-        raise InputError("friction_type", friction_type,
-                         "one of " + ", ".join(SEED003_COEFFICIENTS))
+        raise InputError(
+            "friction_type", friction_type, "one of " + ", ".join(SEED003_COEFFICIENTS)
+        )
     return SEED003_COEFFICIENTS[friction_type]
 
 
@@ -168,4 +173,3 @@ def power_loss(torque, shaft_speed):
     m = _nonnegative("torque", torque, "N m")
     w = _nonnegative("shaft_speed", shaft_speed, "rad/s")
     return _out(m * w)
-

@@ -10,9 +10,9 @@ from dataclasses import dataclass, field
 from ..units import UNITS, rad_s_to_rpm
 from .constant import power_loss
 
-_N_MM = UNITS["n_mm"].from_si(1.0)        # N m -> N mm
-_MM = UNITS["mm"].from_si(1.0)            # m -> mm
-_MM2_S = UNITS["mm2_s"].from_si(1.0)      # m^2/s -> mm^2/s
+_N_MM = UNITS["n_mm"].from_si(1.0)  # N m -> N mm
+_MM = UNITS["mm"].from_si(1.0)  # m -> mm
+_MM2_S = UNITS["mm2_s"].from_si(1.0)  # m^2/s -> mm^2/s
 
 
 def _scaled(value, factor):
@@ -66,39 +66,58 @@ class FrictionResult:
             out["bearing_type"] = self.bearing_type
         if self.seals is not None:
             out["seals"] = self.seals
-        out.update({"speed_rpm": rad_s_to_rpm(self.shaft_speed),
-                    "radial_load_n": self.radial_load, "axial_load_n": self.axial_load,
-                    "friction_torque_n_mm": self.torque * _N_MM,
-                    "power_loss_w": self.power_loss})
+        out.update(
+            {
+                "speed_rpm": rad_s_to_rpm(self.shaft_speed),
+                "radial_load_n": self.radial_load,
+                "axial_load_n": self.axial_load,
+                "friction_torque_n_mm": self.torque * _N_MM,
+                "power_loss_w": self.power_loss,
+            }
+        )
         if self.model == "constant":
-            out.update({"friction_type": p["friction_type"],
-                        "friction_coefficient": p["friction_coefficient"],
-                        "equivalent_load_n": p["equivalent_load"],
-                        "pitch_diameter_mm": p["pitch_diameter"] * _MM})
+            out.update(
+                {
+                    "friction_type": p["friction_type"],
+                    "friction_coefficient": p["friction_coefficient"],
+                    "equivalent_load_n": p["equivalent_load"],
+                    "pitch_diameter_mm": p["pitch_diameter"] * _MM,
+                }
+            )
             for key in ("equivalent_load_source", "pitch_diameter_source"):
                 if key in p:
                     out[key] = p[key]
         else:
             out.update({f"{k}_torque_n_mm": v * _N_MM for k, v in self.components.items()})
             c = p["constants"]
-            out.update({
-                "mean_diameter_mm": p["mean_diameter"] * _MM,
-                "viscosity_mm2_s": p["viscosity"] * _MM2_S,
-                "rated_viscosity_mm2_s": _scaled(p["rated_viscosity"], _MM2_S),
-                "kappa": p["viscosity_ratio"],
-                "inlet_shear_factor": p["inlet_shear_factor"],
-                "replenishment_factor": p["replenishment_factor"],
-                "sliding_weighting_factor": p["sliding_weighting_factor"],
-                "sliding_friction_coefficient": p["sliding_friction_coefficient"],
-                "rolling_variable_skf": p["rolling_variable"],
-                "sliding_variable_skf": p["sliding_variable"],
-                "k_rs": p["k_rs"], "k_z": p["k_z"], "lubrication": p["lubrication"],
-                "geometry_constants": {"r1": c.r1, "r2": c.r2, "s1": c.s1, "s2": c.s2,
-                                       "r3": c.r3, "s3": c.s3, "source": c.source,
-                                       "verified": c.verified},
-            })
-            for key in ("viscosity_source", "lubricant", "lubricant_kind",
-                        "lubrication_source"):
+            out.update(
+                {
+                    "mean_diameter_mm": p["mean_diameter"] * _MM,
+                    "viscosity_mm2_s": p["viscosity"] * _MM2_S,
+                    "rated_viscosity_mm2_s": _scaled(p["rated_viscosity"], _MM2_S),
+                    "kappa": p["viscosity_ratio"],
+                    "inlet_shear_factor": p["inlet_shear_factor"],
+                    "replenishment_factor": p["replenishment_factor"],
+                    "sliding_weighting_factor": p["sliding_weighting_factor"],
+                    "sliding_friction_coefficient": p["sliding_friction_coefficient"],
+                    "rolling_variable_skf": p["rolling_variable"],
+                    "sliding_variable_skf": p["sliding_variable"],
+                    "k_rs": p["k_rs"],
+                    "k_z": p["k_z"],
+                    "lubrication": p["lubrication"],
+                    "geometry_constants": {
+                        "r1": c.r1,
+                        "r2": c.r2,
+                        "s1": c.s1,
+                        "s2": c.s2,
+                        "r3": c.r3,
+                        "s3": c.s3,
+                        "source": c.source,
+                        "verified": c.verified,
+                    },
+                }
+            )
+            for key in ("viscosity_source", "lubricant", "lubricant_kind", "lubrication_source"):
                 if key in p:
                     out[key] = p[key]
             if p.get("static_rating") is not None:
@@ -113,22 +132,26 @@ class FrictionResult:
         gives the unit (:func:`bearinglab.units.unit_of`)."""
         rows = [("friction torque M", "friction_torque_n_mm"), ("power loss N", "power_loss_w")]
         if self.model == "constant":
-            return rows + [("friction type", "friction_type"),
-                           ("coefficient mu (seed 003)", "friction_coefficient"),
-                           ("equivalent load P", "equivalent_load_n"),
-                           ("pitch diameter d_m", "pitch_diameter_mm")]
-        rows += [("rolling phi_ish phi_rs M_rr", "rolling_torque_n_mm"),
-                 ("sliding M_sl", "sliding_torque_n_mm"),
-                 ("seals M_seal", "seal_torque_n_mm"),
-                 ("drag M_drag", "drag_torque_n_mm"),
-                 ("mean diameter d_m = (d + D)/2", "mean_diameter_mm"),
-                 ("viscosity nu", "viscosity_mm2_s"),
-                 ("rated viscosity nu_1 (ISO 281)", "rated_viscosity_mm2_s"),
-                 ("viscosity ratio kappa", "kappa"),
-                 ("inlet shear factor phi_ish", "inlet_shear_factor"),
-                 ("replenishment factor phi_rs", "replenishment_factor"),
-                 ("weighting factor phi_bl", "sliding_weighting_factor"),
-                 ("sliding coefficient mu_sl", "sliding_friction_coefficient")]
+            return rows + [
+                ("friction type", "friction_type"),
+                ("coefficient mu (seed 003)", "friction_coefficient"),
+                ("equivalent load P", "equivalent_load_n"),
+                ("pitch diameter d_m", "pitch_diameter_mm"),
+            ]
+        rows += [
+            ("rolling phi_ish phi_rs M_rr", "rolling_torque_n_mm"),
+            ("sliding M_sl", "sliding_torque_n_mm"),
+            ("seals M_seal", "seal_torque_n_mm"),
+            ("drag M_drag", "drag_torque_n_mm"),
+            ("mean diameter d_m = (d + D)/2", "mean_diameter_mm"),
+            ("viscosity nu", "viscosity_mm2_s"),
+            ("rated viscosity nu_1 (ISO 281)", "rated_viscosity_mm2_s"),
+            ("viscosity ratio kappa", "kappa"),
+            ("inlet shear factor phi_ish", "inlet_shear_factor"),
+            ("replenishment factor phi_rs", "replenishment_factor"),
+            ("weighting factor phi_bl", "sliding_weighting_factor"),
+            ("sliding coefficient mu_sl", "sliding_friction_coefficient"),
+        ]
         if self.parameters.get("static_rating") is not None:
             rows.append(("static load rating C_0", "static_rating_n"))
         return rows
@@ -138,9 +161,14 @@ class FrictionResult:
         import pandas as pd
 
         parts = self.components or {"total (constant coefficient)": self.torque}
-        rows = [{"component": k, "torque_n_mm": v * _N_MM,
-                 "share": (v / self.torque) if self.torque > 0 else 0.0}
-                for k, v in parts.items()]
+        rows = [
+            {
+                "component": k,
+                "torque_n_mm": v * _N_MM,
+                "share": (v / self.torque) if self.torque > 0 else 0.0,
+            }
+            for k, v in parts.items()
+        ]
         return pd.DataFrame(rows)
 
     def plot(self, ax=None):
@@ -154,6 +182,8 @@ class FrictionResult:
         table = self.to_pandas()
         ax.bar(table["component"], table["torque_n_mm"], color="tab:blue")
         ax.set_ylabel("friction torque [N·mm]")
-        ax.set_title(f"{self.name or 'bearing'}: {self.torque * _N_MM:.4g} N·mm, "
-                     f"{self.power_loss:.4g} W ({self.model} model)")
+        ax.set_title(
+            f"{self.name or 'bearing'}: {self.torque * _N_MM:.4g} N·mm, "
+            f"{self.power_loss:.4g} W ({self.model} model)"
+        )
         return fig, ax

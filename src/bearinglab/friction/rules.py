@@ -22,24 +22,36 @@ MAX_VISCOSITY = 1.0
 
 def check_speed(shaft_speed) -> float:
     """A speed of the rotating ring [rad/s], finite and >= 0."""
-    if isinstance(shaft_speed, bool) or not isinstance(shaft_speed, (int, float)) \
-            or not math.isfinite(shaft_speed) or shaft_speed < 0:
+    if (
+        isinstance(shaft_speed, bool)
+        or not isinstance(shaft_speed, (int, float))
+        or not math.isfinite(shaft_speed)
+        or shaft_speed < 0
+    ):
         raise InputError("shaft_speed", shaft_speed, "a finite speed >= 0 [rad/s]")
     return float(shaft_speed)
 
 
 def check_load(name: str, value) -> float:
     """A load [N], finite and >= 0."""
-    if isinstance(value, bool) or not isinstance(value, (int, float)) \
-            or not math.isfinite(value) or value < 0:
+    if (
+        isinstance(value, bool)
+        or not isinstance(value, (int, float))
+        or not math.isfinite(value)
+        or value < 0
+    ):
         raise InputError(name, value, "a finite load >= 0 [N]")
     return float(value)
 
 
 def check_positive(name: str, value, what: str) -> float:
     """A finite number > 0 (``what`` says what is allowed, with its unit)."""
-    if isinstance(value, bool) or not isinstance(value, (int, float)) \
-            or not math.isfinite(value) or value <= 0:
+    if (
+        isinstance(value, bool)
+        or not isinstance(value, (int, float))
+        or not math.isfinite(value)
+        or value <= 0
+    ):
         raise InputError(name, value, what)
     return float(value)
 
@@ -51,11 +63,18 @@ def check_temperature(temperature) -> float | None:
     if temperature is None:
         return None
     low, high = OPERATING_TEMPERATURE_RANGE
-    if isinstance(temperature, bool) or not isinstance(temperature, (int, float)) \
-            or not math.isfinite(temperature) or not low <= temperature <= high:
-        raise InputError("temperature", temperature,
-                         f"an operating temperature in [{low:g}, {high:g}] K "
-                         f"({low - ZERO_CELSIUS:g} to {high - ZERO_CELSIUS:g} degC)")
+    if (
+        isinstance(temperature, bool)
+        or not isinstance(temperature, (int, float))
+        or not math.isfinite(temperature)
+        or not low <= temperature <= high
+    ):
+        raise InputError(
+            "temperature",
+            temperature,
+            f"an operating temperature in [{low:g}, {high:g}] K "
+            f"({low - ZERO_CELSIUS:g} to {high - ZERO_CELSIUS:g} degC)",
+        )
     return float(temperature)
 
 
@@ -85,23 +104,31 @@ def viscosity_of(viscosity, lubricant, temperature) -> tuple[float | None, str |
         elif isinstance(lubricant, Lubricant):
             lub = lubricant
         else:
-            raise InputError("lubricant", lubricant, "one of " + ", ".join(LUBRICANTS)
-                             + ", or a Lubricant")
+            raise InputError(
+                "lubricant", lubricant, "one of " + ", ".join(LUBRICANTS) + ", or a Lubricant"
+            )
     if viscosity is not None:
-        nu = check_positive("viscosity", viscosity,
-                       f"a kinematic viscosity in (0, {MAX_VISCOSITY:g}] m^2/s")
+        nu = check_positive(
+            "viscosity", viscosity, f"a kinematic viscosity in (0, {MAX_VISCOSITY:g}] m^2/s"
+        )
         if nu > MAX_VISCOSITY:
-            raise InputError("viscosity", viscosity,
-                             f"a kinematic viscosity in (0, {MAX_VISCOSITY:g}] m^2/s")
+            raise InputError(
+                "viscosity", viscosity, f"a kinematic viscosity in (0, {MAX_VISCOSITY:g}] m^2/s"
+            )
         if temperature is not None:
-            raise InputError("temperature", temperature, "no temperature with a given "
-                             "viscosity (that is already the viscosity at the operating "
-                             "temperature)")
+            raise InputError(
+                "temperature",
+                temperature,
+                "no temperature with a given "
+                "viscosity (that is already the viscosity at the operating "
+                "temperature)",
+            )
         return nu, "given", lub
     if lub is None:
         if temperature is not None:
-            raise InputError("lubricant", None, "the lubricant whose viscosity the "
-                             "temperature applies to")
+            raise InputError(
+                "lubricant", None, "the lubricant whose viscosity the temperature applies to"
+            )
         return None, None, None
     nu, how = operating_viscosity(lub, temperature)
     return nu, how, lub
@@ -121,8 +148,9 @@ def lubrication_of(lubrication: str | None, lub) -> tuple[str, str]:
     return "oil-jet", f"default for an oil: {lub.name}"
 
 
-def equivalent_load_of(bearing: FrictionBearing, kind: str, fr: float, fa: float,
-                     given: float | None) -> tuple[float, str]:
+def equivalent_load_of(
+    bearing: FrictionBearing, kind: str, fr: float, fa: float, given: float | None
+) -> tuple[float, str]:
     """P for seed 003's model, which does not say how P is formed: given; F_r without axial
     load; ISO 281 Table 3 from the geometry of a ball bearing; P_a = F_a for a thrust ball
     bearing under axial load alone."""
@@ -131,18 +159,27 @@ def equivalent_load_of(bearing: FrictionBearing, kind: str, fr: float, fa: float
     if fa == 0.0:
         return fr, "P = F_r (no axial load)"
     ball = bearing.ball_bearing
-    if ball is not None and ball.bearing_type in ("radial_ball", "angular_contact_ball",
-                                                  "thrust_ball"):
+    if ball is not None and ball.bearing_type in (
+        "radial_ball",
+        "angular_contact_ball",
+        "thrust_ball",
+    ):
         from ..life import equivalent_dynamic_load
 
         p, f = equivalent_dynamic_load(ball, fr, fa)
-        return float(p), (f"ISO 281 Table 3 from the geometry (bearinglab.life): X = "
-                          f"{f.x:.4g}, Y = {f.y:.4g}, e = {f.e:.4g}")
+        return float(p), (
+            f"ISO 281 Table 3 from the geometry (bearinglab.life): X = "
+            f"{f.x:.4g}, Y = {f.y:.4g}, e = {f.e:.4g}"
+        )
     if kind == "thrust_ball" and fr == 0.0:
         return fa, "ISO 281 thrust ball bearing: P_a = F_a"
-    raise InputError("axial_load", fa, "0, or the equivalent load P given",
-                     f"no equivalent-load rule is built in for {kind} under an axial load "
-                     "here; give P (equivalent_load; command line: --equivalent-load-n)")
+    raise InputError(
+        "axial_load",
+        fa,
+        "0, or the equivalent load P given",
+        f"no equivalent-load rule is built in for {kind} under an axial load "
+        "here; give P (equivalent_load; command line: --equivalent-load-n)",
+    )
 
 
 def unused_note(model: str, given: dict) -> tuple[str, ...]:
@@ -160,15 +197,18 @@ def check_seal_constants(seal_constants, seals: str) -> tuple[float, float, floa
     try:
         ks1, ks2, beta = (float(v) for v in seal_constants)
     except (TypeError, ValueError):
-        raise InputError("seal_constants", seal_constants, "three numbers K_S1, K_S2, beta "
-                         ">= 0 (SKF units)") from None
+        raise InputError(
+            "seal_constants", seal_constants, "three numbers K_S1, K_S2, beta >= 0 (SKF units)"
+        ) from None
     if not all(math.isfinite(v) and v >= 0 for v in (ks1, ks2, beta)):
-        raise InputError("seal_constants", seal_constants, "three numbers K_S1, K_S2, beta "
-                         ">= 0 (SKF units)")
+        raise InputError(
+            "seal_constants", seal_constants, "three numbers K_S1, K_S2, beta >= 0 (SKF units)"
+        )
     if seals != "contact":
-        raise InputError("seal_constants", seal_constants, "seal constants only with contact "
-                         "seals", f"the seals are '{seals}' (seals='contact'; command line: "
-                         "--seals contact)")
+        raise InputError(
+            "seal_constants",
+            seal_constants,
+            "seal constants only with contact seals",
+            f"the seals are '{seals}' (seals='contact'; command line: --seals contact)",
+        )
     return ks1, ks2, beta
-
-

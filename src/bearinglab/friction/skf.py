@@ -78,11 +78,15 @@ K_Z = {"radial_ball": 3.1, "angular_contact_ball": 4.4}
 #: Types the SKF model of this module covers.
 SKF_BEARING_TYPES = ("radial_ball", "angular_contact_ball", "four_point_contact_ball")
 
-SKF_SOURCE = ("SKF Rolling bearings, catalogue 10000 EN, 'The SKF model for calculating "
-              "the frictional moment'")
-_SECONDARY = ("SKF catalogue 10000 EN, geometry constants for deep groove ball bearings by "
-              "series; transcribed from secondary public sources (not checked against a "
-              "stored copy of the catalogue table)")
+SKF_SOURCE = (
+    "SKF Rolling bearings, catalogue 10000 EN, 'The SKF model for calculating "
+    "the frictional moment'"
+)
+_SECONDARY = (
+    "SKF catalogue 10000 EN, geometry constants for deep groove ball bearings by "
+    "series; transcribed from secondary public sources (not checked against a "
+    "stored copy of the catalogue table)"
+)
 
 
 @dataclass(frozen=True)
@@ -121,8 +125,12 @@ class SkfGeometryConstants:
             v = getattr(self, name)
             if v is None and name in ("r3", "s3"):
                 continue
-            if isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating)) \
-                    or not math.isfinite(v) or v < 0:
+            if (
+                isinstance(v, bool)
+                or not isinstance(v, (int, float, np.integer, np.floating))
+                or not math.isfinite(v)
+                or v < 0
+            ):
                 raise InputError(name, v, "a finite constant >= 0 (SKF units)")
 
 
@@ -157,9 +165,12 @@ def deep_groove_constants(series: str) -> SkfGeometryConstants:
     3.9e-07
     """
     if series not in DEEP_GROOVE_CONSTANTS:
-        raise InputError("series", series, "a deep-groove series with SKF constants: "
-                         + ", ".join(DEEP_GROOVE_CONSTANTS),
-                         "give the constants R1, R2, S1, S2 (command line: --skf-constants)")
+        raise InputError(
+            "series",
+            series,
+            "a deep-groove series with SKF constants: " + ", ".join(DEEP_GROOVE_CONSTANTS),
+            "give the constants R1, R2, S1, S2 (command line: --skf-constants)",
+        )
     return DEEP_GROOVE_CONSTANTS[series]
 
 
@@ -234,7 +245,7 @@ def inlet_shear_heating_factor(shaft_speed, mean_diameter, viscosity):
     n = _rpm(shaft_speed)
     dm = _mm("mean_diameter", mean_diameter)
     nu = _mm2_s(viscosity)
-    return _out(1.0 / (1.0 + 1.84e-9 * (n * dm) ** 1.28 * nu ** 0.64))
+    return _out(1.0 / (1.0 + 1.84e-9 * (n * dm) ** 1.28 * nu**0.64))
 
 
 def replenishment_factor(shaft_speed, viscosity, bore, outside_diameter, k_rs, k_z):
@@ -329,13 +340,15 @@ def deep_groove_load_angle(axial_load, static_load_rating):
     fa = _array("axial_load", axial_load, "N")
     c0 = float(_array("static_load_rating", static_load_rating, "N", positive=True))
     if np.any(fa > c0):
-        raise InputError("axial_load", axial_load,
-                         f"at most the static load rating C_0 = {c0:.6g} N")
+        raise InputError(
+            "axial_load", axial_load, f"at most the static load rating C_0 = {c0:.6g} N"
+        )
     return _out(np.radians(24.6 * (fa / c0) ** 0.24))
 
 
-def deep_groove_load_variables(mean_diameter, radial_load, axial_load, constants,
-                               static_load_rating=None):
+def deep_groove_load_variables(
+    mean_diameter, radial_load, axial_load, constants, static_load_rating=None
+):
     """(G_rr, G_sl) of a deep-groove ball bearing, catalogue Table 2a [SKF units].
 
     Returned in SKF's units: M_rr [N mm] = G_rr (nu[mm^2/s] n[r/min])^0.6 and
@@ -363,20 +376,21 @@ def deep_groove_load_variables(mean_diameter, radial_load, axial_load, constants
     fa = float(_array("axial_load", axial_load, "N"))
     c = constants
     if fa == 0.0:
-        return (c.r1 * dm ** 1.96 * fr ** 0.54, c.s1 * dm ** -0.26 * fr ** (5.0 / 3.0))
+        return (c.r1 * dm**1.96 * fr**0.54, c.s1 * dm**-0.26 * fr ** (5.0 / 3.0))
     if static_load_rating is None:
-        raise InputError("static_load_rating", None,
-                         "the basic static load rating C_0 [N] when F_a > 0",
-                         "SKF's alpha_F = 24.6 (F_a/C_0)^0.24 needs it (command line: "
-                         "--static-load-rating-kn)")
+        raise InputError(
+            "static_load_rating",
+            None,
+            "the basic static load rating C_0 [N] when F_a > 0",
+            "SKF's alpha_F = 24.6 (F_a/C_0)^0.24 needs it (command line: --static-load-rating-kn)",
+        )
     sin_a = math.sin(float(deep_groove_load_angle(fa, static_load_rating)))
-    g_rr = c.r1 * dm ** 1.96 * (fr + c.r2 / sin_a * fa) ** 0.54
-    g_sl = c.s1 * dm ** -0.145 * (fr ** 5 + c.s2 * dm ** 1.5 / sin_a * fa ** 4) ** (1.0 / 3.0)
+    g_rr = c.r1 * dm**1.96 * (fr + c.r2 / sin_a * fa) ** 0.54
+    g_sl = c.s1 * dm**-0.145 * (fr**5 + c.s2 * dm**1.5 / sin_a * fa**4) ** (1.0 / 3.0)
     return g_rr, g_sl
 
 
-def angular_contact_load_variables(mean_diameter, radial_load, axial_load, shaft_speed,
-                                   constants):
+def angular_contact_load_variables(mean_diameter, radial_load, axial_load, shaft_speed, constants):
     """(G_rr, G_sl) of an angular-contact (or four-point) ball bearing [SKF units].
 
     G_rr = R1 d_m^1.97 (F_r + F_g + R2 F_a)^0.54 with F_g = R3 d_m^4 n^2;
@@ -401,9 +415,8 @@ def angular_contact_load_variables(mean_diameter, radial_load, axial_load, shaft
     fr = float(_array("radial_load", radial_load, "N"))
     fa = float(_array("axial_load", axial_load, "N"))
     n = float(_rpm(shaft_speed))
-    g_rr = c.r1 * dm ** 1.97 * (fr + c.r3 * dm ** 4 * n ** 2 + c.r2 * fa) ** 0.54
-    g_sl = c.s1 * dm ** 0.26 * ((fr + c.s3 * dm ** 4 * n ** 2) ** (4.0 / 3.0)
-                                + c.s2 * fa ** (4.0 / 3.0))
+    g_rr = c.r1 * dm**1.97 * (fr + c.r3 * dm**4 * n**2 + c.r2 * fa) ** 0.54
+    g_sl = c.s1 * dm**0.26 * ((fr + c.s3 * dm**4 * n**2) ** (4.0 / 3.0) + c.s2 * fa ** (4.0 / 3.0))
     return g_rr, g_sl
 
 
@@ -429,22 +442,22 @@ def seal_moment(k_s1, k_s2, beta, seal_diameter):
     ks2 = float(_array("k_s2", k_s2, "SKF units"))
     b = float(_array("beta", beta, "-"))
     ds = float(_mm("seal_diameter", seal_diameter))
-    return (ks1 * ds ** b + ks2) * 1e-3
+    return (ks1 * ds**b + ks2) * 1e-3
 
 
 class SkfMoment(NamedTuple):
     """Components of the SKF frictional moment [N m] and the factors used [-]."""
 
-    rolling: float          # phi_ish phi_rs M_rr [N m]
-    sliding: float          # M_sl [N m]
-    seal: float             # M_seal [N m]
-    drag: float             # M_drag [N m]
+    rolling: float  # phi_ish phi_rs M_rr [N m]
+    sliding: float  # M_sl [N m]
+    seal: float  # M_seal [N m]
+    drag: float  # M_drag [N m]
     inlet_shear_factor: float
     replenishment_factor: float
     sliding_weighting_factor: float
     sliding_friction_coefficient: float
-    rolling_variable: float   # G_rr [SKF units]
-    sliding_variable: float   # G_sl [SKF units]
+    rolling_variable: float  # G_rr [SKF units]
+    sliding_variable: float  # G_sl [SKF units]
 
     @property
     def total(self) -> float:
@@ -452,13 +465,24 @@ class SkfMoment(NamedTuple):
         return self.rolling + self.sliding + self.seal + self.drag
 
 
-def skf_frictional_moment(bearing_type: str, bore: float, outside_diameter: float,
-                          radial_load: float, axial_load: float, shaft_speed: float,
-                          viscosity: float, constants: SkfGeometryConstants, *,
-                          static_load_rating: float | None = None, k_rs: float = K_RS["grease"],
-                          k_z: float | None = None, mu_bl: float = MU_BL,
-                          mu_ehl: float = MU_EHL["mineral"], seal: float = 0.0,
-                          drag: float = 0.0) -> SkfMoment:
+def skf_frictional_moment(
+    bearing_type: str,
+    bore: float,
+    outside_diameter: float,
+    radial_load: float,
+    axial_load: float,
+    shaft_speed: float,
+    viscosity: float,
+    constants: SkfGeometryConstants,
+    *,
+    static_load_rating: float | None = None,
+    k_rs: float = K_RS["grease"],
+    k_z: float | None = None,
+    mu_bl: float = MU_BL,
+    mu_ehl: float = MU_EHL["mineral"],
+    seal: float = 0.0,
+    drag: float = 0.0,
+) -> SkfMoment:
     """Total frictional moment of a ball bearing by the SKF model [N m, components].
 
     Parameters
@@ -496,8 +520,12 @@ def skf_frictional_moment(bearing_type: str, bore: float, outside_diameter: floa
     20.16
     """
     if bearing_type not in SKF_BEARING_TYPES:
-        raise InputError("bearing_type", bearing_type, "one of " + ", ".join(SKF_BEARING_TYPES),
-                         "the SKF model is implemented for ball bearings only")
+        raise InputError(
+            "bearing_type",
+            bearing_type,
+            "one of " + ", ".join(SKF_BEARING_TYPES),
+            "the SKF model is implemented for ball bearings only",
+        )
     if not isinstance(constants, SkfGeometryConstants):
         raise InputError("constants", constants, "an SkfGeometryConstants")
     d = float(_array("bore", bore, "m", positive=True))
@@ -506,18 +534,24 @@ def skf_frictional_moment(bearing_type: str, bore: float, outside_diameter: floa
         raise InputError("outside_diameter", outside_diameter, f"more than the bore {d:.6g} m")
     if k_z is None:
         if bearing_type not in K_Z:
-            raise InputError("k_z", None, "the geometry constant K_Z of this bearing type",
-                             f"no K_Z is shipped for {bearing_type}")
+            raise InputError(
+                "k_z",
+                None,
+                "the geometry constant K_Z of this bearing type",
+                f"no K_Z is shipped for {bearing_type}",
+            )
         k_z = K_Z[bearing_type]
     seal = float(_array("seal", seal, "N m"))
     drag = float(_array("drag", drag, "N m"))
     dm = 0.5 * (d + big_d)
     if bearing_type == "radial_ball":
-        g_rr, g_sl = deep_groove_load_variables(dm, radial_load, axial_load, constants,
-                                                static_load_rating)
+        g_rr, g_sl = deep_groove_load_variables(
+            dm, radial_load, axial_load, constants, static_load_rating
+        )
     else:
-        g_rr, g_sl = angular_contact_load_variables(dm, radial_load, axial_load, shaft_speed,
-                                                    constants)
+        g_rr, g_sl = angular_contact_load_variables(
+            dm, radial_load, axial_load, shaft_speed, constants
+        )
     n = float(_rpm(shaft_speed))
     nu = float(_mm2_s(viscosity))
     ish = float(inlet_shear_heating_factor(shaft_speed, dm, viscosity))

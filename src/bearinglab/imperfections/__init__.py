@@ -22,6 +22,15 @@ from .container import ContactDeviation, Imperfections
 from .surface import RandomSurface, exponential_autocorrelation, sample_autocorrelation
 from .waviness import RACES, BallSizeErrors, Waviness
 
-__all__ = ["RACES", "AxialShift", "BallSizeErrors", "ContactDeviation", "Imperfections",
-           "RandomSurface", "Waviness", "ball_axial_shift", "exponential_autocorrelation",
-           "sample_autocorrelation"]
+__all__ = [
+    "RACES",
+    "AxialShift",
+    "BallSizeErrors",
+    "ContactDeviation",
+    "Imperfections",
+    "RandomSurface",
+    "Waviness",
+    "ball_axial_shift",
+    "exponential_autocorrelation",
+    "sample_autocorrelation",
+]

@@ -105,9 +105,15 @@ def _interpolate(values, position):
     return v0 + f * (v1 - v0)
 
 
-def ball_axial_shift(bearing, inner_height=None, outer_height=None, *,
-                     inner_offset: float = 0.0, points: int = 1201,
-                     tolerance: float = 1e-10) -> AxialShift:
+def ball_axial_shift(
+    bearing,
+    inner_height=None,
+    outer_height=None,
+    *,
+    inner_offset: float = 0.0,
+    points: int = 1201,
+    tolerance: float = 1e-10,
+) -> AxialShift:
     """Axial position of each ball and its contact angle between 3-D wavy raceways.
 
     Seed 002, eqs. 7-9 (module docstring), vectorised over balls (or any leading axes the
@@ -163,8 +169,9 @@ def ball_axial_shift(bearing, inner_height=None, outer_height=None, *,
     h_i = np.broadcast_to(h_i, shape + (n,))
     with np.errstate(invalid="ignore"):
         groove_o = np.where(np.abs(z) < r_o, np.sqrt(np.maximum(r_o**2 - z**2, 0.0)), np.nan)
-        groove_i = np.where(np.abs(z - s) < r_i,
-                            np.sqrt(np.maximum(r_i**2 - (z - s) ** 2, 0.0)), np.nan)
+        groove_i = np.where(
+            np.abs(z - s) < r_i, np.sqrt(np.maximum(r_i**2 - (z - s) ** 2, 0.0)), np.nan
+        )
 
     def contacts(z_b):
         d = z - z_b[..., None]
@@ -185,8 +192,10 @@ def ball_axial_shift(bearing, inner_height=None, outer_height=None, *,
     hi = np.full(shape, 0.5 * radius)
     f_lo, f_hi = balance(lo), balance(hi)
     if np.any(f_lo > 0) or np.any(f_hi < 0):
-        raise ConvergenceError("seed 002 eq. 9: no axial ball position within +-D_w/4 makes the "
-                               "inner and outer contacts collinear (raceway profiles too steep)")
+        raise ConvergenceError(
+            "seed 002 eq. 9: no axial ball position within +-D_w/4 makes the "
+            "inner and outer contacts collinear (raceway profiles too steep)"
+        )
     while np.max(hi - lo) > tol:
         mid = 0.5 * (lo + hi)
         f_mid = balance(mid)
@@ -197,7 +206,12 @@ def ball_axial_shift(bearing, inner_height=None, outer_height=None, *,
     z_ib, z_ob, p_i, p_o = contacts(z_b)
     half = 0.5 * (z_ob - z_ib)
     angle = np.arcsin(np.clip(half / radius, -1.0, 1.0))
-    return AxialShift(ball_shift=z_b[()], inner_contact_z=z_ib[()], outer_contact_z=z_ob[()],
-                      contact_angle=angle[()], inner_deviation=_interpolate(h_i, p_i)[()],
-                      outer_deviation=_interpolate(h_o, p_o)[()],
-                      residual=(z_ib + z_ob - 2.0 * z_b)[()])
+    return AxialShift(
+        ball_shift=z_b[()],
+        inner_contact_z=z_ib[()],
+        outer_contact_z=z_ob[()],
+        contact_angle=angle[()],
+        inner_deviation=_interpolate(h_i, p_i)[()],
+        outer_deviation=_interpolate(h_o, p_o)[()],
+        residual=(z_ib + z_ob - 2.0 * z_b)[()],
+    )

@@ -88,8 +88,11 @@ class Imperfections:
     @property
     def is_empty(self) -> bool:
         """True when nothing deviates."""
-        return not (self.waviness or self.surfaces or (
-            self.ball_size_errors is not None and np.any(self.ball_size_errors.errors)))
+        return not (
+            self.waviness
+            or self.surfaces
+            or (self.ball_size_errors is not None and np.any(self.ball_size_errors.errors))
+        )
 
     def check(self, bearing) -> None:
         """Refuse ball indices or ball-size error counts that do not fit ``bearing``."""
@@ -136,8 +139,9 @@ class Imperfections:
     def ball_deviation(self, spin_angle, ball_count: int):
         """Radius deviation of each ball at spin angle phi (the point facing the outer
         race) [m]; the last axis of ``spin_angle`` (broadcast to ball_count) is the ball."""
-        phi = np.broadcast_to(np.asarray(spin_angle, float), np.broadcast_shapes(
-            np.shape(spin_angle), (ball_count,)))
+        phi = np.broadcast_to(
+            np.asarray(spin_angle, float), np.broadcast_shapes(np.shape(spin_angle), (ball_count,))
+        )
         out = np.zeros(phi.shape)
         for w in self.waviness:
             if w.race != "ball":
@@ -157,8 +161,9 @@ class Imperfections:
         psi = radial_load_angle + 2.0 * np.pi * np.arange(z) / z
         return self.approach_change(bearing, psi).total
 
-    def approach_change(self, bearing, ball_angle, shaft_angle=0.0, spin_angle=0.0, *,
-                        z_inner=0.0, z_outer=0.0) -> ContactDeviation:
+    def approach_change(
+        self, bearing, ball_angle, shaft_angle=0.0, spin_angle=0.0, *, z_inner=0.0, z_outer=0.0
+    ) -> ContactDeviation:
         """Approach changes a_i, a_o at every ball's inner and outer contact (module
         docstring; seed 003 section 4 eqs. 7, 14-17), vectorised over balls and time.
 
@@ -195,12 +200,17 @@ class Imperfections:
         facing_inner = self.ball_deviation(phi + math.pi, z)
         size = 0.0 if self.ball_size_errors is None else 0.5 * self.ball_size_errors.errors
         shape = np.broadcast_shapes(psi.shape, inner.shape, outer.shape, facing_outer.shape)
-        return ContactDeviation(np.broadcast_to(inner + facing_inner + size, shape).copy(),
-                                np.broadcast_to(outer + facing_outer + size, shape).copy())
+        return ContactDeviation(
+            np.broadcast_to(inner + facing_inner + size, shape).copy(),
+            np.broadcast_to(outer + facing_outer + size, shape).copy(),
+        )
 
     def to_dict(self) -> dict:
         """JSON-ready description in engineering units."""
-        return {"waviness": [w.to_dict() for w in self.waviness],
-                "ball_size_errors": None if self.ball_size_errors is None
-                else self.ball_size_errors.to_dict(),
-                "surfaces": [s.to_dict() for s in self.surfaces]}
+        return {
+            "waviness": [w.to_dict() for w in self.waviness],
+            "ball_size_errors": None
+            if self.ball_size_errors is None
+            else self.ball_size_errors.to_dict(),
+            "surfaces": [s.to_dict() for s in self.surfaces],
+        }

@@ -63,8 +63,9 @@ def exponential_autocorrelation(tau_r, tau_z, rms, length_circumferential, lengt
     >>> round(float(exponential_autocorrelation(1e-3, 0.0, 1.0, 1e-3, 2e-3)), 4)
     0.1003
     """
-    rho = np.hypot(np.asarray(tau_r, float) / length_circumferential,
-                   np.asarray(tau_z, float) / length_axial)
+    rho = np.hypot(
+        np.asarray(tau_r, float) / length_circumferential, np.asarray(tau_z, float) / length_axial
+    )
     return rms**2 * np.exp(-DECAY * rho)
 
 
@@ -90,7 +91,7 @@ def sample_autocorrelation(heights, lags_r, lags_z) -> np.ndarray:
         b = index("lags_z", b, f"an integer lag in [0, {n_z - 1}]")
         if b >= n_z:
             raise InputError("lags_z", b, f"an integer lag in [0, {n_z - 1}]")
-        cross = np.fft.ifft(np.conj(spectrum[:, :n_z - b]) * spectrum[:, b:], axis=0).real
+        cross = np.fft.ifft(np.conj(spectrum[:, : n_z - b]) * spectrum[:, b:], axis=0).real
         mean = cross.sum(axis=1) / (n_r * (n_z - b))
         out[:, col] = mean[np.asarray(lags_r, int) % n_r]
     return out
@@ -154,17 +155,24 @@ class RandomSurface:
             if finite(name, getattr(self, name), "a length > 0 [m]") <= 0:
                 raise InputError(name, getattr(self, name), "a length > 0 [m]")
         index("seed", self.seed, "an integer >= 0")
-        n_r = index("points_circumferential", self.points_circumferential,
-                    "an integer >= 8", 8)
+        n_r = index("points_circumferential", self.points_circumferential, "an integer >= 8", 8)
         n_z = index("points_axial", self.points_axial, "an integer >= 2", 2)
         if self.circumferential_step > 0.5 * self.length_circumferential:
             need = math.ceil(4 * math.pi * self.radius / self.length_circumferential)
-            raise InputError("points_circumferential", n_r, f"at least {need}",
-                             "the grid step must be at most half the correlation length")
+            raise InputError(
+                "points_circumferential",
+                n_r,
+                f"at least {need}",
+                "the grid step must be at most half the correlation length",
+            )
         if self.axial_step > 0.5 * self.length_axial:
             need = math.ceil(2 * self.width / self.length_axial) + 1
-            raise InputError("points_axial", n_z, f"at least {need}",
-                             "the grid step must be at most half the correlation length")
+            raise InputError(
+                "points_axial",
+                n_z,
+                f"at least {need}",
+                "the grid step must be at most half the correlation length",
+            )
         if not isinstance(self.exact_rms, bool):
             raise InputError("exact_rms", self.exact_rms, "True or False")
         h = self._generate()
@@ -216,9 +224,13 @@ class RandomSurface:
         cov = np.zeros((n_r, n_g))
         for m in range(-images_r, images_r + 1):
             for n in range(-images_z, images_z + 1):
-                cov += exponential_autocorrelation(lag_r + m * span_r, lag_z + n * span_z, 1.0,
-                                                   self.length_circumferential,
-                                                   self.length_axial)
+                cov += exponential_autocorrelation(
+                    lag_r + m * span_r,
+                    lag_z + n * span_z,
+                    1.0,
+                    self.length_circumferential,
+                    self.length_axial,
+                )
         s = np.maximum(np.fft.fft2(cov).real, 0.0)
         return s * (self.amplitude**2 / np.mean(s))
 
@@ -232,7 +244,7 @@ class RandomSurface:
             return np.zeros((self.points_circumferential, self.points_axial))
         s = self.spectral_density()
         noise = generator(self.seed).standard_normal(s.shape)
-        field_ = np.fft.ifft2(np.sqrt(s) * np.fft.fft2(noise)).real[:, :self.points_axial]
+        field_ = np.fft.ifft2(np.sqrt(s) * np.fft.fft2(noise)).real[:, : self.points_axial]
         if self.exact_rms:
             field_ = field_ - field_.mean()
             field_ *= self.amplitude / np.sqrt(np.mean(field_**2))
@@ -261,31 +273,49 @@ class RandomSurface:
         j0 = np.minimum(np.floor(v), n_z - 2).astype(np.intp)
         fz = v - j0
         h = self.heights
-        return ((1 - fr) * ((1 - fz) * h[i0, j0] + fz * h[i0, j0 + 1])
-                + fr * ((1 - fz) * h[i1, j0] + fz * h[i1, j0 + 1]))[()]
+        return (
+            (1 - fr) * ((1 - fz) * h[i0, j0] + fz * h[i0, j0 + 1])
+            + fr * ((1 - fz) * h[i1, j0] + fz * h[i1, j0 + 1])
+        )[()]
 
     def autocorrelation(self, tau_r, tau_z):
         """The target R(tau_r, tau_z) of this surface (seed 002 eq. 6) [m^2]."""
-        return exponential_autocorrelation(tau_r, tau_z, self.amplitude,
-                                           self.length_circumferential, self.length_axial)
+        return exponential_autocorrelation(
+            tau_r, tau_z, self.amplitude, self.length_circumferential, self.length_axial
+        )
 
     def check(self, bearing) -> None:
         """Nothing to refuse: a surface fits any bearing (its radius is only its scale)."""
 
     def to_dict(self) -> dict:
         """JSON-ready description in engineering units."""
-        return {"race": self.race, "rms_um": self.amplitude * 1e6,
-                "length_circumferential_mm": self.length_circumferential * 1e3,
-                "length_axial_mm": self.length_axial * 1e3, "radius_mm": self.radius * 1e3,
-                "width_mm": self.width * 1e3, "seed": int(self.seed),
-                "points_circumferential": int(self.points_circumferential),
-                "points_axial": int(self.points_axial), "exact_rms": self.exact_rms,
-                "sample_rms_um": self.rms * 1e6}
+        return {
+            "race": self.race,
+            "rms_um": self.amplitude * 1e6,
+            "length_circumferential_mm": self.length_circumferential * 1e3,
+            "length_axial_mm": self.length_axial * 1e3,
+            "radius_mm": self.radius * 1e3,
+            "width_mm": self.width * 1e3,
+            "seed": int(self.seed),
+            "points_circumferential": int(self.points_circumferential),
+            "points_axial": int(self.points_axial),
+            "exact_rms": self.exact_rms,
+            "sample_rms_um": self.rms * 1e6,
+        }
 
     @classmethod
-    def for_bearing(cls, bearing, race: str, amplitude: float, length_circumferential: float,
-                    length_axial: float, seed: int, *, width: float | None = None,
-                    **grid) -> RandomSurface:
+    def for_bearing(
+        cls,
+        bearing,
+        race: str,
+        amplitude: float,
+        length_circumferential: float,
+        length_axial: float,
+        seed: int,
+        *,
+        width: float | None = None,
+        **grid,
+    ) -> RandomSurface:
         """A surface on ``bearing``'s raceway: radius d_i/2 or d_o/2, width D_w by default
         (the groove band the contacts can reach), grid fine enough for the correlation
         lengths (4 points per length, at least 256 round and 17 across) unless given.
@@ -307,17 +337,22 @@ class RandomSurface:
         """
         if race not in ("inner", "outer"):
             raise InputError("race", race, "'inner' or 'outer'")
-        radius = 0.5 * (bearing.inner_raceway_diameter if race == "inner"
-                        else bearing.outer_raceway_diameter)
-        width = bearing.ball_diameter if width is None else finite("width", width,
-                                                                   "a length > 0 [m]")
+        radius = 0.5 * (
+            bearing.inner_raceway_diameter if race == "inner" else bearing.outer_raceway_diameter
+        )
+        width = (
+            bearing.ball_diameter if width is None else finite("width", width, "a length > 0 [m]")
+        )
         if width <= 0:
             raise InputError("width", width, "a length > 0 [m]")
         lr = finite("length_circumferential", length_circumferential, "a length > 0 [m]")
         lz = finite("length_axial", length_axial, "a length > 0 [m]")
         if lr <= 0 or lz <= 0:
-            raise InputError("length_circumferential" if lr <= 0 else "length_axial",
-                             lr if lr <= 0 else lz, "a length > 0 [m]")
+            raise InputError(
+                "length_circumferential" if lr <= 0 else "length_axial",
+                lr if lr <= 0 else lz,
+                "a length > 0 [m]",
+            )
         n_r = max(256, 1 << math.ceil(math.log2(4 * 2 * math.pi * radius / lr)))
         n_z = max(17, math.ceil(4 * width / lz) + 1)
         grid.setdefault("points_circumferential", n_r)

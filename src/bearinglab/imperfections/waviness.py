@@ -44,8 +44,11 @@ RACES = ("inner", "outer", "ball")
 
 def finite(name: str, value, allowed: str = "a finite value") -> float:
     """``value`` as a float, or InputError naming ``name``."""
-    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)) \
-            or not math.isfinite(value):
+    if (
+        isinstance(value, bool)
+        or not isinstance(value, (int, float, np.integer, np.floating))
+        or not math.isfinite(value)
+    ):
         raise InputError(name, value, allowed)
     return float(value)
 
@@ -109,8 +112,12 @@ class Waviness:
         finite("phase", self.phase, "a finite angle [rad]")
         if self.ball is not None:
             if self.race != "ball":
-                raise InputError("ball", self.ball, "None for a raceway's waviness",
-                                 "a ball index applies to race='ball' only")
+                raise InputError(
+                    "ball",
+                    self.ball,
+                    "None for a raceway's waviness",
+                    "a ball index applies to race='ball' only",
+                )
             index("ball", self.ball, "a ball index >= 0 or None (every ball)")
 
     def radius_deviation(self, angle):
@@ -125,8 +132,12 @@ class Waviness:
 
     def to_dict(self) -> dict:
         """JSON-ready description in engineering units."""
-        out = {"race": self.race, "order": int(self.order), "amplitude_um": self.amplitude * 1e6,
-               "phase_deg": math.degrees(self.phase)}
+        out = {
+            "race": self.race,
+            "order": int(self.order),
+            "amplitude_um": self.amplitude * 1e6,
+            "phase_deg": math.degrees(self.phase),
+        }
         if self.race == "ball":
             out["ball"] = self.ball
         return out
@@ -185,8 +196,12 @@ class BallSizeErrors:
         """
         z = index("ball_count", ball_count, "an integer >= 1", 1)
         if seed is None:
-            raise InputError("seed", seed, "an integer >= 0 or a numpy Generator",
-                             "random errors must be reproducible")
+            raise InputError(
+                "seed",
+                seed,
+                "an integer >= 0 or a numpy Generator",
+                "random errors must be reproducible",
+            )
         rng = generator(seed)
         if isinstance(band, (tuple, list, np.ndarray)):
             if len(band) != 2:
@@ -204,8 +219,9 @@ class BallSizeErrors:
     def check(self, bearing) -> None:
         """Refuse a count that differs from the bearing's Z or errors beyond +-5 % D_w."""
         if self.errors.shape != (bearing.ball_count,):
-            raise InputError("errors", self.errors.tolist(),
-                             f"{bearing.ball_count} values (one per ball)")
+            raise InputError(
+                "errors", self.errors.tolist(), f"{bearing.ball_count} values (one per ball)"
+            )
         if np.any(np.abs(self.errors) > 0.05 * bearing.ball_diameter):
             raise InputError("errors", self.errors.tolist(), "values within +-5 % of D_w [m]")
 
@@ -216,5 +232,4 @@ class BallSizeErrors:
 
     def to_dict(self) -> dict:
         """JSON-ready description in um."""
-        return {"ball_size_errors_um": (self.errors * 1e6).tolist(),
-                "band_um": self.band * 1e6}
+        return {"ball_size_errors_um": (self.errors * 1e6).tolist(), "band_um": self.band * 1e6}

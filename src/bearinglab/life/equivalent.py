@@ -23,8 +23,8 @@ from ..errors import InputError
 from ..geometry import BallBearing
 from . import tables as T
 
-_LOW_ANGLES = np.array(sorted(T.XYE_LOW_SINGLE))        # 0, 5, 10, 15 deg
-_HIGH_ANGLES = np.array(sorted(T.XYE_HIGH_SINGLE))      # 20 ... 45 deg
+_LOW_ANGLES = np.array(sorted(T.XYE_LOW_SINGLE))  # 0, 5, 10, 15 deg
+_HIGH_ANGLES = np.array(sorted(T.XYE_HIGH_SINGLE))  # 20 ... 45 deg
 
 
 class LoadFactors(NamedTuple):
@@ -61,19 +61,27 @@ def load_factors(contact_angle: float, relative_axial_load: float) -> LoadFactor
     >>> tuple(round(v, 3) for v in load_factors(math.radians(22.5), 0.0)[:3])
     (0.42, 0.935, 0.625)
     """
-    if not (isinstance(contact_angle, (int, float, np.floating))
-            and 0.0 <= contact_angle <= math.radians(45.0) + 1e-12):
-        raise InputError("contact_angle", contact_angle, "an angle in [0, 45] degrees",
-                         "ISO 281 Table 3 covers radial and angular-contact ball bearings "
-                         "up to 45 deg")
-    if not (isinstance(relative_axial_load, (int, float, np.floating))
-            and math.isfinite(relative_axial_load) and relative_axial_load >= 0.0):
+    if not (
+        isinstance(contact_angle, (int, float, np.floating))
+        and 0.0 <= contact_angle <= math.radians(45.0) + 1e-12
+    ):
+        raise InputError(
+            "contact_angle",
+            contact_angle,
+            "an angle in [0, 45] degrees",
+            "ISO 281 Table 3 covers radial and angular-contact ball bearings up to 45 deg",
+        )
+    if not (
+        isinstance(relative_axial_load, (int, float, np.floating))
+        and math.isfinite(relative_axial_load)
+        and relative_axial_load >= 0.0
+    ):
         raise InputError("relative_axial_load", relative_axial_load, "a finite value >= 0 [Pa]")
     angle = math.degrees(contact_angle)
     if angle >= 20.0:
         cols = [np.array([T.XYE_HIGH_SINGLE[a][k] for a in _HIGH_ANGLES]) for k in range(3)]
         return LoadFactors(*(float(np.interp(angle, _HIGH_ANGLES, c)) for c in cols))
-    relative = relative_axial_load / 1e6                  # N/mm^2, the table's unit
+    relative = relative_axial_load / 1e6  # N/mm^2, the table's unit
     clamped = relative > T.XYE_GRID[-1] * (1 + 1e-9)
     if relative < T.XYE_GRID[0]:
         relative = float(T.XYE_GRID[0])
@@ -90,19 +98,28 @@ def _loads(radial_load: float, axial_load: float) -> tuple[float, float]:
     if radial_load < 0:
         raise InputError("radial_load", radial_load, "a load >= 0 [N]")
     if radial_load == 0 and axial_load == 0:
-        raise InputError("radial_load", radial_load, "a load > 0 [N] (or an axial load)",
-                         "an unloaded bearing has no rating life")
+        raise InputError(
+            "radial_load",
+            radial_load,
+            "a load > 0 [N] (or an axial load)",
+            "an unloaded bearing has no rating life",
+        )
     return float(radial_load), abs(float(axial_load))
 
 
 def _thrust_check(bearing: BallBearing, radial: float) -> None:
     if radial > 0:
-        raise InputError("radial_load", radial, "0 for a thrust ball bearing with a 90 deg "
-                         "contact angle", "it carries axial load only (ISO 281)")
+        raise InputError(
+            "radial_load",
+            radial,
+            "0 for a thrust ball bearing with a 90 deg contact angle",
+            "it carries axial load only (ISO 281)",
+        )
 
 
-def equivalent_dynamic_load(bearing: BallBearing, radial_load: float,
-                            axial_load: float = 0.0) -> tuple[float, LoadFactors]:
+def equivalent_dynamic_load(
+    bearing: BallBearing, radial_load: float, axial_load: float = 0.0
+) -> tuple[float, LoadFactors]:
     """Dynamic equivalent load P of a single-row ball bearing, ISO 281:2007 [N].
 
     Radial and angular-contact bearings: P_r = F_r when F_a/F_r <= e, else
@@ -131,7 +148,7 @@ def equivalent_dynamic_load(bearing: BallBearing, radial_load: float,
     if bearing.is_thrust:
         _thrust_check(bearing, radial)
         return axial, LoadFactors(0.0, 1.0, 0.0)
-    relative = axial / (bearing.ball_count * bearing.ball_diameter ** 2)
+    relative = axial / (bearing.ball_count * bearing.ball_diameter**2)
     factors = load_factors(bearing.contact_angle, relative)
     if radial > 0 and axial / radial <= factors.e:
         return radial, LoadFactors(1.0, 0.0, factors.e, factors.clamped)
@@ -150,18 +167,26 @@ def static_load_factors(contact_angle: float) -> tuple[float, float]:
     >>> static_load_factors(0.0), static_load_factors(math.radians(37.5))
     ((0.6, 0.5), (0.5, 0.275))
     """
-    angle = math.degrees(contact_angle) if isinstance(contact_angle, (int, float,
-                                                                       np.floating)) else None
+    angle = (
+        math.degrees(contact_angle)
+        if isinstance(contact_angle, (int, float, np.floating))
+        else None
+    )
     if angle is not None and angle == 0.0:
         return T.X0_RADIAL, T.Y0_RADIAL
     if angle is None or not (5.0 - 1e-9 <= angle <= 45.0 + 1e-9):
-        raise InputError("contact_angle", contact_angle, "0, or an angle in [5, 45] degrees",
-                         "ISO 76 Table 2 gives X_0, Y_0 for radial contact and 5-45 deg only")
+        raise InputError(
+            "contact_angle",
+            contact_angle,
+            "0, or an angle in [5, 45] degrees",
+            "ISO 76 Table 2 gives X_0, Y_0 for radial contact and 5-45 deg only",
+        )
     return T.X0_ANGULAR, float(np.interp(angle, T.Y0_ANGLE_DEG, T.Y0_ANGULAR))
 
 
-def equivalent_static_load(bearing: BallBearing, radial_load: float,
-                           axial_load: float = 0.0) -> float:
+def equivalent_static_load(
+    bearing: BallBearing, radial_load: float, axial_load: float = 0.0
+) -> float:
     """Static equivalent load P_0 of a single-row ball bearing, ISO 76:2006 [N]:
     max(F_r, X_0 F_r + Y_0 F_a) for radial and angular-contact bearings, F_a for a thrust
     ball bearing with a 90 deg contact angle.

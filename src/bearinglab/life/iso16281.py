@@ -34,8 +34,7 @@ from ..operating import OperatingCondition
 from . import tables as T
 
 
-def conformity_ratio(gamma: float, inner_groove_factor: float,
-                     outer_groove_factor: float) -> float:
+def conformity_ratio(gamma: float, inner_groove_factor: float, outer_groove_factor: float) -> float:
     """T = 1.044 ((1-g)/(1+g))^1.72 (f_i (2 f_o - 1) / (f_o (2 f_i - 1)))^0.41 of ISO/TS
     16281 (r = f D_w): the ratio of the inner to the outer contact rating, times J_2/J_1.
 
@@ -51,13 +50,18 @@ def conformity_ratio(gamma: float, inner_groove_factor: float,
     """
     if not 0.0 <= gamma < 1.0:
         raise InputError("gamma", gamma, "a value in [0, 1)")
-    for name, f in (("inner_groove_factor", inner_groove_factor),
-                    ("outer_groove_factor", outer_groove_factor)):
+    for name, f in (
+        ("inner_groove_factor", inner_groove_factor),
+        ("outer_groove_factor", outer_groove_factor),
+    ):
         if not f > 0.5:
             raise InputError(name, f, "a value > 0.5")
-    groove = (inner_groove_factor * (2.0 * outer_groove_factor - 1.0)
-              / (outer_groove_factor * (2.0 * inner_groove_factor - 1.0)))
-    return T.QC_RATIO * ((1.0 - gamma) / (1.0 + gamma)) ** 1.72 * groove ** 0.41
+    groove = (
+        inner_groove_factor
+        * (2.0 * outer_groove_factor - 1.0)
+        / (outer_groove_factor * (2.0 * inner_groove_factor - 1.0))
+    )
+    return T.QC_RATIO * ((1.0 - gamma) / (1.0 + gamma)) ** 1.72 * groove**0.41
 
 
 def contact_ratings(bearing: BallBearing, dynamic_rating: float) -> tuple[float, float]:
@@ -77,8 +81,12 @@ def contact_ratings(bearing: BallBearing, dynamic_rating: float) -> tuple[float,
     (4021, 6991)
     """
     if bearing.is_thrust:
-        raise InputError("bearing_type", bearing.bearing_type, "a radial or angular-contact "
-                         "ball bearing", "the ISO/TS 16281 thrust forms are not implemented")
+        raise InputError(
+            "bearing_type",
+            bearing.bearing_type,
+            "a radial or angular-contact ball bearing",
+            "the ISO/TS 16281 thrust forms are not implemented",
+        )
     if not (math.isfinite(dynamic_rating) and dynamic_rating > 0):
         raise InputError("dynamic_rating", dynamic_rating, "a rating > 0 [N]")
     cos_a = math.cos(bearing.contact_angle)
@@ -108,11 +116,12 @@ def equivalent_ball_load(loads, exponent: float) -> float:
     q = np.clip(np.asarray(loads, dtype=float), 0.0, None)
     if q.ndim != 1 or q.size == 0 or not np.all(np.isfinite(q)):
         raise InputError("loads", loads, "a non-empty list of finite contact loads [N]")
-    return float(np.mean(q ** exponent) ** (1.0 / exponent))
+    return float(np.mean(q**exponent) ** (1.0 / exponent))
 
 
-def reference_life(inner_rating: float, outer_rating: float, inner_equivalent: float,
-                   outer_equivalent: float) -> float:
+def reference_life(
+    inner_rating: float, outer_rating: float, inner_equivalent: float, outer_equivalent: float
+) -> float:
     """L10r = [(Q_ci/Q_ei)^(-10/3) + (Q_ce/Q_ee)^(-10/3)]^(-9/10) [million revolutions].
 
     Parameters
@@ -125,17 +134,28 @@ def reference_life(inner_rating: float, outer_rating: float, inner_equivalent: f
     >>> round(reference_life(1000.0, 2000.0, 100.0, 100.0), 1)
     918.4
     """
-    terms = [(q_e / q_c) ** (10.0 / 3.0) for q_c, q_e in
-             ((inner_rating, inner_equivalent), (outer_rating, outer_equivalent))]
+    terms = [
+        (q_e / q_c) ** (10.0 / 3.0)
+        for q_c, q_e in ((inner_rating, inner_equivalent), (outer_rating, outer_equivalent))
+    ]
     total = sum(terms)
     if not (math.isfinite(total) and total > 0):
-        raise InputError("equivalent ball loads", (inner_equivalent, outer_equivalent),
-                         "at least one loaded raceway", "an unloaded bearing has no life")
-    return total ** -0.9
+        raise InputError(
+            "equivalent ball loads",
+            (inner_equivalent, outer_equivalent),
+            "at least one loaded raceway",
+            "an unloaded bearing has no life",
+        )
+    return total**-0.9
 
 
-def reference_rating_life(bearing: BallBearing, condition: OperatingCondition,
-                          dynamic_rating: float, *, rotating: str = "inner") -> dict:
+def reference_rating_life(
+    bearing: BallBearing,
+    condition: OperatingCondition,
+    dynamic_rating: float,
+    *,
+    rotating: str = "inner",
+) -> dict:
     """ISO/TS 16281 basic reference rating life from the solved load distribution.
 
     Parameters
@@ -165,16 +185,29 @@ def reference_rating_life(bearing: BallBearing, condition: OperatingCondition,
     result = solve_load_distribution(bearing, condition)
     inner = result.load[:, result.ring == 0].sum(axis=1)
     outer = result.load[:, result.ring == 1].sum(axis=1)
-    w_inner, w_outer = ((T.ROTATING_EXPONENT, T.STATIONARY_EXPONENT) if rotating == "inner"
-                        else (T.STATIONARY_EXPONENT, T.ROTATING_EXPONENT))
+    w_inner, w_outer = (
+        (T.ROTATING_EXPONENT, T.STATIONARY_EXPONENT)
+        if rotating == "inner"
+        else (T.STATIONARY_EXPONENT, T.ROTATING_EXPONENT)
+    )
     q_ei = equivalent_ball_load(inner, w_inner)
     q_ee = equivalent_ball_load(outer, w_outer)
     l10r = reference_life(q_ci, q_ce, q_ei, q_ee)
     warnings = list(result.warnings)
     if rotating == "outer" and condition.shaft_speed > 0:
-        warnings.append("the load distribution takes the ball centrifugal force at the cage "
-                        "speed of a rotating inner ring")
-    return {"l10r": l10r, "reference_load": dynamic_rating / l10r ** (1.0 / 3.0),
-            "inner_rating": q_ci, "outer_rating": q_ce, "inner_equivalent": q_ei,
-            "outer_equivalent": q_ee, "inner_loads": inner, "outer_loads": outer,
-            "rotating": rotating, "warnings": warnings}
+        warnings.append(
+            "the load distribution takes the ball centrifugal force at the cage "
+            "speed of a rotating inner ring"
+        )
+    return {
+        "l10r": l10r,
+        "reference_load": dynamic_rating / l10r ** (1.0 / 3.0),
+        "inner_rating": q_ci,
+        "outer_rating": q_ce,
+        "inner_equivalent": q_ei,
+        "outer_equivalent": q_ee,
+        "inner_loads": inner,
+        "outer_loads": outer,
+        "rotating": rotating,
+        "warnings": warnings,
+    }

@@ -31,8 +31,9 @@ from .result import LifeResult
 
 METHODS = ("iso281", "iso16281")
 _MM = 1e-3
-_CONTAMINATION_ALLOWED = ("a number in [0, 1] or one of "
-                          + ", ".join([*T.CONTAMINATION_ALIASES, *T.CONTAMINATION_LEVELS]))
+_CONTAMINATION_ALLOWED = "a number in [0, 1] or one of " + ", ".join(
+    [*T.CONTAMINATION_ALIASES, *T.CONTAMINATION_LEVELS]
+)
 
 
 class ViscosityTooLow(InputError):
@@ -41,9 +42,12 @@ class ViscosityTooLow(InputError):
     interface can state it in its own unit)."""
 
     def __init__(self, viscosity: float, minimum: float, kappa: float) -> None:
-        super().__init__("viscosity", viscosity, f"at least {minimum:.3g} m^2/s at this speed "
-                         "and size", f"kappa = nu/nu_1 = {kappa:.3g} is below 0.1, where "
-                         "ISO 281 gives no a_ISO")
+        super().__init__(
+            "viscosity",
+            viscosity,
+            f"at least {minimum:.3g} m^2/s at this speed and size",
+            f"kappa = nu/nu_1 = {kappa:.3g} is below 0.1, where ISO 281 gives no a_ISO",
+        )
         self.minimum = minimum
 
 
@@ -60,10 +64,14 @@ def reliability_factor(reliability_percent: float) -> float:
     (1.0, 0.25, 0.077)
     """
     r = reliability_percent
-    if not (isinstance(r, (int, float, np.floating)) and math.isfinite(r)
-            and T.A1_RELIABILITY[0] <= r <= T.A1_RELIABILITY[-1]):
-        raise InputError("reliability_percent", r, "a reliability in [90, 99.95] %",
-                         "ISO 281 Table 12")
+    if not (
+        isinstance(r, (int, float, np.floating))
+        and math.isfinite(r)
+        and T.A1_RELIABILITY[0] <= r <= T.A1_RELIABILITY[-1]
+    ):
+        raise InputError(
+            "reliability_percent", r, "a reliability in [90, 99.95] %", "ISO 281 Table 12"
+        )
     return float(np.interp(r, T.A1_RELIABILITY, T.A1_FACTOR))
 
 
@@ -83,15 +91,16 @@ def rated_viscosity(shaft_speed: float, pitch_diameter: float) -> float:
     13.16
     """
     for name, value in (("shaft_speed", shaft_speed), ("pitch_diameter", pitch_diameter)):
-        if not (isinstance(value, (int, float, np.floating)) and math.isfinite(value)
-                and value > 0):
+        if not (
+            isinstance(value, (int, float, np.floating)) and math.isfinite(value) and value > 0
+        ):
             raise InputError(name, value, "a value > 0")
     n = rad_s_to_rpm(shaft_speed)
     d_pw = pitch_diameter / _MM
     if n < T.NU1_SWITCH_RPM:
-        nu1 = 45000.0 * n ** -0.83 * d_pw ** -0.5
+        nu1 = 45000.0 * n**-0.83 * d_pw**-0.5
     else:
-        nu1 = 4500.0 * n ** -0.5 * d_pw ** -0.5
+        nu1 = 4500.0 * n**-0.5 * d_pw**-0.5
     return nu1 * 1e-6
 
 
@@ -124,18 +133,23 @@ def contamination_factor(contamination, pitch_diameter: float) -> tuple[float, s
             raise InputError("contamination", contamination, _CONTAMINATION_ALLOWED)
         large = pitch_diameter / _MM >= T.CONTAMINATION_SIZE_MM
         low, high = T.CONTAMINATION_LEVELS[key][1 if large else 0]
-        where = (f"ISO 281 Table 13 '{key}', D_pw {'>=' if large else '<'} 100 mm: "
-                 f"{low:g}-{high:g}, middle used")
+        where = (
+            f"ISO 281 Table 13 '{key}', D_pw {'>=' if large else '<'} 100 mm: "
+            f"{low:g}-{high:g}, middle used"
+        )
         return 0.5 * (low + high), where
     if isinstance(contamination, bool) or not (
-            isinstance(contamination, (int, float, np.floating)) and math.isfinite(contamination)
-            and 0.0 <= contamination <= 1.0):
+        isinstance(contamination, (int, float, np.floating))
+        and math.isfinite(contamination)
+        and 0.0 <= contamination <= 1.0
+    ):
         raise InputError("contamination", contamination, _CONTAMINATION_ALLOWED)
     return float(contamination), "given"
 
 
-def life_modification_factor(kappa: float, load_ratio: float, *,
-                             ep_additives: bool = False, contamination: float = 1.0) -> float:
+def life_modification_factor(
+    kappa: float, load_ratio: float, *, ep_additives: bool = False, contamination: float = 1.0
+) -> float:
     """Life modification factor a_ISO of radial ball bearings, ISO 281:2007 [-].
 
     Parameters
@@ -160,23 +174,33 @@ def life_modification_factor(kappa: float, load_ratio: float, *,
     >>> round(life_modification_factor(2.0, 0.3), 3)
     41.752
     """
-    if not (isinstance(kappa, (int, float, np.floating)) and math.isfinite(kappa)
-            and kappa >= T.KAPPA_MIN):
-        raise InputError("kappa", kappa, f"a viscosity ratio >= {T.KAPPA_MIN}",
-                         "ISO 281 gives no a_ISO below 0.1")
-    if not (isinstance(load_ratio, (int, float, np.floating)) and math.isfinite(load_ratio)
-            and load_ratio >= 0.0):
+    if not (
+        isinstance(kappa, (int, float, np.floating))
+        and math.isfinite(kappa)
+        and kappa >= T.KAPPA_MIN
+    ):
+        raise InputError(
+            "kappa",
+            kappa,
+            f"a viscosity ratio >= {T.KAPPA_MIN}",
+            "ISO 281 gives no a_ISO below 0.1",
+        )
+    if not (
+        isinstance(load_ratio, (int, float, np.floating))
+        and math.isfinite(load_ratio)
+        and load_ratio >= 0.0
+    ):
         raise InputError("load_ratio", load_ratio, "e_C C_u / P, a finite value >= 0")
     cap = T.A_ISO_CAP
     if ep_additives and kappa < 1.0 and contamination >= T.EP_KAPPA_EC_MIN:
         kappa, cap = 1.0, T.EP_A_ISO_CAP
     k = min(float(kappa), T.KAPPA_MAX)
     c, p = next((c, p) for low, c, p in reversed(T.A_ISO_BANDS) if k >= low)
-    base = max(T.A_ISO_BASE - c / k ** p, 0.0)       # 0 at kappa = 0.1 (rounding aside)
-    bracket = 1.0 - base ** T.A_ISO_EXPONENT * load_ratio ** (1.0 / 3.0)
+    base = max(T.A_ISO_BASE - c / k**p, 0.0)  # 0 at kappa = 0.1 (rounding aside)
+    bracket = 1.0 - base**T.A_ISO_EXPONENT * load_ratio ** (1.0 / 3.0)
     if bracket <= 0.0:
         return cap
-    return float(min(0.1 * bracket ** -T.A_ISO_SLOPE, cap))
+    return float(min(0.1 * bracket**-T.A_ISO_SLOPE, cap))
 
 
 def basic_rating_life(dynamic_rating: float, equivalent_load: float) -> float:
@@ -193,8 +217,9 @@ def basic_rating_life(dynamic_rating: float, equivalent_load: float) -> float:
     1000.0
     """
     for name, value in (("dynamic_rating", dynamic_rating), ("equivalent_load", equivalent_load)):
-        if not (isinstance(value, (int, float, np.floating)) and math.isfinite(value)
-                and value > 0):
+        if not (
+            isinstance(value, (int, float, np.floating)) and math.isfinite(value) and value > 0
+        ):
             raise InputError(name, value, "a load > 0 [N]")
     return float((dynamic_rating / equivalent_load) ** 3)
 
@@ -203,21 +228,37 @@ def _check_condition(condition: OperatingCondition, method: str) -> None:
     if not isinstance(condition, OperatingCondition):
         raise InputError("condition", condition, "an OperatingCondition")
     if not condition.shaft_speed > 0:
-        raise InputError("shaft_speed", condition.shaft_speed, "a speed > 0 [rad/s]",
-                         "life in hours and the rated viscosity need it")
-    if method == "iso281" and (condition.moment is not None
-                               or any(condition.misalignment)
-                               or any(condition.outer_misalignment)):
-        raise InputError("condition", "moment or misalignment",
-                         "none for method 'iso281' (use 'iso16281', which solves the load "
-                         "distribution)")
+        raise InputError(
+            "shaft_speed",
+            condition.shaft_speed,
+            "a speed > 0 [rad/s]",
+            "life in hours and the rated viscosity need it",
+        )
+    if method == "iso281" and (
+        condition.moment is not None
+        or any(condition.misalignment)
+        or any(condition.outer_misalignment)
+    ):
+        raise InputError(
+            "condition",
+            "moment or misalignment",
+            "none for method 'iso281' (use 'iso16281', which solves the load distribution)",
+        )
 
 
-def rating_life(bearing: BallBearing, condition: OperatingCondition, *,
-                reliability_percent: float = 90.0, viscosity: float | None = None,
-                contamination=None, method: str = "iso281", rotating: str = "inner",
-                ep_additives: bool = False, dynamic_load_rating: float | None = None,
-                static_load_rating: float | None = None) -> LifeResult:
+def rating_life(
+    bearing: BallBearing,
+    condition: OperatingCondition,
+    *,
+    reliability_percent: float = 90.0,
+    viscosity: float | None = None,
+    contamination=None,
+    method: str = "iso281",
+    rotating: str = "inner",
+    ep_additives: bool = False,
+    dynamic_load_rating: float | None = None,
+    static_load_rating: float | None = None,
+) -> LifeResult:
     """Rating life of a single-row ball bearing, ISO 281:2007 or ISO/TS 16281.
 
     ``iso281``: L10 = (C/P)^3 with P from Table 3 (normal clearance, rigid rings, no
@@ -274,14 +315,17 @@ def rating_life(bearing: BallBearing, condition: OperatingCondition, *,
         raise InputError("rotating", rotating, "'inner' or 'outer'")
     _check_condition(condition, method)
     a1 = reliability_factor(reliability_percent)
-    ratings = load_ratings(bearing, dynamic_load_rating=dynamic_load_rating,
-                           static_load_rating=static_load_rating)
+    ratings = load_ratings(
+        bearing, dynamic_load_rating=dynamic_load_rating, static_load_rating=static_load_rating
+    )
     warnings = list(ratings.warnings)
     radial, axial = condition.radial_load, condition.axial_load
     p, factors = equivalent_dynamic_load(bearing, radial, axial)
     if factors.clamped:
-        warnings.append("the relative axial load F_a/(Z D_w^2) is beyond ISO 281 Table 3: "
-                        "its last X, Y, e were used")
+        warnings.append(
+            "the relative axial load F_a/(Z D_w^2) is beyond ISO 281 Table 3: "
+            "its last X, Y, e were used"
+        )
     p0 = equivalent_static_load(bearing, radial, axial)
     reference = None
     iso281_p = None
@@ -296,12 +340,17 @@ def rating_life(bearing: BallBearing, condition: OperatingCondition, *,
     else:
         l10 = basic_rating_life(ratings.dynamic, p)
     if ratings.static / p0 < 1.0:
-        warnings.append(f"static safety factor s0 = {ratings.static / p0:.3g} < 1: the most "
-                        "loaded contact exceeds 4200 MPa (ISO 76 permanent deformation)")
+        warnings.append(
+            f"static safety factor s0 = {ratings.static / p0:.3g} < 1: the most "
+            "loaded contact exceeds 4200 MPa (ISO 76 permanent deformation)"
+        )
     kwargs = {}
     if viscosity is not None:
-        if not (isinstance(viscosity, (int, float, np.floating)) and math.isfinite(viscosity)
-                and viscosity > 0):
+        if not (
+            isinstance(viscosity, (int, float, np.floating))
+            and math.isfinite(viscosity)
+            and viscosity > 0
+        ):
             raise InputError("viscosity", viscosity, "a kinematic viscosity > 0 [m^2/s]")
         nu1 = rated_viscosity(condition.shaft_speed, bearing.pitch_diameter)
         kappa = viscosity / nu1
@@ -309,30 +358,50 @@ def rating_life(bearing: BallBearing, condition: OperatingCondition, *,
             raise ViscosityTooLow(viscosity, T.KAPPA_MIN * nu1, kappa)
         if contamination is None:
             contamination = "normal-cleanliness"
-            warnings.append("contamination not given: normal cleanliness (ISO 281 Table 13) "
-                            "assumed")
+            warnings.append(
+                "contamination not given: normal cleanliness (ISO 281 Table 13) assumed"
+            )
         e_c, e_source = contamination_factor(contamination, bearing.pitch_diameter)
         if bearing.is_thrust:
-            warnings.append("a_ISO of thrust ball bearings (ISO 281 uses 3 P_a there) is not "
-                            "implemented: no modified life")
+            warnings.append(
+                "a_ISO of thrust ball bearings (ISO 281 uses 3 P_a there) is not "
+                "implemented: no modified life"
+            )
             a_iso = lnm = None
         else:
-            a_iso = life_modification_factor(kappa, e_c * ratings.fatigue_limit / p,
-                                             ep_additives=ep_additives, contamination=e_c)
+            a_iso = life_modification_factor(
+                kappa, e_c * ratings.fatigue_limit / p, ep_additives=ep_additives, contamination=e_c
+            )
             lnm = a1 * a_iso * l10
             if a_iso >= T.A_ISO_CAP:
                 warnings.append("a_ISO reached ISO 281's limit of 50")
-        kwargs = {"viscosity": float(viscosity), "rated_viscosity": nu1, "kappa": kappa,
-                  "contamination": e_c, "contamination_source": e_source, "a_iso": a_iso,
-                  "lnm": lnm}
+        kwargs = {
+            "viscosity": float(viscosity),
+            "rated_viscosity": nu1,
+            "kappa": kappa,
+            "contamination": e_c,
+            "contamination_source": e_source,
+            "a_iso": a_iso,
+            "lnm": lnm,
+        }
     elif contamination is not None:
-        contamination_factor(contamination, bearing.pitch_diameter)   # validate it anyway
+        contamination_factor(contamination, bearing.pitch_diameter)  # validate it anyway
         warnings.append("contamination given without a viscosity: a_ISO needs both")
     else:
-        warnings.append("no viscosity given: kappa, a_ISO and the modified life are not "
-                        "computed")
-    return LifeResult(bearing=bearing, condition=condition, method=method, ratings=ratings,
-                      equivalent_load=float(p), factors=factors, static_equivalent_load=p0,
-                      l10=l10, reliability_percent=float(reliability_percent), a1=a1,
-                      iso281_equivalent_load=iso281_p, reference=reference,
-                      warnings=tuple(warnings), **kwargs)
+        warnings.append("no viscosity given: kappa, a_ISO and the modified life are not computed")
+    return LifeResult(
+        bearing=bearing,
+        condition=condition,
+        method=method,
+        ratings=ratings,
+        equivalent_load=float(p),
+        factors=factors,
+        static_equivalent_load=p0,
+        l10=l10,
+        reliability_percent=float(reliability_percent),
+        a1=a1,
+        iso281_equivalent_load=iso281_p,
+        reference=reference,
+        warnings=tuple(warnings),
+        **kwargs,
+    )

@@ -40,8 +40,12 @@ def _table(name: str, gamma: float, grid: np.ndarray, values: np.ndarray, what: 
         raise InputError(name, gamma, "a finite ratio")
     low, high = float(grid[0]), float(grid[-1])
     if not (low - 1e-12 <= gamma <= high + 1e-12):
-        raise InputError(name, gamma, f"a value in [{low:g}, {high:g}]",
-                         f"{what} gives no value outside; it is not extrapolated")
+        raise InputError(
+            name,
+            gamma,
+            f"a value in [{low:g}, {high:g}]",
+            f"{what} gives no value outside; it is not extrapolated",
+        )
     return float(np.interp(gamma, grid, values))
 
 
@@ -96,30 +100,46 @@ def f0_factor(gamma: float, thrust: bool = False) -> float:
 def _check_set(ball_count, ball_diameter, pitch_diameter, contact_angle, rows) -> bool:
     """Check one set of rating inputs; True for a thrust ball bearing (alpha = 90 deg, which
     has a single row)."""
-    if isinstance(ball_count, bool) or not isinstance(ball_count, (int, np.integer)) \
-            or ball_count < 3:
+    if (
+        isinstance(ball_count, bool)
+        or not isinstance(ball_count, (int, np.integer))
+        or ball_count < 3
+    ):
         raise InputError("ball_count", ball_count, "an integer >= 3")
     for name, value in (("ball_diameter", ball_diameter), ("pitch_diameter", pitch_diameter)):
-        if not (isinstance(value, (int, float, np.floating)) and math.isfinite(value)
-                and value > 0):
+        if not (
+            isinstance(value, (int, float, np.floating)) and math.isfinite(value) and value > 0
+        ):
             raise InputError(name, value, "a length > 0 [m]")
     if pitch_diameter <= ball_diameter:
-        raise InputError("pitch_diameter", pitch_diameter,
-                         f"more than the ball diameter {ball_diameter:.6g} m")
-    if not (isinstance(contact_angle, (int, float, np.floating))
-            and 0.0 <= contact_angle <= 0.5 * math.pi):
+        raise InputError(
+            "pitch_diameter", pitch_diameter, f"more than the ball diameter {ball_diameter:.6g} m"
+        )
+    if not (
+        isinstance(contact_angle, (int, float, np.floating))
+        and 0.0 <= contact_angle <= 0.5 * math.pi
+    ):
         raise InputError("contact_angle", contact_angle, "an angle in [0, 90] degrees")
     if isinstance(rows, bool) or not isinstance(rows, (int, np.integer)) or rows < 1:
         raise InputError("rows", rows, "an integer >= 1")
     thrust = math.isclose(contact_angle, 0.5 * math.pi, abs_tol=1e-12)
     if thrust and rows != 1:
-        raise InputError("rows", rows, "1 for a thrust ball bearing",
-                         "multi-row thrust ratings are not implemented")
+        raise InputError(
+            "rows",
+            rows,
+            "1 for a thrust ball bearing",
+            "multi-row thrust ratings are not implemented",
+        )
     return thrust
 
 
-def dynamic_load_rating(ball_count: int, ball_diameter: float, pitch_diameter: float,
-                        contact_angle: float = 0.0, rows: int = 1) -> float:
+def dynamic_load_rating(
+    ball_count: int,
+    ball_diameter: float,
+    pitch_diameter: float,
+    contact_angle: float = 0.0,
+    rows: int = 1,
+) -> float:
     """Basic dynamic load rating C of a ball bearing, ISO 281:2007 section 6.1 [N].
 
     Radial and angular-contact bearings (contact angle below 90 deg) get the radial rating
@@ -154,15 +174,24 @@ def dynamic_load_rating(ball_count: int, ball_diameter: float, pitch_diameter: f
         front = T.B_M_BALL * fc_factor(gamma, thrust=True) * ball_count ** (2.0 / 3.0)
     else:
         gamma = ball_diameter * math.cos(contact_angle) / pitch_diameter
-        front = (T.B_M_BALL * fc_factor(gamma) * (rows * math.cos(contact_angle)) ** 0.7
-                 * ball_count ** (2.0 / 3.0))
+        front = (
+            T.B_M_BALL
+            * fc_factor(gamma)
+            * (rows * math.cos(contact_angle)) ** 0.7
+            * ball_count ** (2.0 / 3.0)
+        )
     if d_w <= T.LARGE_BALL_MM:
-        return front * d_w ** 1.8
-    return T.LARGE_BALL_COEFFICIENT * front * d_w ** 1.4
+        return front * d_w**1.8
+    return T.LARGE_BALL_COEFFICIENT * front * d_w**1.4
 
 
-def static_load_rating(ball_count: int, ball_diameter: float, pitch_diameter: float,
-                       contact_angle: float = 0.0, rows: int = 1) -> float:
+def static_load_rating(
+    ball_count: int,
+    ball_diameter: float,
+    pitch_diameter: float,
+    contact_angle: float = 0.0,
+    rows: int = 1,
+) -> float:
     """Basic static load rating C_0 of a ball bearing, ISO 76:2006 [N].
 
     C_0r = f_0 i Z D_w^2 cos(alpha) for radial and angular-contact bearings; for a
@@ -193,9 +222,9 @@ def static_load_rating(ball_count: int, ball_diameter: float, pitch_diameter: fl
     thrust = _check_set(ball_count, ball_diameter, pitch_diameter, contact_angle, rows)
     d_w = ball_diameter / _MM
     if thrust:
-        return f0_factor(ball_diameter / pitch_diameter, thrust=True) * ball_count * d_w ** 2
+        return f0_factor(ball_diameter / pitch_diameter, thrust=True) * ball_count * d_w**2
     gamma = ball_diameter * math.cos(contact_angle) / pitch_diameter
-    return f0_factor(gamma) * rows * ball_count * d_w ** 2 * math.cos(contact_angle)
+    return f0_factor(gamma) * rows * ball_count * d_w**2 * math.cos(contact_angle)
 
 
 def fatigue_load_limit(static_rating: float, pitch_diameter: float) -> float:
@@ -213,8 +242,9 @@ def fatigue_load_limit(static_rating: float, pitch_diameter: float) -> float:
     (1000, 500)
     """
     for name, value in (("static_rating", static_rating), ("pitch_diameter", pitch_diameter)):
-        if not (isinstance(value, (int, float, np.floating)) and math.isfinite(value)
-                and value > 0):
+        if not (
+            isinstance(value, (int, float, np.floating)) and math.isfinite(value) and value > 0
+        ):
             raise InputError(name, value, "a value > 0")
     c_u = static_rating / T.CU_DIVISOR
     d_pw = pitch_diameter / _MM
@@ -269,26 +299,40 @@ class LoadRatings:
 
     def to_dict(self) -> dict:
         """JSON-ready dict in engineering units."""
-        return {"dynamic_rating_n": self.dynamic, "dynamic_rating_source": self.dynamic_source,
-                "static_rating_n": self.static, "static_rating_source": self.static_source,
-                "fatigue_load_limit_n": self.fatigue_limit,
-                "fatigue_load_limit_source": self.fatigue_limit_source,
-                "fc": self.fc, "f0": self.f0, "gamma": self.gamma,
-                "rating_kind": "axial" if self.thrust else "radial",
-                "rating_factor_bm": T.B_M_BALL}
+        return {
+            "dynamic_rating_n": self.dynamic,
+            "dynamic_rating_source": self.dynamic_source,
+            "static_rating_n": self.static,
+            "static_rating_source": self.static_source,
+            "fatigue_load_limit_n": self.fatigue_limit,
+            "fatigue_load_limit_source": self.fatigue_limit_source,
+            "fc": self.fc,
+            "f0": self.f0,
+            "gamma": self.gamma,
+            "rating_kind": "axial" if self.thrust else "radial",
+            "rating_factor_bm": T.B_M_BALL,
+        }
 
 
 def _given(name: str, value) -> float | None:
     if value is None:
         return None
-    if isinstance(value, bool) or not isinstance(value, (int, float, np.floating)) \
-            or not math.isfinite(value) or value <= 0:
+    if (
+        isinstance(value, bool)
+        or not isinstance(value, (int, float, np.floating))
+        or not math.isfinite(value)
+        or value <= 0
+    ):
         raise InputError(name, value, "a rating > 0 [N]")
     return float(value)
 
 
-def load_ratings(bearing: BallBearing, *, dynamic_load_rating: float | None = None,
-                 static_load_rating: float | None = None) -> LoadRatings:
+def load_ratings(
+    bearing: BallBearing,
+    *,
+    dynamic_load_rating: float | None = None,
+    static_load_rating: float | None = None,
+) -> LoadRatings:
     """C, C_0 and C_u of a single-row ball bearing from its internal geometry, or as given.
 
     Deep-groove and angular-contact bearings get radial ratings; a thrust ball bearing
@@ -356,25 +400,40 @@ def load_ratings(bearing: BallBearing, *, dynamic_load_rating: float | None = No
 
     dynamic, dynamic_source = source(c, getattr(computed, "dynamic", None), DYNAMIC_SOURCE)
     static, static_source = source(c0, getattr(computed, "static", None), STATIC_SOURCE)
-    return LoadRatings(dynamic=dynamic, static=static,
-                       fatigue_limit=fatigue_load_limit(static, bearing.pitch_diameter),
-                       fc=fc, f0=f0, gamma=gamma, thrust=thrust, warnings=warnings,
-                       dynamic_source=dynamic_source, static_source=static_source,
-                       fatigue_limit_source=FATIGUE_SOURCE + (" (given)" if c0 is not None
-                                                              else ""))
+    return LoadRatings(
+        dynamic=dynamic,
+        static=static,
+        fatigue_limit=fatigue_load_limit(static, bearing.pitch_diameter),
+        fc=fc,
+        f0=f0,
+        gamma=gamma,
+        thrust=thrust,
+        warnings=warnings,
+        dynamic_source=dynamic_source,
+        static_source=static_source,
+        fatigue_limit_source=FATIGUE_SOURCE + (" (given)" if c0 is not None else ""),
+    )
 
 
 def _computed_ratings(bearing: BallBearing) -> LoadRatings:
     """C, C_0 and C_u from the internal geometry (ISO 281, ISO 76)."""
     btype = bearing.bearing_type
     if btype not in RATED_TYPES:
-        raise InputError("bearing_type", btype, "one of " + ", ".join(RATED_TYPES),
-                         "ISO 281/76 ratings of this type are not implemented")
+        raise InputError(
+            "bearing_type",
+            btype,
+            "one of " + ", ".join(RATED_TYPES),
+            "ISO 281/76 ratings of this type are not implemented",
+        )
     alpha = bearing.contact_angle
     thrust = bearing.is_thrust
     if thrust and not math.isclose(alpha, 0.5 * math.pi, abs_tol=1e-9):
-        raise InputError("contact_angle", alpha, "90 degrees for a thrust ball bearing",
-                         "ISO 281 thrust factors for other angles are not implemented")
+        raise InputError(
+            "contact_angle",
+            alpha,
+            "90 degrees for a thrust ball bearing",
+            "ISO 281 thrust factors for other angles are not implemented",
+        )
     if not thrust and alpha >= 0.5 * math.pi - 1e-9:
         raise InputError("contact_angle", alpha, "less than 90 degrees for a radial bearing")
     if thrust:
@@ -382,20 +441,34 @@ def _computed_ratings(bearing: BallBearing) -> LoadRatings:
     args = (bearing.ball_count, bearing.ball_diameter, bearing.pitch_diameter, alpha)
     dynamic = dynamic_load_rating(*args)
     static = static_load_rating(*args)
-    gamma = (bearing.ball_diameter / bearing.pitch_diameter if thrust
-             else bearing.ball_diameter * math.cos(alpha) / bearing.pitch_diameter)
+    gamma = (
+        bearing.ball_diameter / bearing.pitch_diameter
+        if thrust
+        else bearing.ball_diameter * math.cos(alpha) / bearing.pitch_diameter
+    )
     warnings = []
     if thrust:
-        warnings.append("the ISO 281 f_c table of thrust ball bearings comes from a single "
-                        "stored copy (its shape is checked, its values are not cross-checked)")
-    elif (bearing.inner_groove_factor > T.FC_MAX_INNER_GROOVE_FACTOR + 1e-12
-          or bearing.outer_groove_factor > T.FC_MAX_OUTER_GROOVE_FACTOR + 1e-12):
+        warnings.append(
+            "the ISO 281 f_c table of thrust ball bearings comes from a single "
+            "stored copy (its shape is checked, its values are not cross-checked)"
+        )
+    elif (
+        bearing.inner_groove_factor > T.FC_MAX_INNER_GROOVE_FACTOR + 1e-12
+        or bearing.outer_groove_factor > T.FC_MAX_OUTER_GROOVE_FACTOR + 1e-12
+    ):
         warnings.append(
             f"groove factors f_i = {bearing.inner_groove_factor:g}, f_o = "
             f"{bearing.outer_groove_factor:g} exceed the r_i <= 0.52 D_w, r_e <= 0.53 D_w "
             "for which ISO 281 gives f_c: the dynamic rating is overestimated (no "
-            "correction applied)")
-    return LoadRatings(dynamic=dynamic, static=static,
-                       fatigue_limit=fatigue_load_limit(static, bearing.pitch_diameter),
-                       fc=fc_factor(gamma, thrust=thrust), f0=f0_factor(gamma, thrust=thrust),
-                       gamma=gamma, thrust=thrust, warnings=tuple(warnings))
+            "correction applied)"
+        )
+    return LoadRatings(
+        dynamic=dynamic,
+        static=static,
+        fatigue_limit=fatigue_load_limit(static, bearing.pitch_diameter),
+        fc=fc_factor(gamma, thrust=thrust),
+        f0=f0_factor(gamma, thrust=thrust),
+        gamma=gamma,
+        thrust=thrust,
+        warnings=tuple(warnings),
+    )

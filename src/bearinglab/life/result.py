@@ -99,6 +99,7 @@ class LifeResult:
 
     def to_dict(self) -> dict:
         """JSON-ready summary in engineering units (keys carry their unit)."""
+
         def mm2(v):
             return None if v is None else v * 1e6
 
@@ -109,33 +110,40 @@ class LifeResult:
             "axial_load_n": self.condition.axial_load,
             "speed_rpm": rad_s_to_rpm(self.shaft_speed),
             "equivalent_load_n": self.equivalent_load,
-            "x_factor": self.factors.x, "y_factor": self.factors.y,
+            "x_factor": self.factors.x,
+            "y_factor": self.factors.y,
             "e_limit": self.factors.e,
             "static_equivalent_load_n": self.static_equivalent_load,
             "static_safety_factor": self.static_safety_factor,
-            "l10_million_rev": self.l10, "l10_hours": self.l10_hours,
-            "reliability_percent": self.reliability_percent, "a1": self.a1,
+            "l10_million_rev": self.l10,
+            "l10_hours": self.l10_hours,
+            "reliability_percent": self.reliability_percent,
+            "a1": self.a1,
             "viscosity_mm2_s": mm2(self.viscosity),
             "rated_viscosity_mm2_s": mm2(self.rated_viscosity),
-            "kappa": self.kappa, "contamination_factor": self.contamination,
+            "kappa": self.kappa,
+            "contamination_factor": self.contamination,
             "contamination_source": self.contamination_source,
             "a_iso": self.a_iso,
-            "l10m_million_rev": self.lnm, "l10m_hours": self.lnm_hours,
+            "l10m_million_rev": self.lnm,
+            "l10m_hours": self.lnm_hours,
             "warnings": list(self.warnings),
         }
         if self.reference is not None:
             ref = self.reference
-            out.update({
-                "iso281_equivalent_load_n": self.iso281_equivalent_load,
-                "reference_load_n": self.equivalent_load,
-                "inner_contact_rating_n": ref["inner_rating"],
-                "outer_contact_rating_n": ref["outer_rating"],
-                "inner_equivalent_ball_load_n": ref["inner_equivalent"],
-                "outer_equivalent_ball_load_n": ref["outer_equivalent"],
-                "rotating_ring": ref["rotating"],
-                "inner_ball_loads_n": [float(q) for q in ref["inner_loads"]],
-                "outer_ball_loads_n": [float(q) for q in ref["outer_loads"]],
-            })
+            out.update(
+                {
+                    "iso281_equivalent_load_n": self.iso281_equivalent_load,
+                    "reference_load_n": self.equivalent_load,
+                    "inner_contact_rating_n": ref["inner_rating"],
+                    "outer_contact_rating_n": ref["outer_rating"],
+                    "inner_equivalent_ball_load_n": ref["inner_equivalent"],
+                    "outer_equivalent_ball_load_n": ref["outer_equivalent"],
+                    "rotating_ring": ref["rotating"],
+                    "inner_ball_loads_n": [float(q) for q in ref["inner_loads"]],
+                    "outer_ball_loads_n": [float(q) for q in ref["outer_loads"]],
+                }
+            )
         return out
 
     def to_pandas(self):
@@ -145,26 +153,45 @@ class LifeResult:
         import pandas as pd
 
         d = self.to_dict()
-        rows = [("basic dynamic load rating C", "dynamic_rating_n", d["dynamic_rating_source"]),
-                ("basic static load rating C0", "static_rating_n", d["static_rating_source"]),
-                ("fatigue load limit Cu", "fatigue_load_limit_n", d["fatigue_load_limit_source"]),
-                ("equivalent dynamic load P" if self.method == "iso281"
-                 else "dynamic equivalent reference load P_ref", "equivalent_load_n", ""),
-                ("equivalent static load P0", "static_equivalent_load_n", ""),
-                ("static safety factor s0", "static_safety_factor", ""),
-                ("basic rating life L10" if self.method == "iso281"
-                 else "basic reference rating life L10r", "l10_million_rev", ""),
-                ("  in hours", "l10_hours", ""),
-                ("viscosity ratio kappa", "kappa", ""),
-                ("contamination factor e_C", "contamination_factor",
-                 d["contamination_source"] or ""),
-                ("life modification factor a_ISO", "a_iso", ""),
-                (f"modified rating life at {self.reliability_percent:g} %", "l10m_million_rev",
-                 ""),
-                ("  in hours", "l10m_hours", "")]
-        return pd.DataFrame([{"quantity": q, "value": d[k],
-                              "unit": unit_of(k).symbol if unit_of(k) is not None else "-",
-                              "source": src, "key": k} for q, k, src in rows])
+        rows = [
+            ("basic dynamic load rating C", "dynamic_rating_n", d["dynamic_rating_source"]),
+            ("basic static load rating C0", "static_rating_n", d["static_rating_source"]),
+            ("fatigue load limit Cu", "fatigue_load_limit_n", d["fatigue_load_limit_source"]),
+            (
+                "equivalent dynamic load P"
+                if self.method == "iso281"
+                else "dynamic equivalent reference load P_ref",
+                "equivalent_load_n",
+                "",
+            ),
+            ("equivalent static load P0", "static_equivalent_load_n", ""),
+            ("static safety factor s0", "static_safety_factor", ""),
+            (
+                "basic rating life L10"
+                if self.method == "iso281"
+                else "basic reference rating life L10r",
+                "l10_million_rev",
+                "",
+            ),
+            ("  in hours", "l10_hours", ""),
+            ("viscosity ratio kappa", "kappa", ""),
+            ("contamination factor e_C", "contamination_factor", d["contamination_source"] or ""),
+            ("life modification factor a_ISO", "a_iso", ""),
+            (f"modified rating life at {self.reliability_percent:g} %", "l10m_million_rev", ""),
+            ("  in hours", "l10m_hours", ""),
+        ]
+        return pd.DataFrame(
+            [
+                {
+                    "quantity": q,
+                    "value": d[k],
+                    "unit": unit_of(k).symbol if unit_of(k) is not None else "-",
+                    "source": src,
+                    "key": k,
+                }
+                for q, k, src in rows
+            ]
+        )
 
     def plot(self, ax=None):
         """Basic rating life against the equivalent load (log-log), with the operating
@@ -177,13 +204,22 @@ class LifeResult:
             fig = ax.figure
         c = self.ratings.dynamic
         p = np.geomspace(0.02 * c, c, 100)
-        ax.loglog(p, hours((c / p) ** 3, self.shaft_speed), color="C0",
-                  label="L10 = (C/P)^3")
-        ax.loglog([self.equivalent_load], [self.l10_hours], "o", color="C0",
-                  label=f"operating point ({self.method})")
+        ax.loglog(p, hours((c / p) ** 3, self.shaft_speed), color="C0", label="L10 = (C/P)^3")
+        ax.loglog(
+            [self.equivalent_load],
+            [self.l10_hours],
+            "o",
+            color="C0",
+            label=f"operating point ({self.method})",
+        )
         if self.lnm_hours is not None:
-            ax.loglog([self.equivalent_load], [self.lnm_hours], "s", color="C1",
-                      label=f"modified life (a1 a_ISO = {self.a1 * self.a_iso:.3g})")
+            ax.loglog(
+                [self.equivalent_load],
+                [self.lnm_hours],
+                "s",
+                color="C1",
+                label=f"modified life (a1 a_ISO = {self.a1 * self.a_iso:.3g})",
+            )
         ax.set_xlabel("equivalent load P [N]")
         ax.set_ylabel(f"life at {rad_s_to_rpm(self.shaft_speed):g} rpm [h]")
         ax.grid(True, which="both", alpha=0.3)

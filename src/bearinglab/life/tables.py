@@ -44,11 +44,50 @@ FC_GAMMA = np.round(np.arange(1, 41) / 100.0, 2)
 #: stored copies (bb_core, dgbb-design, sfere) agree on all 40 values. The column follows
 #: Lundberg-Palmgren's form with f_i = f_e = 0.52 times a constant to within the
 #: table's rounding (test_life: ``test_fc_table_follows_lundberg_palmgren_shape``).
-FC_RADIAL = np.array([
-    29.1, 35.8, 40.3, 43.8, 46.7, 49.1, 51.1, 52.8, 54.3, 55.5,
-    56.6, 57.5, 58.2, 58.8, 59.3, 59.6, 59.8, 59.9, 60.0, 59.9,
-    59.8, 59.6, 59.3, 59.0, 58.6, 58.2, 57.7, 57.1, 56.6, 56.0,
-    55.3, 54.6, 53.9, 53.2, 52.4, 51.7, 50.9, 50.0, 49.2, 48.4])
+FC_RADIAL = np.array(
+    [
+        29.1,
+        35.8,
+        40.3,
+        43.8,
+        46.7,
+        49.1,
+        51.1,
+        52.8,
+        54.3,
+        55.5,
+        56.6,
+        57.5,
+        58.2,
+        58.8,
+        59.3,
+        59.6,
+        59.8,
+        59.9,
+        60.0,
+        59.9,
+        59.8,
+        59.6,
+        59.3,
+        59.0,
+        58.6,
+        58.2,
+        57.7,
+        57.1,
+        56.6,
+        56.0,
+        55.3,
+        54.6,
+        53.9,
+        53.2,
+        52.4,
+        51.7,
+        50.9,
+        50.0,
+        49.2,
+        48.4,
+    ]
+)
 
 #: gamma = D_w/D_pw of the thrust (alpha = 90 deg) column of ISO 281 Table 4.
 FC_THRUST_GAMMA = np.round(np.arange(1, 35) / 100.0, 2)
@@ -56,11 +95,44 @@ FC_THRUST_GAMMA = np.round(np.arange(1, 35) / 100.0, 2)
 #: lists 165.2 at 0.35 -- evidently a misprint, dropped here). Not cross-checked: the
 #: values follow 146 gamma^0.3 to about 1 % (a smooth Lundberg-Palmgren shape), which
 #: catches a wrong digit but not a wrong constant. Results that use it say so.
-FC_THRUST_90 = np.array([
-    36.7, 45.2, 51.1, 55.7, 59.5, 62.9, 65.8, 68.5, 71.0, 73.3,
-    75.4, 77.4, 79.3, 81.1, 82.7, 84.4, 85.9, 87.4, 88.8, 90.2,
-    91.5, 92.8, 94.1, 95.3, 96.4, 97.6, 98.7, 99.8, 100.8, 101.9,
-    102.9, 103.9, 104.8, 105.8])
+FC_THRUST_90 = np.array(
+    [
+        36.7,
+        45.2,
+        51.1,
+        55.7,
+        59.5,
+        62.9,
+        65.8,
+        68.5,
+        71.0,
+        73.3,
+        75.4,
+        77.4,
+        79.3,
+        81.1,
+        82.7,
+        84.4,
+        85.9,
+        87.4,
+        88.8,
+        90.2,
+        91.5,
+        92.8,
+        94.1,
+        95.3,
+        96.4,
+        97.6,
+        98.7,
+        99.8,
+        100.8,
+        101.9,
+        102.9,
+        103.9,
+        104.8,
+        105.8,
+    ]
+)
 
 #: ISO 281 groove radii for which the f_c values hold: r_i <= 0.52 D_w, r_e <= 0.53 D_w.
 FC_MAX_INNER_GROOVE_FACTOR = 0.52
@@ -75,20 +147,95 @@ F0_GAMMA = np.round(np.arange(0, 41) / 100.0, 2)
 #: with r_i = 0.52 D_w, r_e = 0.53 D_w, E = 207 GPa, nu = 0.3 and C_0 = 0.2 Z Q_max cos(a)
 #: (the ISO/TR 10657 chain quoted by bb_core) reproduces all 41 values within 0.06
 #: (test_life: ``test_f0_table_is_the_4200_mpa_hertz_contact``).
-F0_RADIAL = np.array([
-    14.7, 14.9, 15.1, 15.3, 15.5, 15.7, 15.9, 16.1, 16.3, 16.5,
-    16.4, 16.1, 15.9, 15.6, 15.4, 15.2, 14.9, 14.7, 14.4, 14.2,
-    14.0, 13.7, 13.5, 13.2, 13.0, 12.8, 12.5, 12.3, 12.1, 11.8,
-    11.6, 11.4, 11.2, 10.9, 10.7, 10.5, 10.3, 10.0, 9.8, 9.6, 9.4])
+F0_RADIAL = np.array(
+    [
+        14.7,
+        14.9,
+        15.1,
+        15.3,
+        15.5,
+        15.7,
+        15.9,
+        16.1,
+        16.3,
+        16.5,
+        16.4,
+        16.1,
+        15.9,
+        15.6,
+        15.4,
+        15.2,
+        14.9,
+        14.7,
+        14.4,
+        14.2,
+        14.0,
+        13.7,
+        13.5,
+        13.2,
+        13.0,
+        12.8,
+        12.5,
+        12.3,
+        12.1,
+        11.8,
+        11.6,
+        11.4,
+        11.2,
+        10.9,
+        10.7,
+        10.5,
+        10.3,
+        10.0,
+        9.8,
+        9.6,
+        9.4,
+    ]
+)
 #: gamma = D_w/D_pw of the thrust column of ISO 76 Table 1 (0 ... 0.35).
 F0_THRUST_GAMMA = np.round(np.arange(0, 36) / 100.0, 2)
 #: f_0 of thrust ball bearings [N/mm^2]. Stored copy: sfere. Checked by derivation:
 #: 4200 MPa with washer groove radius 0.54 D_w reproduces all 36 values within 0.15 %.
-F0_THRUST = np.array([
-    61.6, 60.8, 59.9, 59.1, 58.3, 57.5, 56.7, 55.9, 55.1, 54.3,
-    53.5, 52.7, 51.9, 51.2, 50.4, 49.6, 48.8, 48.0, 47.3, 46.5,
-    45.7, 45.0, 44.2, 43.5, 42.7, 41.9, 41.2, 40.5, 39.7, 39.0,
-    38.2, 37.5, 36.8, 36.0, 35.3, 34.6])
+F0_THRUST = np.array(
+    [
+        61.6,
+        60.8,
+        59.9,
+        59.1,
+        58.3,
+        57.5,
+        56.7,
+        55.9,
+        55.1,
+        54.3,
+        53.5,
+        52.7,
+        51.9,
+        51.2,
+        50.4,
+        49.6,
+        48.8,
+        48.0,
+        47.3,
+        46.5,
+        45.7,
+        45.0,
+        44.2,
+        43.5,
+        42.7,
+        41.9,
+        41.2,
+        40.5,
+        39.7,
+        39.0,
+        38.2,
+        37.5,
+        36.8,
+        36.0,
+        35.3,
+        34.6,
+    ]
+)
 #: Contact stress that defines C_0 for these ball bearings [Pa] (ISO 76; skf.com "Load
 #: ratings": 4200 MPa for all ball bearings but self-aligning ones, 4600 MPa).
 STATIC_CONTACT_STRESS = 4.2e9
@@ -118,10 +265,16 @@ _DG_E = np.array([0.19, 0.22, 0.26, 0.28, 0.30, 0.34, 0.38, 0.42, 0.44])
 XYE_LOW_SINGLE = {
     0.0: (0.56, _DG_Y, _DG_E),
     5.0: (0.56, _DG_Y, _DG_E),
-    10.0: (0.46, np.array([1.88, 1.71, 1.52, 1.41, 1.34, 1.23, 1.10, 1.01, 1.00]),
-           np.array([0.29, 0.32, 0.36, 0.38, 0.40, 0.44, 0.49, 0.54, 0.54])),
-    15.0: (0.44, np.array([1.47, 1.40, 1.30, 1.23, 1.19, 1.12, 1.02, 1.00, 1.00]),
-           np.array([0.38, 0.40, 0.43, 0.46, 0.47, 0.50, 0.55, 0.56, 0.56])),
+    10.0: (
+        0.46,
+        np.array([1.88, 1.71, 1.52, 1.41, 1.34, 1.23, 1.10, 1.01, 1.00]),
+        np.array([0.29, 0.32, 0.36, 0.38, 0.40, 0.44, 0.49, 0.54, 0.54]),
+    ),
+    15.0: (
+        0.44,
+        np.array([1.47, 1.40, 1.30, 1.23, 1.19, 1.12, 1.02, 1.00, 1.00]),
+        np.array([0.38, 0.40, 0.43, 0.46, 0.47, 0.50, 0.55, 0.56, 0.56]),
+    ),
 }
 #: Lower part of Table 3, single row, alpha >= 20 deg: angle [deg] -> (X, Y, e)
 #: (bb_core ``XYE_TABLE_DEG``; 20 and 25 deg also the C# calculator, 25 and 40 deg dozersim).
@@ -138,10 +291,12 @@ XYE_HIGH_SINGLE = {
 #: Reliability [%] and life modification factor a_1 (ISO 281:2007 Table 12). ewing lists
 #: 90-99 and 99.95, mecapy 90-99.9; every value equals the Weibull form
 #: 0.95 (ln(100/R)/ln(100/90))^(2/3) + 0.05 rounded as printed (test_life).
-A1_RELIABILITY = np.array([90.0, 95.0, 96.0, 97.0, 98.0, 99.0, 99.2, 99.4, 99.6, 99.8,
-                           99.9, 99.92, 99.94, 99.95])
-A1_FACTOR = np.array([1.0, 0.64, 0.55, 0.47, 0.37, 0.25, 0.22, 0.19, 0.16, 0.12,
-                      0.093, 0.087, 0.080, 0.077])
+A1_RELIABILITY = np.array(
+    [90.0, 95.0, 96.0, 97.0, 98.0, 99.0, 99.2, 99.4, 99.6, 99.8, 99.9, 99.92, 99.94, 99.95]
+)
+A1_FACTOR = np.array(
+    [1.0, 0.64, 0.55, 0.47, 0.37, 0.25, 0.22, 0.19, 0.16, 0.12, 0.093, 0.087, 0.080, 0.077]
+)
 
 #: a_ISO of radial ball bearings (ISO 281:2007 eqs. for 0.1 <= kappa < 0.4, 0.4 <= kappa
 #: < 1, 1 <= kappa <= 4): (kappa_from, c, p) in
@@ -183,9 +338,12 @@ CONTAMINATION_LEVELS = {
 }
 #: Short names accepted for the levels (command line).
 CONTAMINATION_ALIASES = {
-    "extreme": "extreme-cleanliness", "high": "high-cleanliness",
-    "normal": "normal-cleanliness", "slight": "slight-contamination",
-    "typical": "typical-contamination", "severe": "severe-contamination",
+    "extreme": "extreme-cleanliness",
+    "high": "high-cleanliness",
+    "normal": "normal-cleanliness",
+    "slight": "slight-contamination",
+    "typical": "typical-contamination",
+    "severe": "severe-contamination",
     "very-severe": "very-severe-contamination",
 }
 CONTAMINATION_SIZE_MM = 100.0

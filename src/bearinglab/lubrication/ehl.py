@@ -81,8 +81,12 @@ def _radii(rx, ry):
     rx = _array("rx", rx, "positive effective radii R_x [m]")
     ry = _array("ry", ry, "positive effective radii R_y [m]")
     if np.any(ry < rx * (1.0 - 1e-12)):
-        raise InputError("ry", ry, "R_y >= R_x (entrainment along the minor axis of the "
-                         "contact ellipse)", "the Hamrock-Dowson fits assume it")
+        raise InputError(
+            "ry",
+            ry,
+            "R_y >= R_x (entrainment along the minor axis of the contact ellipse)",
+            "the Hamrock-Dowson fits assume it",
+        )
     return rx, ry
 
 
@@ -129,8 +133,9 @@ def contact_ellipticity(rx, ry, method: EllipticityMethod = "hamrock_dowson"):
     raise InputError("ellipticity_method", method, f"one of {ELLIPTICITY_METHODS}")
 
 
-def dimensionless_groups(load, entrainment_speed, rx, effective_modulus, viscosity,
-                         pressure_viscosity_coefficient) -> DimensionlessGroups:
+def dimensionless_groups(
+    load, entrainment_speed, rx, effective_modulus, viscosity, pressure_viscosity_coefficient
+) -> DimensionlessGroups:
     """Hamrock-Dowson speed, materials and load parameters.
 
     U = eta_0 u / (E' R_x), G = alpha E', W = w / (E' R_x^2).
@@ -155,13 +160,17 @@ def dimensionless_groups(load, entrainment_speed, rx, effective_modulus, viscosi
     [4e-10, 4000.0, 0.0002]
     """
     w = _array("load", load, "positive contact loads [N] (the film formulas diverge at 0)")
-    u = _array("entrainment_speed", entrainment_speed, "entrainment speeds >= 0 [m/s]",
-               zero_ok=True)
+    u = _array(
+        "entrainment_speed", entrainment_speed, "entrainment speeds >= 0 [m/s]", zero_ok=True
+    )
     rx = _array("rx", rx, "positive effective radii R_x [m]")
     e = _array("effective_modulus", effective_modulus, "a positive modulus E' [Pa]")
     eta = _array("viscosity", viscosity, "a positive viscosity [Pa s]")
-    alpha = _array("pressure_viscosity_coefficient", pressure_viscosity_coefficient,
-                   "a positive coefficient alpha [1/Pa]")
+    alpha = _array(
+        "pressure_viscosity_coefficient",
+        pressure_viscosity_coefficient,
+        "a positive coefficient alpha [1/Pa]",
+    )
     speed = eta * u / (e * rx)
     return DimensionlessGroups(speed[()], (alpha * e)[()], (w / (e * rx**2))[()])
 
@@ -213,15 +222,25 @@ def hamrock_dowson_central(speed, materials, load, ellipticity):
 
 
 def _groups(speed, materials, load, ellipticity):
-    return (_array("speed", speed, "a speed parameter U >= 0 [-]", zero_ok=True),
-            _array("materials", materials, "a materials parameter G > 0 [-]"),
-            _array("load", load, "a load parameter W > 0 [-]"),
-            _array("ellipticity", ellipticity, "an ellipticity k > 0 [-]"))
+    return (
+        _array("speed", speed, "a speed parameter U >= 0 [-]", zero_ok=True),
+        _array("materials", materials, "a materials parameter G > 0 [-]"),
+        _array("load", load, "a load parameter W > 0 [-]"),
+        _array("ellipticity", ellipticity, "an ellipticity k > 0 [-]"),
+    )
 
 
-def hamrock_dowson_film(load, entrainment_speed, rx, ry, effective_modulus, viscosity,
-                        pressure_viscosity_coefficient, kind: Kind = "central",
-                        ellipticity_method: EllipticityMethod = "hamrock_dowson"):
+def hamrock_dowson_film(
+    load,
+    entrainment_speed,
+    rx,
+    ry,
+    effective_modulus,
+    viscosity,
+    pressure_viscosity_coefficient,
+    kind: Kind = "central",
+    ellipticity_method: EllipticityMethod = "hamrock_dowson",
+):
     """Isothermal, fully flooded EHL film thickness h = H R_x of a point contact [m].
 
     Hamrock & Dowson (1977): ``kind="minimum"`` is Part III's H_min, ``kind="central"``
@@ -255,14 +274,23 @@ def hamrock_dowson_film(load, entrainment_speed, rx, ry, effective_modulus, visc
         raise InputError("kind", kind, "'central' or 'minimum'")
     rx, ry = _radii(rx, ry)
     k = contact_ellipticity(rx, ry, ellipticity_method)
-    groups = dimensionless_groups(load, entrainment_speed, rx, effective_modulus, viscosity,
-                                  pressure_viscosity_coefficient)
+    groups = dimensionless_groups(
+        load, entrainment_speed, rx, effective_modulus, viscosity, pressure_viscosity_coefficient
+    )
     fit = hamrock_dowson_minimum if kind == "minimum" else hamrock_dowson_central
     return (fit(*groups, k) * rx)[()]
 
 
-def seed004_film_thickness(load, entrainment_speed, rx, ry, effective_modulus, viscosity,
-                           pressure_viscosity_coefficient, radius_exponent: float = 0.956):
+def seed004_film_thickness(
+    load,
+    entrainment_speed,
+    rx,
+    ry,
+    effective_modulus,
+    viscosity,
+    pressure_viscosity_coefficient,
+    radius_exponent: float = 0.956,
+):
     """Film thickness of seed 004, eq. (6), as printed [m if radius_exponent = 0.466].
 
     h = 3.06 R_x^p E'^-0.117 (eta_0 u)^0.68 alpha^0.49 w^-0.073 {1 - exp[-3.36 R_y/R_x]}
@@ -303,19 +331,31 @@ def seed004_film_thickness(load, entrainment_speed, rx, ry, effective_modulus, v
     rx = _array("rx", rx, "positive effective radii R_x [m]")
     ry = _array("ry", ry, "positive effective radii R_y [m]")
     w = _array("load", load, "positive contact loads [N]")
-    u = _array("entrainment_speed", entrainment_speed, "entrainment speeds >= 0 [m/s]",
-               zero_ok=True)
+    u = _array(
+        "entrainment_speed", entrainment_speed, "entrainment speeds >= 0 [m/s]", zero_ok=True
+    )
     e = _array("effective_modulus", effective_modulus, "a positive modulus [Pa]")
     eta = _array("viscosity", viscosity, "a positive viscosity [Pa s]")
-    alpha = _array("pressure_viscosity_coefficient", pressure_viscosity_coefficient,
-                   "a positive coefficient alpha [1/Pa]")
+    alpha = _array(
+        "pressure_viscosity_coefficient",
+        pressure_viscosity_coefficient,
+        "a positive coefficient alpha [1/Pa]",
+    )
     p = float(radius_exponent)
-    return (3.06 * rx**p * e**-0.117 * (eta * u) ** 0.68 * alpha**0.49 * w**-0.073
-            * (1.0 - np.exp(-3.36 * ry / rx)))[()]
+    return (
+        3.06
+        * rx**p
+        * e**-0.117
+        * (eta * u) ** 0.68
+        * alpha**0.49
+        * w**-0.073
+        * (1.0 - np.exp(-3.36 * ry / rx))
+    )[()]
 
 
-def rolling_entrainment_speed(pitch_diameter, ball_diameter, inner_speed, outer_speed=0.0,
-                              contact_angle=0.0):
+def rolling_entrainment_speed(
+    pitch_diameter, ball_diameter, inner_speed, outer_speed=0.0, contact_angle=0.0
+):
     """Entrainment (rolling) speed of a ball-raceway contact in pure rolling [m/s].
 
     u = (d_m / 4) (1 - gamma^2) |omega_i - omega_o|, gamma = D_w cos(alpha) / d_m;
@@ -346,8 +386,9 @@ def rolling_entrainment_speed(pitch_diameter, ball_diameter, inner_speed, outer_
     wi = np.asarray(inner_speed, dtype=float)
     wo = np.asarray(outer_speed, dtype=float)
     if np.any(~np.isfinite(wi)) or np.any(~np.isfinite(wo)):
-        raise InputError("inner_speed, outer_speed", (inner_speed, outer_speed),
-                         "finite ring speeds [rad/s]")
+        raise InputError(
+            "inner_speed, outer_speed", (inner_speed, outer_speed), "finite ring speeds [rad/s]"
+        )
     gamma = dw * np.cos(contact_angle) / dm
     return (0.25 * dm * (1.0 - gamma**2) * np.abs(wi - wo))[()]
 
@@ -368,13 +409,22 @@ def entrainment_speed(bearing, shaft_speed, contact_angle=None):
         Operating contact angle [rad]; None means the bearing's nominal one.
     """
     alpha = bearing.contact_angle if contact_angle is None else contact_angle
-    return rolling_entrainment_speed(bearing.pitch_diameter, bearing.ball_diameter,
-                                     shaft_speed, 0.0, alpha)
+    return rolling_entrainment_speed(
+        bearing.pitch_diameter, bearing.ball_diameter, shaft_speed, 0.0, alpha
+    )
 
 
-def film_thickness(bearing, lubricant, ball_load, shaft_speed, race, temperature=None,
-                   contact_angle=None, kind: Kind = "central",
-                   ellipticity_method: EllipticityMethod = "hamrock_dowson"):
+def film_thickness(
+    bearing,
+    lubricant,
+    ball_load,
+    shaft_speed,
+    race,
+    temperature=None,
+    contact_angle=None,
+    kind: Kind = "central",
+    ellipticity_method: EllipticityMethod = "hamrock_dowson",
+):
     """Hamrock-Dowson film thickness at one raceway contact of a ball bearing [m].
 
     Combines :meth:`BallBearing.contact_radii`, :func:`entrainment_speed`,
@@ -417,6 +467,14 @@ def film_thickness(bearing, lubricant, ball_load, shaft_speed, race, temperature
     e_prime = _effective_modulus(bearing.ball_material, bearing.ring_material)
     u = entrainment_speed(bearing, shaft_speed, alpha)
     eta = lubricant.viscosity(temperature)
-    return hamrock_dowson_film(ball_load, u, rx, ry, e_prime, eta,
-                               lubricant.pressure_viscosity_coefficient, kind,
-                               ellipticity_method)
+    return hamrock_dowson_film(
+        ball_load,
+        u,
+        rx,
+        ry,
+        e_prime,
+        eta,
+        lubricant.pressure_viscosity_coefficient,
+        kind,
+        ellipticity_method,
+    )

@@ -69,13 +69,18 @@ MIN_TEMPERATURE = 150.0
 def _temperature(name: str, value):
     t = np.asarray(value, dtype=float)
     if np.any(~np.isfinite(t)) or np.any(t < MIN_TEMPERATURE):
-        raise InputError(name, value, f"absolute temperatures >= {MIN_TEMPERATURE} K",
-                         "temperatures are in kelvin: 40 degC = 313.15 K")
+        raise InputError(
+            name,
+            value,
+            f"absolute temperatures >= {MIN_TEMPERATURE} K",
+            "temperatures are in kelvin: 40 degC = 313.15 K",
+        )
     return t
 
 
-def reynolds_viscosity(reference_viscosity, temperature_coefficient, temperature,
-                       reference_temperature):
+def reynolds_viscosity(
+    reference_viscosity, temperature_coefficient, temperature, reference_temperature
+):
     """Dynamic viscosity by Reynolds' exponential law [Pa s].
 
     eta(T) = eta_0 exp(-beta (T - T_0)) (Hamrock, Schmid & Jacobson 2004, ch. 4).
@@ -101,8 +106,9 @@ def reynolds_viscosity(reference_viscosity, temperature_coefficient, temperature
     if np.any(~np.isfinite(eta0)) or np.any(eta0 <= 0):
         raise InputError("reference_viscosity", reference_viscosity, "a positive viscosity [Pa s]")
     if np.any(~np.isfinite(beta)) or np.any(beta < 0):
-        raise InputError("temperature_coefficient", temperature_coefficient,
-                         "a finite coefficient >= 0 [1/K]")
+        raise InputError(
+            "temperature_coefficient", temperature_coefficient, "a finite coefficient >= 0 [1/K]"
+        )
     return (eta0 * np.exp(-beta * (t - t0)))[()]
 
 
@@ -125,11 +131,15 @@ def roelands_pressure_viscosity_coefficient(viscosity, roelands_index):
     """
     eta = np.asarray(viscosity, dtype=float)
     z = np.asarray(roelands_index, dtype=float)
-    if np.any(~np.isfinite(eta)) or np.any(np.log(np.maximum(eta, 1e-300))
-                                           + ROELANDS_LOG_VISCOSITY <= 0):
-        raise InputError("viscosity", viscosity,
-                         f"a viscosity above eta_inf = {math.exp(-ROELANDS_LOG_VISCOSITY):.3g} "
-                         "Pa s (Roelands' equation)")
+    if np.any(~np.isfinite(eta)) or np.any(
+        np.log(np.maximum(eta, 1e-300)) + ROELANDS_LOG_VISCOSITY <= 0
+    ):
+        raise InputError(
+            "viscosity",
+            viscosity,
+            f"a viscosity above eta_inf = {math.exp(-ROELANDS_LOG_VISCOSITY):.3g} "
+            "Pa s (Roelands' equation)",
+        )
     if np.any(~np.isfinite(z)) or np.any(z <= 0):
         raise InputError("roelands_index", roelands_index, "a positive index Z [-]")
     return (z * (np.log(eta) + ROELANDS_LOG_VISCOSITY) / ROELANDS_PRESSURE)[()]
@@ -156,8 +166,11 @@ def roelands_index(viscosity, pressure_viscosity_coefficient):
     # Reuse the validation of the forward relation with Z = 1.
     per_z = roelands_pressure_viscosity_coefficient(eta, 1.0)
     if np.any(~np.isfinite(a)) or np.any(a <= 0):
-        raise InputError("pressure_viscosity_coefficient", pressure_viscosity_coefficient,
-                         "a positive coefficient [1/Pa]")
+        raise InputError(
+            "pressure_viscosity_coefficient",
+            pressure_viscosity_coefficient,
+            "a positive coefficient [1/Pa]",
+        )
     return (a / per_z)[()]
 
 
@@ -165,8 +178,12 @@ def roelands_index(viscosity, pressure_viscosity_coefficient):
 
 
 def _positive(name: str, value, what: str) -> None:
-    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)) \
-            or not math.isfinite(value) or value <= 0:
+    if (
+        isinstance(value, bool)
+        or not isinstance(value, (int, float, np.integer, np.floating))
+        or not math.isfinite(value)
+        or value <= 0
+    ):
         raise InputError(name, value, what)
 
 
@@ -217,35 +234,58 @@ class Lubricant:
         if not isinstance(self.name, str) or not self.name.strip():
             raise InputError("name", self.name, "a non-empty string")
         _positive("dynamic_viscosity", self.dynamic_viscosity, "a positive viscosity [Pa s]")
-        _positive("reference_temperature", self.reference_temperature,
-                  "an absolute temperature [K]")
+        _positive(
+            "reference_temperature", self.reference_temperature, "an absolute temperature [K]"
+        )
         if self.reference_temperature < MIN_TEMPERATURE:
-            raise InputError("reference_temperature", self.reference_temperature,
-                             f"an absolute temperature >= {MIN_TEMPERATURE} K",
-                             "temperatures are in kelvin: 40 degC = 313.15 K")
-        _positive("pressure_viscosity_coefficient", self.pressure_viscosity_coefficient,
-                  "a positive coefficient alpha [1/Pa] (typically 1e-8 to 3e-8 for oils)")
+            raise InputError(
+                "reference_temperature",
+                self.reference_temperature,
+                f"an absolute temperature >= {MIN_TEMPERATURE} K",
+                "temperatures are in kelvin: 40 degC = 313.15 K",
+            )
+        _positive(
+            "pressure_viscosity_coefficient",
+            self.pressure_viscosity_coefficient,
+            "a positive coefficient alpha [1/Pa] (typically 1e-8 to 3e-8 for oils)",
+        )
         if self.pressure_viscosity_coefficient > 1e-6:
-            raise InputError("pressure_viscosity_coefficient", self.pressure_viscosity_coefficient,
-                             "a coefficient in 1/Pa, at most 1e-6",
-                             "GPa^-1 values must be multiplied by 1e-9")
+            raise InputError(
+                "pressure_viscosity_coefficient",
+                self.pressure_viscosity_coefficient,
+                "a coefficient in 1/Pa, at most 1e-6",
+                "GPa^-1 values must be multiplied by 1e-9",
+            )
         _positive("density", self.density, "a positive density [kg/m^3]")
         beta = self.temperature_coefficient
-        if beta is not None and (isinstance(beta, bool) or not isinstance(
-                beta, (int, float, np.integer, np.floating)) or not math.isfinite(beta)
-                or not 0.0 <= beta < 1.0):
+        if beta is not None and (
+            isinstance(beta, bool)
+            or not isinstance(beta, (int, float, np.integer, np.floating))
+            or not math.isfinite(beta)
+            or not 0.0 <= beta < 1.0
+        ):
             raise InputError("temperature_coefficient", beta, "None or a value in [0, 1) [1/K]")
         lim = self.limiting_shear_coefficient
-        if lim is not None and (isinstance(lim, bool) or not isinstance(
-                lim, (int, float, np.integer, np.floating)) or not 0.0 < lim < 1.0):
+        if lim is not None and (
+            isinstance(lim, bool)
+            or not isinstance(lim, (int, float, np.integer, np.floating))
+            or not 0.0 < lim < 1.0
+        ):
             raise InputError("limiting_shear_coefficient", lim, "None or a value in (0, 1) [-]")
         z = self.roelands_index
         if z is not None:
             _positive("roelands_index", z, "None or a positive index Z [-]")
 
     @classmethod
-    def from_roelands(cls, name: str, dynamic_viscosity: float, reference_temperature: float,
-                      roelands_index: float, density: float, **kwargs) -> Lubricant:
+    def from_roelands(
+        cls,
+        name: str,
+        dynamic_viscosity: float,
+        reference_temperature: float,
+        roelands_index: float,
+        density: float,
+        **kwargs,
+    ) -> Lubricant:
         """A lubricant whose pressure-viscosity behaviour is given as Roelands' Z.
 
         alpha = Z (ln eta_0 + 9.67) / 1.96e8 Pa (see
@@ -269,8 +309,15 @@ class Lubricant:
         """
         _positive("roelands_index", roelands_index, "a positive index Z [-]")
         alpha = float(roelands_pressure_viscosity_coefficient(dynamic_viscosity, roelands_index))
-        return cls(name, dynamic_viscosity, reference_temperature, alpha, density,
-                   roelands_index=roelands_index, **kwargs)
+        return cls(
+            name,
+            dynamic_viscosity,
+            reference_temperature,
+            alpha,
+            density,
+            roelands_index=roelands_index,
+            **kwargs,
+        )
 
     def viscosity(self, temperature=None):
         """Dynamic viscosity at ``temperature`` (default: the reference) [Pa s].
@@ -288,11 +335,15 @@ class Lubricant:
         if self.temperature_coefficient is None:
             if np.all(t == self.reference_temperature):
                 return (self.dynamic_viscosity * np.ones_like(t))[()]
-            raise InputError("temperature", temperature,
-                             f"the reference temperature {self.reference_temperature} K",
-                             f"{self.name!r} has no temperature_coefficient")
-        return reynolds_viscosity(self.dynamic_viscosity, self.temperature_coefficient, t,
-                                  self.reference_temperature)
+            raise InputError(
+                "temperature",
+                temperature,
+                f"the reference temperature {self.reference_temperature} K",
+                f"{self.name!r} has no temperature_coefficient",
+            )
+        return reynolds_viscosity(
+            self.dynamic_viscosity, self.temperature_coefficient, t, self.reference_temperature
+        )
 
     def kinematic_viscosity(self, temperature=None):
         """Kinematic viscosity eta / rho [m^2/s]; density held at its reference value.
@@ -321,19 +372,28 @@ class Lubricant:
 
 
 SEED004_GREASE = Lubricant.from_roelands(
-    "grease of seed 004 (Hou et al. 2024)", dynamic_viscosity=0.04,
-    reference_temperature=ZERO_CELSIUS + 20.0, roelands_index=0.45, density=850.0,
-    temperature_coefficient=0.027, limiting_shear_coefficient=0.0434,
+    "grease of seed 004 (Hou et al. 2024)",
+    dynamic_viscosity=0.04,
+    reference_temperature=ZERO_CELSIUS + 20.0,
+    roelands_index=0.45,
+    density=850.0,
+    temperature_coefficient=0.027,
+    limiting_shear_coefficient=0.0434,
     source="seed 004, section 2 (lubricant parameters); 'room temperature' taken as 20 degC; "
-           "alpha from Roelands' Z = 0.45")
+    "alpha from Roelands' Z = 0.45",
+)
 
 ISO_VG68 = Lubricant(
-    "ISO VG 68 mineral oil (typical)", dynamic_viscosity=68e-6 * 860.0,
-    reference_temperature=ZERO_CELSIUS + 40.0, pressure_viscosity_coefficient=2.5e-8,
-    density=860.0, temperature_coefficient=math.log(68.0 / 8.5) / 60.0,
+    "ISO VG 68 mineral oil (typical)",
+    dynamic_viscosity=68e-6 * 860.0,
+    reference_temperature=ZERO_CELSIUS + 40.0,
+    pressure_viscosity_coefficient=2.5e-8,
+    density=860.0,
+    temperature_coefficient=math.log(68.0 / 8.5) / 60.0,
     source="ISO 3448 VG 68 mid-point 68 mm^2/s at 40 degC; density 860 kg/m^3 (typical, "
-           "estimate); beta from nu_100 = 8.5 mm^2/s (typical VI ~95); alpha from Stachowiak "
-           "& Batchelor, Engineering Tribology, Table 2.3")
+    "estimate); beta from nu_100 = 8.5 mm^2/s (typical VI ~95); alpha from Stachowiak "
+    "& Batchelor, Engineering Tribology, Table 2.3",
+)
 
 #: Built-in lubricants by key.
 LUBRICANTS: dict[str, Lubricant] = {"seed004-grease": SEED004_GREASE, "iso-vg68": ISO_VG68}
@@ -373,15 +433,25 @@ def operating_viscosity(lubricant, temperature=None) -> tuple[float, str]:
         raise InputError("lubricant", lubricant, "a Lubricant or the name of a built-in one")
     t0 = lubricant.reference_temperature
     if temperature is None:
-        return (float(lubricant.kinematic_viscosity(t0)),
-                f"{lubricant.name} at its reference temperature {t0 - ZERO_CELSIUS:.4g} degC")
+        return (
+            float(lubricant.kinematic_viscosity(t0)),
+            f"{lubricant.name} at its reference temperature {t0 - ZERO_CELSIUS:.4g} degC",
+        )
     low, high = OPERATING_TEMPERATURE_RANGE
-    if isinstance(temperature, bool) or not isinstance(
-            temperature, (int, float, np.integer, np.floating)) \
-            or not math.isfinite(temperature) or not low <= temperature <= high:
-        raise InputError("temperature", temperature,
-                         f"an operating temperature in [{low:g}, {high:g}] K "
-                         f"({low - ZERO_CELSIUS:g} to {high - ZERO_CELSIUS:g} degC)")
+    if (
+        isinstance(temperature, bool)
+        or not isinstance(temperature, (int, float, np.integer, np.floating))
+        or not math.isfinite(temperature)
+        or not low <= temperature <= high
+    ):
+        raise InputError(
+            "temperature",
+            temperature,
+            f"an operating temperature in [{low:g}, {high:g}] K "
+            f"({low - ZERO_CELSIUS:g} to {high - ZERO_CELSIUS:g} degC)",
+        )
     nu = float(lubricant.kinematic_viscosity(float(temperature)))
-    return nu, (f"{lubricant.name} at {temperature - ZERO_CELSIUS:.4g} degC (Reynolds' "
-                f"exponential law from {t0 - ZERO_CELSIUS:.4g} degC)")
+    return nu, (
+        f"{lubricant.name} at {temperature - ZERO_CELSIUS:.4g} degC (Reynolds' "
+        f"exponential law from {t0 - ZERO_CELSIUS:.4g} degC)"
+    )

@@ -96,20 +96,32 @@ class NoiseAnalysis:
         imperfections = summary.pop("imperfections", None)
         for key in ("speed_rpm", "radial_load_n"):
             summary.pop(key)
-        keys = ("frequency_hz", "amplitude", "matched", "harmonic", "deviation", "sideband_of",
-                "sideband_harmonic", "sideband_order", "modulation")
-        return {"speed_rpm": rad_s_to_rpm(o.condition.shaft_speed),
-                "radial_load_n": o.condition.radial_load,
-                **point, "field_point_source": self.point_source,
-                **levels,
-                **self.bands.to_dict(),
-                "peaks": [{k: p[k] for k in keys if k in p} for p in self.peaks],
-                "peaks_resolution_hz": self.spectrum.resolution,
-                "peaks_max_frequency_hz": self.max_frequency,
-                "kinematic": self.kinematic.to_dict(),
-                **summary,
-                "imperfections": imperfections,
-                "warnings": list(self.warnings)}
+        keys = (
+            "frequency_hz",
+            "amplitude",
+            "matched",
+            "harmonic",
+            "deviation",
+            "sideband_of",
+            "sideband_harmonic",
+            "sideband_order",
+            "modulation",
+        )
+        return {
+            "speed_rpm": rad_s_to_rpm(o.condition.shaft_speed),
+            "radial_load_n": o.condition.radial_load,
+            **point,
+            "field_point_source": self.point_source,
+            **levels,
+            **self.bands.to_dict(),
+            "peaks": [{k: p[k] for k in keys if k in p} for p in self.peaks],
+            "peaks_resolution_hz": self.spectrum.resolution,
+            "peaks_max_frequency_hz": self.max_frequency,
+            "kinematic": self.kinematic.to_dict(),
+            **summary,
+            "imperfections": imperfections,
+            "warnings": list(self.warnings),
+        }
 
     def to_pandas(self):
         """The levels and the bands as a table: ``quantity``, ``key``, ``value``, ``unit``
@@ -120,12 +132,26 @@ class NoiseAnalysis:
 
         d = self.to_dict()
         rows = [(what, key, d.get(key)) for what, key in LEVEL_ROWS]
-        rows += [(f"ISO 15242 {k} band {lo:.4g}-{hi:.4g} Hz", f"velocity_bands_um_s.{k}",
-                  d["velocity_bands_um_s"][k])
-                 for k in BAND_NAMES for lo, hi in [d["velocity_bands_hz"][k]]]
-        return pd.DataFrame([{"quantity": what, "key": key, "value": value,
-                              "unit": unit_of(key.split(".")[0]).symbol}
-                             for what, key, value in rows])
+        rows += [
+            (
+                f"ISO 15242 {k} band {lo:.4g}-{hi:.4g} Hz",
+                f"velocity_bands_um_s.{k}",
+                d["velocity_bands_um_s"][k],
+            )
+            for k in BAND_NAMES
+            for lo, hi in [d["velocity_bands_hz"][k]]
+        ]
+        return pd.DataFrame(
+            [
+                {
+                    "quantity": what,
+                    "key": key,
+                    "value": value,
+                    "unit": unit_of(key.split(".")[0]).symbol,
+                }
+                for what, key, value in rows
+            ]
+        )
 
     def plot(self, fig=None):
         """Pressure and SPL(t) against time (left), the pressure spectrum with the BPFO /
@@ -139,22 +165,36 @@ class NoiseAnalysis:
         level = fig.add_subplot(2, 2, 3, sharex=pressure)
         self.sound.plot(axes=[pressure, level])
         spectrum = fig.add_subplot(2, 2, 2)
-        draw_spectrum(spectrum, self.spectrum, self.peaks, self.kinematic, self.max_frequency,
-                      title=f"sound-pressure spectrum (resolution "
-                            f"{self.spectrum.resolution:.3g} Hz)",
-                      ylabel="amplitude [Pa]", names=PLOTTED_FREQUENCIES,
-                      harmonics=PEAK_HARMONICS)
+        draw_spectrum(
+            spectrum,
+            self.spectrum,
+            self.peaks,
+            self.kinematic,
+            self.max_frequency,
+            title=f"sound-pressure spectrum (resolution {self.spectrum.resolution:.3g} Hz)",
+            ylabel="amplitude [Pa]",
+            names=PLOTTED_FREQUENCIES,
+            harmonics=PEAK_HARMONICS,
+        )
         polar = fig.add_subplot(2, 2, 4, projection="polar")
         self.sound.directivity().plot(ax=polar)
         fig.tight_layout()
         return fig, [pressure, level, spectrum, polar]
 
 
-def noise_analysis(bearing, condition, imperfections=None, *, point=None,
-                   angle: float | None = None, duration: float | None = None,
-                   points: int | None = None, bands_from: str = "auto",
-                   progress: Callable[[float, str], None] | None = None,
-                   **noise_options) -> NoiseAnalysis:
+def noise_analysis(
+    bearing,
+    condition,
+    imperfections=None,
+    *,
+    point=None,
+    angle: float | None = None,
+    duration: float | None = None,
+    points: int | None = None,
+    bands_from: str = "auto",
+    progress: Callable[[float, str], None] | None = None,
+    **noise_options,
+) -> NoiseAnalysis:
     """Noise of ``bearing`` under ``condition`` with ``imperfections``: SPL at a point
     (seed 003 part 4), the labelled lines of the pressure spectrum (seed 002) and the
     ISO 15242 velocity bands.
@@ -206,45 +246,76 @@ def noise_analysis(bearing, condition, imperfections=None, *, point=None,
             progress(fraction, text)
 
     if not condition.radial_load > 0:
-        raise InputError("radial_load", condition.radial_load,
-                         "a radial load > 0 [N] (the orbit needs a load)")
+        raise InputError(
+            "radial_load", condition.radial_load, "a radial load > 0 [N] (the orbit needs a load)"
+        )
     if point is None:
         point, source = default_field_point(bearing, angle)
     else:
         if angle is not None:
-            raise InputError("angle", angle, "None when a point is given (its angle is "
-                             "the point's)")
+            raise InputError(
+                "angle", angle, "None when a point is given (its angle is the point's)"
+            )
         if not isinstance(point, FieldPoint):
             try:
                 point = FieldPoint(*point)
             except TypeError:
-                raise InputError("point", point, "a FieldPoint or (distance [m], angle "
-                                 "[rad])") from None
+                raise InputError(
+                    "point", point, "a FieldPoint or (distance [m], angle [rad])"
+                ) from None
         source = "given"
     warnings = [*operating_warnings(bearing, condition), *check_field_point(bearing, point)]
     if imperfections is None or imperfections.is_empty:
-        warnings.append("no form errors given: the sound comes only from the varying "
-                        "compliance of a perfect bearing")
+        warnings.append(
+            "no form errors given: the sound comes only from the varying "
+            "compliance of a perfect bearing"
+        )
     kin = defect_frequencies(bearing, condition.shaft_speed)
     stage(0.0, "orbit and sound pressure")
-    noise = bearing_noise(bearing, condition, imperfections, duration=duration, points=points,
-                          point=point, **noise_options)
-    stage(0.6, "velocity bands" + (" (compiling the rigid model, first run only)"
-                                   if bands_from != "orbit" and needs_compiling("rigid")
-                                   else ""))
-    bands = bearing_velocity_bands(bearing, condition, imperfections, orbit=noise.orbit,
-                                   source=bands_from,
-                                   progress=lambda f: stage(0.6 + 0.3 * f, "velocity bands"))
+    noise = bearing_noise(
+        bearing,
+        condition,
+        imperfections,
+        duration=duration,
+        points=points,
+        point=point,
+        **noise_options,
+    )
+    stage(
+        0.6,
+        "velocity bands"
+        + (
+            " (compiling the rigid model, first run only)"
+            if bands_from != "orbit" and needs_compiling("rigid")
+            else ""
+        ),
+    )
+    bands = bearing_velocity_bands(
+        bearing,
+        condition,
+        imperfections,
+        orbit=noise.orbit,
+        source=bands_from,
+        progress=lambda f: stage(0.6 + 0.3 * f, "velocity bands"),
+    )
     stage(0.9, "pressure spectrum")
     sound = noise.sound
     top = PEAK_HARMONICS + 0.5
     max_frequency = min(0.5 * sound.sample_rate, top * max(kin.hz("bpfo"), kin.hz("bpfi")))
-    spectrum, peaks = spectrum_lines(sound.pressure("total"), sound.sample_rate, kin,
-                                     max_frequency, count=PEAK_COUNT, harmonics=PEAK_HARMONICS,
-                                     prominence=PEAK_PROMINENCE, slip_tolerance=0.0)
+    spectrum, peaks = spectrum_lines(
+        sound.pressure("total"),
+        sound.sample_rate,
+        kin,
+        max_frequency,
+        count=PEAK_COUNT,
+        harmonics=PEAK_HARMONICS,
+        prominence=PEAK_PROMINENCE,
+        slip_tolerance=0.0,
+    )
     stage(1.0, "done")
-    return NoiseAnalysis(noise, source, spectrum, peaks, float(max_frequency), kin, bands,
-                         tuple(warnings))
+    return NoiseAnalysis(
+        noise, source, spectrum, peaks, float(max_frequency), kin, bands, tuple(warnings)
+    )
 
 
 __all__ = ["LEVELS", "LEVEL_ROWS", "NoiseAnalysis", "noise_analysis"]

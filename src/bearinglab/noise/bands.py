@@ -75,19 +75,30 @@ class BearingVelocityBands:
     def to_dict(self) -> dict:
         """``velocity_bands_um_s`` (low, medium, high), ``velocity_bands_hz`` (edges), the
         source, note, sample rate and duration (JSON-ready)."""
-        return {"velocity_bands_um_s": {k: self[k] for k in BAND_NAMES},
-                "velocity_bands_hz": {k: list(self.bands.bands[k]) for k in BAND_NAMES},
-                "velocity_bands_source": self.source, "velocity_bands_note": self.note,
-                "velocity_bands_sample_rate_hz": self.sample_rate,
-                "velocity_bands_duration_s": self.duration}
+        return {
+            "velocity_bands_um_s": {k: self[k] for k in BAND_NAMES},
+            "velocity_bands_hz": {k: list(self.bands.bands[k]) for k in BAND_NAMES},
+            "velocity_bands_source": self.source,
+            "velocity_bands_note": self.note,
+            "velocity_bands_sample_rate_hz": self.sample_rate,
+            "velocity_bands_duration_s": self.duration,
+        }
 
     def to_pandas(self):
         """One row per band: ``band``, ``low_hz``, ``high_hz``, ``velocity_um_s``."""
         import pandas as pd
 
-        return pd.DataFrame([{"band": k, "low_hz": self.bands.bands[k][0],
-                              "high_hz": self.bands.bands[k][1], "velocity_um_s": self[k]}
-                             for k in BAND_NAMES])
+        return pd.DataFrame(
+            [
+                {
+                    "band": k,
+                    "low_hz": self.bands.bands[k][0],
+                    "high_hz": self.bands.bands[k][1],
+                    "velocity_um_s": self[k],
+                }
+                for k in BAND_NAMES
+            ]
+        )
 
     def plot(self, ax=None):
         """Bar chart of the three bands [um/s]; returns (fig, ax), never shows."""
@@ -98,11 +109,13 @@ class BearingVelocityBands:
         else:
             fig = ax.figure
         edges = self.bands.bands
-        ax.bar([f"{k}\n{edges[k][0]:.4g}-{edges[k][1]:.4g} Hz" for k in BAND_NAMES],
-               [self[k] for k in BAND_NAMES], color=["C0", "C1", "C2"])
+        ax.bar(
+            [f"{k}\n{edges[k][0]:.4g}-{edges[k][1]:.4g} Hz" for k in BAND_NAMES],
+            [self[k] for k in BAND_NAMES],
+            color=["C0", "C1", "C2"],
+        )
         ax.set_ylabel("RMS velocity [µm/s]")
-        ax.set_title(f"ISO 15242 bands at {self.speed_rpm:.6g} rpm ({self.source})",
-                     fontsize=10)
+        ax.set_title(f"ISO 15242 bands at {self.speed_rpm:.6g} rpm ({self.source})", fontsize=10)
         ax.grid(axis="y", alpha=0.3)
         return fig, ax
 
@@ -117,10 +130,15 @@ def _detrended_velocity(time, position) -> np.ndarray:
     return v - jump * np.arange(n) / n
 
 
-def bearing_velocity_bands(bearing, condition, imperfections=None, *, orbit=None,
-                           source: str = "auto",
-                           progress: Callable[[float], None] | None = None
-                           ) -> BearingVelocityBands:
+def bearing_velocity_bands(
+    bearing,
+    condition,
+    imperfections=None,
+    *,
+    orbit=None,
+    source: str = "auto",
+    progress: Callable[[float], None] | None = None,
+) -> BearingVelocityBands:
     """ISO 15242 RMS radial vibration velocity of ``bearing`` under ``condition`` in the
     low, medium and high bands, the edges scaled to the shaft speed (see the module).
 
@@ -167,29 +185,45 @@ def bearing_velocity_bands(bearing, condition, imperfections=None, *, orbit=None
         fits = rate > need_rate and length >= need_length * (1 - 1e-9)
         length_out = max(need_length, length)
     if source == "rigid" or (source == "auto" and not fits):
-        sim = simulate(bearing, condition, (), imperfections=imperfections, duration=length_out,
-                       sample_rate=rate_out, progress=progress)
+        sim = simulate(
+            bearing,
+            condition,
+            (),
+            imperfections=imperfections,
+            duration=length_out,
+            sample_rate=rate_out,
+            progress=progress,
+        )
         y = sim.signal.channels["disp_y"]
         time = np.arange(y.size) / rate_out
         origin = "rigid model"
-        note = ("the rigid dynamic model (seed 003's 4-DOF model, no defects, the same form "
-                "errors; its resonances shape the medium and high bands)")
+        note = (
+            "the rigid dynamic model (seed 003's 4-DOF model, no defects, the same form "
+            "errors; its resonances shape the medium and high bands)"
+        )
         if source == "auto":
-            note += (f": the orbit ({rate:.6g} Hz over {length:.4g} s) cannot resolve the "
-                     f"bands (it needs > {need_rate:.6g} Hz over >= {need_length:.4g} s)"
-                     if orbit is not None else ": no orbit given")
+            note += (
+                f": the orbit ({rate:.6g} Hz over {length:.4g} s) cannot resolve the "
+                f"bands (it needs > {need_rate:.6g} Hz over >= {need_length:.4g} s)"
+                if orbit is not None
+                else ": no orbit given"
+            )
     elif fits:
         time, y = orbit.time, orbit.y
         rate_out, length_out = rate, length
         origin, note = "orbit", "the orbit of the noise calculation (quasi-static)"
     else:
         count = math.ceil(rate_out * length_out)
-        second = inner_ring_orbit(bearing, condition, imperfections=imperfections,
-                                  duration=length_out, points=count)
+        second = inner_ring_orbit(
+            bearing, condition, imperfections=imperfections, duration=length_out, points=count
+        )
         time, y = second.time, second.y
         origin = "orbit"
-        note = (f"a quasi-static orbit at {rate_out:.6g} Hz over {length_out:.4g} s (the "
-                "noise orbit's sampling cannot resolve the bands)" if orbit is not None else
-                f"a quasi-static orbit at {rate_out:.6g} Hz over {length_out:.4g} s")
+        note = (
+            f"a quasi-static orbit at {rate_out:.6g} Hz over {length_out:.4g} s (the "
+            "noise orbit's sampling cannot resolve the bands)"
+            if orbit is not None
+            else f"a quasi-static orbit at {rate_out:.6g} Hz over {length_out:.4g} s"
+        )
     vb = velocity_bands(_detrended_velocity(time, y), rate_out, "velocity", speed_rpm=speed_rpm)
     return BearingVelocityBands(vb, speed_rpm, origin, note, float(rate_out), float(length_out))

@@ -24,9 +24,9 @@ from .result import SoundPressure
 #: How the balls radiate in :func:`bearing_noise`: name -> description.
 BALL_MODELS = {
     "radial": "pulsating sphere (eq. 23) driven by d(rho_j)/dt, the rate of change of the "
-              "ball centre's distance from the bearing axis",
+    "ball centre's distance from the bearing axis",
     "xy": "the x and y components of that vibration, each driving eq. 23 (the seed's "
-          "figs. 11 and 13 A/B, read literally)",
+    "figs. 11 and 13 A/B, read literally)",
     "oscillating": "a rigid sphere translating with that vibration (a dipole)",
 }
 #: Default sample rate of the orbit's time sweep [Hz].
@@ -47,10 +47,15 @@ class BearingNoise:
         operating point and the imperfections, in engineering units."""
         o = self.orbit
         out = self.sound.to_dict()
-        out.update({"speed_rpm": rad_s_to_rpm(o.condition.shaft_speed),
-                    "radial_load_n": o.condition.radial_load, "ball_model": self.ball_model,
-                    "points": int(o.time.size),
-                    "orbit_peak_to_peak_um": o.peak_to_peak * 1e6})
+        out.update(
+            {
+                "speed_rpm": rad_s_to_rpm(o.condition.shaft_speed),
+                "radial_load_n": o.condition.radial_load,
+                "ball_model": self.ball_model,
+                "points": int(o.time.size),
+                "orbit_peak_to_peak_um": o.peak_to_peak * 1e6,
+            }
+        )
         if o.imperfections is not None:
             out["imperfections"] = o.imperfections.to_dict()
         return out
@@ -60,11 +65,20 @@ class BearingNoise:
         return self.sound.plot(axes)
 
 
-def bearing_noise(bearing, condition, imperfections=None, *, duration: float | None = None,
-                  revolutions: float | None = None, points: int | None = None,
-                  point: FieldPoint | tuple | None = None, medium=None,
-                  ball_model: str = "radial", ring_model: str = "exact",
-                  **orbit_options) -> BearingNoise:
+def bearing_noise(
+    bearing,
+    condition,
+    imperfections=None,
+    *,
+    duration: float | None = None,
+    revolutions: float | None = None,
+    points: int | None = None,
+    point: FieldPoint | tuple | None = None,
+    medium=None,
+    ball_model: str = "radial",
+    ring_model: str = "exact",
+    **orbit_options,
+) -> BearingNoise:
     """Sound pressure at a point of a bearing running with form errors (seed 003 part 4).
 
     Parameters
@@ -115,14 +129,21 @@ def bearing_noise(bearing, condition, imperfections=None, *, duration: float | N
         raise InputError("ball_model", ball_model, f"one of {tuple(BALL_MODELS)}")
     if condition.shaft_speed <= 0:
         raise InputError("shaft_speed", condition.shaft_speed, "a speed > 0 [rad/s]")
-    length = record_length(bearing, condition, revolutions, duration,
-                           orbit_options.get("contact_angle"))
+    length = record_length(
+        bearing, condition, revolutions, duration, orbit_options.get("contact_angle")
+    )
     if points is None:
         points = max(256, math.ceil(SAMPLE_RATE * length))
     if point is None:
         point = default_field_point(bearing)[0]
-    orbit = inner_ring_orbit(bearing, condition, imperfections=imperfections,
-                             duration=length, points=points, **orbit_options)
+    orbit = inner_ring_orbit(
+        bearing,
+        condition,
+        imperfections=imperfections,
+        duration=length,
+        points=points,
+        **orbit_options,
+    )
     t = orbit.time
     ring, radial = orbit.ring_velocity, orbit.ball_radial_velocity
     if ball_model == "radial":
@@ -131,7 +152,16 @@ def bearing_noise(bearing, condition, imperfections=None, *, duration: float | N
         psi = orbit.ball_angle
         balls = radial[..., None] * np.stack([np.cos(psi), np.sin(psi)], axis=-1)
         source = "pulsating" if ball_model == "xy" else "oscillating"
-    sound = sound_pressure(t, ring, balls, orbit.ball_angle, bearing, point=point,
-                           medium=medium, ring_model=ring_model, ball_source=source,
-                           detrend=True)
+    sound = sound_pressure(
+        t,
+        ring,
+        balls,
+        orbit.ball_angle,
+        bearing,
+        point=point,
+        medium=medium,
+        ring_model=ring_model,
+        ball_source=source,
+        detrend=True,
+    )
     return BearingNoise(orbit, sound, ball_model)

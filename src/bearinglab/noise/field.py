@@ -42,8 +42,11 @@ def _retarded(spectrum: np.ndarray, n: int, sample_rate: float, delay: np.ndarra
     lo, hi = float(np.min(delay)), float(np.max(delay))
     width = 2.0 * TAYLOR_LIMIT / (2.0 * np.pi * f[-1])
     bins = max(1, math.ceil((hi - lo) / width))
-    which = np.minimum(((delay - lo) / width).astype(int), bins - 1) if bins > 1 else \
-        np.zeros(n, dtype=int)
+    which = (
+        np.minimum(((delay - lo) / width).astype(int), bins - 1)
+        if bins > 1
+        else np.zeros(n, dtype=int)
+    )
     out = np.empty(n)
     for b in range(bins):
         mask = which == b
@@ -79,7 +82,7 @@ def velocity_spectra(velocity: np.ndarray, n: int, detrend: bool) -> np.ndarray:
     spectrum = np.fft.rfft(v, axis=0)
     if n % 2 == 0:
         spectrum[-1] = 0.0
-    spectrum[0] = 0.0   # a steady velocity radiates no sound (all transfers vanish at 0 Hz)
+    spectrum[0] = 0.0  # a steady velocity radiates no sound (all transfers vanish at 0 Hz)
     return spectrum
 
 
@@ -91,13 +94,12 @@ def pressures_at(inputs: dict, point: FieldPoint, medium: Air, options: dict) ->
     k = 2 * np.pi * f / medium.sound_speed
     medium_kw = {"density": medium.density, "sound_speed": medium.sound_speed}
     direction = np.array([math.cos(point.angle), math.sin(point.angle)])
-    direction[np.abs(direction) < 1e-15] = 0.0      # cos(pi/2) is 6e-17, not 0
+    direction[np.abs(direction) < 1e-15] = 0.0  # cos(pi/2) is 6e-17, not 0
     parts: dict[str, np.ndarray] = {}
     if inputs.get("ring_spectrum") is not None:
         a = options["ring_radius"]
         if point.distance <= a:
-            raise InputError("point", point.distance,
-                             f"a distance > the inner-ring radius {a:g} m")
+            raise InputError("point", point.distance, f"a distance > the inner-ring radius {a:g} m")
         h = cylinder_transfer(f, a, point.distance, form=options["ring_model"], **medium_kw)
         ring = inputs["ring_spectrum"]
         for i, axis in enumerate("xy"):
@@ -114,19 +116,21 @@ def _ball_pressures(inputs, point, k, medium_kw, options) -> dict:
     spectra, psi = inputs["ball_spectrum"], inputs["ball_angle"]
     r0, rp = options["ball_radius"], options["pitch_radius"]
     gap = point.position[None, None, :] - rp * np.stack([np.cos(psi), np.sin(psi)], axis=-1)
-    r = np.linalg.norm(gap, axis=-1)                              # (n, Z)
+    r = np.linalg.norm(gap, axis=-1)  # (n, Z)
     if np.min(r) <= r0:
-        raise InputError("point", (point.distance, point.angle),
-                         f"a point outside every ball (it comes within {np.min(r):g} m of a "
-                         f"ball centre; ball radius {r0:g} m)")
+        raise InputError(
+            "point",
+            (point.distance, point.angle),
+            f"a point outside every ball (it comes within {np.min(r):g} m of a "
+            f"ball centre; ball radius {r0:g} m)",
+        )
     unit = gap / r[..., None]
     delay = r / medium_kw["sound_speed"]
     components = spectra.shape[2] if spectra.ndim == 3 else 0
     out = {}
     if options["ball_source"] == "pulsating":
         g = pulsating_sphere_source(k, r0, **medium_kw)
-        for c, name in ([(None, "balls")] if components == 0
-                        else [(0, "balls_x"), (1, "balls_y")]):
+        for c, name in [(None, "balls")] if components == 0 else [(0, "balls_x"), (1, "balls_y")]:
             total = np.zeros(n)
             for j in range(psi.shape[1]):
                 u = spectra[:, j] if c is None else spectra[:, j, c]
@@ -138,8 +142,10 @@ def _ball_pressures(inputs, point, k, medium_kw, options) -> dict:
             total = np.zeros(n)
             for j in range(psi.shape[1]):
                 u = spectra[:, j, c]
-                total += unit[:, j, c] * (_retarded(g1 * u, n, fs, delay[:, j]) / r[:, j]
-                                          + _retarded(g2 * u, n, fs, delay[:, j]) / r[:, j]**2)
+                total += unit[:, j, c] * (
+                    _retarded(g1 * u, n, fs, delay[:, j]) / r[:, j]
+                    + _retarded(g2 * u, n, fs, delay[:, j]) / r[:, j] ** 2
+                )
             out[name] = total
     if components:
         out["balls"] = out["balls_x"] + out["balls_y"]

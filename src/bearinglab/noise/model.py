@@ -36,8 +36,12 @@ class Air:
     def __post_init__(self) -> None:
         for name, unit in (("density", "[kg/m^3]"), ("sound_speed", "[m/s]")):
             v = getattr(self, name)
-            if (isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating))
-                    or not math.isfinite(v) or v <= 0):
+            if (
+                isinstance(v, bool)
+                or not isinstance(v, (int, float, np.integer, np.floating))
+                or not math.isfinite(v)
+                or v <= 0
+            ):
                 raise InputError(name, v, f"a finite number > 0 {unit}")
             object.__setattr__(self, name, float(v))
 
@@ -55,10 +59,15 @@ class FieldPoint:
     def __post_init__(self) -> None:
         for name, positive in (("distance", True), ("angle", False)):
             v = getattr(self, name)
-            if (isinstance(v, bool) or not isinstance(v, (int, float, np.integer, np.floating))
-                    or not math.isfinite(v) or (positive and v <= 0)):
-                raise InputError(name, v, "a finite distance > 0 [m]" if positive
-                                 else "a finite angle [rad]")
+            if (
+                isinstance(v, bool)
+                or not isinstance(v, (int, float, np.integer, np.floating))
+                or not math.isfinite(v)
+                or (positive and v <= 0)
+            ):
+                raise InputError(
+                    name, v, "a finite distance > 0 [m]" if positive else "a finite angle [rad]"
+                )
             object.__setattr__(self, name, float(v))
 
     @property
@@ -98,10 +107,15 @@ def default_field_point(bearing, angle: float | None = None) -> tuple[FieldPoint
     up = 0.5 * math.pi
     angle = up if angle is None else angle
     point = FieldPoint(radius + FIELD_POINT_GAP, angle)
-    where = ("straight up" if math.isclose(point.angle, up, abs_tol=1e-12)
-             else f"at {math.degrees(point.angle):.4g} deg from +x")
-    rule = (f"default: {FIELD_POINT_GAP * 1e3:g} mm outside the outside radius {how} = "
-            f"{radius * 1e3:.4g} mm, {where}")
+    where = (
+        "straight up"
+        if math.isclose(point.angle, up, abs_tol=1e-12)
+        else f"at {math.degrees(point.angle):.4g} deg from +x"
+    )
+    rule = (
+        f"default: {FIELD_POINT_GAP * 1e3:g} mm outside the outside radius {how} = "
+        f"{radius * 1e3:.4g} mm, {where}"
+    )
     return point, rule
 
 
@@ -125,12 +139,17 @@ def check_field_point(bearing, point: FieldPoint) -> list[str]:
     least = least_field_distance(bearing)
     radius, how = outer_radius(bearing)
     if point.distance <= least:
-        raise InputError("point", point.distance,
-                         f"a distance > {least:.6g} m from the centre (outside the inner ring "
-                         "and the balls' path)",
-                         f"the bearing's outside radius {how} is {radius:.6g} m")
+        raise InputError(
+            "point",
+            point.distance,
+            f"a distance > {least:.6g} m from the centre (outside the inner ring "
+            "and the balls' path)",
+            f"the bearing's outside radius {how} is {radius:.6g} m",
+        )
     if point.distance < radius:
-        return [f"the field point ({point.distance * 1e3:.4g} mm from the centre) lies inside "
-                f"the bearing's outside radius ({how} = {radius * 1e3:.4g} mm): the model, like "
-                "seed 003's, radiates into free air and ignores the outer ring"]
+        return [
+            f"the field point ({point.distance * 1e3:.4g} mm from the centre) lies inside "
+            f"the bearing's outside radius ({how} = {radius * 1e3:.4g} mm): the model, like "
+            "seed 003's, radiates into free air and ignores the outer ring"
+        ]
     return []

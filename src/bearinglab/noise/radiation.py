@@ -61,8 +61,11 @@ def velocity_from_positions(time, positions) -> np.ndarray:
     t = _time(time)
     x = np.asarray(positions, dtype=float)
     if x.ndim < 1 or x.shape[0] != t.size or not np.all(np.isfinite(x)):
-        raise InputError("positions", f"array of shape {x.shape}",
-                         f"finite positions with {t.size} rows (one per sample)")
+        raise InputError(
+            "positions",
+            f"array of shape {x.shape}",
+            f"finite positions with {t.size} rows (one per sample)",
+        )
     return np.gradient(x, t, axis=0, edge_order=2)
 
 
@@ -72,13 +75,15 @@ def _time(time) -> np.ndarray:
     except (TypeError, ValueError):
         raise InputError("time", type(time).__name__, "a 1-D array of times [s]") from None
     if t.ndim != 1 or t.size < 16 or not np.all(np.isfinite(t)):
-        raise InputError("time", f"array of shape {t.shape}",
-                         "a 1-D array of at least 16 finite times [s]")
+        raise InputError(
+            "time", f"array of shape {t.shape}", "a 1-D array of at least 16 finite times [s]"
+        )
     step = np.diff(t)
     mean = (t[-1] - t[0]) / (t.size - 1)
     if mean <= 0 or np.max(np.abs(step - mean)) > STEP_TOLERANCE * mean:
-        raise InputError("time", "unevenly spaced or decreasing times",
-                         "uniformly spaced increasing times")
+        raise InputError(
+            "time", "unevenly spaced or decreasing times", "uniformly spaced increasing times"
+        )
     return t
 
 
@@ -95,12 +100,22 @@ def _array(name, value, shapes: str, n: int, ndims: tuple[int, ...]) -> np.ndarr
 # ---------------------------------------------------------------- the analysis
 
 
-def sound_pressure(time, inner_ring_velocity=None, ball_velocity=None, ball_angle=None,
-                   bearing=None, *, point: FieldPoint | tuple | None = None,
-                   medium: Air | None = None, ring_radius: float | None = None,
-                   ball_radius: float | None = None, pitch_radius: float | None = None,
-                   ring_model: str = "exact", ball_source: str = "pulsating",
-                   detrend: bool = False) -> SoundPressure:
+def sound_pressure(
+    time,
+    inner_ring_velocity=None,
+    ball_velocity=None,
+    ball_angle=None,
+    bearing=None,
+    *,
+    point: FieldPoint | tuple | None = None,
+    medium: Air | None = None,
+    ring_radius: float | None = None,
+    ball_radius: float | None = None,
+    pitch_radius: float | None = None,
+    ring_model: str = "exact",
+    ball_source: str = "pulsating",
+    detrend: bool = False,
+) -> SoundPressure:
     """Sound pressure of the inner ring and the balls at a field point (seed 003 eqs.
     19-27; seed 002 for the directivity).
 
@@ -168,8 +183,9 @@ def sound_pressure(time, inner_ring_velocity=None, ball_velocity=None, ball_angl
         try:
             point = FieldPoint(*point)
         except TypeError:
-            raise InputError("point", point, "a FieldPoint or (distance [m], angle [rad])") \
-                from None
+            raise InputError(
+                "point", point, "a FieldPoint or (distance [m], angle [rad])"
+            ) from None
     if not isinstance(medium, Air):
         raise InputError("medium", medium, "an Air(density, sound_speed)")
     if ring_model not in CYLINDER_FORMS:
@@ -177,8 +193,9 @@ def sound_pressure(time, inner_ring_velocity=None, ball_velocity=None, ball_angl
     if ball_source not in BALL_SOURCES:
         raise InputError("ball_source", ball_source, f"one of {BALL_SOURCES}")
     if inner_ring_velocity is None and ball_velocity is None:
-        raise InputError("inner_ring_velocity", None,
-                         "an inner-ring velocity, ball velocities or both")
+        raise InputError(
+            "inner_ring_velocity", None, "an inner-ring velocity, ball velocities or both"
+        )
 
     def radius(name, given, from_bearing):
         if given is None:
@@ -193,44 +210,71 @@ def sound_pressure(time, inner_ring_velocity=None, ball_velocity=None, ball_angl
             raise InputError(name, given, "a finite radius > 0 [m]")
         return v
 
-    options = {"ring_model": ring_model, "ball_source": ball_source, "detrend": bool(detrend),
-               "ring_radius": None, "ball_radius": None, "pitch_radius": None}
+    options = {
+        "ring_model": ring_model,
+        "ball_source": ball_source,
+        "detrend": bool(detrend),
+        "ring_radius": None,
+        "ball_radius": None,
+        "pitch_radius": None,
+    }
     inputs = {"n": n, "sample_rate": fs}
     if inner_ring_velocity is not None:
         v = _array("inner_ring_velocity", inner_ring_velocity, "(n, 2)", n, (2,))
         if v.shape[1] != 2:
-            raise InputError("inner_ring_velocity", f"array of shape {v.shape}",
-                             "finite values of shape (n, 2)")
-        options["ring_radius"] = radius("ring_radius", ring_radius,
-                                        lambda: 0.5 * bearing.inner_raceway_diameter)
+            raise InputError(
+                "inner_ring_velocity", f"array of shape {v.shape}", "finite values of shape (n, 2)"
+            )
+        options["ring_radius"] = radius(
+            "ring_radius", ring_radius, lambda: 0.5 * bearing.inner_raceway_diameter
+        )
         inputs["ring_velocity"] = v
         inputs["ring_spectrum"] = velocity_spectra(v, n, detrend)
     if ball_velocity is not None:
         u = _array("ball_velocity", ball_velocity, "(n, Z) or (n, Z, 2)", n, (2, 3))
         if u.ndim == 3 and u.shape[2] != 2:
-            raise InputError("ball_velocity", f"array of shape {u.shape}",
-                             "finite values of shape (n, Z) or (n, Z, 2)")
+            raise InputError(
+                "ball_velocity",
+                f"array of shape {u.shape}",
+                "finite values of shape (n, Z) or (n, Z, 2)",
+            )
         if ball_source == "oscillating" and u.ndim != 3:
-            raise InputError("ball_velocity", f"array of shape {u.shape}",
-                             "ball-centre velocities of shape (n, Z, 2) for an oscillating "
-                             "sphere")
+            raise InputError(
+                "ball_velocity",
+                f"array of shape {u.shape}",
+                "ball-centre velocities of shape (n, Z, 2) for an oscillating sphere",
+            )
         if ball_angle is None:
             raise InputError("ball_angle", None, "ball angles (n, Z) or (Z,) [rad]")
         psi = np.asarray(ball_angle, dtype=float)
         if psi.ndim == 1:
             psi = np.broadcast_to(psi, (n, psi.size))
         if psi.shape != u.shape[:2] or not np.all(np.isfinite(psi)):
-            raise InputError("ball_angle", f"array of shape {psi.shape}",
-                             f"finite angles of shape {u.shape[:2]} or ({u.shape[1]},) [rad]")
-        options["ball_radius"] = radius("ball_radius", ball_radius,
-                                        lambda: 0.5 * bearing.ball_diameter)
-        options["pitch_radius"] = radius("pitch_radius", pitch_radius,
-                                         lambda: 0.5 * bearing.pitch_diameter)
-        inputs.update(ball_velocity=u, ball_angle=psi,
-                      ball_spectrum=velocity_spectra(u, n, detrend))
+            raise InputError(
+                "ball_angle",
+                f"array of shape {psi.shape}",
+                f"finite angles of shape {u.shape[:2]} or ({u.shape[1]},) [rad]",
+            )
+        options["ball_radius"] = radius(
+            "ball_radius", ball_radius, lambda: 0.5 * bearing.ball_diameter
+        )
+        options["pitch_radius"] = radius(
+            "pitch_radius", pitch_radius, lambda: 0.5 * bearing.pitch_diameter
+        )
+        inputs.update(
+            ball_velocity=u, ball_angle=psi, ball_spectrum=velocity_spectra(u, n, detrend)
+        )
     parts = pressures_at(inputs, point, medium, options)
     return SoundPressure(t, parts, point, medium, options, inputs)
 
 
-__all__ = ["BALL_SOURCES", "REFERENCE_PRESSURE", "Air", "Directivity", "FieldPoint",
-           "SoundPressure", "sound_pressure", "velocity_from_positions"]  # re-exported
+__all__ = [
+    "BALL_SOURCES",
+    "REFERENCE_PRESSURE",
+    "Air",
+    "Directivity",
+    "FieldPoint",
+    "SoundPressure",
+    "sound_pressure",
+    "velocity_from_positions",
+]  # re-exported

@@ -20,10 +20,9 @@ ENVELOPE_FLOOR = 1e-12
 #: The levels of :meth:`SoundPressure.to_dict` [dB re 20 uPa]: key -> its definition. The
 #: parts (inner ring, balls and their x / y contributions) are L_eq: ``spl_leq_<part>_db``.
 LEVELS = {
-    "spl_leq_db": "L_eq: eq. 27 with p_e the RMS pressure over the whole record (the "
-                  "energy mean)",
+    "spl_leq_db": "L_eq: eq. 27 with p_e the RMS pressure over the whole record (the energy mean)",
     "spl_time_mean_db": "time mean of the level curve SPL(t) (Hilbert envelope), seed 003's "
-                        "'mean SPL'",
+    "'mean SPL'",
     "spl_time_max_db": "maximum of the level curve SPL(t)",
 }
 
@@ -40,9 +39,13 @@ class Directivity:
 
     def to_dict(self) -> dict:
         """JSON-ready: angles in degrees, levels in dB (None where a part is silent)."""
-        return {"angle_deg": np.degrees(self.angle).tolist(), "distance_mm": self.distance * 1e3,
-                **{f"spl_leq_{k}_db": [_finite_or_none(v) for v in lv]
-                   for k, lv in self.levels.items()}}
+        return {
+            "angle_deg": np.degrees(self.angle).tolist(),
+            "distance_mm": self.distance * 1e3,
+            **{
+                f"spl_leq_{k}_db": [_finite_or_none(v) for v in lv] for k, lv in self.levels.items()
+            },
+        }
 
     def plot(self, ax=None):
         """Polar plot of the levels [dB]; returns (fig, ax)."""
@@ -139,12 +142,15 @@ class SoundPressure:
         except (TypeError, ValueError):
             w = -1
         if not 1 <= w <= n:
-            raise InputError("window", window,
-                             f"a length in [{1 / self.sample_rate:g}, {n / self.sample_rate:g}] s")
+            raise InputError(
+                "window",
+                window,
+                f"a length in [{1 / self.sample_rate:g}, {n / self.sample_rate:g}] s",
+            )
         h = w // 2
         ext = np.take(p**2, np.arange(-h, n - h + w - 1), mode="wrap")
         c = np.concatenate([[0.0], np.cumsum(ext)])
-        mean_square = np.maximum((c[w:w + n] - c[:n]) / w, 0.0)
+        mean_square = np.maximum((c[w : w + n] - c[:n]) / w, 0.0)
         return sound_pressure_level(np.sqrt(mean_square))
 
     def spectrum(self, part: str = "total", window="hann", segment_length=None):
@@ -152,8 +158,9 @@ class SoundPressure:
         (:func:`bearinglab.signal.amplitude_spectrum`)."""
         from ..signal import amplitude_spectrum
 
-        return amplitude_spectrum(self.pressure(part), self.sample_rate, window=window,
-                                  segment_length=segment_length)
+        return amplitude_spectrum(
+            self.pressure(part), self.sample_rate, window=window, segment_length=segment_length
+        )
 
     def directivity(self, angles=None, distance: float | None = None) -> Directivity:
         """SPL (eq. 27) of the inner ring, the balls and the total at points round the
@@ -166,8 +173,11 @@ class SoundPressure:
         distance : float, optional
             Distance from the bearing centre [m]; default the result's point distance.
         """
-        angles = (np.linspace(0.0, 2 * math.pi, 72, endpoint=False) if angles is None
-                  else np.atleast_1d(np.asarray(angles, dtype=float)))
+        angles = (
+            np.linspace(0.0, 2 * math.pi, 72, endpoint=False)
+            if angles is None
+            else np.atleast_1d(np.asarray(angles, dtype=float))
+        )
         if angles.ndim != 1 or angles.size == 0 or not np.all(np.isfinite(angles)):
             raise InputError("angles", angles, "a 1-D array of finite angles [rad]")
         d = self.point.distance if distance is None else distance
@@ -177,30 +187,38 @@ class SoundPressure:
             for name in ("inner_ring", "balls", "total"):
                 if name in parts:
                     levels.setdefault(name, []).append(
-                        sound_pressure_level(effective_pressure(parts[name])))
-        return Directivity(angles, float(FieldPoint(d).distance),
-                           {k: np.array(v) for k, v in levels.items()})
+                        sound_pressure_level(effective_pressure(parts[name]))
+                    )
+        return Directivity(
+            angles, float(FieldPoint(d).distance), {k: np.array(v) for k, v in levels.items()}
+        )
 
     def to_dict(self) -> dict:
         """JSON-ready summary: the levels of :data:`LEVELS` and the parts' L_eq in dB (None
         for a silent part), pressures in Pa."""
         total_t = self.spl_time("total")
-        out = {"spl_leq_db": _finite_or_none(self.spl("total")),
-               "spl_time_mean_db": _finite_or_none(np.mean(total_t)),
-               "spl_time_max_db": _finite_or_none(np.max(total_t))}
+        out = {
+            "spl_leq_db": _finite_or_none(self.spl("total")),
+            "spl_time_mean_db": _finite_or_none(np.mean(total_t)),
+            "spl_time_max_db": _finite_or_none(np.max(total_t)),
+        }
         for name in self.parts:
             if name != "total":
                 out[f"spl_leq_{name}_db"] = _finite_or_none(self.spl(name))
-        out.update({
-            "effective_pressure_pa": self.effective_pressure("total"),
-            "peak_pressure_pa": float(np.max(np.abs(self.parts["total"]))),
-            "distance_mm": self.point.distance * 1e3,
-            "angle_deg": math.degrees(self.point.angle),
-            "sample_rate_hz": self.sample_rate,
-            "duration_s": self.time.size / self.sample_rate,
-            "density_kg_m3": self.medium.density, "sound_speed_m_s": self.medium.sound_speed,
-            "ring_model": self.options["ring_model"], "ball_source": self.options["ball_source"],
-        })
+        out.update(
+            {
+                "effective_pressure_pa": self.effective_pressure("total"),
+                "peak_pressure_pa": float(np.max(np.abs(self.parts["total"]))),
+                "distance_mm": self.point.distance * 1e3,
+                "angle_deg": math.degrees(self.point.angle),
+                "sample_rate_hz": self.sample_rate,
+                "duration_s": self.time.size / self.sample_rate,
+                "density_kg_m3": self.medium.density,
+                "sound_speed_m_s": self.medium.sound_speed,
+                "ring_model": self.options["ring_model"],
+                "ball_source": self.options["ball_source"],
+            }
+        )
         for key in ("ring_radius", "ball_radius", "pitch_radius"):
             if self.options.get(key) is not None:
                 out[f"{key}_mm"] = self.options[key] * 1e3
@@ -210,8 +228,9 @@ class SoundPressure:
         """One row per sample: ``time_s`` and ``p_<part>_pa`` for every part."""
         import pandas as pd
 
-        return pd.DataFrame({"time_s": self.time,
-                             **{f"p_{k}_pa": v for k, v in self.parts.items()}})
+        return pd.DataFrame(
+            {"time_s": self.time, **{f"p_{k}_pa": v for k, v in self.parts.items()}}
+        )
 
     def plot(self, axes=None):
         """Pressure against time (ring, balls, total) and SPL(t), labelled with its time
@@ -228,13 +247,20 @@ class SoundPressure:
             if name in self.parts:
                 axes[0].plot(t, self.parts[name], lw=0.8, label=name)
                 level = self.spl_time(name)
-                axes[1].plot(t, level, lw=0.8, label=f"{name}: time mean {np.mean(level):.1f} "
-                                                     f"dB, L_eq {self.spl(name):.1f} dB")
+                axes[1].plot(
+                    t,
+                    level,
+                    lw=0.8,
+                    label=f"{name}: time mean {np.mean(level):.1f} "
+                    f"dB, L_eq {self.spl(name):.1f} dB",
+                )
         axes[0].set_ylabel("sound pressure [Pa]")
         axes[1].set_ylabel("SPL(t) [dB re 20 µPa]")
         axes[1].set_xlabel("time [s]")
-        axes[0].set_title(f"point at {self.point.distance * 1e3:.4g} mm, "
-                          f"{math.degrees(self.point.angle):g} deg: L_eq {self.spl():.1f} dB")
+        axes[0].set_title(
+            f"point at {self.point.distance * 1e3:.4g} mm, "
+            f"{math.degrees(self.point.angle):g} deg: L_eq {self.spl():.1f} dB"
+        )
         for ax in axes:
             ax.legend(fontsize=8)
             ax.grid(alpha=0.3)

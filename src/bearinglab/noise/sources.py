@@ -81,8 +81,9 @@ def _positive(name: str, value, unit: str) -> float:
 def _frequencies(frequency) -> np.ndarray:
     f = np.asarray(frequency, dtype=float)
     if not np.all(np.isfinite(f)) or np.any(f < 0):
-        raise InputError("frequency", "an array with negative or non-finite values",
-                         "frequencies >= 0 [Hz]")
+        raise InputError(
+            "frequency", "an array with negative or non-finite values", "frequencies >= 0 [Hz]"
+        )
     return f
 
 
@@ -101,8 +102,9 @@ def _radius_and_distance(radius, distance, body: str) -> tuple[float, float]:
 
 def _impedance(density, sound_speed) -> float:
     """Characteristic impedance rho_0 c_0 of the medium [Pa s/m]."""
-    return _positive("density", density, "[kg/m^3]") * _positive("sound_speed", sound_speed,
-                                                                 "[m/s]")
+    return _positive("density", density, "[kg/m^3]") * _positive(
+        "sound_speed", sound_speed, "[m/s]"
+    )
 
 
 def sound_pressure_level(effective_pressure):
@@ -139,8 +141,15 @@ def effective_pressure(pressure) -> float:
     return float(np.sqrt(np.mean(p**2)))
 
 
-def cylinder_transfer(frequency, radius, distance, *, density=AIR_DENSITY,
-                      sound_speed=AIR_SOUND_SPEED, form: str = "exact") -> np.ndarray:
+def cylinder_transfer(
+    frequency,
+    radius,
+    distance,
+    *,
+    density=AIR_DENSITY,
+    sound_speed=AIR_SOUND_SPEED,
+    form: str = "exact",
+) -> np.ndarray:
     """Pressure per unit velocity of a transversely vibrating rigid cylinder, on the
     vibration axis (phi = 0; multiply by cos(phi) off it) (seed 003 eq. 19).
 
@@ -190,8 +199,9 @@ def cylinder_transfer(frequency, radius, distance, *, density=AIR_DENSITY,
     return out
 
 
-def pulsating_sphere_transfer(frequency, radius, distance, *, density=AIR_DENSITY,
-                              sound_speed=AIR_SOUND_SPEED) -> np.ndarray:
+def pulsating_sphere_transfer(
+    frequency, radius, distance, *, density=AIR_DENSITY, sound_speed=AIR_SOUND_SPEED
+) -> np.ndarray:
     """Pressure per unit surface velocity of a pulsating sphere (seed 003 eq. 23).
 
     p = rho_0 c_0 (r_0/r) (j k r_0 / (1 + j k r_0)) e^{-jk(r - r_0)} u, whose magnitude is
@@ -223,12 +233,16 @@ def pulsating_sphere_transfer(frequency, radius, distance, *, density=AIR_DENSIT
     """
     r0, r = _radius_and_distance(radius, distance, "sphere")
     k = _wavenumber(frequency, sound_speed)
-    return (pulsating_sphere_source(k, r0, density=density, sound_speed=sound_speed)
-            * np.exp(-1j * k * r) / r)
+    return (
+        pulsating_sphere_source(k, r0, density=density, sound_speed=sound_speed)
+        * np.exp(-1j * k * r)
+        / r
+    )
 
 
-def pulsating_sphere_source(wavenumber, radius, *, density=AIR_DENSITY,
-                            sound_speed=AIR_SOUND_SPEED) -> np.ndarray:
+def pulsating_sphere_source(
+    wavenumber, radius, *, density=AIR_DENSITY, sound_speed=AIR_SOUND_SPEED
+) -> np.ndarray:
     """Source strength G(k) of a pulsating sphere, p = G(k) e^{-jkr} / r per unit surface
     velocity: G = rho_0 c_0 r_0 e^{j k r_0} j k r_0 / (1 + j k r_0) (eq. 23) [Pa m/(m/s)].
 
@@ -247,8 +261,9 @@ def pulsating_sphere_source(wavenumber, radius, *, density=AIR_DENSITY,
     return rc * r0 * np.exp(1j * kr0) * 1j * kr0 / (1 + 1j * kr0)
 
 
-def oscillating_sphere_source(wavenumber, radius, *, density=AIR_DENSITY,
-                              sound_speed=AIR_SOUND_SPEED) -> tuple[np.ndarray, np.ndarray]:
+def oscillating_sphere_source(
+    wavenumber, radius, *, density=AIR_DENSITY, sound_speed=AIR_SOUND_SPEED
+) -> tuple[np.ndarray, np.ndarray]:
     """Source strengths (G_1, G_2) of a rigid sphere translating with velocity u:
     p = (G_1 e^{-jkr}/r + G_2 e^{-jkr}/r^2) cos(theta) u, theta from the velocity direction
     (Morse & Ingard 1968, sec. 7.2) [Pa m/(m/s), Pa m^2/(m/s)].
@@ -274,8 +289,9 @@ def oscillating_sphere_source(wavenumber, radius, *, density=AIR_DENSITY,
     return common * (-(kr0**2)), common * 1j * k * r0**2
 
 
-def oscillating_sphere_transfer(frequency, radius, distance, *, density=AIR_DENSITY,
-                                sound_speed=AIR_SOUND_SPEED) -> np.ndarray:
+def oscillating_sphere_transfer(
+    frequency, radius, distance, *, density=AIR_DENSITY, sound_speed=AIR_SOUND_SPEED
+) -> np.ndarray:
     """Pressure per unit velocity of a translating rigid sphere on its axis of motion
     (theta = 0; multiply by cos(theta) off it) [Pa/(m/s)].
 

@@ -31,9 +31,16 @@ from .solver import (
     solve,
 )
 
-__all__ = ["DOF_NAMES", "MAX_SPEED_FACTOR", "RACE_CONTROLS", "LoadDistribution",
-           "centrifugal_force", "inner_ring_expansion", "solve_load_distribution",
-           "speed_limit"]
+__all__ = [
+    "DOF_NAMES",
+    "MAX_SPEED_FACTOR",
+    "RACE_CONTROLS",
+    "LoadDistribution",
+    "centrifugal_force",
+    "inner_ring_expansion",
+    "solve_load_distribution",
+    "speed_limit",
+]
 
 
 #: Highest n d_m the model is validated for [mm/min] (Harris's 218 bearing, 20 000 rpm, is
@@ -48,12 +55,21 @@ def speed_limit(bearing: BallBearing) -> float:
     return MAX_SPEED_FACTOR / (bearing.pitch_diameter * 1e3) * math.pi / 30.0
 
 
-def solve_load_distribution(bearing: BallBearing, condition: OperatingCondition, *,
-                            ball_phase: float | None = None, ball_diameter_errors=None,
-                            film=None, lubricant=None, temperature: float | None = None,
-                            gyroscopic: bool = False, ring_expansion: bool = False,
-                            tolerance: float = 1e-9, initial=None,
-                            race_control: str = "outer") -> LoadDistribution:
+def solve_load_distribution(
+    bearing: BallBearing,
+    condition: OperatingCondition,
+    *,
+    ball_phase: float | None = None,
+    ball_diameter_errors=None,
+    film=None,
+    lubricant=None,
+    temperature: float | None = None,
+    gyroscopic: bool = False,
+    ring_expansion: bool = False,
+    tolerance: float = 1e-9,
+    initial=None,
+    race_control: str = "outer",
+) -> LoadDistribution:
     """Quasi-static equilibrium of ``bearing`` under ``condition``.
 
     Parameters
@@ -111,55 +127,100 @@ def solve_load_distribution(bearing: BallBearing, condition: OperatingCondition,
     limit = speed_limit(bearing)
     if condition.shaft_speed > limit * (1 + 1e-12):
         rpm, top = condition.shaft_speed * 30 / math.pi, limit * 30 / math.pi
-        raise InputError("shaft_speed", f"{rpm:.6g} rpm",
-                         f"at most {top:.6g} rpm for this bearing (n d_m <= "
-                         f"{MAX_SPEED_FACTOR:.0e} mm/min with d_m = "
-                         f"{bearing.pitch_diameter * 1e3:.4g} mm)",
-                         "beyond it the quasi-static model is not valid: centrifugal force "
-                         "swamps the contact loads")
+        raise InputError(
+            "shaft_speed",
+            f"{rpm:.6g} rpm",
+            f"at most {top:.6g} rpm for this bearing (n d_m <= "
+            f"{MAX_SPEED_FACTOR:.0e} mm/min with d_m = "
+            f"{bearing.pitch_diameter * 1e3:.4g} mm)",
+            "beyond it the quasi-static model is not valid: centrifugal force "
+            "swamps the contact loads",
+        )
     if ring_expansion and condition.shaft_speed > 0:
         shrink = 2.0 * inner_ring_expansion(bearing, condition.shaft_speed)
-        bearing = dataclasses.replace(bearing, diametral_clearance=bearing.diametral_clearance
-                                      - shrink)
+        bearing = dataclasses.replace(
+            bearing, diametral_clearance=bearing.diametral_clearance - shrink
+        )
     try:
-        u, b, state, problem = _solve_coupled(bearing, condition, ball_phase,
-                                              ball_diameter_errors, film, lubricant,
-                                              temperature, gyroscopic, tolerance, initial,
-                                              race_control)
+        u, b, state, problem = _solve_coupled(
+            bearing,
+            condition,
+            ball_phase,
+            ball_diameter_errors,
+            film,
+            lubricant,
+            temperature,
+            gyroscopic,
+            tolerance,
+            initial,
+            race_control,
+        )
     except ConvergenceError as exc:
         told = _in_user_terms(exc, bearing, condition)
         if told is exc and gyroscopic and condition.shaft_speed > 0:
-            told = ConvergenceError(f"{exc}; with the gyroscopic moment held by friction "
-                                    f"({race_control} raceway control) there may be no "
-                                    "equilibrium at this speed: the friction needed can "
-                                    "exceed what a lightly loaded contact holds")
+            told = ConvergenceError(
+                f"{exc}; with the gyroscopic moment held by friction "
+                f"({race_control} raceway control) there may be no "
+                "equilibrium at this speed: the friction needed can "
+                "exceed what a lightly loaded contact holds"
+            )
         raise told from exc
     q, n_rho, n_z, delta, speed, force, stiffness = state
     if problem.spd[0] <= 0:
-        q = np.where(q <= 10 * CENTRIFUGAL_FLOOR, 0.0, q)   # the floor is not a real load
+        q = np.where(q <= 10 * CENTRIFUGAL_FLOOR, 0.0, q)  # the floor is not a real load
     ring = problem.contacts.ring
     # sign: + when the line from the inner to the outer contact leans towards +z
     angle = signed_contact_angles(ring, n_rho, n_z)
     return LoadDistribution(
-        bearing=bearing, condition=condition, displacement=u, ball_angle=problem.psi,
-        ball_centre=b, ring=ring, load=q, approach=delta, contact_angle=angle,
-        film=problem.film, stiffness_matrix=stiffness, reaction=force,
-        groove_radius=problem.contacts.groove_radius, orbital_speed=speed[:, 4].copy(),
+        bearing=bearing,
+        condition=condition,
+        displacement=u,
+        ball_angle=problem.psi,
+        ball_centre=b,
+        ring=ring,
+        load=q,
+        approach=delta,
+        contact_angle=angle,
+        film=problem.film,
+        stiffness_matrix=stiffness,
+        reaction=force,
+        groove_radius=problem.contacts.groove_radius,
+        orbital_speed=speed[:, 4].copy(),
         ball_centrifugal_force=np.where(problem.spd[0] > 0, speed[:, 6], 0.0),
-        gyroscopic_moment=speed[:, 5].copy(), race_control=race_control,
-        outer_controlled=problem.control == 0)
+        gyroscopic_moment=speed[:, 5].copy(),
+        race_control=race_control,
+        outer_controlled=problem.control == 0,
+    )
 
 
-def _solve_coupled(bearing, condition, ball_phase, ball_diameter_errors, film, lubricant,
-                   temperature, gyroscopic, tolerance, initial, race_control):
+def _solve_coupled(
+    bearing,
+    condition,
+    ball_phase,
+    ball_diameter_errors,
+    film,
+    lubricant,
+    temperature,
+    gyroscopic,
+    tolerance,
+    initial,
+    race_control,
+):
     """The solve, repeated until what depends on its result settles: the film (at its
     loads) and, for ``hybrid``, which race controls each ball. (The cage speed of balls
     not driven by both races, the mean orbital speed of those that are, is settled inside
     the ball kernel.)"""
     if ball_phase is None:
         ball_phase = condition.radial_load_angle
-    problem = _Problem(bearing, condition, float(ball_phase), ball_diameter_errors, film,
-                       gyroscopic=gyroscopic, race_control=race_control)
+    problem = _Problem(
+        bearing,
+        condition,
+        float(ball_phase),
+        ball_diameter_errors,
+        film,
+        gyroscopic=gyroscopic,
+        race_control=race_control,
+    )
     kwargs = {"tolerance": tolerance, "problem": problem}
     u, b, state, problem, _ = solve(bearing, condition, initial=initial, **kwargs)
     if condition.shaft_speed <= 0:
@@ -168,8 +229,9 @@ def _solve_coupled(bearing, condition, ball_phase, ball_diameter_errors, film, l
     for _ in range(30):
         changed = False
         if with_film:
-            h = contact_films(bearing, lubricant, condition.shaft_speed, problem.contacts.ring,
-                              state, temperature)
+            h = contact_films(
+                bearing, lubricant, condition.shaft_speed, problem.contacts.ring, state, temperature
+            )
             changed |= bool(np.max(np.abs(h - problem.film)) >= 1e-9)
             problem.film = np.ascontiguousarray(h)
         if race_control == "hybrid":
@@ -179,8 +241,9 @@ def _solve_coupled(bearing, condition, ball_phase, ball_diameter_errors, film, l
         if not changed:
             return u, b, state, problem
         u, b, state, problem, _ = solve(bearing, condition, initial=u, **kwargs)
-    raise ConvergenceError("the EHL film / raceway control and the load "
-                           "distribution did not settle within 30 passes")
+    raise ConvergenceError(
+        "the EHL film / raceway control and the load distribution did not settle within 30 passes"
+    )
 
 
 def _driven(problem, state) -> np.ndarray:
@@ -210,22 +273,25 @@ def outer_raceway_controls(bearing: BallBearing, problem, state) -> np.ndarray:
     angle = signed_contact_angles(problem.contacts.ring, n_rho, n_z)
     e_prime = effective_modulus(bearing.ball_material, bearing.ring_material)
     moment, mean = {}, {}
-    for race, name, f in ((0, "inner", bearing.inner_groove_factor),
-                          (1, "outer", bearing.outer_groove_factor)):
+    for race, name, f in (
+        (0, "inner", bearing.inner_groove_factor),
+        (1, "outer", bearing.outer_groove_factor),
+    ):
         cols = problem.contacts.ring == race
         load = q[:, cols].sum(axis=1)
-        a = np.where(load > 0, (q[:, cols] * angle[:, cols]).sum(axis=1)
-                     / np.where(load > 0, load, 1.0), 0.0)
-        rx, ry = contact_radii(bearing.ball_diameter, bearing.pitch_diameter, f, np.abs(a),
-                               name)
+        a = np.where(
+            load > 0, (q[:, cols] * angle[:, cols]).sum(axis=1) / np.where(load > 0, load, 1.0), 0.0
+        )
+        rx, ry = contact_radii(bearing.ball_diameter, bearing.pitch_diameter, f, np.abs(a), name)
         c = hertz.point_contact(np.maximum(load, 1e-9), rx, np.full_like(rx, ry), e_prime)
         moment[race] = load * c.semi_major * c.second_kind
         mean[race] = a
     return moment[1] * np.cos(mean[0] - mean[1]) > moment[0]
 
 
-def _in_user_terms(exc: ConvergenceError, bearing: BallBearing,
-                   condition: OperatingCondition) -> ConvergenceError:
+def _in_user_terms(
+    exc: ConvergenceError, bearing: BallBearing, condition: OperatingCondition
+) -> ConvergenceError:
     """A solver failure for a load beyond the static rating, told as that load against C0
     (ISO 76, life/ratings.py); other failures keep the solver's words."""
     try:
@@ -234,7 +300,7 @@ def _in_user_terms(exc: ConvergenceError, bearing: BallBearing,
 
         c0 = load_ratings(bearing).static
         p0 = equivalent_static_load(bearing, condition.radial_load, abs(condition.axial_load))
-    except (InputError, ValueError):    # no rating for this geometry: keep the solver's
+    except (InputError, ValueError):  # no rating for this geometry: keep the solver's
         return exc
     if p0 <= c0:
         return exc
@@ -242,11 +308,18 @@ def _in_user_terms(exc: ConvergenceError, bearing: BallBearing,
         f"the contacts cannot carry this load: F_r = {condition.radial_load:.6g} N, "
         f"F_a = {condition.axial_load:.6g} N give a static equivalent load P0 = {p0:.6g} N, "
         f"{p0 / c0:.3g} times the static rating C0 = {c0:.6g} N (ISO 76; s0 = "
-        f"{c0 / p0:.3g}): no equilibrium exists for it")
+        f"{c0 / p0:.3g}): no equilibrium exists for it"
+    )
 
 
-def contact_films(bearing: BallBearing, lubricant, shaft_speed: float, ring, state,
-                  temperature: float | None = None) -> np.ndarray:
+def contact_films(
+    bearing: BallBearing,
+    lubricant,
+    shaft_speed: float,
+    ring,
+    state,
+    temperature: float | None = None,
+) -> np.ndarray:
     """Hamrock-Dowson central film of every (ball, contact) at its load and angle [m].
 
     Unloaded contacts get the film of a light load (1 % of the largest contact load, at
@@ -275,9 +348,16 @@ def contact_films(bearing: BallBearing, lubricant, shaft_speed: float, ring, sta
     film = np.empty_like(q)
     for race, name in ((0, "inner"), (1, "outer")):
         cols = ring == race
-        film[:, cols] = film_thickness(bearing, lubricant, np.maximum(q[:, cols], light),
-                                       shaft_speed, name, temperature=temperature,
-                                       contact_angle=angle[:, cols], kind="central")
+        film[:, cols] = film_thickness(
+            bearing,
+            lubricant,
+            np.maximum(q[:, cols], light),
+            shaft_speed,
+            name,
+            temperature=temperature,
+            contact_angle=angle[:, cols],
+            kind="central",
+        )
     return film
 
 
@@ -293,4 +373,4 @@ def signed_contact_angles(ring, n_rho, n_z) -> np.ndarray:
         Unit normals from the groove centre to the ball centre [-].
     """
     sigma = np.where(ring == 0, -1.0, 1.0)
-    return np.arctan2(sigma * n_z, np.abs(n_rho)) + 0.0     # + 0.0: no "-0"
+    return np.arctan2(sigma * n_z, np.abs(n_rho)) + 0.0  # + 0.0: no "-0"

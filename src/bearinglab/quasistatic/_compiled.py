@@ -95,8 +95,16 @@ def _drive(qi, qo, fc0):
 def speed_force(q, nr, nz, ring, control, lam_i, spd, out):
     """Speed forces on one ball from its contacts (see speed.py):
     out = (F_rho, F_z total, inner-friction F_rho, F_z, omega_m, M_g, F_c)."""
-    omega, g, hmd, inertia, dw, gyro, wm0, floor = (spd[0], spd[1], spd[2], spd[3], spd[4],
-                                                     spd[5], spd[6], spd[7])
+    omega, g, hmd, inertia, dw, gyro, wm0, floor = (
+        spd[0],
+        spd[1],
+        spd[2],
+        spd[3],
+        spd[4],
+        spd[5],
+        spd[6],
+        spd[7],
+    )
     qi = 0.0
     qo = 0.0
     ai = 0.0
@@ -148,16 +156,38 @@ def speed_force(q, nr, nz, ring, control, lam_i, spd, out):
 
 
 @numba.njit(cache=True)
-def _ball(br, bz, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, control, lam_i,
-          spd, q, nr, nz, dl, s, sp, tmp):
+def _ball(
+    br,
+    bz,
+    c_rho,
+    c_z,
+    free,
+    radius,
+    side,
+    z0,
+    k_poly,
+    film,
+    ring,
+    control,
+    lam_i,
+    spd,
+    q,
+    nr,
+    nz,
+    dl,
+    s,
+    sp,
+    tmp,
+):
     """All contacts of one ball at (br, bz) into q, nr, nz, dl, s; speed forces into sp;
     returns the total force on the ball (g_rho, g_z). ``tmp``: work array (8,)."""
     ncon = c_rho.shape[0]
     g_rho = 0.0
     g_z = 0.0
     for k in range(ncon):
-        _contact(br - c_rho[k], bz - c_z[k], free[k], radius[k], side[k], z0[k], k_poly[k],
-                 film[k], tmp)
+        _contact(
+            br - c_rho[k], bz - c_z[k], free[k], radius[k], side[k], z0[k], k_poly[k], film[k], tmp
+        )
         q[k] = tmp[0]
         nr[k] = tmp[1]
         nz[k] = tmp[2]
@@ -173,8 +203,28 @@ def _ball(br, bz, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, contro
 
 
 @numba.njit(cache=True)
-def _speed_derivatives(br, bz, c_rho, c_z, free, radius, side, z0, k_poly, film, ring,
-                       control, lam_i, spd, q, nr, nz, dmat, emat, work):
+def _speed_derivatives(
+    br,
+    bz,
+    c_rho,
+    c_z,
+    free,
+    radius,
+    side,
+    z0,
+    k_poly,
+    film,
+    ring,
+    control,
+    lam_i,
+    spd,
+    q,
+    nr,
+    nz,
+    dmat,
+    emat,
+    work,
+):
     """Central differences of the speed forces on the ball per contact vector v_l = b - c_l:
     dmat[lc] = d(total speed force)/dv_l, emat[lc] = d(inner friction)/dv_l (2 x 2 each).
     Zero for a ball not driven by both races (its speed forces do not depend on v) and for
@@ -239,8 +289,34 @@ def _seat(br, bz, c_rho, c_z, free, ring, q, fc, k_seat):
 
 
 @numba.njit(cache=True)
-def solve_ball(b, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, control, lam_i,
-               spd, k_seat, tol, max_iterations, q, nr, nz, dl, s, sp, dmat, emat, work, ts):
+def solve_ball(
+    b,
+    c_rho,
+    c_z,
+    free,
+    radius,
+    side,
+    z0,
+    k_poly,
+    film,
+    ring,
+    control,
+    lam_i,
+    spd,
+    k_seat,
+    tol,
+    max_iterations,
+    q,
+    nr,
+    nz,
+    dl,
+    s,
+    sp,
+    dmat,
+    emat,
+    work,
+    ts,
+):
     """Newton's method on one ball's equilibrium; b (2,) is updated in place. Returns
     (residual [N], converged). A ball whose loads are all below 10 tol is loose. ``work``:
     (10, C + 8) and ts (C, 2, 2) work arrays."""
@@ -253,24 +329,86 @@ def solve_ball(b, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, contro
     tsp = work[9, :7]
     br, bz = b[0], b[1]
     fc_seat = max(spd[2] * spd[6] * spd[6], spd[7])
-    _ball(br, bz, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, control, lam_i,
-          spd, q, nr, nz, dl, s, sp, tmp)
+    _ball(
+        br,
+        bz,
+        c_rho,
+        c_z,
+        free,
+        radius,
+        side,
+        z0,
+        k_poly,
+        film,
+        ring,
+        control,
+        lam_i,
+        spd,
+        q,
+        nr,
+        nz,
+        dl,
+        s,
+        sp,
+        tmp,
+    )
     br = _seat(br, bz, c_rho, c_z, free, ring, q, fc_seat, k_seat)
-    gr, gz = _ball(br, bz, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, control,
-                   lam_i, spd, q, nr, nz, dl, s, sp, tmp)
+    gr, gz = _ball(
+        br,
+        bz,
+        c_rho,
+        c_z,
+        free,
+        radius,
+        side,
+        z0,
+        k_poly,
+        film,
+        ring,
+        control,
+        lam_i,
+        spd,
+        q,
+        nr,
+        nz,
+        dl,
+        s,
+        sp,
+        tmp,
+    )
     done = False
     for _ in range(max_iterations):
         norm = math.sqrt(gr * gr + gz * gz)
         if norm <= tol or np.max(q) <= 10.0 * tol:
             done = True
             break
-        _speed_derivatives(br, bz, c_rho, c_z, free, radius, side, z0, k_poly, film, ring,
-                           control, lam_i, spd, q, nr, nz, dmat, emat, work)
+        _speed_derivatives(
+            br,
+            bz,
+            c_rho,
+            c_z,
+            free,
+            radius,
+            side,
+            z0,
+            k_poly,
+            film,
+            ring,
+            control,
+            lam_i,
+            spd,
+            q,
+            nr,
+            nz,
+            dmat,
+            emat,
+            work,
+        )
         a = 0.0
         bb = 0.0
         c = 0.0
         d = 0.0
-        for lc in range(ncon):      # sum_l P_l = sum_l (D_l - S_l): d force / d b
+        for lc in range(ncon):  # sum_l P_l = sum_l (D_l - S_l): d force / d b
             a += dmat[lc, 0, 0] - s[lc, 0, 0]
             bb += dmat[lc, 0, 1] - s[lc, 0, 1]
             c += dmat[lc, 1, 0] - s[lc, 1, 0]
@@ -286,16 +424,58 @@ def solve_ball(b, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, contro
         for _ in range(30):
             nr_t = br + lam * step_r
             nz_t = bz + lam * step_z
-            tgr, tgz = _ball(nr_t, nz_t, c_rho, c_z, free, radius, side, z0, k_poly, film,
-                             ring, control, lam_i, spd, tq, tr, tz, td, ts, tsp, tmp)
+            tgr, tgz = _ball(
+                nr_t,
+                nz_t,
+                c_rho,
+                c_z,
+                free,
+                radius,
+                side,
+                z0,
+                k_poly,
+                film,
+                ring,
+                control,
+                lam_i,
+                spd,
+                tq,
+                tr,
+                tz,
+                td,
+                ts,
+                tsp,
+                tmp,
+            )
             allowed = (NONMONOTONE_FACTOR if lam == 1.0 else 1 - 1e-4 * lam) * norm
             if math.sqrt(tgr * tgr + tgz * tgz) <= allowed or lam <= 1e-6:
                 break
             lam *= 0.5
         br = _seat(nr_t, nz_t, c_rho, c_z, free, ring, tq, fc_seat, k_seat)
         bz = nz_t
-        gr, gz = _ball(br, bz, c_rho, c_z, free, radius, side, z0, k_poly, film, ring,
-                       control, lam_i, spd, q, nr, nz, dl, s, sp, tmp)
+        gr, gz = _ball(
+            br,
+            bz,
+            c_rho,
+            c_z,
+            free,
+            radius,
+            side,
+            z0,
+            k_poly,
+            film,
+            ring,
+            control,
+            lam_i,
+            spd,
+            q,
+            nr,
+            nz,
+            dl,
+            s,
+            sp,
+            tmp,
+        )
         moved = lam * math.sqrt(step_r * step_r + step_z * step_z)
         if moved < 1e-16 and math.sqrt(gr * gr + gz * gz) <= 1e3 * tol:
             done = True
@@ -336,7 +516,7 @@ def _condense(tj, inner, s, q, nr, nz, dmat, emat, sp, force, stiff, cw):
     p11 = 0.0
     for lc in range(ncon):
         if q[lc] <= 0:
-            continue                      # an unloaded contact adds nothing
+            continue  # an unloaded contact adds nothing
         l00 = dmat[lc, 0, 0] - s[lc, 0, 0]
         l01 = dmat[lc, 0, 1] - s[lc, 0, 1]
         l10 = dmat[lc, 1, 0] - s[lc, 1, 0]
@@ -381,8 +561,26 @@ def _condense(tj, inner, s, q, nr, nz, dmat, emat, sp, force, stiff, cw):
 
 
 @numba.njit(cache=True)
-def solve_balls(b, c_rho, c_z, t, inner, free, radius, side, z0, k_poly, film, ring,
-                control, lam_i, spd, k_seat, tol, max_iterations=100):
+def solve_balls(
+    b,
+    c_rho,
+    c_z,
+    t,
+    inner,
+    free,
+    radius,
+    side,
+    z0,
+    k_poly,
+    film,
+    ring,
+    control,
+    lam_i,
+    spd,
+    k_seat,
+    tol,
+    max_iterations=100,
+):
     """Every ball's equilibrium for given groove centres, the force of the balls on the
     inner ring (5,) and the condensed stiffness (5, 5). Returns (b, q, n_rho, n_z, delta,
     speed (Z, 7), force, stiffness, worst residual [N], converged).
@@ -408,10 +606,34 @@ def solve_balls(b, c_rho, c_z, t, inner, free, radius, side, z0, k_poly, film, r
     driven = np.zeros(nb, dtype=np.bool_)
     spd = spd.copy()
     for j in range(nb):
-        res[j], ok[j] = solve_ball(b[j], c_rho[j], c_z[j], free[j], radius, side, z0,
-                                   k_poly, film[j], ring, control[j], lam_i[j], spd, k_seat,
-                                   tol, max_iterations, q[j], nr[j], nz[j], dl[j], s[j], sp[j],
-                                   dmat, emat, work, ts)
+        res[j], ok[j] = solve_ball(
+            b[j],
+            c_rho[j],
+            c_z[j],
+            free[j],
+            radius,
+            side,
+            z0,
+            k_poly,
+            film[j],
+            ring,
+            control[j],
+            lam_i[j],
+            spd,
+            k_seat,
+            tol,
+            max_iterations,
+            q[j],
+            nr[j],
+            nz[j],
+            dl[j],
+            s[j],
+            sp[j],
+            dmat,
+            emat,
+            work,
+            ts,
+        )
     if spd[0] > 0:
         total = 0.0
         count = 0
@@ -432,14 +654,57 @@ def solve_balls(b, c_rho, c_z, t, inner, free, radius, side, z0, k_poly, film, r
             for j in range(nb):
                 if not driven[j]:
                     res[j], ok[j] = solve_ball(
-                        b[j], c_rho[j], c_z[j], free[j], radius, side, z0, k_poly, film[j],
-                        ring, control[j], lam_i[j], spd, k_seat, tol, max_iterations, q[j],
-                        nr[j], nz[j], dl[j], s[j], sp[j], dmat, emat, work, ts)
+                        b[j],
+                        c_rho[j],
+                        c_z[j],
+                        free[j],
+                        radius,
+                        side,
+                        z0,
+                        k_poly,
+                        film[j],
+                        ring,
+                        control[j],
+                        lam_i[j],
+                        spd,
+                        k_seat,
+                        tol,
+                        max_iterations,
+                        q[j],
+                        nr[j],
+                        nz[j],
+                        dl[j],
+                        s[j],
+                        sp[j],
+                        dmat,
+                        emat,
+                        work,
+                        ts,
+                    )
     force = np.zeros(5)
     stiff = np.zeros((5, 5))
     for j in range(nb):
-        _speed_derivatives(b[j, 0], b[j, 1], c_rho[j], c_z[j], free[j], radius, side, z0,
-                           k_poly, film[j], ring, control[j], lam_i[j], spd, q[j], nr[j],
-                           nz[j], dmat, emat, work)
+        _speed_derivatives(
+            b[j, 0],
+            b[j, 1],
+            c_rho[j],
+            c_z[j],
+            free[j],
+            radius,
+            side,
+            z0,
+            k_poly,
+            film[j],
+            ring,
+            control[j],
+            lam_i[j],
+            spd,
+            q[j],
+            nr[j],
+            nz[j],
+            dmat,
+            emat,
+            work,
+        )
         _condense(t[j], inner, s[j], q[j], nr[j], nz[j], dmat, emat, sp[j], force, stiff, cw)
     return b, q, nr, nz, dl, sp, force, stiff, np.max(res), np.all(ok)

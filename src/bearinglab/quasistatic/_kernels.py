@@ -55,7 +55,7 @@ def contact_state(b_rho, b_z, c_rho, c_z, free, radius, side, z0, k_poly, film):
     k = np.zeros_like(c)
     dk = np.zeros_like(c)
     degree = k_poly.shape[1] - 1
-    for p in range(degree + 1):                 # Horner for K and K'
+    for p in range(degree + 1):  # Horner for K and K'
         k = k * c + k_poly[:, p]
         if p < degree:
             dk = dk * c + k_poly[:, p] * (degree - p)
@@ -65,8 +65,8 @@ def contact_state(b_rho, b_z, c_rho, c_z, free, radius, side, z0, k_poly, film):
     root = np.sqrt(dpos)
     q = k * dpos * root
     sgn = np.sign(n_rho)
-    dq_dn = 1.5 * k * root                       # dQ/ddelta
-    dq_dc = dk * dpos * root                     # dQ/dc
+    dq_dn = 1.5 * k * root  # dQ/ddelta
+    dq_dc = dk * dpos * root  # dQ/dc
     # dQ/dv = dq_dn n + dq_dc sgn (e_rho - n_rho n)/|v|
     g_rho = dq_dn * n_rho + dq_dc * sgn * (1.0 - n_rho * n_rho) / dist
     g_z = dq_dn * n_z + dq_dc * sgn * (-n_rho * n_z) / dist
@@ -171,8 +171,7 @@ def speed_forces(q, n_rho, n_z, ring, control, lam_i, spd):
             beta, orbit, spin = raceway_control_kinematics(a_i[sel], a_o[sel], g, name)
             wm[sel] = wm0 + ramp[sel] * (omega * orbit - wm0)
             if gyro > 0:
-                mg[sel] = (ramp[sel] * inertia * np.abs(spin) * omega**2 * orbit
-                           * np.sin(beta))
+                mg[sel] = ramp[sel] * inertia * np.abs(spin) * omega**2 * orbit * np.sin(beta)
     lo = 2.0 - lam_i
     out[:, 2] = -lam_i * mg / dw * np.sin(a_i)
     out[:, 3] = s * lam_i * mg / dw * np.cos(a_i)
@@ -183,8 +182,9 @@ def speed_forces(q, n_rho, n_z, ring, control, lam_i, spd):
     return out
 
 
-def _speed_derivatives(b, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, control,
-                       lam_i, spd, state):
+def _speed_derivatives(
+    b, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, control, lam_i, spd, state
+):
     """D (Z, C, 2, 2) and E (Z, C, 2, 2): central differences of the total speed force and
     of the inner friction with respect to each contact vector v_l = b - c_l."""
     q, n_rho, n_z = state[:3]
@@ -197,11 +197,18 @@ def _speed_derivatives(b, c_rho, c_z, free, radius, side, z0, k_poly, film, ring
             for sign in (1.0, -1.0):
                 shift = np.zeros((nb, 2))
                 shift[:, a] = sign * h
-                one = contact_state(b[:, 0] + shift[:, 0], b[:, 1] + shift[:, 1],
-                                    c_rho[:, col:col + 1], c_z[:, col:col + 1],
-                                    free[:, col:col + 1], radius[col:col + 1],
-                                    side[col:col + 1], z0[col:col + 1], k_poly[col:col + 1],
-                                    film[:, col:col + 1])
+                one = contact_state(
+                    b[:, 0] + shift[:, 0],
+                    b[:, 1] + shift[:, 1],
+                    c_rho[:, col : col + 1],
+                    c_z[:, col : col + 1],
+                    free[:, col : col + 1],
+                    radius[col : col + 1],
+                    side[col : col + 1],
+                    z0[col : col + 1],
+                    k_poly[col : col + 1],
+                    film[:, col : col + 1],
+                )
                 qq, rr, zz = q.copy(), n_rho.copy(), n_z.copy()
                 qq[:, col], rr[:, col], zz[:, col] = one[0][:, 0], one[1][:, 0], one[2][:, 0]
                 sp = speed_forces(qq, rr, zz, ring, control, lam_i, spd)
@@ -223,9 +230,9 @@ def condense(t, inner, state, sp, d, e):
     t_in = t[:, inner]
     qi = np.where(inner, q, 0.0).sum(axis=1)
     w = np.where(inner[None, :], q, 0.0) / np.where(qi > 0, qi, 1.0)[:, None]
-    tbar = np.einsum("jk,jkab->jab", w, t)                                   # (Z, 2, 5)
-    p = d - s                                                                 # (Z, C, 2, 2)
-    phi = np.einsum("jad,jkab->jkdb", tbar, e)                                # (Z, C, 5, 2)
+    tbar = np.einsum("jk,jkab->jab", w, t)  # (Z, 2, 5)
+    p = d - s  # (Z, C, 2, 2)
+    phi = np.einsum("jad,jkab->jkdb", tbar, e)  # (Z, C, 5, 2)
     phi[:, inner] -= np.einsum("jkad,jkab->jkdb", t_in, s[:, inner])
     psum = p.sum(axis=1)
     det = psum[:, 0, 0] * psum[:, 1, 1] - psum[:, 0, 1] * psum[:, 1, 0]
@@ -243,8 +250,26 @@ def condense(t, inner, state, sp, d, e):
     return force, stiffness
 
 
-def solve_balls_numpy(b, c_rho, c_z, t, inner, free, radius, side, z0, k_poly, film, ring,
-                      control, lam_i, spd, k_seat, tol, max_iterations=100):
+def solve_balls_numpy(
+    b,
+    c_rho,
+    c_z,
+    t,
+    inner,
+    free,
+    radius,
+    side,
+    z0,
+    k_poly,
+    film,
+    ring,
+    control,
+    lam_i,
+    spd,
+    k_seat,
+    tol,
+    max_iterations=100,
+):
     """Newton's method on every ball's equilibrium (all balls at once, NumPy twin of
     _compiled.solve_balls, same arguments and returns: b, q, n_rho, n_z, delta, speed
     (Z, 7), force (5,), stiffness (5, 5), worst residual [N], converged).
@@ -260,26 +285,31 @@ def solve_balls_numpy(b, c_rho, c_z, t, inner, free, radius, side, z0, k_poly, f
     if spd[0] > 0:
         q = st[0]
         qi, qo = q[:, inner].sum(axis=1), q[:, ~inner].sum(axis=1)
-        driven = (qi > 0) & (qo > 0) & (np.minimum(qi, qo) >= DRIVE_SHARE * spd[2]
-                                         * spd[6] ** 2)
+        driven = (qi > 0) & (qo > 0) & (np.minimum(qi, qo) >= DRIVE_SHARE * spd[2] * spd[6] ** 2)
         if 0 < driven.sum() < len(b):
             spd[6] = float(np.mean(speed_forces(*st[:3], ring, control, lam_i, spd)[driven, 4]))
             rest = ~driven
-            sub = [a[rest] if getattr(a, "shape", ()) and a.shape[0] == len(b) and a.ndim > 1
-                   else a for a in args]
+            sub = [
+                a[rest] if getattr(a, "shape", ()) and a.shape[0] == len(b) and a.ndim > 1 else a
+                for a in args
+            ]
             sub[9], sub[10] = control[rest], lam_i[rest]
-            b2, st2, norm2, ok2 = _solve_all(b[rest], *sub, spd, ~inner, k_seat, tol,
-                                             max_iterations)
+            b2, st2, norm2, ok2 = _solve_all(
+                b[rest], *sub, spd, ~inner, k_seat, tol, max_iterations
+            )
             b = b.copy()
             b[rest] = b2
-            st = tuple(np.where(rest.reshape((-1,) + (1,) * (a.ndim - 1)), _spread(a2, rest),
-                                a) for a, a2 in zip(st, st2, strict=True))
+            st = tuple(
+                np.where(rest.reshape((-1,) + (1,) * (a.ndim - 1)), _spread(a2, rest), a)
+                for a, a2 in zip(st, st2, strict=True)
+            )
             norm[rest] = norm2
             ok = ok and ok2
     sp = speed_forces(*st[:3], ring, control, lam_i, spd)
     if spd[0] > 0:
-        d, e = _speed_derivatives(b, c_rho, c_z, free, radius, side, z0, k_poly, film, ring,
-                                  control, lam_i, spd, st)
+        d, e = _speed_derivatives(
+            b, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, control, lam_i, spd, st
+        )
     else:
         d = e = np.zeros(st[4].shape)
     force, stiffness = condense(t, inner, st, sp, d, e)
@@ -293,20 +323,38 @@ def _spread(values, rows):
     return out
 
 
-def _solve_all(b, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, control, lam_i,
-               spd, outer, k_seat, tol, max_iterations):
+def _solve_all(
+    b,
+    c_rho,
+    c_z,
+    free,
+    radius,
+    side,
+    z0,
+    k_poly,
+    film,
+    ring,
+    control,
+    lam_i,
+    spd,
+    outer,
+    k_seat,
+    tol,
+    max_iterations,
+):
     """The Newton iteration over all given balls at once; returns (b, state, residuals,
     converged)."""
     fc_seat = max(spd[2] * spd[6] ** 2, spd[7])
 
     def state(bb):
-        return contact_state(bb[:, 0], bb[:, 1], c_rho, c_z, free, radius, side, z0, k_poly,
-                             film)
+        return contact_state(bb[:, 0], bb[:, 1], c_rho, c_z, free, radius, side, z0, k_poly, film)
 
     def residual(st):
         sp = speed_forces(st[0], st[1], st[2], ring, control, lam_i, spd)
-        return np.stack([sp[:, 0] - np.sum(st[0] * st[1], axis=1),
-                         sp[:, 1] - np.sum(st[0] * st[2], axis=1)], axis=1)
+        return np.stack(
+            [sp[:, 0] - np.sum(st[0] * st[1], axis=1), sp[:, 1] - np.sum(st[0] * st[2], axis=1)],
+            axis=1,
+        )
 
     b = seat_loose_balls(b, c_rho, c_z, free, outer, state(b)[0], fc_seat, k_seat)
     st = state(b)
@@ -314,23 +362,24 @@ def _solve_all(b, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, contro
     converged = False
     for _ in range(max_iterations):
         norm = np.hypot(g[:, 0], g[:, 1])
-        norm[np.max(st[0], axis=1) <= 10.0 * tol] = 0.0                      # loose balls
+        norm[np.max(st[0], axis=1) <= 10.0 * tol] = 0.0  # loose balls
         if np.all(norm <= tol):
             converged = True
             break
         if spd[0] > 0:
-            d = _speed_derivatives(b, c_rho, c_z, free, radius, side, z0, k_poly, film, ring,
-                                   control, lam_i, spd, st)[0]
+            d = _speed_derivatives(
+                b, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, control, lam_i, spd, st
+            )[0]
         else:
             d = 0.0
-        jb = (d - st[4]).sum(axis=1)                                         # sum_l P_l
+        jb = (d - st[4]).sum(axis=1)  # sum_l P_l
         det = jb[:, 0, 0] * jb[:, 1, 1] - jb[:, 0, 1] * jb[:, 1, 0]
         ok = np.abs(det) > 0
         step = np.zeros_like(b)
         step[ok, 0] = -(jb[ok, 1, 1] * g[ok, 0] - jb[ok, 0, 1] * g[ok, 1]) / det[ok]
         step[ok, 1] = -(-jb[ok, 1, 0] * g[ok, 0] + jb[ok, 0, 0] * g[ok, 1]) / det[ok]
         lam = np.ones(len(b))
-        for _ in range(30):                                                  # backtracking
+        for _ in range(30):  # backtracking
             trial = b + lam[:, None] * step
             trial_state = state(trial)
             g_new = residual(trial_state)
@@ -345,7 +394,8 @@ def _solve_all(b, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, contro
         st = state(b)
         g = residual(st)
         if np.max(np.abs(lam[:, None] * step)) < 1e-16 and np.all(
-                np.hypot(g[:, 0], g[:, 1]) <= 1e3 * tol):                     # round-off floor
+            np.hypot(g[:, 0], g[:, 1]) <= 1e3 * tol
+        ):  # round-off floor
             converged = True
             break
     norm = np.hypot(g[:, 0], g[:, 1])

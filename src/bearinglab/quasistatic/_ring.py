@@ -67,11 +67,46 @@ def _centres(u, t, c0_rho, c0_z, inner):
 
 
 @numba.njit(cache=True)
-def _at(u, b, t, c0_rho, c0_z, inner, free, radius, side, z0, k_poly, film, ring, control,
-        lam_i, spd, k_seat, ball_tol):
+def _at(
+    u,
+    b,
+    t,
+    c0_rho,
+    c0_z,
+    inner,
+    free,
+    radius,
+    side,
+    z0,
+    k_poly,
+    film,
+    ring,
+    control,
+    lam_i,
+    spd,
+    k_seat,
+    ball_tol,
+):
     c_rho, c_z = _centres(u, t, c0_rho, c0_z, inner)
-    return solve_balls(b, c_rho, c_z, t, inner, free, radius, side, z0, k_poly, film, ring,
-                       control, lam_i, spd, k_seat, ball_tol)
+    return solve_balls(
+        b,
+        c_rho,
+        c_z,
+        t,
+        inner,
+        free,
+        radius,
+        side,
+        z0,
+        k_poly,
+        film,
+        ring,
+        control,
+        lam_i,
+        spd,
+        k_seat,
+        ball_tol,
+    )
 
 
 @numba.njit(cache=True)
@@ -93,9 +128,32 @@ def _norm(x, free_dofs):
 
 
 @numba.njit(cache=True)
-def ring_newton(u0, b0, free_dofs, load, scale, max_step, t, c0_rho, c0_z, inner, free,
-                radius, side, z0, k_poly, film, ring, control, lam_i, spd, k_seat, ball_tol,
-                target, max_iterations):
+def ring_newton(
+    u0,
+    b0,
+    free_dofs,
+    load,
+    scale,
+    max_step,
+    t,
+    c0_rho,
+    c0_z,
+    inner,
+    free,
+    radius,
+    side,
+    z0,
+    k_poly,
+    film,
+    ring,
+    control,
+    lam_i,
+    spd,
+    k_seat,
+    ball_tol,
+    target,
+    max_iterations,
+):
     """Compiled twin of solver._newton (damped Newton with a line search on the free ring
     DOFs). Returns (u, b, q, n_rho, n_z, delta, speed, force, stiffness, status, residual):
     status 0 converged, 1 out of iterations, 2 no admissible step, 3 balls not solved at
@@ -112,8 +170,25 @@ def ring_newton(u0, b0, free_dofs, load, scale, max_step, t, c0_rho, c0_z, inner
             idx[m] = d
             m += 1
     b, q, nr, nz, dl, sp, force, stiff, _worst, ok = _at(
-        u, b0, t, c0_rho, c0_z, inner, free, radius, side, z0, k_poly, film, ring, control,
-        lam_i, spd, k_seat, ball_tol)
+        u,
+        b0,
+        t,
+        c0_rho,
+        c0_z,
+        inner,
+        free,
+        radius,
+        side,
+        z0,
+        k_poly,
+        film,
+        ring,
+        control,
+        lam_i,
+        spd,
+        k_seat,
+        ball_tol,
+    )
     if not ok:
         return u, b, q, nr, nz, dl, sp, force, stiff, 3, math.inf
     r = (load + force) * scale
@@ -155,8 +230,25 @@ def ring_newton(u0, b0, free_dofs, load, scale, max_step, t, c0_rho, c0_z, inner
             du[idx[a]] = du_f[a]
         trial = u + du
         b1, q1, nr1, nz1, dl1, sp1, f1, k1, _w1, ok1 = _at(
-            trial, b, t, c0_rho, c0_z, inner, free, radius, side, z0, k_poly, film, ring,
-            control, lam_i, spd, k_seat, ball_tol)
+            trial,
+            b,
+            t,
+            c0_rho,
+            c0_z,
+            inner,
+            free,
+            radius,
+            side,
+            z0,
+            k_poly,
+            film,
+            ring,
+            control,
+            lam_i,
+            spd,
+            k_seat,
+            ball_tol,
+        )
         r1 = (load + f1) * scale
         n1 = _norm(r1, free_dofs) if ok1 else math.inf
         newton_worked = ok1 and n1 < 0.5 * norm
@@ -175,13 +267,30 @@ def ring_newton(u0, b0, free_dofs, load, scale, max_step, t, c0_rho, c0_z, inner
                 side_kept = 0
                 lam = 1.0
                 for _ in range(200):
-                    lam = hi - f_hi * (hi - lo) / (f_hi - f_lo)       # Illinois false position
+                    lam = hi - f_hi * (hi - lo) / (f_hi - f_lo)  # Illinois false position
                     if not lo < lam < hi:
                         lam = 0.5 * (lo + hi)
-                    at = _at(u + lam * du, b, t, c0_rho, c0_z, inner, free, radius, side, z0,
-                             k_poly, film, ring, control, lam_i, spd, k_seat, ball_tol)
-                    fm = _weighted((load + at[6]) * scale, free_dofs, scale, du) if at[9] \
-                        else -1e30
+                    at = _at(
+                        u + lam * du,
+                        b,
+                        t,
+                        c0_rho,
+                        c0_z,
+                        inner,
+                        free,
+                        radius,
+                        side,
+                        z0,
+                        k_poly,
+                        film,
+                        ring,
+                        control,
+                        lam_i,
+                        spd,
+                        k_seat,
+                        ball_tol,
+                    )
+                    fm = _weighted((load + at[6]) * scale, free_dofs, scale, du) if at[9] else -1e30
                     if fm > 0:
                         lo, f_lo = lam, fm
                         if side_kept == 1:
@@ -194,11 +303,28 @@ def ring_newton(u0, b0, free_dofs, load, scale, max_step, t, c0_rho, c0_z, inner
                         side_kept = -1
                     if hi - lo <= 1e-12 + 1e-10 * lam:
                         break
-                for lam in (0.5 * (lo + hi), lo):     # lo: the side where the balls solved
+                for lam in (0.5 * (lo + hi), lo):  # lo: the side where the balls solved
                     trial = u + lam * du
                     b1, q1, nr1, nz1, dl1, sp1, f1, k1, _w1, ok1 = _at(
-                        trial, b, t, c0_rho, c0_z, inner, free, radius, side, z0, k_poly,
-                        film, ring, control, lam_i, spd, k_seat, ball_tol)
+                        trial,
+                        b,
+                        t,
+                        c0_rho,
+                        c0_z,
+                        inner,
+                        free,
+                        radius,
+                        side,
+                        z0,
+                        k_poly,
+                        film,
+                        ring,
+                        control,
+                        lam_i,
+                        spd,
+                        k_seat,
+                        ball_tol,
+                    )
                     if ok1:
                         break
             if not ok1:
@@ -209,9 +335,32 @@ def ring_newton(u0, b0, free_dofs, load, scale, max_step, t, c0_rho, c0_z, inner
 
 
 @numba.njit(cache=True)
-def ring_newton_line(loads, u0, b0, free_dofs, scale, max_step, t, c0_rho, c0_z, inner,
-                     free, radius, side, z0, k_poly, film, ring, control, lam_i, spd, k_seat,
-                     tolerance, floor, max_iterations):
+def ring_newton_line(
+    loads,
+    u0,
+    b0,
+    free_dofs,
+    scale,
+    max_step,
+    t,
+    c0_rho,
+    c0_z,
+    inner,
+    free,
+    radius,
+    side,
+    z0,
+    k_poly,
+    film,
+    ring,
+    control,
+    lam_i,
+    spd,
+    k_seat,
+    tolerance,
+    floor,
+    max_iterations,
+):
     """Many load cases in one call (a stiffness-map line): each case starts from the
     previous solution (ring and balls). Stops at the first case that does not converge.
     Returns (u (N, 5), stiffness (N, 5, 5), largest contact load (N,), status (N,): 0
@@ -233,9 +382,32 @@ def ring_newton_line(loads, u0, b0, free_dofs, scale, max_step, t, c0_rho, c0_z,
         load_norm = math.sqrt(load_norm)
         ball_tol = max(tolerance * max(load_norm, 1.0) / nb, 2.0 * floor)
         target = tolerance * max(load_norm, 1.0)
-        res = ring_newton(u, b, free_dofs, load, scale, max_step, t, c0_rho, c0_z, inner, free,
-                          radius, side, z0, k_poly, film, ring, control, lam_i, spd, k_seat,
-                          ball_tol, target, max_iterations)
+        res = ring_newton(
+            u,
+            b,
+            free_dofs,
+            load,
+            scale,
+            max_step,
+            t,
+            c0_rho,
+            c0_z,
+            inner,
+            free,
+            radius,
+            side,
+            z0,
+            k_poly,
+            film,
+            ring,
+            control,
+            lam_i,
+            spd,
+            k_seat,
+            ball_tol,
+            target,
+            max_iterations,
+        )
         status[i] = res[9]
         if res[9] != 0:
             break

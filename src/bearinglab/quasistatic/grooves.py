@@ -94,17 +94,25 @@ def contact_set(bearing: BallBearing) -> ContactSet:
     inner_arch_angle, outer_arch_angle = bearing.inner_arch_angle, bearing.outer_arch_angle
     dw, dm, pd = bearing.ball_diameter, bearing.pitch_diameter, bearing.diametral_clearance
     rows = []
-    for ring, race, f, arch in ((0, "inner", bearing.inner_groove_factor, inner_arch_angle),
-                                (1, "outer", bearing.outer_groove_factor, outer_arch_angle)):
+    for ring, race, f, arch in (
+        (0, "inner", bearing.inner_groove_factor, inner_arch_angle),
+        (1, "outer", bearing.outer_groove_factor, outer_arch_angle),
+    ):
         radius = f * dw
         free = radius - 0.5 * dw
-        sign = 1.0 if race == "inner" else -1.0     # inner centres lie outward of the ball
+        sign = 1.0 if race == "inner" else -1.0  # inner centres lie outward of the ball
         rho = 0.5 * dm + sign * (free * math.cos(arch) - 0.25 * pd)
         poly = _k_poly(bearing, race)
         halves = ((0.0, 0.0),) if arch == 0.0 else ((+1.0, -1.0), (-1.0, +1.0))
         for offset_sign, side in halves:
-            rows.append((ring, rho, offset_sign * free * math.sin(arch), free, radius, side,
-                         poly))
+            rows.append((ring, rho, offset_sign * free * math.sin(arch), free, radius, side, poly))
     ring, rho, z, free, radius, side, poly = zip(*rows, strict=True)
-    return ContactSet(np.array(ring), np.array(rho), np.array(z), np.array(free),
-                      np.array(radius), np.array(side), np.array(poly))
+    return ContactSet(
+        np.array(ring),
+        np.array(rho),
+        np.array(z),
+        np.array(free),
+        np.array(radius),
+        np.array(side),
+        np.array(poly),
+    )

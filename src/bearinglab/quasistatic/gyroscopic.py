@@ -76,8 +76,14 @@ def outer_control_kinematics(inner_angle, outer_angle, gamma_prime):
     beta = np.arctan2(np.sin(ao), np.cos(ao) + g)
     tb = np.tan(beta)
     orbit = (1.0 - g * np.cos(ai)) / (1.0 + np.cos(ai - ao))
-    spin = -1.0 / (((np.cos(ao) + tb * np.sin(ao)) / (1.0 + g * np.cos(ao))
-                    + (np.cos(ai) + tb * np.sin(ai)) / (1.0 - g * np.cos(ai))) * g * np.cos(beta))
+    spin = -1.0 / (
+        (
+            (np.cos(ao) + tb * np.sin(ao)) / (1.0 + g * np.cos(ao))
+            + (np.cos(ai) + tb * np.sin(ai)) / (1.0 - g * np.cos(ai))
+        )
+        * g
+        * np.cos(beta)
+    )
     return beta, orbit, spin
 
 
@@ -111,8 +117,9 @@ def raceway_control_kinematics(inner_angle, outer_angle, gamma_prime, control="o
     return beta, a / (a + b), -1.0 / (g * (a + b))
 
 
-def gyroscopic_ball_force(ball_diameter, pitch_diameter, density, shaft_speed, inner_angle,
-                          outer_angle):
+def gyroscopic_ball_force(
+    ball_diameter, pitch_diameter, density, shaft_speed, inner_angle, outer_angle
+):
     """Force on each ball (rho, z) from the friction that holds its gyroscopic moment [N].
 
     Parameters
@@ -128,8 +135,9 @@ def gyroscopic_ball_force(ball_diameter, pitch_diameter, density, shaft_speed, i
         (positive when the contact line leans towards +z).
     """
     ao = np.asarray(outer_angle, float)
-    beta, orbit, spin = outer_control_kinematics(np.abs(inner_angle), np.abs(ao),
-                                                 ball_diameter / pitch_diameter)
+    beta, orbit, spin = outer_control_kinematics(
+        np.abs(inner_angle), np.abs(ao), ball_diameter / pitch_diameter
+    )
     inertia = density * math.pi * ball_diameter**5 / 60.0
     moment = inertia * np.abs(spin * orbit) * shaft_speed**2 * np.sin(beta)
     force = 2.0 * moment / ball_diameter

@@ -92,9 +92,8 @@ class Orbit:
         pts = np.stack([self.x, self.y], axis=1)
         best = 0.0
         for start in range(0, len(pts), 512):
-            chunk = pts[start:start + 512]
-            best = max(best, float(np.max(np.linalg.norm(chunk[:, None] - pts[None, :],
-                                                         axis=-1))))
+            chunk = pts[start : start + 512]
+            best = max(best, float(np.max(np.linalg.norm(chunk[:, None] - pts[None, :], axis=-1))))
         return best
 
     @property
@@ -121,8 +120,11 @@ class Orbit:
 
     def _needs_time(self) -> np.ndarray:
         if self.time is None or len(self.time) < 2:
-            raise InputError("time", None, "an orbit swept in time (imperfections, "
-                             "revolutions or duration given)")
+            raise InputError(
+                "time",
+                None,
+                "an orbit swept in time (imperfections, revolutions or duration given)",
+            )
         return self.time
 
     @property
@@ -140,12 +142,15 @@ class Orbit:
 
     def to_dict(self) -> dict:
         """JSON-ready orbit in um, degrees, seconds."""
-        out = {"ball_phase_deg": np.degrees(self.ball_phase).tolist(),
-               "x_um": (self.x * 1e6).tolist(), "y_um": (self.y * 1e6).tolist(),
-               "z_um": (self.z * 1e6).tolist(),
-               "max_ball_load_n": self.max_ball_load.tolist(),
-               "orbit_peak_to_peak_um": self.peak_to_peak * 1e6,
-               "radial_peak_to_peak_um": self.radial_peak_to_peak * 1e6}
+        out = {
+            "ball_phase_deg": np.degrees(self.ball_phase).tolist(),
+            "x_um": (self.x * 1e6).tolist(),
+            "y_um": (self.y * 1e6).tolist(),
+            "z_um": (self.z * 1e6).tolist(),
+            "max_ball_load_n": self.max_ball_load.tolist(),
+            "orbit_peak_to_peak_um": self.peak_to_peak * 1e6,
+            "radial_peak_to_peak_um": self.radial_peak_to_peak * 1e6,
+        }
         if self.time is not None:
             out["time_s"] = self.time.tolist()
             out.update(self.frequencies or {})
@@ -179,8 +184,11 @@ class Orbit:
         from ..plotting import _pyplot
 
         plt = _pyplot()
-        fig, axes = plt.subplots(2, 1, sharex=True, figsize=(7, 6)) if axes is None else (
-            axes[0].figure, axes)
+        fig, axes = (
+            plt.subplots(2, 1, sharex=True, figsize=(7, 6))
+            if axes is None
+            else (axes[0].figure, axes)
+        )
         abscissa = self.time if self.time is not None else np.degrees(self.ball_phase)
         for name, values in (("x", self.x), ("y", self.y), ("z", self.z)):
             axes[0].plot(abscissa, values * 1e6, label=name)
@@ -206,17 +214,30 @@ def _ball_state(result, bearing):
 
 
 def _positive_number(name: str, value, allowed: str) -> float:
-    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)) \
-            or not math.isfinite(value) or value <= 0:
+    if (
+        isinstance(value, bool)
+        or not isinstance(value, (int, float, np.integer, np.floating))
+        or not math.isfinite(value)
+        or value <= 0
+    ):
         raise InputError(name, value, allowed)
     return float(value)
 
 
-def inner_ring_orbit(bearing: BallBearing, condition: OperatingCondition, *,
-                     imperfections=None, ball_diameter_errors=None, points: int | None = None,
-                     span: str | None = None, revolutions: float | None = None,
-                     duration: float | None = None, contact_angle: float | None = None,
-                     surface_contact: str = "solved", **options) -> Orbit:
+def inner_ring_orbit(
+    bearing: BallBearing,
+    condition: OperatingCondition,
+    *,
+    imperfections=None,
+    ball_diameter_errors=None,
+    points: int | None = None,
+    span: str | None = None,
+    revolutions: float | None = None,
+    duration: float | None = None,
+    contact_angle: float | None = None,
+    surface_contact: str = "solved",
+    **options,
+) -> Orbit:
     """Sweep the ball-set angle, or time, and solve the equilibrium at each position.
 
     Without ``imperfections``, ``revolutions`` and ``duration`` the ball set is turned with
@@ -284,17 +305,31 @@ def inner_ring_orbit(bearing: BallBearing, condition: OperatingCondition, *,
     if surface_contact not in ("solved", "axial_shift"):
         raise InputError("surface_contact", surface_contact, "'solved' or 'axial_shift'")
     if condition.shaft_speed <= 0:
-        raise InputError("shaft_speed", condition.shaft_speed,
-                         "a speed > 0 [rad/s] for a time sweep")
+        raise InputError(
+            "shaft_speed", condition.shaft_speed, "a speed > 0 [rad/s] for a time sweep"
+        )
     imperfections.check(bearing)
     extra = None
     if ball_diameter_errors is not None:
         extra = np.asarray(ball_diameter_errors, float)
         if extra.shape != (bearing.ball_count,) or not np.all(np.isfinite(extra)):
-            raise InputError("ball_diameter_errors", ball_diameter_errors,
-                             f"{bearing.ball_count} finite values [m]")
-    return _time_sweep(bearing, condition, imperfections, extra, points, revolutions,
-                       duration, contact_angle, surface_contact, options)
+            raise InputError(
+                "ball_diameter_errors",
+                ball_diameter_errors,
+                f"{bearing.ball_count} finite values [m]",
+            )
+    return _time_sweep(
+        bearing,
+        condition,
+        imperfections,
+        extra,
+        points,
+        revolutions,
+        duration,
+        contact_angle,
+        surface_contact,
+        options,
+    )
 
 
 def _ball_set_sweep(bearing, condition, ball_diameter_errors, points, span, options) -> Orbit:
@@ -310,21 +345,36 @@ def _ball_set_sweep(bearing, condition, ball_diameter_errors, points, span, opti
 
     u, disp, balls = None, [], []
     for phase in phases:
-        r = solve_load_distribution(bearing, condition, ball_phase=float(phase),
-                                    ball_diameter_errors=errors, initial=u, **options)
+        r = solve_load_distribution(
+            bearing,
+            condition,
+            ball_phase=float(phase),
+            ball_diameter_errors=errors,
+            initial=u,
+            **options,
+        )
         u = r.displacement
         disp.append(u[:3].copy())
         balls.append(_ball_state(r, bearing)[:2] + (r.ball_angle,))
     disp = np.array(disp)
     centre, load, angle = (np.array(v) for v in zip(*balls, strict=True))
     eff = None if errors is None else np.broadcast_to(errors, angle.shape).copy()
-    return Orbit(bearing, condition, phases, disp[:, 0], disp[:, 1], disp[:, 2],
-                 load.max(axis=1), ball_angle=angle, ball_centre=centre, ball_load=load,
-                 effective_diameter_error=eff)
+    return Orbit(
+        bearing,
+        condition,
+        phases,
+        disp[:, 0],
+        disp[:, 1],
+        disp[:, 2],
+        load.max(axis=1),
+        ball_angle=angle,
+        ball_centre=centre,
+        ball_load=load,
+        effective_diameter_error=eff,
+    )
 
 
-def record_length(bearing, condition, revolutions=None, duration=None,
-                  contact_angle=None) -> float:
+def record_length(bearing, condition, revolutions=None, duration=None, contact_angle=None) -> float:
     """Length of a time sweep [s]: ``revolutions`` of the shaft, or ``duration``, or by
     default one cage revolution (each ball carries its size error round once)."""
     from ..kinematics import defect_frequencies
@@ -339,8 +389,18 @@ def record_length(bearing, condition, revolutions=None, duration=None,
     return 1.0 / freq.hz("ftf")
 
 
-def _time_sweep(bearing, condition, imperfections, extra, points, revolutions, duration,
-                contact_angle, surface_contact, options) -> Orbit:
+def _time_sweep(
+    bearing,
+    condition,
+    imperfections,
+    extra,
+    points,
+    revolutions,
+    duration,
+    contact_angle,
+    surface_contact,
+    options,
+) -> Orbit:
     from ..imperfections import ball_axial_shift
     from ..kinematics import defect_frequencies
     from . import solve_load_distribution
@@ -362,7 +422,7 @@ def _time_sweep(bearing, condition, imperfections, extra, points, revolutions, d
     radius = 0.5 * bearing.ball_diameter
 
     u, state = None, None
-    if imperfections.surfaces:      # where the contacts sit across the groove at the start
+    if imperfections.surfaces:  # where the contacts sit across the groove at the start
         r0 = solve_load_distribution(bearing, condition, ball_phase=float(cage[0]), **options)
         u, state = r0.displacement, _ball_state(r0, bearing)
     disp = np.empty((points, 3))
@@ -379,25 +439,50 @@ def _time_sweep(bearing, condition, imperfections, extra, points, revolutions, d
             shift = ball_axial_shift(
                 bearing,
                 inner_height=lambda z, k=k: imperfections.surface_profile(
-                    "inner", psi[k] - theta_s[k], z),
+                    "inner", psi[k] - theta_s[k], z
+                ),
                 outer_height=lambda z, k=k: imperfections.surface_profile("outer", psi[k], z),
-                inner_offset=float(u[2]))
+                inner_offset=float(u[2]),
+            )
             z_o, z_i = shift.outer_contact_z, shift.inner_contact_z - u[2]
-        dev = imperfections.approach_change(bearing, psi[k], theta_s[k], phi[k],
-                                            z_inner=z_i, z_outer=z_o)
+        dev = imperfections.approach_change(
+            bearing, psi[k], theta_s[k], phi[k], z_inner=z_i, z_outer=z_o
+        )
         e = dev.total if extra is None else dev.total + extra
-        r = solve_load_distribution(bearing, condition, ball_phase=float(cage[k]),
-                                    ball_diameter_errors=e, initial=u, **options)
+        r = solve_load_distribution(
+            bearing,
+            condition,
+            ball_phase=float(cage[k]),
+            ball_diameter_errors=e,
+            initial=u,
+            **options,
+        )
         u = r.displacement
         state = _ball_state(r, bearing)
         centre, load, beta_o, _ = state
-        move = 0.5 * (dev.inner - dev.outer)      # unequal split of the approach change
+        move = 0.5 * (dev.inner - dev.outer)  # unequal split of the approach change
         centres[k, :, 0] = centre[:, 0] + move * np.cos(beta_o)
         centres[k, :, 1] = centre[:, 1] + move * np.sin(beta_o)
         disp[k], loads[k], errors[k] = u[:3], load, e
-    frequencies = {"shaft_hz": f_shaft, "cage_hz": f_cage, "ball_spin_hz": f_spin,
-                   "contact_angle_deg": math.degrees(freq.contact_angle)}
-    return Orbit(bearing, condition, cage, disp[:, 0], disp[:, 1], disp[:, 2],
-                 loads.max(axis=1), time=t, ball_angle=psi, ball_centre=centres,
-                 ball_load=loads, effective_diameter_error=errors, frequencies=frequencies,
-                 imperfections=imperfections)
+    frequencies = {
+        "shaft_hz": f_shaft,
+        "cage_hz": f_cage,
+        "ball_spin_hz": f_spin,
+        "contact_angle_deg": math.degrees(freq.contact_angle),
+    }
+    return Orbit(
+        bearing,
+        condition,
+        cage,
+        disp[:, 0],
+        disp[:, 1],
+        disp[:, 2],
+        loads.max(axis=1),
+        time=t,
+        ball_angle=psi,
+        ball_centre=centres,
+        ball_load=loads,
+        effective_diameter_error=errors,
+        frequencies=frequencies,
+        imperfections=imperfections,
+    )

@@ -16,11 +16,13 @@ from ..operating import OperatingCondition
 from .solver import DOF_NAMES
 
 #: Units of the stiffness matrix rows/columns (x, y, z in m; tilts in rad).
-STIFFNESS_UNITS = [["N/m", "N/m", "N/m", "N/rad", "N/rad"],
-                   ["N/m", "N/m", "N/m", "N/rad", "N/rad"],
-                   ["N/m", "N/m", "N/m", "N/rad", "N/rad"],
-                   ["N m/m", "N m/m", "N m/m", "N m/rad", "N m/rad"],
-                   ["N m/m", "N m/m", "N m/m", "N m/rad", "N m/rad"]]
+STIFFNESS_UNITS = [
+    ["N/m", "N/m", "N/m", "N/rad", "N/rad"],
+    ["N/m", "N/m", "N/m", "N/rad", "N/rad"],
+    ["N/m", "N/m", "N/m", "N/rad", "N/rad"],
+    ["N m/m", "N m/m", "N m/m", "N m/rad", "N m/rad"],
+    ["N m/m", "N m/m", "N m/m", "N m/rad", "N m/rad"],
+]
 
 
 @dataclass(frozen=True)
@@ -129,12 +131,15 @@ class LoadDistribution:
         out = []
         if np.any(self.truncated):
             n = int(np.count_nonzero(np.any(self.truncated, axis=1)))
-            out.append(f"the contact ellipse of {n} ball(s) runs over the groove shoulder: "
-                       "Hertz theory no longer holds there and the load is beyond what the "
-                       "groove can carry properly")
+            out.append(
+                f"the contact ellipse of {n} ball(s) runs over the groove shoulder: "
+                "Hertz theory no longer holds there and the load is beyond what the "
+                "groove can carry properly"
+            )
         if self.bearing.diametral_clearance < 0:
-            out.append(f"preloaded: diametral clearance "
-                       f"{self.bearing.diametral_clearance * 1e6:.3g} um")
+            out.append(
+                f"preloaded: diametral clearance {self.bearing.diametral_clearance * 1e6:.3g} um"
+            )
         return tuple(out)
 
     def _race_contacts(self, race: int):
@@ -149,9 +154,13 @@ class LoadDistribution:
         cols = self.ring == race
         b = self.bearing
         f = b.inner_groove_factor if race == 0 else b.outer_groove_factor
-        rx, ry = contact_radii(b.ball_diameter, b.pitch_diameter, f,
-                               np.abs(self.contact_angle[:, cols]),
-                               "inner" if race == 0 else "outer")
+        rx, ry = contact_radii(
+            b.ball_diameter,
+            b.pitch_diameter,
+            f,
+            np.abs(self.contact_angle[:, cols]),
+            "inner" if race == 0 else "outer",
+        )
         e_prime = effective_modulus(b.ball_material, b.ring_material)
         return hertz.point_contact(self.load[:, cols], rx, np.full_like(rx, ry), e_prime)
 
@@ -165,8 +174,11 @@ class LoadDistribution:
             cols = self.ring == race
             a = self._race_contacts(race).semi_major
             angle = self.contact_angle[:, cols]
-            shoulder = np.where(angle >= 0, self.bearing.shoulder_angle(name, 1),
-                                self.bearing.shoulder_angle(name, -1))
+            shoulder = np.where(
+                angle >= 0,
+                self.bearing.shoulder_angle(name, 1),
+                self.bearing.shoulder_angle(name, -1),
+            )
             reach = np.abs(angle) + a / self.groove_radius[cols]
             out[:, cols] = (self.load[:, cols] > 0) & (reach > shoulder)
         return out
@@ -184,15 +196,18 @@ class LoadDistribution:
                 k = int(np.argmax(loads))
                 pressures = np.atleast_2d(hertz_by_race[race].max_pressure)[j]
                 semi = np.atleast_2d(hertz_by_race[race].semi_major)[j]
-                loaded = bool(loads.sum() > 0)   # an unloaded contact has no angle
-                row.update({
-                    f"{name}_load_n": float(loads.sum()),
-                    f"{name}_contact_angle_deg": math.degrees(self.contact_angle[j, cols[k]])
-                    if loaded else None,
-                    f"{name}_max_pressure_gpa": float(pressures[k]) / 1e9,
-                    f"{name}_semi_major_mm": float(semi[k]) * 1e3,
-                    f"{name}_approach_um": float(max(self.approach[j, cols[k]], 0.0)) * 1e6,
-                })
+                loaded = bool(loads.sum() > 0)  # an unloaded contact has no angle
+                row.update(
+                    {
+                        f"{name}_load_n": float(loads.sum()),
+                        f"{name}_contact_angle_deg": math.degrees(self.contact_angle[j, cols[k]])
+                        if loaded
+                        else None,
+                        f"{name}_max_pressure_gpa": float(pressures[k]) / 1e9,
+                        f"{name}_semi_major_mm": float(semi[k]) * 1e3,
+                        f"{name}_approach_um": float(max(self.approach[j, cols[k]], 0.0)) * 1e6,
+                    }
+                )
             if self.orbital_speed is not None:
                 row["orbital_speed_rpm"] = float(self.orbital_speed[j]) * 30 / math.pi
                 row["centrifugal_force_n"] = float(self.ball_centrifugal_force[j])
@@ -210,9 +225,10 @@ class LoadDistribution:
     def to_dict(self) -> dict:
         """JSON-ready summary in engineering units; the stiffness matrix stays SI."""
         table = self.ball_table()
+
         def plain(v):
             v = v.item() if hasattr(v, "item") else v
-            return None if isinstance(v, float) and math.isnan(v) else v   # unloaded: no angle
+            return None if isinstance(v, float) and math.isnan(v) else v  # unloaded: no angle
 
         balls = [{k: plain(v) for k, v in row.items()} for row in table.to_dict(orient="records")]
         residual = self.condition.load_vector() + self.reaction
@@ -222,8 +238,7 @@ class LoadDistribution:
             "axial_displacement_um": self.axial_displacement * 1e6,
             "displacement_um": (self.displacement[:3] * 1e6).tolist(),
             "tilt_mrad": (self.displacement[3:] * 1e3).tolist(),
-            "max_ball_load_n": float(max(table["inner_load_n"].max(),
-                                         table["outer_load_n"].max())),
+            "max_ball_load_n": float(max(table["inner_load_n"].max(), table["outer_load_n"].max())),
             "stiffness_matrix_si": self.stiffness_matrix.tolist(),
             "stiffness_matrix_order": list(DOF_NAMES),
             "stiffness_matrix_units": STIFFNESS_UNITS,
@@ -249,11 +264,16 @@ class LoadDistribution:
 
     def stiffness_frame(self) -> pd.DataFrame:
         """The 5x5 stiffness matrix as a table with named rows and columns (SI), for CSV."""
-        return pd.DataFrame(self.stiffness_matrix, index=list(DOF_NAMES),
-                            columns=list(DOF_NAMES))
+        return pd.DataFrame(self.stiffness_matrix, index=list(DOF_NAMES), columns=list(DOF_NAMES))
 
-    def to_ross(self, n: int, damping: float | None = None, tag: str | None = None, *,
-                damping_factor: float | None = None):
+    def to_ross(
+        self,
+        n: int,
+        damping: float | None = None,
+        tag: str | None = None,
+        *,
+        damping_factor: float | None = None,
+    ):
         """A ``ross.BearingElement`` with this operating point's stiffness (one speed).
 
         See :func:`bearinglab.rotordynamics.ross_element` (ROSS, the optional
@@ -275,9 +295,13 @@ class LoadDistribution:
         """
         from ..rotordynamics import KRAMER_FACTOR, ross_element
 
-        return ross_element(self, n, tag=tag, damping=damping,
-                            damping_factor=KRAMER_FACTOR if damping_factor is None
-                            else damping_factor)
+        return ross_element(
+            self,
+            n,
+            tag=tag,
+            damping=damping,
+            damping_factor=KRAMER_FACTOR if damping_factor is None else damping_factor,
+        )
 
     def plot(self, axes=None):
         """Polar load distribution and contact angles; returns (fig, axes)."""

@@ -73,8 +73,14 @@ def centrifugal_force(bearing: BallBearing, shaft_speed: float) -> float:
         Inner-ring speed omega [rad/s].
     """
     omega_c = 0.5 * shaft_speed * (1.0 - bearing.gamma)
-    return (math.pi * bearing.ball_material.density * bearing.ball_diameter**3
-            * bearing.pitch_diameter * omega_c**2 / 12.0)
+    return (
+        math.pi
+        * bearing.ball_material.density
+        * bearing.ball_diameter**3
+        * bearing.pitch_diameter
+        * omega_c**2
+        / 12.0
+    )
 
 
 def inner_ring_expansion(bearing: BallBearing, shaft_speed: float) -> float:
@@ -97,32 +103,58 @@ def inner_ring_expansion(bearing: BallBearing, shaft_speed: float) -> float:
         raise InputError("bore", None, "a bore [m]", "needed for the inner ring's expansion")
     m = bearing.ring_material
     a, b = 0.5 * bearing.bore, 0.5 * bearing.inner_raceway_diameter
-    return (m.density * shaft_speed**2 * b / (4.0 * m.elastic_modulus)
-            * ((3.0 + m.poisson_ratio) * a * a + (1.0 - m.poisson_ratio) * b * b))
+    return (
+        m.density
+        * shaft_speed**2
+        * b
+        / (4.0 * m.elastic_modulus)
+        * ((3.0 + m.poisson_ratio) * a * a + (1.0 - m.poisson_ratio) * b * b)
+    )
 
 
 class _Problem:
     """Everything fixed during one solve: geometry arrays, loads, which DOFs are free,
     the speed-force parameters."""
 
-    def __init__(self, bearing: BallBearing, condition: OperatingCondition, ball_phase: float,
-                 ball_diameter_errors, film, *, gyroscopic: bool = False,
-                 race_control: str = "outer") -> None:
+    def __init__(
+        self,
+        bearing: BallBearing,
+        condition: OperatingCondition,
+        ball_phase: float,
+        ball_diameter_errors,
+        film,
+        *,
+        gyroscopic: bool = False,
+        race_control: str = "outer",
+    ) -> None:
         self.bearing, self.condition = bearing, condition
         z = bearing.ball_count
         self.contacts: ContactSet = contact_set(bearing)
         cs = self.contacts
-        errors = np.zeros(z) if ball_diameter_errors is None else np.asarray(
-            ball_diameter_errors, dtype=float)
-        if errors.shape != (z,) or not np.all(np.isfinite(errors)) or np.any(
-                np.abs(errors) > 0.05 * bearing.ball_diameter):
-            raise InputError("ball_diameter_errors", ball_diameter_errors,
-                             f"{z} finite values within +-5 % of D_w [m]")
-        self.free = cs.free_distance[None, :] - 0.5 * errors[:, None]        # (Z, C)
-        self.film = np.zeros((z, cs.count)) if film is None else np.ascontiguousarray(
-            np.broadcast_to(film, (z, cs.count)), dtype=float)
+        errors = (
+            np.zeros(z)
+            if ball_diameter_errors is None
+            else np.asarray(ball_diameter_errors, dtype=float)
+        )
+        if (
+            errors.shape != (z,)
+            or not np.all(np.isfinite(errors))
+            or np.any(np.abs(errors) > 0.05 * bearing.ball_diameter)
+        ):
+            raise InputError(
+                "ball_diameter_errors",
+                ball_diameter_errors,
+                f"{z} finite values within +-5 % of D_w [m]",
+            )
+        self.free = cs.free_distance[None, :] - 0.5 * errors[:, None]  # (Z, C)
+        self.film = (
+            np.zeros((z, cs.count))
+            if film is None
+            else np.ascontiguousarray(np.broadcast_to(film, (z, cs.count)), dtype=float)
+        )
         self.psi, self.t, self.c0_rho, self.c0_z = _placement(
-            bearing, float(ball_phase), tuple(condition.outer_misalignment))
+            bearing, float(ball_phase), tuple(condition.outer_misalignment)
+        )
         self.inner = cs.ring == 0
         self._side, self._ring = cs.side.astype(float), cs.ring.astype(np.int64)
         self.load = condition.load_vector()
@@ -138,9 +170,18 @@ class _Problem:
         # cage speed of balls that do not touch both races: pure rolling at the nominal
         # angle until the solve gives the mean of the driven balls (solve updates spd[6])
         wm0 = 0.5 * omega * (1.0 - bearing.gamma)
-        self.spd = np.array([omega, dw / dm, 0.5 * rho_b * math.pi * dw**3 / 6.0 * dm,
-                             rho_b * math.pi * dw**5 / 60.0, dw, float(gyroscopic), wm0,
-                             CENTRIFUGAL_FLOOR])
+        self.spd = np.array(
+            [
+                omega,
+                dw / dm,
+                0.5 * rho_b * math.pi * dw**3 / 6.0 * dm,
+                rho_b * math.pi * dw**5 / 60.0,
+                dw,
+                float(gyroscopic),
+                wm0,
+                CENTRIFUGAL_FLOOR,
+            ]
+        )
         self.control = np.full(z, 1 if race_control == "inner" else 0, dtype=np.int64)
         self.lam_i = np.full(z, 2.0 if race_control == "inner" else 0.0)
         self.k_seat = float(np.max(cs.k_radial[~self.inner]))
@@ -158,16 +199,28 @@ class _Problem:
         self.lam_i = np.where(outer_controlled, 0.0, 1.0)
 
     def centres(self, u):
-        shift = self.t @ u                                                   # (Z, C, 2)
+        shift = self.t @ u  # (Z, C, 2)
         c_rho = self.c0_rho + np.where(self.inner, shift[..., 0], 0.0)
         c_z = self.c0_z + np.where(self.inner, shift[..., 1], 0.0)
         return c_rho, c_z
 
     def kernel_arguments(self):
         cs = self.contacts
-        return (self.t, self.inner, self.free, cs.groove_radius, self._side, cs.z0,
-                cs.k_poly, self.film, self._ring, self.control, self.lam_i, self.spd,
-                self.k_seat)
+        return (
+            self.t,
+            self.inner,
+            self.free,
+            cs.groove_radius,
+            self._side,
+            cs.z0,
+            cs.k_poly,
+            self.film,
+            self._ring,
+            self.control,
+            self.lam_i,
+            self.spd,
+            self.k_seat,
+        )
 
     def solve_balls(self, b, u, tol, compiled: bool | None = None):
         """Newton's method on every ball's equilibrium for fixed ring displacement u
@@ -185,11 +238,18 @@ class _Problem:
         c_rho, c_z = self.centres(u)
         kernel = _kernels.solve_balls_numpy if compiled is False else _solve_balls_compiled()
         b, q, n_rho, n_z, delta, speed, force, stiffness, worst, ok = kernel(
-            np.ascontiguousarray(b, dtype=float), c_rho, c_z, *self.kernel_arguments()[:-1],
-            self.k_seat, tol)
+            np.ascontiguousarray(b, dtype=float),
+            c_rho,
+            c_z,
+            *self.kernel_arguments()[:-1],
+            self.k_seat,
+            tol,
+        )
         if not ok:
-            raise ConvergenceError(f"ball equilibrium did not converge: residual {worst:.3e} N "
-                                   f"(tolerance {tol:.1e} N) at ring displacement {u.tolist()}")
+            raise ConvergenceError(
+                f"ball equilibrium did not converge: residual {worst:.3e} N "
+                f"(tolerance {tol:.1e} N) at ring displacement {u.tolist()}"
+            )
         return b, (q, n_rho, n_z, delta, speed, force, stiffness)
 
     def ring_force(self, state):
@@ -208,12 +268,12 @@ def _placement(bearing: BallBearing, ball_phase: float, outer_misalignment: tupl
     cs = contact_set(bearing)
     z = bearing.ball_count
     psi = ball_phase + 2.0 * math.pi * np.arange(z) / z
-    t = _kernels.ring_jacobian(psi, cs.rho0, cs.z0)                          # (Z, C, 2, 5)
+    t = _kernels.ring_jacobian(psi, cs.rho0, cs.z0)  # (Z, C, 2, 5)
     inner = cs.ring == 0
-    shift_o = t @ np.array([0, 0, 0, *outer_misalignment], dtype=float)      # (Z, C, 2)
+    shift_o = t @ np.array([0, 0, 0, *outer_misalignment], dtype=float)  # (Z, C, 2)
     c0_rho = cs.rho0[None, :] + np.where(inner, 0.0, shift_o[..., 0])
     c0_z = cs.z0[None, :] + np.where(inner, 0.0, shift_o[..., 1])
-    return psi, t, c0_rho, c0_z          # shared between solves: never written to
+    return psi, t, c0_rho, c0_z  # shared between solves: never written to
 
 
 def _solve_balls_compiled():
@@ -227,7 +287,7 @@ def initial_ring_guess(problem: _Problem) -> np.ndarray:
     b = problem.bearing
     cs = problem.contacts
     load = problem.load
-    k_n = float(np.min(cs.k_radial)) / 2**1.5       # two equal contacts in series
+    k_n = float(np.min(cs.k_radial)) / 2**1.5  # two equal contacts in series
     u = problem.u_fixed.copy()
     fr = math.hypot(load[0], load[1])
     if fr > 0:
@@ -239,10 +299,20 @@ def initial_ring_guess(problem: _Problem) -> np.ndarray:
     return u
 
 
-def solve(bearing: BallBearing, condition: OperatingCondition, *, ball_phase: float | None = None,
-          ball_diameter_errors=None, film=None, tolerance: float = 1e-9, max_iterations: int = 100,
-          initial: np.ndarray | None = None, gyroscopic: bool = False,
-          race_control: str = "outer", problem: _Problem | None = None):
+def solve(
+    bearing: BallBearing,
+    condition: OperatingCondition,
+    *,
+    ball_phase: float | None = None,
+    ball_diameter_errors=None,
+    film=None,
+    tolerance: float = 1e-9,
+    max_iterations: int = 100,
+    initial: np.ndarray | None = None,
+    gyroscopic: bool = False,
+    race_control: str = "outer",
+    problem: _Problem | None = None,
+):
     """Solve ring and ball equilibrium; returns (u, b, state, problem, stiffness).
 
     Without an initial guess, a combined load is solved in two stages: first the radial
@@ -256,14 +326,21 @@ def solve(bearing: BallBearing, condition: OperatingCondition, *, ball_phase: fl
     if ball_phase is None:
         ball_phase = condition.radial_load_angle
     if problem is None:
-        problem = _Problem(bearing, condition, float(ball_phase), ball_diameter_errors, film,
-                           gyroscopic=gyroscopic, race_control=race_control)
+        problem = _Problem(
+            bearing,
+            condition,
+            float(ball_phase),
+            ball_diameter_errors,
+            film,
+            gyroscopic=gyroscopic,
+            race_control=race_control,
+        )
     if initial is None and condition.radial_load > 0:
         guess = initial_ring_guess(problem)
         guess[2] = 0.0
         radial_only = problem.free_dofs.copy()
         problem.free_dofs = np.array([True, True, False, False, False])
-        try:   # a warm start only: a loose tolerance is enough
+        try:  # a warm start only: a loose tolerance is enough
             initial = _ring(problem, max(tolerance, 1e-3), 30, guess)[0]
         except ConvergenceError:
             initial = None
@@ -279,8 +356,9 @@ def solve(bearing: BallBearing, condition: OperatingCondition, *, ball_phase: fl
             return _speed_continuation(problem, tolerance, max_iterations, direct)
 
 
-def _speed_continuation(problem: _Problem, tolerance: float, max_iterations: int,
-                        failure: ConvergenceError):
+def _speed_continuation(
+    problem: _Problem, tolerance: float, max_iterations: int, failure: ConvergenceError
+):
     """Fallback at speed: solve at rest, then raise the speed in steps, each starting from
     the previous solution (ring and balls); steps are halved where Newton fails. At light
     thrust and high speed the balls roll far up the inner groove (alpha_i ~ 60 deg against
@@ -299,8 +377,9 @@ def _speed_continuation(problem: _Problem, tolerance: float, max_iterations: int
         problem.spd[:] = target
 
 
-def _continuation(problem: _Problem, tolerance: float, max_iterations: int,
-                  failure: ConvergenceError):
+def _continuation(
+    problem: _Problem, tolerance: float, max_iterations: int, failure: ConvergenceError
+):
     """Fallback: reach the load in steps from its radial part alone (or a tenth of it),
     each step starting from the previous solution; steps are halved where Newton fails.
     Contacts that switch on and off (a ball crossing the cusp of a gothic arch, balls
@@ -321,8 +400,13 @@ def _continuation(problem: _Problem, tolerance: float, max_iterations: int,
         problem.load = target
 
 
-def _march(problem: _Problem, tolerance: float, max_iterations: int,
-           failure: ConvergenceError, at: Callable[[float], None]):
+def _march(
+    problem: _Problem,
+    tolerance: float,
+    max_iterations: int,
+    failure: ConvergenceError,
+    at: Callable[[float], None],
+):
     """Solve ``problem`` as it stands, then move it by ``at(fraction)`` to fraction 1 in
     steps (a quarter at first, doubled up to a half after a success, halved after a
     failure), each solve starting from the last solution; ``failure`` is raised when the
@@ -350,8 +434,10 @@ def _setup(problem: _Problem, tolerance: float, initial):
     load_norm = float(np.linalg.norm(problem.load * problem.scale))
     ball_tol = max(tolerance * max(load_norm, 1.0) / bearing.ball_count, 2 * CENTRIFUGAL_FLOOR)
     u = initial_ring_guess(problem) if initial is None else np.asarray(initial, float).copy()
-    b = np.stack([np.full(bearing.ball_count, 0.5 * bearing.pitch_diameter),
-                  np.zeros(bearing.ball_count)], axis=1)
+    b = np.stack(
+        [np.full(bearing.ball_count, 0.5 * bearing.pitch_diameter), np.zeros(bearing.ball_count)],
+        axis=1,
+    )
     # steps of the order of the play plus Hertz approaches; tilts a few mrad
     play = max(bearing.diametral_clearance, 0.0) + 0.005 * bearing.ball_diameter
     max_step = np.array([play, play, 4 * play, 0.005, 0.005])
@@ -362,7 +448,8 @@ def _not_converged(problem: _Problem, residual: float, target: float, max_iterat
     return ConvergenceError(
         f"ring equilibrium did not converge for F = {problem.load.round(6).tolist()} (N, N m): "
         f"residual {residual:.3e} (tolerance {target:.1e}) after "
-        f"{max_iterations} iterations; the bearing may not carry this load")
+        f"{max_iterations} iterations; the bearing may not carry this load"
+    )
 
 
 def _ring(problem: _Problem, tolerance: float, max_iterations: int, initial):
@@ -375,21 +462,37 @@ def _ring(problem: _Problem, tolerance: float, max_iterations: int, initial):
     c0_rho, c0_z = np.ascontiguousarray(problem.c0_rho), np.ascontiguousarray(problem.c0_z)
     args = problem.kernel_arguments()
     u, b, q, n_rho, n_z, delta, speed, force, stiff, status, residual = compiled.ring_newton(
-        u, b, problem.free_dofs, problem.load, problem.scale, max_step, args[0], c0_rho, c0_z,
-        *args[1:], ball_tol, target, max_iterations)
+        u,
+        b,
+        problem.free_dofs,
+        problem.load,
+        problem.scale,
+        max_step,
+        args[0],
+        c0_rho,
+        c0_z,
+        *args[1:],
+        ball_tol,
+        target,
+        max_iterations,
+    )
     if status == 3:
-        raise ConvergenceError(f"ball equilibrium did not converge at ring displacement "
-                               f"{u.tolist()}")
+        raise ConvergenceError(
+            f"ball equilibrium did not converge at ring displacement {u.tolist()}"
+        )
     if status == 2:
-        raise ConvergenceError(f"ring equilibrium: no admissible step from {u.tolist()} for "
-                               f"F = {problem.load.round(6).tolist()}")
+        raise ConvergenceError(
+            f"ring equilibrium: no admissible step from {u.tolist()} for "
+            f"F = {problem.load.round(6).tolist()}"
+        )
     if status == 1:
         raise _not_converged(problem, residual, target, max_iterations)
     return u, b, (q, n_rho, n_z, delta, speed, force, stiff), problem, stiff
 
 
-def solve_line(problem: _Problem, loads, initial, balls, tolerance: float = 1e-9,
-               max_iterations: int = 100):
+def solve_line(
+    problem: _Problem, loads, initial, balls, tolerance: float = 1e-9, max_iterations: int = 100
+):
     """Several loads on one problem in one compiled call, each from the previous solution
     (a stiffness-map line); see _ring.ring_newton_line. ``initial`` (5,) and ``balls``
     (Z, 2) are a converged neighbour's ring displacement and ball centres [m, rad].
@@ -400,10 +503,20 @@ def solve_line(problem: _Problem, loads, initial, balls, tolerance: float = 1e-9
     _, _, _, _, max_step = _setup(problem, tolerance, initial)
     args = problem.kernel_arguments()
     return compiled.ring_newton_line(
-        np.ascontiguousarray(loads, dtype=float), np.asarray(initial, float),
-        np.ascontiguousarray(balls, dtype=float), problem.free_dofs, problem.scale, max_step,
-        args[0], problem.c0_rho, problem.c0_z, *args[1:], tolerance, CENTRIFUGAL_FLOOR,
-        max_iterations)
+        np.ascontiguousarray(loads, dtype=float),
+        np.asarray(initial, float),
+        np.ascontiguousarray(balls, dtype=float),
+        problem.free_dofs,
+        problem.scale,
+        max_step,
+        args[0],
+        problem.c0_rho,
+        problem.c0_z,
+        *args[1:],
+        tolerance,
+        CENTRIFUGAL_FLOOR,
+        max_iterations,
+    )
 
 
 def _newton(problem: _Problem, tolerance: float, max_iterations: int, initial):
@@ -431,7 +544,7 @@ def _newton(problem: _Problem, tolerance: float, max_iterations: int, initial):
         except np.linalg.LinAlgError:
             du = (load + force)[free] / diag
         if (load + force)[free] @ (du * problem.scale[free] ** 2) <= 0:
-            du = (load + force)[free] / diag          # not a descent direction: use gradient
+            du = (load + force)[free] / diag  # not a descent direction: use gradient
         limit = np.max(np.abs(du) / max_step[free])
         if limit > 1:
             du /= limit
@@ -441,7 +554,7 @@ def _newton(problem: _Problem, tolerance: float, max_iterations: int, initial):
             trial[free] += lam * du
             try:
                 b_t, state_t = problem.solve_balls(b, trial, ball_tol)
-            except ConvergenceError:        # far past contact onset: the step is too long
+            except ConvergenceError:  # far past contact onset: the step is too long
                 return None
             force_t = problem.ring_force(state_t)
             return trial, b_t, state_t, force_t, (load + force_t) * problem.scale
@@ -452,17 +565,21 @@ def _newton(problem: _Problem, tolerance: float, max_iterations: int, initial):
 
         step = along(1.0)
         newton_worked = step is not None and np.linalg.norm(step[4][free]) < 0.5 * norm
-        damping = 0.0 if newton_worked and damping < 1e-3 else (
-            damping * 0.1 if newton_worked else max(1e-3, 10.0 * damping))
+        damping = (
+            0.0
+            if newton_worked and damping < 1e-3
+            else (damping * 0.1 if newton_worked else max(1e-3, 10.0 * damping))
+        )
         if step is None or np.linalg.norm(step[4][free]) >= norm:
             # Newton overshoots (typically across the onset of contact): go to where the
             # residual turns against the step, i.e. the energy minimum along it.
             if slope(1.0) < 0 < slope(0.0):
-                step = along(optimize.brentq(slope, 0.0, 1.0, xtol=1e-12, rtol=1e-10,
-                                             maxiter=200))
+                step = along(optimize.brentq(slope, 0.0, 1.0, xtol=1e-12, rtol=1e-10, maxiter=200))
             if step is None:
-                raise ConvergenceError(f"ring equilibrium: no admissible step from "
-                                       f"{u.tolist()} for F = {load.round(6).tolist()}")
+                raise ConvergenceError(
+                    f"ring equilibrium: no admissible step from "
+                    f"{u.tolist()} for F = {load.round(6).tolist()}"
+                )
         u, b, state, force, r = step
         stiff = problem.ring_force_and_stiffness(state)[1]
     raise _not_converged(problem, float(np.linalg.norm(r[free])), target, max_iterations)

@@ -14,5 +14,11 @@ from .builder import SECTIONS, build_report, default_sample_rate
 from .document import Report, Section
 from .validation import validation_page
 
-__all__ = ["SECTIONS", "Report", "Section", "build_report", "default_sample_rate",
-           "validation_page"]
+__all__ = [
+    "SECTIONS",
+    "Report",
+    "Section",
+    "build_report",
+    "default_sample_rate",
+    "validation_page",
+]

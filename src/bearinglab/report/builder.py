@@ -60,14 +60,22 @@ def _viscosity(lubricant, viscosity):
         return float(viscosity), "given"
     if lubricant is None:
         return None, ""
-    return operating_viscosity(lubricant)   # the reading the friction analysis makes too
+    return operating_viscosity(lubricant)  # the reading the friction analysis makes too
 
 
-def build_report(bearing: BallBearing, condition: OperatingCondition, *, designation=None,
-                 defects=None, lubricant="iso-vg68", viscosity: float | None = None,
-                 duration: float = 1.0, sample_rate: float | None = None,
-                 slip_duration: float = 0.1,
-                 progress: Callable[[str, int, int], None] | None = None) -> Report:
+def build_report(
+    bearing: BallBearing,
+    condition: OperatingCondition,
+    *,
+    designation=None,
+    defects=None,
+    lubricant="iso-vg68",
+    viscosity: float | None = None,
+    duration: float = 1.0,
+    sample_rate: float | None = None,
+    slip_duration: float = 0.1,
+    progress: Callable[[str, int, int], None] | None = None,
+) -> Report:
     """An HTML report of ``bearing`` under ``condition``: geometry and its sources, load
     distribution, contact, stiffness, ring resonances, defect frequencies, a simulated
     envelope spectrum, vibration bands, sound, friction and life.
@@ -107,11 +115,12 @@ def build_report(bearing: BallBearing, condition: OperatingCondition, *, designa
         raise InputError("bearing", bearing, "a BallBearing")
     if not condition.shaft_speed > 0:
         raise InputError("shaft_speed", condition.shaft_speed, "a speed > 0 [rad/s]")
-    for name, value, zero in (("duration", duration, False), ("slip_duration", slip_duration,
-                                                              True)):
+    for name, value, zero in (
+        ("duration", duration, False),
+        ("slip_duration", slip_duration, True),
+    ):
         if not (math.isfinite(value) and (value >= 0 if zero else value > 0)):
-            raise InputError(name, value, "a duration >= 0 [s]" if zero
-                             else "a duration > 0 [s]")
+            raise InputError(name, value, "a duration >= 0 [s]" if zero else "a duration > 0 [s]")
     rate = default_sample_rate(condition.shaft_speed) if sample_rate is None else sample_rate
     nu, nu_source = _viscosity(lubricant, viscosity)
     given = bool(defects)
@@ -122,14 +131,22 @@ def build_report(bearing: BallBearing, condition: OperatingCondition, *, designa
     # models' limits, before any section runs)
     kin = defect_frequencies(bearing, condition.shaft_speed)
     check_record_length(kin, duration)
-    warnings = (operating_warnings(bearing, condition)
-                + sampling_warnings(kin, rate, duration,
-                                    [LOCATION_FAMILY[d.location] for d in chosen]))
-    ctx = Context(bearing=bearing, condition=condition, designation=designation,
-                  defects=chosen, defects_given=given, viscosity=nu, viscosity_source=nu_source,
-                  lubricant=lubricant if viscosity is None else None,
-                  duration=float(duration), sample_rate=float(rate),
-                  slip_duration=float(slip_duration))
+    warnings = operating_warnings(bearing, condition) + sampling_warnings(
+        kin, rate, duration, [LOCATION_FAMILY[d.location] for d in chosen]
+    )
+    ctx = Context(
+        bearing=bearing,
+        condition=condition,
+        designation=designation,
+        defects=chosen,
+        defects_given=given,
+        viscosity=nu,
+        viscosity_source=nu_source,
+        lubricant=lubricant if viscosity is None else None,
+        duration=float(duration),
+        sample_rate=float(rate),
+        slip_duration=float(slip_duration),
+    )
     sections = []
     for i, (key, title, build) in enumerate(SECTIONS):
         if progress is not None:
@@ -151,16 +168,30 @@ def _report(ctx: Context, sections: list[Section], warnings: list[str]) -> Repor
     des = ctx.designation
     name = b.name or (des.text if des is not None else "") or "ball bearing"
     what = des.description if des is not None else b.bearing_type.replace("_", " ")
-    lines = [f"{what}",
-             f"{ctx.speed_rpm:g} rpm (inner ring), F_r = {c.radial_load:g} N, "
-             f"F_a = {c.axial_load:g} N"
-             + (f"; lubricant viscosity {ctx.viscosity * 1e6:.4g} mm2/s ({ctx.viscosity_source})"
-                if ctx.viscosity is not None else "")]
-    intro = ('<p class="small">Every number comes from a published method with stated '
-             "assumptions (each section names its model and source); values marked "
-             "<em>estimated</em> in the geometry are not the maker's. Run "
-             "<code>bearinglab validate</code> to see how bearinglab reproduces the published "
-             f"cases. Simulated record: {ctx.duration:g} s at {ctx.sample_rate:g} Hz.</p>")
+    lines = [
+        f"{what}",
+        f"{ctx.speed_rpm:g} rpm (inner ring), F_r = {c.radial_load:g} N, "
+        f"F_a = {c.axial_load:g} N"
+        + (
+            f"; lubricant viscosity {ctx.viscosity * 1e6:.4g} mm2/s ({ctx.viscosity_source})"
+            if ctx.viscosity is not None
+            else ""
+        ),
+    ]
+    intro = (
+        '<p class="small">Every number comes from a published method with stated '
+        "assumptions (each section names its model and source); values marked "
+        "<em>estimated</em> in the geometry are not the maker's. Run "
+        "<code>bearinglab validate</code> to see how bearinglab reproduces the published "
+        f"cases. Simulated record: {ctx.duration:g} s at {ctx.sample_rate:g} Hz.</p>"
+    )
     now = datetime.datetime.now().strftime("%Y-%m-%d %H:%M")
-    return Report(title=f"bearinglab report: {name}", subtitle=lines, sections=sections,
-                  generated=now, version=__version__, intro=intro, warnings=tuple(warnings))
+    return Report(
+        title=f"bearinglab report: {name}",
+        subtitle=lines,
+        sections=sections,
+        generated=now,
+        version=__version__,
+        intro=intro,
+        warnings=tuple(warnings),
+    )

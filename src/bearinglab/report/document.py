@@ -58,24 +58,34 @@ def number(value: float, digits: int = 4) -> str:
     return f"{value:.{digits}g}"
 
 
-def table(columns: list[str], rows: list[list], caption: str | None = None,
-          numeric: tuple[int, ...] | None = None, css: str = "") -> str:
+def table(
+    columns: list[str],
+    rows: list[list],
+    caption: str | None = None,
+    numeric: tuple[int, ...] | None = None,
+    css: str = "",
+) -> str:
     """An HTML table; ``numeric`` columns are right-aligned (default: all but the first).
 
     Cells that are already HTML are passed as :class:`Raw`.
     """
     numeric = tuple(range(1, len(columns))) if numeric is None else numeric
-    head = "".join(f'<th class="{"num" if i in numeric else ""}">{esc(c)}</th>'
-                   for i, c in enumerate(columns))
+    head = "".join(
+        f'<th class="{"num" if i in numeric else ""}">{esc(c)}</th>' for i, c in enumerate(columns)
+    )
     body = []
     for row in rows:
         cells = "".join(
             f'<td class="{"num" if i in numeric else ""}">'
-            f'{v.text if isinstance(v, Raw) else fmt(v)}</td>' for i, v in enumerate(row))
+            f"{v.text if isinstance(v, Raw) else fmt(v)}</td>"
+            for i, v in enumerate(row)
+        )
         body.append(f"<tr>{cells}</tr>")
     cap = f"<caption>{esc(caption)}</caption>" if caption else ""
-    return (f'<div class="table-wrap"><table class="{css}">{cap}<thead><tr>{head}</tr></thead>'
-            f'<tbody>{"".join(body)}</tbody></table></div>')
+    return (
+        f'<div class="table-wrap"><table class="{css}">{cap}<thead><tr>{head}</tr></thead>'
+        f"<tbody>{''.join(body)}</tbody></table></div>"
+    )
 
 
 @dataclass(frozen=True)
@@ -108,14 +118,19 @@ def figure(fig, caption: str, width_percent: int = 100) -> str:
     finally:
         _pyplot().close(fig)
     data = base64.b64encode(buffer.getvalue()).decode("ascii")
-    return (f'<figure style="max-width:{width_percent}%"><img src="data:image/png;base64,{data}" '
-            f'alt="{esc(caption)}"><figcaption>{esc(caption)}</figcaption></figure>')
+    return (
+        f'<figure style="max-width:{width_percent}%"><img src="data:image/png;base64,{data}" '
+        f'alt="{esc(caption)}"><figcaption>{esc(caption)}</figcaption></figure>'
+    )
 
 
 def key_figures(items: list[tuple[str, str]]) -> str:
     """A grid of (label, value) cards for the summary."""
-    cards = "".join(f'<div class="card"><div class="label">{esc(k)}</div>'
-                    f'<div class="value">{esc(v)}</div></div>' for k, v in items)
+    cards = "".join(
+        f'<div class="card"><div class="label">{esc(k)}</div>'
+        f'<div class="value">{esc(v)}</div></div>'
+        for k, v in items
+    )
     return f'<div class="cards">{cards}</div>'
 
 
@@ -136,11 +151,16 @@ class Section:
 
     def to_html(self) -> str:
         badge = '<span class="badge fail">failed</span>' if self.failed else ""
-        content = (f'<div class="error"><strong>This analysis failed</strong> (the rest of the '
-                   f'report is unaffected):<pre>{esc(self.error)}</pre></div>'
-                   if self.failed else self.body)
-        return (f'<section id="{esc(self.key)}"><h2>{esc(self.title)} {badge}</h2>'
-                f'{content}<p class="top"><a href="#top">back to top</a></p></section>')
+        content = (
+            f'<div class="error"><strong>This analysis failed</strong> (the rest of the '
+            f"report is unaffected):<pre>{esc(self.error)}</pre></div>"
+            if self.failed
+            else self.body
+        )
+        return (
+            f'<section id="{esc(self.key)}"><h2>{esc(self.title)} {badge}</h2>'
+            f'{content}<p class="top"><a href="#top">back to top</a></p></section>'
+        )
 
 
 @dataclass
@@ -163,22 +183,37 @@ class Report:
     def to_html(self) -> str:
         """The self-contained page."""
         badge = ' <span class="badge fail">failed</span>'
-        items = "".join(f'<li><a href="#{esc(s.key)}">{esc(s.title)}</a>'
-                        f'{badge if s.failed else ""}</li>' for s in self.sections)
+        items = "".join(
+            f'<li><a href="#{esc(s.key)}">{esc(s.title)}</a>{badge if s.failed else ""}</li>'
+            for s in self.sections
+        )
         toc = f'<nav class="toc"><h2>Contents</h2><ol>{items}</ol></nav>'
         highlights = [h for s in self.sections for h in s.highlights]
-        summary = (f'<section id="summary"><h2>At a glance</h2>{key_figures(highlights)}'
-                   f'{self.intro}</section>' if highlights or self.intro else "")
+        summary = (
+            f'<section id="summary"><h2>At a glance</h2>{key_figures(highlights)}'
+            f"{self.intro}</section>"
+            if highlights or self.intro
+            else ""
+        )
         failed = self.failed
-        status = (f'<p class="status fail">{len(failed)} of {len(self.sections)} analyses '
-                  f'failed: {esc(", ".join(s.title for s in failed))}</p>' if failed else "")
+        status = (
+            f'<p class="status fail">{len(failed)} of {len(self.sections)} analyses '
+            f"failed: {esc(', '.join(s.title for s in failed))}</p>"
+            if failed
+            else ""
+        )
         status += "".join(f'<p class="status warn">{esc(w)}</p>' for w in self.warnings)
         return PAGE.format(
-            title=esc(self.title), heading=esc(self.title),
+            title=esc(self.title),
+            heading=esc(self.title),
             subtitle="".join(f"<p>{esc(line)}</p>" for line in self.subtitle),
             meta=esc(f"generated {self.generated} by bearinglab {self.version}".strip()),
-            status=status, toc=toc, summary=summary,
-            sections="".join(s.to_html() for s in self.sections), style=STYLE)
+            status=status,
+            toc=toc,
+            summary=summary,
+            sections="".join(s.to_html() for s in self.sections),
+            style=STYLE,
+        )
 
     def write(self, path: str | Path) -> Path:
         """Write the page to ``path`` atomically (UTF-8)."""
@@ -189,10 +224,17 @@ class Report:
 def page(title: str, subtitle: list[str], body: str, meta: str = "") -> str:
     """A self-contained page with the report's style around ``body`` (used by
     ``bearinglab validate --html``)."""
-    return PAGE.format(title=esc(title), heading=esc(title),
-                       subtitle="".join(f"<p>{esc(line)}</p>" for line in subtitle),
-                       meta=esc(meta), status="", toc="", summary="", sections=body,
-                       style=STYLE)
+    return PAGE.format(
+        title=esc(title),
+        heading=esc(title),
+        subtitle="".join(f"<p>{esc(line)}</p>" for line in subtitle),
+        meta=esc(meta),
+        status="",
+        toc="",
+        summary="",
+        sections=body,
+        style=STYLE,
+    )
 
 
 STYLE = """

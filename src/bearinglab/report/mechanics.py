@@ -72,24 +72,43 @@ def identity(ctx: Context):
     rows = []
     for name, label, symbol, factor, unit in _GEOMETRY:
         value = getattr(b, name)
-        shown = None if value is None else (int(value) if name == "ball_count"
-                                            else float(value) * factor)
+        shown = (
+            None
+            if value is None
+            else (int(value) if name == "ball_count" else float(value) * factor)
+        )
         rows.append([label, symbol, shown, unit, Raw(esc(refs.cell(b.sources.get(name))))])
-    derived = [("inner raceway diameter", "d_i", b.inner_raceway_diameter * 1e3, "mm"),
-               ("outer raceway diameter", "d_o", b.outer_raceway_diameter * 1e3, "mm"),
-               ("free contact angle", "alpha_0", math.degrees(b.free_contact_angle), "deg"),
-               ("ball mass", "m_b", b.ball_mass * 1e3, "g")]
+    derived = [
+        ("inner raceway diameter", "d_i", b.inner_raceway_diameter * 1e3, "mm"),
+        ("outer raceway diameter", "d_o", b.outer_raceway_diameter * 1e3, "mm"),
+        ("free contact angle", "alpha_0", math.degrees(b.free_contact_angle), "deg"),
+        ("ball mass", "m_b", b.ball_mass * 1e3, "g"),
+    ]
     if None not in (b.bore, b.outside_diameter, b.width) and not b.is_thrust:
         derived.append(("outer ring mass", "m_k", b.outer_ring_mass * 1e3, "g"))
     rows += [[label, symbol, value, unit, "derived"] for label, symbol, value, unit in derived]
     for name, label in (("ring_material", "ring material"), ("ball_material", "ball material")):
         m = getattr(b, name)
-        rows.append([label, "E, nu, rho", (f"{m.elastic_modulus / 1e9:.4g} GPa, "
-                                           f"{m.poisson_ratio:.3g}, {m.density:.5g} kg/m3"), "",
-                     Raw(esc(refs.cell(b.sources.get(name))))])
-    parts.append(table(["quantity", "symbol", "value", "unit", "source"], rows,
-                       f"Geometry and materials (geometry source: {b.geometry_source})",
-                       numeric=(2,)))
+        rows.append(
+            [
+                label,
+                "E, nu, rho",
+                (
+                    f"{m.elastic_modulus / 1e9:.4g} GPa, "
+                    f"{m.poisson_ratio:.3g}, {m.density:.5g} kg/m3"
+                ),
+                "",
+                Raw(esc(refs.cell(b.sources.get(name)))),
+            ]
+        )
+    parts.append(
+        table(
+            ["quantity", "symbol", "value", "unit", "source"],
+            rows,
+            f"Geometry and materials (geometry source: {b.geometry_source})",
+            numeric=(2,),
+        )
+    )
     parts.append(refs.html())
     label = b.name or (des.text if des is not None else "bearing")
     highlights = [("Bearing", label), ("Geometry", b.geometry_source)]
@@ -103,30 +122,59 @@ def load_distribution(ctx: Context):
     d = r.to_dict()
     balls = r.ball_table()
     loaded = int((balls["inner_load_n"] > 0).sum())
-    summary = [["radial displacement S_r", d["radial_displacement_um"], "um"],
-               ["axial displacement S_a", d["axial_displacement_um"], "um"],
-               ["largest ball load Q_max", d["max_ball_load_n"], "N"],
-               ["balls loaded at the inner ring", loaded, f"of {ctx.bearing.ball_count}"],
-               ["radial stiffness C_r = dF_r/dS_r", d["radial_stiffness_n_per_um"], "N/um"],
-               ["axial stiffness C_a = dF_a/dS_a", d["axial_stiffness_n_per_um"], "N/um"],
-               ["diametral clearance P_d", d["diametral_clearance_um"], "um"],
-               ["equilibrium residual", d["equilibrium_residual_n"], "N"]]
-    rows = [[int(row.ball), row.angle_deg, row.inner_load_n, row.outer_load_n,
-             row.inner_contact_angle_deg, row.inner_max_pressure_gpa, row.outer_max_pressure_gpa]
-            for row in balls.itertuples(index=False)]
-    body = [paragraph("Quasi-static equilibrium of the inner ring under the applied loads, "
-                      "with clearance and the balls' centrifugal force (seed 001's model; "
-                      "bearinglab.quasistatic.solve_load_distribution). Ball 1 sits under "
-                      "the radial load, which acts downwards (-y)."),
-            table(["quantity", "value", "unit"], [*summary], "Operating point", numeric=(1,)),
-            figure(r.plot()[0], "Ball loads at their angular positions (polar) and the "
-                                "contact angle of each ball"),
-            table(["ball", "angle [deg]", "inner load [N]", "outer load [N]",
-                   "inner contact angle [deg]", "inner p_max [GPa]", "outer p_max [GPa]"],
-                  rows, "Per ball"),
-            notes(list(r.warnings), "Warnings")]
-    highlights = [("Largest ball load", f"{number(d['max_ball_load_n'], 3)} N"),
-                  ("Radial stiffness", f"{number(d['radial_stiffness_n_per_um'], 3)} N/um")]
+    summary = [
+        ["radial displacement S_r", d["radial_displacement_um"], "um"],
+        ["axial displacement S_a", d["axial_displacement_um"], "um"],
+        ["largest ball load Q_max", d["max_ball_load_n"], "N"],
+        ["balls loaded at the inner ring", loaded, f"of {ctx.bearing.ball_count}"],
+        ["radial stiffness C_r = dF_r/dS_r", d["radial_stiffness_n_per_um"], "N/um"],
+        ["axial stiffness C_a = dF_a/dS_a", d["axial_stiffness_n_per_um"], "N/um"],
+        ["diametral clearance P_d", d["diametral_clearance_um"], "um"],
+        ["equilibrium residual", d["equilibrium_residual_n"], "N"],
+    ]
+    rows = [
+        [
+            int(row.ball),
+            row.angle_deg,
+            row.inner_load_n,
+            row.outer_load_n,
+            row.inner_contact_angle_deg,
+            row.inner_max_pressure_gpa,
+            row.outer_max_pressure_gpa,
+        ]
+        for row in balls.itertuples(index=False)
+    ]
+    body = [
+        paragraph(
+            "Quasi-static equilibrium of the inner ring under the applied loads, "
+            "with clearance and the balls' centrifugal force (seed 001's model; "
+            "bearinglab.quasistatic.solve_load_distribution). Ball 1 sits under "
+            "the radial load, which acts downwards (-y)."
+        ),
+        table(["quantity", "value", "unit"], [*summary], "Operating point", numeric=(1,)),
+        figure(
+            r.plot()[0],
+            "Ball loads at their angular positions (polar) and the contact angle of each ball",
+        ),
+        table(
+            [
+                "ball",
+                "angle [deg]",
+                "inner load [N]",
+                "outer load [N]",
+                "inner contact angle [deg]",
+                "inner p_max [GPa]",
+                "outer p_max [GPa]",
+            ],
+            rows,
+            "Per ball",
+        ),
+        notes(list(r.warnings), "Warnings"),
+    ]
+    highlights = [
+        ("Largest ball load", f"{number(d['max_ball_load_n'], 3)} N"),
+        ("Radial stiffness", f"{number(d['radial_stiffness_n_per_um'], 3)} N/um"),
+    ]
     return "".join(body), highlights
 
 
@@ -138,31 +186,48 @@ def contact(ctx: Context):
         raise ValueError("no ball carries load at this operating point")
     c = ball_contacts(ctx.bearing, q)
     d = c.to_dict()
-    keys = (("semi-major axis a", "semi_major_mm", "mm"), ("semi-minor axis b", "semi_minor_mm",
-                                                          "mm"),
-            ("ellipticity k = a/b", "ellipticity", "-"),
-            ("maximum pressure p_max", "max_pressure_gpa", "GPa"),
-            ("mean pressure", "mean_pressure_gpa", "GPa"),
-            ("approach delta", "approach_um", "um"),
-            ("contact stiffness dQ/d(delta)", "stiffness_n_per_um", "N/um"))
+    keys = (
+        ("semi-major axis a", "semi_major_mm", "mm"),
+        ("semi-minor axis b", "semi_minor_mm", "mm"),
+        ("ellipticity k = a/b", "ellipticity", "-"),
+        ("maximum pressure p_max", "max_pressure_gpa", "GPa"),
+        ("mean pressure", "mean_pressure_gpa", "GPa"),
+        ("approach delta", "approach_um", "um"),
+        ("contact stiffness dQ/d(delta)", "stiffness_n_per_um", "N/um"),
+    )
     rows = [[label, d["inner"][k], d["outer"][k], unit] for label, k, unit in keys]
-    body = [paragraph(f"Hertz point contact of the most loaded ball (Q = {q:.4g} N) with the "
-                      f"inner and outer raceways at the nominal contact angle "
-                      f"{d['contact_angle_deg']:.3g} deg (exact elliptic integrals; "
-                      "bearinglab.contact.ball_contacts)."),
-            table(["quantity", "inner", "outer", "unit"], rows, f"Contacts at Q = {q:.4g} N",
-                  numeric=(1, 2)),
-            figure(c.plot()[0], "Maximum pressure and approach against ball load, and the "
-                                "contact ellipses at the largest ball load"),
-            notes(list(c.warnings), "Warnings")]
+    body = [
+        paragraph(
+            f"Hertz point contact of the most loaded ball (Q = {q:.4g} N) with the "
+            f"inner and outer raceways at the nominal contact angle "
+            f"{d['contact_angle_deg']:.3g} deg (exact elliptic integrals; "
+            "bearinglab.contact.ball_contacts)."
+        ),
+        table(
+            ["quantity", "inner", "outer", "unit"],
+            rows,
+            f"Contacts at Q = {q:.4g} N",
+            numeric=(1, 2),
+        ),
+        figure(
+            c.plot()[0],
+            "Maximum pressure and approach against ball load, and the "
+            "contact ellipses at the largest ball load",
+        ),
+        notes(list(c.warnings), "Warnings"),
+    ]
     p = max(d["inner"]["max_pressure_gpa"], d["outer"]["max_pressure_gpa"])
     return "".join(body), [("Max contact pressure", f"{number(p, 3)} GPa")]
 
 
 def _condition(ctx: Context, factor: float, along: str) -> OperatingCondition:
     c = ctx.condition
-    kwargs = {"radial_load": c.radial_load, "axial_load": c.axial_load,
-              "shaft_speed": c.shaft_speed, "radial_load_angle": c.radial_load_angle}
+    kwargs = {
+        "radial_load": c.radial_load,
+        "axial_load": c.axial_load,
+        "shaft_speed": c.shaft_speed,
+        "radial_load_angle": c.radial_load_angle,
+    }
     kwargs[along] = factor * kwargs[along]
     return OperatingCondition(**kwargs)
 
@@ -183,8 +248,9 @@ def stiffness(ctx: Context):
         loads.append(load)
         cr.append(d["radial_stiffness_n_per_um"])
         ca.append(d["axial_stiffness_n_per_um"])
-        sr.append(d["radial_displacement_um"] if along == "radial_load"
-                  else d["axial_displacement_um"])
+        sr.append(
+            d["radial_displacement_um"] if along == "radial_load" else d["axial_displacement_um"]
+        )
         rows.append([k, load, sr[-1], cr[-1], ca[-1], d["max_ball_load_n"]])
     from ..plotting import _pyplot
 
@@ -203,16 +269,32 @@ def stiffness(ctx: Context):
     names = list(DOF_NAMES)
     k = r.stiffness_matrix_shown()
     matrix = [[n, *[float(v) for v in row]] for n, row in zip(names, k, strict=False)]
-    body = [paragraph(f"Tangent stiffness of the bearing at {symbol} from "
-                      f"{LOAD_FACTORS[0]:g} to {LOAD_FACTORS[-1]:g} times the operating load "
-                      "(other loads and the speed held). Ball bearings stiffen as the load "
-                      "grows (Q ~ delta^1.5) and more balls take load."),
-            figure(fig, f"Stiffness and displacement against {symbol}"),
-            table(["x operating load", f"{symbol} [N]",
-                   "S_r [um]" if along == "radial_load" else "S_a [um]",
-                   "C_r [N/um]", "C_a [N/um]", "Q_max [N]"], rows, "Stiffness against load"),
-            table(["", *names], matrix, "5x5 tangent stiffness matrix at the operating point "
-                  "(SI: N/m, N/rad, N m/m, N m/rad)")]
+    body = [
+        paragraph(
+            f"Tangent stiffness of the bearing at {symbol} from "
+            f"{LOAD_FACTORS[0]:g} to {LOAD_FACTORS[-1]:g} times the operating load "
+            "(other loads and the speed held). Ball bearings stiffen as the load "
+            "grows (Q ~ delta^1.5) and more balls take load."
+        ),
+        figure(fig, f"Stiffness and displacement against {symbol}"),
+        table(
+            [
+                "x operating load",
+                f"{symbol} [N]",
+                "S_r [um]" if along == "radial_load" else "S_a [um]",
+                "C_r [N/um]",
+                "C_a [N/um]",
+                "Q_max [N]",
+            ],
+            rows,
+            "Stiffness against load",
+        ),
+        table(
+            ["", *names],
+            matrix,
+            "5x5 tangent stiffness matrix at the operating point (SI: N/m, N/rad, N m/m, N m/rad)",
+        ),
+    ]
     return "".join(body), []
 
 
@@ -221,30 +303,55 @@ def rings(ctx: Context):
     r = ctx.need("load", "load distribution")
     k = float(r.radial_stiffness)
     if not k > 0:
-        raise ValueError(f"the radial stiffness at the operating point is {k:g} N/m: the ring "
-                         "is not supported by the balls in the radial direction")
+        raise ValueError(
+            f"the radial stiffness at the operating point is {k:g} N/m: the ring "
+            "is not supported by the balls in the radial direction"
+        )
     m = ring_modes(ctx.bearing, radial_stiffness=k, modes=(1, *RING_MODES))
     d = m.to_dict()
     rows = []
     for mode in d["modes"]:
-        rows.append([mode["m"], mode["free_hz"] / 1e3 if mode["m"] > 1 else None,
-                     ", ".join(f"{f / 1e3:.4g}" for f in mode["approx_hz"]),
-                     ", ".join(f"{f / 1e3:.4g}" for f in mode["refined_hz"]) or None,
-                     "ring as a rigid body on the ball springs" if mode["m"] == 1 else
-                     "balls at nodes / antinodes" if mode["split"] else ""])
-    body = [paragraph("Flexural modes of the outer ring supported by the loaded balls "
-                      "(seed 000, Balmont & Varlamov 1986): the free-ring frequency f*_m of "
-                      "our ring section, eq. (1.9)'s approximate loaded frequency and the "
-                      "refined solution with the balls' mass (eqs. 3.3-3.10). The ball "
-                      f"springs' radial stiffness K_x = {k / 1e6:.4g} N/um is the tangent "
-                      "radial stiffness of the load distribution at the operating point; the "
-                      f"vibrating mass is the bare outer ring ({d['ring_mass_kg'] * 1e3:.4g} "
-                      f"g, no housing or sensors), kappa = {d['ball_mass_ratio']:.3g}."),
-            table(["mode m", "free f*_m [kHz]", "approximate [kHz]", "refined [kHz]", "note"],
-                  rows, "Outer-ring natural frequencies", numeric=(1, 2, 3)),
-            figure(m.plot()[0], "Ring natural frequencies by mode number", 80),
-            notes([("The outer ring vibrates on the balls alone, as in the paper's test (a "
+        rows.append(
+            [
+                mode["m"],
+                mode["free_hz"] / 1e3 if mode["m"] > 1 else None,
+                ", ".join(f"{f / 1e3:.4g}" for f in mode["approx_hz"]),
+                ", ".join(f"{f / 1e3:.4g}" for f in mode["refined_hz"]) or None,
+                "ring as a rigid body on the ball springs"
+                if mode["m"] == 1
+                else "balls at nodes / antinodes"
+                if mode["split"]
+                else "",
+            ]
+        )
+    body = [
+        paragraph(
+            "Flexural modes of the outer ring supported by the loaded balls "
+            "(seed 000, Balmont & Varlamov 1986): the free-ring frequency f*_m of "
+            "our ring section, eq. (1.9)'s approximate loaded frequency and the "
+            "refined solution with the balls' mass (eqs. 3.3-3.10). The ball "
+            f"springs' radial stiffness K_x = {k / 1e6:.4g} N/um is the tangent "
+            "radial stiffness of the load distribution at the operating point; the "
+            f"vibrating mass is the bare outer ring ({d['ring_mass_kg'] * 1e3:.4g} "
+            f"g, no housing or sensors), kappa = {d['ball_mass_ratio']:.3g}."
+        ),
+        table(
+            ["mode m", "free f*_m [kHz]", "approximate [kHz]", "refined [kHz]", "note"],
+            rows,
+            "Outer-ring natural frequencies",
+            numeric=(1, 2, 3),
+        ),
+        figure(m.plot()[0], "Ring natural frequencies by mode number", 80),
+        notes(
+            [
+                (
+                    "The outer ring vibrates on the balls alone, as in the paper's test (a "
                     "ring hung free): a ring pressed into a housing vibrates with the housing, "
-                    "and its resonances are then those of the assembly.")], "Assumptions")]
+                    "and its resonances are then those of the assembly."
+                )
+            ],
+            "Assumptions",
+        ),
+    ]
     m2 = next(mode for mode in d["modes"] if mode["m"] == 2)
     return "".join(body), [("Ring mode m=2", f"{number(m2['approx_hz'][0] / 1e3, 3)} kHz")]

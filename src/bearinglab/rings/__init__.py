@@ -16,8 +16,17 @@ from .frequencies import (
 from .modes import RingMode, RingModes, ring_modes
 
 __all__ = [
-    "RingMode", "RingModes", "free_ring_frequency", "linear_stiffness_ratio",
-    "loaded_ring_frequencies", "loaded_ring_frequency", "radial_stiffness_under_axial_load",
-    "refined_equal_stiffness", "refined_frequency", "refined_ring_frequencies",
-    "rigid_body_frequency", "ring_modes", "split_mode",
+    "RingMode",
+    "RingModes",
+    "free_ring_frequency",
+    "linear_stiffness_ratio",
+    "loaded_ring_frequencies",
+    "loaded_ring_frequency",
+    "radial_stiffness_under_axial_load",
+    "refined_equal_stiffness",
+    "refined_frequency",
+    "refined_ring_frequencies",
+    "rigid_body_frequency",
+    "ring_modes",
+    "split_mode",
 ]

@@ -22,8 +22,12 @@ from ..errors import InputError
 
 def _modes(mode, minimum: int = 1):
     m = np.asarray(mode)
-    if (m.dtype.kind not in "iuf" or np.any(~np.isfinite(m)) or np.any(m != np.round(m))
-            or np.any(m < minimum)):
+    if (
+        m.dtype.kind not in "iuf"
+        or np.any(~np.isfinite(m))
+        or np.any(m != np.round(m))
+        or np.any(m < minimum)
+    ):
         raise InputError("mode", mode, f"integers >= {minimum}")
     return m.astype(float)
 
@@ -49,8 +53,12 @@ def _g(m):
 
 def _loaded_inputs(free_frequency, rigid_body_frequency, mode, lam):
     """(m, lambda, f*_m [Hz], f_1 [Hz]) checked, for the loaded-ring formulas."""
-    return (_modes(mode), _lam(lam), _arr("free_frequency", free_frequency, "[Hz]"),
-            _arr("rigid_body_frequency", rigid_body_frequency, "[Hz]"))
+    return (
+        _modes(mode),
+        _lam(lam),
+        _arr("free_frequency", free_frequency, "[Hz]"),
+        _arr("rigid_body_frequency", rigid_body_frequency, "[Hz]"),
+    )
 
 
 def free_ring_frequency(mode, elastic_modulus, density, second_moment, mean_radius, area):
@@ -74,10 +82,14 @@ def free_ring_frequency(mode, elastic_modulus, density, second_moment, mean_radi
     3458.7
     """
     m = _modes(mode)
-    e, rho = _arr("elastic_modulus", elastic_modulus, "[Pa]", True), _arr(
-        "density", density, "[kg/m^3]", True)
-    i, r = _arr("second_moment", second_moment, "[m^4]", True), _arr(
-        "mean_radius", mean_radius, "[m]", True)
+    e, rho = (
+        _arr("elastic_modulus", elastic_modulus, "[Pa]", True),
+        _arr("density", density, "[kg/m^3]", True),
+    )
+    i, r = (
+        _arr("second_moment", second_moment, "[m^4]", True),
+        _arr("mean_radius", mean_radius, "[m]", True),
+    )
     s = _arr("area", area, "[m^2]", True)
     return np.sqrt(e * i * (m**2 - 1.0) ** 2 * _g(m) / (rho * r**4 * s)) / (2.0 * np.pi)
 
@@ -106,12 +118,18 @@ def radial_stiffness_under_axial_load(ball_count, ball_constant, axial_load, con
     >>> round(float(radial_stiffness_under_axial_load(8, 1.5e10, 200.0, 0.2)) / 1e6, 1)
     175.7
     """
-    n, k = _arr("ball_count", ball_count, "[-]", True), _arr(
-        "ball_constant", ball_constant, "[N/m^1.5]")
+    n, k = (
+        _arr("ball_count", ball_count, "[-]", True),
+        _arr("ball_constant", ball_constant, "[N/m^1.5]"),
+    )
     a, tau = _arr("axial_load", axial_load, "[N]", True), np.asarray(contact_angle, float)
     if np.any(~np.isfinite(tau)) or np.any(tau <= 0) or np.any(tau >= 0.5 * np.pi):
-        raise InputError("contact_angle", contact_angle, "angles in (0, 90) degrees [rad]",
-                         "a pure axial load needs a contact angle > 0")
+        raise InputError(
+            "contact_angle",
+            contact_angle,
+            "angles in (0, 90) degrees [rad]",
+            "a pure axial load needs a contact angle > 0",
+        )
     return 0.75 * (n * k) ** (2.0 / 3.0) * np.cbrt(a / np.sin(tau)) * np.cos(tau) ** 2
 
 
@@ -184,8 +202,10 @@ def loaded_ring_frequencies(free_frequency, rigid_body_frequency, mode, ball_cou
     [10.0, 11.11]
     """
     split = split_mode(mode, ball_count)
-    return tuple(loaded_ring_frequency(free_frequency, rigid_body_frequency, mode,
-                                       np.where(split, lam, 1.0)) for lam in (0.0, 2.0))
+    return tuple(
+        loaded_ring_frequency(free_frequency, rigid_body_frequency, mode, np.where(split, lam, 1.0))
+        for lam in (0.0, 2.0)
+    )
 
 
 def _terms(free_frequency, rigid_body_frequency, mode, kappa, ratio, lam):
@@ -193,13 +213,20 @@ def _terms(free_frequency, rigid_body_frequency, mode, kappa, ratio, lam):
     m, lam, fs, f1 = _loaded_inputs(free_frequency, rigid_body_frequency, mode, lam)
     c = _arr("ball_mass_ratio", kappa, "[-]") * _g(m)
     r = _arr("stiffness_ratio", ratio, "[-]", True)
-    b1 = 2.0 * _g(m) * f1**2 * (1.0 + r)          # 2 w1^2 / (1 + m^-2), w1^2 = f_1^2 (1 + r)
-    b2 = 2.0 * _g(m) * f1**2 * (1.0 + 1.0 / r)    # 2 w2^2 / (1 + m^-2)
+    b1 = 2.0 * _g(m) * f1**2 * (1.0 + r)  # 2 w1^2 / (1 + m^-2), w1^2 = f_1^2 (1 + r)
+    b2 = 2.0 * _g(m) * f1**2 * (1.0 + 1.0 / r)  # 2 w2^2 / (1 + m^-2)
     return fs**2, b1, b2, c, r, lam
 
 
-def refined_frequency(epsilon, free_frequency, rigid_body_frequency, mode, ball_mass_ratio,
-                      stiffness_ratio=1.0, lam=1.0):
+def refined_frequency(
+    epsilon,
+    free_frequency,
+    rigid_body_frequency,
+    mode,
+    ball_mass_ratio,
+    stiffness_ratio=1.0,
+    lam=1.0,
+):
     """Eq. (3.3) (lam = 1) and its 2m = l n form (lam = 1 - cos 2 m phi_0) [Hz]:
 
     f^2 = {f*^2 + 2 lam (1+m^-2)^-1 [e^2 w2^2 + (1-e)^2 w1^2]} / [1 + lam kappa e^2 (1+m^-2)^-1]
@@ -226,8 +253,9 @@ def refined_frequency(epsilon, free_frequency, rigid_body_frequency, mode, ball_
     >>> round(float(refined_frequency(6.08, 16.2, 2.5, 5, 0.33)), 2)
     11.8
     """
-    a, b1, b2, c, _, lam = _terms(free_frequency, rigid_body_frequency, mode, ball_mass_ratio,
-                                  stiffness_ratio, lam)
+    a, b1, b2, c, _, lam = _terms(
+        free_frequency, rigid_body_frequency, mode, ball_mass_ratio, stiffness_ratio, lam
+    )
     e = np.asarray(epsilon, dtype=float)
     with np.errstate(invalid="ignore", over="ignore", divide="ignore"):
         f2 = (a + lam * (b2 * e**2 + b1 * (1.0 - e) ** 2)) / (1.0 + lam * c * e**2)
@@ -235,8 +263,9 @@ def refined_frequency(epsilon, free_frequency, rigid_body_frequency, mode, ball_
     return np.sqrt(f2)
 
 
-def refined_ring_frequencies(free_frequency, rigid_body_frequency, mode, ball_mass_ratio,
-                             stiffness_ratio=1.0, lam=1.0):
+def refined_ring_frequencies(
+    free_frequency, rigid_body_frequency, mode, ball_mass_ratio, stiffness_ratio=1.0, lam=1.0
+):
     """Both stationary values of eq. (3.3)/(3.6) in epsilon: ((f_low, f_high) [Hz],
     (epsilon_low, epsilon_high) [-]).
 
@@ -272,15 +301,20 @@ def refined_ring_frequencies(free_frequency, rigid_body_frequency, mode, ball_ma
         e_a = np.where(lam > 0, np.where(qa > 0, q / qa, np.inf), np.nan)
         e_b = np.where(lam > 0, np.where(q != 0, qc / q, r / (1.0 + r)), np.nan)
     lam1, nodes = np.where(lam > 0, lam, 1.0), np.sqrt(a)
-    f_a, f_b = (np.where(lam > 0, refined_frequency(np.where(np.isnan(e), 0.0, e), *args,
-                                                    lam1), nodes) for e in (e_a, e_b))
+    f_a, f_b = (
+        np.where(lam > 0, refined_frequency(np.where(np.isnan(e), 0.0, e), *args, lam1), nodes)
+        for e in (e_a, e_b)
+    )
     low = f_b <= f_a
-    return ((np.where(low, f_b, f_a), np.where(low, f_a, f_b)),
-            (np.where(low, e_b, e_a), np.where(low, e_a, e_b)))
+    return (
+        (np.where(low, f_b, f_a), np.where(low, f_a, f_b)),
+        (np.where(low, e_b, e_a), np.where(low, e_a, e_b)),
+    )
 
 
-def refined_equal_stiffness(free_frequency, rigid_body_frequency, mode, ball_mass_ratio,
-                            antinodes=False):
+def refined_equal_stiffness(
+    free_frequency, rigid_body_frequency, mode, ball_mass_ratio, antinodes=False
+):
     """K1 = K2 as printed: roots of (3.5) and frequencies by (3.4), or with ``antinodes``
     (2m = l n) roots of (3.10) and frequencies by (3.9). Returns ((f_pos, f_neg) [Hz],
     (e_pos, e_neg) [-]), the positive root first (the paper's epsilon_1):
@@ -314,8 +348,13 @@ def refined_equal_stiffness(free_frequency, rigid_body_frequency, mode, ball_mas
     b = 8.0 - kappa * (fs / f1) ** 2 - k
     root = np.sqrt(b**2 + 16.0 * k)
     eps = ((-b + root) / (2.0 * k), (-b - root) / (2.0 * k))
-    return tuple(np.sqrt((fs**2 + 4.0 * lam * _g(m) * f1**2 * (e**2 + (1.0 - e) ** 2))
-                         / (1.0 + lam * kappa * e**2 * _g(m))) for e in eps), eps
+    return tuple(
+        np.sqrt(
+            (fs**2 + 4.0 * lam * _g(m) * f1**2 * (e**2 + (1.0 - e) ** 2))
+            / (1.0 + lam * kappa * e**2 * _g(m))
+        )
+        for e in eps
+    ), eps
 
 
 def linear_stiffness_ratio(outer_constant, inner_constant):
@@ -327,8 +366,10 @@ def linear_stiffness_ratio(outer_constant, inner_constant):
     outer_constant, inner_constant : float or array
         K_o and K_i in Q = K delta^1.5 [N/m^1.5].
     """
-    return (_arr("outer_constant", outer_constant, "[N/m^1.5]", True)
-            / _arr("inner_constant", inner_constant, "[N/m^1.5]", True)) ** (2.0 / 3.0)
+    return (
+        _arr("outer_constant", outer_constant, "[N/m^1.5]", True)
+        / _arr("inner_constant", inner_constant, "[N/m^1.5]", True)
+    ) ** (2.0 / 3.0)
 
 
 # ---------------------------------------------------------------- layer 3: the analysis

@@ -82,30 +82,48 @@ class RingModes:
         a rigid body on the ball springs (eq. 1.7), first when it was asked for."""
         measured, modes = dict(self.measured), []
         if self.rigid_body_mode:
-            modes.append({"m": 1, "free_hz": 0.0, "split": False,
-                          "approx_hz": [self.rigid_body_frequency],
-                          "approx_ball_position": ["any"], "refined_hz": [], "epsilon": [],
-                          "refined_ball_position": [], "p": None})
+            modes.append(
+                {
+                    "m": 1,
+                    "free_hz": 0.0,
+                    "split": False,
+                    "approx_hz": [self.rigid_body_frequency],
+                    "approx_ball_position": ["any"],
+                    "refined_hz": [],
+                    "epsilon": [],
+                    "refined_ball_position": [],
+                    "p": None,
+                }
+            )
         for r in self.modes:
-            d = {"m": r.mode, "free_hz": r.free, "split": r.split,
-                 "approx_hz": list(r.approximate),
-                 "approx_ball_position": ["nodes", "antinodes"] if r.split else ["any"],
-                 "refined_hz": list(r.refined), "epsilon": list(r.epsilon),
-                 "refined_ball_position": list(r.positions),
-                 "p": r.p if math.isfinite(r.p) else None}
+            d = {
+                "m": r.mode,
+                "free_hz": r.free,
+                "split": r.split,
+                "approx_hz": list(r.approximate),
+                "approx_ball_position": ["nodes", "antinodes"] if r.split else ["any"],
+                "refined_hz": list(r.refined),
+                "epsilon": list(r.epsilon),
+                "refined_ball_position": list(r.positions),
+                "p": r.p if math.isfinite(r.p) else None,
+            }
             if r.mode in measured:
                 d["measured_hz"] = list(measured[r.mode])
             modes.append(d)
         angle = self.contact_angle
-        return {"bearing": getattr(self.bearing, "name", None) or None,
-                "ball_count": self.ball_count, "axial_load_n": self.axial_load,
-                "contact_angle_deg": None if angle is None else math.degrees(angle),
-                "ring_mass_kg": self.ring_mass,
-                "radial_stiffness_n_per_m": self.radial_stiffness,
-                "rigid_body_frequency_hz": self.rigid_body_frequency,
-                "ball_mass_ratio": self.ball_mass_ratio,
-                "contact_stiffness_ratio": self.contact_stiffness_ratio,
-                "sources": dict(self.sources), "modes": modes}
+        return {
+            "bearing": getattr(self.bearing, "name", None) or None,
+            "ball_count": self.ball_count,
+            "axial_load_n": self.axial_load,
+            "contact_angle_deg": None if angle is None else math.degrees(angle),
+            "ring_mass_kg": self.ring_mass,
+            "radial_stiffness_n_per_m": self.radial_stiffness,
+            "rigid_body_frequency_hz": self.rigid_body_frequency,
+            "ball_mass_ratio": self.ball_mass_ratio,
+            "contact_stiffness_ratio": self.contact_stiffness_ratio,
+            "sources": dict(self.sources),
+            "modes": modes,
+        }
 
     def to_pandas(self):
         """One row per (m, model, solution): m, model (rigid body, free, approximate,
@@ -113,17 +131,19 @@ class RingModes:
         import pandas as pd
 
         def row(m, model, f, pos="", eps=None):
-            return {"m": m, "model": model, "ball_position": pos, "frequency_hz": f,
-                    "epsilon": eps}
+            return {"m": m, "model": model, "ball_position": pos, "frequency_hz": f, "epsilon": eps}
 
         rows, measured = [row(1, "rigid body", self.rigid_body_frequency)], dict(self.measured)
         for r in self.modes:
             pos = ("nodes", "antinodes") if r.split else ("any",)
             rows += [row(r.mode, "free", r.free)]
-            rows += [row(r.mode, "approximate", f, p)
-                     for f, p in zip(r.approximate, pos, strict=True)]
-            rows += [row(r.mode, "refined", f, p, e)
-                     for f, e, p in zip(r.refined, r.epsilon, r.positions, strict=False)]
+            rows += [
+                row(r.mode, "approximate", f, p) for f, p in zip(r.approximate, pos, strict=True)
+            ]
+            rows += [
+                row(r.mode, "refined", f, p, e)
+                for f, e, p in zip(r.refined, r.epsilon, r.positions, strict=False)
+            ]
             rows += [row(r.mode, "measured", f) for f in measured.get(r.mode, ())]
         return pd.DataFrame(rows)
 
@@ -136,18 +156,32 @@ class RingModes:
         else:
             fig = ax.figure
         df = self.to_pandas()
-        for i, (model, marker) in enumerate((("rigid body", "D"), ("free", "o"),
-                                            ("approximate", "s"), ("refined", "^"),
-                                            ("measured", "x"))):
+        for i, (model, marker) in enumerate(
+            (
+                ("rigid body", "D"),
+                ("free", "o"),
+                ("approximate", "s"),
+                ("refined", "^"),
+                ("measured", "x"),
+            )
+        ):
             part = df[df["model"] == model]
             if len(part):
-                ax.plot(part["m"] + 0.08 * (i - 2), part["frequency_hz"] / 1e3, marker,
-                        color=f"C{i}", linestyle="none", label=model)
+                ax.plot(
+                    part["m"] + 0.08 * (i - 2),
+                    part["frequency_hz"] / 1e3,
+                    marker,
+                    color=f"C{i}",
+                    linestyle="none",
+                    label=model,
+                )
         ax.set_xticks([1] + [r.mode for r in self.modes])
         ax.set_xlabel("mode number m (1: ring as a rigid body)")
         ax.set_ylabel("natural frequency [kHz]")
-        ax.set_title(f"{getattr(self.bearing, 'name', '') or 'outer ring'}: n = "
-                     f"{self.ball_count}, kappa = {self.ball_mass_ratio:.3g}")
+        ax.set_title(
+            f"{getattr(self.bearing, 'name', '') or 'outer ring'}: n = "
+            f"{self.ball_count}, kappa = {self.ball_mass_ratio:.3g}"
+        )
         ax.legend(fontsize=8)
         ax.grid(alpha=0.3)
         fig.tight_layout()
@@ -155,8 +189,13 @@ class RingModes:
 
 
 def _scalar(name, value, unit, allow_zero=False):
-    if (isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating))
-            or not math.isfinite(value) or value < 0 or (value == 0 and not allow_zero)):
+    if (
+        isinstance(value, bool)
+        or not isinstance(value, (int, float, np.integer, np.floating))
+        or not math.isfinite(value)
+        or value < 0
+        or (value == 0 and not allow_zero)
+    ):
         raise InputError(name, value, f"a finite value {'>=' if allow_zero else '>'} 0 {unit}")
     return float(value)
 
@@ -174,11 +213,22 @@ def _per_mode(values, ms, name) -> dict:
 _rigid_body = rigid_body_frequency  # the keyword of ring_modes shadows the name
 
 
-def ring_modes(bearing=None, *, axial_load=None, contact_angle=None, modes=range(2, 7),
-               ring_mass=None, radial_stiffness=None, rigid_body_frequency=None,
-               free_frequencies=None, ball_mass_ratio=None, contact_stiffness_ratio=None,
-               ball_count=None, measured=None,
-               radial_stiffness_from: str = "closed_form") -> RingModes:
+def ring_modes(
+    bearing=None,
+    *,
+    axial_load=None,
+    contact_angle=None,
+    modes=range(2, 7),
+    ring_mass=None,
+    radial_stiffness=None,
+    rigid_body_frequency=None,
+    free_frequencies=None,
+    ball_mass_ratio=None,
+    contact_stiffness_ratio=None,
+    ball_count=None,
+    measured=None,
+    radial_stiffness_from: str = "closed_form",
+) -> RingModes:
     """Outer-ring natural frequencies of a ball bearing under axial load (seed 000).
 
     Every input of the paper can be given; the rest comes from ``bearing``: f*_m from its
@@ -227,12 +277,14 @@ def ring_modes(bearing=None, *, axial_load=None, contact_angle=None, modes=range
     [10.0, 11.11, 9.46, 10.0, 14.46]
     """
     ms = list(modes) if not isinstance(modes, (str, bytes)) else []
-    if not ms or any(isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < 1
-                     for m in ms):
+    if not ms or any(
+        isinstance(m, bool) or not isinstance(m, (int, np.integer)) or m < 1 for m in ms
+    ):
         raise InputError("modes", modes, "mode numbers m >= 1 (m = 1 is the rigid body)")
     if radial_stiffness_from not in ("closed_form", "load_distribution"):
-        raise InputError("radial_stiffness_from", radial_stiffness_from,
-                         "'closed_form' or 'load_distribution'")
+        raise InputError(
+            "radial_stiffness_from", radial_stiffness_from, "'closed_form' or 'load_distribution'"
+        )
     rigid_mode = 1 in ms
     ms = sorted({int(m) for m in ms if m >= 2})
     src: dict[str, str] = {}
@@ -240,30 +292,49 @@ def ring_modes(bearing=None, *, axial_load=None, contact_angle=None, modes=range
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 3:
         raise InputError("ball_count", n, "an integer >= 3 (or a bearing)")
     src["ball_count"] = "user" if ball_count is not None else "bearing"
-    free = {m: _scalar("free_frequencies", f, "[Hz]")
-            for m, f in _per_mode(free_frequencies, ms, "free_frequencies").items()}
+    free = {
+        m: _scalar("free_frequencies", f, "[Hz]")
+        for m, f in _per_mode(free_frequencies, ms, "free_frequencies").items()
+    }
     missing = [m for m in ms if m not in free]
     if missing and bearing is None:
-        raise InputError("free_frequencies", free_frequencies, f"a value for each of {ms}",
-                         "or a bearing to compute them from")
+        raise InputError(
+            "free_frequencies",
+            free_frequencies,
+            f"a value for each of {ms}",
+            "or a bearing to compute them from",
+        )
     if missing:
         s, mat = bearing.outer_ring_section, bearing.ring_material
-        free.update({m: float(free_ring_frequency(m, mat.elastic_modulus, mat.density,
-                                                  s.second_moment, s.mean_radius, s.area))
-                     for m in missing})
+        free.update(
+            {
+                m: float(
+                    free_ring_frequency(
+                        m, mat.elastic_modulus, mat.density, s.second_moment, s.mean_radius, s.area
+                    )
+                )
+                for m in missing
+            }
+        )
     src["free_frequencies"] = {0: "user", len(ms): "bearing"}.get(len(missing), "user+bearing")
     alpha = k_n = k_o = k_i = None
     if bearing is not None:
         from ..contact.ball_race import load_deflection_constants
 
-        alpha = (_scalar("contact_angle", contact_angle, "[rad]", True) if contact_angle
-                 is not None else bearing.contact_angle or bearing.free_contact_angle)
+        alpha = (
+            _scalar("contact_angle", contact_angle, "[rad]", True)
+            if contact_angle is not None
+            else bearing.contact_angle or bearing.free_contact_angle
+        )
         src["contact_angle"] = "user" if contact_angle is not None else "bearing"
         k_i, k_o, k_n = load_deflection_constants(bearing, alpha)
     if ring_mass is not None:
         ring_mass, src["ring_mass"] = _scalar("ring_mass", ring_mass, "[kg]"), "user"
-    elif bearing is not None and None not in (bearing.bore, bearing.outside_diameter,
-                                              bearing.width):
+    elif bearing is not None and None not in (
+        bearing.bore,
+        bearing.outside_diameter,
+        bearing.width,
+    ):
         ring_mass, src["ring_mass"] = bearing.outer_ring_mass, "bearing"
     if radial_stiffness is not None:
         radial_stiffness = _scalar("radial_stiffness", radial_stiffness, "[N/m]", True)
@@ -275,12 +346,13 @@ def ring_modes(bearing=None, *, axial_load=None, contact_angle=None, modes=range
             from ..quasistatic import solve_load_distribution
 
             radial_stiffness = solve_load_distribution(
-                bearing, OperatingCondition(axial_load=axial_load)).radial_stiffness
-            src["radial_stiffness"] = ("load distribution: tangent radial stiffness at "
-                                       f"F_a = {axial_load:g} N")
+                bearing, OperatingCondition(axial_load=axial_load)
+            ).radial_stiffness
+            src["radial_stiffness"] = (
+                f"load distribution: tangent radial stiffness at F_a = {axial_load:g} N"
+            )
         else:
-            radial_stiffness = float(radial_stiffness_under_axial_load(n, k_n, axial_load,
-                                                                       alpha))
+            radial_stiffness = float(radial_stiffness_under_axial_load(n, k_n, axial_load, alpha))
             src["radial_stiffness"] = "derived (K_n, axial load)"
     else:
         axial_load = None
@@ -291,8 +363,12 @@ def ring_modes(bearing=None, *, axial_load=None, contact_angle=None, modes=range
         f1 = float(_rigid_body(radial_stiffness, ring_mass))
         src["rigid_body_frequency"] = "derived (K_x, ring mass)"
     else:
-        raise InputError("rigid_body_frequency", None, "f_1, or K_x and the ring mass",
-                         "give radial_stiffness (or a bearing and axial_load) and ring_mass")
+        raise InputError(
+            "rigid_body_frequency",
+            None,
+            "f_1, or K_x and the ring mass",
+            "give radial_stiffness (or a bearing and axial_load) and ring_mass",
+        )
     if ball_mass_ratio is not None:
         kappa = _scalar("ball_mass_ratio", ball_mass_ratio, "[-]", True)
         src["ball_mass_ratio"] = "user"
@@ -310,15 +386,33 @@ def ring_modes(bearing=None, *, axial_load=None, contact_angle=None, modes=range
     results = []
     for m in ms:
         fs, split = free[m], bool(split_mode(m, n))
-        approx = tuple(float(f) for f in loaded_ring_frequencies(fs, f1, m, n)[1 - split:])
+        approx = tuple(float(f) for f in loaded_ring_frequencies(fs, f1, m, n)[1 - split :])
         freqs, eps = refined_ring_frequencies(fs, f1, m, kappa, ratio, 2.0 if split else 1.0)
-        sols = [(float(f), float(e), "antinodes" if split else "any")
-                for f, e in zip(freqs, eps, strict=False) if np.isfinite(e)]
+        sols = [
+            (float(f), float(e), "antinodes" if split else "any")
+            for f, e in zip(freqs, eps, strict=False)
+            if np.isfinite(e)
+        ]
         sols = sorted(sols + ([(fs, None, "nodes")] if split else []), key=lambda t: t[0])
         p = kappa * (fs / f1) ** 2 if f1 > 0 else math.inf
         columns = (tuple(x) for x in zip(*sols, strict=True))
         results.append(RingMode(m, fs, split, approx, *columns, p))
-    meas = tuple((int(m), tuple(_scalar("measured", x, "[Hz]") for x in np.atleast_1d(v)))
-                 for m, v in _per_mode(measured, ms, "measured").items())
-    return RingModes(tuple(results), int(n), f1, kappa, ratio, ring_mass, radial_stiffness,
-                     axial_load, alpha, bearing, meas, src, rigid_mode)
+    meas = tuple(
+        (int(m), tuple(_scalar("measured", x, "[Hz]") for x in np.atleast_1d(v)))
+        for m, v in _per_mode(measured, ms, "measured").items()
+    )
+    return RingModes(
+        tuple(results),
+        int(n),
+        f1,
+        kappa,
+        ratio,
+        ring_mass,
+        radial_stiffness,
+        axial_load,
+        alpha,
+        bearing,
+        meas,
+        src,
+        rigid_mode,
+    )

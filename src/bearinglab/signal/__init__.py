@@ -22,8 +22,24 @@ from .spectra import (
 )
 
 __all__ = [
-    "ISO15242_BANDS", "SUFFIXES", "Coherence", "EnvelopeSpectrum", "KurtogramBand", "Signal",
-    "Spectrum", "VelocityBands", "amplitude_spectrum", "coherence", "envelope",
-    "envelope_spectrum", "find_peaks", "iso15242_bands", "match_peaks", "read_signal",
-    "spectral_kurtosis", "spectral_kurtosis_band", "velocity_bands", "write_signal",
+    "ISO15242_BANDS",
+    "SUFFIXES",
+    "Coherence",
+    "EnvelopeSpectrum",
+    "KurtogramBand",
+    "Signal",
+    "Spectrum",
+    "VelocityBands",
+    "amplitude_spectrum",
+    "coherence",
+    "envelope",
+    "envelope_spectrum",
+    "find_peaks",
+    "iso15242_bands",
+    "match_peaks",
+    "read_signal",
+    "spectral_kurtosis",
+    "spectral_kurtosis_band",
+    "velocity_bands",
+    "write_signal",
 ]

@@ -80,8 +80,9 @@ def iso15242_bands(speed_rpm: float | None = None) -> dict:
     return {k: (lo * scale, hi * scale) for k, (lo, hi) in ISO15242_BANDS.items()}
 
 
-def velocity_bands(signal, sample_rate, quantity: str = "acceleration",
-                   speed_rpm: float | None = None) -> VelocityBands:
+def velocity_bands(
+    signal, sample_rate, quantity: str = "acceleration", speed_rpm: float | None = None
+) -> VelocityBands:
     """RMS vibration velocity in the ISO 15242 low, medium and high bands [um/s].
 
     Parameters
@@ -129,15 +130,20 @@ def velocity_bands(signal, sample_rate, quantity: str = "acceleration",
     bands = iso15242_bands(speed_rpm)
     top = max(hi for _, hi in bands.values())
     if fs <= 2.0 * top:
-        raise InputError("sample_rate", sample_rate,
-                         f"a rate > {2.0 * top:g} Hz (twice the top of the high band, "
-                         f"{top:g} Hz)")
+        raise InputError(
+            "sample_rate",
+            sample_rate,
+            f"a rate > {2.0 * top:g} Hz (twice the top of the high band, {top:g} Hz)",
+        )
     bottom = min(lo for lo, _ in bands.values())
     n = x.size
     if n / fs < MIN_PERIODS / bottom:
-        raise InputError("signal", f"{n} samples ({n / fs:g} s)",
-                         f"a record of at least {MIN_PERIODS / bottom:g} s "
-                         f"({MIN_PERIODS} periods of the low band's {bottom:g} Hz edge)")
+        raise InputError(
+            "signal",
+            f"{n} samples ({n / fs:g} s)",
+            f"a record of at least {MIN_PERIODS / bottom:g} s "
+            f"({MIN_PERIODS} periods of the low band's {bottom:g} Hz edge)",
+        )
     spectrum = np.fft.rfft(x - x.mean())
     f = np.fft.rfftfreq(n, 1.0 / fs)
     omega = 2.0 * np.pi * f
@@ -151,6 +157,8 @@ def velocity_bands(signal, sample_rate, quantity: str = "acceleration",
     power[0] /= 2.0
     if n % 2 == 0:
         power[-1] /= 2.0
-    rms = {k: math.sqrt(float(np.sum(power[(f >= lo) & (f < hi)]))) * 1e6
-           for k, (lo, hi) in bands.items()}
+    rms = {
+        k: math.sqrt(float(np.sum(power[(f >= lo) & (f < hi)]))) * 1e6
+        for k, (lo, hi) in bands.items()
+    }
     return VelocityBands(rms["low"], rms["medium"], rms["high"], bands)

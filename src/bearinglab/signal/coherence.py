@@ -27,8 +27,7 @@ class Coherence(NamedTuple):
     phase_deg: np.ndarray
 
 
-def coherence(x, y, sample_rate, segment_length=None, overlap=0.5,
-              window="hann") -> Coherence:
+def coherence(x, y, sample_rate, segment_length=None, overlap=0.5, window="hann") -> Coherence:
     """Coherence and cross-spectral phase of ``y`` relative to ``x``.
 
     Parameters

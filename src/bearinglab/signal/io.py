@@ -62,9 +62,21 @@ _TIME = re.compile(r"^\s*(t|time)(\s*[\[(]\s*(s|ms)\s*[\])]|_(s|ms))?\s*$", re.I
 _MAT_NAME_MAX = 63  # MATLAB's namelengthmax
 # what corrupt or foreign files make NumPy, zipfile, csv and scipy.io raise (a truncated
 # WAV only warns, unless warnings are errors)
-_CORRUPT = (OSError, ValueError, TypeError, KeyError, IndexError, EOFError, StopIteration,
-            NotImplementedError, zipfile.BadZipFile, struct.error, csv.Error,
-            scipy.io.matlab.MatReadError, scipy.io.wavfile.WavFileWarning)
+_CORRUPT = (
+    OSError,
+    ValueError,
+    TypeError,
+    KeyError,
+    IndexError,
+    EOFError,
+    StopIteration,
+    NotImplementedError,
+    zipfile.BadZipFile,
+    struct.error,
+    csv.Error,
+    scipy.io.matlab.MatReadError,
+    scipy.io.wavfile.WavFileWarning,
+)
 
 
 def _suffix(path: Path) -> str:
@@ -116,13 +128,17 @@ def read_signal(path, sample_rate=None, channel=None) -> Signal:
     except InputError:
         raise
     except _CORRUPT as exc:
-        raise InputError("path", str(path), f"a readable {suffix} file",
-                         hint=f"{type(exc).__name__}: {exc}") from None
+        raise InputError(
+            "path", str(path), f"a readable {suffix} file", hint=f"{type(exc).__name__}: {exc}"
+        ) from None
     fs = sample_rate if sample_rate is not None else file_rate
     if fs is None:
-        raise InputError("sample_rate_hz", None,
-                         "a sample_rate argument in Hz (the file does not store it; CWRU "
-                         "records are 12000 or 48000 Hz)")
+        raise InputError(
+            "sample_rate_hz",
+            None,
+            "a sample_rate argument in Hz (the file does not store it; CWRU "
+            "records are 12000 or 48000 Hz)",
+        )
     metadata.setdefault("source", path.name)
     if channel is not None:
         wanted = [channel] if isinstance(channel, str) else list(channel)
@@ -140,8 +156,9 @@ def _channel_name(name: str, channels: dict, metadata: dict) -> str:
         return name
     other = metadata.get("non_numeric_fields", {})
     if name in other:
-        raise InputError("channel", name, "a numeric vector field",
-                         hint=f"{name} holds {other[name]}")
+        raise InputError(
+            "channel", name, "a numeric vector field", hint=f"{name} holds {other[name]}"
+        )
     ends = [c for c in channels if c.rsplit(".", 1)[-1] == name]
     if len(ends) == 1:
         return ends[0]
@@ -203,11 +220,13 @@ def _read_npz(path: Path, sample_rate):
         if not isinstance(data, np.lib.npyio.NpzFile):
             raise InputError("path", str(path), "an .npz archive (this is a single array)")
         with data:
-            rate = _scalar(data["sample_rate_hz"], "sample_rate_hz") \
-                if "sample_rate_hz" in data.files else None
+            rate = (
+                _scalar(data["sample_rate_hz"], "sample_rate_hz")
+                if "sample_rate_hz" in data.files
+                else None
+            )
             meta = _metadata(data["metadata_json"]) if "metadata_json" in data.files else {}
-            channels = {k: np.asarray(data[k]).squeeze() for k in data.files
-                        if k not in RESERVED}
+            channels = {k: np.asarray(data[k]).squeeze() for k in data.files if k not in RESERVED}
     return channels, rate, meta
 
 
@@ -215,8 +234,11 @@ def _write_npz(signal: Signal):
     # np.savez's own parameters cannot be array names
     clash = set(signal.names) & {*RESERVED, "file", "allow_pickle"}
     if clash:
-        raise InputError("channels", sorted(clash), "channel names other than "
-                         "sample_rate_hz, metadata_json, file and allow_pickle in .npz")
+        raise InputError(
+            "channels",
+            sorted(clash),
+            "channel names other than sample_rate_hz, metadata_json, file and allow_pickle in .npz",
+        )
     arrays = dict(signal.channels)
     arrays["sample_rate_hz"] = np.array(signal.sample_rate)
     arrays["metadata_json"] = np.array(json.dumps(signal.metadata, default=json_default))
@@ -234,21 +256,27 @@ def _read_csv(path: Path, sample_rate):
         raise InputError("path", str(path), "a CSV file with a header row and data rows")
     data = np.loadtxt(io.StringIO(rows), delimiter=",", ndmin=2)
     if data.shape[1] != len(header):
-        raise InputError("path", str(path), f"{len(header)} columns as in the header",
-                         hint=f"the data have {data.shape[1]}")
+        raise InputError(
+            "path",
+            str(path),
+            f"{len(header)} columns as in the header",
+            hint=f"the data have {data.shape[1]}",
+        )
     rate = None
     column = next((i for i, h in enumerate(header) if _TIME.match(h)), None)
     if column is not None:
         time = data[:, column]
         data = np.delete(data, column, axis=1)
         scale = 1e-3 if "ms" in header[column].lower() else 1.0
-        header = header[:column] + header[column + 1:]
+        header = header[:column] + header[column + 1 :]
         if sample_rate is None:
             rate = _rate_from_time(time * scale)
     elif sample_rate is None:
-        raise InputError("sample_rate", None,
-                         "a sample rate in Hz (the CSV file has no time column: time_s, "
-                         "time, t or time [s])")
+        raise InputError(
+            "sample_rate",
+            None,
+            "a sample rate in Hz (the CSV file has no time column: time_s, time, t or time [s])",
+        )
     if not header:
         raise InputError("path", str(path), "a CSV file with at least one channel column")
     return {name: data[:, i] for i, name in enumerate(header)}, rate, {}
@@ -262,8 +290,11 @@ def _rate_from_time(time: np.ndarray) -> float:
     # rounding in the file shifts times by a fraction of dt; a lost sample shifts by dt
     gap = np.max(np.abs(time - (time[0] + dt * np.arange(time.size))))
     if gap > 0.5 * dt:
-        raise InputError("time_s", f"a deviation of {gap:g} s from uniform spacing",
-                         f"uniformly spaced times (every {dt:g} s)")
+        raise InputError(
+            "time_s",
+            f"a deviation of {gap:g} s from uniform spacing",
+            f"uniformly spaced times (every {dt:g} s)",
+        )
     return 1.0 / dt
 
 
@@ -301,8 +332,11 @@ def _write_wav(signal: Signal):
         raise InputError("sample_rate", fs, "a whole number of Hz below 2**32 for .wav")
     data = np.column_stack(list(signal.channels.values()))
     if np.max(np.abs(data)) > np.finfo(np.float32).max:
-        raise InputError("channels", "samples beyond the float32 range",
-                         "samples within +-3.4e38 for .wav (32-bit float)")
+        raise InputError(
+            "channels",
+            "samples beyond the float32 range",
+            "samples within +-3.4e38 for .wav (32-bit float)",
+        )
     data = data.astype(np.float32)
     if data.shape[1] == 1:
         data = data[:, 0]
@@ -359,8 +393,11 @@ def _read_mat(path: Path, sample_rate):
     else:
         variables = {k: v for k, v in loaded.items() if not k.startswith("__")}
         nested, other = {}, {}
-    rate = _scalar(variables["sample_rate_hz"], "sample_rate_hz") \
-        if "sample_rate_hz" in variables else None
+    rate = (
+        _scalar(variables["sample_rate_hz"], "sample_rate_hz")
+        if "sample_rate_hz" in variables
+        else None
+    )
     meta = _metadata(variables["metadata_json"]) if "metadata_json" in variables else {}
     records: dict[str, dict[str, np.ndarray]] = {}
     for key, value in variables.items():
@@ -373,8 +410,9 @@ def _read_mat(path: Path, sample_rate):
         number = next((r for r in records if stem and int(r) == int(stem)), next(iter(records)))
         channels = records[number]
         meta["cwru_record"] = f"X{number}"
-        rpm = next((v for k, v in variables.items()
-                    if (m := _CWRU_RPM.match(k)) and m[1] == number), None)
+        rpm = next(
+            (v for k, v in variables.items() if (m := _CWRU_RPM.match(k)) and m[1] == number), None
+        )
         if rpm is not None:
             meta["speed_rpm"] = _scalar(rpm, f"X{number}RPM")
         return channels, rate, meta
@@ -394,8 +432,12 @@ def _read_mat(path: Path, sample_rate):
     if other:
         meta["non_numeric_fields"] = dict(other)
     if not channels:
-        raise InputError("path", str(path), "a .mat file with numeric vector variables "
-                         "or struct fields", hint=f"found {sorted(other) or 'none'}")
+        raise InputError(
+            "path",
+            str(path),
+            "a .mat file with numeric vector variables or struct fields",
+            hint=f"found {sorted(other) or 'none'}",
+        )
     return channels, rate, meta
 
 
@@ -404,7 +446,7 @@ def _is_hdf5(path: Path) -> bool:
     files start with a 512-byte MATLAB header)."""
     with open(path, "rb") as fh:
         head = fh.read(2048 + 8)
-    return any(head[o:o + 8] == b"\x89HDF\r\n\x1a\n" for o in (0, 512, 1024, 2048))
+    return any(head[o : o + 8] == b"\x89HDF\r\n\x1a\n" for o in (0, 512, 1024, 2048))
 
 
 def _read_mat73(path: Path):
@@ -414,10 +456,15 @@ def _read_mat73(path: Path):
     try:
         import h5py
     except ImportError:
-        raise InputError("path", str(path), "a MATLAB file before v7.3, or h5py installed "
-                         "to read v7.3 (HDF5) files: pip install h5py") from None
+        raise InputError(
+            "path",
+            str(path),
+            "a MATLAB file before v7.3, or h5py installed "
+            "to read v7.3 (HDF5) files: pip install h5py",
+        ) from None
     top, nested, other = {}, {}, {}
     with h5py.File(path, "r") as f:
+
         def visit(name, obj):
             if not isinstance(obj, h5py.Dataset) or name.startswith("#"):
                 return
@@ -438,6 +485,7 @@ def _read_mat73(path: Path):
                     other[key] = f"a {data.shape} matrix"
             else:
                 top[key] = data
+
         f.visititems(visit)
     return top, nested, other
 
@@ -450,8 +498,12 @@ def _write_mat(signal: Signal):
     for name, x in signal.channels.items():
         key = f"{record}_{name}_time"
         if not _MAT_NAME.match(name) or len(key) > _MAT_NAME_MAX:
-            raise InputError("channels", name, "channel names of letters, digits and _ "
-                             f"(variable {key!r} at most {_MAT_NAME_MAX} characters) for .mat")
+            raise InputError(
+                "channels",
+                name,
+                "channel names of letters, digits and _ "
+                f"(variable {key!r} at most {_MAT_NAME_MAX} characters) for .mat",
+            )
         variables[key] = x[:, np.newaxis]  # CWRU stores column vectors
     variables["sample_rate_hz"] = np.array([[signal.sample_rate]])
     speed = signal.metadata.get("speed_rpm")
@@ -459,8 +511,9 @@ def _write_mat(signal: Signal):
         try:
             variables[f"{record}RPM"] = np.array([[float(speed)]])
         except (TypeError, ValueError):
-            raise InputError("metadata", {"speed_rpm": speed},
-                             "speed_rpm a number in rpm for .mat") from None
+            raise InputError(
+                "metadata", {"speed_rpm": speed}, "speed_rpm a number in rpm for .mat"
+            ) from None
     variables["metadata_json"] = json.dumps(signal.metadata, default=json_default)
     return lambda tmp: scipy.io.savemat(tmp, variables)
 

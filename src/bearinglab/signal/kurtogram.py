@@ -71,9 +71,13 @@ def kurtogram_levels(max_level: int) -> list[tuple[float, int]]:
     return out
 
 
-def fast_kurtogram(x, sample_rate, max_level: int | None = None,
-                   min_bandwidth: float = 0.0,
-                   max_frequency: float | None = None) -> Kurtogram:
+def fast_kurtogram(
+    x,
+    sample_rate,
+    max_level: int | None = None,
+    min_bandwidth: float = 0.0,
+    max_frequency: float | None = None,
+) -> Kurtogram:
     """Fast kurtogram of ``x`` and its band of largest kurtosis (Antoni 2007).
 
     Parameters
@@ -115,8 +119,9 @@ def fast_kurtogram(x, sample_rate, max_level: int | None = None,
     fs = rate(sample_rate)
     n = x.size
     if n < 2 * MIN_BAND_SAMPLES:
-        raise InputError("x", f"{n} samples", f"at least {2 * MIN_BAND_SAMPLES} samples for "
-                         "a kurtogram")
+        raise InputError(
+            "x", f"{n} samples", f"at least {2 * MIN_BAND_SAMPLES} samples for a kurtogram"
+        )
     try:
         min_bw = float(min_bandwidth)
     except (TypeError, ValueError):
@@ -126,8 +131,11 @@ def fast_kurtogram(x, sample_rate, max_level: int | None = None,
     deepest = int(math.floor(math.log2(n / (2 * MIN_BAND_SAMPLES))))
     if max_level is None:
         max_level = min(deepest, 10)
-    elif (isinstance(max_level, bool) or not isinstance(max_level, (int, np.integer))
-          or not 0 <= max_level <= deepest):
+    elif (
+        isinstance(max_level, bool)
+        or not isinstance(max_level, (int, np.integer))
+        or not 0 <= max_level <= deepest
+    ):
         raise InputError("max_level", max_level, f"an integer in [0, {deepest}]")
     ceiling = USABLE_FRACTION * fs if max_frequency is None else float(max_frequency)
     nfft = scipy.fft.next_fast_len(n, real=True)
@@ -157,13 +165,24 @@ def fast_kurtogram(x, sample_rate, max_level: int | None = None,
         centres.append(mid)
         values.append(kurt)
         # the bands touching 0 Hz hold the mean and the low-frequency shaft lines: skip them
-        usable = ((np.arange(count) > 0) & (edges[1:] <= ceiling * (1 + 1e-9))
-                  if count > 1 else np.ones(1, bool))
+        usable = (
+            (np.arange(count) > 0) & (edges[1:] <= ceiling * (1 + 1e-9))
+            if count > 1
+            else np.ones(1, bool)
+        )
         if not usable.any():
             continue
         k = int(np.argmax(np.where(usable, kurt, -np.inf)))
         if best is None or kurt[k] > best[0]:
             best = (float(kurt[k]), level, float(mid[k]), width)
     kurtosis, level, centre, width = best
-    return Kurtogram((centre - width / 2, centre + width / 2), centre, width, kurtosis, level,
-                     tuple(levels), tuple(centres), tuple(values))
+    return Kurtogram(
+        (centre - width / 2, centre + width / 2),
+        centre,
+        width,
+        kurtosis,
+        level,
+        tuple(levels),
+        tuple(centres),
+        tuple(values),
+    )

@@ -16,9 +16,17 @@ COUNT = 24
 HARMONICS = 8
 
 
-def spectrum_lines(x, sample_rate: float, kin, max_frequency: float, *,
-                   count: int = COUNT, harmonics: int = HARMONICS, prominence: float = 4.0,
-                   slip_tolerance: float = 0.08):
+def spectrum_lines(
+    x,
+    sample_rate: float,
+    kin,
+    max_frequency: float,
+    *,
+    count: int = COUNT,
+    harmonics: int = HARMONICS,
+    prominence: float = 4.0,
+    slip_tolerance: float = 0.08,
+):
     """The plain (Hann, whole-record) amplitude spectrum of ``x`` and its largest lines up
     to ``max_frequency`` matched to the shaft and defect frequencies of ``kin``.
 
@@ -46,14 +54,28 @@ def spectrum_lines(x, sample_rate: float, kin, max_frequency: float, *,
     """
     spec = amplitude_spectrum(x, sample_rate)
     lines = find_peaks(spec, count=count, max_frequency=max_frequency, prominence=prominence)
-    matched = match_peaks(lines, {name: kin.hz(name) for name in NAMES}, harmonics=harmonics,
-                          slip_tolerance=slip_tolerance, resolution=spec.resolution)
+    matched = match_peaks(
+        lines,
+        {name: kin.hz(name) for name in NAMES},
+        harmonics=harmonics,
+        slip_tolerance=slip_tolerance,
+        resolution=spec.resolution,
+    )
     return spec, matched
 
 
 #: The keys a labelled line carries in JSON.
-LINE_KEYS = ("frequency_hz", "amplitude", "matched", "harmonic", "deviation", "sideband_of",
-             "sideband_harmonic", "sideband_order", "modulation")
+LINE_KEYS = (
+    "frequency_hz",
+    "amplitude",
+    "matched",
+    "harmonic",
+    "deviation",
+    "sideband_of",
+    "sideband_harmonic",
+    "sideband_order",
+    "modulation",
+)
 
 
 def lines_to_dict(lines) -> list[dict]:

@@ -60,8 +60,13 @@ def _fraction(name: str, value, low: float, high: float, closed_low: bool) -> fl
     return v
 
 
-def find_peaks(spectrum, count: int = 10, min_frequency: float = 0.0,
-               max_frequency: float | None = None, prominence: float = 4.0) -> list[dict]:
+def find_peaks(
+    spectrum,
+    count: int = 10,
+    min_frequency: float = 0.0,
+    max_frequency: float | None = None,
+    prominence: float = 4.0,
+) -> list[dict]:
     """The ``count`` largest lines of a spectrum that stand out of its noise floor.
 
     A line is a local maximum (``scipy.signal.find_peaks``) whose prominence is at least
@@ -97,12 +102,20 @@ def find_peaks(spectrum, count: int = 10, min_frequency: float = 0.0,
         frequency = np.asarray(spectrum[0], dtype=float)
         amplitude = np.asarray(spectrum[1], dtype=float)
     except (TypeError, ValueError, IndexError, KeyError):
-        raise InputError("spectrum", type(spectrum).__name__,
-                         "a Spectrum or (frequency, amplitude) arrays") from None
-    if (frequency.ndim != 1 or frequency.shape != amplitude.shape or frequency.size < 3
-            or not np.all(np.isfinite(amplitude))):
-        raise InputError("spectrum", f"arrays of shapes {frequency.shape}, {amplitude.shape}",
-                         "equal-length 1-D frequency and finite amplitude arrays (>= 3)")
+        raise InputError(
+            "spectrum", type(spectrum).__name__, "a Spectrum or (frequency, amplitude) arrays"
+        ) from None
+    if (
+        frequency.ndim != 1
+        or frequency.shape != amplitude.shape
+        or frequency.size < 3
+        or not np.all(np.isfinite(amplitude))
+    ):
+        raise InputError(
+            "spectrum",
+            f"arrays of shapes {frequency.shape}, {amplitude.shape}",
+            "equal-length 1-D frequency and finite amplitude arrays (>= 3)",
+        )
     count = _positive_int("count", count)
     prominence = _fraction("prominence", prominence, 0.0, math.inf, closed_low=False)
     high = frequency[-1] if max_frequency is None else max_frequency
@@ -111,8 +124,11 @@ def find_peaks(spectrum, count: int = 10, min_frequency: float = 0.0,
     except (TypeError, ValueError):
         low = high = math.nan
     if not low < high:
-        raise InputError("max_frequency", max_frequency,
-                         f"a frequency above min_frequency = {min_frequency!r} Hz")
+        raise InputError(
+            "max_frequency",
+            max_frequency,
+            f"a frequency above min_frequency = {min_frequency!r} Hz",
+        )
     inside = np.flatnonzero((frequency >= low) & (frequency <= high))
     if inside.size < 3:
         return []
@@ -122,8 +138,14 @@ def find_peaks(spectrum, count: int = 10, min_frequency: float = 0.0,
     index, props = scipy.signal.find_peaks(a, prominence=prominence * floor)
     top = index[np.argsort(a[index], kind="stable")[::-1][:count]]
     prom = dict(zip(index.tolist(), props["prominences"].tolist(), strict=True))
-    return [{"frequency_hz": float(frequency[inside[i]]), "amplitude": float(a[i]),
-             "prominence": prom[int(i)]} for i in top]
+    return [
+        {
+            "frequency_hz": float(frequency[inside[i]]),
+            "amplitude": float(a[i]),
+            "prominence": prom[int(i)],
+        }
+        for i in top
+    ]
 
 
 def _peak(p) -> dict:
@@ -133,8 +155,9 @@ def _peak(p) -> dict:
         try:
             f, a = p
         except (TypeError, ValueError):
-            raise InputError("peaks", p, "dicts with frequency_hz and amplitude, "
-                             "or (frequency, amplitude) pairs") from None
+            raise InputError(
+                "peaks", p, "dicts with frequency_hz and amplitude, or (frequency, amplitude) pairs"
+            ) from None
         out = {"frequency_hz": f, "amplitude": a}
     try:
         out["frequency_hz"], out["amplitude"] = float(out["frequency_hz"]), float(out["amplitude"])
@@ -145,9 +168,15 @@ def _peak(p) -> dict:
     return out
 
 
-def match_peaks(peaks, frequencies: dict[str, float], harmonics: int = 5,
-                tolerance: float = 0.02, slip_tolerance: float = 0.08,
-                sidebands: bool = True, resolution: float = 0.0) -> list[dict]:
+def match_peaks(
+    peaks,
+    frequencies: dict[str, float],
+    harmonics: int = 5,
+    tolerance: float = 0.02,
+    slip_tolerance: float = 0.08,
+    sidebands: bool = True,
+    resolution: float = 0.0,
+) -> list[dict]:
     """Label each peak as a harmonic n f of a shaft or defect frequency, or a sideband.
 
     Window: a peak at f_p is a candidate for n f (n = 1 .. ``harmonics``) when
@@ -252,15 +281,17 @@ def match_peaks(peaks, frequencies: dict[str, float], harmonics: int = 5,
                 # one slip per family: the fundamental this line implies must agree
                 reference = fundamentals.get(family)
                 implied = fp / (n * multiple)
-                if reference is not None and \
-                        abs(implied - reference) > max(tolerance * f / multiple, slack):
+                if reference is not None and abs(implied - reference) > max(
+                    tolerance * f / multiple, slack
+                ):
                     continue
                 deviation = (fp - line) / line
                 key = (n > 1 and reference is None, n * abs(deviation), n, order[name])
                 if best is None or key < best[0]:
                     best = (key, name, n, deviation)
-        p["matched"], p["harmonic"], p["deviation"] = (best[1], best[2], best[3]) if best \
-            else (None, None, None)
+        p["matched"], p["harmonic"], p["deviation"] = (
+            (best[1], best[2], best[3]) if best else (None, None, None)
+        )
         if best:
             family, multiple = FAMILIES.get(best[1], (best[1], 1))
             fundamentals.setdefault(family, fp / (best[2] * multiple))
@@ -304,6 +335,12 @@ def _label_sidebands(out: list[dict], freqs: dict, tolerance: float, slack: floa
         if best is not None and (p["deviation"] is None or best[0][0] < abs(p["deviation"])):
             c = best[1]
             carriers.add(id(c))
-            p.update(matched=None, harmonic=None, deviation=None, sideband_of=c["matched"],
-                     sideband_harmonic=c["harmonic"], sideband_order=best[2],
-                     modulation=best[3])
+            p.update(
+                matched=None,
+                harmonic=None,
+                deviation=None,
+                sideband_of=c["matched"],
+                sideband_harmonic=c["harmonic"],
+                sideband_order=best[2],
+                modulation=best[3],
+            )

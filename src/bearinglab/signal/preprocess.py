@@ -86,8 +86,9 @@ def drs_segment(n: int, sample_rate: float) -> int:
     return int(max(16, min(target, fit)))
 
 
-def discrete_random_separation(x, sample_rate, segment_length: int | None = None,
-                               delay: int | None = None) -> tuple[np.ndarray, np.ndarray]:
+def discrete_random_separation(
+    x, sample_rate, segment_length: int | None = None, delay: int | None = None
+) -> tuple[np.ndarray, np.ndarray]:
     """Split ``x`` into its random and discrete (deterministic) parts (Antoni & Randall
     2004, the frequency-domain DRS).
 
@@ -130,14 +131,21 @@ def discrete_random_separation(x, sample_rate, segment_length: int | None = None
     fs = rate(sample_rate)
     n = x.size
     nseg = drs_segment(n, fs) if segment_length is None else segment_length
-    if (isinstance(nseg, bool) or not isinstance(nseg, (int, np.integer))
-            or not 16 <= nseg <= n // 4):
-        raise InputError("segment_length", segment_length,
-                         f"an integer number of samples in [16, {n // 4}]")
+    if (
+        isinstance(nseg, bool)
+        or not isinstance(nseg, (int, np.integer))
+        or not 16 <= nseg <= n // 4
+    ):
+        raise InputError(
+            "segment_length", segment_length, f"an integer number of samples in [16, {n // 4}]"
+        )
     nseg = int(nseg)
     lag = nseg if delay is None else delay
-    if (isinstance(lag, bool) or not isinstance(lag, (int, np.integer))
-            or not 1 <= lag <= n - 2 * nseg):
+    if (
+        isinstance(lag, bool)
+        or not isinstance(lag, (int, np.integer))
+        or not 1 <= lag <= n - 2 * nseg
+    ):
         raise InputError("delay", delay, f"an integer number of samples in [1, {n - 2 * nseg}]")
     lag = int(lag)
     y = x - x.mean()
@@ -154,9 +162,11 @@ def discrete_random_separation(x, sample_rate, segment_length: int | None = None
     live = auto > 0
     gain[live] = np.minimum(np.abs(cross[live]) / auto[live], 1.0)
     # zero-phase filtering by the gain, segment by segment (Hann at 50 %: overlap-add)
-    _, _, z = scipy.signal.stft(y, window="hann", nperseg=nseg, noverlap=nseg - hop,
-                                boundary="even", padded=True)
-    _, discrete = scipy.signal.istft(z * gain[:, None], window="hann", nperseg=nseg,
-                                     noverlap=nseg - hop, boundary=True)
+    _, _, z = scipy.signal.stft(
+        y, window="hann", nperseg=nseg, noverlap=nseg - hop, boundary="even", padded=True
+    )
+    _, discrete = scipy.signal.istft(
+        z * gain[:, None], window="hann", nperseg=nseg, noverlap=nseg - hop, boundary=True
+    )
     discrete = discrete[:n]
     return y - discrete, discrete

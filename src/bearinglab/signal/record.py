@@ -61,8 +61,9 @@ class Signal:
 
     def __post_init__(self) -> None:
         if not isinstance(self.channels, dict) or not self.channels:
-            raise InputError("channels", self.channels,
-                             "a non-empty dict of channel name -> 1-D samples")
+            raise InputError(
+                "channels", self.channels, "a non-empty dict of channel name -> 1-D samples"
+            )
         checked = {}
         length = None
         for name, samples in self.channels.items():
@@ -71,21 +72,30 @@ class Signal:
             try:
                 x = np.array(samples, dtype=float)
             except (TypeError, ValueError):
-                raise InputError(f"channels[{name!r}]", type(samples).__name__,
-                                 "a 1-D array of numbers") from None
+                raise InputError(
+                    f"channels[{name!r}]", type(samples).__name__, "a 1-D array of numbers"
+                ) from None
             if x.ndim != 1:
-                raise InputError(f"channels[{name!r}]", f"array of shape {x.shape}",
-                                 "a 1-D array of samples")
+                raise InputError(
+                    f"channels[{name!r}]", f"array of shape {x.shape}", "a 1-D array of samples"
+                )
             if x.size < MIN_SAMPLES:
-                raise InputError(f"channels[{name!r}]", f"{x.size} samples",
-                                 f"at least {MIN_SAMPLES} samples")
+                raise InputError(
+                    f"channels[{name!r}]", f"{x.size} samples", f"at least {MIN_SAMPLES} samples"
+                )
             if not np.all(np.isfinite(x)):
                 bad = int(np.flatnonzero(~np.isfinite(x))[0])
-                raise InputError(f"channels[{name!r}]", f"non-finite sample at index {bad}",
-                                 "finite samples (no NaN or inf)")
+                raise InputError(
+                    f"channels[{name!r}]",
+                    f"non-finite sample at index {bad}",
+                    "finite samples (no NaN or inf)",
+                )
             if length is not None and x.size != length:
-                raise InputError("channels", {k: v.size for k, v in checked.items()}
-                                 | {name: x.size}, "channels of equal length")
+                raise InputError(
+                    "channels",
+                    {k: v.size for k, v in checked.items()} | {name: x.size},
+                    "channels of equal length",
+                )
             length = x.size
             x.flags.writeable = False  # frozen record: its samples cannot change either
             checked[name] = x

@@ -88,8 +88,9 @@ def samples(x, name: str = "x") -> np.ndarray:
     except (TypeError, ValueError):
         raise InputError(name, type(x).__name__, "a 1-D array of numbers") from None
     if a.ndim != 1 or a.size < MIN_SAMPLES:
-        raise InputError(name, f"array of shape {a.shape}",
-                         f"a 1-D array of at least {MIN_SAMPLES} samples")
+        raise InputError(
+            name, f"array of shape {a.shape}", f"a 1-D array of at least {MIN_SAMPLES} samples"
+        )
     if not np.all(np.isfinite(a)):
         raise InputError(name, "an array with NaN or inf", "finite samples")
     return a
@@ -125,8 +126,11 @@ def band_limits(band, sample_rate: float) -> tuple[float, float]:
 
 def _integer_in(value, low: int, high: int) -> bool:
     """Whether ``value`` is an integer (not a bool) in [low, high]."""
-    return (not isinstance(value, bool) and isinstance(value, (int, np.integer))
-            and low <= value <= high)
+    return (
+        not isinstance(value, bool)
+        and isinstance(value, (int, np.integer))
+        and low <= value <= high
+    )
 
 
 def segment(segment_length, n: int, default: int | None = None) -> int:
@@ -134,8 +138,11 @@ def segment(segment_length, n: int, default: int | None = None) -> int:
     if segment_length is None:
         return n if default is None else default
     if not _integer_in(segment_length, MIN_SAMPLES, n):
-        raise InputError("segment_length", segment_length,
-                         f"an integer number of samples in [{MIN_SAMPLES}, {n}]")
+        raise InputError(
+            "segment_length",
+            segment_length,
+            f"an integer number of samples in [{MIN_SAMPLES}, {n}]",
+        )
     return int(segment_length)
 
 
@@ -157,16 +164,16 @@ def check_window(window, nperseg: int):
     try:
         scipy.signal.get_window(window, nperseg)
     except (TypeError, ValueError) as exc:
-        raise InputError("window", window, "a window scipy.signal.get_window knows",
-                         hint=str(exc)) from None
+        raise InputError(
+            "window", window, "a window scipy.signal.get_window knows", hint=str(exc)
+        ) from None
     return window
 
 
 # ---------------------------------------------------------------- spectra
 
 
-def amplitude_spectrum(x, sample_rate, window="hann", segment_length=None,
-                       overlap=0.5) -> Spectrum:
+def amplitude_spectrum(x, sample_rate, window="hann", segment_length=None, overlap=0.5) -> Spectrum:
     """Single-sided amplitude spectrum, averaged over segments (Welch).
 
     ``scipy.signal.welch(..., scaling="spectrum")`` gives the power P_k of each line
@@ -210,9 +217,15 @@ def amplitude_spectrum(x, sample_rate, window="hann", segment_length=None,
     nperseg = segment(segment_length, x.size)
     noverlap = overlapping(overlap, nperseg)
     check_window(window, nperseg)
-    frequency, power = scipy.signal.welch(x, fs=fs, window=window, nperseg=nperseg,
-                                          noverlap=noverlap, detrend="constant",
-                                          scaling="spectrum")
+    frequency, power = scipy.signal.welch(
+        x,
+        fs=fs,
+        window=window,
+        nperseg=nperseg,
+        noverlap=noverlap,
+        detrend="constant",
+        scaling="spectrum",
+    )
     amplitude = np.sqrt(2.0 * power)
     # welch doubles every line but DC and (even segments) Nyquist, which have no mirror
     amplitude[0] = math.sqrt(power[0])
@@ -258,8 +271,7 @@ def envelope(x, sample_rate, band=None, order: int = 4, squared: bool = False) -
         import scipy.signal  # imported here: it costs ~0.5 s at start-up
 
         low, high = band_limits(band, fs)
-        sos = scipy.signal.butter(int(order), [low, high], btype="bandpass", fs=fs,
-                                  output="sos")
+        sos = scipy.signal.butter(int(order), [low, high], btype="bandpass", fs=fs, output="sos")
         # SciPy's default pad (3 x the filter length) exceeds very short records
         padlen = min(3 * (2 * len(sos) + 1), x.size - 1)
         x = scipy.signal.sosfiltfilt(sos, x, padlen=padlen)
@@ -289,9 +301,9 @@ def analytic(x) -> np.ndarray:
     gain[0] = 1.0
     if m % 2 == 0:
         gain[m // 2] = 1.0
-        gain[1:m // 2] = 2.0
+        gain[1 : m // 2] = 2.0
     else:
-        gain[1:(m + 1) // 2] = 2.0
+        gain[1 : (m + 1) // 2] = 2.0
     return scipy.fft.ifft(spectrum * gain)[:n]
 
 
@@ -309,15 +321,15 @@ def welch_power(x, sample_rate: float, nperseg: int, noverlap: int):
     count = 1 + (x.size - nperseg) // step
     segments = np.lib.stride_tricks.sliding_window_view(x, nperseg)[::step][:count]
     window = 0.5 - 0.5 * np.cos(2.0 * np.pi * np.arange(nperseg) / nperseg)  # periodic Hann
-    spectra = scipy.fft.rfft((segments - segments.mean(axis=1, keepdims=True)) * window,
-                             axis=1)
+    spectra = scipy.fft.rfft((segments - segments.mean(axis=1, keepdims=True)) * window, axis=1)
     power = np.mean(np.abs(spectra) ** 2, axis=0) / window.sum() ** 2
-    power[1:nperseg // 2 + (nperseg % 2)] *= 2.0        # one-sided: all but 0 Hz and Nyquist
+    power[1 : nperseg // 2 + (nperseg % 2)] *= 2.0  # one-sided: all but 0 Hz and Nyquist
     return scipy.fft.rfftfreq(nperseg, 1.0 / sample_rate), power
 
 
-def envelope_spectrum(x, sample_rate, band=None, window="hann", segment_length=None,
-                      overlap=0.5, order: int = 4) -> EnvelopeSpectrum:
+def envelope_spectrum(
+    x, sample_rate, band=None, window="hann", segment_length=None, overlap=0.5, order: int = 4
+) -> EnvelopeSpectrum:
     """Amplitude spectrum of the envelope of ``x`` (Randall & Antoni 2011, sec. 3).
 
     Parameters
@@ -349,8 +361,9 @@ def envelope_spectrum(x, sample_rate, band=None, window="hann", segment_length=N
     elif band is not None:
         band = band_limits(band, fs)
     env = envelope(x, fs, band=band, order=order)
-    spectrum = amplitude_spectrum(env, fs, window=window, segment_length=segment_length,
-                                  overlap=overlap)
+    spectrum = amplitude_spectrum(
+        env, fs, window=window, segment_length=segment_length, overlap=overlap
+    )
     return EnvelopeSpectrum(spectrum.frequency, spectrum.amplitude, band)
 
 
@@ -371,11 +384,19 @@ def spectral_kurtosis(x, sample_rate, window_length: int) -> Spectrum:
     x = samples(x)
     fs = rate(sample_rate)
     if not _integer_in(window_length, 8, x.size // 4):
-        raise InputError("window_length", window_length,
-                         f"an integer number of samples in [8, {x.size // 4}]")
+        raise InputError(
+            "window_length", window_length, f"an integer number of samples in [8, {x.size // 4}]"
+        )
     n = int(window_length)
-    frequency, _, z = scipy.signal.stft(x - x.mean(), fs=fs, window="hann", nperseg=n,
-                                        noverlap=3 * n // 4, boundary=None, padded=False)
+    frequency, _, z = scipy.signal.stft(
+        x - x.mean(),
+        fs=fs,
+        window="hann",
+        nperseg=n,
+        noverlap=3 * n // 4,
+        boundary=None,
+        padded=False,
+    )
     power = np.abs(z) ** 2
     mean_power = power.mean(axis=1)
     fourth = (power**2).mean(axis=1)
@@ -386,8 +407,9 @@ def spectral_kurtosis(x, sample_rate, window_length: int) -> Spectrum:
     return Spectrum(frequency, sk)
 
 
-def spectral_kurtosis_band(x, sample_rate, window_lengths=None,
-                           min_bandwidth: float = 0.0) -> KurtogramBand:
+def spectral_kurtosis_band(
+    x, sample_rate, window_lengths=None, min_bandwidth: float = 0.0
+) -> KurtogramBand:
     """Demodulation band of largest spectral kurtosis (an STFT kurtogram).
 
     For each window length N_w the STFT bin k (centre f_k = k f_s/N_w) stands for the
@@ -426,8 +448,11 @@ def spectral_kurtosis_band(x, sample_rate, window_lengths=None,
     else:
         lengths = list(window_lengths)
         if not lengths or not all(_integer_in(n, 8, x.size // 4) for n in lengths):
-            raise InputError("window_lengths", window_lengths,
-                             f"one or more integers in [8, {x.size // 4}] samples")
+            raise InputError(
+                "window_lengths",
+                window_lengths,
+                f"one or more integers in [8, {x.size // 4}] samples",
+            )
     try:
         min_bw = float(min_bandwidth)
     except (TypeError, ValueError):
@@ -445,10 +470,14 @@ def spectral_kurtosis_band(x, sample_rate, window_lengths=None,
         k = int(np.argmax(values))
         if best is None or values[k] > best.kurtosis:
             centre = float(sk.frequency[inner][k])
-            best = KurtogramBand((centre - fs / n, centre + fs / n), centre, bandwidth,
-                                 float(values[k]), n)
+            best = KurtogramBand(
+                (centre - fs / n, centre + fs / n), centre, bandwidth, float(values[k]), n
+            )
     if best is None:
-        raise InputError("min_bandwidth", min_bandwidth,
-                         f"at most {2.0 * fs / min(lengths):g} Hz for window lengths "
-                         f"{lengths}", hint="no band left to search")
+        raise InputError(
+            "min_bandwidth",
+            min_bandwidth,
+            f"at most {2.0 * fs / min(lengths):g} Hz for window lengths {lengths}",
+            hint="no band left to search",
+        )
     return best

@@ -18,6 +18,19 @@ from .execute import open_runner
 from .plots import plot_study
 from .runner import StudyResult, describe_options, read_study, run_study
 
-__all__ = ["ANALYSES", "Analysis", "Option", "StudyResult", "Uniform", "analysis", "case_rng",
-           "case_seed", "describe_options", "open_runner", "parse_values", "plot_study",
-           "read_study", "run_study"]
+__all__ = [
+    "ANALYSES",
+    "Analysis",
+    "Option",
+    "StudyResult",
+    "Uniform",
+    "analysis",
+    "case_rng",
+    "case_seed",
+    "describe_options",
+    "open_runner",
+    "parse_values",
+    "plot_study",
+    "read_study",
+    "run_study",
+]

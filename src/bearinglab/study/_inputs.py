@@ -13,24 +13,44 @@ from .cases import Option
 #: Bearing options: name -> (Option, BallBearing keyword, SI factor).
 BEARING_OPTIONS = {
     "designation": (Option("text", None, "Bearing designation or catalogue name."), None, None),
-    "system": (Option("text", None, "Read the designation as gost or iso.", ("gost", "iso")),
-               None, None),
+    "system": (
+        Option("text", None, "Read the designation as gost or iso.", ("gost", "iso")),
+        None,
+        None,
+    ),
     "balls": (Option("integer", None, "Number of balls Z."), "ball_count", 1),
-    "ball_diameter_mm": (Option("number", None, "Ball diameter D_w [mm]."), "ball_diameter",
-                         1e-3),
-    "pitch_diameter_mm": (Option("number", None, "Pitch diameter d_m [mm]."),
-                          "pitch_diameter", 1e-3),
-    "contact_angle_deg": (Option("number", None, "Nominal contact angle [deg]."),
-                          "contact_angle", math.pi / 180),
-    "inner_groove_factor": (Option("number", None, "Inner groove factor f_i."),
-                            "inner_groove_factor", 1),
-    "outer_groove_factor": (Option("number", None, "Outer groove factor f_o."),
-                            "outer_groove_factor", 1),
-    "clearance_um": (Option("number", None, "Diametral clearance P_d [um] (< 0: preload)."),
-                     "diametral_clearance", 1e-6),
+    "ball_diameter_mm": (Option("number", None, "Ball diameter D_w [mm]."), "ball_diameter", 1e-3),
+    "pitch_diameter_mm": (
+        Option("number", None, "Pitch diameter d_m [mm]."),
+        "pitch_diameter",
+        1e-3,
+    ),
+    "contact_angle_deg": (
+        Option("number", None, "Nominal contact angle [deg]."),
+        "contact_angle",
+        math.pi / 180,
+    ),
+    "inner_groove_factor": (
+        Option("number", None, "Inner groove factor f_i."),
+        "inner_groove_factor",
+        1,
+    ),
+    "outer_groove_factor": (
+        Option("number", None, "Outer groove factor f_o."),
+        "outer_groove_factor",
+        1,
+    ),
+    "clearance_um": (
+        Option("number", None, "Diametral clearance P_d [um] (< 0: preload)."),
+        "diametral_clearance",
+        1e-6,
+    ),
     "bore_mm": (Option("number", None, "Bore d [mm]."), "bore", 1e-3),
-    "outside_diameter_mm": (Option("number", None, "Outside diameter D [mm]."),
-                            "outside_diameter", 1e-3),
+    "outside_diameter_mm": (
+        Option("number", None, "Outside diameter D [mm]."),
+        "outside_diameter",
+        1e-3,
+    ),
     "width_mm": (Option("number", None, "Width B [mm]."), "width", 1e-3),
 }
 BEARING_NAMES = tuple(BEARING_OPTIONS)
@@ -40,8 +60,9 @@ GEOMETRY_NEEDED = ("balls", "ball_diameter_mm", "pitch_diameter_mm")
 def check_bearing_given(given: set) -> None:
     """A study needs a designation or the explicit geometry (checked before it runs)."""
     if "designation" not in given and not set(GEOMETRY_NEEDED) <= given:
-        raise InputError("designation", None, "a designation, or balls, ball_diameter_mm and "
-                         "pitch_diameter_mm")
+        raise InputError(
+            "designation", None, "a designation, or balls, ball_diameter_mm and pitch_diameter_mm"
+        )
 
 
 @functools.lru_cache(maxsize=256)
@@ -57,8 +78,9 @@ def _bearing(values: tuple):
             overrides[keyword] = int(value) if keyword == "ball_count" else value * factor
     designation = given.get("designation")
     if designation:
-        bearing, _ = bearing_from_designation(designation, system=given.get("system"),
-                                              overrides=overrides)
+        bearing, _ = bearing_from_designation(
+            designation, system=given.get("system"), overrides=overrides
+        )
         return bearing
     sources = {k: Source("user", "study") for k in overrides}
     return BallBearing(name="user geometry", sources=sources, **overrides)
@@ -86,10 +108,13 @@ def condition_of(case: dict, positive_speed: bool = False):
 
     angle = math.radians(case.get("radial_load_angle_deg", -90.0))
     tilt = (case.get("misalignment_mrad") or 0.0) * 1e-3
-    return OperatingCondition(radial_load=case.get("radial_load_n", 0.0),
-                              radial_load_angle=angle, axial_load=case.get("axial_load_n", 0.0),
-                              misalignment=(-tilt * math.sin(angle), tilt * math.cos(angle)),
-                              shaft_speed=rad_s(case, positive_speed))
+    return OperatingCondition(
+        radial_load=case.get("radial_load_n", 0.0),
+        radial_load_angle=angle,
+        axial_load=case.get("axial_load_n", 0.0),
+        misalignment=(-tilt * math.sin(angle), tilt * math.cos(angle)),
+        shaft_speed=rad_s(case, positive_speed),
+    )
 
 
 #: Form-error options shared by noise and simulate.
@@ -100,8 +125,11 @@ FORM_OPTIONS = {
     "waviness_inner_amplitude_um": Option("number", 0.0, "Inner-race waviness amplitude [um]."),
     "waviness_ball_order": Option("integer", None, "Waviness order of every ball."),
     "waviness_ball_amplitude_um": Option("number", 0.0, "Ball waviness amplitude [um]."),
-    "ball_size_error_um": Option("number", 0.0, "Band of random ball diameter errors [um] "
-                                 "(uniform in +-band/2, drawn from the case seed)."),
+    "ball_size_error_um": Option(
+        "number",
+        0.0,
+        "Band of random ball diameter errors [um] (uniform in +-band/2, drawn from the case seed).",
+    ),
 }
 
 
@@ -115,12 +143,14 @@ def imperfections_of(case: dict, bearing, seed: int):
         order = case.get(f"waviness_{race}_order")
         if amplitude:
             if order is None:
-                raise InputError(f"waviness_{race}_order", None,
-                                 f"a waviness order >= 1 with waviness_{race}_amplitude_um")
+                raise InputError(
+                    f"waviness_{race}_order",
+                    None,
+                    f"a waviness order >= 1 with waviness_{race}_amplitude_um",
+                )
             waves.append(Waviness(race, int(order), amplitude * 1e-6))
     band = case.get("ball_size_error_um") or 0.0
-    errors = (BallSizeErrors.random(bearing.ball_count, band * 1e-6, seed=seed)
-              if band else None)
+    errors = BallSizeErrors.random(bearing.ball_count, band * 1e-6, seed=seed) if band else None
     if not waves and errors is None:
         return None
     return Imperfections(waves, ball_size_errors=errors)

@@ -66,27 +66,42 @@ def _pick(d: dict, outputs: dict) -> dict:
 
 
 # ------------------------------------------------------------------ quasi-static
-_STATIC_OUT = {"radial_displacement_um": "f", "axial_displacement_um": "f",
-               "tilt_x_mrad": "f", "tilt_y_mrad": "f", "radial_stiffness_n_per_um": "f",
-               "axial_stiffness_n_per_um": "f", "max_ball_load_n": "f",
-               "equilibrium_residual_n": "f", "diametral_clearance_um": "f", "warnings": "s"}
+_STATIC_OUT = {
+    "radial_displacement_um": "f",
+    "axial_displacement_um": "f",
+    "tilt_x_mrad": "f",
+    "tilt_y_mrad": "f",
+    "radial_stiffness_n_per_um": "f",
+    "axial_stiffness_n_per_um": "f",
+    "max_ball_load_n": "f",
+    "equilibrium_residual_n": "f",
+    "diametral_clearance_um": "f",
+    "warnings": "s",
+}
 
 
 def _static(case: dict, seed: int) -> dict:
     from ..quasistatic import solve_load_distribution
 
     bearing = bearing_of(case)
-    r = solve_load_distribution(bearing, condition_of(case),
-                                gyroscopic=bool(case.get("gyroscopic")),
-                                ring_expansion=bool(case.get("ring_expansion")))
+    r = solve_load_distribution(
+        bearing,
+        condition_of(case),
+        gyroscopic=bool(case.get("gyroscopic")),
+        ring_expansion=bool(case.get("ring_expansion")),
+    )
     d = r.to_dict()
     d["tilt_x_mrad"], d["tilt_y_mrad"] = d["tilt_mrad"]
     return _pick(d, _STATIC_OUT)
 
 
-_STIFFNESS_OUT = {"radial_displacement_um": "f", "axial_displacement_um": "f",
-                  "radial_stiffness_n_per_um": "f", "axial_stiffness_n_per_um": "f",
-                  "max_ball_load_n": "f"}
+_STIFFNESS_OUT = {
+    "radial_displacement_um": "f",
+    "axial_displacement_um": "f",
+    "radial_stiffness_n_per_um": "f",
+    "axial_stiffness_n_per_um": "f",
+    "max_ball_load_n": "f",
+}
 
 
 def _stiffness_line(case: dict, radial: list[float]) -> list:
@@ -96,10 +111,14 @@ def _stiffness_line(case: dict, radial: list[float]) -> list:
 
     bearing = bearing_of(case)
     rad_s(case)
-    table = stiffness_map(bearing, radial, [case.get("axial_load_n", 0.0)],
-                          [case.get("speed_rpm", 0.0)],
-                          radial_load_angle=math.radians(case.get("radial_load_angle_deg",
-                                                                  -90.0)), workers=1)
+    table = stiffness_map(
+        bearing,
+        radial,
+        [case.get("axial_load_n", 0.0)],
+        [case.get("speed_rpm", 0.0)],
+        radial_load_angle=math.radians(case.get("radial_load_angle_deg", -90.0)),
+        workers=1,
+    )
     # stiffness_map returns the loads sorted: put the rows back in the cases' order
     order = np.argsort(np.asarray(radial, float), kind="stable")
     out = [None] * len(radial)
@@ -107,8 +126,9 @@ def _stiffness_line(case: dict, radial: list[float]) -> list:
         if row["status"] == "ok":
             out[i] = _pick(row, _STIFFNESS_OUT)
         else:
-            out[i] = InputError("radial_load_n", row["radial_load_n"], "a load the bearing "
-                                "carries", row["status"])
+            out[i] = InputError(
+                "radial_load_n", row["radial_load_n"], "a load the bearing carries", row["status"]
+            )
     return out
 
 
@@ -130,8 +150,7 @@ def _stiffness_batch(cases: list[dict], seed: int) -> list:
     for members in lines.values():
         first = cases[members[0]]
         try:
-            results = _stiffness_line(first, [cases[i].get("radial_load_n", 0.0)
-                                              for i in members])
+            results = _stiffness_line(first, [cases[i].get("radial_load_n", 0.0) for i in members])
         except Exception:  # noqa: BLE001 - retried case by case below
             results = []
             for i in members:
@@ -145,23 +164,39 @@ def _stiffness_batch(cases: list[dict], seed: int) -> list:
 
 
 # ------------------------------------------------------------------ kinematics, life, friction
-_FREQ_OUT = {f"{n}_{u}": "f" for u in ("hz", "order")
-             for n in ("ftf", "bpfo", "bpfi", "bsf", "ball_defect")}
+_FREQ_OUT = {
+    f"{n}_{u}": "f" for u in ("hz", "order") for n in ("ftf", "bpfo", "bpfi", "bsf", "ball_defect")
+}
 _FREQ_OUT["shaft_hz"] = "f"
 
 
 def _frequencies(case: dict, seed: int) -> dict:
     from ..kinematics import defect_frequencies
 
-    r = defect_frequencies(bearing_of(case), rad_s(case),
-                           outer_rotating=bool(case.get("outer_rotating")))
+    r = defect_frequencies(
+        bearing_of(case), rad_s(case), outer_rotating=bool(case.get("outer_rotating"))
+    )
     return _pick(r.to_dict(), _FREQ_OUT)
 
 
-_LIFE_OUT = {k: "f" for k in (
-    "dynamic_rating_n", "static_rating_n", "fatigue_load_limit_n", "equivalent_load_n",
-    "static_equivalent_load_n", "static_safety_factor", "l10_million_rev", "l10_hours",
-    "kappa", "contamination_factor", "a_iso", "l10m_million_rev", "l10m_hours")}
+_LIFE_OUT = {
+    k: "f"
+    for k in (
+        "dynamic_rating_n",
+        "static_rating_n",
+        "fatigue_load_limit_n",
+        "equivalent_load_n",
+        "static_equivalent_load_n",
+        "static_safety_factor",
+        "l10_million_rev",
+        "l10_hours",
+        "kappa",
+        "contamination_factor",
+        "a_iso",
+        "l10m_million_rev",
+        "l10m_hours",
+    )
+}
 _LIFE_OUT["warnings"] = "s"
 
 
@@ -175,17 +210,28 @@ def _life(case: dict, seed: int) -> dict:
             contamination = float(contamination)
         except ValueError:
             pass
-    r = rating_life(bearing_of(case), condition_of(case, positive_speed=True),
-                    reliability_percent=case.get("reliability_percent", 90.0),
-                    viscosity=None if viscosity is None else viscosity * 1e-6,
-                    contamination=contamination, method=case.get("method", "iso281"),
-                    ep_additives=bool(case.get("ep_additives")))
+    r = rating_life(
+        bearing_of(case),
+        condition_of(case, positive_speed=True),
+        reliability_percent=case.get("reliability_percent", 90.0),
+        viscosity=None if viscosity is None else viscosity * 1e-6,
+        contamination=contamination,
+        method=case.get("method", "iso281"),
+        ep_additives=bool(case.get("ep_additives")),
+    )
     return _pick(r.to_dict(), _LIFE_OUT)
 
 
-_FRICTION_OUT = {"friction_torque_n_mm": "f", "power_loss_w": "f", "friction_coefficient": "f",
-                 "rolling_torque_n_mm": "f", "sliding_torque_n_mm": "f", "seal_torque_n_mm": "f",
-                 "drag_torque_n_mm": "f", "warnings": "s"}
+_FRICTION_OUT = {
+    "friction_torque_n_mm": "f",
+    "power_loss_w": "f",
+    "friction_coefficient": "f",
+    "rolling_torque_n_mm": "f",
+    "sliding_torque_n_mm": "f",
+    "seal_torque_n_mm": "f",
+    "drag_torque_n_mm": "f",
+    "warnings": "s",
+}
 
 
 def _friction(case: dict, seed: int) -> dict:
@@ -193,21 +239,38 @@ def _friction(case: dict, seed: int) -> dict:
 
     viscosity = case.get("viscosity_mm2_s")
     p = case.get("equivalent_load_n")
-    r = bearing_friction(bearing_of(case), rad_s(case), case.get("radial_load_n", 0.0),
-                         case.get("axial_load_n", 0.0), model=case.get("model", "constant"),
-                         friction_type=case.get("friction_type"), equivalent_load=p,
-                         viscosity=None if viscosity is None else viscosity * 1e-6)
+    r = bearing_friction(
+        bearing_of(case),
+        rad_s(case),
+        case.get("radial_load_n", 0.0),
+        case.get("axial_load_n", 0.0),
+        model=case.get("model", "constant"),
+        friction_type=case.get("friction_type"),
+        equivalent_load=p,
+        viscosity=None if viscosity is None else viscosity * 1e-6,
+    )
     return _pick(r.to_dict(), _FRICTION_OUT)
 
 
 # ------------------------------------------------------------------ ring modes
 _MODES = (2, 3, 4, 5, 6)
-_RING_OUT = {"rigid_body_frequency_hz": "f", "radial_stiffness_n_per_m": "f",
-             "ring_mass_kg": "f", "ball_mass_ratio": "f", "contact_stiffness_ratio": "f"}
+_RING_OUT = {
+    "rigid_body_frequency_hz": "f",
+    "radial_stiffness_n_per_m": "f",
+    "ring_mass_kg": "f",
+    "ball_mass_ratio": "f",
+    "contact_stiffness_ratio": "f",
+}
 for _m in _MODES:
-    _RING_OUT.update({f"m{_m}_free_hz": "f", f"m{_m}_approx_low_hz": "f",
-                      f"m{_m}_approx_high_hz": "f", f"m{_m}_refined_low_hz": "f",
-                      f"m{_m}_refined_high_hz": "f"})
+    _RING_OUT.update(
+        {
+            f"m{_m}_free_hz": "f",
+            f"m{_m}_approx_low_hz": "f",
+            f"m{_m}_approx_high_hz": "f",
+            f"m{_m}_refined_low_hz": "f",
+            f"m{_m}_refined_high_hz": "f",
+        }
+    )
 
 
 def _ring_modes(case: dict, seed: int) -> dict:
@@ -216,19 +279,26 @@ def _ring_modes(case: dict, seed: int) -> dict:
     mass = case.get("ring_mass_kg")
     kx = case.get("radial_stiffness_n_per_m")
     axial = case.get("axial_load_n")
-    r = ring_modes(bearing_of(case), axial_load=axial if kx is None else None, modes=_MODES,
-                   ring_mass=mass, radial_stiffness=kx,
-                   ball_mass_ratio=case.get("ball_mass_ratio"),
-                   contact_stiffness_ratio=case.get("contact_stiffness_ratio"),
-                   radial_stiffness_from=case.get("radial_stiffness_from", "closed_form"))
+    r = ring_modes(
+        bearing_of(case),
+        axial_load=axial if kx is None else None,
+        modes=_MODES,
+        ring_mass=mass,
+        radial_stiffness=kx,
+        ball_mass_ratio=case.get("ball_mass_ratio"),
+        contact_stiffness_ratio=case.get("contact_stiffness_ratio"),
+        radial_stiffness_from=case.get("radial_stiffness_from", "closed_form"),
+    )
     d = r.to_dict()
     for m in d["modes"]:
         k = m["m"]
         if k not in _MODES:
             continue
         d[f"m{k}_free_hz"] = m["free_hz"]
-        d[f"m{k}_approx_low_hz"], d[f"m{k}_approx_high_hz"] = (min(m["approx_hz"]),
-                                                               max(m["approx_hz"]))
+        d[f"m{k}_approx_low_hz"], d[f"m{k}_approx_high_hz"] = (
+            min(m["approx_hz"]),
+            max(m["approx_hz"]),
+        )
         refined = [f for f in m["refined_hz"] if f is not None]
         if refined:
             d[f"m{k}_refined_low_hz"], d[f"m{k}_refined_high_hz"] = min(refined), max(refined)
@@ -236,10 +306,16 @@ def _ring_modes(case: dict, seed: int) -> dict:
 
 
 # ------------------------------------------------------------------ noise
-_NOISE_OUT = {"spl_leq_db": "f", "spl_time_mean_db": "f", "spl_time_max_db": "f",
-              "spl_leq_inner_ring_db": "f", "spl_leq_balls_db": "f",
-              "effective_pressure_pa": "f", "peak_pressure_pa": "f",
-              "orbit_peak_to_peak_um": "f"}
+_NOISE_OUT = {
+    "spl_leq_db": "f",
+    "spl_time_mean_db": "f",
+    "spl_time_max_db": "f",
+    "spl_leq_inner_ring_db": "f",
+    "spl_leq_balls_db": "f",
+    "effective_pressure_pa": "f",
+    "peak_pressure_pa": "f",
+    "orbit_peak_to_peak_um": "f",
+}
 
 
 def _noise(case: dict, seed: int) -> dict:
@@ -248,22 +324,44 @@ def _noise(case: dict, seed: int) -> dict:
     bearing = bearing_of(case)
     imperfections = imperfections_of(case, bearing, seed)
     duration = case.get("duration_s")
-    r = bearing_noise(bearing, condition_of(case, positive_speed=True), imperfections,
-                      duration=duration,
-                      point=FieldPoint(case.get("distance_mm", 10.0) * 1e-3,
-                                       math.radians(case.get("angle_deg", 90.0))))
+    r = bearing_noise(
+        bearing,
+        condition_of(case, positive_speed=True),
+        imperfections,
+        duration=duration,
+        point=FieldPoint(
+            case.get("distance_mm", 10.0) * 1e-3, math.radians(case.get("angle_deg", 90.0))
+        ),
+    )
     return _pick(r.to_dict(), _NOISE_OUT)
 
 
 # ------------------------------------------------------------------ simulate + diagnosis
 _FAULT_NAMES = {"outer_race": "outer", "inner_race": "inner", "ball": "ball", "cage": "cage"}
-_SIM_OUT = {"rms_m_s2": "f", "peak_m_s2": "f", "kurtosis": "f", "crest_factor": "f",
-            "steps": "i", "rejected_steps": "i", "bpfo_hz": "f", "bpfi_hz": "f",
-            "ftf_hz": "f", "ball_defect_hz": "f", "cage_speed_ratio": "f",
-            "spin_speed_ratio": "f", "likely_fault": "s", "primary_fault": "s",
-            "band_low_hz": "f", "band_high_hz": "f", "band_kurtosis": "f",
-            "score_outer": "f", "score_inner": "f", "score_ball": "f", "score_cage": "f",
-            "ball_defect_frequency_hz": "f"}
+_SIM_OUT = {
+    "rms_m_s2": "f",
+    "peak_m_s2": "f",
+    "kurtosis": "f",
+    "crest_factor": "f",
+    "steps": "i",
+    "rejected_steps": "i",
+    "bpfo_hz": "f",
+    "bpfi_hz": "f",
+    "ftf_hz": "f",
+    "ball_defect_hz": "f",
+    "cage_speed_ratio": "f",
+    "spin_speed_ratio": "f",
+    "likely_fault": "s",
+    "primary_fault": "s",
+    "band_low_hz": "f",
+    "band_high_hz": "f",
+    "band_kurtosis": "f",
+    "score_outer": "f",
+    "score_inner": "f",
+    "score_ball": "f",
+    "score_cage": "f",
+    "ball_defect_frequency_hz": "f",
+}
 
 
 def defects_of(case: dict) -> list:
@@ -276,18 +374,31 @@ def defects_of(case: dict) -> list:
         return []
     parts = fault.split("+")
     if "cage" in parts:
-        raise InputError("fault", fault, "none, outer, inner, ball or a '+'-joined compound",
-                         "the dynamic models have no cage defect model")
+        raise InputError(
+            "fault",
+            fault,
+            "none, outer, inner, ball or a '+'-joined compound",
+            "the dynamic models have no cage defect model",
+        )
     depth = case.get("defect_depth_mm")
     angle = case.get("defect_angle_deg")
     out = []
     for part in parts:
         if part not in ("outer", "inner", "ball"):
-            raise InputError("fault", fault, "none, outer, inner, ball or a '+'-joined "
-                             "compound such as outer+inner")
+            raise InputError(
+                "fault",
+                fault,
+                "none, outer, inner, ball or a '+'-joined compound such as outer+inner",
+            )
         kwargs = {} if angle is None else {"angle": math.radians(angle)}
-        out.append(Defect(part, case.get("defect_width_mm", 0.5) * 1e-3,
-                          None if depth is None else depth * 1e-3, **kwargs))
+        out.append(
+            Defect(
+                part,
+                case.get("defect_width_mm", 0.5) * 1e-3,
+                None if depth is None else depth * 1e-3,
+                **kwargs,
+            )
+        )
     return out
 
 
@@ -298,24 +409,40 @@ def _simulate(case: dict, seed: int) -> dict:
     from ..dynamics import simulate
 
     bearing = bearing_of(case)
-    sim = simulate(bearing, condition_of(case, positive_speed=True), defects_of(case),
-                   model=case.get("model", "rigid"), duration=case.get("duration_s", 0.5),
-                   sample_rate=case.get("sample_rate_hz", 20000.0),
-                   noise=case.get("noise_ms2", 0.0), seed=seed,
-                   imperfections=imperfections_of(case, bearing, seed))
+    sim = simulate(
+        bearing,
+        condition_of(case, positive_speed=True),
+        defects_of(case),
+        model=case.get("model", "rigid"),
+        duration=case.get("duration_s", 0.5),
+        sample_rate=case.get("sample_rate_hz", 20000.0),
+        noise=case.get("noise_ms2", 0.0),
+        seed=seed,
+        imperfections=imperfections_of(case, bearing, seed),
+    )
     x = sim.signal.channels["acc_y"]
     rms = float(np.sqrt(np.mean((x - x.mean()) ** 2)))
     peak = float(np.max(np.abs(x - x.mean())))
-    d = {"rms_m_s2": rms, "peak_m_s2": peak, "kurtosis": float(kurtosis(x, fisher=False)),
-         "crest_factor": peak / rms if rms > 0 else None, **sim.stats,
-         "cage_speed_ratio": sim.cage_speed_ratio, "spin_speed_ratio": sim.spin_speed_ratio}
+    d = {
+        "rms_m_s2": rms,
+        "peak_m_s2": peak,
+        "kurtosis": float(kurtosis(x, fisher=False)),
+        "crest_factor": peak / rms if rms > 0 else None,
+        **sim.stats,
+        "cage_speed_ratio": sim.cage_speed_ratio,
+        "spin_speed_ratio": sim.spin_speed_ratio,
+    }
     d.update({f"{k}_hz": sim.kinematic.hz(k) for k in ("bpfo", "bpfi", "ftf", "ball_defect")})
     diag = analyze_signal(sim.signal, None, sim.kinematic, channel="acc_y")
     g = diag.to_dict()
-    d.update({"likely_fault": g["likely_fault"] or "none",
-              "primary_fault": g["primary_fault"] or "none",
-              "band_kurtosis": g["band_kurtosis"],
-              "ball_defect_frequency_hz": g["ball_defect_frequency_hz"]})
+    d.update(
+        {
+            "likely_fault": g["likely_fault"] or "none",
+            "primary_fault": g["primary_fault"] or "none",
+            "band_kurtosis": g["band_kurtosis"],
+            "ball_defect_frequency_hz": g["ball_defect_frequency_hz"],
+        }
+    )
     if g["band_hz"] is not None:
         d["band_low_hz"], d["band_high_hz"] = g["band_hz"]
     for name, value in g["scores"].items():
@@ -328,75 +455,155 @@ def _with_bearing(**more) -> dict:
     return {**_BEARING, **more}
 
 
-ANALYSES = {a.name: a for a in (
-    Analysis("stiffness", "Radial and axial stiffness and displacements "
-             "(stiffness_map lines, warm-started).",
-             _with_bearing(**_LOADS, radial_load_angle_deg=Option(
-                 "number", -90.0, "Direction of the radial load [deg].")),
-             _STIFFNESS_OUT, _stiffness, 2000, _stiffness_batch,
-             ("bearinglab.quasistatic.study",)),
-    Analysis("static", "Quasi-static load distribution (solve_load_distribution).",
-             _with_bearing(**_LOADS, radial_load_angle_deg=Option(
-                 "number", -90.0, "Direction of the radial load [deg]."),
-                 misalignment_mrad=Option("number", 0.0, "Imposed inner-ring tilt [mrad]."),
-                 gyroscopic=Option("bool", False, "Ball gyroscopic moments."),
-                 ring_expansion=Option("bool", False, "Centrifugal inner-ring expansion.")),
-             _STATIC_OUT, _static, 500, None, ("bearinglab.quasistatic",)),
-    Analysis("frequencies", "Kinematic defect frequencies (defect_frequencies).",
-             _with_bearing(speed_rpm=_LOADS["speed_rpm"],
-                           outer_rotating=Option("bool", False, "The outer ring turns.")),
-             _FREQ_OUT, _frequencies, 20000),
-    Analysis("life", "Load ratings and rating life (rating_life, ISO 281 / ISO 16281).",
-             _with_bearing(**_LOADS, reliability_percent=Option(
-                 "number", 90.0, "Reliability [%]."),
-                 viscosity_mm2_s=Option("number", None, "Operating viscosity [mm^2/s]."),
-                 contamination=Option("text", None, "e_C or an ISO 281 level."),
-                 method=Option("text", "iso281", "iso281 or iso16281.",
-                               ("iso281", "iso16281")),
-                 misalignment_mrad=Option("number", 0.0, "Inner-ring tilt [mrad] (iso16281)."),
-                 ep_additives=Option("bool", False, "Proven EP additives.")),
-             _LIFE_OUT, _life, 5000, None, ("bearinglab.life",)),
-    Analysis("friction", "Friction torque and power loss (bearing_friction).",
-             _with_bearing(**_LOADS, model=Option("text", "constant", "constant or skf.",
-                                                  ("constant", "skf")),
-                           friction_type=Option("text", None, "Seed-003 friction type."),
-                           equivalent_load_n=Option("number", None, "Equivalent load P [N]."),
-                           viscosity_mm2_s=Option("number", None, "Viscosity [mm^2/s] (skf).")),
-             _FRICTION_OUT, _friction, 5000, None, ("bearinglab.friction",)),
-    Analysis("ring-modes", "Outer-ring natural frequencies m = 2..6 (ring_modes, seed 000).",
-             _with_bearing(axial_load_n=Option("number", None, "Axial load for K_x [N]."),
-                           ring_mass_kg=Option("number", None, "Vibrating ring mass [kg]."),
-                           radial_stiffness_n_per_m=Option("number", None, "K_x [N/m]."),
-                           ball_mass_ratio=Option("number", None, "kappa."),
-                           contact_stiffness_ratio=Option("number", None, "K1/K2."),
-                           radial_stiffness_from=Option(
-                               "text", "closed_form", "K_x from seed 000's closed form or "
-                               "the load distribution.", ("closed_form", "load_distribution"))),
-             _RING_OUT, _ring_modes, 2000, None, ("bearinglab.rings",)),
-    Analysis("noise", "Sound pressure of a bearing with form errors (bearing_noise).",
-             _with_bearing(radial_load_n=_LOADS["radial_load_n"],
-                           axial_load_n=_LOADS["axial_load_n"], speed_rpm=_LOADS["speed_rpm"],
-                           **FORM_OPTIONS,
-                           distance_mm=Option("number", 10.0, "Field point distance [mm]."),
-                           angle_deg=Option("number", 90.0, "Field point direction [deg]."),
-                           duration_s=Option("number", None, "Orbit length [s].")),
-             _NOISE_OUT, _noise, 50, None, ("bearinglab.noise",), {"duration_s": 0.005}),
-    Analysis("simulate", "Simulated vibration (simulate) and its envelope diagnosis "
-             "(analyze_signal) on acc_y.",
-             _with_bearing(radial_load_n=_LOADS["radial_load_n"],
-                           speed_rpm=_LOADS["speed_rpm"], **FORM_OPTIONS,
-                           fault=Option("text", "none", "none, outer, inner, ball or "
-                                        "'+'-joined (outer+inner)."),
-                           defect_width_mm=Option("number", 0.5, "Defect width [mm]."),
-                           defect_depth_mm=Option("number", None, "Defect depth [mm]."),
-                           defect_angle_deg=Option("number", None, "Defect position [deg]."),
-                           model=Option("text", "rigid", "rigid or slip.", ("rigid", "slip")),
-                           duration_s=Option("number", 0.5, "Record length [s]."),
-                           sample_rate_hz=Option("number", 20000.0, "Sample rate [Hz]."),
-                           noise_ms2=Option("number", 0.0, "Measurement noise RMS [m/s^2].")),
-             _SIM_OUT, _simulate, 20, None, ("bearinglab.dynamics", "bearinglab.diagnosis"),
-             {"duration_s": 0.02, "sample_rate_hz": 20000.0}),
-)}
+ANALYSES = {
+    a.name: a
+    for a in (
+        Analysis(
+            "stiffness",
+            "Radial and axial stiffness and displacements (stiffness_map lines, warm-started).",
+            _with_bearing(
+                **_LOADS,
+                radial_load_angle_deg=Option(
+                    "number", -90.0, "Direction of the radial load [deg]."
+                ),
+            ),
+            _STIFFNESS_OUT,
+            _stiffness,
+            2000,
+            _stiffness_batch,
+            ("bearinglab.quasistatic.study",),
+        ),
+        Analysis(
+            "static",
+            "Quasi-static load distribution (solve_load_distribution).",
+            _with_bearing(
+                **_LOADS,
+                radial_load_angle_deg=Option(
+                    "number", -90.0, "Direction of the radial load [deg]."
+                ),
+                misalignment_mrad=Option("number", 0.0, "Imposed inner-ring tilt [mrad]."),
+                gyroscopic=Option("bool", False, "Ball gyroscopic moments."),
+                ring_expansion=Option("bool", False, "Centrifugal inner-ring expansion."),
+            ),
+            _STATIC_OUT,
+            _static,
+            500,
+            None,
+            ("bearinglab.quasistatic",),
+        ),
+        Analysis(
+            "frequencies",
+            "Kinematic defect frequencies (defect_frequencies).",
+            _with_bearing(
+                speed_rpm=_LOADS["speed_rpm"],
+                outer_rotating=Option("bool", False, "The outer ring turns."),
+            ),
+            _FREQ_OUT,
+            _frequencies,
+            20000,
+        ),
+        Analysis(
+            "life",
+            "Load ratings and rating life (rating_life, ISO 281 / ISO 16281).",
+            _with_bearing(
+                **_LOADS,
+                reliability_percent=Option("number", 90.0, "Reliability [%]."),
+                viscosity_mm2_s=Option("number", None, "Operating viscosity [mm^2/s]."),
+                contamination=Option("text", None, "e_C or an ISO 281 level."),
+                method=Option("text", "iso281", "iso281 or iso16281.", ("iso281", "iso16281")),
+                misalignment_mrad=Option("number", 0.0, "Inner-ring tilt [mrad] (iso16281)."),
+                ep_additives=Option("bool", False, "Proven EP additives."),
+            ),
+            _LIFE_OUT,
+            _life,
+            5000,
+            None,
+            ("bearinglab.life",),
+        ),
+        Analysis(
+            "friction",
+            "Friction torque and power loss (bearing_friction).",
+            _with_bearing(
+                **_LOADS,
+                model=Option("text", "constant", "constant or skf.", ("constant", "skf")),
+                friction_type=Option("text", None, "Seed-003 friction type."),
+                equivalent_load_n=Option("number", None, "Equivalent load P [N]."),
+                viscosity_mm2_s=Option("number", None, "Viscosity [mm^2/s] (skf)."),
+            ),
+            _FRICTION_OUT,
+            _friction,
+            5000,
+            None,
+            ("bearinglab.friction",),
+        ),
+        Analysis(
+            "ring-modes",
+            "Outer-ring natural frequencies m = 2..6 (ring_modes, seed 000).",
+            _with_bearing(
+                axial_load_n=Option("number", None, "Axial load for K_x [N]."),
+                ring_mass_kg=Option("number", None, "Vibrating ring mass [kg]."),
+                radial_stiffness_n_per_m=Option("number", None, "K_x [N/m]."),
+                ball_mass_ratio=Option("number", None, "kappa."),
+                contact_stiffness_ratio=Option("number", None, "K1/K2."),
+                radial_stiffness_from=Option(
+                    "text",
+                    "closed_form",
+                    "K_x from seed 000's closed form or the load distribution.",
+                    ("closed_form", "load_distribution"),
+                ),
+            ),
+            _RING_OUT,
+            _ring_modes,
+            2000,
+            None,
+            ("bearinglab.rings",),
+        ),
+        Analysis(
+            "noise",
+            "Sound pressure of a bearing with form errors (bearing_noise).",
+            _with_bearing(
+                radial_load_n=_LOADS["radial_load_n"],
+                axial_load_n=_LOADS["axial_load_n"],
+                speed_rpm=_LOADS["speed_rpm"],
+                **FORM_OPTIONS,
+                distance_mm=Option("number", 10.0, "Field point distance [mm]."),
+                angle_deg=Option("number", 90.0, "Field point direction [deg]."),
+                duration_s=Option("number", None, "Orbit length [s]."),
+            ),
+            _NOISE_OUT,
+            _noise,
+            50,
+            None,
+            ("bearinglab.noise",),
+            {"duration_s": 0.005},
+        ),
+        Analysis(
+            "simulate",
+            "Simulated vibration (simulate) and its envelope diagnosis (analyze_signal) on acc_y.",
+            _with_bearing(
+                radial_load_n=_LOADS["radial_load_n"],
+                speed_rpm=_LOADS["speed_rpm"],
+                **FORM_OPTIONS,
+                fault=Option(
+                    "text", "none", "none, outer, inner, ball or '+'-joined (outer+inner)."
+                ),
+                defect_width_mm=Option("number", 0.5, "Defect width [mm]."),
+                defect_depth_mm=Option("number", None, "Defect depth [mm]."),
+                defect_angle_deg=Option("number", None, "Defect position [deg]."),
+                model=Option("text", "rigid", "rigid or slip.", ("rigid", "slip")),
+                duration_s=Option("number", 0.5, "Record length [s]."),
+                sample_rate_hz=Option("number", 20000.0, "Sample rate [Hz]."),
+                noise_ms2=Option("number", 0.0, "Measurement noise RMS [m/s^2]."),
+            ),
+            _SIM_OUT,
+            _simulate,
+            20,
+            None,
+            ("bearinglab.dynamics", "bearinglab.diagnosis"),
+            {"duration_s": 0.02, "sample_rate_hz": 20000.0},
+        ),
+    )
+}
 ALIASES = {"ring_modes": "ring-modes", "load-distribution": "static"}
 
 
@@ -428,8 +635,13 @@ def run_cases(a: Analysis, cases: list[dict], seed: int) -> list[dict]:
     others go on. Options a case does not give take their defaults."""
     from .cases import case_seed
 
-    full = [{**{k: o.default for k, o in a.options.items() if o.default is not None},
-             **{k: v for k, v in c.items() if v is not None}} for c in cases]
+    full = [
+        {
+            **{k: o.default for k, o in a.options.items() if o.default is not None},
+            **{k: v for k, v in c.items() if v is not None},
+        }
+        for c in cases
+    ]
     seeds = [case_seed(seed, c["case"]) for c in cases]
     if a.batch is not None:
         results = a.batch(full, seed)

@@ -31,8 +31,12 @@ import numpy as np
 from ..errors import InputError
 
 #: Kinds of option value: what each holds.
-KINDS = {"number": "a number", "integer": "a whole number", "text": "a text",
-         "bool": "true or false"}
+KINDS = {
+    "number": "a number",
+    "integer": "a whole number",
+    "text": "a text",
+    "bool": "true or false",
+}
 RANGE_FORMS = ("A,B,C", "START:STOP:COUNT", "log:START:STOP:COUNT", "uniform:LOW:HIGH")
 
 
@@ -108,7 +112,8 @@ def _scalar(name: str, value, option: Option):
         if isinstance(value, str):
             value = _number(name, value.strip(), kind)
         elif isinstance(value, (bool, np.bool_)) or not isinstance(
-                value, (int, float, np.integer, np.floating)):
+            value, (int, float, np.integer, np.floating)
+        ):
             raise InputError(name, value, KINDS[kind])
         elif not math.isfinite(value):
             raise InputError(name, value, "a finite number")
@@ -153,8 +158,9 @@ def parse_values(name: str, value, option: Option) -> list | Uniform:
                     raise InputError(name, value, "uniform:LOW:HIGH")
                 low, high = (_number(name, p, "number") for p in parts[1:])
                 if not low < high:
-                    raise InputError(name, value, "uniform:LOW:HIGH with LOW < HIGH",
-                                     "the range is empty")
+                    raise InputError(
+                        name, value, "uniform:LOW:HIGH with LOW < HIGH", "the range is empty"
+                    )
                 return Uniform(low, high)
             log = head == "log"
             parts = parts[1:] if log else parts
@@ -168,12 +174,20 @@ def parse_values(name: str, value, option: Option) -> list | Uniform:
                 values = np.geomspace(start, stop, count)
             else:
                 values = np.linspace(start, stop, count)
-            return [_scalar(name, float(v), option) if option.kind == "number"
-                    else _scalar(name, round(float(v)), option) for v in values]
+            return [
+                _scalar(name, float(v), option)
+                if option.kind == "number"
+                else _scalar(name, round(float(v)), option)
+                for v in values
+            ]
         items = [t for t in text.split(",")] if "," in text else [text]
         if any(not t.strip() for t in items):
-            raise InputError(name, value, "a value or a list A,B,C without empty items",
-                             "the list is empty" if not text else "")
+            raise InputError(
+                name,
+                value,
+                "a value or a list A,B,C without empty items",
+                "the list is empty" if not text else "",
+            )
         return [_scalar(name, t, option) for t in items]
     if isinstance(value, (list, tuple, np.ndarray, range)):
         values = list(value)
@@ -233,8 +247,12 @@ class Grid:
 
     def identity(self) -> dict:
         """JSON-ready description (what makes two studies the same)."""
-        return {"grid": {k: (v.to_json() if isinstance(v, Uniform) else v)
-                         for k, v in self.values.items()}, "repeats": self.repeats}
+        return {
+            "grid": {
+                k: (v.to_json() if isinstance(v, Uniform) else v) for k, v in self.values.items()
+            },
+            "repeats": self.repeats,
+        }
 
 
 class CaseTable:
@@ -252,9 +270,10 @@ class CaseTable:
             raise InputError("cases", str(path), "an existing .csv or .parquet file")
         suffix = path.suffix.lower()
         try:
-            if suffix == ".csv":   # designations such as 6205 stay text
-                frame = pd.read_csv(path, dtype={k: str for k, o in options.items()
-                                                 if o.kind == "text"})
+            if suffix == ".csv":  # designations such as 6205 stay text
+                frame = pd.read_csv(
+                    path, dtype={k: str for k, o in options.items() if o.kind == "text"}
+                )
             elif suffix in (".parquet", ".pq"):
                 frame = pd.read_parquet(path)
             else:
@@ -262,11 +281,16 @@ class CaseTable:
         except InputError:
             raise
         except Exception as exc:  # noqa: BLE001 - any unreadable file: say why in one line
-            raise InputError("cases", str(path), "a readable .csv or .parquet table",
-                             " ".join(str(exc).split())[:200]) from None
+            raise InputError(
+                "cases",
+                str(path),
+                "a readable .csv or .parquet table",
+                " ".join(str(exc).split())[:200],
+            ) from None
         if frame.empty:
-            raise InputError("cases", str(path), "a table with at least one case",
-                             "the table is empty")
+            raise InputError(
+                "cases", str(path), "a table with at least one case", "the table is empty"
+            )
         for name in frame.columns:
             if name not in options:
                 raise unknown_option(str(name), options, analysis)
@@ -279,11 +303,11 @@ class CaseTable:
                     clean[k] = options[k].default
                 else:
                     try:
-                        clean[k] = _scalar(k, v.item() if hasattr(v, "item") else v,
-                                           options[k])
+                        clean[k] = _scalar(k, v.item() if hasattr(v, "item") else v, options[k])
                     except InputError as exc:
-                        raise InputError(f"{k} (row {i + 1} of {path.name})", exc.value,
-                                         exc.allowed) from None
+                        raise InputError(
+                            f"{k} (row {i + 1} of {path.name})", exc.value, exc.allowed
+                        ) from None
             records.append(clean)
         self.records = records
         self.count = len(records)

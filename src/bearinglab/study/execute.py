@@ -54,15 +54,24 @@ class Runner:
 def _check_address(address: str) -> str:
     scheme, sep, rest = address.partition("://")
     host, colon, port = rest.rpartition(":")
-    if not sep or scheme not in ("tcp", "tls", "ucx", "inproc", "ws", "wss") or not colon \
-            or not host or not port.isdigit():
-        raise InputError("scheduler", address, "a dask scheduler address tcp://HOST:PORT, or "
-                         "'local' or 'serial'")
+    if (
+        not sep
+        or scheme not in ("tcp", "tls", "ucx", "inproc", "ws", "wss")
+        or not colon
+        or not host
+        or not port.isdigit()
+    ):
+        raise InputError(
+            "scheduler", address, "a dask scheduler address tcp://HOST:PORT, or 'local' or 'serial'"
+        )
     return address
 
 
-def open_runner(scheduler: str | None = None, workers: int | None = None,
-                connect_timeout: float = CONNECT_TIMEOUT) -> Runner:
+def open_runner(
+    scheduler: str | None = None,
+    workers: int | None = None,
+    connect_timeout: float = CONNECT_TIMEOUT,
+) -> Runner:
     """Connect to (or start) the cluster that runs a study's partitions.
 
     Parameters
@@ -75,8 +84,9 @@ def open_runner(scheduler: str | None = None, workers: int | None = None,
     connect_timeout : float
         Seconds to wait for a scheduler [s].
     """
-    if workers is not None and (isinstance(workers, bool) or not isinstance(workers, int)
-                                or not 1 <= workers <= 1024):
+    if workers is not None and (
+        isinstance(workers, bool) or not isinstance(workers, int) or not 1 <= workers <= 1024
+    ):
         raise InputError("workers", workers, "a number of worker processes in [1, 1024]")
     if scheduler is None:
         scheduler = os.environ.get(ENV_ADDRESS) or "local"
@@ -88,19 +98,32 @@ def open_runner(scheduler: str | None = None, workers: int | None = None,
         from distributed import LocalCluster
 
         n = workers or os.cpu_count() or 1
-        cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                               dashboard_address=":0", silence_logs=logging.ERROR)
+        cluster = LocalCluster(
+            n_workers=n,
+            threads_per_worker=1,
+            processes=True,
+            dashboard_address=":0",
+            silence_logs=logging.ERROR,
+        )
         client = Client(cluster)
-        return Runner(client, cluster, f"LocalCluster ({n} worker processes)", n,
-                      client.dashboard_link)
+        return Runner(
+            client, cluster, f"LocalCluster ({n} worker processes)", n, client.dashboard_link
+        )
     address = _check_address(str(scheduler))
     try:
         client = Client(address, timeout=f"{connect_timeout}s")
     except (OSError, TimeoutError) as exc:
-        why = "no answer" if isinstance(exc, TimeoutError) or "Timed out" in str(exc) else \
-            " ".join(str(exc).split())[:120]
-        raise InputError("scheduler", address, "the address of a running dask scheduler",
-                         f"{why} within {connect_timeout:g} s") from None
+        why = (
+            "no answer"
+            if isinstance(exc, TimeoutError) or "Timed out" in str(exc)
+            else " ".join(str(exc).split())[:120]
+        )
+        raise InputError(
+            "scheduler",
+            address,
+            "the address of a running dask scheduler",
+            f"{why} within {connect_timeout:g} s",
+        ) from None
     n = len(client.nthreads())
     return Runner(client, None, address, n, client.dashboard_link)
 
@@ -132,7 +155,7 @@ def warm(runner: Runner, modules: Sequence[str], probe=None) -> None:
 def _peak_rss() -> int:
     import resource
 
-    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024   # Linux: kB
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024  # Linux: kB
 
 
 def _cpu_seconds() -> float:
@@ -157,9 +180,18 @@ def peak_memory(runner: Runner) -> dict:
     return runner.client.run(_peak_rss)
 
 
-def run_partitions(runner: Runner, func: Callable, tasks: list, units: list[int],
-                   on_done: Callable, *, progress: bool = False, label: str = "cases",
-                   total: int | None = None, done: int = 0) -> float:
+def run_partitions(
+    runner: Runner,
+    func: Callable,
+    tasks: list,
+    units: list[int],
+    on_done: Callable,
+    *,
+    progress: bool = False,
+    label: str = "cases",
+    total: int | None = None,
+    done: int = 0,
+) -> float:
     """Run ``func(task)`` for every task; ``on_done(task, result)`` as each finishes.
 
     Parameters
@@ -193,8 +225,9 @@ def run_partitions(runner: Runner, func: Callable, tasks: list, units: list[int]
     with bar if bar is not None else nullcontext():
         job = None
         if bar is not None:
-            job = bar.add_task(label, total=total if total is not None else sum(units),
-                               completed=done)
+            job = bar.add_task(
+                label, total=total if total is not None else sum(units), completed=done
+            )
             if runner.dashboard and len(tasks) >= LONG_RUN_PARTITIONS:
                 bar.console.print(f"dashboard: {runner.dashboard} ({runner.scheduler})")
         if runner.client is None:
@@ -230,6 +263,13 @@ def _progress(label: str):
         TimeRemainingColumn,
     )
 
-    return Progress(TextColumn("[progress.description]{task.description}"), BarColumn(),
-                    MofNCompleteColumn(), TimeElapsedColumn(), TextColumn("left"),
-                    TimeRemainingColumn(), console=Console(stderr=True), transient=False)
+    return Progress(
+        TextColumn("[progress.description]{task.description}"),
+        BarColumn(),
+        MofNCompleteColumn(),
+        TimeElapsedColumn(),
+        TextColumn("left"),
+        TimeRemainingColumn(),
+        console=Console(stderr=True),
+        transient=False,
+    )

@@ -11,10 +11,27 @@ MAX_MAP_VALUES = 200
 
 def _label(name: str) -> str:
     """``radial_load_n`` -> "radial load [N]" (unit suffixes of docs/conventions.md)."""
-    units = {"_n_per_um": "N/um", "_n_per_m": "N/m", "_mm2_s": "mm^2/s", "_m_s2": "m/s^2",
-             "_nmm": "N mm", "_rpm": "rpm", "_mm": "mm", "_um": "um", "_deg": "deg",
-             "_mrad": "mrad", "_hz": "Hz", "_khz": "kHz", "_db": "dB", "_pa": "Pa",
-             "_kg": "kg", "_w": "W", "_s": "s", "_hours": "h", "_n": "N"}
+    units = {
+        "_n_per_um": "N/um",
+        "_n_per_m": "N/m",
+        "_mm2_s": "mm^2/s",
+        "_m_s2": "m/s^2",
+        "_nmm": "N mm",
+        "_rpm": "rpm",
+        "_mm": "mm",
+        "_um": "um",
+        "_deg": "deg",
+        "_mrad": "mrad",
+        "_hz": "Hz",
+        "_khz": "kHz",
+        "_db": "dB",
+        "_pa": "Pa",
+        "_kg": "kg",
+        "_w": "W",
+        "_s": "s",
+        "_hours": "h",
+        "_n": "N",
+    }
     for suffix, unit in units.items():
         if name.endswith(suffix):
             return f"{name[: -len(suffix)].replace('_', ' ')} [{unit}]"
@@ -55,13 +72,23 @@ def plot_study(table, output: str, x: str, y: str, *, path=None, ax=None):
         fig, ax = plt.subplots(figsize=(7, 5))
     else:
         fig = ax.figure
-    others = [c for c in ok.columns if c not in (x, y, output, "case", "error")
-              and c in table.attrs.get("inputs", ok.columns) and ok[c].nunique() > 1]
+    others = [
+        c
+        for c in ok.columns
+        if c not in (x, y, output, "case", "error")
+        and c in table.attrs.get("inputs", ok.columns)
+        and ok[c].nunique() > 1
+    ]
     nx, ny = ok[x].nunique(), ok[y].nunique()
     if nx <= MAX_MAP_VALUES and ny <= MAX_MAP_VALUES and nx * ny <= 4 * len(ok):
         grid = ok.pivot_table(index=y, columns=x, values=output, aggfunc="mean")
-        mesh = ax.pcolormesh(grid.columns.to_numpy(float), grid.index.to_numpy(float),
-                             grid.to_numpy(float), shading="nearest", cmap="viridis")
+        mesh = ax.pcolormesh(
+            grid.columns.to_numpy(float),
+            grid.index.to_numpy(float),
+            grid.to_numpy(float),
+            shading="nearest",
+            cmap="viridis",
+        )
     else:
         mesh = ax.scatter(ok[x], ok[y], c=ok[output], s=12, cmap="viridis")
     fig.colorbar(mesh, ax=ax, label=_label(output))

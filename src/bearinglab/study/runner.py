@@ -38,8 +38,15 @@ from .cases import (
 MARKER = "_study.json"
 #: Hard ceiling on the cases of one study.
 MAX_CASES = 10**9
-_ARROW = {"number": "float64", "integer": "int64", "text": "string", "bool": "bool",
-          "f": "float64", "i": "int64", "s": "string"}
+_ARROW = {
+    "number": "float64",
+    "integer": "int64",
+    "text": "string",
+    "bool": "bool",
+    "f": "float64",
+    "i": "int64",
+    "s": "string",
+}
 
 
 def _schema(a: Analysis, inputs: list[str], random: set):
@@ -113,15 +120,24 @@ class StudyResult:
 
     def to_dict(self) -> dict:
         """JSON-ready summary of the run."""
-        return {"output": str(self.path), "analysis": self.analysis, "cases": self.cases,
-                "partitions": self.partitions, "partitions_computed": self.computed,
-                "partitions_reused": self.partitions - self.computed,
-                "cases_computed": self.computed_cases, "failed_cases": self.failed_cases,
-                "wall_time_s": self.seconds, "cases_per_s": self.cases_per_second,
-                "worker_cpu_time_s": sum(self.worker_cpu_seconds.values()),
-                "workers": self.workers, "scheduler": self.scheduler,
-                "dashboard": self.dashboard, "inputs": list(self.inputs),
-                "outputs": list(self.outputs)}
+        return {
+            "output": str(self.path),
+            "analysis": self.analysis,
+            "cases": self.cases,
+            "partitions": self.partitions,
+            "partitions_computed": self.computed,
+            "partitions_reused": self.partitions - self.computed,
+            "cases_computed": self.computed_cases,
+            "failed_cases": self.failed_cases,
+            "wall_time_s": self.seconds,
+            "cases_per_s": self.cases_per_second,
+            "worker_cpu_time_s": sum(self.worker_cpu_seconds.values()),
+            "workers": self.workers,
+            "scheduler": self.scheduler,
+            "dashboard": self.dashboard,
+            "inputs": list(self.inputs),
+            "outputs": list(self.outputs),
+        }
 
     def plot(self, output: str, x: str, y: str, path=None, ax=None):
         """One output against two inputs (:func:`bearinglab.study.plots.plot_study`)."""
@@ -144,8 +160,12 @@ def read_study(path) -> object:
 
 def _source(a: Analysis, grid, cases, seed: int, repeats: int):
     if (grid is None) == (cases is None):
-        raise InputError("grid", grid, "either a grid of options or a cases file, not "
-                         + ("both" if grid is not None else "neither"))
+        raise InputError(
+            "grid",
+            grid,
+            "either a grid of options or a cases file, not "
+            + ("both" if grid is not None else "neither"),
+        )
     if cases is not None:
         return CaseTable(cases, a.options, a.name)
     if not isinstance(grid, dict) or not grid:
@@ -164,24 +184,46 @@ def _check_folder(folder: Path, identity: dict) -> None:
     held = held_description(folder / MARKER)
     if held is not None:
         if canonical(held.get("identity")) != canonical(identity):
-            what = (f"analysis {held.get('analysis')!r}, {held.get('cases')} cases, seed "
-                    f"{held.get('seed')}" if held else "an unreadable study description")
-            raise InputError("output", str(folder), "a new folder or one holding this same "
-                             "study", f"it holds a different study: {what}; choose another "
-                             "output folder or remove that one")
+            what = (
+                f"analysis {held.get('analysis')!r}, {held.get('cases')} cases, seed "
+                f"{held.get('seed')}"
+                if held
+                else "an unreadable study description"
+            )
+            raise InputError(
+                "output",
+                str(folder),
+                "a new folder or one holding this same study",
+                f"it holds a different study: {what}; choose another "
+                "output folder or remove that one",
+            )
     elif folder.exists():
         if not folder.is_dir():
             raise InputError("output", str(folder), "a folder (this is a file)")
         if any(p for p in folder.iterdir()):
-            raise InputError("output", str(folder), "a new or empty folder, or one holding "
-                             "this same study", "it holds other files and no _study.json")
+            raise InputError(
+                "output",
+                str(folder),
+                "a new or empty folder, or one holding this same study",
+                "it holds other files and no _study.json",
+            )
 
 
-def run_study(analysis: str, grid: dict | None = None, *, cases=None, output,
-              seed: int = 0, repeats: int = 1, partition_size: int | None = None,
-              scheduler: str | None = None, workers: int | None = None,
-              max_cases: int | None = None, progress: bool = False,
-              connect_timeout: float = execute.CONNECT_TIMEOUT) -> StudyResult:
+def run_study(
+    analysis: str,
+    grid: dict | None = None,
+    *,
+    cases=None,
+    output,
+    seed: int = 0,
+    repeats: int = 1,
+    partition_size: int | None = None,
+    scheduler: str | None = None,
+    workers: int | None = None,
+    max_cases: int | None = None,
+    progress: bool = False,
+    connect_timeout: float = execute.CONNECT_TIMEOUT,
+) -> StudyResult:
     """Evaluate ``analysis`` over a grid of inputs or a table of cases, on dask.
 
     Parameters
@@ -222,13 +264,20 @@ def run_study(analysis: str, grid: dict | None = None, *, cases=None, output,
     if count > MAX_CASES:
         raise InputError("cases", count, f"at most {MAX_CASES:g} cases in one study")
     if max_cases is not None and count > max_cases:
-        raise InputError("cases", count, f"at most {max_cases} cases without confirmation",
-                         "confirm with --yes (or raise max_cases) to run them all")
+        raise InputError(
+            "cases",
+            count,
+            f"at most {max_cases} cases without confirmation",
+            "confirm with --yes (or raise max_cases) to run them all",
+        )
     partition_size = partition_size_for(partition_size, count, a.largest)
-    random = sorted(k for k, v in getattr(source, "values", {}).items()
-                    if isinstance(v, Uniform))
-    identity = {"analysis": a.name, **source.identity(), "seed": seed,
-                "partition_size": partition_size}
+    random = sorted(k for k, v in getattr(source, "values", {}).items() if isinstance(v, Uniform))
+    identity = {
+        "analysis": a.name,
+        **source.identity(),
+        "seed": seed,
+        "partition_size": partition_size,
+    }
     folder = Path(output)
     _check_folder(folder, identity)
     spans = partitions(count, partition_size)
@@ -237,11 +286,21 @@ def run_study(analysis: str, grid: dict | None = None, *, cases=None, output,
     todo = [i for i, n in enumerate(names) if not (folder / n).exists()]
     inputs = list(source.columns)
     marker = json.dumps(
-        {"kind": "bearinglab study", "bearinglab_version": __version__, "analysis": a.name,
-         "cases": count, "seed": seed, "partitions": len(spans), "identity": identity,
-         "inputs": inputs, "outputs": list(a.outputs),
-         "defaults": {k: o.default for k, o in a.options.items() if k not in inputs}},
-        indent=1, default=str)
+        {
+            "kind": "bearinglab study",
+            "bearinglab_version": __version__,
+            "analysis": a.name,
+            "cases": count,
+            "seed": seed,
+            "partitions": len(spans),
+            "identity": identity,
+            "inputs": inputs,
+            "outputs": list(a.outputs),
+            "defaults": {k: o.default for k, o in a.options.items() if k not in inputs},
+        },
+        indent=1,
+        default=str,
+    )
     tasks, units = [], []
     for i in todo:
         start, stop = spans[i]
@@ -253,8 +312,10 @@ def run_study(analysis: str, grid: dict | None = None, *, cases=None, output,
     def write(task, table) -> None:
         import pyarrow.parquet as pq
 
-        write_atomically(folder / file_of[(task[3], task[4])],
-                         lambda tmp: pq.write_table(table, tmp, compression="zstd"))
+        write_atomically(
+            folder / file_of[(task[3], task[4])],
+            lambda tmp: pq.write_table(table, tmp, compression="zstd"),
+        )
 
     seconds, memory, cpu = 0.0, {}, {}
     runner_info = ("-", 0, None)
@@ -262,22 +323,45 @@ def run_study(analysis: str, grid: dict | None = None, *, cases=None, output,
         # connect first: an unreachable scheduler leaves no folder behind
         with execute.open_runner(scheduler, workers, connect_timeout) as runner:
             folder.mkdir(parents=True, exist_ok=True)
-            write_atomically(folder / MARKER, lambda tmp: Path(tmp).write_text(
-                marker, encoding="utf-8"))
+            write_atomically(
+                folder / MARKER, lambda tmp: Path(tmp).write_text(marker, encoding="utf-8")
+            )
             runner_info = (runner.scheduler, runner.workers, runner.dashboard)
             # a few first cases (the very first may fail, e.g. an unloaded stiffness case)
             first = source.rows(0, min(count, 3))
             execute.warm(runner, a.warm, (warm_up, (a.name, first)))
             cpu0 = execute.cpu_seconds(runner)
             seconds = execute.run_partitions(
-                runner, _partition, tasks, units, write, progress=progress, label=a.name,
-                total=count, done=count - sum(units))
+                runner,
+                _partition,
+                tasks,
+                units,
+                write,
+                progress=progress,
+                label=a.name,
+                total=count,
+                done=count - sum(units),
+            )
             cpu = {w: t - cpu0.get(w, 0.0) for w, t in execute.cpu_seconds(runner).items()}
             memory = execute.peak_memory(runner)
     failed = _failed(folder, names)
-    return StudyResult(folder, a.name, count, len(spans), len(tasks), sum(units), failed,
-                       seconds, runner_info[1], runner_info[0], runner_info[2], tuple(inputs),
-                       tuple(a.outputs), memory, cpu)
+    return StudyResult(
+        folder,
+        a.name,
+        count,
+        len(spans),
+        len(tasks),
+        sum(units),
+        failed,
+        seconds,
+        runner_info[1],
+        runner_info[0],
+        runner_info[2],
+        tuple(inputs),
+        tuple(a.outputs),
+        memory,
+        cpu,
+    )
 
 
 def _failed(folder: Path, names: list[str]) -> int:
@@ -294,5 +378,13 @@ def _failed(folder: Path, names: list[str]) -> int:
 def describe_options(analysis: str) -> list[dict]:
     """The options of an analysis: name, kind, default, help (for --help and docs)."""
     a = get_analysis(analysis)
-    return [{"name": k, "kind": o.kind, "default": o.default, "help": o.help,
-             "choices": list(o.choices)} for k, o in a.options.items()]
+    return [
+        {
+            "name": k,
+            "kind": o.kind,
+            "default": o.default,
+            "help": o.help,
+            "choices": list(o.choices),
+        }
+        for k, o in a.options.items()
+    ]

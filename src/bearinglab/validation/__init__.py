@@ -30,6 +30,16 @@ def all_cases() -> list[Case]:
         seed004,
     )
 
-    return [*seed000.CASES, *seed001.CASES, *seed003.CASES, *seed004.CASES, *dynamics.CASES,
-            *seed003_noise.CASES, *datasets.CASES, *friction.CASES, *ratings.CASES,
-            *harris218.CASES, *nasa_slip.CASES]
+    return [
+        *seed000.CASES,
+        *seed001.CASES,
+        *seed003.CASES,
+        *seed004.CASES,
+        *dynamics.CASES,
+        *seed003_noise.CASES,
+        *datasets.CASES,
+        *friction.CASES,
+        *ratings.CASES,
+        *harris218.CASES,
+        *nasa_slip.CASES,
+    ]

@@ -44,7 +44,14 @@ class CaseResult:
 
     def to_dict(self) -> dict:
         c = self.case
-        return {"source": c.source, "quantity": c.quantity, "published": c.published,
-                "computed": self.computed, "unit": c.unit,
-                "error_percent": self.error_percent, "passed": self.passed,
-                "tolerance_percent": c.rel_tol * 100.0, "known_failure": c.known_failure}
+        return {
+            "source": c.source,
+            "quantity": c.quantity,
+            "published": c.published,
+            "computed": self.computed,
+            "unit": c.unit,
+            "error_percent": self.error_percent,
+            "passed": self.passed,
+            "tolerance_percent": c.rel_tol * 100.0,
+            "known_failure": c.known_failure,
+        }

@@ -18,8 +18,13 @@ from ..operating import OperatingCondition
 from .case import Case
 from .seed004 import SKF6205  # noqa: F401  (the seed-004 bearing, used by the tests)
 
-ER16K = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=38.51e-3,
-                    diametral_clearance=90e-6, name="ER-16K")
+ER16K = BallBearing(
+    ball_count=9,
+    ball_diameter=7.94e-3,
+    pitch_diameter=38.51e-3,
+    diametral_clearance=90e-6,
+    name="ER-16K",
+)
 
 
 @cache
@@ -32,22 +37,42 @@ def seed003_line(defects: str, target: str) -> float:
     chosen = [Defect("ball", 1.2e-3)]
     if defects == "compound":
         chosen.append(Defect("outer", 1.2e-3, 0.25e-3))
-    sim = simulate(ER16K, OperatingCondition(radial_load=50.0, shaft_speed=1750 * math.pi / 30),
-                   chosen, duration=2.0, sample_rate=20e3)
+    sim = simulate(
+        ER16K,
+        OperatingCondition(radial_load=50.0, shaft_speed=1750 * math.pi / 30),
+        chosen,
+        duration=2.0,
+        sample_rate=20e3,
+    )
     spectrum = envelope_spectrum(sim.signal.channels["acc_y"], 20e3, band="auto")
     expected = sim.kinematic.hz(target)
-    peaks = [p for p in find_peaks(spectrum, count=20, min_frequency=5, max_frequency=500)
-             if abs(p["frequency_hz"] / expected - 1) < 0.03]
+    peaks = [
+        p
+        for p in find_peaks(spectrum, count=20, min_frequency=5, max_frequency=500)
+        if abs(p["frequency_hz"] / expected - 1) < 0.03
+    ]
     if not peaks:
         return float("nan")
     return float(max(peaks, key=lambda p: p["amplitude"])["frequency_hz"])
 
 
 CASES = [
-    Case("seed 003 (ER-16K, fig. 10c)", "simulated ball-defect envelope line at 1750 rpm",
-         135.5, "Hz", lambda: seed003_line("ball", "ball_defect"), 0.004,
-         "one bin of our 2 s record (0.5 Hz); the paper's value is printed to 0.1 Hz"),
-    Case("seed 003 (ER-16K, fig. 12c)", "simulated compound-fault outer-race line at 1750 rpm",
-         104.4, "Hz", lambda: seed003_line("compound", "bpfo"), 0.005,
-         "one bin (0.5 Hz) plus the paper's own 0.2 Hz offset from the kinematic 104.19 Hz"),
+    Case(
+        "seed 003 (ER-16K, fig. 10c)",
+        "simulated ball-defect envelope line at 1750 rpm",
+        135.5,
+        "Hz",
+        lambda: seed003_line("ball", "ball_defect"),
+        0.004,
+        "one bin of our 2 s record (0.5 Hz); the paper's value is printed to 0.1 Hz",
+    ),
+    Case(
+        "seed 003 (ER-16K, fig. 12c)",
+        "simulated compound-fault outer-race line at 1750 rpm",
+        104.4,
+        "Hz",
+        lambda: seed003_line("compound", "bpfo"),
+        0.005,
+        "one bin (0.5 Hz) plus the paper's own 0.2 Hz offset from the kinematic 104.19 Hz",
+    ),
 ]

@@ -21,8 +21,7 @@ TABLE_III = (
     ("Радиальный шарикоподшипник", "radial_ball", 0.0015),
     ("Радиально-упорный подшипник", "angular_contact_ball", 0.0020),
     ("Цилиндрический роликоподшипник, сепаратор", "cylindrical_roller", 0.0010),
-    ("Цилиндрический роликоподшипник, полный комп.", "cylindrical_roller_full_complement",
-     0.0020),
+    ("Цилиндрический роликоподшипник, полный комп.", "cylindrical_roller_full_complement", 0.0020),
     ("Конический роликоподшипник", "tapered_roller", 0.0020),
     ("Сферический роликовый подшипник", "spherical_roller", 0.0020),
     ("Шаровой упорный подшипник", "thrust_ball", 0.0015),
@@ -34,7 +33,14 @@ TABLE_III = (
 # The table is stored exactly as printed (four decimals): only floating-point round-off
 # is allowed.
 CASES = [
-    Case(SOURCE, f"coefficient of friction, {kind} ({row})", value, "-",
-         partial(friction_coefficient, kind), 1e-12, "stored exactly as printed")
+    Case(
+        SOURCE,
+        f"coefficient of friction, {kind} ({row})",
+        value,
+        "-",
+        partial(friction_coefficient, kind),
+        1e-12,
+        "stored exactly as printed",
+    )
     for row, kind, value in TABLE_III
 ]

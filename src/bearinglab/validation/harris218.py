@@ -34,10 +34,16 @@ from .case import Case
 
 SOURCE = "Harris 218 at high speed (Jones/Harris reference solution, issue 14)"
 
-BEARING = BallBearing(ball_count=16, ball_diameter=22.225e-3, pitch_diameter=125.26e-3,
-                      inner_groove_factor=0.5232, outer_groove_factor=0.5232,
-                      contact_angle=math.radians(40.0), bearing_type="angular_contact_ball",
-                      name="218 (Harris)")
+BEARING = BallBearing(
+    ball_count=16,
+    ball_diameter=22.225e-3,
+    pitch_diameter=125.26e-3,
+    inner_groove_factor=0.5232,
+    outer_groove_factor=0.5232,
+    contact_angle=math.radians(40.0),
+    bearing_type="angular_contact_ball",
+    name="218 (Harris)",
+)
 THRUST_N = 17800.0
 LIGHT_THRUST_N = 4450.0
 #: Outer-contact loads of the reference solution (issue 14) [N].
@@ -45,15 +51,22 @@ OUTER_LOAD_N = {10000.0: 1923.0, 15000.0: 2721.0, 20000.0: 4550.0}
 
 
 @lru_cache(maxsize=32)
-def solve(axial_load: float, speed_rpm: float, gyroscopic: bool = True,
-          race_control: str = "outer", radial_load: float = 0.0):
+def solve(
+    axial_load: float,
+    speed_rpm: float,
+    gyroscopic: bool = True,
+    race_control: str = "outer",
+    radial_load: float = 0.0,
+):
     """bearinglab's load distribution of the 218 bearing [N, rpm]."""
     from ..quasistatic import solve_load_distribution
 
-    condition = OperatingCondition(axial_load=axial_load, radial_load=radial_load,
-                                   shaft_speed=speed_rpm * math.pi / 30.0)
-    return solve_load_distribution(BEARING, condition, gyroscopic=gyroscopic,
-                                   race_control=race_control)
+    condition = OperatingCondition(
+        axial_load=axial_load, radial_load=radial_load, shaft_speed=speed_rpm * math.pi / 30.0
+    )
+    return solve_load_distribution(
+        BEARING, condition, gyroscopic=gyroscopic, race_control=race_control
+    )
 
 
 def outer_load(speed_rpm: float, axial_load: float = THRUST_N) -> float:
@@ -62,10 +75,21 @@ def outer_load(speed_rpm: float, axial_load: float = THRUST_N) -> float:
     return float(r.load[:, r.ring == 1].sum(axis=1).max())
 
 
-_REASON = ("the reference values are printed to 1 N (0.03 % of 1923 N); we allow 0.05 %: "
-           "bearinglab and the reference solve the same equations (Hertz constants from "
-           "the same exact theory, fitted to 1e-6)")
+_REASON = (
+    "the reference values are printed to 1 N (0.03 % of 1923 N); we allow 0.05 %: "
+    "bearinglab and the reference solve the same equations (Hertz constants from "
+    "the same exact theory, fitted to 1e-6)"
+)
 
-CASES = [Case(SOURCE, f"Q_o at {rpm:g} rpm, F_a = 17.8 kN, gyroscopic, outer control",
-              q, "N", (lambda rpm=rpm: outer_load(rpm)), 5e-4, _REASON)
-         for rpm, q in OUTER_LOAD_N.items()]
+CASES = [
+    Case(
+        SOURCE,
+        f"Q_o at {rpm:g} rpm, F_a = 17.8 kN, gyroscopic, outer control",
+        q,
+        "N",
+        (lambda rpm=rpm: outer_load(rpm)),
+        5e-4,
+        _REASON,
+    )
+    for rpm, q in OUTER_LOAD_N.items()
+]

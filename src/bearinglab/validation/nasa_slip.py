@@ -28,11 +28,16 @@ def _not_computed() -> float:
 
 
 CASES = [
-    Case("NASA TN D-7870 (Bamberger, Zaretsky & Signer 1975)",
-         "highest skidding of a 120-mm-bore angular-contact ball bearing, 25 000 rpm", 6.0,
-         "%", _not_computed, 0.5 / 6.0,
-         "printed as a whole per cent: half a unit",
-         known_failure="not computed: the slip model is planar (deep-groove bearings under "
-                       "radial load) and the note's bearing is an angular-contact bearing "
-                       "under thrust whose geometry its abstract does not give"),
+    Case(
+        "NASA TN D-7870 (Bamberger, Zaretsky & Signer 1975)",
+        "highest skidding of a 120-mm-bore angular-contact ball bearing, 25 000 rpm",
+        6.0,
+        "%",
+        _not_computed,
+        0.5 / 6.0,
+        "printed as a whole per cent: half a unit",
+        known_failure="not computed: the slip model is planar (deep-groove bearings under "
+        "radial load) and the note's bearing is an angular-contact bearing "
+        "under thrust whose geometry its abstract does not give",
+    ),
 ]

@@ -38,8 +38,10 @@ from .case import Case
 SKF_2018 = "SKF Bearings and mounted products 2018 (Explorer)"
 KT_6205 = "ktbearing.com 6205 (standard, non-Explorer)"
 XJTU = "Wang et al. 2020, XJTU-SY bearing table (LDK UER204)"
-EXPLORER = ("SKF Explorer ratings use SKF's adjusted factors, not b_m = 1.3 (skf.com 'Load "
-            "ratings'); ISO 281 gives the non-Explorer value")
+EXPLORER = (
+    "SKF Explorer ratings use SKF's adjusted factors, not b_m = 1.3 (skf.com 'Load "
+    "ratings'); ISO 281 gives the non-Explorer value"
+)
 
 
 @cache
@@ -60,30 +62,75 @@ CWRU_6203 = "6203 (CWRU fan end)"
 UER204 = "UER204 (XJTU-SY)"
 
 CASES = [
-    Case(f"{KT_6205} | CWRU geometry", "6205 basic dynamic load rating C", 14000.0, "N",
-         _c(CWRU_6205), 0.009,
-         "14.0 kN printed to 3 digits: one unit is 0.71 %; f_c 59.87 interpolated from "
-         "ISO 281 Table 2 values printed to 0.1 (0.08 %); ball 0.3126 in to 4 decimals "
-         "(0.03 % through D_w^1.8)"),
-    Case(f"{SKF_2018} | CWRU geometry", "6205 basic static load rating C0", 7800.0, "N",
-         _c0(CWRU_6205), 0.017,
-         "7.8 kN printed to 2 digits and rounded down: one unit is 1.28 %; f_0 13.90 from "
-         "ISO 76 Table 1 values printed to 0.1 (0.36 %); ball diameter (0.03 %)"),
-    Case(f"{SKF_2018} | CWRU geometry", "6205 basic dynamic load rating C (Explorer)",
-         14800.0, "N", _c(CWRU_6205), 0.009,
-         "as for the 14.0 kN rating; computed -5.2 %", known_failure=EXPLORER),
-    Case(f"{SKF_2018} | CWRU geometry", "6203 basic static load rating C0", 4750.0, "N",
-         _c0(CWRU_6203), 0.006,
-         "4.75 kN printed to 3 digits and rounded down: one unit is 0.21 %; f_0 13.07 from "
-         "values printed to 0.1 (0.38 %); ball 0.2656 in to 4 decimals (0.04 % through D_w^2)"),
-    Case(f"{SKF_2018} | CWRU geometry", "6203 basic dynamic load rating C (Explorer)",
-         9950.0, "N", _c(CWRU_6203), 0.009,
-         "one unit of 9.95 kN is 0.10 %, f_c 0.08 %, geometry 0.03 %; computed -4.0 %",
-         known_failure=EXPLORER),
-    Case(XJTU, "UER204 basic dynamic load rating C", 12820.0, "N", _c(UER204), 0.003,
-         "12.82 kN printed to 4 digits: one unit is 0.08 %; f_c 59.32 from values printed "
-         "to 0.1 (0.08 %); ball 7.92 mm to 0.01 mm (0.11 % through D_w^1.8)"),
-    Case(XJTU, "UER204 basic static load rating C0", 6650.0, "N", _c0(UER204), 0.007,
-         "6.65 kN printed to 3 digits: one unit is 0.15 %; f_0 13.22 from values printed to "
-         "0.1 (0.38 %); ball 7.92 mm to 0.01 mm (0.13 % through D_w^2)"),
+    Case(
+        f"{KT_6205} | CWRU geometry",
+        "6205 basic dynamic load rating C",
+        14000.0,
+        "N",
+        _c(CWRU_6205),
+        0.009,
+        "14.0 kN printed to 3 digits: one unit is 0.71 %; f_c 59.87 interpolated from "
+        "ISO 281 Table 2 values printed to 0.1 (0.08 %); ball 0.3126 in to 4 decimals "
+        "(0.03 % through D_w^1.8)",
+    ),
+    Case(
+        f"{SKF_2018} | CWRU geometry",
+        "6205 basic static load rating C0",
+        7800.0,
+        "N",
+        _c0(CWRU_6205),
+        0.017,
+        "7.8 kN printed to 2 digits and rounded down: one unit is 1.28 %; f_0 13.90 from "
+        "ISO 76 Table 1 values printed to 0.1 (0.36 %); ball diameter (0.03 %)",
+    ),
+    Case(
+        f"{SKF_2018} | CWRU geometry",
+        "6205 basic dynamic load rating C (Explorer)",
+        14800.0,
+        "N",
+        _c(CWRU_6205),
+        0.009,
+        "as for the 14.0 kN rating; computed -5.2 %",
+        known_failure=EXPLORER,
+    ),
+    Case(
+        f"{SKF_2018} | CWRU geometry",
+        "6203 basic static load rating C0",
+        4750.0,
+        "N",
+        _c0(CWRU_6203),
+        0.006,
+        "4.75 kN printed to 3 digits and rounded down: one unit is 0.21 %; f_0 13.07 from "
+        "values printed to 0.1 (0.38 %); ball 0.2656 in to 4 decimals (0.04 % through D_w^2)",
+    ),
+    Case(
+        f"{SKF_2018} | CWRU geometry",
+        "6203 basic dynamic load rating C (Explorer)",
+        9950.0,
+        "N",
+        _c(CWRU_6203),
+        0.009,
+        "one unit of 9.95 kN is 0.10 %, f_c 0.08 %, geometry 0.03 %; computed -4.0 %",
+        known_failure=EXPLORER,
+    ),
+    Case(
+        XJTU,
+        "UER204 basic dynamic load rating C",
+        12820.0,
+        "N",
+        _c(UER204),
+        0.003,
+        "12.82 kN printed to 4 digits: one unit is 0.08 %; f_c 59.32 from values printed "
+        "to 0.1 (0.08 %); ball 7.92 mm to 0.01 mm (0.11 % through D_w^1.8)",
+    ),
+    Case(
+        XJTU,
+        "UER204 basic static load rating C0",
+        6650.0,
+        "N",
+        _c0(UER204),
+        0.007,
+        "6.65 kN printed to 3 digits: one unit is 0.15 %; f_0 13.22 from values printed to "
+        "0.1 (0.38 %); ball 7.92 mm to 0.01 mm (0.13 % through D_w^2)",
+    ),
 ]

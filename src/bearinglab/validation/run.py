@@ -33,18 +33,30 @@ def _finite(value):
 
 def run_case(case) -> dict:
     """One case as a JSON-ready dict with its ``verdict`` (an exception is an "error")."""
-    out = {"source": case.source, "quantity": case.quantity, "published": case.published,
-           "computed": None, "unit": case.unit, "error_percent": None, "passed": False,
-           "known_failure": case.known_failure, "tolerance_percent": case.rel_tol * 100.0,
-           "tolerance_reason": case.tolerance_reason, "error": None}
+    out = {
+        "source": case.source,
+        "quantity": case.quantity,
+        "published": case.published,
+        "computed": None,
+        "unit": case.unit,
+        "error_percent": None,
+        "passed": False,
+        "known_failure": case.known_failure,
+        "tolerance_percent": case.rel_tol * 100.0,
+        "tolerance_reason": case.tolerance_reason,
+        "error": None,
+    }
     try:
         result = case.run()
     except Exception as exc:  # noqa: BLE001 - a broken case is reported, the others still run
         out["error"] = f"{type(exc).__name__}: {exc}"
         out["verdict"] = verdict(None, case.known_failure)
         return out
-    out.update(computed=_finite(result.computed), error_percent=_finite(result.error_percent),
-               passed=bool(result.passed))
+    out.update(
+        computed=_finite(result.computed),
+        error_percent=_finite(result.error_percent),
+        passed=bool(result.passed),
+    )
     out["verdict"] = verdict(result.passed, case.known_failure)
     return out
 
@@ -52,11 +64,16 @@ def run_case(case) -> dict:
 def summarize(results: list[dict], seconds: float) -> dict:
     """Counts by verdict and ``ok`` (every case passed or failed as documented)."""
     count = {v: sum(r["verdict"] == v for r in results) for v in VERDICTS}
-    return {"total": len(results), "passed": count["pass"],
-            "known_failures": count["known failure"], "failed": count["fail"],
-            "unexpected_passes": count["unexpected pass"], "errors": count["error"],
-            "ok": all(r["verdict"] in GOOD_VERDICTS for r in results),
-            "duration_s": seconds}
+    return {
+        "total": len(results),
+        "passed": count["pass"],
+        "known_failures": count["known failure"],
+        "failed": count["fail"],
+        "unexpected_passes": count["unexpected pass"],
+        "errors": count["error"],
+        "ok": all(r["verdict"] in GOOD_VERDICTS for r in results),
+        "duration_s": seconds,
+    }
 
 
 @dataclass(frozen=True)
@@ -88,24 +105,33 @@ class Validation:
             fig, ax = _pyplot().subplots(figsize=(8, max(3.0, 0.18 * len(self.results))))
         else:
             fig = ax.figure
-        colors = {"pass": "tab:green", "known failure": "tab:orange", "fail": "tab:red",
-                  "unexpected pass": "tab:red", "error": "tab:red"}
+        colors = {
+            "pass": "tab:green",
+            "known failure": "tab:orange",
+            "fail": "tab:red",
+            "unexpected pass": "tab:red",
+            "error": "tab:red",
+        }
         for i, r in enumerate(self.results):
             error = abs(r["error_percent"]) if r["error_percent"] is not None else 0.0
             ax.barh(i, max(error, 1e-6), color=colors[r["verdict"]])
             ax.plot(r["tolerance_percent"], i, "k|", ms=8)
         ax.set_xscale("log")
-        ax.set_yticks(range(len(self.results)),
-                      [f"{r['source'][:24]}: {r['quantity'][:40]}" for r in self.results],
-                      fontsize=6)
+        ax.set_yticks(
+            range(len(self.results)),
+            [f"{r['source'][:24]}: {r['quantity'][:40]}" for r in self.results],
+            fontsize=6,
+        )
         ax.set_xlabel("|error| [%] (bar) and tolerance [%] (tick)")
         ax.invert_yaxis()
         fig.tight_layout()
         return fig, ax
 
 
-def run_validation(cases=None, progress: Callable[[int, int, str], None] | None = None,
-                   ) -> Validation:
+def run_validation(
+    cases=None,
+    progress: Callable[[int, int, str], None] | None = None,
+) -> Validation:
     """Run ``cases`` (default: every published case, :func:`bearinglab.validation.all_cases`).
 
     ``progress(done, total, label)`` is called before each case."""

@@ -51,30 +51,55 @@ SOURCE_310 = "seed 000 (Balmont & Varlamov 1986, bearing 310)"
 
 #: The paper's inputs: name -> (value, half a unit in its last printed place).
 P106 = {"f1": (5.07, 0.005), "f2": (3.50, 0.005), "f3": (9.70, 0.005)}
-P310 = {"f1": (2.5, 0.05), "kappa": (0.33, 0.005), "f2": (1.92, 0.005), "f3": (5.34, 0.005),
-        "f4": (10.00, 0.005), "f5": (16.2, 0.05)}
-_INPUT_TEXT = {"f1": "f_1", "f2": "f*_2", "f3": "f*_3", "f4": "f*_4", "f5": "f*_5",
-               "kappa": "kappa", "k": "K_x", "m": "m_h"}
+P310 = {
+    "f1": (2.5, 0.05),
+    "kappa": (0.33, 0.005),
+    "f2": (1.92, 0.005),
+    "f3": (5.34, 0.005),
+    "f4": (10.00, 0.005),
+    "f5": (16.2, 0.05),
+}
+_INPUT_TEXT = {
+    "f1": "f_1",
+    "f2": "f*_2",
+    "f3": "f*_3",
+    "f4": "f*_4",
+    "f5": "f*_5",
+    "kappa": "kappa",
+    "k": "K_x",
+    "m": "m_h",
+}
 
 
 def modes_106(p: dict, kappa: float = 0.0):
     """Ring modes 2, 3 of the 106 from the paper's inputs ``p`` (kHz) [-]."""
-    return ring_modes(ball_count=14, rigid_body_frequency=p["f1"] * KHZ, ball_mass_ratio=kappa,
-                      free_frequencies={2: p["f2"] * KHZ, 3: p["f3"] * KHZ}, modes=[2, 3])
+    return ring_modes(
+        ball_count=14,
+        rigid_body_frequency=p["f1"] * KHZ,
+        ball_mass_ratio=kappa,
+        free_frequencies={2: p["f2"] * KHZ, 3: p["f3"] * KHZ},
+        modes=[2, 3],
+    )
 
 
 def modes_310(p: dict):
     """Ring modes 2-5 of the 310 from the paper's inputs ``p`` (kHz, kappa) [-]."""
-    return ring_modes(ball_count=8, rigid_body_frequency=p["f1"] * KHZ,
-                      ball_mass_ratio=p["kappa"],
-                      free_frequencies={m: p[f"f{m}"] * KHZ for m in (2, 3, 4, 5)},
-                      modes=[2, 3, 4, 5])
+    return ring_modes(
+        ball_count=8,
+        rigid_body_frequency=p["f1"] * KHZ,
+        ball_mass_ratio=p["kappa"],
+        free_frequencies={m: p[f"f{m}"] * KHZ for m in (2, 3, 4, 5)},
+        modes=[2, 3, 4, 5],
+    )
 
 
 def _refined(r, m: int, position: str, which: int):
     """Refined (frequency, epsilon) of mode m at a ball position; which = 0 lower, -1 upper."""
-    sols = [(f, e) for f, e, p in zip(r.mode(m).refined, r.mode(m).epsilon,
-                                      r.mode(m).positions, strict=False) if p == position]
+    sols = [
+        (f, e)
+        for f, e, p in zip(r.mode(m).refined, r.mode(m).epsilon, r.mode(m).positions, strict=False)
+        if p == position
+    ]
     return sols[which]
 
 
@@ -96,8 +121,9 @@ def _epsilon(modes, m: int, position: str, which: int):
 
 def _ratio(m: int, base: int, key: str):
     """f*_m from f*_base by eq. (1.6)'s mode ratio (the ring's section cancels)."""
-    return lambda p: p[key] * free_ring_frequency(m, 1, 1, 1, 1, 1) / free_ring_frequency(
-        base, 1, 1, 1, 1, 1)
+    return lambda p: (
+        p[key] * free_ring_frequency(m, 1, 1, 1, 1, 1) / free_ring_frequency(base, 1, 1, 1, 1, 1)
+    )
 
 
 def _f1(p: dict) -> float:
@@ -117,79 +143,224 @@ _modes_106_kappa = partial(modes_106, kappa=KAPPA_106)
 #  known failure)
 PRINTED = [
     # ---- approximate model, eq. (1.9), sec. 2 text and table row f''
-    ("106", "m=2 approx, text 7.31", 7.31, 0.005, P106,
-     _approximate(modes_106, 2, 0), None),
-    ("106", "m=2 approx, table 7.3", 7.3, 0.05, P106,
-     _approximate(modes_106, 2, 0), None),
-    ("106", "m=3 approx, text and table 11.8", 11.8, 0.05, P106,
-     _approximate(modes_106, 3, 0), None),
-    ("310", "m=2 approx, text and table 3.7", 3.7, 0.05, P310,
-     _approximate(modes_310, 2, 0), None),
-    ("310", "m=3 approx, text and table 6.3", 6.3, 0.05, P310,
-     _approximate(modes_310, 3, 0), None),
-    ("310", "m=4 approx balls at nodes, text and table 10.0", 10.0, 0.05, P310,
-     _approximate(modes_310, 4, 0), None),
-    ("310", "m=4 approx balls at antinodes, text 11.1", 11.1, 0.05, P310,
-     _approximate(modes_310, 4, 1), None),
-    ("310", "m=4 approx balls at antinodes, table 11.0", 11.0, 0.05, P310,
-     _approximate(modes_310, 4, 1),
-     ("the table prints 11.0 where the text prints 11.1 for the same eq. (1.9) value; "
-      "with f_1 in [2.45, 2.55] and f*_4 = 10.00 it is 11.07 ... 11.15 kHz")),
+    ("106", "m=2 approx, text 7.31", 7.31, 0.005, P106, _approximate(modes_106, 2, 0), None),
+    ("106", "m=2 approx, table 7.3", 7.3, 0.05, P106, _approximate(modes_106, 2, 0), None),
+    (
+        "106",
+        "m=3 approx, text and table 11.8",
+        11.8,
+        0.05,
+        P106,
+        _approximate(modes_106, 3, 0),
+        None,
+    ),
+    ("310", "m=2 approx, text and table 3.7", 3.7, 0.05, P310, _approximate(modes_310, 2, 0), None),
+    ("310", "m=3 approx, text and table 6.3", 6.3, 0.05, P310, _approximate(modes_310, 3, 0), None),
+    (
+        "310",
+        "m=4 approx balls at nodes, text and table 10.0",
+        10.0,
+        0.05,
+        P310,
+        _approximate(modes_310, 4, 0),
+        None,
+    ),
+    (
+        "310",
+        "m=4 approx balls at antinodes, text 11.1",
+        11.1,
+        0.05,
+        P310,
+        _approximate(modes_310, 4, 1),
+        None,
+    ),
+    (
+        "310",
+        "m=4 approx balls at antinodes, table 11.0",
+        11.0,
+        0.05,
+        P310,
+        _approximate(modes_310, 4, 1),
+        (
+            "the table prints 11.0 where the text prints 11.1 for the same eq. (1.9) value; "
+            "with f_1 in [2.45, 2.55] and f*_4 = 10.00 it is 11.07 ... 11.15 kHz"
+        ),
+    ),
     # ---- rigid body f_1 = sqrt(K_x / m_h) / 2 pi, sec. 2
-    ("310", "f_1 from K_x = 150e6 N/m, m_h = 0.6 kg: 2.5", 2.5, 0.05,
-     {"k": (150e6, 0.5e6), "m": (0.6, 0.05)}, _f1, None),
-    ("106", "f_1 from K_x = 132e6 N/m, m_h = 0.08 kg: 5.07", 5.07, 0.005,
-     {"k": (132e6, 0.5e6), "m": (0.08, 0.005)}, _f1,
-     ("the paper's 5.07 kHz includes the sensor masses, which it does not print: m_h = 0.08 "
-      "kg gives 6.46 kHz; 5.07 kHz needs 0.130 kg")),
+    (
+        "310",
+        "f_1 from K_x = 150e6 N/m, m_h = 0.6 kg: 2.5",
+        2.5,
+        0.05,
+        {"k": (150e6, 0.5e6), "m": (0.6, 0.05)},
+        _f1,
+        None,
+    ),
+    (
+        "106",
+        "f_1 from K_x = 132e6 N/m, m_h = 0.08 kg: 5.07",
+        5.07,
+        0.005,
+        {"k": (132e6, 0.5e6), "m": (0.08, 0.005)},
+        _f1,
+        (
+            "the paper's 5.07 kHz includes the sensor masses, which it does not print: m_h = 0.08 "
+            "kg gives 6.46 kHz; 5.07 kHz needs 0.130 kg"
+        ),
+    ),
     # ---- free-ring mode ratios of eq. (1.6) applied to the paper's computed f*_m
-    ("106", "computed f*_3 10.07 from computed f*_2 3.56", 10.07, 0.005,
-     {"f2": (3.56, 0.005)}, _ratio(3, 2, "f2"), None),
-    ("310", "computed f*_3 5.47 from computed f*_2 1.93", 5.47, 0.005,
-     {"f2": (1.93, 0.005)}, _ratio(3, 2, "f2"), None),
-    ("310", "computed f*_4 10.49 from computed f*_2 1.93", 10.49, 0.005,
-     {"f2": (1.93, 0.005)}, _ratio(4, 2, "f2"), None),
-    ("310", "f*_5 16.2 from the computed f*_4 10.49", 16.2, 0.05,
-     {"f4": (10.49, 0.005)}, _ratio(5, 4, "f4"),
-     ("eq. (1.6) scales the paper's computed 10.49 (m = 4) to 16.96 kHz at m = 5, not 16.2; "
-      "16.2 is the measured 10.00 scaled the same way (next case) -- apparently the computed "
-      "value corrected for the sensor masses")),
-    ("310", "f*_5 16.2 from the measured f*_4 10.00 (reconstruction)", 16.2, 0.05,
-     {"f4": (10.00, 0.005)}, _ratio(5, 4, "f4"), None),
+    (
+        "106",
+        "computed f*_3 10.07 from computed f*_2 3.56",
+        10.07,
+        0.005,
+        {"f2": (3.56, 0.005)},
+        _ratio(3, 2, "f2"),
+        None,
+    ),
+    (
+        "310",
+        "computed f*_3 5.47 from computed f*_2 1.93",
+        5.47,
+        0.005,
+        {"f2": (1.93, 0.005)},
+        _ratio(3, 2, "f2"),
+        None,
+    ),
+    (
+        "310",
+        "computed f*_4 10.49 from computed f*_2 1.93",
+        10.49,
+        0.005,
+        {"f2": (1.93, 0.005)},
+        _ratio(4, 2, "f2"),
+        None,
+    ),
+    (
+        "310",
+        "f*_5 16.2 from the computed f*_4 10.49",
+        16.2,
+        0.05,
+        {"f4": (10.49, 0.005)},
+        _ratio(5, 4, "f4"),
+        (
+            "eq. (1.6) scales the paper's computed 10.49 (m = 4) to 16.96 kHz at m = 5, not 16.2; "
+            "16.2 is the measured 10.00 scaled the same way (next case) -- apparently the computed "
+            "value corrected for the sensor masses"
+        ),
+    ),
+    (
+        "310",
+        "f*_5 16.2 from the measured f*_4 10.00 (reconstruction)",
+        16.2,
+        0.05,
+        {"f4": (10.00, 0.005)},
+        _ratio(5, 4, "f4"),
+        None,
+    ),
     # ---- refined model, sec. 3: 310 m = 5, eqs. (3.5) and (3.4)
-    ("310", "m=5 epsilon_1 6.08", 6.08, 0.005, P310,
-     _epsilon(modes_310, 5, "any", 0), None),
-    ("310", "m=5 epsilon_2 -0.516", -0.516, 0.0005, P310,
-     _epsilon(modes_310, 5, "any", -1), None),
-    ("310", "m=5 refined lower, text and table 11.8", 11.8, 0.05, P310,
-     _refined_khz(modes_310, 5, "any", 0), None),
-    ("310", "m=5 refined upper, text 17.3", 17.3, 0.05, P310,
-     _refined_khz(modes_310, 5, "any", -1), None),
+    ("310", "m=5 epsilon_1 6.08", 6.08, 0.005, P310, _epsilon(modes_310, 5, "any", 0), None),
+    ("310", "m=5 epsilon_2 -0.516", -0.516, 0.0005, P310, _epsilon(modes_310, 5, "any", -1), None),
+    (
+        "310",
+        "m=5 refined lower, text and table 11.8",
+        11.8,
+        0.05,
+        P310,
+        _refined_khz(modes_310, 5, "any", 0),
+        None,
+    ),
+    (
+        "310",
+        "m=5 refined upper, text 17.3",
+        17.3,
+        0.05,
+        P310,
+        _refined_khz(modes_310, 5, "any", -1),
+        None,
+    ),
     # ---- 310 m = 4 (2m = n): antinodes eqs. (3.10), (3.9); nodes eq. (3.8)
-    ("310", "m=4 antinodes epsilon_1 1.22", 1.22, 0.005, P310,
-     _epsilon(modes_310, 4, "antinodes", 0), None),
-    ("310", "m=4 antinodes epsilon_2 -1.33", -1.33, 0.005, P310,
-     _epsilon(modes_310, 4, "antinodes", -1), None),
-    ("310", "m=4 refined antinodes lower, text and table 9.4", 9.4, 0.05, P310,
-     _refined_khz(modes_310, 4, "antinodes", 0), None),
-    ("310", "m=4 refined antinodes upper, text and table 14.5", 14.5, 0.05, P310,
-     _refined_khz(modes_310, 4, "antinodes", -1), None),
-    ("310", "m=4 refined nodes, table 10.0", 10.0, 0.05, P310,
-     _refined_khz(modes_310, 4, "nodes", 0), None),
+    (
+        "310",
+        "m=4 antinodes epsilon_1 1.22",
+        1.22,
+        0.005,
+        P310,
+        _epsilon(modes_310, 4, "antinodes", 0),
+        None,
+    ),
+    (
+        "310",
+        "m=4 antinodes epsilon_2 -1.33",
+        -1.33,
+        0.005,
+        P310,
+        _epsilon(modes_310, 4, "antinodes", -1),
+        None,
+    ),
+    (
+        "310",
+        "m=4 refined antinodes lower, text and table 9.4",
+        9.4,
+        0.05,
+        P310,
+        _refined_khz(modes_310, 4, "antinodes", 0),
+        None,
+    ),
+    (
+        "310",
+        "m=4 refined antinodes upper, text and table 14.5",
+        14.5,
+        0.05,
+        P310,
+        _refined_khz(modes_310, 4, "antinodes", -1),
+        None,
+    ),
+    (
+        "310",
+        "m=4 refined nodes, table 10.0",
+        10.0,
+        0.05,
+        P310,
+        _refined_khz(modes_310, 4, "nodes", 0),
+        None,
+    ),
     # ---- refined model, table row f'_m for m = 2, 3
-    ("310", "m=2 refined, table 3.9", 3.9, 0.05, P310,
-     _refined_khz(modes_310, 2, "any", 0),
-     ("the ball masses can only lower the in-phase frequency below eq. (1.9)'s 3.70 kHz "
-      "(at epsilon = 1/2 the numerator of (3.4) equals (1.9) and the denominator exceeds 1); "
-      "(3.4)-(3.5) give 3.58 kHz, and no kappa >= 0 gives 3.9")),
-    ("310", "m=3 refined, table 6.1", 6.1, 0.05, P310,
-     _refined_khz(modes_310, 3, "any", 0), None),
-    ("106", "m=2 refined, table 7.6", 7.6, 0.05, P106,
-     _refined_khz(_modes_106_kappa, 2, "any", 0),
-     ("as for the 310 m = 2 cell: the refined value cannot exceed eq. (1.9)'s 7.31 kHz for "
-      "any kappa >= 0 (we get 7.08 kHz with kappa = 0.30); the table prints 7.6")),
-    ("106", "m=3 refined, table 11.4 (kappa = 0.30 estimated, not printed)", 11.4, 0.05, P106,
-     _refined_khz(_modes_106_kappa, 3, "any", 0), None),
+    (
+        "310",
+        "m=2 refined, table 3.9",
+        3.9,
+        0.05,
+        P310,
+        _refined_khz(modes_310, 2, "any", 0),
+        (
+            "the ball masses can only lower the in-phase frequency below eq. (1.9)'s 3.70 kHz "
+            "(at epsilon = 1/2 the numerator of (3.4) equals (1.9) and the denominator exceeds 1); "
+            "(3.4)-(3.5) give 3.58 kHz, and no kappa >= 0 gives 3.9"
+        ),
+    ),
+    ("310", "m=3 refined, table 6.1", 6.1, 0.05, P310, _refined_khz(modes_310, 3, "any", 0), None),
+    (
+        "106",
+        "m=2 refined, table 7.6",
+        7.6,
+        0.05,
+        P106,
+        _refined_khz(_modes_106_kappa, 2, "any", 0),
+        (
+            "as for the 310 m = 2 cell: the refined value cannot exceed eq. (1.9)'s 7.31 kHz for "
+            "any kappa >= 0 (we get 7.08 kHz with kappa = 0.30); the table prints 7.6"
+        ),
+    ),
+    (
+        "106",
+        "m=3 refined, table 11.4 (kappa = 0.30 estimated, not printed)",
+        11.4,
+        0.05,
+        P106,
+        _refined_khz(_modes_106_kappa, 3, "any", 0),
+        None,
+    ),
 ]
 
 
@@ -222,18 +393,27 @@ def _printed_case(bearing, quantity, printed, half_unit, inputs, compute, known)
     _, allowance = tolerance(compute, inputs, half_unit)
     rounded = ", ".join(f"{_INPUT_TEXT[k]} {v:.4g} +-{h:.3g}" for k, (v, h) in inputs.items())
     unit = "-" if "epsilon" in quantity else "kHz"
-    reason = (f"+-{allowance:.3g} {unit}: half a unit of the printed value ({half_unit:g}) plus "
-              f"the effect of the paper's rounded inputs ({rounded})")
+    reason = (
+        f"+-{allowance:.3g} {unit}: half a unit of the printed value ({half_unit:g}) plus "
+        f"the effect of the paper's rounded inputs ({rounded})"
+    )
     nominal = {k: v for k, (v, _) in inputs.items()}
-    return Case(SOURCE_106 if bearing == "106" else SOURCE_310, quantity, printed, unit,
-                partial(compute, nominal), allowance / abs(printed), reason, known)
+    return Case(
+        SOURCE_106 if bearing == "106" else SOURCE_310,
+        quantity,
+        printed,
+        unit,
+        partial(compute, nominal),
+        allowance / abs(printed),
+        reason,
+        known,
+    )
 
 
 def free_from_section(name: str, m: int) -> float:
     """f*_m [kHz] of the outer ring of our estimated section of bearing ``name``."""
     bearing = bearing_from_designation(name)[0]
-    return ring_modes(bearing, radial_stiffness=0.0, ring_mass=1.0,
-                      modes=[m]).mode(m).free / KHZ
+    return ring_modes(bearing, radial_stiffness=0.0, ring_mass=1.0, modes=[m]).mode(m).free / KHZ
 
 
 # ---- free-ring frequencies from our own estimated outer-ring section (sec. 2, denominators)
@@ -243,15 +423,28 @@ def free_from_section(name: str, m: int) -> float:
 # groove: groove depth 0.15 ... 0.25 D_w and D_w +-5 % move our values by about -12 ... +12 %
 # (106) and -15 ... +15 % (310). We allow 10 %, below that spread; the paper's computed
 # values (ring without sensors) are themselves 1-5 % above its measured ones.
-_SECTION_REASON = ("our outer-ring section is estimated (ISO boundary dimensions, estimated "
-                   "D_w, groove depth 0.20 D_w): groove depth 0.15-0.25 D_w and D_w +-5 % move "
-                   "f* by about +-12 % (106) and +-15 % (310); 10 % is below that spread")
-FREE_CASES = [("106 (seed 000)", 2, 3.56), ("106 (seed 000)", 3, 10.07),
-              ("310 (seed 000)", 2, 1.93), ("310 (seed 000)", 3, 5.47),
-              ("310 (seed 000)", 4, 10.49)]
+_SECTION_REASON = (
+    "our outer-ring section is estimated (ISO boundary dimensions, estimated "
+    "D_w, groove depth 0.20 D_w): groove depth 0.15-0.25 D_w and D_w +-5 % move "
+    "f* by about +-12 % (106) and +-15 % (310); 10 % is below that spread"
+)
+FREE_CASES = [
+    ("106 (seed 000)", 2, 3.56),
+    ("106 (seed 000)", 3, 10.07),
+    ("310 (seed 000)", 2, 1.93),
+    ("310 (seed 000)", 3, 5.47),
+    ("310 (seed 000)", 4, 10.49),
+]
 
 CASES = [_printed_case(*row) for row in PRINTED] + [
-    Case(SOURCE_106 if name.startswith("106") else SOURCE_310,
-         f"computed free f*_{m} {printed} from our estimated ring section", printed, "kHz",
-         partial(free_from_section, name, m), 0.10, _SECTION_REASON)
-    for name, m, printed in FREE_CASES]
+    Case(
+        SOURCE_106 if name.startswith("106") else SOURCE_310,
+        f"computed free f*_{m} {printed} from our estimated ring section",
+        printed,
+        "kHz",
+        partial(free_from_section, name, m),
+        0.10,
+        _SECTION_REASON,
+    )
+    for name, m, printed in FREE_CASES
+]

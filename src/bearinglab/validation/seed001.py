@@ -47,7 +47,7 @@ SOURCE = "seed 001 (126126, figs. 7-10)"
 #: Speeds, axial loads and the axial load factor of the worked case (seed lines 246-274).
 SPEEDS_RPM = (0.0, 4500.0, 8000.0)
 AXIAL_LOADS_N = (0.0, 150.0, 350.0, 700.0)
-AXIAL_LOAD_FACTOR = 0.68          # "e = 0,68" (line 270); ISO 281 gives 0.68 for 25 deg
+AXIAL_LOAD_FACTOR = 0.68  # "e = 0,68" (line 270); ISO 281 gives 0.68 for 25 deg
 
 #: Initial radial clearance g of the paper (line 246), taken as our diametral clearance.
 CLEARANCE = 150e-6
@@ -74,8 +74,12 @@ FIG10_RADIAL_LOADS_N = (200.0, 500.0, 800.0, 1100.0)
 FIG10_AXIAL_LOADS_N = tuple(np.arange(0.0, 1201.0, 50.0).tolist())
 
 
-def arch_angle_for(free_contact_angle: float, diametral_clearance: float, ball_diameter: float,
-                   groove_factor: float) -> float:
+def arch_angle_for(
+    free_contact_angle: float,
+    diametral_clearance: float,
+    ball_diameter: float,
+    groove_factor: float,
+) -> float:
     """Arch angle alpha_T (equal on both rings) that gives ``free_contact_angle`` [rad].
 
     Under a pure axial load one inner and the opposite outer groove half touch the ball;
@@ -99,16 +103,22 @@ def arch_angle_for(free_contact_angle: float, diametral_clearance: float, ball_d
     a = (2.0 * groove_factor - 1.0) * ball_diameter
     c = math.cos(free_contact_angle) + diametral_clearance / (2.0 * a)
     if not -1.0 <= c <= 1.0:
-        raise ValueError(f"no arch angle gives {math.degrees(free_contact_angle):.3g} deg with "
-                         f"P_d = {diametral_clearance * 1e6:.3g} um and f = {groove_factor}")
+        raise ValueError(
+            f"no arch angle gives {math.degrees(free_contact_angle):.3g} deg with "
+            f"P_d = {diametral_clearance * 1e6:.3g} um and f = {groove_factor}"
+        )
     return math.acos(c)
 
 
-def bearing_126126(*, ball_count: int = BALL_COUNT, ball_diameter: float = BALL_DIAMETER,
-                   groove_factor: float = GROOVE_FACTOR,
-                   free_contact_angle: float = FREE_CONTACT_ANGLE,
-                   diametral_clearance: float = CLEARANCE,
-                   outer_arch: bool = True) -> BallBearing:
+def bearing_126126(
+    *,
+    ball_count: int = BALL_COUNT,
+    ball_diameter: float = BALL_DIAMETER,
+    groove_factor: float = GROOVE_FACTOR,
+    free_contact_angle: float = FREE_CONTACT_ANGLE,
+    diametral_clearance: float = CLEARANCE,
+    outer_arch: bool = True,
+) -> BallBearing:
     """The 126126 of seed 001 with our estimated internal geometry.
 
     Defaults: Z = 15, D_w = 18.9 mm, d_m = 165 mm (our deep-groove estimate for
@@ -134,20 +144,30 @@ def bearing_126126(*, ball_count: int = BALL_COUNT, ball_diameter: float = BALL_
         False for a circular outer groove [-].
     """
     if outer_arch:
-        inner = outer = arch_angle_for(free_contact_angle, diametral_clearance, ball_diameter,
-                                       groove_factor)
+        inner = outer = arch_angle_for(
+            free_contact_angle, diametral_clearance, ball_diameter, groove_factor
+        )
     else:
         free = (groove_factor - 0.5) * ball_diameter
         a = 2.0 * free
         c = (a * math.cos(free_contact_angle) + 0.5 * diametral_clearance - free) / free
         inner, outer = math.acos(c), 0.0
-    return BallBearing(ball_count=ball_count, ball_diameter=ball_diameter,
-                       pitch_diameter=PITCH_DIAMETER, inner_groove_factor=groove_factor,
-                       outer_groove_factor=groove_factor, contact_angle=free_contact_angle,
-                       diametral_clearance=diametral_clearance, bore=BORE,
-                       outside_diameter=OUTSIDE_DIAMETER, width=WIDTH,
-                       bearing_type="angular_contact_ball", name="126126 (seed 001)",
-                       inner_arch_angle=inner, outer_arch_angle=outer)
+    return BallBearing(
+        ball_count=ball_count,
+        ball_diameter=ball_diameter,
+        pitch_diameter=PITCH_DIAMETER,
+        inner_groove_factor=groove_factor,
+        outer_groove_factor=groove_factor,
+        contact_angle=free_contact_angle,
+        diametral_clearance=diametral_clearance,
+        bore=BORE,
+        outside_diameter=OUTSIDE_DIAMETER,
+        width=WIDTH,
+        bearing_type="angular_contact_ball",
+        name="126126 (seed 001)",
+        inner_arch_angle=inner,
+        outer_arch_angle=outer,
+    )
 
 
 BEARING = bearing_126126()
@@ -155,12 +175,16 @@ BEARING = bearing_126126()
 
 def condition(radial_load: float, axial_load: float, speed_rpm: float) -> OperatingCondition:
     """Loads [N] and inner-ring speed [rpm] as an OperatingCondition (SI inside)."""
-    return OperatingCondition(radial_load=float(radial_load), axial_load=float(axial_load),
-                              shaft_speed=float(speed_rpm) * math.pi / 30.0)
+    return OperatingCondition(
+        radial_load=float(radial_load),
+        axial_load=float(axial_load),
+        shaft_speed=float(speed_rpm) * math.pi / 30.0,
+    )
 
 
-def solve_point(radial_load: float, axial_load: float, speed_rpm: float,
-                bearing: BallBearing | None = None) -> LoadDistribution:
+def solve_point(
+    radial_load: float, axial_load: float, speed_rpm: float, bearing: BallBearing | None = None
+) -> LoadDistribution:
     """One quasi-static solve of the worked case; raises ConvergenceError.
 
     Parameters
@@ -172,9 +196,11 @@ def solve_point(radial_load: float, axial_load: float, speed_rpm: float,
     bearing : BallBearing, optional
         Defaults to :data:`BEARING`.
     """
-    return solve_load_distribution(BEARING if bearing is None else bearing,
-                                   condition(radial_load, axial_load, speed_rpm),
-                                   tolerance=SOLVE_TOLERANCE)
+    return solve_load_distribution(
+        BEARING if bearing is None else bearing,
+        condition(radial_load, axial_load, speed_rpm),
+        tolerance=SOLVE_TOLERANCE,
+    )
 
 
 @dataclass(frozen=True)
@@ -185,13 +211,13 @@ class Sweep:
     (F_r [N], F_a [N], speed [rpm], message).
     """
 
-    radial_load: np.ndarray                 # [N]
-    axial_load: np.ndarray                  # [N]
-    speed_rpm: float                        # [rpm]
-    radial_displacement: np.ndarray         # S_r [um]
-    axial_displacement: np.ndarray          # S_a [um]
-    radial_stiffness: np.ndarray            # C_r [N/um]
-    axial_stiffness: np.ndarray             # C_a [N/um]
+    radial_load: np.ndarray  # [N]
+    axial_load: np.ndarray  # [N]
+    speed_rpm: float  # [rpm]
+    radial_displacement: np.ndarray  # S_r [um]
+    axial_displacement: np.ndarray  # S_a [um]
+    radial_stiffness: np.ndarray  # C_r [N/um]
+    axial_stiffness: np.ndarray  # C_a [N/um]
     failures: tuple = ()
 
     @property
@@ -200,8 +226,7 @@ class Sweep:
         return np.isfinite(self.radial_displacement)
 
 
-def sweep(radial_loads, axial_loads, speed_rpm: float, bearing: BallBearing | None = None
-          ) -> Sweep:
+def sweep(radial_loads, axial_loads, speed_rpm: float, bearing: BallBearing | None = None) -> Sweep:
     """Solve every (F_r, F_a) pair; broadcasts a scalar against an array [N, N, rpm]."""
     fr, fa = np.broadcast_arrays(np.asarray(radial_loads, float), np.asarray(axial_loads, float))
     fr, fa = fr.ravel().copy(), fa.ravel().copy()
@@ -213,31 +238,43 @@ def sweep(radial_loads, axial_loads, speed_rpm: float, bearing: BallBearing | No
         except ConvergenceError as exc:
             failures.append((float(r_load), float(a_load), float(speed_rpm), str(exc)))
             continue
-        out[:, k] = (res.radial_displacement * 1e6, res.axial_displacement * 1e6,
-                     res.radial_stiffness * 1e-6, res.axial_stiffness * 1e-6)
+        out[:, k] = (
+            res.radial_displacement * 1e6,
+            res.axial_displacement * 1e6,
+            res.radial_stiffness * 1e-6,
+            res.axial_stiffness * 1e-6,
+        )
     return Sweep(fr, fa, float(speed_rpm), *out, failures=tuple(failures))
 
 
 @lru_cache(maxsize=128)
-def _cached_sweep(radial_loads: tuple, axial_loads: tuple, speed_rpm: float,
-                  bearing: BallBearing) -> Sweep:
+def _cached_sweep(
+    radial_loads: tuple, axial_loads: tuple, speed_rpm: float, bearing: BallBearing
+) -> Sweep:
     return sweep(radial_loads, axial_loads, speed_rpm, bearing)
 
 
-def radial_curve(axial_load: float, speed_rpm: float, radial_loads=RADIAL_LOADS_N,
-                 bearing: BallBearing | None = None) -> Sweep:
+def radial_curve(
+    axial_load: float,
+    speed_rpm: float,
+    radial_loads=RADIAL_LOADS_N,
+    bearing: BallBearing | None = None,
+) -> Sweep:
     """S_r, S_a, C_r, C_a against F_r for one F_a and speed (figs. 7-9), cached [N, rpm]."""
     loads = tuple(float(x) for x in np.atleast_1d(radial_loads))
-    return _cached_sweep(loads, (float(axial_load),), float(speed_rpm),
-                         BEARING if bearing is None else bearing)
+    return _cached_sweep(
+        loads, (float(axial_load),), float(speed_rpm), BEARING if bearing is None else bearing
+    )
 
 
-def axial_curve(radial_load: float, speed_rpm: float, axial_loads,
-                bearing: BallBearing | None = None) -> Sweep:
+def axial_curve(
+    radial_load: float, speed_rpm: float, axial_loads, bearing: BallBearing | None = None
+) -> Sweep:
     """S_r, S_a, C_r, C_a against F_a for one F_r and speed (fig. 10), cached [N, rpm]."""
     loads = tuple(float(x) for x in np.atleast_1d(axial_loads))
-    return _cached_sweep((float(radial_load),), loads, float(speed_rpm),
-                         BEARING if bearing is None else bearing)
+    return _cached_sweep(
+        (float(radial_load),), loads, float(speed_rpm), BEARING if bearing is None else bearing
+    )
 
 
 # ------------------------------------------------------------------- the findings
@@ -285,8 +322,9 @@ def inflection_grid(axial_load: float) -> np.ndarray:
     return np.arange(axial_load / 1.5, axial_load / 0.4 + 0.5 * step, step)
 
 
-def inflection_ratio(axial_load: float, speed_rpm: float,
-                     bearing: BallBearing | None = None) -> float:
+def inflection_ratio(
+    axial_load: float, speed_rpm: float, bearing: BallBearing | None = None
+) -> float:
     """F_a / F_r at :func:`inflection_load` on :func:`inflection_grid` [-]."""
     curve = radial_curve(axial_load, speed_rpm, inflection_grid(axial_load), bearing)
     return axial_load / inflection_load(curve.radial_load, curve.radial_displacement)
@@ -323,8 +361,7 @@ def onset_load(radial_loads, displacements) -> float:
     return knee if 0.0 < knee <= f[-1] else math.nan
 
 
-def onset_ratio(axial_load: float, speed_rpm: float,
-                bearing: BallBearing | None = None) -> float:
+def onset_ratio(axial_load: float, speed_rpm: float, bearing: BallBearing | None = None) -> float:
     """F_a / F_r at the knee, :func:`onset_load` on :func:`inflection_grid` (fig. 8;
     seed lines 262-272) [-]."""
     curve = radial_curve(axial_load, speed_rpm, inflection_grid(axial_load), bearing)
@@ -336,8 +373,9 @@ def onset_ratio(axial_load: float, speed_rpm: float,
 PRE_INFLECTION_FRACTION = 0.65
 
 
-def pre_inflection_loads(axial_load: float, speeds_rpm, bearing: BallBearing | None = None
-                         ) -> tuple:
+def pre_inflection_loads(
+    axial_load: float, speeds_rpm, bearing: BallBearing | None = None
+) -> tuple:
     """Ten radial loads up to PRE_INFLECTION_FRACTION of the smallest knee load of the
     curves at ``speeds_rpm`` (the same loads for every speed, to compare them) [N]."""
     knees = [axial_load / onset_ratio(axial_load, rpm, bearing) for rpm in speeds_rpm]
@@ -347,19 +385,25 @@ def pre_inflection_loads(axial_load: float, speeds_rpm, bearing: BallBearing | N
     return tuple(float(x) for x in np.round(top * np.arange(1, 11) / 10.0, 6))
 
 
-def linearity_error(axial_load: float, speed_rpm: float,
-                    bearing: BallBearing | None = None) -> float:
+def linearity_error(
+    axial_load: float, speed_rpm: float, bearing: BallBearing | None = None
+) -> float:
     """Largest deviation of S_r(F_r) from a line through the origin before the inflection,
     relative to S_r at the last of :func:`pre_inflection_loads` (fig. 7, line 256) [-]."""
-    c = radial_curve(axial_load, speed_rpm,
-                     pre_inflection_loads(axial_load, (speed_rpm,), bearing), bearing)
+    c = radial_curve(
+        axial_load, speed_rpm, pre_inflection_loads(axial_load, (speed_rpm,), bearing), bearing
+    )
     f, d = c.radial_load[c.ok], c.radial_displacement[c.ok]
     k = float(f @ d / (f @ f))
     return float(np.max(np.abs(d - k * f)) / d[-1])
 
 
-def pre_inflection_speed_effect(axial_load: float, speed_rpm: float, reference_rpm: float = 0.0,
-                                bearing: BallBearing | None = None) -> float:
+def pre_inflection_speed_effect(
+    axial_load: float,
+    speed_rpm: float,
+    reference_rpm: float = 0.0,
+    bearing: BallBearing | None = None,
+) -> float:
     """Largest |S_r(speed) - S_r(reference speed)| before the inflection (fig. 7) [um]."""
     loads = pre_inflection_loads(axial_load, (speed_rpm, reference_rpm), bearing)
     a = radial_curve(axial_load, speed_rpm, loads, bearing)
@@ -368,8 +412,9 @@ def pre_inflection_speed_effect(axial_load: float, speed_rpm: float, reference_r
     return float(np.max(np.abs(a.radial_displacement[both] - b.radial_displacement[both])))
 
 
-def steepest_slope(axial_load: float, speed_rpm: float,
-                   bearing: BallBearing | None = None) -> float:
+def steepest_slope(
+    axial_load: float, speed_rpm: float, bearing: BallBearing | None = None
+) -> float:
     """Largest dS_r/dF_r past the inflection, on the grid of :func:`inflection_grid`
     (fig. 8: "the slope after the inflection falls as F_a grows", seed line 274) [um/N]."""
     c = radial_curve(axial_load, speed_rpm, inflection_grid(axial_load), bearing)
@@ -377,19 +422,27 @@ def steepest_slope(axial_load: float, speed_rpm: float,
     return float(np.max(np.diff(d) / np.diff(f)))
 
 
-def speed_difference_with(radial_load: float, axial_load: float, low_rpm: float = 0.0,
-                          high_rpm: float = 8000.0, **options) -> float:
+def speed_difference_with(
+    radial_load: float, axial_load: float, low_rpm: float = 0.0, high_rpm: float = 8000.0, **options
+) -> float:
     """S_r(low speed) - S_r(high speed) with solver options outside the paper's model
     (``lubricant``, ``ring_expansion``, ``gyroscopic``) [um]."""
+
     def s_r(rpm):
-        return solve_load_distribution(BEARING, condition(radial_load, axial_load, rpm),
-                                       tolerance=SOLVE_TOLERANCE, **options).radial_displacement
+        return solve_load_distribution(
+            BEARING, condition(radial_load, axial_load, rpm), tolerance=SOLVE_TOLERANCE, **options
+        ).radial_displacement
 
     return (s_r(low_rpm) - s_r(high_rpm)) * 1e6
 
 
-def speed_difference(radial_load: float, axial_load: float, low_rpm: float = 0.0,
-                     high_rpm: float = 8000.0, bearing: BallBearing | None = None) -> float:
+def speed_difference(
+    radial_load: float,
+    axial_load: float,
+    low_rpm: float = 0.0,
+    high_rpm: float = 8000.0,
+    bearing: BallBearing | None = None,
+) -> float:
     """S_r(low speed) - S_r(high speed) at one load (fig. 7, seed line 258) [um]."""
     low = radial_curve(axial_load, low_rpm, (radial_load,), bearing)
     high = radial_curve(axial_load, high_rpm, (radial_load,), bearing)
@@ -400,17 +453,18 @@ def speed_difference(radial_load: float, axial_load: float, low_rpm: float = 0.0
 class StiffnessFall:
     """Where C_r(F_r) falls and rises (fig. 9a), from a :class:`Sweep` [N, N/um, -]."""
 
-    initial: float            # C_r at the smallest F_r [N/um]
-    minimum: float            # smallest C_r [N/um]
-    final: float              # C_r at the largest F_r [N/um]
-    fall_start: float         # first F_r where C_r < 95 % of the initial value [N]
-    minimum_load: float       # F_r of the minimum [N]
-    steepest_fall: float      # largest -dC_r/dF_r before the minimum [N/um per N]
-    fraction_below_e: float   # share of the fall (initial - minimum) at F_a/F_r < e [-]
+    initial: float  # C_r at the smallest F_r [N/um]
+    minimum: float  # smallest C_r [N/um]
+    final: float  # C_r at the largest F_r [N/um]
+    fall_start: float  # first F_r where C_r < 95 % of the initial value [N]
+    minimum_load: float  # F_r of the minimum [N]
+    steepest_fall: float  # largest -dC_r/dF_r before the minimum [N/um per N]
+    fraction_below_e: float  # share of the fall (initial - minimum) at F_a/F_r < e [-]
 
 
-def describe_stiffness_fall(radial_loads, radial_stiffness, axial_load: float,
-                            e: float = AXIAL_LOAD_FACTOR) -> StiffnessFall:
+def describe_stiffness_fall(
+    radial_loads, radial_stiffness, axial_load: float, e: float = AXIAL_LOAD_FACTOR
+) -> StiffnessFall:
     """Describe the fall and rise of C_r(F_r) at one F_a (fig. 9a, seed lines 282-285).
 
     Parameters
@@ -433,13 +487,24 @@ def describe_stiffness_fall(radial_loads, radial_stiffness, axial_load: float,
     drop = c[0] - c[k]
     lowest_before = float(np.min(c[: k + 1][f[: k + 1] <= axial_load / e], initial=c[0]))
     fraction = (lowest_before - c[k]) / drop if drop > 0 else math.nan
-    return StiffnessFall(float(c[0]), float(c[k]), float(c[-1]), start, float(f[k]),
-                         float(np.max(rate)), float(fraction))
+    return StiffnessFall(
+        float(c[0]),
+        float(c[k]),
+        float(c[-1]),
+        start,
+        float(f[k]),
+        float(np.max(rate)),
+        float(fraction),
+    )
 
 
-def stiffness_fall(axial_load: float, speed_rpm: float = 4500.0,
-                   radial_loads=RADIAL_LOADS_N, e: float = AXIAL_LOAD_FACTOR,
-                   bearing: BallBearing | None = None) -> StiffnessFall:
+def stiffness_fall(
+    axial_load: float,
+    speed_rpm: float = 4500.0,
+    radial_loads=RADIAL_LOADS_N,
+    e: float = AXIAL_LOAD_FACTOR,
+    bearing: BallBearing | None = None,
+) -> StiffnessFall:
     """:func:`describe_stiffness_fall` of the C_r(F_r) curve at one F_a and speed [N, rpm]."""
     curve = radial_curve(axial_load, speed_rpm, radial_loads, bearing)
     return describe_stiffness_fall(curve.radial_load, curve.radial_stiffness, axial_load, e)
@@ -447,15 +512,19 @@ def stiffness_fall(axial_load: float, speed_rpm: float = 4500.0,
 
 # ------------------------------------------------------------------- printed numbers
 
-_INFLECTION_REASON = ("printed as the range F_a/F_r = 0.64...0.71 read off fig. 8 around "
-                      "e = 0.68: 6 % covers 0.64-0.72; our knee (onset_ratio) is "
-                      "interpolated, so no grid term is added")
-_INFLECTION_FAILURE = ("our knee at 8000 rpm is at 0.74, 0.81, 0.82: the balls, seated in the "
-                       "outer arch by F_c, run at a 34 deg inner contact angle instead of 26 "
-                       "deg (Jones's cage speed moves it by < 0.003). Outside the paper's "
-                       "model: with the inner ring's expansion 0.70, 0.76, 0.77; with an ISO "
-                       "VG 68 film and the expansion 0.66, 0.71, 0.73 (the paper gives no "
-                       "lubricant)")
+_INFLECTION_REASON = (
+    "printed as the range F_a/F_r = 0.64...0.71 read off fig. 8 around "
+    "e = 0.68: 6 % covers 0.64-0.72; our knee (onset_ratio) is "
+    "interpolated, so no grid term is added"
+)
+_INFLECTION_FAILURE = (
+    "our knee at 8000 rpm is at 0.74, 0.81, 0.82: the balls, seated in the "
+    "outer arch by F_c, run at a 34 deg inner contact angle instead of 26 "
+    "deg (Jones's cage speed moves it by < 0.003). Outside the paper's "
+    "model: with the inner ring's expansion 0.70, 0.76, 0.77; with an ISO "
+    "VG 68 film and the expansion 0.66, 0.71, 0.73 (the paper gives no "
+    "lubricant)"
+)
 _DIFFERENCE_FAILURE = (
     "on the paper's own model (no film, rigid rings; Jones's cage speed) our S_r is LARGER at "
     "8000 rpm: -1.8, -1.6, -9.6 um for F_a = 0, 150, 350 N (centrifugal force seats the balls "
@@ -463,17 +532,37 @@ _DIFFERENCE_FAILURE = (
     "ISO VG 68 film (the paper's eq. 2, lubricant not given) +8.4, +8.4, -0.3; both +17.3, "
     "+17.3, +8.4 (seed 004's grease and the expansion: +13.2, +13.1, +4.6): the paper's sign "
     "needs one of them, its size a lubricant it does not print (see "
-    "docs/capabilities/load_distribution_seed001.md)")
-_DIFFERENCE_REASON = ("'about 10 um' read off fig. 7 a-v (axes not printed): we accept the "
-                      "same sign and 3-17 um")
+    "docs/capabilities/load_distribution_seed001.md)"
+)
+_DIFFERENCE_REASON = (
+    "'about 10 um' read off fig. 7 a-v (axes not printed): we accept the same sign and 3-17 um"
+)
 
 CASES = [
-    *[Case(SOURCE, f"inflection F_a/F_r at 8000 rpm, F_a = {fa:g} N (fig. 8)", 0.68, "-",
-           (lambda fa=fa: onset_ratio(fa, 8000.0)), 0.06, _INFLECTION_REASON,
-           known_failure=_INFLECTION_FAILURE)
-      for fa in (150.0, 350.0, 700.0)],
-    *[Case(SOURCE, f"S_r(0 rpm) - S_r(8000 rpm) at F_r = 1000 N, F_a = {fa:g} N (fig. 7)",
-           10.0, "um", (lambda fa=fa: speed_difference(1000.0, fa)), 0.7, _DIFFERENCE_REASON,
-           known_failure=_DIFFERENCE_FAILURE)
-      for fa in (0.0, 150.0, 350.0)],
+    *[
+        Case(
+            SOURCE,
+            f"inflection F_a/F_r at 8000 rpm, F_a = {fa:g} N (fig. 8)",
+            0.68,
+            "-",
+            (lambda fa=fa: onset_ratio(fa, 8000.0)),
+            0.06,
+            _INFLECTION_REASON,
+            known_failure=_INFLECTION_FAILURE,
+        )
+        for fa in (150.0, 350.0, 700.0)
+    ],
+    *[
+        Case(
+            SOURCE,
+            f"S_r(0 rpm) - S_r(8000 rpm) at F_r = 1000 N, F_a = {fa:g} N (fig. 7)",
+            10.0,
+            "um",
+            (lambda fa=fa: speed_difference(1000.0, fa)),
+            0.7,
+            _DIFFERENCE_REASON,
+            known_failure=_DIFFERENCE_FAILURE,
+        )
+        for fa in (0.0, 150.0, 350.0)
+    ],
 ]

@@ -21,10 +21,22 @@ SPEED = 1750 * math.pi / 30
 # The inputs are printed to 3-4 significant figures (7.94 mm, 38.51 mm): +-0.005 mm on the
 # ball moves these lines by about 0.06 %; 0.1 % covers that and the printed rounding.
 CASES = [
-    Case(SOURCE, "BPFO at 1750 rpm", 104.19, "Hz",
-         lambda: defect_frequencies(ER16K, SPEED).hz("bpfo"), 1e-3,
-         "inputs printed to 3-4 significant figures"),
-    Case(SOURCE, "ball defect rate 2xBSF at 1750 rpm", 135.5, "Hz",
-         lambda: defect_frequencies(ER16K, SPEED).hz("ball_defect"), 1e-3,
-         "printed to 0.1 Hz; inputs printed to 3-4 significant figures"),
+    Case(
+        SOURCE,
+        "BPFO at 1750 rpm",
+        104.19,
+        "Hz",
+        lambda: defect_frequencies(ER16K, SPEED).hz("bpfo"),
+        1e-3,
+        "inputs printed to 3-4 significant figures",
+    ),
+    Case(
+        SOURCE,
+        "ball defect rate 2xBSF at 1750 rpm",
+        135.5,
+        "Hz",
+        lambda: defect_frequencies(ER16K, SPEED).hz("ball_defect"),
+        1e-3,
+        "printed to 0.1 Hz; inputs printed to 3-4 significant figures",
+    ),
 ]

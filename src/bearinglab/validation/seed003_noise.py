@@ -19,9 +19,9 @@ import functools
 
 from .case import Case
 
-PUBLISHED_MEAN_SPL_DB = 29.832           # fig. 14
+PUBLISHED_MEAN_SPL_DB = 29.832  # fig. 14
 BASE = {"rpm": 720.0, "load": 50.0, "amplitude": 0.2e-6, "order": 7, "band": 2e-6}
-POINTS = 1024                            # one cage revolution (0.224 s): ~4.6 kHz
+POINTS = 1024  # one cage revolution (0.224 s): ~4.6 kHz
 
 
 @functools.cache
@@ -35,10 +35,10 @@ def _noise(rpm, load, amplitude, order, band):
     bearing, _ = bearing_from_designation("608")
     imperfections = Imperfections(
         [Waviness("inner", order, amplitude), Waviness("outer", order, amplitude)],
-        ball_size_errors=BallSizeErrors.random(bearing.ball_count, band, seed=1))
+        ball_size_errors=BallSizeErrors.random(bearing.ball_count, band, seed=1),
+    )
     condition = OperatingCondition(radial_load=load, shaft_speed=rpm_to_rad_s(rpm))
-    return bearing_noise(bearing, condition, imperfections, points=POINTS,
-                         point=SEED003_POINT_A)
+    return bearing_noise(bearing, condition, imperfections, points=POINTS, point=SEED003_POINT_A)
 
 
 def mean_spl(**change) -> float:
@@ -48,11 +48,18 @@ def mean_spl(**change) -> float:
 
 
 CASES = [
-    Case("seed 003 (C&U 608, fig. 14)", "mean SPL at point A, 720 rpm, 0.05 kN, waviness 7",
-         PUBLISHED_MEAN_SPL_DB, "dB", mean_spl, 0.10,
-         "3 dB: the paper's value and the two measurements it quotes span 2 dB",
-         known_failure=(
-             "not reproduced with the chosen, unfitted waviness amplitude: about 11 dB. The "
-             "paper does not print its amplitude; the pressure is proportional to it (+6 dB "
-             "per doubling), so about 2 um would be needed, ten times the 0.2 um chosen")),
+    Case(
+        "seed 003 (C&U 608, fig. 14)",
+        "mean SPL at point A, 720 rpm, 0.05 kN, waviness 7",
+        PUBLISHED_MEAN_SPL_DB,
+        "dB",
+        mean_spl,
+        0.10,
+        "3 dB: the paper's value and the two measurements it quotes span 2 dB",
+        known_failure=(
+            "not reproduced with the chosen, unfitted waviness amplitude: about 11 dB. The "
+            "paper does not print its amplitude; the pressure is proportional to it (+6 dB "
+            "per doubling), so about 2 um would be needed, ten times the 0.2 um chosen"
+        ),
+    ),
 ]
