@@ -8,7 +8,8 @@ import scipy.fft
 import scipy.signal
 import scipy.stats
 
-from bearinglab.diagnosis.statistics import chi2_logsf, local_maxima
+from bearinglab.diagnosis.statistics import chi2_logsf
+from bearinglab.signal.peaks import local_maxima, peak_prominences
 from bearinglab.signal.spectra import analytic, welch_power
 
 
@@ -51,3 +52,12 @@ def test_chi2_tail_is_scipy_stats_where_that_is_finite():
     x, dof = rng.exponential(30.0, 2000), rng.integers(2, 60, 2000)
     assert np.allclose(chi2_logsf(x, dof), scipy.stats.chi2.logsf(x, dof), rtol=1e-12, atol=1e-12)
     assert np.all(np.isfinite(chi2_logsf(np.array([1e4, 1e6]), np.array([20, 20]))))
+
+
+def test_peak_prominences_are_scipy_peak_prominences():
+    rng = np.random.default_rng(5)
+    for size in (3, 10, 200, 5000):
+        for x in (rng.normal(size=size), rng.integers(0, 5, size).astype(float)):
+            peaks = local_maxima(x)
+            want = scipy.signal.peak_prominences(x, peaks)[0] if peaks.size else np.zeros(0)
+            assert np.allclose(peak_prominences(x, peaks), want, rtol=0, atol=1e-12)

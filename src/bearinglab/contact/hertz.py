@@ -26,7 +26,7 @@ from dataclasses import dataclass
 from typing import Literal
 
 import numpy as np
-from scipy import optimize, special
+from scipy import special
 
 from ..errors import ConvergenceError, InputError
 
@@ -96,6 +96,8 @@ def _solve_log_k(target, iterations: int = 60):
     for i in zip(*np.nonzero(bad), strict=False):
         t = float(target[i])
         try:
+            from scipy import optimize  # the rare fallback; costs ~0.2 s to import
+
             u[i] = optimize.brentq(
                 lambda x, t=t: float(_log_ratio(x)) - t,
                 0.5 * t,

@@ -412,24 +412,3 @@ def _fisher_rows(logp: np.ndarray, readable: np.ndarray) -> np.ndarray:
     statistic = -2.0 * np.where(readable, logp, 0.0)[live].sum(axis=1)
     out[live] = chi2_logsf(statistic, 2 * lines[live])
     return out
-
-
-def local_maxima(x) -> np.ndarray:
-    """Indices of the local maxima of ``x``: samples higher than both neighbours, a flat
-    top counted once at its middle; the ends are not maxima. What
-    ``scipy.signal.find_peaks(x)`` returns with no conditions (scipy.signal is not imported:
-    ~0.5 s at start-up); a test checks the two agree.
-
-    >>> local_maxima([0, 2, 1, 3, 3, 3, 0, 5]).tolist()
-    [1, 4]
-    """
-    x = np.asarray(x, dtype=float)
-    if x.size < 3:
-        return np.zeros(0, dtype=int)
-    change = np.flatnonzero(np.diff(x))  # x[i] != x[i + 1]
-    starts = np.concatenate(([0], change + 1))  # runs of equal values
-    ends = np.concatenate((change, [x.size - 1]))
-    v = x[starts]
-    peak = np.zeros(v.size, dtype=bool)
-    peak[1:-1] = (v[1:-1] > v[:-2]) & (v[1:-1] > v[2:])
-    return (starts[peak] + ends[peak]) // 2

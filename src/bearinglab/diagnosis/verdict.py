@@ -211,7 +211,8 @@ def label_peaks(
     """The ``count`` most significant local maxima of ``spec`` up to ``max_frequency``,
     labelled by the accepted families' lines or as a masked discrete line (shaft,
     supply, mesh harmonic of any order)."""
-    from .statistics import bin_logp, local_maxima
+    from ..signal.peaks import local_maxima
+    from .statistics import bin_logp
 
     z, f = spec.z, spec.frequency
     res = spec.resolution

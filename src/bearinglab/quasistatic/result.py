@@ -7,7 +7,6 @@ from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
-import pandas as pd
 
 from ..contact import hertz
 from ..geometry import BallBearing, contact_radii
@@ -183,7 +182,7 @@ class LoadDistribution:
             out[:, cols] = (self.load[:, cols] > 0) & (reach > shoulder)
         return out
 
-    def ball_table(self) -> pd.DataFrame:
+    def ball_table(self):
         """One row per ball: angle, per-race loads (summed over arch halves), contact
         angles and pressures of the most loaded half, approaches, contact points."""
         rows = []
@@ -216,9 +215,11 @@ class LoadDistribution:
             row["contact_points"] = int(self.contact_points[j])
             row["truncated"] = bool(np.any(self.truncated[j]))
             rows.append(row)
+        import pandas as pd
+
         return pd.DataFrame(rows)
 
-    def to_pandas(self) -> pd.DataFrame:
+    def to_pandas(self):
         """The per-ball table (see :meth:`ball_table`)."""
         return self.ball_table()
 
@@ -262,8 +263,10 @@ class LoadDistribution:
         k = np.asarray(self.stiffness_matrix, dtype=float)
         return np.where(np.abs(k) < relative * np.max(np.abs(k)), 0.0, k)
 
-    def stiffness_frame(self) -> pd.DataFrame:
+    def stiffness_frame(self):
         """The 5x5 stiffness matrix as a table with named rows and columns (SI), for CSV."""
+        import pandas as pd
+
         return pd.DataFrame(self.stiffness_matrix, index=list(DOF_NAMES), columns=list(DOF_NAMES))
 
     def to_ross(

@@ -41,7 +41,6 @@ import math
 from collections.abc import Callable
 
 import numpy as np
-from scipy import optimize
 
 from ..errors import ConvergenceError, InputError
 from ..geometry import BallBearing
@@ -574,6 +573,8 @@ def _newton(problem: _Problem, tolerance: float, max_iterations: int, initial):
             # Newton overshoots (typically across the onset of contact): go to where the
             # residual turns against the step, i.e. the energy minimum along it.
             if slope(1.0) < 0 < slope(0.0):
+                from scipy import optimize  # rarely needed; costs ~0.4 s to import
+
                 step = along(optimize.brentq(slope, 0.0, 1.0, xtol=1e-12, rtol=1e-10, maxiter=200))
             if step is None:
                 raise ConvergenceError(

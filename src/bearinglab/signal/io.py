@@ -43,8 +43,6 @@ import zipfile
 from pathlib import Path
 
 import numpy as np
-import scipy.io
-import scipy.io.wavfile
 
 from ..errors import InputError
 from ..files import write_atomically
@@ -60,23 +58,30 @@ _MAT_NAME = re.compile(r"^\w+$", re.ASCII)
 #: CSV headers of a time column: time_s, time, t, time [s], time (ms), Time_ms...
 _TIME = re.compile(r"^\s*(t|time)(\s*[\[(]\s*(s|ms)\s*[\])]|_(s|ms))?\s*$", re.IGNORECASE)
 _MAT_NAME_MAX = 63  # MATLAB's namelengthmax
-# what corrupt or foreign files make NumPy, zipfile, csv and scipy.io raise (a truncated
-# WAV only warns, unless warnings are errors)
-_CORRUPT = (
-    OSError,
-    ValueError,
-    TypeError,
-    KeyError,
-    IndexError,
-    EOFError,
-    StopIteration,
-    NotImplementedError,
-    zipfile.BadZipFile,
-    struct.error,
-    csv.Error,
-    scipy.io.matlab.MatReadError,
-    scipy.io.wavfile.WavFileWarning,
-)
+
+
+def _corrupt() -> tuple:
+    """What corrupt or foreign files make NumPy, zipfile, csv and scipy.io raise (a
+    truncated WAV only warns, unless warnings are errors). A function, so that scipy.io is
+    imported only when a file fails (it costs ~0.2 s at start-up)."""
+    import scipy.io
+    import scipy.io.wavfile
+
+    return (
+        OSError,
+        ValueError,
+        TypeError,
+        KeyError,
+        IndexError,
+        EOFError,
+        StopIteration,
+        NotImplementedError,
+        zipfile.BadZipFile,
+        struct.error,
+        csv.Error,
+        scipy.io.matlab.MatReadError,
+        scipy.io.wavfile.WavFileWarning,
+    )
 
 
 def _suffix(path: Path) -> str:
@@ -127,7 +132,7 @@ def read_signal(path, sample_rate=None, channel=None) -> Signal:
         channels, file_rate, metadata = _READERS[suffix](path, sample_rate)
     except InputError:
         raise
-    except _CORRUPT as exc:
+    except _corrupt() as exc:
         raise InputError(
             "path", str(path), f"a readable {suffix} file", hint=f"{type(exc).__name__}: {exc}"
         ) from None
@@ -315,6 +320,8 @@ def _write_csv(signal: Signal):
 
 
 def _read_wav(path: Path, sample_rate):
+    import scipy.io.wavfile
+
     rate, data = scipy.io.wavfile.read(path)
     data = data.reshape(len(data), -1)
     if data.dtype.kind == "u":  # 8-bit PCM is unsigned, centred on 128
@@ -327,6 +334,8 @@ def _read_wav(path: Path, sample_rate):
 
 
 def _write_wav(signal: Signal):
+    import scipy.io.wavfile
+
     fs = signal.sample_rate
     if fs != round(fs) or fs > 2**32 - 1:
         raise InputError("sample_rate", fs, "a whole number of Hz below 2**32 for .wav")
@@ -382,6 +391,8 @@ def _walk_struct(name: str, value, channels: dict, scalars: dict, other: dict) -
 
 
 def _read_mat(path: Path, sample_rate):
+    import scipy.io
+
     try:
         loaded = scipy.io.loadmat(path)
     except (NotImplementedError, ValueError):  # MATLAB v7.3 files are HDF5
@@ -491,6 +502,8 @@ def _read_mat73(path: Path):
 
 
 def _write_mat(signal: Signal):
+    import scipy.io
+
     record = str(signal.metadata.get("cwru_record", "X000"))
     if not re.fullmatch(r"X\d+", record):
         record = "X000"

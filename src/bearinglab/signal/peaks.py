@@ -69,7 +69,8 @@ def find_peaks(
 ) -> list[dict]:
     """The ``count`` largest lines of a spectrum that stand out of its noise floor.
 
-    A line is a local maximum (``scipy.signal.find_peaks``) whose prominence is at least
+    A line is a local maximum (:func:`local_maxima`) whose prominence
+    (:func:`peak_prominences`) is at least
     ``prominence`` times the median amplitude in [min_frequency, max_frequency]; the
     median is a noise floor that the lines themselves barely move.
 
@@ -96,8 +97,6 @@ def find_peaks(
     >>> [p["frequency_hz"] for p in find_peaks((f, a))]
     [30.0, 70.0]
     """
-    import scipy.signal  # imported here: it costs ~0.5 s at start-up
-
     try:
         frequency = np.asarray(spectrum[0], dtype=float)
         amplitude = np.asarray(spectrum[1], dtype=float)
@@ -135,9 +134,12 @@ def find_peaks(
     a = amplitude[inside]
     # the 1e-9 x max floor keeps the rounding noise of noiseless synthetic spectra out
     floor = max(float(np.median(a)), 1e-9 * float(np.max(np.abs(a))))
-    index, props = scipy.signal.find_peaks(a, prominence=prominence * floor)
+    index = local_maxima(a)
+    prominences = peak_prominences(a, index)
+    keep = prominences >= prominence * floor
+    index, prominences = index[keep], prominences[keep]
     top = index[np.argsort(a[index], kind="stable")[::-1][:count]]
-    prom = dict(zip(index.tolist(), props["prominences"].tolist(), strict=True))
+    prom = dict(zip(index.tolist(), prominences.tolist(), strict=True))
     return [
         {
             "frequency_hz": float(frequency[inside[i]]),
@@ -146,6 +148,60 @@ def find_peaks(
         }
         for i in top
     ]
+
+
+def local_maxima(x) -> np.ndarray:
+    """Indices of the local maxima of ``x``: samples higher than both neighbours, a flat
+    top counted once at its middle; the ends are not maxima. What
+    ``scipy.signal.find_peaks(x)`` returns with no conditions (scipy.signal is not imported
+    here: it costs ~0.5 s at start-up); a test checks the two agree.
+
+    >>> local_maxima([0, 2, 1, 3, 3, 3, 0, 5]).tolist()
+    [1, 4]
+    """
+    x = np.asarray(x, dtype=float)
+    if x.size < 3:
+        return np.zeros(0, dtype=int)
+    change = np.flatnonzero(np.diff(x))  # x[i] != x[i + 1]
+    starts = np.concatenate(([0], change + 1))  # runs of equal values
+    ends = np.concatenate((change, [x.size - 1]))
+    v = x[starts]
+    peak = np.zeros(v.size, dtype=bool)
+    peak[1:-1] = (v[1:-1] > v[:-2]) & (v[1:-1] > v[2:])
+    return (starts[peak] + ends[peak]) // 2
+
+
+def _base_minima(x: np.ndarray) -> np.ndarray:
+    """For every sample j, the least value over (L, j], where L is the nearest sample to
+    the left higher than x[j] (or the start): one pass with a stack of (value, least value
+    since the entry below it)."""
+    out = np.empty(x.size)
+    stack: list[tuple[float, float]] = []
+    for j, value in enumerate(x.tolist()):
+        least = value
+        while stack and stack[-1][0] <= value:
+            least = min(least, stack.pop()[1])
+        out[j] = least
+        stack.append((value, least))
+    return out
+
+
+def peak_prominences(x, peaks) -> np.ndarray:
+    """Prominence of each peak: its height over the higher of the lowest points between it
+    and the nearest higher sample on either side (or the end). What
+    ``scipy.signal.peak_prominences(x, peaks)`` returns (a test checks the two agree),
+    computed in one pass each way.
+
+    >>> peak_prominences([0, 3, 1, 2, 0], [1, 3]).tolist()
+    [3.0, 1.0]
+    """
+    x = np.asarray(x, dtype=float)
+    peaks = np.asarray(peaks, dtype=int)
+    if peaks.size == 0:
+        return np.zeros(0)
+    left = _base_minima(x)
+    right = _base_minima(x[::-1])[::-1]
+    return x[peaks] - np.maximum(left[peaks], right[peaks])
 
 
 def _peak(p) -> dict:

@@ -210,22 +210,25 @@ def amplitude_spectrum(x, sample_rate, window="hann", segment_length=None, overl
     >>> float(s.frequency[np.argmax(s.amplitude)]), round(float(s.amplitude.max()), 6)
     (50.0, 2.5)
     """
-    import scipy.signal  # imported here: it costs ~0.5 s at start-up
-
     x = samples(x)
     fs = rate(sample_rate)
     nperseg = segment(segment_length, x.size)
     noverlap = overlapping(overlap, nperseg)
-    check_window(window, nperseg)
-    frequency, power = scipy.signal.welch(
-        x,
-        fs=fs,
-        window=window,
-        nperseg=nperseg,
-        noverlap=noverlap,
-        detrend="constant",
-        scaling="spectrum",
-    )
+    if isinstance(window, str) and window == "hann":  # without importing scipy.signal
+        frequency, power = welch_power(x, fs, nperseg, noverlap)
+    else:
+        import scipy.signal  # imported here: it costs ~0.5 s at start-up
+
+        check_window(window, nperseg)
+        frequency, power = scipy.signal.welch(
+            x,
+            fs=fs,
+            window=window,
+            nperseg=nperseg,
+            noverlap=noverlap,
+            detrend="constant",
+            scaling="spectrum",
+        )
     amplitude = np.sqrt(2.0 * power)
     # welch doubles every line but DC and (even segments) Nyquist, which have no mirror
     amplitude[0] = math.sqrt(power[0])
