@@ -6,7 +6,6 @@ from pathlib import Path
 from typing import Annotated
 
 import numpy as np
-import pandas as pd
 import typer
 from rich.markup import escape
 
@@ -511,7 +510,7 @@ def _check_output(*flags) -> None:
 
 
 def _write_csv(
-    table: pd.DataFrame, path: Path, index: bool = False, flag: str = "--output"
+    table, path: Path, index: bool = False, flag: str = "--output"
 ) -> None:
     """Write atomically: a temporary file in the same directory, then rename."""
     if path.parent and not path.parent.exists():

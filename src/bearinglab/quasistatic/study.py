@@ -17,7 +17,6 @@ from collections.abc import Callable
 from concurrent.futures import ProcessPoolExecutor
 
 import numpy as np
-import pandas as pd
 
 from ..errors import ConvergenceError, InputError
 from ..geometry import BallBearing
@@ -137,7 +136,7 @@ def stiffness_map(
     progress: Callable[[int], None] | None = None,
     gyroscopic: bool = False,
     race_control: str = "outer",
-) -> pd.DataFrame:
+):
     """C_r, C_a and displacements over every (radial load, axial load, speed).
 
     Parameters
@@ -186,4 +185,6 @@ def stiffness_map(
                 rows.extend(line)
                 if progress:
                     progress(len(radial))
+    import pandas as pd
+
     return pd.DataFrame(rows, columns=list(COLUMNS))
