@@ -509,9 +509,7 @@ def _check_output(*flags) -> None:
             raise OptionError(flag, str(path), "a path in an existing directory")
 
 
-def _write_csv(
-    table, path: Path, index: bool = False, flag: str = "--output"
-) -> None:
+def _write_csv(table, path: Path, index: bool = False, flag: str = "--output") -> None:
     """Write atomically: a temporary file in the same directory, then rename."""
     if path.parent and not path.parent.exists():
         raise OptionError(flag, str(path), "a path in an existing directory")
