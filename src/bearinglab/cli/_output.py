@@ -193,7 +193,7 @@ def print_verdict(diag, name: str, bearing) -> None:
             ],
         )
     )
-    from ._inputs import _geometry_line
+    from ._geometry import _geometry_line
 
     console.print(escape(_geometry_line(bearing)))
     rows = [

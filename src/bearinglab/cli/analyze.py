@@ -11,16 +11,18 @@ import typer
 
 from ..errors import InputError
 from ._app import command_app
+from ._geometry import (
+    _geometry_warnings,
+    resolve_bearing,
+    with_geometry,
+)
 from ._inputs import (
     JsonOpt,
     OptionError,
-    _geometry_warnings,
     _print_warnings,
     check_path,
     positive,
-    resolve_bearing,
     speed_rad_s,
-    with_geometry,
 )
 from ._output import _emit_json, _save_plot, print_verdict
 

@@ -15,22 +15,24 @@ from ..errors import CatalogError, DesignationError, InputError
 from ..geometry import BallBearing
 from ..kinematics import FREQUENCY_NAMES, LONG_NAMES, defect_frequencies
 from ._app import HertzMethod, command_app, console
+from ._geometry import (
+    _catalog_message,
+    _check_designation_text,
+    _geometry_line,
+    _geometry_warnings,
+    _Inputs,
+    _resolve,
+    resolve_bearing,
+    with_geometry,
+)
 from ._inputs import (
     MAX_BALL_LOAD_N,
     JsonOpt,
     OptionError,
     PlotOpt,
     RingSpeedOpt,
-    _catalog_message,
-    _check_designation_text,
-    _geometry_line,
-    _geometry_warnings,
-    _Inputs,
     _print_warnings,
-    _resolve,
-    resolve_bearing,
     speed_rad_s,
-    with_geometry,
 )
 from ._output import (
     _check_finite,

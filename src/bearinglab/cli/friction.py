@@ -14,19 +14,21 @@ from ..errors import BearinglabError, CatalogError, InputError
 from ..friction import SEED003_COEFFICIENTS, SKF_BEARING_TYPES, FrictionBearing
 from ..units import UNITS, label, unit_of
 from ._app import command_app, console
+from ._geometry import (
+    _geometry_warnings,
+    _si_to_option_units,
+    resolve_bearing,
+    with_geometry,
+)
 from ._inputs import (
     AxialLoadOpt,
     JsonOpt,
     OptionError,
     RadialLoadOpt,
     RingSpeedOpt,
-    _geometry_warnings,
     _print_warnings,
-    _si_to_option_units,
     load_n,
-    resolve_bearing,
     speed_rad_s,
-    with_geometry,
 )
 from ._output import _emit_json, _table
 

@@ -13,6 +13,12 @@ from rich.markup import escape
 from ..errors import InputError
 from ..units import UNITS, label, unit_of
 from ._app import command_app, console
+from ._geometry import (
+    _geometry_line,
+    _geometry_warnings,
+    resolve_bearing,
+    with_geometry,
+)
 from ._inputs import (
     AxialLoadOpt,
     DesignationArg,
@@ -20,13 +26,9 @@ from ._inputs import (
     OptionError,
     RadialLoadOpt,
     RingSpeedOpt,
-    _geometry_line,
-    _geometry_warnings,
     _print_warnings,
     check_loads,
-    resolve_bearing,
     speed_rad_s,
-    with_geometry,
 )
 from ._output import _check_finite, _emit_json, _save_plot, _table
 

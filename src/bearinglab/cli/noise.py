@@ -28,22 +28,24 @@ from ._forms import (
     WavinessOpt,
     form_errors_text,
 )
+from ._geometry import (
+    _geometry_line,
+    _geometry_warnings,
+    resolve_bearing,
+    with_geometry,
+)
 from ._inputs import (
     MAX_LOAD_N,
     DesignationArg,
     JsonOpt,
     OptionError,
     ShaftSpeedOpt,
-    _geometry_line,
-    _geometry_warnings,
     _print_warnings,
     check_path,
     option_error,
     positive,
-    resolve_bearing,
     save_plot_figure,
     speed_rad_s,
-    with_geometry,
 )
 from ._output import _emit_json, _fmt, _table, peak_rows, progress_bar
 

@@ -21,6 +21,12 @@ from ..quasistatic.study import stiffness_map as stiffness_map_study
 from ..units import label
 from ._app import command_app, console
 from ._forms import BallErrorOpt, FormErrors, SeedOpt, Surface3dOpt, WavinessOpt
+from ._geometry import (
+    _geometry_line,
+    _geometry_warnings,
+    resolve_bearing,
+    with_geometry,
+)
 from ._inputs import (
     AxialLoadOpt,
     DesignationArg,
@@ -28,15 +34,11 @@ from ._inputs import (
     OptionError,
     PlotOpt,
     RadialLoadOpt,
-    _geometry_line,
-    _geometry_warnings,
     _print_warnings,
     load_n,
     option_error,
-    resolve_bearing,
     save_plot_figure,
     speed_rad_s,
-    with_geometry,
 )
 from ._output import _emit_json, _save_plot, _table, progress_bar
 

@@ -14,19 +14,21 @@ from ..operating import OperatingCondition
 from ..units import rpm_to_rad_s
 from ._app import command_app, console
 from ._forms import DEFECT_ALLOWED, parse_defect
+from ._geometry import (
+    _geometry_warnings,
+    resolve_bearing,
+    with_geometry,
+)
 from ._inputs import (
     AxialLoadOpt,
     JsonOpt,
     OptionError,
     RadialLoadOpt,
     ShaftSpeedOpt,
-    _geometry_warnings,
     _print_warnings,
     check_loads,
     option_error,
-    resolve_bearing,
     speed_rad_s,
-    with_geometry,
 )
 from ._output import _emit_json, progress_bar
 

@@ -13,17 +13,19 @@ import typer
 from ..errors import InputError
 from ..rings import ring_modes
 from ._app import command_app, console
+from ._geometry import (
+    _geometry_warnings,
+    resolve_bearing,
+    with_geometry,
+)
 from ._inputs import (
     MAX_LOAD_N,
     DesignationArg,
     JsonOpt,
     OptionError,
-    _geometry_warnings,
     _print_warnings,
     check_path,
     option_error,
-    resolve_bearing,
-    with_geometry,
 )
 from ._output import _emit_json, _save_plot, _table
 

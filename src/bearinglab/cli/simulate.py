@@ -25,22 +25,24 @@ from ._forms import (
     form_errors_text,
     parse_defect,
 )
+from ._geometry import (
+    _geometry_warnings,
+    resolve_bearing,
+    with_geometry,
+)
 from ._inputs import (
     DesignationArg,
     JsonOpt,
     OptionError,
     RadialLoadOpt,
     ShaftSpeedOpt,
-    _geometry_warnings,
     _print_warnings,
     check_loads,
     check_path,
     option_error,
     positive,
-    resolve_bearing,
     save_plot_figure,
     speed_rad_s,
-    with_geometry,
 )
 from ._output import (
     _emit_json,
