@@ -153,12 +153,12 @@ import json, math
 from bearinglab.errors import InputError
 from bearinglab.geometry import BallBearing
 from bearinglab.operating import OperatingCondition
-from bearinglab.quasistatic import _compiled, _ring, solve_load_distribution
+from bearinglab.quasistatic import _ball, _ball_set, _ring, solve_load_distribution
 b = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3)
 solve_load_distribution(b, OperatingCondition(radial_load=500.0, axial_load=100.0,
                                               shaft_speed=3000.0), gyroscopic=True)
 stats = {}
-for module in (_compiled, _ring):
+for module in (_ball, _ball_set, _ring):
     for name in dir(module):
         f = getattr(module, name)
         if hasattr(f, "stats") and hasattr(f, "signatures") and f.signatures:

@@ -1,5 +1,5 @@
 """Per-ball contact forces and their derivatives (the hot loop of the quasi-static model):
-the NumPy twin of the compiled kernels in _compiled.py.
+the NumPy twin of the compiled kernels in _ball.py and _ball_set.py.
 
 Vectorised NumPy over balls j (first axis) and contacts k (second axis). Notation in a
 ball's plane: v = b - c (ball centre minus groove centre), n = v/|v|,
@@ -109,9 +109,9 @@ def ring_jacobian(psi, rho, z):
 NONMONOTONE_FACTOR = 1000.0
 #: Relative finite-difference step of the speed-force derivatives (times R - D_w/2).
 FD_STEP = 1e-6
-#: Blend of a lightly loaded ball from the cage's speed to Jones's (see _compiled.py).
+#: Blend of a lightly loaded ball from the cage's speed to Jones's (see _ball.py).
 DRIVE_SHARE = 0.05
-# The NumPy solver iterates all balls together; the compiled twin (_compiled.py) iterates
+# The NumPy solver iterates all balls together; the compiled twin (_ball.py) iterates
 # each ball on its own. tests/unit/test_quasistatic_kernels.py checks that they agree.
 
 
@@ -146,7 +146,7 @@ def seat_loose_balls(b, c_rho, c_z, free, outer, q, fc, k_seat):
 
 def speed_forces(q, n_rho, n_z, ring, control, lam_i, spd):
     """Speed forces on every ball (Z, 7): total F_rho, F_z, inner-friction F_rho, F_z,
-    omega_m [rad/s], M_g [N m], F_c [N] (gyroscopic.py; ``spd`` as in _compiled.py)."""
+    omega_m [rad/s], M_g [N m], F_c [N] (gyroscopic.py; ``spd`` as in _ball.py)."""
     from .gyroscopic import raceway_control_kinematics
 
     omega, g, hmd, inertia, dw, gyro, wm0, floor = spd
@@ -271,7 +271,7 @@ def solve_balls_numpy(
     max_iterations=100,
 ):
     """Newton's method on every ball's equilibrium (all balls at once, NumPy twin of
-    _compiled.solve_balls, same arguments and returns: b, q, n_rho, n_z, delta, speed
+    _ball_set.solve_balls, same arguments and returns: b, q, n_rho, n_z, delta, speed
     (Z, 7), force (5,), stiffness (5, 5), worst residual [N], converged).
 
     A ball whose contact loads are all below 10 tol is loose and its residual is not

@@ -1,11 +1,11 @@
 """Compiled ring iteration of the quasi-static solver (numba, ``cache=True``): the
 twin of :func:`bearinglab.quasistatic.solver._newton`, calling the compiled ball kernels of
-_compiled.py as module attributes (so that the whole chain loads from numba's on-disk
-cache in a new process).
+_ball_set.py (the set of balls, condensation) and _ball.py (one ball) as module attributes
+(so that the whole chain loads from numba's on-disk cache in a new process).
 
-Numba's on-disk cache is keyed on each file alone: after editing ``_compiled.py``, delete
-the cached ``_ring.*.nbi``/``*.nbc`` files in ``__pycache__`` (or touch this file), or the
-ring iteration keeps the old ball kernels.
+Numba's on-disk cache is keyed on each file alone: after editing ``_ball.py`` or
+``_ball_set.py``, delete the cached ``_ring.*.nbi``/``*.nbc`` files in ``__pycache__`` (or
+touch this file), or the ring iteration keeps the old ball kernels.
 """
 
 from __future__ import annotations
@@ -15,7 +15,7 @@ import math
 import numba
 import numpy as np
 
-from ._compiled import solve_balls
+from . import _ball_set
 
 
 @numba.njit(cache=True)
@@ -88,7 +88,7 @@ def _at(
     ball_tol,
 ):
     c_rho, c_z = _centres(u, t, c0_rho, c0_z, inner)
-    return solve_balls(
+    return _ball_set.solve_balls(
         b,
         c_rho,
         c_z,

@@ -276,9 +276,9 @@ def _placement(bearing: BallBearing, ball_phase: float, outer_misalignment: tupl
 
 
 def _solve_balls_compiled():
-    from . import _compiled
+    from . import _ball_set
 
-    return _compiled.solve_balls
+    return _ball_set.solve_balls
 
 
 def initial_ring_guess(problem: _Problem) -> np.ndarray:
@@ -520,7 +520,7 @@ def solve_line(
 
 def _newton(problem: _Problem, tolerance: float, max_iterations: int, initial):
     """Newton's method with damping and an exact line search on the free ring DOFs (the
-    Python reference of _compiled.ring_newton)."""
+    Python reference of _ring.ring_newton)."""
     load = problem.load
     u, b, ball_tol, target, max_step = _setup(problem, tolerance, initial)
     free = problem.free_dofs

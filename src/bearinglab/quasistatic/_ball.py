@@ -1,11 +1,13 @@
-"""Compiled quasi-static kernels: ball equilibrium with the speed forces and the condensed
-ring force and stiffness (numba, ``cache=True``); the ring iteration is in _ring.py.
+"""Compiled equilibrium of one ball (numba, ``cache=True``): its contacts, its speed forces
+(centrifugal force, gyroscopic friction) and their derivatives, seating a loose ball on the
+outer race, and Newton's method on the ball's position (:func:`solve_ball`). The set of
+balls and the condensed ring force and stiffness are in _ball_set.py; the ring iteration in
+_ring.py.
 
-The NumPy twins are :func:`bearinglab.quasistatic._kernels.solve_balls_numpy` (ball
-equilibrium, speed forces, condensation) and :func:`bearinglab.quasistatic.solver._newton`
-(the ring iteration); tests/unit/test_quasistatic_kernels.py checks that they agree.
-Notation as in _kernels.py; the speed forces are those of
-:mod:`bearinglab.quasistatic.speed` (Jones's raceway control, Harris's friction split).
+The NumPy twin is :func:`bearinglab.quasistatic._kernels.solve_balls_numpy`;
+tests/unit/test_quasistatic_kernels.py checks that they agree. Notation as in _kernels.py;
+the speed forces are those of :mod:`bearinglab.quasistatic.gyroscopic` (Jones's raceway
+control, Harris's friction split, [Harris2007b] ch. 3).
 
 Every function here is a module-level ``numba.njit(cache=True)`` function that calls only
 other module-level compiled functions (no function arguments), so that a new process loads
@@ -80,7 +82,7 @@ DRIVE_SHARE = 0.05
 
 
 @numba.njit(cache=True)
-def _drive(qi, qo, fc0):
+def drive(qi, qo, fc0):
     """0 (carried by the cage) ... 1 (driven by both races): smoothstep of the lighter
     contact load over DRIVE_SHARE of the cage-speed centrifugal force."""
     if qi <= 0 or qo <= 0:
@@ -93,7 +95,7 @@ def _drive(qi, qo, fc0):
 
 @numba.njit(cache=True)
 def speed_force(q, nr, nz, ring, control, lam_i, spd, out):
-    """Speed forces on one ball from its contacts (see speed.py):
+    """Speed forces on one ball from its contacts (see gyroscopic.py):
     out = (F_rho, F_z total, inner-friction F_rho, F_z, omega_m, M_g, F_c)."""
     omega, g, hmd, inertia, dw, gyro, wm0, floor = (
         spd[0],
@@ -123,7 +125,7 @@ def speed_force(q, nr, nz, ring, control, lam_i, spd, out):
     fiz = 0.0
     for_r = 0.0
     for_z = 0.0
-    ramp = _drive(qi, qo, hmd * wm0 * wm0)
+    ramp = drive(qi, qo, hmd * wm0 * wm0)
     if ramp > 0 and omega > 0:
         ai /= qi
         ao /= qo
@@ -156,7 +158,7 @@ def speed_force(q, nr, nz, ring, control, lam_i, spd, out):
 
 
 @numba.njit(cache=True)
-def _ball(
+def _ball_force(
     br,
     bz,
     c_rho,
@@ -203,7 +205,7 @@ def _ball(
 
 
 @numba.njit(cache=True)
-def _speed_derivatives(
+def speed_derivatives(
     br,
     bz,
     c_rho,
@@ -329,7 +331,7 @@ def solve_ball(
     tsp = work[9, :7]
     br, bz = b[0], b[1]
     fc_seat = max(spd[2] * spd[6] * spd[6], spd[7])
-    _ball(
+    _ball_force(
         br,
         bz,
         c_rho,
@@ -353,7 +355,7 @@ def solve_ball(
         tmp,
     )
     br = _seat(br, bz, c_rho, c_z, free, ring, q, fc_seat, k_seat)
-    gr, gz = _ball(
+    gr, gz = _ball_force(
         br,
         bz,
         c_rho,
@@ -382,7 +384,7 @@ def solve_ball(
         if norm <= tol or np.max(q) <= 10.0 * tol:
             done = True
             break
-        _speed_derivatives(
+        speed_derivatives(
             br,
             bz,
             c_rho,
@@ -424,7 +426,7 @@ def solve_ball(
         for _ in range(30):
             nr_t = br + lam * step_r
             nz_t = bz + lam * step_z
-            tgr, tgz = _ball(
+            tgr, tgz = _ball_force(
                 nr_t,
                 nz_t,
                 c_rho,
@@ -453,7 +455,7 @@ def solve_ball(
             lam *= 0.5
         br = _seat(nr_t, nz_t, c_rho, c_z, free, ring, tq, fc_seat, k_seat)
         bz = nz_t
-        gr, gz = _ball(
+        gr, gz = _ball_force(
             br,
             bz,
             c_rho,
@@ -484,227 +486,3 @@ def solve_ball(
     b[1] = bz
     res = math.sqrt(gr * gr + gz * gz) if np.max(q) > 10.0 * tol else 0.0
     return res, done
-
-
-@numba.njit(cache=True)
-def _condense(tj, inner, s, q, nr, nz, dmat, emat, sp, force, stiff, cw):
-    """Add one ball's force on the inner ring and its condensed stiffness (see
-    _kernels.py; tj = T of the ball (C, 2, 5)):
-    K_j = (sum_l Phi'_l) (sum_l P_l)^-1 (sum_in P_l T_l) - sum_in Phi'_l T_l.
-    ``cw``: work array (5, 19)."""
-    ncon = q.shape[0]
-    cw[:] = 0.0
-    tbar = cw[:2, 0:5]
-    a5 = cw[:, 5:7]
-    bm = cw[:2, 7:12]
-    cm = cw[:, 12:17]
-    phi = cw[:, 17:19]
-    qi = 0.0
-    for k in range(ncon):
-        if inner[k]:
-            qi += q[k]
-    if qi > 0:
-        for k in range(ncon):
-            if inner[k] and q[k] > 0:
-                w = q[k] / qi
-                for a in range(2):
-                    for d in range(5):
-                        tbar[a, d] += w * tj[k, a, d]
-    p00 = 0.0
-    p01 = 0.0
-    p10 = 0.0
-    p11 = 0.0
-    for lc in range(ncon):
-        if q[lc] <= 0:
-            continue  # an unloaded contact adds nothing
-        l00 = dmat[lc, 0, 0] - s[lc, 0, 0]
-        l01 = dmat[lc, 0, 1] - s[lc, 0, 1]
-        l10 = dmat[lc, 1, 0] - s[lc, 1, 0]
-        l11 = dmat[lc, 1, 1] - s[lc, 1, 1]
-        p00 += l00
-        p01 += l01
-        p10 += l10
-        p11 += l11
-        for d in range(5):
-            for c in range(2):
-                v = tbar[0, d] * emat[lc, 0, c] + tbar[1, d] * emat[lc, 1, c]
-                if inner[lc]:
-                    v -= tj[lc, 0, d] * s[lc, 0, c] + tj[lc, 1, d] * s[lc, 1, c]
-                phi[d, c] = v
-                a5[d, c] += v
-        if inner[lc]:
-            for d in range(5):
-                bm[0, d] += l00 * tj[lc, 0, d] + l01 * tj[lc, 1, d]
-                bm[1, d] += l10 * tj[lc, 0, d] + l11 * tj[lc, 1, d]
-                for e in range(5):
-                    cm[d, e] += phi[d, 0] * tj[lc, 0, e] + phi[d, 1] * tj[lc, 1, e]
-    det = p00 * p11 - p01 * p10
-    if det != 0.0:
-        i00 = p11 / det
-        i01 = -p01 / det
-        i10 = -p10 / det
-        i11 = p00 / det
-        for d in range(5):
-            r0 = a5[d, 0] * i00 + a5[d, 1] * i10
-            r1 = a5[d, 0] * i01 + a5[d, 1] * i11
-            for e in range(5):
-                stiff[d, e] += r0 * bm[0, e] + r1 * bm[1, e]
-    for d in range(5):
-        for e in range(5):
-            stiff[d, e] -= cm[d, e]
-    for k in range(ncon):
-        if inner[k] and q[k] > 0:
-            for d in range(5):
-                force[d] += tj[k, 0, d] * q[k] * nr[k] + tj[k, 1, d] * q[k] * nz[k]
-    for d in range(5):
-        force[d] -= tbar[0, d] * sp[2] + tbar[1, d] * sp[3]
-
-
-@numba.njit(cache=True)
-def solve_balls(
-    b,
-    c_rho,
-    c_z,
-    t,
-    inner,
-    free,
-    radius,
-    side,
-    z0,
-    k_poly,
-    film,
-    ring,
-    control,
-    lam_i,
-    spd,
-    k_seat,
-    tol,
-    max_iterations=100,
-):
-    """Every ball's equilibrium for given groove centres, the force of the balls on the
-    inner ring (5,) and the condensed stiffness (5, 5). Returns (b, q, n_rho, n_z, delta,
-    speed (Z, 7), force, stiffness, worst residual [N], converged).
-
-    Balls not fully driven by both races orbit at the cage speed: the mean orbital speed
-    of the driven balls (whose speeds do not depend on it), so the balls are solved in two
-    passes when some are driven and some not."""
-    nb, ncon = c_rho.shape
-    b = b.copy()
-    q = np.zeros((nb, ncon))
-    nr = np.zeros((nb, ncon))
-    nz = np.zeros((nb, ncon))
-    dl = np.zeros((nb, ncon))
-    sp = np.zeros((nb, 7))
-    s = np.zeros((nb, ncon, 2, 2))
-    dmat = np.zeros((ncon, 2, 2))
-    emat = np.zeros((ncon, 2, 2))
-    work = np.zeros((10, ncon + 8))
-    ts = np.zeros((ncon, 2, 2))
-    cw = np.zeros((5, 19))
-    res = np.zeros(nb)
-    ok = np.zeros(nb, dtype=np.bool_)
-    driven = np.zeros(nb, dtype=np.bool_)
-    spd = spd.copy()
-    for j in range(nb):
-        res[j], ok[j] = solve_ball(
-            b[j],
-            c_rho[j],
-            c_z[j],
-            free[j],
-            radius,
-            side,
-            z0,
-            k_poly,
-            film[j],
-            ring,
-            control[j],
-            lam_i[j],
-            spd,
-            k_seat,
-            tol,
-            max_iterations,
-            q[j],
-            nr[j],
-            nz[j],
-            dl[j],
-            s[j],
-            sp[j],
-            dmat,
-            emat,
-            work,
-            ts,
-        )
-    if spd[0] > 0:
-        total = 0.0
-        count = 0
-        for j in range(nb):
-            qi = 0.0
-            qo = 0.0
-            for k in range(ncon):
-                if inner[k]:
-                    qi += q[j, k]
-                else:
-                    qo += q[j, k]
-            driven[j] = _drive(qi, qo, spd[2] * spd[6] * spd[6]) >= 1.0
-            if driven[j]:
-                total += sp[j, 4]
-                count += 1
-        if 0 < count < nb:
-            spd[6] = total / count
-            for j in range(nb):
-                if not driven[j]:
-                    res[j], ok[j] = solve_ball(
-                        b[j],
-                        c_rho[j],
-                        c_z[j],
-                        free[j],
-                        radius,
-                        side,
-                        z0,
-                        k_poly,
-                        film[j],
-                        ring,
-                        control[j],
-                        lam_i[j],
-                        spd,
-                        k_seat,
-                        tol,
-                        max_iterations,
-                        q[j],
-                        nr[j],
-                        nz[j],
-                        dl[j],
-                        s[j],
-                        sp[j],
-                        dmat,
-                        emat,
-                        work,
-                        ts,
-                    )
-    force = np.zeros(5)
-    stiff = np.zeros((5, 5))
-    for j in range(nb):
-        _speed_derivatives(
-            b[j, 0],
-            b[j, 1],
-            c_rho[j],
-            c_z[j],
-            free[j],
-            radius,
-            side,
-            z0,
-            k_poly,
-            film[j],
-            ring,
-            control[j],
-            lam_i[j],
-            spd,
-            q[j],
-            nr[j],
-            nz[j],
-            dmat,
-            emat,
-            work,
-        )
-        _condense(t[j], inner, s[j], q[j], nr[j], nz[j], dmat, emat, sp[j], force, stiff, cw)
-    return b, q, nr, nz, dl, sp, force, stiff, np.max(res), np.all(ok)
