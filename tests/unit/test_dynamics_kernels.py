@@ -11,6 +11,7 @@ from bearinglab.dynamics import (
     SlipParameters,
     _integrate,
     _kernels,
+    _rosenbrock,
     _slip_kernels,
     rigid,
     slip,
@@ -192,7 +193,7 @@ def test_grouped_jacobian_equals_a_dense_difference():
     _slip_kernels.slip_rhs(0.0, y, p, table, f0, parts0)
     jg, jgb = np.empty((ng, ng)), np.empty((9, ng, nb))
     jbg, jb = np.empty((9, nb, ng)), np.empty((9, nb, nb))
-    _slip_kernels._jacobian(0.0, y, f0, parts0, p, table, jg, jgb, jbg, jb)
+    _rosenbrock._jacobian(0.0, y, f0, parts0, p, table, jg, jgb, jbg, jb)
     grouped = np.zeros((n, n))
     grouped[:ng, :ng] = jg
     for j in range(9):
@@ -233,10 +234,10 @@ def test_block_elimination_solves_the_dense_system(gh):
     (jg, jgb, jbg, jb), dense = _arrow_blocks(n, ng, nb, z, rng)
     lu_b, piv_b = np.empty((z, nb, nb)), np.empty((z, nb), dtype=np.int64)
     m_bg, lu_s, piv_s = np.empty((z, nb, ng)), np.empty((ng, ng)), np.empty(ng, dtype=np.int64)
-    _slip_kernels._factor(gh, jg, jgb, jbg, jb, lu_b, piv_b, m_bg, lu_s, piv_s)
+    _rosenbrock._factor(gh, jg, jgb, jbg, jb, lu_b, piv_b, m_bg, lu_s, piv_s)
     rhs = rng.normal(size=n)
     out = np.empty(n)
-    _slip_kernels._solve(gh, jgb, lu_b, piv_b, m_bg, lu_s, piv_s, rhs, out)
+    _rosenbrock._solve(gh, jgb, lu_b, piv_b, m_bg, lu_s, piv_s, rhs, out)
     expected = np.linalg.solve(np.eye(n) - gh * dense, rhs)
     np.testing.assert_allclose(out, expected, rtol=1e-9, atol=1e-12 * np.abs(expected).max())
 

@@ -5,7 +5,7 @@
   the pair behind SciPy's ``RK45``) for the rigid-ring model, whose stiffest mode (the
   shaft on its Hertz contacts, a few kHz) an explicit method follows at the step the
   accuracy needs anyway.
-- :func:`rosenbrock_chunk` (in ``_slip_kernels``) for the stiff slip model.
+- :func:`rosenbrock_chunk` (in ``_rosenbrock``) for the stiff slip model.
 
 Both integrate one *chunk* of output times and return the state and step size to carry
 into the next, so that the caller can show progress between chunks. Between accepted

@@ -2,7 +2,7 @@
 
 Layer 3. :func:`simulate` takes a bearing, an operating condition and defects, runs the
 rigid-ring model (seed 003, :mod:`.rigid`) or the slip model (seed 004, :mod:`.slip`)
-with a compiled integrator (:mod:`._integrate`, ``_slip_kernels.rosenbrock_chunk``),
+with a compiled integrator (:mod:`._integrate`, ``_rosenbrock.rosenbrock_chunk``),
 drops the settling time and returns a :class:`Simulation` whose signal is sampled at the
 user's rate. The same inputs give the same signal (the integrators are deterministic and
 the optional measurement noise is drawn from ``seed``).
@@ -20,7 +20,7 @@ import numpy as np
 from ..errors import ConvergenceError, InputError
 from ..kinematics import DefectFrequencies, defect_frequencies
 from ..signal import Signal
-from . import _integrate, _kernels, _slip_kernels, rigid, slip
+from . import _integrate, _kernels, _rosenbrock, _slip_kernels, rigid, slip
 from .defects import Defect, pack_defects
 
 MODELS = ("rigid", "slip")
@@ -308,7 +308,7 @@ def simulate(
 def needs_compiling(model: str = "rigid") -> bool:
     """True when the integrator of ``model`` is not yet in numba's on-disk cache: the first
     simulation in this install will compile it (several seconds; later ones load it)."""
-    kernel = _integrate.dopri_chunk_rigid if model == "rigid" else _slip_kernels.rosenbrock_chunk
+    kernel = _integrate.dopri_chunk_rigid if model == "rigid" else _rosenbrock.rosenbrock_chunk
     return not _integrate.cached_on_disk(kernel)
 
 
@@ -326,7 +326,7 @@ def _integrate_chunks(model, p, table, y0, t_out, rtol, atol, h_max, progress, s
                 p, table, t, y, h, chunk, rtol, atol, h_max, MAX_STEPS_PER_CHUNK
             )
         else:
-            out, t, y, h, s, r, status = _slip_kernels.rosenbrock_chunk(
+            out, t, y, h, s, r, status = _rosenbrock.rosenbrock_chunk(
                 p, table, t, y, h, chunk, rtol, atol, h_max, MAX_STEPS_PER_CHUNK
             )
         steps += s

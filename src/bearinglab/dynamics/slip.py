@@ -497,6 +497,7 @@ def settle(
     """
     from ..errors import ConvergenceError
     from ._integrate import OK, STATUS_TEXT
+    from ._rosenbrock import rosenbrock_chunk
 
     tolerance = SETTLE_TOLERANCE if tolerance is None else tolerance
     min_turns = MIN_SETTLE_TURNS if min_turns is None else max(int(min_turns), 4)
@@ -511,7 +512,7 @@ def settle(
     turn = steps = rejected = 0
     while turn < max(max_turns, min_turns):
         turn += 1
-        out, t, y, h, s, r, status = sk.rosenbrock_chunk(
+        out, t, y, h, s, r, status = rosenbrock_chunk(
             p, table, t, y, h, np.array([turn * period]), rtol, atol, h_max, _MAX_STEPS_PER_TURN
         )
         if status != OK:
