@@ -1,8 +1,8 @@
-"""Geometry of a single-row ball bearing.
-
-Layer 1 holds the pure functions (raceway diameters, free contact angle, end play,
-contact radii, ring cross-sections); layer 2 holds :class:`BallBearing`, which
-validates a geometry and exposes the derived quantities by calling those functions.
+"""Geometry of a single-row ball bearing: :class:`BallBearing` (layer 2), which validates a
+geometry and exposes the derived quantities by calling the layer-1 functions of
+:mod:`bearinglab.macrogeometry` (raceway diameters, free contact angle, contact radii,
+curvature) and :mod:`bearinglab.geometry_sections` (ring cross-sections); both are
+re-exported here, so ``from bearinglab.geometry import contact_radii`` keeps working.
 
 Sources: Harris T. A., Kotzalas M. N., *Essential Concepts of Bearing Technology*,
 5th ed., 2007, ch. 2 ("Rolling bearing macrogeometry": diametral clearance
@@ -16,14 +16,37 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import Literal, NamedTuple
+from typing import NamedTuple
 
 import numpy as np
 
 from .errors import InputError
+from .geometry_sections import RingSection, grooved_ring_section
+from .macrogeometry import (
+    Race,
+    clearance_for_contact_angle,
+    contact_radii,
+    curvature_sum_difference,
+    free_contact_angle,
+    raceway_diameters,
+)
 from .materials import BEARING_STEEL, Material
 
-Race = Literal["inner", "outer"]
+__all__ = [
+    "ANGULAR_SHOULDER_DEPTH_RATIO",
+    "GROOVE_DEPTH_RATIO",
+    "INTERNAL_FIELDS",
+    "BallBearing",
+    "Race",
+    "RingSection",
+    "Source",
+    "clearance_for_contact_angle",
+    "contact_radii",
+    "curvature_sum_difference",
+    "free_contact_angle",
+    "grooved_ring_section",
+    "raceway_diameters",
+]
 
 #: Groove depth of both rings as a fraction of the ball diameter, used only to place the
 #: ring shoulders for the ring cross-sections. Estimate: SKF's shoulder diameter
@@ -41,203 +64,6 @@ class Source(NamedTuple):
 
     kind: str
     reference: str = ""
-
-
-# ---------------------------------------------------------------- layer 1: functions
-
-
-def raceway_diameters(pitch_diameter, ball_diameter, diametral_clearance):
-    """Groove-bottom diameters (d_i, d_o) of the inner and outer raceway [m].
-
-    Harris & Kotzalas eq. 2.1 with d_m = (d_i + d_o)/2:
-    d_i = d_m - D_w - P_d/2, d_o = d_m + D_w + P_d/2.
-
-    Parameters
-    ----------
-    pitch_diameter : float or array
-        Pitch diameter d_m [m].
-    ball_diameter : float or array
-        Ball diameter D_w [m].
-    diametral_clearance : float or array
-        Diametral clearance P_d [m]; negative for an interference (preload).
-
-    >>> [round(float(x) * 1e3, 4) for x in raceway_diameters(0.065, 0.0127, 15e-6)]
-    [52.2925, 77.7075]
-    """
-    half = ball_diameter + 0.5 * np.asarray(diametral_clearance)
-    return pitch_diameter - half, pitch_diameter + half
-
-
-def free_contact_angle(
-    diametral_clearance, ball_diameter, inner_groove_factor, outer_groove_factor
-):
-    """Free (unloaded) contact angle alpha_0 from the clearance [rad].
-
-    cos(alpha_0) = 1 - P_d / (2 A), A = (f_i + f_o - 1) D_w (Harris & Kotzalas eq. 2.5).
-    An interference (P_d < 0) gives 0.
-
-    Parameters
-    ----------
-    diametral_clearance : float or array
-        P_d [m], at most 2 A (beyond that the balls are loose at 90 degrees).
-    ball_diameter : float
-        D_w [m].
-    inner_groove_factor, outer_groove_factor : float
-        f_i, f_o [-], each > 0.5.
-
-    >>> round(math.degrees(free_contact_angle(15e-6, 0.0127, 0.52, 0.52)), 2)
-    9.86
-    """
-    a = (inner_groove_factor + outer_groove_factor - 1.0) * ball_diameter
-    ratio = np.clip(1.0 - np.maximum(diametral_clearance, 0.0) / (2.0 * a), -1.0, 1.0)
-    return np.arccos(ratio)
-
-
-def clearance_for_contact_angle(
-    contact_angle, ball_diameter, inner_groove_factor, outer_groove_factor
-):
-    """Diametral clearance that gives the free contact angle alpha_0 [m].
-
-    Inverse of :func:`free_contact_angle`: P_d = 2 A (1 - cos alpha_0).
-
-    Parameters
-    ----------
-    contact_angle : float or array
-        alpha_0 [rad].
-    ball_diameter : float
-        D_w [m].
-    inner_groove_factor, outer_groove_factor : float
-        f_i, f_o [-].
-    """
-    a = (inner_groove_factor + outer_groove_factor - 1.0) * ball_diameter
-    return 2.0 * a * (1.0 - np.cos(contact_angle))
-
-
-def contact_radii(ball_diameter, pitch_diameter, groove_factor, contact_angle, race: Race):
-    """Effective radii (R_x, R_y) of a ball-raceway contact [m].
-
-    R_x lies in the rolling direction, R_y across the groove; 1/R_x + 1/R_y is the
-    curvature sum and (1/R_x - 1/R_y) / (1/R_x + 1/R_y) the curvature difference
-    F(rho) of Harris & Kotzalas eqs. 2.26-2.33, with gamma = D_w cos(alpha) / d_m:
-
-    inner: R_x = D_w (1 - gamma) / 2, outer: R_x = D_w (1 + gamma) / 2,
-    both: R_y = f D_w / (2 f - 1).
-
-    Parameters
-    ----------
-    ball_diameter : float
-        D_w [m].
-    pitch_diameter : float
-        d_m [m].
-    groove_factor : float
-        f_i or f_o [-] (groove radius / D_w), > 0.5.
-    contact_angle : float or array
-        Operating contact angle alpha [rad].
-    race : {"inner", "outer"}
-        Which raceway.
-
-    >>> rx, ry = contact_radii(12.7e-3, 65e-3, 0.52, 0.0, "inner")
-    >>> round(float(1e-3 * (1 / rx + 1 / ry)), 4)  # Harris 209 example: 0.2018 /mm
-    0.2018
-    """
-    if race not in ("inner", "outer"):
-        raise InputError("race", race, "'inner' or 'outer'")
-    gamma = ball_diameter * np.cos(contact_angle) / pitch_diameter
-    sign = -1.0 if race == "inner" else 1.0
-    rx = 0.5 * ball_diameter * (1.0 + sign * gamma)
-    ry = groove_factor * ball_diameter / (2.0 * groove_factor - 1.0)
-    return rx, ry
-
-
-def curvature_sum_difference(rx, ry):
-    """Curvature sum Sum(rho) [1/m] and difference F(rho) [-] from the radii.
-
-    Parameters
-    ----------
-    rx, ry : float or array
-        Effective radii in the rolling and transverse directions [m].
-    """
-    sx, sy = 1.0 / np.asarray(rx, float), 1.0 / np.asarray(ry, float)
-    total = sx + sy
-    return total, np.abs(sx - sy) / total
-
-
-class RingSection(NamedTuple):
-    """Cross-section of a grooved ring: area [m^2], centroid (mean) radius [m],
-    second moment about the axis through the centroid parallel to the bearing axis
-    [m^4] (the one for in-plane bending), and width [m]."""
-
-    area: float
-    mean_radius: float
-    second_moment: float
-    width: float
-
-
-def grooved_ring_section(
-    inner_radius, outer_radius, width, groove_radius, groove_bottom_radius, race: Race
-) -> RingSection:
-    """Cross-section of a ring bounded by two cylinders, minus its raceway groove.
-
-    The ring is the rectangle inner_radius <= r <= outer_radius, |z| <= width/2, less the
-    part of the groove circle (radius f D_w, touching the groove bottom) inside it.
-    Integrated in closed form in r (the groove's chord is 2 sqrt(R^2 - (r - c)^2), whose
-    moments have elementary antiderivatives); a test checks it against scipy's quad.
-
-    Parameters
-    ----------
-    inner_radius, outer_radius : float
-        Radial bounds of the ring material (bore or shoulder, shoulder or outside) [m].
-    width : float
-        Ring width B [m].
-    groove_radius : float
-        Groove radius f D_w [m].
-    groove_bottom_radius : float
-        Radius of the groove bottom d_i/2 or d_o/2 [m].
-    race : {"inner", "outer"}
-        The groove opens outward for the inner ring and inward for the outer ring.
-    """
-    centre = groove_bottom_radius + (groove_radius if race == "inner" else -groove_radius)
-
-    def chord(r):
-        h2 = groove_radius**2 - (r - centre) ** 2
-        return 2.0 * math.sqrt(h2) if h2 > 0 else 0.0
-
-    if chord(inner_radius if race == "outer" else outer_radius) >= width:
-        raise InputError(
-            "width",
-            width,
-            f"more than the groove opening "
-            f"{chord(inner_radius if race == 'outer' else outer_radius):.6g} m",
-            "the groove runs over the ring's side faces",
-        )
-    # moments k = 0, 1, 2 of the section about r_ref (mid-ring, to keep the second moment
-    # free of cancellation): rectangle minus the groove, u = r - centre within [-R, R]
-    r_ref = 0.5 * (inner_radius + outer_radius)
-    big_r, c = groove_radius, centre - r_ref
-    a, b = inner_radius - r_ref, outer_radius - r_ref
-    rect = [width * (b ** (k + 1) - a ** (k + 1)) / (k + 1) for k in range(3)]
-    u0, u1 = max(a - c, -big_r), min(b - c, big_r)
-    groove = [0.0, 0.0, 0.0]
-    if u1 > u0:
-
-        def antiderivatives(u):  # of s, u s and u^2 s with s = sqrt(R^2 - u^2)
-            root = math.sqrt(max(big_r**2 - u * u, 0.0))
-            arc = math.asin(max(-1.0, min(1.0, u / big_r)))
-            return (
-                0.5 * (u * root + big_r**2 * arc),
-                -(root**3) / 3.0,
-                u * (2.0 * u * u - big_r**2) * root / 8.0 + big_r**4 * arc / 8.0,
-            )
-
-        f0, f1, f2 = (
-            hi - lo for hi, lo in zip(antiderivatives(u1), antiderivatives(u0), strict=True)
-        )
-        groove = [2.0 * f0, 2.0 * (f1 + c * f0), 2.0 * (f2 + 2.0 * c * f1 + c * c * f0)]
-    m0, m1, m2 = (r - g for r, g in zip(rect, groove, strict=True))
-    area = m0
-    mean = r_ref + m1 / m0
-    second = m2 - m1 * m1 / m0
-    return RingSection(area, mean, second, width)
 
 
 # ---------------------------------------------------------------- layer 2: the model
