@@ -143,36 +143,41 @@ def solve_balls(
     ok = np.zeros(nb, dtype=np.bool_)
     driven = np.zeros(nb, dtype=np.bool_)
     spd = spd.copy()
-    for j in range(nb):
-        res[j], ok[j] = _ball.solve_ball(
-            b[j],
-            c_rho[j],
-            c_z[j],
-            free[j],
-            radius,
-            side,
-            z0,
-            k_poly,
-            film[j],
-            ring,
-            control[j],
-            lam_i[j],
-            spd,
-            k_seat,
-            tol,
-            max_iterations,
-            q[j],
-            nr[j],
-            nz[j],
-            dl[j],
-            s[j],
-            sp[j],
-            dmat,
-            emat,
-            work,
-            ts,
-        )
-    if spd[0] > 0:
+    # Pass 0 solves every ball; pass 1 re-solves, at the cage speed of the driven balls,
+    # those that are not driven by both races (only at speed and when some are driven).
+    for sweep in range(2):
+        for j in range(nb):
+            if sweep == 0 or not driven[j]:
+                res[j], ok[j] = _ball.solve_ball(
+                    b[j],
+                    c_rho[j],
+                    c_z[j],
+                    free[j],
+                    radius,
+                    side,
+                    z0,
+                    k_poly,
+                    film[j],
+                    ring,
+                    control[j],
+                    lam_i[j],
+                    spd,
+                    k_seat,
+                    tol,
+                    max_iterations,
+                    q[j],
+                    nr[j],
+                    nz[j],
+                    dl[j],
+                    s[j],
+                    sp[j],
+                    dmat,
+                    emat,
+                    work,
+                    ts,
+                )
+        if sweep == 1 or spd[0] <= 0:
+            break
         total = 0.0
         count = 0
         for j in range(nb):
@@ -187,38 +192,9 @@ def solve_balls(
             if driven[j]:
                 total += sp[j, 4]
                 count += 1
-        if 0 < count < nb:
-            spd[6] = total / count
-            for j in range(nb):
-                if not driven[j]:
-                    res[j], ok[j] = _ball.solve_ball(
-                        b[j],
-                        c_rho[j],
-                        c_z[j],
-                        free[j],
-                        radius,
-                        side,
-                        z0,
-                        k_poly,
-                        film[j],
-                        ring,
-                        control[j],
-                        lam_i[j],
-                        spd,
-                        k_seat,
-                        tol,
-                        max_iterations,
-                        q[j],
-                        nr[j],
-                        nz[j],
-                        dl[j],
-                        s[j],
-                        sp[j],
-                        dmat,
-                        emat,
-                        work,
-                        ts,
-                    )
+        if not 0 < count < nb:
+            break
+        spd[6] = total / count
     force = np.zeros(5)
     stiff = np.zeros((5, 5))
     for j in range(nb):
