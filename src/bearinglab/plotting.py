@@ -221,15 +221,18 @@ def draw_spectrum(
     ylabel: str,
     names=("shaft", "ftf", "bpfo", "bpfi", "ball_defect"),
     harmonics: int = 8,
+    trace: str = "spectrum",
+    highlight=None,
 ) -> None:
-    """A plain spectrum up to ``max_frequency`` with the kinematic lines and their
-    harmonics marked and the labelled peaks annotated (the lines of
-    :func:`bearinglab.signal.lines.spectrum_lines`)."""
+    """A spectrum (or envelope spectrum) up to ``max_frequency`` with the kinematic
+    lines and their harmonics marked and the labelled peaks annotated (the lines of
+    :func:`bearinglab.signal.lines.spectrum_lines` or of a diagnosis). ``highlight(line)``
+    says which peaks to draw in colour; by default those matched to any line."""
     from .diagnosis import peak_label
 
     f, a = spec.frequency, spec.amplitude
-    shown = f <= max_frequency
-    ax.plot(f[shown], a[shown], color="0.3", lw=0.8, label="spectrum")
+    shown = (f > 0) & (f <= max_frequency)  # a DC offset (or envelope mean) would set the scale
+    ax.plot(f[shown], a[shown], color="0.3", lw=0.8, label=trace)
     top = float(np.max(a[shown])) if np.any(shown) else 1.0
     for i, name in enumerate(names):
         base = kin.hz(name)
@@ -248,7 +251,8 @@ def draw_spectrum(
             )
     for p in lines:
         label = peak_label(p)
-        ax.plot(p["frequency_hz"], p["amplitude"], "o", ms=4, color="k" if label == "-" else "C3")
+        coloured = label != "-" if highlight is None else highlight(p)
+        ax.plot(p["frequency_hz"], p["amplitude"], "o", ms=4, color="C3" if coloured else "k")
         ax.annotate(
             label,
             (p["frequency_hz"], p["amplitude"]),

@@ -4,8 +4,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-import numpy as np
-
 from ..kinematics import DefectFrequencies
 from ..signal import EnvelopeSpectrum
 from .families import FREQUENCY
@@ -209,58 +207,32 @@ class Diagnosis:
         -------
         (figure, axes)
         """
-        from ..plotting import _pyplot, save_figure
+        from ..plotting import _pyplot, draw_spectrum, save_figure
 
         plt = _pyplot()
         if ax is None:
             fig, ax = plt.subplots(figsize=(11, 4.5))
         else:
             fig = ax.figure
-        f, a = self.spectrum.frequency, self.spectrum.amplitude
-        shown = (f > 0) & (f <= self.max_frequency)
-        ax.plot(f[shown], a[shown], color="0.3", lw=0.8, label="squared envelope spectrum")
-        top = float(np.max(a[shown])) if np.any(shown) else 1.0
-        for i, name in enumerate(("shaft", "ftf", "bpfo", "bpfi", "ball_defect")):
-            base = self.frequencies.hz(name)
-            marks = np.arange(1, self.harmonics + 1) * base
-            marks = marks[marks <= self.max_frequency]
-            if marks.size:
-                ax.vlines(
-                    marks,
-                    0,
-                    1.05 * top,
-                    colors=f"C{i}",
-                    linestyles="--",
-                    lw=0.7,
-                    alpha=0.6,
-                    label=f"{name.upper()} {base:.2f} Hz and harmonics",
-                )
-        for p in self.peaks:
-            label = peak_label(p)
-            ours = p.get("matched") in FREQUENCY.values() or p.get("sideband_of")
-            ax.plot(p["frequency_hz"], p["amplitude"], "o", ms=4, color="C3" if ours else "k")
-            ax.annotate(
-                label,
-                (p["frequency_hz"], p["amplitude"]),
-                textcoords="offset points",
-                xytext=(2, 4),
-                fontsize=7,
-                rotation=60,
-            )
         method = self.to_dict()["method_shown"]
         band = (
             "whole band" if self.band is None else f"band {self.band[0]:.0f}-{self.band[1]:.0f} Hz"
         )
-        ax.set_title(
-            f"{self.frequencies.bearing.name or 'bearing'} at "
+        draw_spectrum(
+            ax,
+            self.spectrum,
+            self.peaks,
+            self.frequencies,
+            self.max_frequency,
+            title=f"{self.frequencies.bearing.name or 'bearing'} at "
             f"{self.frequencies.shaft_hz * 60:.6g} rpm, channel "
-            f"{self.channel or '-'}, {method}, {band}: {self.verdict}"
+            f"{self.channel or '-'}, {method}, {band}: {self.verdict}",
+            ylabel="squared envelope amplitude",
+            harmonics=self.harmonics,
+            trace="squared envelope spectrum",
+            # shaft harmonics are not a bearing fault: only fault lines and sidebands in colour
+            highlight=lambda p: p.get("matched") in FREQUENCY.values() or p.get("sideband_of"),
         )
-        ax.set_xlabel("f [Hz]")
-        ax.set_ylabel("squared envelope amplitude")
-        ax.set_xlim(0, self.max_frequency)
-        ax.set_ylim(0, 1.25 * top)
-        ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
         fig.tight_layout()
         if path is not None:
             try:

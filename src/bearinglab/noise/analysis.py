@@ -89,6 +89,8 @@ class NoiseAnalysis:
         """JSON-ready: the operating point, the field point and its source, the levels
         [dB], the pressure lines, the velocity bands and the record, in engineering units
         (the keys' suffixes give the units, docs/json.md)."""
+        from ..signal.lines import lines_to_dict
+
         o = self.orbit
         summary = self.noise.to_dict()
         point = {k: summary.pop(k) for k in ("distance_mm", "angle_deg")}
@@ -96,17 +98,6 @@ class NoiseAnalysis:
         imperfections = summary.pop("imperfections", None)
         for key in ("speed_rpm", "radial_load_n"):
             summary.pop(key)
-        keys = (
-            "frequency_hz",
-            "amplitude",
-            "matched",
-            "harmonic",
-            "deviation",
-            "sideband_of",
-            "sideband_harmonic",
-            "sideband_order",
-            "modulation",
-        )
         return {
             "speed_rpm": rad_s_to_rpm(o.condition.shaft_speed),
             "radial_load_n": o.condition.radial_load,
@@ -114,7 +105,7 @@ class NoiseAnalysis:
             "field_point_source": self.point_source,
             **levels,
             **self.bands.to_dict(),
-            "peaks": [{k: p[k] for k in keys if k in p} for p in self.peaks],
+            "peaks": lines_to_dict(self.peaks),
             "peaks_resolution_hz": self.spectrum.resolution,
             "peaks_max_frequency_hz": self.max_frequency,
             "kinematic": self.kinematic.to_dict(),
