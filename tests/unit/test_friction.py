@@ -349,6 +349,9 @@ def test_bearing_friction_from_the_catalogue():
         bearing_friction(b, 100.0, 1000.0, model="skf")
     with pytest.raises(InputError, match="model"):
         bearing_friction(b, 100.0, 1000.0, model="palmgren")
+    # a temperature the constant model does not use is still checked (50 degC given as K)
+    with pytest.raises(InputError, match=r"temperature.*-60 to 300 degC"):
+        bearing_friction(b, 100.0, 1000.0, temperature=50.0)
 
 
 # ------------------------------------------------------------------ command line

@@ -17,6 +17,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from ..errors import InputError
+from ..lubrication.lubricant import check_operating_temperature
 from ..units import rpm_to_rad_s  # noqa: F401 - used by the doctests
 from .bearing import FrictionBearing, as_friction_bearing
 from .constant import (
@@ -33,7 +34,6 @@ from .rules import (
     check_positive,
     check_seal_constants,
     check_speed,
-    check_temperature,
     equivalent_load_of,
     lubrication_of,
     seals_of,
@@ -371,7 +371,8 @@ def bearing_friction(
     if seal_diameter is not None:
         check_positive("seal_diameter", seal_diameter, "a diameter > 0 [m]")
     if model == "constant" and lubricant is None and viscosity is None:
-        check_temperature(temperature)  # unused by this model, but checked
+        if temperature is not None:  # unused by this model, but checked
+            check_operating_temperature(temperature)
         nu, nu_how, lub = None, None, None
     else:
         nu, nu_how, lub = viscosity_of(viscosity, lubricant, temperature)

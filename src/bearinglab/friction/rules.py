@@ -56,28 +56,6 @@ def check_positive(name: str, value, what: str) -> float:
     return float(value)
 
 
-def check_temperature(temperature) -> float | None:
-    """An operating temperature [K] in the range the lubricant rule accepts, or None."""
-    from ..lubrication.lubricant import OPERATING_TEMPERATURE_RANGE, ZERO_CELSIUS
-
-    if temperature is None:
-        return None
-    low, high = OPERATING_TEMPERATURE_RANGE
-    if (
-        isinstance(temperature, bool)
-        or not isinstance(temperature, (int, float))
-        or not math.isfinite(temperature)
-        or not low <= temperature <= high
-    ):
-        raise InputError(
-            "temperature",
-            temperature,
-            f"an operating temperature in [{low:g}, {high:g}] K "
-            f"({low - ZERO_CELSIUS:g} to {high - ZERO_CELSIUS:g} degC)",
-        )
-    return float(temperature)
-
-
 def seals_of(bearing: FrictionBearing, seals: str | None) -> str:
     """The seals: given, or from the designation's closures (2RS: contact; 2Z: shields)."""
     if seals is not None:

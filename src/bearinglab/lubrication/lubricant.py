@@ -403,6 +403,25 @@ LUBRICANTS: dict[str, Lubricant] = {"seed004-grease": SEED004_GREASE, "iso-vg68"
 OPERATING_TEMPERATURE_RANGE = (ZERO_CELSIUS - 60.0, ZERO_CELSIUS + 300.0)
 
 
+def check_operating_temperature(temperature) -> float:
+    """``temperature`` [K] as a float if it is in :data:`OPERATING_TEMPERATURE_RANGE`;
+    InputError (in K and degC) otherwise."""
+    low, high = OPERATING_TEMPERATURE_RANGE
+    if (
+        isinstance(temperature, bool)
+        or not isinstance(temperature, (int, float, np.integer, np.floating))
+        or not math.isfinite(temperature)
+        or not low <= temperature <= high
+    ):
+        raise InputError(
+            "temperature",
+            temperature,
+            f"an operating temperature in [{low:g}, {high:g}] K "
+            f"({low - ZERO_CELSIUS:g} to {high - ZERO_CELSIUS:g} degC)",
+        )
+    return float(temperature)
+
+
 def operating_viscosity(lubricant, temperature=None) -> tuple[float, str]:
     """Kinematic viscosity of a lubricant at its operating temperature [m^2/s], and how it
     was found (one sentence).
@@ -437,20 +456,7 @@ def operating_viscosity(lubricant, temperature=None) -> tuple[float, str]:
             float(lubricant.kinematic_viscosity(t0)),
             f"{lubricant.name} at its reference temperature {t0 - ZERO_CELSIUS:.4g} degC",
         )
-    low, high = OPERATING_TEMPERATURE_RANGE
-    if (
-        isinstance(temperature, bool)
-        or not isinstance(temperature, (int, float, np.integer, np.floating))
-        or not math.isfinite(temperature)
-        or not low <= temperature <= high
-    ):
-        raise InputError(
-            "temperature",
-            temperature,
-            f"an operating temperature in [{low:g}, {high:g}] K "
-            f"({low - ZERO_CELSIUS:g} to {high - ZERO_CELSIUS:g} degC)",
-        )
-    nu = float(lubricant.kinematic_viscosity(float(temperature)))
+    nu = float(lubricant.kinematic_viscosity(check_operating_temperature(temperature)))
     return nu, (
         f"{lubricant.name} at {temperature - ZERO_CELSIUS:.4g} degC (Reynolds' "
         f"exponential law from {t0 - ZERO_CELSIUS:.4g} degC)"
