@@ -7,6 +7,9 @@ line can print it as one line.
 
 from __future__ import annotations
 
+import math
+from numbers import Real
+
 
 class BearinglabError(Exception):
     """Base class of all bearinglab errors."""
@@ -57,3 +60,24 @@ class CatalogError(BearinglabError, LookupError):
 
 class ConvergenceError(BearinglabError, RuntimeError):
     """An iterative solver did not converge; the message names the case and residual."""
+
+
+def positive_number(name: str, value, allowed: str, *, zero: bool = False) -> float:
+    """``value`` as a float if it is a finite real number > 0 (>= 0 with ``zero``), not a
+    bool; otherwise an :class:`InputError` naming ``name``, the value and ``allowed``.
+
+    >>> positive_number("duration", 2, "a duration > 0 [s]")
+    2.0
+    >>> positive_number("load", -1.0, "a load >= 0 [N]", zero=True)
+    Traceback (most recent call last):
+    ...
+    bearinglab.errors.InputError: load = -1.0 is not allowed: expected a load >= 0 [N]
+    """
+    if (
+        isinstance(value, bool)
+        or not isinstance(value, Real)
+        or not math.isfinite(value)
+        or not (value >= 0 if zero else value > 0)
+    ):
+        raise InputError(name, value, allowed)
+    return float(value)

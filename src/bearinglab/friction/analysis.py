@@ -16,7 +16,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
-from ..errors import InputError
+from ..errors import InputError, positive_number
 from ..lubrication.lubricant import check_operating_temperature
 from ..units import rpm_to_rad_s  # noqa: F401 - used by the doctests
 from .bearing import FrictionBearing, as_friction_bearing
@@ -31,7 +31,6 @@ from .result import FrictionResult
 from .rules import (
     SEALS,
     check_load,
-    check_positive,
     check_seal_constants,
     check_speed,
     equivalent_load_of,
@@ -363,13 +362,13 @@ def bearing_friction(
     fa = check_load("axial_load", axial_load)
     seal_kind = seals_of(b, seals)
     if static_load_rating is not None:
-        check_positive("static_load_rating", static_load_rating, "a rating > 0 [N]")
+        positive_number("static_load_rating", static_load_rating, "a rating > 0 [N]")
     if equivalent_load is not None:
         check_load("equivalent_load", equivalent_load)
     if lubricant_kind not in MU_EHL:
         raise InputError("lubricant_kind", lubricant_kind, "one of " + ", ".join(MU_EHL))
     if seal_diameter is not None:
-        check_positive("seal_diameter", seal_diameter, "a diameter > 0 [m]")
+        positive_number("seal_diameter", seal_diameter, "a diameter > 0 [m]")
     if model == "constant" and lubricant is None and viscosity is None:
         if temperature is not None:  # unused by this model, but checked
             check_operating_temperature(temperature)

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import math
 
-from ..errors import InputError
+from ..errors import InputError, positive_number
 from .bearing import FrictionBearing
 from .skf import K_RS
 
@@ -22,38 +22,12 @@ MAX_VISCOSITY = 1.0
 
 def check_speed(shaft_speed) -> float:
     """A speed of the rotating ring [rad/s], finite and >= 0."""
-    if (
-        isinstance(shaft_speed, bool)
-        or not isinstance(shaft_speed, (int, float))
-        or not math.isfinite(shaft_speed)
-        or shaft_speed < 0
-    ):
-        raise InputError("shaft_speed", shaft_speed, "a finite speed >= 0 [rad/s]")
-    return float(shaft_speed)
+    return positive_number("shaft_speed", shaft_speed, "a finite speed >= 0 [rad/s]", zero=True)
 
 
 def check_load(name: str, value) -> float:
     """A load [N], finite and >= 0."""
-    if (
-        isinstance(value, bool)
-        or not isinstance(value, (int, float))
-        or not math.isfinite(value)
-        or value < 0
-    ):
-        raise InputError(name, value, "a finite load >= 0 [N]")
-    return float(value)
-
-
-def check_positive(name: str, value, what: str) -> float:
-    """A finite number > 0 (``what`` says what is allowed, with its unit)."""
-    if (
-        isinstance(value, bool)
-        or not isinstance(value, (int, float))
-        or not math.isfinite(value)
-        or value <= 0
-    ):
-        raise InputError(name, value, what)
-    return float(value)
+    return positive_number(name, value, "a finite load >= 0 [N]", zero=True)
 
 
 def seals_of(bearing: FrictionBearing, seals: str | None) -> str:
@@ -86,7 +60,7 @@ def viscosity_of(viscosity, lubricant, temperature) -> tuple[float | None, str |
                 "lubricant", lubricant, "one of " + ", ".join(LUBRICANTS) + ", or a Lubricant"
             )
     if viscosity is not None:
-        nu = check_positive(
+        nu = positive_number(
             "viscosity", viscosity, f"a kinematic viscosity in (0, {MAX_VISCOSITY:g}] m^2/s"
         )
         if nu > MAX_VISCOSITY:

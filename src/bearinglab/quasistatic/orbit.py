@@ -35,7 +35,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import InputError
+from ..errors import InputError, positive_number
 from ..geometry import BallBearing
 from ..operating import OperatingCondition
 
@@ -213,17 +213,6 @@ def _ball_state(result, bearing):
     return np.array(result.ball_centre, float), load.max(axis=1), angles[1], angles[0]
 
 
-def _positive_number(name: str, value, allowed: str) -> float:
-    if (
-        isinstance(value, bool)
-        or not isinstance(value, (int, float, np.integer, np.floating))
-        or not math.isfinite(value)
-        or value <= 0
-    ):
-        raise InputError(name, value, allowed)
-    return float(value)
-
-
 def inner_ring_orbit(
     bearing: BallBearing,
     condition: OperatingCondition,
@@ -383,9 +372,9 @@ def record_length(bearing, condition, revolutions=None, duration=None, contact_a
         raise InputError("duration", duration, "None when revolutions is given")
     freq = defect_frequencies(bearing, condition.shaft_speed, contact_angle=contact_angle)
     if revolutions is not None:
-        return _positive_number("revolutions", revolutions, "a number > 0") / freq.shaft_hz
+        return positive_number("revolutions", revolutions, "a number > 0") / freq.shaft_hz
     if duration is not None:
-        return _positive_number("duration", duration, "a duration > 0 [s]")
+        return positive_number("duration", duration, "a duration > 0 [s]")
     return 1.0 / freq.hz("ftf")
 
 
