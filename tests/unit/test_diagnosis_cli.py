@@ -129,6 +129,22 @@ def test_analyze_human_output(folder, capsys):
     assert code == 0 and "verdict: inner race" in out and "f [Hz]" in out
 
 
+def test_method_all_and_repeated(folder, capsys):
+    """--method all (as the help says) and a repeated --method, in both commands."""
+    args = ["--designation", "ER-16K", "--speed-rpm", "1750", "--json"]
+    code, out, err = run(capsys, "analyze", str(folder / "outer.npz"), "--method", "all", *args)
+    assert code == 0, err
+    assert json.loads(out)["methods"] == ["raw", "cpw", "drs-sk"]
+    code, out, err = run(
+        capsys, "analyze", str(folder / "outer.npz"), "--method", "cpw", "--method", "raw", *args
+    )
+    assert code == 0, err
+    assert json.loads(out)["methods"] == ["cpw", "raw"]
+    code, out, err = run(capsys, "benchmark", str(folder), "--method", "all", "--json")
+    assert code == 0, err
+    assert set(json.loads(out)["right"]) >= {"raw", "cpw", "drs-sk"}
+
+
 @pytest.mark.parametrize(
     "args, flag",
     [

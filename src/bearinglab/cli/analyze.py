@@ -118,12 +118,6 @@ def parse_tolerances(items: list[str] | None) -> dict | None:
     return out
 
 
-def _methods(items: list[str] | None):
-    if not items:
-        return None
-    return [m.strip() for item in items for m in item.split(",") if m.strip()]
-
-
 @app.command("analyze")
 @with_geometry
 def analyze_command(
@@ -248,7 +242,7 @@ def analyze_command(
         "channel": channel,
         "sample_rate": sample_rate_hz,
         "band": parse_band(band_hz),
-        "methods": _methods(method),
+        "methods": method or None,
         "tolerances": parse_tolerances(tolerance),
         "false_alarm": false_alarm,
         "supply_frequency": supply_hz,

@@ -48,16 +48,13 @@ def benchmark_command(
     if jobs < 1:
         raise OptionError("--jobs", jobs, "an integer >= 1")
     check_path("--html", html, (".html", ".htm"))
-    methods = (
-        None if not method else [m.strip() for item in method for m in item.split(",") if m.strip()]
-    )
     from ..diagnosis import run_benchmark
 
     with progress_bar("diagnosing records", enabled=not json_output) as update:
         try:
             result = run_benchmark(
                 folder,
-                methods=methods,
+                methods=method or None,
                 jobs=jobs,
                 progress=lambda done, total: update(done / total),
                 keep_spectra=html is not None,

@@ -68,18 +68,18 @@ class MethodSpectrum:
 
 
 def parse_methods(methods) -> tuple[str, ...]:
-    """``methods`` as a tuple of names: a name, "all", a comma-separated string or a
-    sequence of names.
+    """``methods`` as a tuple of names: a name, "all", a comma-separated string, or a
+    sequence of these (as a repeatable command-line option gives them).
 
-    >>> parse_methods("raw,cpw"), parse_methods("all")
-    (('raw', 'cpw'), ('raw', 'cpw', 'drs-sk'))
+    >>> parse_methods("raw,cpw"), parse_methods(["all"]), parse_methods(["cpw", "raw,cpw"])
+    (('raw', 'cpw'), ('raw', 'cpw', 'drs-sk'), ('cpw', 'raw'))
     """
-    if isinstance(methods, str):
-        methods = METHODS if methods.strip().lower() == "all" else methods.split(",")
+    items = [methods] if isinstance(methods, str) else methods
     try:
-        names = tuple(dict.fromkeys(str(m).strip().lower() for m in methods))
+        names = [n.strip().lower() for item in items for n in str(item).split(",") if n.strip()]
     except TypeError:
-        names = ()
+        names = []
+    names = tuple(dict.fromkeys(n for m in names for n in (METHODS if m == "all" else (m,))))
     if not names or any(m not in METHODS for m in names):
         raise InputError("methods", methods, f"one or more of {list(METHODS)} (or 'all')")
     return names
