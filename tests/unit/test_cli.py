@@ -562,3 +562,18 @@ def test_unwritable_plot_is_one_line(tmp_path, capsys):
     )
     assert line.startswith("error: --plot = ") and "writable" in line
     assert list(tmp_path.iterdir()) == [a_file]
+
+
+def test_tables_wrap_long_cells_instead_of_cutting_them():
+    """In a narrow terminal a long cell (a file path, a verdict) wraps; no "…" is printed."""
+    from rich.console import Console
+
+    from bearinglab.cli._output import _table
+
+    path = "cwru/12k_DE/3001.mat/" * 4
+    console = Console(width=50, record=True, color_system=None)
+    console.print(_table("verdicts", ["file", "verdict"], [[path, "no fault detected"]]))
+    text = console.export_text()
+    assert "…" not in text
+    cells = "".join(line.split("│")[1].strip() for line in text.splitlines() if "│" in line)
+    assert path in cells

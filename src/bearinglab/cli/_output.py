@@ -70,11 +70,13 @@ def _fmt(value, digits: int = 4) -> str:
 def _table(title: str, columns: list[str], rows: list[list]) -> Table:
     table = Table(title=title, title_justify="left", show_header=True, header_style="bold")
     for i, col in enumerate(columns):
-        # a header's words are never cut: its column is at least as wide as its longest word
+        # a header's words are never cut: its column is at least as wide as its longest word;
+        # in a narrow terminal a long cell wraps onto more lines instead of losing its end
         table.add_column(
             escape(col),
             justify="right" if i and col not in ("source", "meaning") else "left",
             min_width=max(map(len, col.split()), default=1),
+            overflow="fold",
         )
     for row in rows:
         table.add_row(*(_fmt(v) for v in row))
