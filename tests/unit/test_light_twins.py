@@ -61,3 +61,35 @@ def test_peak_prominences_are_scipy_peak_prominences():
             peaks = local_maxima(x)
             want = scipy.signal.peak_prominences(x, peaks)[0] if peaks.size else np.zeros(0)
             assert np.allclose(peak_prominences(x, peaks), want, rtol=0, atol=1e-12)
+
+
+def test_agm_elliptic_integrals_are_scipys():
+    """Hertz contact takes K and E from the AGM (bearinglab.contact.elliptic) so that no
+    command imports scipy.special for them; over the whole range of m, with m and its
+    complement p = 1 - m each given exactly, they are SciPy's to a few ulp."""
+    import scipy.special as sp
+
+    from bearinglab.contact.elliptic import complete_elliptic, ellipk_ellipe
+
+    small = np.logspace(-300, -0.3, 300)  # m -> 0 and, as p, m -> 1
+    for m, p in ((small, 1.0 - small), (-np.expm1(np.log(small)), small)):
+        k, diff = complete_elliptic(p, m)
+        assert np.allclose(k, sp.ellipkm1(p), rtol=2e-15, atol=0)
+        big = m > 0.1  # SciPy's difference loses digits at small m; there, the series
+        assert np.allclose(diff[big], sp.ellipkm1(p[big]) - sp.ellipe(m[big]), rtol=1e-14)
+        series = 0.25 * np.pi * m * (1 + 3 * m / 8)  # pi/4 m (1 + 3/8 m + O(m^2))
+        tiny = m < 1e-6
+        assert np.allclose(diff[tiny], series[tiny], rtol=1e-12, atol=0)
+    m = np.linspace(0.0, 0.9999, 1001)
+    k, e = ellipk_ellipe(m)
+    assert np.allclose(k, sp.ellipk(m), rtol=2e-15, atol=0)
+    assert np.allclose(e, sp.ellipe(m), rtol=2e-15, atol=0)
+
+
+def test_fast_lengths_are_scipys():
+    """numpy.fft is padded to the lengths scipy.fft.next_fast_len/prev_fast_len choose."""
+    from bearinglab.signal.spectra import fast_length, fast_length_below
+
+    for n in [*range(1, 3000), 480_001, 1_000_003, 2**20 + 1]:
+        assert fast_length(n) == scipy.fft.next_fast_len(n, real=True)
+        assert fast_length_below(n) == scipy.fft.prev_fast_len(n, real=True)

@@ -14,7 +14,8 @@ Sources:
   method), and the same contact in the form a = (6 k^2 E W R / (pi E'))^(1/3),
   b = (6 E W R / (pi k E'))^(1/3), delta = K (9 / (2 E R) (W / (pi k E'))^2)^(1/3),
   p_max = 3 W / (2 pi a b), with 1/R = 1/R_x + 1/R_y.
-The elliptic integrals are SciPy's ``ellipk``/``ellipe`` (argument m = e^2).
+The elliptic integrals (argument m = e^2) come from the arithmetic-geometric mean
+(:mod:`.elliptic`; the same values as SciPy's ``ellipk``/``ellipe`` to a few ulp).
 
 The exact and Hertz-form expressions above are algebraically identical; this module
 uses the Hamrock form throughout and only swaps how k, K and E are obtained.
@@ -26,9 +27,9 @@ from dataclasses import dataclass
 from typing import Literal
 
 import numpy as np
-from scipy import special
 
 from ..errors import ConvergenceError, InputError
+from .elliptic import complete_elliptic, ellipk_ellipe
 
 Method = Literal["exact", "hamrock_brewe"]
 METHODS = ("exact", "hamrock_brewe")
@@ -39,36 +40,18 @@ METHODS = ("exact", "hamrock_brewe")
 RATIO_RANGE = (1.0, 1e8)
 
 
-def _k_minus_e(m, p):
-    """K(m) - E(m) without cancellation: the power series for m < 0.1, else
-    ``ellipkm1(p) - ellipe(m)`` with p = 1 - m (exact for m -> 1)."""
-    shape = np.shape(m)
-    m, p = np.atleast_1d(np.asarray(m, dtype=float)), np.atleast_1d(np.asarray(p, dtype=float))
-    out = np.asarray(special.ellipkm1(p) - special.ellipe(m), dtype=float)
-    small = m < 0.1
-    if np.any(small):
-        ms = m[small]
-        coef, power, total = 1.0, np.ones_like(ms), np.zeros_like(ms)
-        for n in range(1, 25):  # (K - E) 2/pi = sum c_n^2 m^n 2n/(2n - 1); 0.1^24 ~ 1e-24
-            coef *= (2.0 * n - 1.0) / (2.0 * n)
-            power = power * ms
-            total = total + coef * coef * power * (2.0 * n) / (2.0 * n - 1.0)
-        out[small] = 0.5 * np.pi * total
-    return out.reshape(shape)
-
-
 def _log_ratio(u):
     """ln(R_y/R_x) of the exact relation as a function of u = ln k (k = a/b > 1).
 
     R_y/R_x = (k^2 E - K)/(K - E) = (m K - (K - E)) / (p (K - E)), m = 1 - 1/k^2,
-    p = 1/k^2 = 1 - m, with K from ``ellipkm1(p)`` and K - E from :func:`_k_minus_e`, so
-    that neither k -> 1 nor k -> infinity loses precision.
+    p = 1/k^2 = 1 - m, with K and K - E from the AGM given both m and p
+    (:func:`.elliptic.complete_elliptic`), so that neither k -> 1 nor k -> infinity loses
+    precision.
     """
     u = np.asarray(u, dtype=float)
     p = np.exp(-2.0 * u)
     m = -np.expm1(-2.0 * u)
-    kk = special.ellipkm1(p)
-    diff = _k_minus_e(m, p)
+    kk, diff = complete_elliptic(p, m)
     with np.errstate(divide="ignore", invalid="ignore"):
         return np.log(m * kk - diff) - np.log(p) - np.log(diff)
 
@@ -165,7 +148,8 @@ def ellipticity(radius_ratio, method: Method = "exact"):
 def elliptic_integrals(k, radius_ratio=None, method: Method = "exact"):
     """Complete elliptic integrals (K, E) of the first and second kind for ellipticity k.
 
-    ``exact`` uses scipy.special.ellipk/ellipe with m = 1 - 1/k^2; ``hamrock_brewe``
+    ``exact`` uses the AGM (:mod:`.elliptic`, as scipy.special.ellipk/ellipe) with
+    m = 1 - 1/k^2; ``hamrock_brewe``
     uses K = 1.5277 + 0.6023 ln(alpha_r), E = 1.0003 + 0.5968 / alpha_r.
 
     Parameters
@@ -181,7 +165,7 @@ def elliptic_integrals(k, radius_ratio=None, method: Method = "exact"):
         ratio = np.asarray(radius_ratio, dtype=float)
         return 1.5277 + 0.6023 * np.log(ratio), 1.0003 + 0.5968 / ratio
     m = 1.0 - 1.0 / np.asarray(k, dtype=float) ** 2
-    return special.ellipk(m), special.ellipe(m)
+    return ellipk_ellipe(m)
 
 
 @dataclass(frozen=True)

@@ -89,19 +89,13 @@ def segment_length(n: int, sample_rate: float, resolution: float) -> int:
     """Welch segment [samples]: the power of two nearest f_s / ``resolution`` (so that a
     small change of speed or rate does not change the segmentation), at most ``n``; a
     whole record that is shorter is used as it is, cut to the longest fast FFT length."""
-    import scipy.fft
+    from ..signal.spectra import fast_length_below
 
     target = max(16.0, sample_rate / resolution)
     power = 2 ** int(round(math.log2(target)))
     if power <= n:
         return int(power)
-    prev = getattr(scipy.fft, "prev_fast_len", None)
-    if prev is not None:
-        return int(prev(n, real=True))
-    m = n
-    while scipy.fft.next_fast_len(m, real=True) != m:
-        m -= 1
-    return m
+    return fast_length_below(n)
 
 
 def squared_envelope_power(x: np.ndarray, sample_rate: float, resolution: float, band=None):

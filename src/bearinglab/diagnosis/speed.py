@@ -89,14 +89,12 @@ def shaft_frequency(
     >>> round(shaft_frequency(x, fs, 27.0, 32.0).frequency, 2)
     29.3
     """
-    import scipy.fft
-
     from .methods import segment_length
     from .statistics import normalised, series_test
 
     n = segment_length(x.size, sample_rate, sample_rate / x.size)
     y = x[:n] - np.mean(x[:n])
-    power = np.abs(scipy.fft.rfft(y * np.hanning(n + 1)[:-1])) ** 2
+    power = np.abs(np.fft.rfft(y * np.hanning(n + 1)[:-1])) ** 2
     resolution = sample_rate / n
     z = normalised(power, 2.0)
     centre = 0.5 * (low + high)

@@ -20,10 +20,9 @@ import math
 from typing import NamedTuple
 
 import numpy as np
-import scipy.fft
 
 from ..errors import InputError
-from .spectra import rate, samples
+from .spectra import fast_length, rate, samples
 
 #: Fewest envelope samples a band's kurtosis is estimated from: the kurtosis of Gaussian
 #: noise estimated from m samples scatters by about sqrt(24/m)... 0.2 at m = 600 (complex
@@ -138,8 +137,8 @@ def fast_kurtogram(
     ):
         raise InputError("max_level", max_level, f"an integer in [0, {deepest}]")
     ceiling = USABLE_FRACTION * fs if max_frequency is None else float(max_frequency)
-    nfft = scipy.fft.next_fast_len(n, real=True)
-    spectrum = scipy.fft.rfft(x - x.mean(), n=nfft)
+    nfft = fast_length(n)
+    spectrum = np.fft.rfft(x - x.mean(), n=nfft)
     df = fs / nfft
     best = None
     levels, centres, values = [], [], []
@@ -156,7 +155,7 @@ def fast_kurtogram(
             if m < 8:
                 kurt[i] = -2.0
                 continue
-            c = scipy.fft.ifft(band * tukey(m, TAPER))
+            c = np.fft.ifft(band * tukey(m, TAPER))
             power = np.abs(c) ** 2
             mean = float(power.mean())
             kurt[i] = float(np.mean(power**2)) / mean**2 - 2.0 if mean > 0 else -2.0

@@ -29,10 +29,9 @@ Sources:
 from __future__ import annotations
 
 import numpy as np
-import scipy.fft
 
 from ..errors import InputError
-from .spectra import rate, samples
+from .spectra import fast_length, rate, samples
 
 #: Resolution of the DRS filter [Hz]: segments of about 1 s separate discrete lines 1 Hz
 #: apart (shaft harmonics and supply lines); capped by the record length (``drs_segment``).
@@ -68,13 +67,13 @@ def cepstral_prewhitening(x) -> np.ndarray:
     """
     x = samples(x)
     n = x.size
-    nfft = scipy.fft.next_fast_len(n, real=True)
-    spectrum = scipy.fft.rfft(x - x.mean(), n=nfft)
+    nfft = fast_length(n)
+    spectrum = np.fft.rfft(x - x.mean(), n=nfft)
     magnitude = np.abs(spectrum)
     live = magnitude > 1e-12 * max(float(magnitude.max()), 1e-300)
     whitened = np.zeros_like(spectrum)
     whitened[live] = spectrum[live] / magnitude[live]
-    return scipy.fft.irfft(whitened, n=nfft)[:n]
+    return np.fft.irfft(whitened, n=nfft)[:n]
 
 
 def drs_segment(n: int, sample_rate: float) -> int:
@@ -154,8 +153,8 @@ def discrete_random_separation(
     starts = np.arange(0, n - nseg - lag + 1, hop)
     # Welch averages of the cross-spectrum of x(t) and x(t - D) and of the auto-spectra
     index = starts[:, None] + np.arange(nseg)[None, :]
-    now = scipy.fft.rfft(y[index + lag] * window, axis=1)
-    before = scipy.fft.rfft(y[index] * window, axis=1)
+    now = np.fft.rfft(y[index + lag] * window, axis=1)
+    before = np.fft.rfft(y[index] * window, axis=1)
     cross = np.mean(now * np.conj(before), axis=0)
     auto = 0.5 * (np.mean(np.abs(now) ** 2, axis=0) + np.mean(np.abs(before) ** 2, axis=0))
     gain = np.zeros(auto.shape)

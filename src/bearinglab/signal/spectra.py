@@ -30,7 +30,6 @@ import math
 from typing import NamedTuple
 
 import numpy as np
-import scipy.fft
 
 from ..errors import InputError
 from .record import MIN_SAMPLES
@@ -284,22 +283,60 @@ def envelope(x, sample_rate, band=None, order: int = 4, squared: bool = False) -
     return magnitude - magnitude.mean()
 
 
+def fast_length(n: int) -> int:
+    """The smallest 2^a 3^b 5^c >= ``n``: the lengths that numpy's pocketfft transforms
+    fastest (what ``scipy.fft.next_fast_len(n, real=True)`` returns; numpy.fft is used
+    because importing scipy.fft costs ~0.2 s of a command's start-up).
+
+    >>> fast_length(480_000), fast_length(480_001), fast_length(7)
+    (480000, 486000, 8)
+    """
+    n = max(int(n), 1)
+    best = 1 << (n - 1).bit_length()  # a power of two is always a candidate
+    p5 = 1
+    while p5 < best:
+        p35 = p5
+        while p35 < best:
+            quotient = -(-n // p35)  # times a power of two >= this
+            best = min(best, p35 << (quotient - 1).bit_length())
+            p35 *= 3
+        p5 *= 5
+    return best
+
+
+def fast_length_below(n: int) -> int:
+    """The largest 2^a 3^b 5^c <= ``n`` (``scipy.fft.prev_fast_len(n, real=True)``).
+
+    >>> fast_length_below(479_999), fast_length_below(7)
+    (472392, 6)
+    """
+    n = max(int(n), 1)
+    best, p5 = 1, 1
+    while p5 <= n:
+        p35 = p5
+        while p35 <= n:
+            best = max(best, p35 << ((n // p35).bit_length() - 1))
+            p35 *= 3
+        p5 *= 5
+    return best
+
+
 def analytic(x) -> np.ndarray:
     """Analytic signal x + j H[x] computed at a fast FFT length.
 
     As ``scipy.signal.hilbert`` computes it (Marple, "Computing the discrete-time analytic
     signal via FFT", IEEE Trans. Signal Process. 47 (1999) 2600-2603: the spectrum's
-    negative frequencies zeroed, the positive ones doubled), written with ``scipy.fft``
+    negative frequencies zeroed, the positive ones doubled), written with ``numpy.fft``
     here so that the command line does not import scipy.signal (~0.5 s); a test checks
     the two agree. ``hilbert`` transforms at the record's own length, and an awkward
     length (a large prime factor: 480 001 samples) costs several times a nearby fast one;
-    the record is zero-padded to ``scipy.fft.next_fast_len`` and the result cut back. The
+    the record is zero-padded to :func:`fast_length` and the result cut back. The
     padding only changes the last few samples' envelope, as an end effect of the same size
     as the circular one it replaces.
     """
     n = len(x)
-    m = scipy.fft.next_fast_len(n, real=True)
-    spectrum = scipy.fft.fft(x, m)
+    m = fast_length(n)
+    spectrum = np.fft.fft(x, m)
     gain = np.zeros(m)
     gain[0] = 1.0
     if m % 2 == 0:
@@ -307,7 +344,7 @@ def analytic(x) -> np.ndarray:
         gain[1 : m // 2] = 2.0
     else:
         gain[1 : (m + 1) // 2] = 2.0
-    return scipy.fft.ifft(spectrum * gain)[:n]
+    return np.fft.ifft(spectrum * gain)[:n]
 
 
 def welch_power(x, sample_rate: float, nperseg: int, noverlap: int):
@@ -316,7 +353,7 @@ def welch_power(x, sample_rate: float, nperseg: int, noverlap: int):
 
     This is ``scipy.signal.welch(x, fs, "hann", nperseg, noverlap, detrend="constant",
     scaling="spectrum")`` (Welch, IEEE Trans. Audio Electroacoust. 15 (1967) 70-73),
-    written with ``scipy.fft`` so that the command line does not import scipy.signal
+    written with ``numpy.fft`` so that the command line does not import scipy.signal
     (~0.5 s); a test checks the two agree.
     """
     x = np.asarray(x, dtype=float)
@@ -324,10 +361,10 @@ def welch_power(x, sample_rate: float, nperseg: int, noverlap: int):
     count = 1 + (x.size - nperseg) // step
     segments = np.lib.stride_tricks.sliding_window_view(x, nperseg)[::step][:count]
     window = 0.5 - 0.5 * np.cos(2.0 * np.pi * np.arange(nperseg) / nperseg)  # periodic Hann
-    spectra = scipy.fft.rfft((segments - segments.mean(axis=1, keepdims=True)) * window, axis=1)
+    spectra = np.fft.rfft((segments - segments.mean(axis=1, keepdims=True)) * window, axis=1)
     power = np.mean(np.abs(spectra) ** 2, axis=0) / window.sum() ** 2
     power[1 : nperseg // 2 + (nperseg % 2)] *= 2.0  # one-sided: all but 0 Hz and Nyquist
-    return scipy.fft.rfftfreq(nperseg, 1.0 / sample_rate), power
+    return np.fft.rfftfreq(nperseg, 1.0 / sample_rate), power
 
 
 def envelope_spectrum(
