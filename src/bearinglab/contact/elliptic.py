@@ -1,6 +1,7 @@
 """Complete elliptic integrals K and E by the arithmetic-geometric mean (AGM).
 
-Source: Abramowitz M., Stegun I. A., *Handbook of Mathematical Functions*, NBS 1964,
+Source: [AbramowitzStegun1964] (Abramowitz M., Stegun I. A., *Handbook of Mathematical
+Functions*, NBS 1964),
 sec. 17.6 (eqs. 17.6.1-17.6.4): a_0 = 1, b_0 = sqrt(p), c_0 = sqrt(m) with p = 1 - m;
 a_{n+1} = (a_n + b_n)/2, b_{n+1} = sqrt(a_n b_n); K(m) = pi / (2 a_N) and
 K(m) - E(m) = K(m) (1/2) sum_{n>=0} 2^n c_n^2.
