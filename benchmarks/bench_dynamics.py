@@ -43,19 +43,13 @@ from scipy import integrate
 from bearinglab.catalog.build import bearing_from_designation
 from bearinglab.dynamics import Defect, _kernels, _slip_kernels, rigid, simulate, slip
 from bearinglab.dynamics.defects import pack_defects
-from bearinglab.geometry import BallBearing
 from bearinglab.operating import OperatingCondition
+from bearinglab.validation.seed004 import SKF6205
 
 RIGID_RATE = 50e3
 SLIP_RATE = 20e3
-SLIP_BEARING = BallBearing(
-    ball_count=9,
-    ball_diameter=8e-3,
-    pitch_diameter=39e-3,
-    bore=25e-3,
-    outside_diameter=52e-3,
-    width=15e-3,
-)
+# seed 004's 6205, the slip model's reference case
+SLIP_BEARING = SKF6205
 SLIP_DEFECT_WIDTH = 0.267e-3
 
 

@@ -19,6 +19,7 @@ from bearinglab.geometry import BallBearing
 from bearinglab.imperfections import BallSizeErrors, Imperfections, Waviness
 from bearinglab.kinematics import defect_frequencies
 from bearinglab.operating import OperatingCondition
+from bearinglab.validation.seed004 import SKF6205
 
 PRELOADED = BallBearing(
     ball_count=9, ball_diameter=7.94e-3, pitch_diameter=38.51e-3, diametral_clearance=-10e-6
@@ -79,14 +80,7 @@ def test_a_ball_size_error_turns_with_the_cage():
 
 
 def test_slip_model_takes_the_same_imperfections():
-    bearing = BallBearing(
-        ball_count=9,
-        ball_diameter=8e-3,
-        pitch_diameter=39e-3,
-        bore=25e-3,
-        outside_diameter=52e-3,
-        width=15e-3,
-    )
+    bearing = SKF6205
     cond = OperatingCondition(radial_load=500.0, shaft_speed=2400 * math.pi / 30)
     runs = [
         simulate(

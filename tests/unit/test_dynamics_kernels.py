@@ -20,18 +20,12 @@ from bearinglab.dynamics.defects import edge_drop, pack_defects
 from bearinglab.errors import InputError
 from bearinglab.geometry import BallBearing
 from bearinglab.operating import OperatingCondition
+from bearinglab.validation.seed004 import SKF6205
 
 ER16K = BallBearing(
     ball_count=9, ball_diameter=7.94e-3, pitch_diameter=38.51e-3, diametral_clearance=90e-6
 )
-SEED004 = BallBearing(
-    ball_count=9,
-    ball_diameter=8e-3,
-    pitch_diameter=39e-3,
-    bore=25e-3,
-    outside_diameter=52e-3,
-    width=15e-3,
-)
+SEED004 = SKF6205
 DEFECTS = [
     Defect("outer", 1.2e-3, 0.25e-3),
     Defect("inner", 0.8e-3, 2e-6, angle=1.0),
