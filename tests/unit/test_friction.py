@@ -381,8 +381,7 @@ def test_cli_constant_json(capsys):
 
 
 def test_cli_skf_json(capsys):
-    d = run_json(
-        capsys,
+    args = (
         "6205-2RS",
         "--speed-rpm",
         "3000",
@@ -395,6 +394,7 @@ def test_cli_skf_json(capsys):
         "--lubrication",
         "grease",
     )
+    d = run_json(capsys, *args)
     ref = skf_by_hand(3000, 20, 25, 52, 1000, C62.r1, C62.r2, C62.s1, C62.s2)
     assert d["friction_torque_n_mm"] == pytest.approx(ref, rel=1e-9)
     for key in (
@@ -409,22 +409,7 @@ def test_cli_skf_json(capsys):
         assert key in d
     assert d["seals"] == "contact" and any("M_seal is not included" in w for w in d["warnings"])
     sealed = run_json(
-        capsys,
-        "6205-2RS",
-        "--speed-rpm",
-        "3000",
-        "--radial-load-n",
-        "1000",
-        "--model",
-        "skf",
-        "--viscosity-mm2-s",
-        "20",
-        "--lubrication",
-        "grease",
-        "--seal-constants",
-        "0.02,2,2.25",
-        "--seal-diameter-mm",
-        "31.3",
+        capsys, *args, "--seal-constants", "0.02,2,2.25", "--seal-diameter-mm", "31.3"
     )
     assert sealed["seal_torque_n_mm"] == pytest.approx(0.02 * 31.3**2.25 + 2)
     assert sealed["friction_torque_n_mm"] == pytest.approx(ref + sealed["seal_torque_n_mm"])
@@ -443,36 +428,17 @@ def test_cli_skf_viscosity_from_temperature(capsys):
 
 
 def test_cli_axial_and_other_types(capsys):
-    d = run_json(
-        capsys, "6205", "--speed-rpm", "1500", "--radial-load-n", "1000", "--axial-load-n", "500"
-    )
+    combined = ("--speed-rpm", "1500", "--radial-load-n", "1000", "--axial-load-n", "500")
+    d = run_json(capsys, "6205", *combined)
     b, _ = bearing_from_designation("6205")
     assert d["equivalent_load_n"] == pytest.approx(equivalent_dynamic_load(b, 1000.0, 500.0)[0])
     assert "ISO 281" in d["equivalent_load_source"]
-    own_c0 = run_json(
-        capsys,
-        "6205",
-        "--speed-rpm",
-        "1500",
-        "--radial-load-n",
-        "1000",
-        "--axial-load-n",
-        "500",
-        "--model",
-        "skf",
-        "--viscosity-mm2-s",
-        "30",
-    )
+    own_c0 = run_json(capsys, "6205", *combined, "--model", "skf", "--viscosity-mm2-s", "30")
     assert any("ISO 76" in w for w in own_c0["warnings"])
     s = run_json(
         capsys,
         "6205",
-        "--speed-rpm",
-        "1500",
-        "--radial-load-n",
-        "1000",
-        "--axial-load-n",
-        "500",
+        *combined,
         "--static-load-rating-kn",
         "7.8",
         "--model",
