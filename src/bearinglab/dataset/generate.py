@@ -273,15 +273,7 @@ def make_dataset(
     """
     whole_number("seed", seed, 0)
     spec = DatasetSpec(records, **ranges)
-    if records > MAX_RECORDS:
-        raise InputError("records", records, f"at most {MAX_RECORDS:g}")
-    if max_records is not None and records > max_records:
-        raise InputError(
-            "records",
-            records,
-            f"at most {max_records} without confirmation",
-            "confirm with --yes (or raise max_records) to make them all",
-        )
+    execute.check_count("records", records, MAX_RECORDS, max_records, "make")
     partition_size = partition_size_for(partition_size, records, LARGEST_PARTITION)
     folder = Path(output)
     name = folder.resolve().name
@@ -339,10 +331,10 @@ def make_dataset(
                 own / MARKER, lambda tmp: Path(tmp).write_text(marker, encoding="utf-8")
             )
             info = (runner.scheduler, runner.workers, runner.dashboard)
-            execute.warm(runner, ("bearinglab.dynamics",), (_warm, (spec, seed)))
-            cpu0 = execute.cpu_seconds(runner)
-            seconds = execute.run_partitions(
+            seconds, cpu, memory = execute.measured_run(
                 runner,
+                ("bearinglab.dynamics",),
+                (_warm, (spec, seed)),
                 _partition,
                 tasks,
                 units,
@@ -352,8 +344,6 @@ def make_dataset(
                 total=records,
                 done=records - sum(units),
             )
-            cpu = {w: t - cpu0.get(w, 0.0) for w, t in execute.cpu_seconds(runner).items()}
-            memory = execute.peak_memory(runner)
     written, failed = _finish(folder, name, metas, seed, records)
     return DatasetResult(
         folder,

@@ -200,16 +200,8 @@ def static_load_rating(
 
     Parameters
     ----------
-    ball_count : int
-        Balls per row Z [-].
-    ball_diameter : float
-        D_w [m].
-    pitch_diameter : float
-        D_pw [m].
-    contact_angle : float
-        Nominal contact angle alpha [rad].
-    rows : int
-        Rows of balls i [-].
+    ball_count, ball_diameter, pitch_diameter, contact_angle, rows
+        The ball set, as in :func:`dynamic_load_rating`.
 
     Returns
     -------

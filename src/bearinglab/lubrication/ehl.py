@@ -205,14 +205,8 @@ def hamrock_dowson_central(speed, materials, load, ellipticity):
 
     Parameters
     ----------
-    speed : float or array
-        U [-], >= 0.
-    materials : float or array
-        G [-], > 0.
-    load : float or array
-        W [-], > 0.
-    ellipticity : float or array
-        k [-], > 0.
+    speed, materials, load, ellipticity : float or array
+        U, G, W and k [-], as in :func:`hamrock_dowson_minimum`.
 
     >>> round(float(hamrock_dowson_central(1e-11, 5000.0, 1e-6, 4.0)) * 1e6, 3)
     25.567

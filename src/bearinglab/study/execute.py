@@ -252,6 +252,32 @@ def run_partitions(
     return time.perf_counter() - start
 
 
+def measured_run(
+    runner: Runner, modules: Sequence[str], probe, func: Callable, tasks, units, on_done, **kw
+) -> tuple[float, dict, dict]:
+    """:func:`warm`, then :func:`run_partitions` (``kw`` as there): wall time [s], the CPU
+    time each worker used in the run [s] and each worker's peak memory [bytes]."""
+    warm(runner, modules, probe)
+    cpu0 = cpu_seconds(runner)
+    seconds = run_partitions(runner, func, tasks, units, on_done, **kw)
+    cpu = {w: t - cpu0.get(w, 0.0) for w, t in cpu_seconds(runner).items()}
+    return seconds, cpu, peak_memory(runner)
+
+
+def check_count(name: str, count: int, most: int, confirm: int | None, verb: str) -> None:
+    """Refuse more than ``most`` cases or records (``name``) at all, and more than
+    ``confirm`` without confirmation (``max_<name>``; ``verb`` is what is done to them)."""
+    if count > most:
+        raise InputError(name, count, f"at most {most:g} {name} in one run")
+    if confirm is not None and count > confirm:
+        raise InputError(
+            name,
+            count,
+            f"at most {confirm} {name} without confirmation",
+            f"confirm with --yes (or raise max_{name}) to {verb} them all",
+        )
+
+
 def _progress(label: str):
     from rich.console import Console
     from rich.progress import (

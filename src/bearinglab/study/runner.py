@@ -261,15 +261,7 @@ def run_study(
     source = _source(a, grid, cases, seed, repeats)
     check_bearing_given(set(source.columns))
     count = source.count
-    if count > MAX_CASES:
-        raise InputError("cases", count, f"at most {MAX_CASES:g} cases in one study")
-    if max_cases is not None and count > max_cases:
-        raise InputError(
-            "cases",
-            count,
-            f"at most {max_cases} cases without confirmation",
-            "confirm with --yes (or raise max_cases) to run them all",
-        )
+    execute.check_count("cases", count, MAX_CASES, max_cases, "run")
     partition_size = partition_size_for(partition_size, count, a.largest)
     random = sorted(k for k, v in getattr(source, "values", {}).items() if isinstance(v, Uniform))
     identity = {
@@ -329,10 +321,10 @@ def run_study(
             runner_info = (runner.scheduler, runner.workers, runner.dashboard)
             # a few first cases (the very first may fail, e.g. an unloaded stiffness case)
             first = source.rows(0, min(count, 3))
-            execute.warm(runner, a.warm, (warm_up, (a.name, first)))
-            cpu0 = execute.cpu_seconds(runner)
-            seconds = execute.run_partitions(
+            seconds, cpu, memory = execute.measured_run(
                 runner,
+                a.warm,
+                (warm_up, (a.name, first)),
                 _partition,
                 tasks,
                 units,
@@ -342,8 +334,6 @@ def run_study(
                 total=count,
                 done=count - sum(units),
             )
-            cpu = {w: t - cpu0.get(w, 0.0) for w, t in execute.cpu_seconds(runner).items()}
-            memory = execute.peak_memory(runner)
     failed = _failed(folder, names)
     return StudyResult(
         folder,
