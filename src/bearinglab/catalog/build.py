@@ -58,16 +58,7 @@ from .lookup import (
 
 #: Keywords of BallBearing a caller may override.
 OVERRIDABLE = (
-    "ball_count",
-    "ball_diameter",
-    "pitch_diameter",
-    "inner_groove_factor",
-    "outer_groove_factor",
-    "contact_angle",
-    "diametral_clearance",
-    "bore",
-    "outside_diameter",
-    "width",
+    *PublishedGeometry.GEOMETRY_FIELDS,
     "ring_material",
     "ball_material",
     "name",

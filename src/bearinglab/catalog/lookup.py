@@ -17,6 +17,7 @@ from functools import lru_cache
 from typing import Any
 
 from ..errors import CatalogError, DesignationError, InputError
+from ..geometry import INTERNAL_FIELDS
 from . import _data
 from .families import FAMILIES, TABLE_FILES, Family, families_table
 
@@ -361,18 +362,7 @@ class PublishedGeometry:
     notes: str = ""
 
     #: Fields that describe the bearing (not its bookkeeping).
-    GEOMETRY_FIELDS = (
-        "ball_count",
-        "ball_diameter",
-        "pitch_diameter",
-        "inner_groove_factor",
-        "outer_groove_factor",
-        "contact_angle",
-        "diametral_clearance",
-        "bore",
-        "outside_diameter",
-        "width",
-    )
+    GEOMETRY_FIELDS = (*INTERNAL_FIELDS, "bore", "outside_diameter", "width")
 
     def published(self) -> dict[str, Any]:
         """The published (non-None) geometry values, by BallBearing keyword, in SI units."""

@@ -137,14 +137,8 @@ def gost_equivalent(text: str, system: str | None = None) -> str | None:
 
 
 def iso_equivalent(text: str, system: str | None = None) -> str | None:
-    """Return the ISO designation of a bearing, or None if there is none.
-
-    Parameters
-    ----------
-    text : str
-        Designation in either system (read as :func:`parse` does) [-]
-    system : str or None
-        Force ``"gost"`` or ``"iso"`` reading [-]
+    """Return the ISO designation of a bearing, or None if there is none; ``text`` and
+    ``system`` as in :func:`gost_equivalent`.
 
     >>> iso_equivalent("310"), iso_equivalent("80205")
     ('6310', '6205-2Z')
