@@ -5,6 +5,18 @@ import os
 
 import pytest
 
+#: The README's static example (``bearinglab static 6205 ...``), run by several tests.
+README_STATIC = (
+    "static",
+    "6205",
+    "--radial-load-n",
+    "1000",
+    "--axial-load-n",
+    "200",
+    "--speed-rpm",
+    "3000",
+)
+
 
 def in_ci() -> bool:
     """True under CI (CI=true), where every optional test dependency must be installed."""

@@ -2,7 +2,7 @@
 
 import numpy as np
 import pytest
-from conftest import run_json
+from conftest import README_STATIC, run_json
 
 from bearinglab.cli import main
 
@@ -19,17 +19,7 @@ BALL_KEYS = {
 
 
 def test_static_json_keys_and_equilibrium(capsys):
-    d = run_json(
-        capsys,
-        "static",
-        "6205",
-        "--radial-load-n",
-        "1000",
-        "--axial-load-n",
-        "200",
-        "--speed-rpm",
-        "3000",
-    )
+    d = run_json(capsys, *README_STATIC)
     for key in (
         "radial_displacement_um",
         "axial_displacement_um",

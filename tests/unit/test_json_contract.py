@@ -6,6 +6,7 @@ import json
 from pathlib import Path
 
 import pytest
+from conftest import README_STATIC
 
 from bearinglab.cli import main
 from bearinglab.units import DIMENSIONLESS, MAPS, contract_markdown, unit_of
@@ -18,16 +19,7 @@ COMMANDS = {
     "info-gost": ["info", "180205"],
     "frequencies": ["frequencies", "6205-2RS", "--speed-rpm", "1797"],
     "contact": ["contact", "6205", "--ball-load-n", "1000"],
-    "static": [
-        "static",
-        "6205",
-        "--radial-load-n",
-        "1000",
-        "--axial-load-n",
-        "200",
-        "--speed-rpm",
-        "3000",
-    ],
+    "static": list(README_STATIC),
     "static-orbit": [
         "static",
         "608",

@@ -4,6 +4,7 @@ stays silent on a normal one (the README's examples)."""
 import math
 
 import pytest
+from conftest import README_STATIC
 
 from bearinglab import plausibility as P
 from bearinglab.catalog import bearing_from_designation
@@ -14,6 +15,8 @@ from bearinglab.operating import OperatingCondition
 
 B, _ = bearing_from_designation("6205")
 RPM = math.pi / 30
+#: simulate's options up to the ones each bad-input case adds.
+SIM_6205 = ("simulate", "6205", "--speed-rpm", "1797", "--radial-load-n", "500")
 
 
 def test_static_safety_is_c0_over_p0():
@@ -66,12 +69,7 @@ def test_operating_warnings_of_a_condition():
         (["static", "6205", "--radial-load-n", "100", "--speed-rpm", "1e6"], "--speed-rpm"),
         (
             [
-                "simulate",
-                "6205",
-                "--speed-rpm",
-                "1797",
-                "--radial-load-n",
-                "500",
+                *SIM_6205,
                 "--defect",
                 "outer:width_mm=1",
                 "--sample-rate-hz",
@@ -81,12 +79,7 @@ def test_operating_warnings_of_a_condition():
         ),
         (
             [
-                "simulate",
-                "6205",
-                "--speed-rpm",
-                "1797",
-                "--radial-load-n",
-                "500",
+                *SIM_6205,
                 "--sample-rate-hz",
                 "10",
             ],
@@ -94,12 +87,7 @@ def test_operating_warnings_of_a_condition():
         ),
         (
             [
-                "simulate",
-                "6205",
-                "--speed-rpm",
-                "1797",
-                "--radial-load-n",
-                "500",
+                *SIM_6205,
                 "--duration-s",
                 "0.2",
                 "--sample-rate-hz",
@@ -131,22 +119,7 @@ def test_commands_name_the_option(capsys, argv, flag):
 
 
 def test_readme_static_example_has_no_plausibility_warning(capsys):
-    assert (
-        main(
-            [
-                "static",
-                "6205",
-                "--radial-load-n",
-                "1000",
-                "--axial-load-n",
-                "200",
-                "--speed-rpm",
-                "3000",
-                "--json",
-            ]
-        )
-        == 0
-    )
+    assert main([*README_STATIC, "--json"]) == 0
     import json
 
     warnings = json.loads(capsys.readouterr().out)["warnings"]
