@@ -17,6 +17,29 @@ README_STATIC = (
     "3000",
 )
 
+#: Keys of the static result's dict (``to_dict`` and ``static --json``) and of each ball's.
+STATIC_KEYS = (
+    "radial_displacement_um",
+    "axial_displacement_um",
+    "tilt_mrad",
+    "max_ball_load_n",
+    "stiffness_matrix_si",
+    "stiffness_matrix_order",
+    "radial_stiffness_n_per_um",
+    "axial_stiffness_n_per_um",
+    "balls",
+)
+STATIC_BALL_KEYS = (
+    "angle_deg",
+    "inner_load_n",
+    "outer_load_n",
+    "inner_contact_angle_deg",
+    "outer_contact_angle_deg",
+    "inner_max_pressure_gpa",
+    "outer_max_pressure_gpa",
+    "contact_points",
+)
+
 
 def in_ci() -> bool:
     """True under CI (CI=true), where every optional test dependency must be installed."""

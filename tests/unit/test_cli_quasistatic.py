@@ -2,35 +2,32 @@
 
 import numpy as np
 import pytest
-from conftest import README_STATIC, run_json
+from conftest import README_STATIC, STATIC_BALL_KEYS, STATIC_KEYS, run_json
 
 from bearinglab.cli import main
 
-BALL_KEYS = {
-    "angle_deg",
-    "inner_load_n",
-    "outer_load_n",
-    "inner_contact_angle_deg",
-    "outer_contact_angle_deg",
-    "inner_max_pressure_gpa",
-    "outer_max_pressure_gpa",
-    "contact_points",
-}
+BALL_KEYS = set(STATIC_BALL_KEYS)
+#: seed 000's ring-level inputs for bearing 310: n = 8, m_h = 0.6 kg, K_x = 150e6 N/m,
+#: kappa = 0.33, measured free-ring frequencies 1.92 / 5.34 / 10.00 kHz (m = 2, 3, 4)
+SEED000_RING = (
+    "--modes",
+    "1:4",
+    "--ring-mass-kg",
+    "0.6",
+    "--radial-stiffness-n-per-m",
+    "150e6",
+    "--free-frequencies-hz",
+    "1920,5340,10000",
+    "--ball-mass-ratio",
+    "0.33",
+    "--contact-stiffness-ratio",
+    "1",
+)
 
 
 def test_static_json_keys_and_equilibrium(capsys):
     d = run_json(capsys, *README_STATIC)
-    for key in (
-        "radial_displacement_um",
-        "axial_displacement_um",
-        "tilt_mrad",
-        "max_ball_load_n",
-        "stiffness_matrix_si",
-        "stiffness_matrix_order",
-        "radial_stiffness_n_per_um",
-        "axial_stiffness_n_per_um",
-        "balls",
-    ):
+    for key in STATIC_KEYS:
         assert key in d
     assert d["stiffness_matrix_order"] == ["x", "y", "z", "tilt_x", "tilt_y"]
     assert np.array(d["stiffness_matrix_si"]).shape == (5, 5)
@@ -134,26 +131,14 @@ def test_stiffness_map_csv_and_json(tmp_path, capsys):
 
 
 def test_ring_modes_json_with_the_paper_overrides(capsys):
-    # seed 000's bearing 310 inputs: n = 8, m_h = 0.6 kg, K_x = 150e6 N/m, kappa = 0.33,
-    # measured free-ring frequencies 1.92 / 5.34 / 10.00 kHz (m = 2, 3, 4)
+    # seed 000's bearing 310 with its ring-level inputs (SEED000_RING)
     d = run_json(
         capsys,
         "ring-modes",
         "310",
         "--system",
         "gost",
-        "--modes",
-        "1:4",
-        "--ring-mass-kg",
-        "0.6",
-        "--radial-stiffness-n-per-m",
-        "150e6",
-        "--free-frequencies-hz",
-        "1920,5340,10000",
-        "--ball-mass-ratio",
-        "0.33",
-        "--contact-stiffness-ratio",
-        "1",
+        *SEED000_RING,
     )
     modes = {m["m"]: m for m in d["modes"]}
     assert set(modes) == {1, 2, 3, 4}
@@ -166,22 +151,8 @@ def test_ring_modes_json_with_the_paper_overrides(capsys):
 
 def test_ring_modes_from_ring_level_inputs_alone(capsys):
     """Seed 000's own inputs, with no ball geometry: the same frequencies as with the 310."""
-    args = [
-        "--modes",
-        "1:4",
-        "--ring-mass-kg",
-        "0.6",
-        "--radial-stiffness-n-per-m",
-        "150e6",
-        "--free-frequencies-hz",
-        "1920,5340,10000",
-        "--ball-mass-ratio",
-        "0.33",
-        "--contact-stiffness-ratio",
-        "1",
-    ]
-    alone = run_json(capsys, "ring-modes", "--balls", "8", *args)
-    with_bearing = run_json(capsys, "ring-modes", "310", "--system", "gost", *args)
+    alone = run_json(capsys, "ring-modes", "--balls", "8", *SEED000_RING)
+    with_bearing = run_json(capsys, "ring-modes", "310", "--system", "gost", *SEED000_RING)
     assert alone["modes"] == with_bearing["modes"] and alone["bearing"] is None
 
 
