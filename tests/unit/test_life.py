@@ -56,6 +56,18 @@ def deep_groove(**kw):
     return BallBearing(**args)
 
 
+def thrust_ball(**kw):
+    args = {
+        "ball_count": 12,
+        "ball_diameter": 6e-3,
+        "pitch_diameter": 40e-3,
+        "contact_angle": math.pi / 2,
+        "bearing_type": "thrust_ball",
+    }
+    args.update(kw)
+    return BallBearing(**args)
+
+
 # ------------------------------------------------------------------ the tables themselves
 def _hertz_load_at(stress, rx, ry, e_prime):
     return optimize.brentq(
@@ -199,13 +211,7 @@ def test_load_ratings_of_catalogue_bearings_and_warnings():
     loose = load_ratings(deep_groove(outer_groove_factor=0.55))
     assert any("0.53 D_w" in w for w in loose.warnings)
     assert loose.dynamic == load_ratings(deep_groove()).dynamic  # no correction applied
-    thrust = BallBearing(
-        ball_count=12,
-        ball_diameter=6e-3,
-        pitch_diameter=40e-3,
-        contact_angle=math.pi / 2,
-        bearing_type="thrust_ball",
-    )
+    thrust = thrust_ball()
     rt = load_ratings(thrust)
     assert rt.thrust and any("single" in w for w in rt.warnings)
 
@@ -215,13 +221,7 @@ def test_load_ratings_of_catalogue_bearings_and_warnings():
     [
         (deep_groove(bearing_type="four_point_contact_ball", contact_angle=0.6), "bearing_type"),
         (
-            BallBearing(
-                ball_count=12,
-                ball_diameter=6e-3,
-                pitch_diameter=40e-3,
-                contact_angle=1.2,
-                bearing_type="thrust_ball",
-            ),
+            thrust_ball(contact_angle=1.2),
             "contact_angle",
         ),
         (BallBearing(ball_count=3, ball_diameter=20e-3, pitch_diameter=40e-3), "gamma"),
@@ -284,13 +284,7 @@ def test_static_equivalent_load():
     assert static_load_factors(math.radians(25)) == (0.5, 0.38)
     with pytest.raises(InputError):
         static_load_factors(math.radians(3))
-    thrust = BallBearing(
-        ball_count=12,
-        ball_diameter=6e-3,
-        pitch_diameter=40e-3,
-        contact_angle=math.pi / 2,
-        bearing_type="thrust_ball",
-    )
+    thrust = thrust_ball()
     assert equivalent_static_load(thrust, 0.0, 800.0) == 800.0
     with pytest.raises(InputError, match="radial_load"):
         equivalent_dynamic_load(thrust, 100.0, 800.0)
@@ -432,13 +426,7 @@ def test_rating_life_refuses_conditions():
 
 
 def test_thrust_bearing_life_has_no_a_iso():
-    thrust = BallBearing(
-        ball_count=12,
-        ball_diameter=6e-3,
-        pitch_diameter=40e-3,
-        contact_angle=math.pi / 2,
-        bearing_type="thrust_ball",
-    )
+    thrust = thrust_ball()
     r = rating_life(
         thrust, OperatingCondition(axial_load=1000.0, shaft_speed=1000 * RPM), viscosity=50e-6
     )
@@ -547,6 +535,10 @@ KEYS = {
 }
 
 
+#: The life command's usual case, before the options each test adds.
+LOADED_6205 = ("6205", "--speed-rpm", "1500", "--radial-load-n", "2000")
+
+
 def run_json(capsys, *args):
     return conftest.run_json(capsys, "life", *args)
 
@@ -554,11 +546,7 @@ def run_json(capsys, *args):
 def test_cli_life_json(capsys):
     d = run_json(
         capsys,
-        "6205",
-        "--speed-rpm",
-        "1500",
-        "--radial-load-n",
-        "2000",
+        *LOADED_6205,
         "--axial-load-n",
         "300",
         "--viscosity-mm2-s",
@@ -570,15 +558,11 @@ def test_cli_life_json(capsys):
     assert d["dynamic_rating_n"] == pytest.approx(14027, rel=1e-4)
     assert d["l10_million_rev"] == pytest.approx((d["dynamic_rating_n"] / 2000) ** 3)
     assert d["a_iso"] > 1 and d["l10m_hours"] > d["l10_hours"]
-    bare = run_json(capsys, "6205", "--speed-rpm", "1500", "--radial-load-n", "2000")
+    bare = run_json(capsys, *LOADED_6205)
     assert bare["a_iso"] is None and bare["kappa"] is None and bare["l10m_hours"] is None
     num = run_json(
         capsys,
-        "6205",
-        "--speed-rpm",
-        "1500",
-        "--radial-load-n",
-        "2000",
+        *LOADED_6205,
         "--viscosity-mm2-s",
         "30",
         "--contamination",
@@ -592,11 +576,7 @@ def test_cli_life_json(capsys):
 def test_cli_life_iso16281(capsys):
     d = run_json(
         capsys,
-        "6205",
-        "--speed-rpm",
-        "1500",
-        "--radial-load-n",
-        "2000",
+        *LOADED_6205,
         "--method",
         "iso16281",
         "--misalignment-mrad",
@@ -716,15 +696,14 @@ def test_both_ratings_given_rate_a_geometry_iso_cannot():
 
 
 def test_cli_life_given_ratings(capsys):
-    args = ("6205", "--speed-rpm", "1500", "--radial-load-n", "2000")
-    base = run_json(capsys, *args, "--method", "iso16281")
-    d = run_json(capsys, *args, "--method", "iso16281", "--dynamic-load-rating-kn", "14.8")
+    base = run_json(capsys, *LOADED_6205, "--method", "iso16281")
+    d = run_json(capsys, *LOADED_6205, "--method", "iso16281", "--dynamic-load-rating-kn", "14.8")
     assert d["dynamic_rating_n"] == 14800.0 and d["dynamic_rating_source"].startswith("given")
     assert d["static_rating_source"].startswith("ISO 76")
     assert d["l10_million_rev"] == pytest.approx(
         base["l10_million_rev"] * (14800.0 / base["dynamic_rating_n"]) ** 3, rel=1e-9
     )
-    assert main(["life", *args, "--static-load-rating-kn", "7.8"]) == 0
+    assert main(["life", *LOADED_6205, "--static-load-rating-kn", "7.8"]) == 0
     text = capsys.readouterr().out
     assert "C0: given (ISO 76:2006" in text and "C: ISO 281:2007" in text
 
