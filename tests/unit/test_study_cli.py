@@ -10,8 +10,7 @@ from bearinglab.cli import main
 
 def test_study_on_the_default_localcluster(tmp_path, capsys):
     out = tmp_path / "stiffness-6205"
-    d = run_json(
-        capsys,
+    study = (
         "study",
         "stiffness",
         "--set",
@@ -22,6 +21,10 @@ def test_study_on_the_default_localcluster(tmp_path, capsys):
         "speed_rpm=0,6000",
         "-o",
         str(out),
+    )
+    d = run_json(
+        capsys,
+        *study,
         "--workers",
         "2",
         "--plot",
@@ -33,19 +36,7 @@ def test_study_on_the_default_localcluster(tmp_path, capsys):
     assert len(table) == 10 and "radial_stiffness_n_per_um" in table.columns
     assert (tmp_path / "map.png").stat().st_size > 0
     # rerun: everything is there already
-    again = run_json(
-        capsys,
-        "study",
-        "stiffness",
-        "--set",
-        "designation=6205",
-        "--set",
-        "radial_load_n=0:2000:5",
-        "--set",
-        "speed_rpm=0,6000",
-        "-o",
-        str(out),
-    )
+    again = run_json(capsys, *study)
     assert again["partitions_computed"] == 0 and again["partitions_reused"] == d["partitions"]
 
 
@@ -154,13 +145,14 @@ def test_bad_input_is_one_line_and_exit_2(tmp_path, capsys, args, words):
 
 def test_a_folder_holding_another_study_is_kept(tmp_path, capsys):
     out = tmp_path / "held"
-    assert (
-        main(
+
+    def study(designation):
+        return main(
             [
                 "study",
                 "frequencies",
                 "--set",
-                "designation=6205",
+                f"designation={designation}",
                 "--set",
                 "speed_rpm=1000",
                 "-o",
@@ -169,27 +161,11 @@ def test_a_folder_holding_another_study_is_kept(tmp_path, capsys):
                 "serial",
             ]
         )
-        == 0
-    )
+
+    assert study("6205") == 0
     before = {p.name: p.read_bytes() for p in out.iterdir()}
     capsys.readouterr()
-    assert (
-        main(
-            [
-                "study",
-                "frequencies",
-                "--set",
-                "designation=6206",
-                "--set",
-                "speed_rpm=1000",
-                "-o",
-                str(out),
-                "--scheduler",
-                "serial",
-            ]
-        )
-        == 2
-    )
+    assert study("6206") == 2
     err = capsys.readouterr().err
     assert "different study" in err and err.count("\n") == 1
     assert {p.name: p.read_bytes() for p in out.iterdir()} == before
