@@ -51,12 +51,29 @@ BEARING = BallBearing(
 )
 
 
+def _contact_state(p, b, c_rho, c_z, balls=slice(None)):
+    """The compiled contact state of ``balls`` at centres ``b`` (rho, z), with the
+    problem's contact constants."""
+    cs = p.contacts
+    return _kernels.contact_state(
+        b[:, 0],
+        b[:, 1],
+        c_rho[balls],
+        c_z[balls],
+        p.free[balls],
+        cs.groove_radius,
+        cs.side,
+        cs.z0,
+        cs.k_poly,
+        p.film[balls],
+    )
+
+
 def fsolve_reference(bearing, condition):
     """Seed 001's scheme with SciPy: for trial ring displacements (x, y, z), solve every
     ball's equilibrium with scipy.optimize.fsolve, and the ring's with an outer fsolve
     (finite-difference Jacobians in both), with the same contact law."""
     p = _Problem(bearing, condition, condition.radial_load_angle, None, None)
-    cs = p.contacts
     balls = {"b": None}
 
     def ring_force(q, n_rho, n_z):
@@ -65,18 +82,7 @@ def fsolve_reference(bearing, condition):
         return np.einsum("jkab,jka->b", p.t[:, inner], g)
 
     def ball_forces(b, c_rho, c_z, j):
-        q, n_rho, n_z, _, _ = _kernels.contact_state(
-            np.array([b[0]]),
-            np.array([b[1]]),
-            c_rho[j : j + 1],
-            c_z[j : j + 1],
-            p.free[j : j + 1],
-            cs.groove_radius,
-            cs.side,
-            cs.z0,
-            cs.k_poly,
-            p.film[j : j + 1],
-        )
+        q, n_rho, n_z, _, _ = _contact_state(p, np.array([b]), c_rho, c_z, slice(j, j + 1))
         return q, n_rho, n_z
 
     def ring_residual(x):
@@ -92,18 +98,7 @@ def fsolve_reference(bearing, condition):
 
             b[j] = optimize.fsolve(f, b[j], xtol=1e-12)
         balls["b"] = b
-        state = _kernels.contact_state(
-            b[:, 0],
-            b[:, 1],
-            c_rho,
-            c_z,
-            p.free,
-            cs.groove_radius,
-            cs.side,
-            cs.z0,
-            cs.k_poly,
-            p.film,
-        )
+        state = _contact_state(p, b, c_rho, c_z)
         return (p.load + ring_force(*state[:3]))[:3]
 
     u0 = initial_ring_guess(p)
@@ -121,7 +116,6 @@ def flat_fsolve_reference(bearing, condition):
     """The most straightforward form: every unknown (ring x, y, z in um, each ball's rho, z
     offset in um) in one scipy.optimize.fsolve from the same start as ours."""
     p = _Problem(bearing, condition, condition.radial_load_angle, None, None)
-    cs = p.contacts
     z = bearing.ball_count
 
     def residual(x):
@@ -129,18 +123,7 @@ def flat_fsolve_reference(bearing, condition):
         u[:3] = x[:3] * 1e-6
         b = x[3:].reshape(z, 2) * 1e-6 + np.array([0.5 * bearing.pitch_diameter, 0.0])
         c_rho, c_z = p.centres(u)
-        q, n_rho, n_z, _, _ = _kernels.contact_state(
-            b[:, 0],
-            b[:, 1],
-            c_rho,
-            c_z,
-            p.free,
-            cs.groove_radius,
-            cs.side,
-            cs.z0,
-            cs.k_poly,
-            p.film,
-        )
+        q, n_rho, n_z, _, _ = _contact_state(p, b, c_rho, c_z)
         balls = np.stack([p.fc - np.sum(q * n_rho, 1), -np.sum(q * n_z, 1)], 1)
         force = np.einsum(
             "jkab,jka->b",
