@@ -138,6 +138,24 @@ def test_a_section_that_needs_a_failed_one_says_so(monkeypatch):
     assert "needs the load distribution, which failed" in r.failed[1].error
 
 
+def _report_json(path, radial_load_n: str) -> int:
+    """The command's exit code for the 6205 at 1797 rpm with default durations, written to
+    ``path`` with --json."""
+    return main(
+        [
+            "report",
+            "6205",
+            "--speed-rpm",
+            "1797",
+            "--radial-load-n",
+            radial_load_n,
+            "-o",
+            str(path),
+            "--json",
+        ]
+    )
+
+
 def test_failed_sections_exit_1_with_the_page_written(monkeypatch, capsys, tmp_path):
     """A report with failed sections is still written and lists them, but the command's
     exit code says it is incomplete (issue 14)."""
@@ -150,19 +168,7 @@ def test_failed_sections_exit_1_with_the_page_written(monkeypatch, capsys, tmp_p
         report_builder, "SECTIONS", (("load-distribution", "Load distribution", broken), contact)
     )
     path = tmp_path / "r.html"
-    code = main(
-        [
-            "report",
-            "6205",
-            "--speed-rpm",
-            "1797",
-            "--radial-load-n",
-            "1000",
-            "-o",
-            str(path),
-            "--json",
-        ]
-    )
+    code = _report_json(path, "1000")
     d = json.loads(capsys.readouterr().out)
     assert code == 1 and path.exists()
     assert [f["section"] for f in d["failed_sections"]] == ["load-distribution", "contact"]
@@ -173,19 +179,7 @@ def test_plausibility_warnings_on_the_page_and_in_json(capsys, tmp_path):
     path = tmp_path / "r.html"
     with pytest.MonkeyPatch.context() as mp:
         mp.setattr(report_builder, "SECTIONS", tuple(monkey_sections))
-        code = main(
-            [
-                "report",
-                "6205",
-                "--speed-rpm",
-                "1797",
-                "--radial-load-n",
-                "10000",
-                "-o",
-                str(path),
-                "--json",
-            ]
-        )
+        code = _report_json(path, "10000")
     d = json.loads(capsys.readouterr().out)
     assert code == 0
     assert any("s0 = C0/P0 = 0.789" in w for w in d["warnings"])
