@@ -268,21 +268,22 @@ def test_film_thickness_is_vectorised_over_load_and_speed():
 
 
 # ---------------------------------------------------------------- seed 004, eq. (6)
+#: Seed 004's contact, in SI units.
+SEED004_CONTACT = {
+    "load": 300.0,
+    "entrainment_speed": 2.35,
+    "rx": 3.18e-3,
+    "ry": 0.104,
+    "effective_modulus": 2.286e11,
+    "viscosity": 0.04,
+    "pressure_viscosity_coefficient": 1.48e-8,
+}
 
 
 def test_seed004_film_as_printed_and_corrected():
-    args = {
-        "load": 300.0,
-        "entrainment_speed": 2.35,
-        "rx": 3.18e-3,
-        "ry": 0.104,
-        "effective_modulus": 2.286e11,
-        "viscosity": 0.04,
-        "pressure_viscosity_coefficient": 1.48e-8,
-    }
-    printed = float(ehl.seed004_film_thickness(**args))
-    fixed = float(ehl.seed004_film_thickness(**args, radius_exponent=0.466))
-    hd = float(ehl.hamrock_dowson_film(**args, kind="minimum"))
+    printed = float(ehl.seed004_film_thickness(**SEED004_CONTACT))
+    fixed = float(ehl.seed004_film_thickness(**SEED004_CONTACT, radius_exponent=0.466))
+    hd = float(ehl.hamrock_dowson_film(**SEED004_CONTACT, kind="minimum"))
     # With p = 0.466 the seed's formula is Hamrock-Dowson's minimum with 3.06 for 3.63 and
     # both ellipticity factors ~1 here (R_y/R_x = 33): 3.06/3.63 = 0.843.
     assert fixed / hd == pytest.approx(3.06 / 3.63, rel=3e-3)
@@ -291,15 +292,7 @@ def test_seed004_film_as_printed_and_corrected():
 
 
 def test_seed004_printed_exponent_is_not_dimensionally_consistent():
-    si = {
-        "load": 300.0,
-        "entrainment_speed": 2.35,
-        "rx": 3.18e-3,
-        "ry": 0.104,
-        "effective_modulus": 2.286e11,
-        "viscosity": 0.04,
-        "pressure_viscosity_coefficient": 1.48e-8,
-    }
+    si = SEED004_CONTACT
     mm = {
         "load": 300.0,
         "entrainment_speed": 2350.0,
