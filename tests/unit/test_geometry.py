@@ -173,27 +173,22 @@ def test_thrust_ball_bearing_at_90_degrees_has_finite_derived_quantities():
 
 
 def test_thrust_balls_must_clear_the_shaft():
-    with pytest.raises(InputError) as err:
-        BallBearing(
+    def thrust(pitch_diameter):
+        return BallBearing(
             ball_count=12,
             ball_diameter=6e-3,
-            pitch_diameter=30e-3,
+            pitch_diameter=pitch_diameter,
             contact_angle=math.pi / 2,
             bore=25e-3,
             outside_diameter=42e-3,
             bearing_type="thrust_ball",
         )
+
+    with pytest.raises(InputError) as err:
+        thrust(30e-3)
     assert err.value.parameter == "pitch_diameter" and "shaft" in str(err.value)
     with pytest.raises(InputError, match="less than the outside diameter"):
-        BallBearing(
-            ball_count=12,
-            ball_diameter=6e-3,
-            pitch_diameter=43e-3,
-            contact_angle=math.pi / 2,
-            bore=25e-3,
-            outside_diameter=42e-3,
-            bearing_type="thrust_ball",
-        )
+        thrust(43e-3)
 
 
 @pytest.mark.parametrize(

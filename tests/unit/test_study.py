@@ -97,28 +97,25 @@ def test_life_and_frequencies_from_a_case_file(tmp_path):
     direct = rating_life(b, OperatingCondition(radial_load=2000.0, shaft_speed=3000 * math.pi / 30))
     assert table.loc[1, "l10_hours"] == pytest.approx(direct.l10_hours, rel=1e-12)
     assert table.loc[2, "error"].startswith("radial_load") and pd.isna(table.loc[2, "l10_hours"])
-    f = run_study(
-        "frequencies",
-        {"designation": "6205", "speed_rpm": "uniform:1000:2000"},
-        output=tmp_path / "f",
-        repeats=4,
-        seed=3,
-        scheduler="serial",
-    ).to_pandas()
+
+    def random_speeds(folder, **kw):
+        return run_study(
+            "frequencies",
+            {"designation": "6205", "speed_rpm": "uniform:1000:2000"},
+            output=tmp_path / folder,
+            repeats=4,
+            seed=3,
+            scheduler="serial",
+            **kw,
+        ).to_pandas()
+
+    f = random_speeds("f")
     assert f["speed_rpm"].nunique() == 4 and f["speed_rpm"].between(1000, 2000).all()
     kin = defect_frequencies(
         bearing_from_designation("6205")[0], f.loc[2, "speed_rpm"] * math.pi / 30
     )
     assert f.loc[2, "bpfo_hz"] == pytest.approx(kin.hz("bpfo"), rel=1e-12)
-    again = run_study(
-        "frequencies",
-        {"designation": "6205", "speed_rpm": "uniform:1000:2000"},
-        output=tmp_path / "f2",
-        repeats=4,
-        seed=3,
-        partition_size=3,
-        scheduler="serial",
-    ).to_pandas()
+    again = random_speeds("f2", partition_size=3)
     # a case's random inputs depend on (seed, case) only, not on the partitioning
     pd.testing.assert_frame_equal(f, again)
 
@@ -261,32 +258,26 @@ def test_limits_unreachable_scheduler_and_a_different_study(tmp_path):
     assert time.monotonic() - start < 10 and not (tmp_path / "y").exists()
     with pytest.raises(InputError, match="tcp://HOST:PORT"):
         run_study("stiffness", GRID, output=tmp_path / "z", scheduler="my-cluster")
-    run_study(
-        "frequencies",
-        {"designation": "6205", "speed_rpm": 1000.0},
-        output=tmp_path / "held",
-        scheduler="serial",
-    )
+
+    def frequencies(speed_rpm, folder):
+        run_study(
+            "frequencies",
+            {"designation": "6205", "speed_rpm": speed_rpm},
+            output=tmp_path / folder,
+            scheduler="serial",
+        )
+
+    frequencies(1000.0, "held")
     before = sorted(p.name for p in (tmp_path / "held").iterdir())
     marker = json.loads((tmp_path / "held" / "_study.json").read_text())
     with pytest.raises(InputError, match="different study"):
-        run_study(
-            "frequencies",
-            {"designation": "6205", "speed_rpm": 2000.0},
-            output=tmp_path / "held",
-            scheduler="serial",
-        )
+        frequencies(2000.0, "held")
     assert sorted(p.name for p in (tmp_path / "held").iterdir()) == before
     assert json.loads((tmp_path / "held" / "_study.json").read_text()) == marker
     (tmp_path / "other").mkdir()
     (tmp_path / "other" / "notes.txt").write_text("mine")
     with pytest.raises(InputError, match="other files"):
-        run_study(
-            "frequencies",
-            {"designation": "6205", "speed_rpm": 1000.0},
-            output=tmp_path / "other",
-            scheduler="serial",
-        )
+        frequencies(1000.0, "other")
 
 
 def test_plot_one_output_over_two_inputs(tmp_path):
