@@ -130,23 +130,17 @@ def speed_warnings(
     InputError
         Named ``shaft_speed``, above :func:`bearinglab.quasistatic.speed_limit`.
     """
-    from .quasistatic import MAX_SPEED_FACTOR, centrifugal_force
+    from .quasistatic import centrifugal_force, check_speed
 
     if shaft_speed == 0:
         return []
+    check_speed(
+        bearing,
+        shaft_speed,
+        "beyond it the balls' centrifugal force swamps the contact loads "
+        "and no model here is valid",
+    )
     ndm = speed_factor(bearing, shaft_speed)
-    rpm = abs(rad_s_to_rpm(shaft_speed))
-    if ndm > MAX_SPEED_FACTOR * (1 + 1e-12):
-        top = MAX_SPEED_FACTOR / (bearing.pitch_diameter * 1e3)
-        raise InputError(
-            "shaft_speed",
-            f"{rpm:.6g} rpm",
-            f"at most {top:.6g} rpm for this bearing (n d_m <= "
-            f"{MAX_SPEED_FACTOR:.0e} mm/min with d_m = "
-            f"{bearing.pitch_diameter * 1e3:.4g} mm)",
-            "beyond it the balls' centrifugal force swamps the contact loads "
-            "and no model here is valid",
-        )
     out = []
     if ndm > HIGH_SPEED_FACTOR:
         out.append(

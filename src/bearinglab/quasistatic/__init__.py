@@ -55,6 +55,27 @@ def speed_limit(bearing: BallBearing) -> float:
     return MAX_SPEED_FACTOR / (bearing.pitch_diameter * 1e3) * math.pi / 30.0
 
 
+def check_speed(
+    bearing: BallBearing,
+    shaft_speed: float,
+    hint: str = "beyond it the quasi-static model is not valid: centrifugal force "
+    "swamps the contact loads",
+) -> None:
+    """Refuse a shaft speed [rad/s] above :func:`speed_limit` (InputError named
+    ``shaft_speed``, the limit in rpm); ``hint`` says why."""
+    limit = speed_limit(bearing)
+    if abs(shaft_speed) > limit * (1 + 1e-12):
+        rpm, top = abs(shaft_speed) * 30 / math.pi, limit * 30 / math.pi
+        raise InputError(
+            "shaft_speed",
+            f"{rpm:.6g} rpm",
+            f"at most {top:.6g} rpm for this bearing (n d_m <= "
+            f"{MAX_SPEED_FACTOR:.0e} mm/min with d_m = "
+            f"{bearing.pitch_diameter * 1e3:.4g} mm)",
+            hint,
+        )
+
+
 def solve_load_distribution(
     bearing: BallBearing,
     condition: OperatingCondition,
@@ -124,18 +145,7 @@ def solve_load_distribution(
     """
     if race_control not in RACE_CONTROLS:
         raise InputError("race_control", race_control, " or ".join(map(repr, RACE_CONTROLS)))
-    limit = speed_limit(bearing)
-    if condition.shaft_speed > limit * (1 + 1e-12):
-        rpm, top = condition.shaft_speed * 30 / math.pi, limit * 30 / math.pi
-        raise InputError(
-            "shaft_speed",
-            f"{rpm:.6g} rpm",
-            f"at most {top:.6g} rpm for this bearing (n d_m <= "
-            f"{MAX_SPEED_FACTOR:.0e} mm/min with d_m = "
-            f"{bearing.pitch_diameter * 1e3:.4g} mm)",
-            "beyond it the quasi-static model is not valid: centrifugal force "
-            "swamps the contact loads",
-        )
+    check_speed(bearing, condition.shaft_speed)
     if ring_expansion and condition.shaft_speed > 0:
         shrink = 2.0 * inner_ring_expansion(bearing, condition.shaft_speed)
         bearing = dataclasses.replace(
