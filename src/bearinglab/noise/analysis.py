@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 from ..units import rad_s_to_rpm
 from .bands import BAND_NAMES, BearingVelocityBands, bearing_velocity_bands
 from .bearing import BearingNoise, bearing_noise
-from .model import FieldPoint, check_field_point, default_field_point
+from .model import as_field_point, check_field_point, default_field_point
 from .result import LEVELS
 
 #: Lines of the pressure spectrum kept, and the highest harmonic matched.
@@ -247,13 +247,7 @@ def noise_analysis(
             raise InputError(
                 "angle", angle, "None when a point is given (its angle is the point's)"
             )
-        if not isinstance(point, FieldPoint):
-            try:
-                point = FieldPoint(*point)
-            except TypeError:
-                raise InputError(
-                    "point", point, "a FieldPoint or (distance [m], angle [rad])"
-                ) from None
+        point = as_field_point(point)
         source = "given"
     warnings = [*operating_warnings(bearing, condition), *check_field_point(bearing, point)]
     if imperfections is None or imperfections.is_empty:

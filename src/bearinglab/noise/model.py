@@ -81,6 +81,16 @@ class FieldPoint:
 SEED003_POINT_A = FieldPoint(0.010, 0.5 * math.pi)
 
 
+def as_field_point(point) -> FieldPoint:
+    """``point`` as a FieldPoint: one already, or (distance [m], angle [rad])."""
+    if isinstance(point, FieldPoint):
+        return point
+    try:
+        return FieldPoint(*point)
+    except TypeError:
+        raise InputError("point", point, "a FieldPoint or (distance [m], angle [rad])") from None
+
+
 def outer_radius(bearing) -> tuple[float, str]:
     """Outside radius of the bearing [m] and where it comes from: D / 2, or, without an
     outside diameter, d_m / 2 + D_w (the outer raceway's radius plus half a ball: 11.4 mm

@@ -28,7 +28,7 @@ import numpy as np
 
 from ..errors import InputError
 from .field import pressures_at, velocity_spectra
-from .model import Air, FieldPoint, default_field_point
+from .model import Air, FieldPoint, as_field_point, default_field_point
 from .result import Directivity, SoundPressure
 from .sources import CYLINDER_FORMS, REFERENCE_PRESSURE
 
@@ -179,13 +179,7 @@ def sound_pressure(
     if point is None:
         point = FieldPoint() if bearing is None else default_field_point(bearing)[0]
     medium = Air() if medium is None else medium
-    if not isinstance(point, FieldPoint):
-        try:
-            point = FieldPoint(*point)
-        except TypeError:
-            raise InputError(
-                "point", point, "a FieldPoint or (distance [m], angle [rad])"
-            ) from None
+    point = as_field_point(point)
     if not isinstance(medium, Air):
         raise InputError("medium", medium, "an Air(density, sound_speed)")
     if ring_model not in CYLINDER_FORMS:
