@@ -11,7 +11,7 @@ from ..errors import InputError
 from ._app import command_app, console
 from ._inputs import JsonOpt, OptionError, SchedulerOpt, WorkersOpt
 from ._output import _emit_json, _table
-from .study import hint_of
+from .study import hint_of, run_rows
 
 app = command_app()
 
@@ -188,7 +188,6 @@ def dataset(
     if json_output:
         _emit_json(d)
         return
-    rate = d["records_per_s"]
     console.print(
         _table(
             f"data set {d['name']}",
@@ -196,16 +195,7 @@ def dataset(
             [
                 ["records written", d["records_written"], ""],
                 ["records failed", d["records_failed"], ""],
-                [
-                    "partitions computed / reused",
-                    f"{d['partitions_computed']} / {d['partitions_reused']}",
-                    "",
-                ],
-                ["wall time", d["wall_time_s"], "s"],
-                ["records per second", "-" if rate is None else rate, "1/s"],
-                ["workers", d["workers"], ""],
-                ["scheduler", d["scheduler"], ""],
-                ["output", d["output"], ""],
+                *run_rows(d, "records"),
             ],
         )
     )

@@ -224,23 +224,31 @@ def _natural_width(table) -> int:
     return Console(width=10_000).measure(table).maximum
 
 
-def _print(result, table) -> None:
-    d = result.to_dict()
-    rate = d["cases_per_s"]
-    rows = [
-        ["analysis", d["analysis"], ""],
-        ["cases", d["cases"], ""],
-        ["failed cases", d["failed_cases"], ""],
+def run_rows(d: dict, unit: str) -> list[list]:
+    """The summary rows of a run on dask (a study's or a data set's ``to_dict()``), its
+    rate in ``unit`` (cases, records) per second."""
+    rate = d[f"{unit}_per_s"]
+    return [
         [
             "partitions computed / reused",
             f"{d['partitions_computed']} / {d['partitions_reused']}",
             "",
         ],
         ["wall time", d["wall_time_s"], "s"],
-        ["cases per second", "-" if rate is None else rate, "1/s"],
+        [f"{unit} per second", "-" if rate is None else rate, "1/s"],
         ["workers", d["workers"], ""],
         ["scheduler", d["scheduler"], ""],
         ["output", d["output"], ""],
+    ]
+
+
+def _print(result, table) -> None:
+    d = result.to_dict()
+    rows = [
+        ["analysis", d["analysis"], ""],
+        ["cases", d["cases"], ""],
+        ["failed cases", d["failed_cases"], ""],
+        *run_rows(d, "cases"),
     ]
     console.print(_table("study", ["", "value", "unit"], rows))
     ok = table[table["error"].isna()]
