@@ -37,6 +37,19 @@ BASE = {
 B6205 = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3)
 
 
+def in_mm(contact):
+    """The same contact in mm, N, s: E' in N/mm^2, eta in N s/mm^2, alpha in mm^2/N."""
+    return {
+        "load": contact["load"],
+        "entrainment_speed": contact["entrainment_speed"] * 1e3,
+        "rx": contact["rx"] * 1e3,
+        "ry": contact["ry"] * 1e3,
+        "effective_modulus": contact["effective_modulus"] * 1e-6,
+        "viscosity": contact["viscosity"] * 1e-6,
+        "pressure_viscosity_coefficient": contact["pressure_viscosity_coefficient"] * 1e6,
+    }
+
+
 def film(kind="minimum", **changes):
     return float(ehl.hamrock_dowson_film(**{**BASE, **changes}, kind=kind))
 
@@ -86,16 +99,7 @@ def test_load_dependence_is_weak():
 def test_unit_system_does_not_matter(kind):
     # Dimensional consistency: the same contact in mm, N, s (E' in N/mm^2, eta in N s/mm^2,
     # alpha in mm^2/N) gives the film in mm.
-    mm = {
-        "load": 300.0,
-        "entrainment_speed": 2350.0,
-        "rx": 3.18,
-        "ry": 104.0,
-        "effective_modulus": 2.286e5,
-        "viscosity": 0.0585e-6,
-        "pressure_viscosity_coefficient": 2.5e-2,
-    }
-    h_mm = float(ehl.hamrock_dowson_film(**mm, kind=kind))
+    h_mm = float(ehl.hamrock_dowson_film(**in_mm(BASE), kind=kind))
     assert h_mm == pytest.approx(film(kind) * 1e3, rel=1e-12)
 
 
@@ -268,16 +272,8 @@ def test_film_thickness_is_vectorised_over_load_and_speed():
 
 
 # ---------------------------------------------------------------- seed 004, eq. (6)
-#: Seed 004's contact, in SI units.
-SEED004_CONTACT = {
-    "load": 300.0,
-    "entrainment_speed": 2.35,
-    "rx": 3.18e-3,
-    "ry": 0.104,
-    "effective_modulus": 2.286e11,
-    "viscosity": 0.04,
-    "pressure_viscosity_coefficient": 1.48e-8,
-}
+#: Seed 004's contact: BASE's with its lubricant, in SI units.
+SEED004_CONTACT = {**BASE, "viscosity": 0.04, "pressure_viscosity_coefficient": 1.48e-8}
 
 
 def test_seed004_film_as_printed_and_corrected():
@@ -293,15 +289,7 @@ def test_seed004_film_as_printed_and_corrected():
 
 def test_seed004_printed_exponent_is_not_dimensionally_consistent():
     si = SEED004_CONTACT
-    mm = {
-        "load": 300.0,
-        "entrainment_speed": 2350.0,
-        "rx": 3.18,
-        "ry": 104.0,
-        "effective_modulus": 2.286e5,
-        "viscosity": 0.04e-6,
-        "pressure_viscosity_coefficient": 1.48e-2,
-    }
+    mm = in_mm(si)
     fixed = [float(ehl.seed004_film_thickness(**a, radius_exponent=0.466)) for a in (si, mm)]
     assert fixed[1] == pytest.approx(fixed[0] * 1e3, rel=1e-12)
     printed = [float(ehl.seed004_film_thickness(**a)) for a in (si, mm)]
