@@ -59,6 +59,18 @@ def _save_plot(result, plot: Path) -> None:
         ) from None
 
 
+def _plot_and_emit(out: dict, json_output: bool, result, plot: Path | None) -> bool:
+    """Draw ``result`` to ``plot`` when one is given, then print ``out`` as JSON (True: the
+    command is done) or check that it is finite for the tables (False)."""
+    if plot is not None:
+        _save_plot(result, plot)
+    if json_output:
+        _emit_json(out)
+        return True
+    _check_finite(out)
+    return False
+
+
 def _fmt(value, digits: int = 4) -> str:
     if value is None or (isinstance(value, float) and math.isnan(value)):
         return "-"

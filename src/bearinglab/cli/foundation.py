@@ -37,8 +37,8 @@ from ._inputs import (
 from ._output import (
     _check_finite,
     _emit_json,
+    _plot_and_emit,
     _References,
-    _save_plot,
     _table,
 )
 
@@ -268,12 +268,8 @@ def frequencies(
     f = defect_frequencies(bearing, shaft_speed, outer_rotating=outer_rotating)
     warnings = _geometry_warnings(bearing)
     out = {"designation": designation, **f.to_dict(), "warnings": warnings}
-    if plot is not None:
-        _save_plot(f, plot)
-    if json_output:
-        _emit_json(out)
+    if _plot_and_emit(out, json_output, f, plot):
         return
-    _check_finite(out)
     ring = "outer" if outer_rotating else "inner"
     console.print(
         _table(
@@ -328,12 +324,8 @@ def contact(
     d = result.to_dict()
     d["warnings"] = _geometry_warnings(bearing) + d["warnings"]
     out = {"designation": designation, **d}
-    if plot is not None:
-        _save_plot(result, plot)
-    if json_output:
-        _emit_json(out)
+    if _plot_and_emit(out, json_output, result, plot):
         return
-    _check_finite(out)
     rows = []
     for key, label, unit in (
         ("semi_major_mm", "semi-major axis a", "mm"),

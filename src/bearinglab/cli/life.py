@@ -30,7 +30,7 @@ from ._inputs import (
     check_loads,
     speed_rad_s,
 )
-from ._output import _check_finite, _emit_json, _save_plot, _table
+from ._output import _plot_and_emit, _table
 
 app = command_app()
 
@@ -246,12 +246,8 @@ def life_command(
         raise OptionError(flag, typed[exc.parameter], exc.allowed, exc.hint) from None
     d = result.to_dict()
     out = {"designation": designation, **d, "warnings": _geometry_warnings(bearing) + d["warnings"]}
-    if plot is not None:
-        _save_plot(result, plot)
-    if json_output:
-        _emit_json(out)
+    if _plot_and_emit(out, json_output, result, plot):
         return
-    _check_finite(out)
     _print(result, out, bearing)
 
 
