@@ -39,18 +39,9 @@ def test_static_json_keys_and_equilibrium(capsys):
 
 
 def test_static_film_and_orbit(capsys):
-    dry = run_json(capsys, "static", "6205", "--radial-load-n", "1000", "--speed-rpm", "6000")
-    wet = run_json(
-        capsys,
-        "static",
-        "6205",
-        "--radial-load-n",
-        "1000",
-        "--speed-rpm",
-        "6000",
-        "--film",
-        "--orbit",
-    )
+    args = ("static", "6205", "--radial-load-n", "1000", "--speed-rpm", "6000")
+    dry = run_json(capsys, *args)
+    wet = run_json(capsys, *args, "--film", "--orbit")
     # the film is a layer between the surfaces: it takes up play, the ring moves less
     assert wet["radial_displacement_um"] < dry["radial_displacement_um"]
     assert wet["orbit_peak_to_peak_um"] > 0 and len(wet["orbit"]["x_um"]) > 10
@@ -157,18 +148,9 @@ def test_ring_modes_from_ring_level_inputs_alone(capsys):
 
 
 def test_ring_modes_with_the_load_distribution_stiffness(capsys):
-    closed = run_json(capsys, "ring-modes", "6310", "--axial-load-n", "200", "--modes", "2:3")
-    solved = run_json(
-        capsys,
-        "ring-modes",
-        "6310",
-        "--axial-load-n",
-        "200",
-        "--modes",
-        "2:3",
-        "--stiffness-from",
-        "load-distribution",
-    )
+    args = ("ring-modes", "6310", "--axial-load-n", "200", "--modes", "2:3")
+    closed = run_json(capsys, *args)
+    solved = run_json(capsys, *args, "--stiffness-from", "load-distribution")
     assert solved["sources"]["radial_stiffness"].startswith("load distribution")
     # both are the radial stiffness of the same axially loaded bearing: close, not equal
     ratio = solved["radial_stiffness_n_per_m"] / closed["radial_stiffness_n_per_m"]
