@@ -48,12 +48,19 @@ WorkersOpt = Annotated[
         show_default=False,
     ),
 ]
-PlotOpt = Annotated[
-    Path | None,
-    typer.Option(
-        "--plot", help="Also draw the result to this .png, .svg or .pdf file.", show_default=False
-    ),
-]
+
+
+def plot_option(what: str = "the result"):
+    """The --plot option of a command that draws ``what``."""
+    return Annotated[
+        Path | None,
+        typer.Option(
+            "--plot", help=f"Also draw {what} to this .png, .svg or .pdf file.", show_default=False
+        ),
+    ]
+
+
+PlotOpt = plot_option()
 DesignationArg = Annotated[
     str | None,
     typer.Argument(

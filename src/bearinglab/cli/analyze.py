@@ -21,20 +21,14 @@ from ._inputs import (
     OptionError,
     _print_warnings,
     check_path,
+    plot_option,
     positive,
     speed_rad_s,
 )
 from ._output import _emit_json, _save_plot, print_verdict
 
 app = command_app()
-PlotOpt = Annotated[
-    Path | None,
-    typer.Option(
-        "--plot",
-        help="Also draw the squared envelope spectrum to this .png, .svg or .pdf file.",
-        show_default=False,
-    ),
-]
+PlotOpt = plot_option("the squared envelope spectrum")
 #: InputError parameter of the library -> the option (or argument) to blame.
 FLAGS = {
     "path": "SIGNAL_FILE",

@@ -28,20 +28,14 @@ from ._inputs import (
     RingSpeedOpt,
     _print_warnings,
     check_loads,
+    plot_option,
     speed_rad_s,
 )
 from ._output import _plot_and_emit, _table
 
 app = command_app()
 
-PlotOpt = Annotated[
-    Path | None,
-    typer.Option(
-        "--plot",
-        help="Also draw life against load to this .png, .svg or .pdf file.",
-        show_default=False,
-    ),
-]
+PlotOpt = plot_option("life against load")
 #: Library parameter -> the option that holds it.
 _FLAGS = {
     "shaft_speed": "--speed-rpm",

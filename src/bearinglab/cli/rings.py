@@ -5,7 +5,6 @@ kappa)."""
 
 import math
 from enum import Enum
-from pathlib import Path
 from typing import Annotated
 
 import typer
@@ -26,10 +25,12 @@ from ._inputs import (
     _print_warnings,
     check_path,
     option_error,
+    plot_option,
 )
 from ._output import _emit_json, _save_plot, _table
 
 app = command_app()
+PlotOpt = plot_option("the frequencies")
 
 
 class StiffnessSource(str, Enum):
@@ -136,14 +137,7 @@ def ring_modes_command(
         ),
     ] = StiffnessSource.closed_form,
     json_output: JsonOpt = False,
-    plot: Annotated[
-        Path | None,
-        typer.Option(
-            "--plot",
-            help="Also draw the frequencies to this .png, .svg or .pdf file.",
-            show_default=False,
-        ),
-    ] = None,
+    plot: PlotOpt = None,
     *,
     geometry,
 ):

@@ -40,6 +40,7 @@ from ._inputs import (
     check_loads,
     check_path,
     option_error,
+    plot_option,
     positive,
     save_plot_figure,
     speed_rad_s,
@@ -54,6 +55,7 @@ from ._output import (
 )
 
 app = command_app()
+PlotOpt = plot_option("the envelope spectrum (acc_y) and the plain spectrum (--spectrum-channel)")
 
 
 class Model(str, Enum):
@@ -169,15 +171,7 @@ def simulate_command(
         ),
     ] = None,
     json_output: JsonOpt = False,
-    plot: Annotated[
-        Path | None,
-        typer.Option(
-            "--plot",
-            help="Also draw the envelope spectrum (acc_y) and the plain spectrum "
-            "(--spectrum-channel) to this .png, .svg or .pdf file.",
-            show_default=False,
-        ),
-    ] = None,
+    plot: PlotOpt = None,
     *,
     geometry,
 ):
