@@ -25,7 +25,6 @@ from .solver import (
     CENTRIFUGAL_FLOOR,
     DOF_NAMES,
     RACE_CONTROLS,
-    _Problem,
     centrifugal_force,
     inner_ring_expansion,
     solve,
@@ -220,21 +219,21 @@ def _solve_coupled(
     loads) and, for ``hybrid``, which race controls each ball. (The cage speed of balls
     not driven by both races, the mean orbital speed of those that are, is settled inside
     the ball kernel.)"""
-    if ball_phase is None:
-        ball_phase = condition.radial_load_angle
-    problem = _Problem(
+    u, b, state, problem, _ = solve(
         bearing,
         condition,
-        float(ball_phase),
-        ball_diameter_errors,
-        film,
+        ball_phase=ball_phase,
+        ball_diameter_errors=ball_diameter_errors,
+        film=film,
+        tolerance=tolerance,
+        initial=initial,
         gyroscopic=gyroscopic,
         race_control=race_control,
     )
-    kwargs = {"tolerance": tolerance, "problem": problem}
-    u, b, state, problem, _ = solve(bearing, condition, initial=initial, **kwargs)
     if condition.shaft_speed <= 0:
         return u, b, state, problem
+    # the re-solves below keep this problem, its film and raceway control updated in place
+    kwargs = {"tolerance": tolerance, "problem": problem}
     with_film = lubricant is not None and film is None
     for _ in range(30):
         changed = False
