@@ -39,6 +39,23 @@ from bearinglab.life import equivalent_dynamic_load, load_ratings
 
 RPM = math.pi / 30.0
 C62 = deep_groove_constants("62")
+#: SKF-model command lines the CLI tests extend: a sealed 6205-2RS, a 7206 with its own
+#: geometry constants, and a 6205 at 10 rpm for the input checks.
+SKF_6205_2RS = ("6205-2RS", "--speed-rpm", "3000", "--radial-load-n", "1000", "--model", "skf")
+SKF_7206 = (
+    "7206",
+    "--speed-rpm",
+    "3000",
+    "--radial-load-n",
+    "1000",
+    "--model",
+    "skf",
+    "--skf-constants",
+    "5e-7,2,1e-2,0.7,2e-12,2e-12",
+)
+SKF_SLOW = ("6205", "--speed-rpm", "10", "--model", "skf")
+#: A bearing given by its bore and outside diameter alone (25 x 52 mm), at 10 rpm.
+BORE_AND_OD = ("--bore-mm", "25", "--outside-diameter-mm", "52", "--speed-rpm", "10")
 
 
 def skf_by_hand(
@@ -381,19 +398,7 @@ def test_cli_constant_json(capsys):
 
 
 def test_cli_skf_json(capsys):
-    args = (
-        "6205-2RS",
-        "--speed-rpm",
-        "3000",
-        "--radial-load-n",
-        "1000",
-        "--model",
-        "skf",
-        "--viscosity-mm2-s",
-        "20",
-        "--lubrication",
-        "grease",
-    )
+    args = (*SKF_6205_2RS, "--viscosity-mm2-s", "20", "--lubrication", "grease")
     d = run_json(capsys, *args)
     ref = skf_by_hand(3000, 20, 25, 52, 1000, C62.r1, C62.r2, C62.s1, C62.s2)
     assert d["friction_torque_n_mm"] == pytest.approx(ref, rel=1e-9)
@@ -474,22 +479,7 @@ def test_cli_axial_and_other_types(capsys):
         "tapered_roller",
     )
     assert plain["friction_coefficient"] == 0.0020
-    ac = run_json(
-        capsys,
-        "7206",
-        "--speed-rpm",
-        "3000",
-        "--radial-load-n",
-        "1000",
-        "--axial-load-n",
-        "500",
-        "--model",
-        "skf",
-        "--viscosity-mm2-s",
-        "20",
-        "--skf-constants",
-        "5e-7,2,1e-2,0.7,2e-12,2e-12",
-    )
+    ac = run_json(capsys, *SKF_7206, "--axial-load-n", "500", "--viscosity-mm2-s", "20")
     assert ac["k_z"] == 4.4 and ac["geometry_constants"]["r3"] == 2e-12
 
 
@@ -509,36 +499,16 @@ def test_cli_table(capsys):
     [
         (["6205", "--speed-rpm", "-1"], "--speed-rpm"),
         (["6205", "--speed-rpm", "10", "--radial-load-n", "nan"], "--radial-load-n"),
-        (
-            [
-                "--bore-mm",
-                "25",
-                "--outside-diameter-mm",
-                "52",
-                "--speed-rpm",
-                "10",
-                "--axial-load-n",
-                "10",
-            ],
-            "--axial-load-n",
-        ),
+        ([*BORE_AND_OD, "--axial-load-n", "10"], "--axial-load-n"),
         (["NU205", "--speed-rpm", "10", "--axial-load-n", "10"], "--equivalent-load-n"),
         (["1205", "--speed-rpm", "10"], "--type"),
         (["6205", "--speed-rpm", "10", "--type", "plain"], "--type"),
         (["NU205", "--speed-rpm", "10", "--model", "skf"], "use --model constant"),
         (["7206", "--speed-rpm", "10", "--model", "skf"], "--skf-constants"),
-        (
-            ["6205", "--speed-rpm", "10", "--model", "skf", "--skf-constants", "1,2"],
-            "--skf-constants",
-        ),
+        ([*SKF_SLOW, "--skf-constants", "1,2"], "--skf-constants"),
         (
             [
-                "--bore-mm",
-                "25",
-                "--outside-diameter-mm",
-                "52",
-                "--speed-rpm",
-                "10",
+                *BORE_AND_OD,
                 "--model",
                 "skf",
                 "--skf-constants",
@@ -548,39 +518,10 @@ def test_cli_table(capsys):
             ],
             "--static-load-rating-kn",
         ),
-        (
-            [
-                "6205",
-                "--speed-rpm",
-                "10",
-                "--model",
-                "skf",
-                "--axial-load-n",
-                "9000",
-                "--static-load-rating-kn",
-                "7.8",
-            ],
-            "--axial-load-n",
-        ),
-        (
-            [
-                "6205",
-                "--speed-rpm",
-                "10",
-                "--model",
-                "skf",
-                "--viscosity-mm2-s",
-                "5",
-                "--temperature-c",
-                "50",
-            ],
-            "--temperature-c",
-        ),
-        (["6205", "--speed-rpm", "10", "--model", "skf", "--lubricant", "honey"], "--lubricant"),
-        (
-            ["6205", "--speed-rpm", "10", "--model", "skf", "--viscosity-mm2-s", "0"],
-            "--viscosity-mm2-s",
-        ),
+        ([*SKF_SLOW, "--axial-load-n", "9000", "--static-load-rating-kn", "7.8"], "--axial-load-n"),
+        ([*SKF_SLOW, "--viscosity-mm2-s", "5", "--temperature-c", "50"], "--temperature-c"),
+        ([*SKF_SLOW, "--lubricant", "honey"], "--lubricant"),
+        ([*SKF_SLOW, "--viscosity-mm2-s", "0"], "--viscosity-mm2-s"),
         (
             ["6205-2RS", "--speed-rpm", "10", "--model", "skf", "--seal-constants", "1,2,2"],
             "--seal-diameter-mm",
@@ -693,12 +634,12 @@ def test_cli_and_report_give_the_same_torques(capsys, designation, cli, report):
             "--viscosity-mm2-s = -5 is not allowed: expected a viscosity in (0, 1e+06] mm²/s",
         ),
         (
-            ["6205", "--speed-rpm", "10", "--model", "skf", "--viscosity-mm2-s", "-5"],
+            [*SKF_SLOW, "--viscosity-mm2-s", "-5"],
             "--viscosity-mm2-s = -5 is not allowed: expected a viscosity in (0, 1e+06] mm²/s",
         ),
         (["6205", "--speed-rpm", "10", "--viscosity-mm2-s", "nan"], "--viscosity-mm2-s = nan"),
         (
-            ["6205", "--speed-rpm", "10", "--model", "skf", "--temperature-c", "400"],
+            [*SKF_SLOW, "--temperature-c", "400"],
             "--temperature-c = 400 is not allowed: expected a temperature in [-60, 300] °C",
         ),
         (["6205", "--speed-rpm", "10", "--temperature-c", "-100"], "[-60, 300] °C"),
@@ -725,11 +666,11 @@ def test_cli_and_report_give_the_same_torques(capsys, designation, cli, report):
             "--seal-diameter-mm = 0 is not allowed: expected a diameter in (0, 100000] mm",
         ),
         (
-            ["6205", "--speed-rpm", "10", "--model", "skf", "--seal-constants", "1,2,2"],
+            [*SKF_SLOW, "--seal-constants", "1,2,2"],
             "--seal-constants = '1,2,2' is not allowed: expected seal constants only with contact",
         ),
         (
-            ["6205", "--speed-rpm", "10", "--model", "skf", "--seal-constants", "1,-2,2"],
+            [*SKF_SLOW, "--seal-constants", "1,-2,2"],
             "--seal-constants = '1,-2,2' is not allowed: expected K_S1,K_S2,BETA",
         ),
         (
@@ -745,19 +686,7 @@ def test_cli_and_report_give_the_same_torques(capsys, designation, cli, report):
             ["NU205", "--speed-rpm", "10", "--bore-mm", "60"],
             "--bore-mm = 60 is not allowed: expected less than the outside diameter 52 mm",
         ),
-        (
-            [
-                "--bore-mm",
-                "25",
-                "--outside-diameter-mm",
-                "52",
-                "--speed-rpm",
-                "10",
-                "--type",
-                "plain",
-            ],
-            "--type = 'plain' is not allowed",
-        ),
+        ([*BORE_AND_OD, "--type", "plain"], "--type = 'plain' is not allowed"),
         (
             ["--bore-mm", "-25", "--outside-diameter-mm", "52", "--speed-rpm", "10"],
             "--bore-mm = -25 is not allowed: expected a length in (0, 100000] mm",
@@ -819,15 +748,9 @@ def test_bearings_without_a_ball_model():
     [
         ["6205", "--speed-rpm", "3000", "--radial-load-n", "1000"],
         [
-            "6205-2RS",
-            "--speed-rpm",
-            "3000",
-            "--radial-load-n",
-            "1000",
+            *SKF_6205_2RS,
             "--axial-load-n",
             "500",
-            "--model",
-            "skf",
             "--seal-constants",
             "0.02,2,2.25",
             "--seal-diameter-mm",
@@ -835,19 +758,7 @@ def test_bearings_without_a_ball_model():
             "--temperature-c",
             "70",
         ],
-        [
-            "7206",
-            "--speed-rpm",
-            "3000",
-            "--radial-load-n",
-            "1000",
-            "--model",
-            "skf",
-            "--skf-constants",
-            "5e-7,2,1e-2,0.7,2e-12,2e-12",
-            "--viscosity-mm2-s",
-            "12.5",
-        ],
+        [*SKF_7206, "--viscosity-mm2-s", "12.5"],
     ],
 )
 def test_cli_tables_fit_80_columns_uncut(capsys, monkeypatch, args):
