@@ -17,6 +17,8 @@ README_STATIC = (
     "3000",
 )
 
+#: The README's report example, before its ``-o`` (``bearinglab report 6205 ...``).
+README_REPORT = ("report", "6205", "--speed-rpm", "1797", "--radial-load-n", "1000")
 #: Keys of the static result's dict (``to_dict`` and ``static --json``) and of each ball's.
 STATIC_KEYS = (
     "radial_displacement_um",

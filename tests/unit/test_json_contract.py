@@ -6,7 +6,7 @@ import json
 from pathlib import Path
 
 import pytest
-from conftest import README_STATIC
+from conftest import README_REPORT, README_STATIC
 
 from bearinglab.cli import main
 from bearinglab.units import DIMENSIONLESS, MAPS, contract_markdown, unit_of
@@ -61,16 +61,7 @@ COMMANDS = {
     ],
     "friction": ["friction", "6205", "--speed-rpm", "3000", "--radial-load-n", "1000"],
     "life": ["life", "6205", "--speed-rpm", "3000", "--radial-load-n", "1000"],
-    "report": [
-        "report",
-        "6205",
-        "--speed-rpm",
-        "1797",
-        "--radial-load-n",
-        "1000",
-        "-o",
-        "tmp/report.html",
-    ],
+    "report": [*README_REPORT, "-o", "tmp/report.html"],
     "study": [
         "study",
         "frequencies",

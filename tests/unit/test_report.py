@@ -10,23 +10,13 @@ import math
 import re
 
 import pytest
+from conftest import README_REPORT
 
 from bearinglab.cli import main
 from bearinglab.report import SECTIONS, build_report
 from bearinglab.report import builder as report_builder
 
-REPORT = [
-    "report",
-    "6205",
-    "--speed-rpm",
-    "1797",
-    "--radial-load-n",
-    "1000",
-    "--duration-s",
-    "0.3",
-    "--slip-duration-s",
-    "0.03",
-]
+REPORT = [*README_REPORT, "--duration-s", "0.3", "--slip-duration-s", "0.03"]
 INNER = ["--defect", "inner:width_mm=1.0,depth_mm=0.2"]
 
 
