@@ -80,11 +80,10 @@ def test_a_ball_size_error_turns_with_the_cage():
 
 
 def test_slip_model_takes_the_same_imperfections():
-    bearing = SKF6205
     cond = OperatingCondition(radial_load=500.0, shaft_speed=2400 * math.pi / 30)
     runs = [
         simulate(
-            bearing,
+            SKF6205,
             cond,
             (),
             model="slip",
