@@ -18,14 +18,10 @@ from bearinglab.dynamics import (
 )
 from bearinglab.dynamics.defects import edge_drop, pack_defects
 from bearinglab.errors import InputError
-from bearinglab.geometry import BallBearing
 from bearinglab.operating import OperatingCondition
+from bearinglab.validation.dynamics import ER16K
 from bearinglab.validation.seed004 import SKF6205
 
-ER16K = BallBearing(
-    ball_count=9, ball_diameter=7.94e-3, pitch_diameter=38.51e-3, diametral_clearance=90e-6
-)
-SEED004 = SKF6205
 DEFECTS = [
     Defect("outer", 1.2e-3, 0.25e-3),
     Defect("inner", 0.8e-3, 2e-6, angle=1.0),
@@ -143,10 +139,10 @@ def test_rigid_rhs_twins_agree():
 
 @pytest.mark.parametrize("traction", ["seed004", "bair_winer"])
 def test_slip_rhs_twins_agree(traction):
-    table = pack_defects([Defect("ball", 0.3e-3, ball=2), Defect("outer", 0.5e-3)], SEED004)
+    table = pack_defects([Defect("ball", 0.3e-3, ball=2), Defect("outer", 0.5e-3)], SKF6205)
     cond = OperatingCondition(radial_load=500.0, shaft_speed=251.3)
     p = slip.pack(
-        SEED004, cond, SlipParameters(traction=traction, pocket_clearance=1e-5), table, None, 0.3e-3
+        SKF6205, cond, SlipParameters(traction=traction, pocket_clearance=1e-5), table, None, 0.3e-3
     )
     y0 = slip.initial_state(p)
     rng = np.random.default_rng(3)
@@ -164,9 +160,9 @@ def test_slip_rhs_twins_agree(traction):
 def test_grouped_jacobian_equals_a_dense_difference():
     """The arrow-structured Jacobian (16 grouped calls) against column-by-column central
     differences of the NumPy twin."""
-    table = pack_defects([], SEED004)
+    table = pack_defects([], SKF6205)
     cond = OperatingCondition(radial_load=500.0, shaft_speed=251.3)
-    p = slip.pack(SEED004, cond, SlipParameters(traction="bair_winer"), table)
+    p = slip.pack(SKF6205, cond, SlipParameters(traction="bair_winer"), table)
     y = slip.initial_state(p)
     y[8:] += np.random.default_rng(4).normal(0, 1, y.size - 8) * slip.atol(9)[8:] * 10
     n, ng, nb = y.size, _slip_kernels.NG, _slip_kernels.NB
