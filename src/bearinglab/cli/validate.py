@@ -11,7 +11,7 @@ from rich.markup import escape
 from rich.table import Table
 
 from ._app import command_app, console
-from ._inputs import JsonOpt, OptionError
+from ._inputs import JsonOpt, OptionError, check_path
 from ._output import _emit_json, progress_bar
 
 app = command_app()
@@ -101,12 +101,7 @@ def validate_command(
     unexpectedly passes. Some cases run simulations: expect a minute or two."""
     from ..validation.run import run_validation
 
-    if html is not None and (
-        html.suffix.lower() not in (".html", ".htm") or not html.parent.is_dir()
-    ):
-        raise OptionError(
-            "--html", str(html), "a file name ending in .html or .htm in an existing directory"
-        )
+    check_path("--html", html, (".html", ".htm"))
     with progress_bar("validate", enabled=not json_output) as update:
         result = run_validation(
             progress=lambda done, total, label: update(
