@@ -157,19 +157,10 @@ class Diagnosis:
         """Table of the labelled envelope lines (one row per peak, most significant first)."""
         import pandas as pd
 
-        columns = [
-            "frequency_hz",
-            "amplitude",
-            "z",
-            "significance",
-            "matched",
-            "harmonic",
-            "deviation",
-            "sideband_of",
-            "sideband_harmonic",
-            "sideband_order",
-            "modulation",
-        ]
+        from ..signal.lines import LINE_KEYS
+
+        # a labelled line's keys, with the diagnosis' normalised power and significance
+        columns = [*LINE_KEYS[:2], "z", "significance", *LINE_KEYS[2:]]
         return pd.DataFrame([{c: p.get(c) for c in columns} for p in self.peaks], columns=columns)
 
     def families_table(self):
