@@ -57,15 +57,20 @@ def run(capsys, *args):
     return code, out, err
 
 
+#: The speed every test record was made at.
+AT_1750 = ("--speed-rpm", "1750")
+
+
+def analyze(capsys, path, *options):
+    """``bearinglab analyze`` of an ER-16K record at ``path`` with ``options``."""
+    return run(capsys, "analyze", str(path), "--designation", "ER-16K", *options)
+
+
 def test_analyze_json_and_options(folder, capsys):
-    code, out, err = run(
+    code, out, err = analyze(
         capsys,
-        "analyze",
-        str(folder / "outer.npz"),
-        "--designation",
-        "ER-16K",
-        "--speed-rpm",
-        "1750",
+        folder / "outer.npz",
+        *AT_1750,
         "--method",
         "raw,cpw",
         "--tolerance",
@@ -80,26 +85,14 @@ def test_analyze_json_and_options(folder, capsys):
         "above": 0.05,
     }
     assert d["families"]["outer_race"]["passed"] and d["speed"]["source"] == "given"
-    code, out, err = run(
-        capsys,
-        "analyze",
-        str(folder / "noise.npz"),
-        "--designation",
-        "ER-16K",
-        "--speed-rpm",
-        "1750",
-        "--json",
-    )
+    code, out, err = analyze(capsys, folder / "noise.npz", *AT_1750, "--json")
     assert json.loads(out)["likely_fault"] is None
 
 
 def test_analyze_speed_auto(folder, capsys):
-    code, out, err = run(
+    code, out, err = analyze(
         capsys,
-        "analyze",
-        str(folder / "outer.npz"),
-        "--designation",
-        "ER-16K",
+        folder / "outer.npz",
         "--speed-rpm",
         "auto",
         "--speed-range-rpm",
@@ -115,28 +108,18 @@ def test_analyze_speed_auto(folder, capsys):
 
 
 def test_analyze_human_output(folder, capsys):
-    code, out, _ = run(
-        capsys,
-        "analyze",
-        str(folder / "inner.npz"),
-        "--designation",
-        "ER-16K",
-        "--speed-rpm",
-        "1750",
-        "--method",
-        "raw",
-    )
+    code, out, _ = analyze(capsys, folder / "inner.npz", *AT_1750, "--method", "raw")
     assert code == 0 and "verdict: inner race" in out and "f [Hz]" in out
 
 
 def test_method_all_and_repeated(folder, capsys):
     """--method all (as the help says) and a repeated --method, in both commands."""
-    args = ["--designation", "ER-16K", "--speed-rpm", "1750", "--json"]
-    code, out, err = run(capsys, "analyze", str(folder / "outer.npz"), "--method", "all", *args)
+    args = [*AT_1750, "--json"]
+    code, out, err = analyze(capsys, folder / "outer.npz", "--method", "all", *args)
     assert code == 0, err
     assert json.loads(out)["methods"] == ["raw", "cpw", "drs-sk"]
-    code, out, err = run(
-        capsys, "analyze", str(folder / "outer.npz"), "--method", "cpw", "--method", "raw", *args
+    code, out, err = analyze(
+        capsys, folder / "outer.npz", "--method", "cpw", "--method", "raw", *args
     )
     assert code == 0, err
     assert json.loads(out)["methods"] == ["cpw", "raw"]
@@ -159,16 +142,7 @@ def test_method_all_and_repeated(folder, capsys):
 )
 def test_analyze_errors_are_one_line(folder, capsys, tmp_path, args, flag):
     plot = tmp_path / "never.png"
-    code, out, err = run(
-        capsys,
-        "analyze",
-        str(folder / "outer.npz"),
-        "--designation",
-        "ER-16K",
-        *args,
-        "--plot",
-        str(plot),
-    )
+    code, out, err = analyze(capsys, folder / "outer.npz", *args, "--plot", plot)
     assert code == 2 and err.startswith("error: ") and err.count("\n") == 1, err
     assert flag in err and not plot.exists()
 
@@ -177,31 +151,13 @@ def test_analyze_short_record_and_struct_fields(tmp_path, capsys):
     import scipy.io
 
     write_signal(tmp_path / "short.npz", Signal({"acc": np.ones(2000)}, FS))
-    code, _, err = run(
-        capsys,
-        "analyze",
-        str(tmp_path / "short.npz"),
-        "--designation",
-        "ER-16K",
-        "--speed-rpm",
-        "1750",
-    )
+    code, _, err = analyze(capsys, tmp_path / "short.npz", *AT_1750)
     assert code == 2 and "cage revolutions" in err and err.count("\n") == 1
     scipy.io.savemat(
         tmp_path / "m.mat",
         {"bearing": {"gs": np.ones((40000, 1)), "sr": np.array([[FS]]), "load": "25"}},
     )
-    code, _, err = run(
-        capsys,
-        "analyze",
-        str(tmp_path / "m.mat"),
-        "--designation",
-        "ER-16K",
-        "--speed-rpm",
-        "1750",
-        "--channel",
-        "bearing.load",
-    )
+    code, _, err = analyze(capsys, tmp_path / "m.mat", *AT_1750, "--channel", "bearing.load")
     assert code == 2 and "--channel" in err and "text" in err
 
 
