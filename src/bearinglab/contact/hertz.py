@@ -299,12 +299,8 @@ def approach(load, rx, ry, effective_modulus, method: Method = "exact"):
     ----------
     load : float or array
         Q [N], >= 0.
-    rx, ry : float or array
-        Effective radii [m].
-    effective_modulus : float
-        E' [Pa].
-    method : {"exact", "hamrock_brewe"}
-        How k, K and E are obtained.
+    rx, ry, effective_modulus, method
+        As in :func:`load_deflection_constant`.
     """
     q = _check_load(load)
     return (q / load_deflection_constant(rx, ry, effective_modulus, method)) ** (2.0 / 3.0)
@@ -318,12 +314,8 @@ def load_from_approach(delta, rx, ry, effective_modulus, method: Method = "exact
     ----------
     delta : float or array
         Mutual approach [m].
-    rx, ry : float or array
-        Effective radii [m].
-    effective_modulus : float
-        E' [Pa].
-    method : {"exact", "hamrock_brewe"}
-        How k, K and E are obtained.
+    rx, ry, effective_modulus, method
+        As in :func:`load_deflection_constant`.
     """
     d = np.asarray(delta, dtype=float)
     if np.any(~np.isfinite(d)):
