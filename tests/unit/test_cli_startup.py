@@ -63,3 +63,20 @@ def test_table_names_the_module_that_registers_the_command(name):
 
     module = importlib.import_module(f"bearinglab.cli.{COMMANDS[name][0]}")
     assert name in typer.main.get_group(module.app).commands
+
+
+def test_light_commands_import_no_scipy_nor_pydantic():
+    """info and contact run without SciPy (Hertz's elliptic integrals by the AGM) and
+    without pydantic (typer 0.26-0.28): each was 80-150 ms of their start-up."""
+    for argv in (["info", "6205"], ["contact", "6205", "--ball-load-n", "1000"]):
+        code = (
+            "import sys, io, contextlib\n"
+            "from bearinglab.cli import main\n"
+            "with contextlib.redirect_stdout(io.StringIO()):\n"
+            f"    main({argv!r})\n"
+            "print(sorted({m.split('.')[0] for m in sys.modules} & {'scipy', 'pydantic'}))\n"
+        )
+        out = subprocess.run(
+            [sys.executable, "-c", code], capture_output=True, text=True, check=True
+        ).stdout
+        assert out.strip().splitlines()[-1] == "[]", (argv, out)
