@@ -158,6 +158,29 @@ def ring_newton(
     DOFs). Returns (u, b, q, n_rho, n_z, delta, speed, force, stiffness, status, residual):
     status 0 converged, 1 out of iterations, 2 no admissible step, 3 balls not solved at
     the start."""
+
+    def at(u_trial, b_trial):  # the ball set at ring displacement u_trial (inlined)
+        return _at(
+            u_trial,
+            b_trial,
+            t,
+            c0_rho,
+            c0_z,
+            inner,
+            free,
+            radius,
+            side,
+            z0,
+            k_poly,
+            film,
+            ring,
+            control,
+            lam_i,
+            spd,
+            k_seat,
+            ball_tol,
+        )
+
     u = u0.copy()
     nfree = 0
     for d in range(5):
@@ -169,26 +192,7 @@ def ring_newton(
         if free_dofs[d]:
             idx[m] = d
             m += 1
-    b, q, nr, nz, dl, sp, force, stiff, _worst, ok = _at(
-        u,
-        b0,
-        t,
-        c0_rho,
-        c0_z,
-        inner,
-        free,
-        radius,
-        side,
-        z0,
-        k_poly,
-        film,
-        ring,
-        control,
-        lam_i,
-        spd,
-        k_seat,
-        ball_tol,
-    )
+    b, q, nr, nz, dl, sp, force, stiff, _worst, ok = at(u, b0)
     if not ok:
         return u, b, q, nr, nz, dl, sp, force, stiff, 3, math.inf
     r = (load + force) * scale
@@ -229,26 +233,7 @@ def ring_newton(
         for a in range(nfree):
             du[idx[a]] = du_f[a]
         trial = u + du
-        b1, q1, nr1, nz1, dl1, sp1, f1, k1, _w1, ok1 = _at(
-            trial,
-            b,
-            t,
-            c0_rho,
-            c0_z,
-            inner,
-            free,
-            radius,
-            side,
-            z0,
-            k_poly,
-            film,
-            ring,
-            control,
-            lam_i,
-            spd,
-            k_seat,
-            ball_tol,
-        )
+        b1, q1, nr1, nz1, dl1, sp1, f1, k1, _w1, ok1 = at(trial, b)
         r1 = (load + f1) * scale
         n1 = _norm(r1, free_dofs) if ok1 else math.inf
         newton_worked = ok1 and n1 < 0.5 * norm
@@ -270,27 +255,12 @@ def ring_newton(
                     lam = hi - f_hi * (hi - lo) / (f_hi - f_lo)  # Illinois false position
                     if not lo < lam < hi:
                         lam = 0.5 * (lo + hi)
-                    at = _at(
-                        u + lam * du,
-                        b,
-                        t,
-                        c0_rho,
-                        c0_z,
-                        inner,
-                        free,
-                        radius,
-                        side,
-                        z0,
-                        k_poly,
-                        film,
-                        ring,
-                        control,
-                        lam_i,
-                        spd,
-                        k_seat,
-                        ball_tol,
+                    mid = at(u + lam * du, b)
+                    fm = (
+                        _weighted((load + mid[6]) * scale, free_dofs, scale, du)
+                        if mid[9]
+                        else -1e30
                     )
-                    fm = _weighted((load + at[6]) * scale, free_dofs, scale, du) if at[9] else -1e30
                     if fm > 0:
                         lo, f_lo = lam, fm
                         if side_kept == 1:
@@ -305,26 +275,7 @@ def ring_newton(
                         break
                 for lam in (0.5 * (lo + hi), lo):  # lo: the side where the balls solved
                     trial = u + lam * du
-                    b1, q1, nr1, nz1, dl1, sp1, f1, k1, _w1, ok1 = _at(
-                        trial,
-                        b,
-                        t,
-                        c0_rho,
-                        c0_z,
-                        inner,
-                        free,
-                        radius,
-                        side,
-                        z0,
-                        k_poly,
-                        film,
-                        ring,
-                        control,
-                        lam_i,
-                        spd,
-                        k_seat,
-                        ball_tol,
-                    )
+                    b1, q1, nr1, nz1, dl1, sp1, f1, k1, _w1, ok1 = at(trial, b)
                     if ok1:
                         break
             if not ok1:
