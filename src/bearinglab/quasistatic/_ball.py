@@ -331,53 +331,38 @@ def solve_ball(
     tsp = work[9, :7]
     br, bz = b[0], b[1]
     fc_seat = max(spd[2] * spd[6] * spd[6], spd[7])
-    _ball_force(
-        br,
-        bz,
-        c_rho,
-        c_z,
-        free,
-        radius,
-        side,
-        z0,
-        k_poly,
-        film,
-        ring,
-        control,
-        lam_i,
-        spd,
-        q,
-        nr,
-        nz,
-        dl,
-        s,
-        sp,
-        tmp,
-    )
+
+    def force_into(r, z, q_, nr_, nz_, dl_, s_, sp_):  # net force at (r, z), inlined
+        return _ball_force(
+            r,
+            z,
+            c_rho,
+            c_z,
+            free,
+            radius,
+            side,
+            z0,
+            k_poly,
+            film,
+            ring,
+            control,
+            lam_i,
+            spd,
+            q_,
+            nr_,
+            nz_,
+            dl_,
+            s_,
+            sp_,
+            tmp,
+        )
+
+    def force(r, z):  # ... into the ball's own contact arrays
+        return force_into(r, z, q, nr, nz, dl, s, sp)
+
+    force(br, bz)
     br = _seat(br, bz, c_rho, c_z, free, ring, q, fc_seat, k_seat)
-    gr, gz = _ball_force(
-        br,
-        bz,
-        c_rho,
-        c_z,
-        free,
-        radius,
-        side,
-        z0,
-        k_poly,
-        film,
-        ring,
-        control,
-        lam_i,
-        spd,
-        q,
-        nr,
-        nz,
-        dl,
-        s,
-        sp,
-        tmp,
-    )
+    gr, gz = force(br, bz)
     done = False
     for _ in range(max_iterations):
         norm = math.sqrt(gr * gr + gz * gz)
@@ -426,58 +411,14 @@ def solve_ball(
         for _ in range(30):
             nr_t = br + lam * step_r
             nz_t = bz + lam * step_z
-            tgr, tgz = _ball_force(
-                nr_t,
-                nz_t,
-                c_rho,
-                c_z,
-                free,
-                radius,
-                side,
-                z0,
-                k_poly,
-                film,
-                ring,
-                control,
-                lam_i,
-                spd,
-                tq,
-                tr,
-                tz,
-                td,
-                ts,
-                tsp,
-                tmp,
-            )
+            tgr, tgz = force_into(nr_t, nz_t, tq, tr, tz, td, ts, tsp)
             allowed = (NONMONOTONE_FACTOR if lam == 1.0 else 1 - 1e-4 * lam) * norm
             if math.sqrt(tgr * tgr + tgz * tgz) <= allowed or lam <= 1e-6:
                 break
             lam *= 0.5
         br = _seat(nr_t, nz_t, c_rho, c_z, free, ring, tq, fc_seat, k_seat)
         bz = nz_t
-        gr, gz = _ball_force(
-            br,
-            bz,
-            c_rho,
-            c_z,
-            free,
-            radius,
-            side,
-            z0,
-            k_poly,
-            film,
-            ring,
-            control,
-            lam_i,
-            spd,
-            q,
-            nr,
-            nz,
-            dl,
-            s,
-            sp,
-            tmp,
-        )
+        gr, gz = force(br, bz)
         moved = lam * math.sqrt(step_r * step_r + step_z * step_z)
         if moved < 1e-16 and math.sqrt(gr * gr + gz * gz) <= 1e3 * tol:
             done = True
