@@ -21,6 +21,7 @@ from .families import FAMILIES, FREQUENCY, families, tolerances
 from .methods import DESCRIPTIONS, METHODS, method_spectrum, parse_methods
 from .result import Diagnosis
 from .speed import SEARCH, shaft_frequency
+from .statistics import decades
 from .verdict import LINE_ALPHA, NO_FAULT, decide, discrete_mask, label_peaks, significance, with_z
 
 #: Channels preferred when none is named: the vertical (load-direction) acceleration of
@@ -384,8 +385,8 @@ def analyze_signal(
         table[fam.name] = {
             "p_value": test.p_value,
             "significance": test.significance,
-            "support_significance": -test.support_log_p / math.log(10.0),
-            "harmonic_significance": -test.harmonic_log_p / math.log(10.0),
+            "support_significance": decades(test.support_log_p),
+            "harmonic_significance": decades(test.harmonic_log_p),
             "passed": fam.name in faults,
             "method": method,
             "fundamental_hz": test.fundamental_hz,
@@ -401,7 +402,7 @@ def analyze_signal(
                     "expected_hz": ln.expected_hz,
                     "frequency_hz": ln.frequency_hz,
                     "z": ln.z,
-                    "significance": -ln.log_p / math.log(10.0),
+                    "significance": decades(ln.log_p),
                 }
                 for ln in test.lines
                 if ln.log_p < math.log(LINE_ALPHA)

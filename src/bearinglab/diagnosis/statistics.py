@@ -148,6 +148,15 @@ def chi2_logsf(x, dof) -> np.ndarray:
     return out
 
 
+def decades(log_p: float) -> float:
+    """-log10 p from ln p [-] (0.0, not -0.0, for p = 1).
+
+    >>> round(decades(math.log(1e-3)), 12), decades(0.0)
+    (3.0, 0.0)
+    """
+    return 0.0 - float(log_p) / math.log(10.0)
+
+
 def bin_logp(z, nu: float) -> np.ndarray:
     """ln P(chi2_nu / nu > z): the chance that noise alone reaches z in one bin."""
     return chi2_logsf(np.asarray(z, dtype=float) * nu, nu)
@@ -229,7 +238,7 @@ class SeriesTest:
     @property
     def significance(self) -> float:
         """-log10 of the p-value [-] (10: one chance in 10^10 from noise alone)."""
-        return -self.log_p / math.log(10.0)
+        return decades(self.log_p)
 
 
 def _window_max(z: np.ndarray, valid: np.ndarray):

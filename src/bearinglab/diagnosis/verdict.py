@@ -212,7 +212,7 @@ def label_peaks(
     labelled by the accepted families' lines or as a masked discrete line (shaft,
     supply, mesh harmonic of any order)."""
     from ..signal.peaks import local_maxima
-    from .statistics import bin_logp
+    from .statistics import bin_logp, decades
 
     z, f = spec.z, spec.frequency
     res = spec.resolution
@@ -243,7 +243,7 @@ def label_peaks(
             "frequency_hz": float(f[i]),
             "amplitude": float(amplitude[i]),
             "z": float(z[i]),
-            "significance": float(-bin_logp(z[i], spec.nu) / math.log(10.0)),
+            "significance": decades(bin_logp(z[i], spec.nu)),
             "matched": None,
             "harmonic": None,
             "deviation": None,
