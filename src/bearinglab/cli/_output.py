@@ -79,8 +79,23 @@ def _fmt(value, digits: int = 4) -> str:
     return escape(str(value))
 
 
+class _Table(Table):
+    """A rich Table whose header words are kept whole (each column's ``min_width``) as
+    long as the table then fits; where it would not, the minimum widths are dropped
+    before drawing. Rich lays a table out without the minima and widens the columns
+    back to them afterwards, so a narrow terminal cropped the last column instead of
+    wrapping (``benchmark`` at 80 columns)."""
+
+    def __rich_console__(self, console, options):
+        widths = self._calculate_column_widths(console, options)
+        if sum(widths) + self._extra_width > options.max_width:
+            for column in self.columns:
+                column.min_width = None
+        yield from super().__rich_console__(console, options)
+
+
 def _table(title: str, columns: list[str], rows: list[list]) -> Table:
-    table = Table(title=title, title_justify="left", show_header=True, header_style="bold")
+    table = _Table(title=title, title_justify="left", show_header=True, header_style="bold")
     for i, col in enumerate(columns):
         # a header's words are never cut: its column is at least as wide as its longest word;
         # in a narrow terminal a long cell wraps onto more lines instead of losing its end
