@@ -20,6 +20,25 @@ def test_kinematics_reduce_to_pure_rolling_at_zero_angle():
     assert beta == 0.0 and orbit == pytest.approx(0.4) and spin == pytest.approx(-2.4)
 
 
+@pytest.mark.parametrize("ai, ao, g", [(0.6, 0.5, 0.15), (0.2, 0.45, 0.3), (0.0, 0.7, 0.1)])
+def test_outer_control_is_harris_printed_formulas(ai, ao, g):
+    """The general raceway-control form gives Harris & Kotzalas's outer-control formulas
+    (Advanced Concepts, ch. 3) as printed: attitude, orbital and spin speed."""
+    beta = math.atan2(math.sin(ao), math.cos(ao) + g)
+    orbit = (1.0 - g * math.cos(ai)) / (1.0 + math.cos(ai - ao))
+    tb = math.tan(beta)
+    spin = -1.0 / (
+        (
+            (math.cos(ao) + tb * math.sin(ao)) / (1.0 + g * math.cos(ao))
+            + (math.cos(ai) + tb * math.sin(ai)) / (1.0 - g * math.cos(ai))
+        )
+        * g
+        * math.cos(beta)
+    )
+    got = outer_control_kinematics(ai, ao, g)
+    assert np.allclose(got, (beta, orbit, spin), rtol=1e-13, atol=0)
+
+
 def test_attitude_angle_is_below_the_outer_contact_angle():
     beta, _, _ = outer_control_kinematics(0.6, 0.5, 0.15)
     assert 0 < beta < 0.5

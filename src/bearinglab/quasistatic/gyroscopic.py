@@ -58,33 +58,16 @@ import numpy as np
 
 
 def outer_control_kinematics(inner_angle, outer_angle, gamma_prime):
-    """Ball attitude beta [rad], orbital and spin speed ratios omega_m/omega, omega_R/omega.
-
-    Parameters
-    ----------
-    inner_angle, outer_angle : float or array
-        Contact angles alpha_i, alpha_o (magnitudes) [rad].
-    gamma_prime : float
-        D_w / d_m [-].
+    """Ball attitude beta [rad], orbital and spin speed ratios omega_m/omega, omega_R/omega
+    under outer raceway control: :func:`raceway_control_kinematics` with ``"outer"``, whose
+    general form equals Harris's printed outer-control formulas (module docstring;
+    tests/unit/test_gyroscopic.py checks them against each other).
 
     >>> b, om, orr = outer_control_kinematics(0.0, 0.0, 0.2)
     >>> round(float(om), 6), round(float(-orr), 6)    # cage (1 - g)/2, spin (1 - g^2)/(2 g)
     (0.4, 2.4)
     """
-    ai, ao = np.asarray(inner_angle, float), np.asarray(outer_angle, float)
-    g = gamma_prime
-    beta = np.arctan2(np.sin(ao), np.cos(ao) + g)
-    tb = np.tan(beta)
-    orbit = (1.0 - g * np.cos(ai)) / (1.0 + np.cos(ai - ao))
-    spin = -1.0 / (
-        (
-            (np.cos(ao) + tb * np.sin(ao)) / (1.0 + g * np.cos(ao))
-            + (np.cos(ai) + tb * np.sin(ai)) / (1.0 - g * np.cos(ai))
-        )
-        * g
-        * np.cos(beta)
-    )
-    return beta, orbit, spin
+    return raceway_control_kinematics(inner_angle, outer_angle, gamma_prime, "outer")
 
 
 def raceway_control_kinematics(inner_angle, outer_angle, gamma_prime, control="outer"):
