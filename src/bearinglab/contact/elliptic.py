@@ -1,8 +1,8 @@
 """Complete elliptic integrals K and E by the arithmetic-geometric mean (AGM).
 
 Source: [AbramowitzStegun1964] (Abramowitz M., Stegun I. A., *Handbook of Mathematical
-Functions*, NBS 1964),
-sec. 17.6 (eqs. 17.6.1-17.6.4): a_0 = 1, b_0 = sqrt(p), c_0 = sqrt(m) with p = 1 - m;
+Functions*, NBS 1964), sec. 17.6 (eqs. 17.6.1-17.6.4): a_0 = 1, b_0 = sqrt(p),
+c_0 = sqrt(m) with p = 1 - m;
 a_{n+1} = (a_n + b_n)/2, b_{n+1} = sqrt(a_n b_n); K(m) = pi / (2 a_N) and
 K(m) - E(m) = K(m) (1/2) sum_{n>=0} 2^n c_n^2.
 
@@ -12,7 +12,7 @@ the AGM is a dozen vector operations. c_{n+1} = c_n^2 / (4 a_{n+1}) (from
 a_{n+1}^2 - b_{n+1}^2 = c_{n+1}^2) replaces the difference (a_n - b_n)/2, so neither
 m -> 0 (K - E ~ pi m / 4) nor p -> 0 (K ~ ln(4/sqrt(p))) loses precision: the results
 agree with SciPy's ``ellipk``, ``ellipkm1`` and ``ellipe`` to a few ulp over the whole
-range (tests/unit/test_elliptic.py).
+range (tests/unit/test_light_twins.py).
 """
 
 from __future__ import annotations

@@ -332,19 +332,17 @@ def analytic(x) -> np.ndarray:
     length (a large prime factor: 480 001 samples) costs several times a nearby fast one;
     the record is zero-padded to :func:`fast_length` and the result cut back. The
     padding only changes the last few samples' envelope, as an end effect of the same size
-    as the circular one it replaces.
+    as the circular one it replaces. The forward transform is a real one (the negative
+    frequencies it leaves out are those zeroed anyway): numpy's complex FFT of a real
+    record costs three times its real FFT.
     """
     n = len(x)
     m = fast_length(n)
-    spectrum = np.fft.fft(x, m)
-    gain = np.zeros(m)
-    gain[0] = 1.0
-    if m % 2 == 0:
-        gain[m // 2] = 1.0
-        gain[1 : m // 2] = 2.0
-    else:
-        gain[1 : (m + 1) // 2] = 2.0
-    return np.fft.ifft(spectrum * gain)[:n]
+    half = np.fft.rfft(x, m)  # bins 0 .. m // 2
+    spectrum = np.zeros(m, dtype=complex)
+    spectrum[: half.size] = half
+    spectrum[1 : (m + 1) // 2] *= 2.0  # the positive frequencies; 0 Hz and Nyquist stay
+    return np.fft.ifft(spectrum)[:n]
 
 
 def welch_power(x, sample_rate: float, nperseg: int, noverlap: int):
