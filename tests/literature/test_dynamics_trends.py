@@ -17,7 +17,7 @@ from bearinglab.dynamics import Defect, simulate
 from bearinglab.operating import OperatingCondition
 from bearinglab.signal import envelope_spectrum
 from bearinglab.validation.dynamics import ER16K
-from bearinglab.validation.seed004 import seed004_ball_line
+from bearinglab.validation.seed004 import SPEED, seed004_ball_line
 
 
 def _bpfo_line(load=50.0, size=1.2e-3, rpm=1750.0):
@@ -79,7 +79,7 @@ def test_seed004_slip_model_ball_line_in_the_envelope_spectrum():
     from bearinglab.diagnosis import analyze_signal, measured_ball_defect_frequency
     from bearinglab.validation.seed004 import DEFECT_WIDTH, SKF6205
 
-    cond = OperatingCondition(radial_load=500.0, shaft_speed=2400 * math.pi / 30)
+    cond = OperatingCondition(radial_load=500.0, shaft_speed=SPEED)
     sim = simulate(
         SKF6205, cond, [Defect("ball", DEFECT_WIDTH)], model="slip", duration=1.0, sample_rate=20e3
     )

@@ -19,7 +19,7 @@ from bearinglab.geometry import BallBearing
 from bearinglab.imperfections import BallSizeErrors, Imperfections, Waviness
 from bearinglab.kinematics import defect_frequencies
 from bearinglab.operating import OperatingCondition
-from bearinglab.validation.seed004 import SKF6205
+from bearinglab.validation.seed004 import SKF6205, SPEED
 
 PRELOADED = BallBearing(
     ball_count=9, ball_diameter=7.94e-3, pitch_diameter=38.51e-3, diametral_clearance=-10e-6
@@ -80,7 +80,7 @@ def test_a_ball_size_error_turns_with_the_cage():
 
 
 def test_slip_model_takes_the_same_imperfections():
-    cond = OperatingCondition(radial_load=500.0, shaft_speed=2400 * math.pi / 30)
+    cond = OperatingCondition(radial_load=500.0, shaft_speed=SPEED)
     runs = [
         simulate(
             SKF6205,

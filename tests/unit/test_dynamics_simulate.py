@@ -12,6 +12,7 @@ from bearinglab.errors import InputError
 from bearinglab.operating import OperatingCondition
 from bearinglab.signal import envelope_spectrum, find_peaks, match_peaks
 from bearinglab.validation.dynamics import ER16K, SKF6205
+from bearinglab.validation.seed004 import SPEED
 
 COND = OperatingCondition(radial_load=50.0, shaft_speed=1750 * math.pi / 30)
 
@@ -94,7 +95,7 @@ def test_ball_fault_shows_its_line(bearing, load):
 
 
 def test_slip_model_outputs():
-    cond = OperatingCondition(radial_load=500.0, shaft_speed=2400 * math.pi / 30)
+    cond = OperatingCondition(radial_load=500.0, shaft_speed=SPEED)
     sim = simulate(
         SKF6205,
         cond,
@@ -114,7 +115,7 @@ def test_slip_model_outputs():
 
 
 def test_slip_tolerances_do_not_move_the_ball_speeds():
-    cond = OperatingCondition(radial_load=500.0, shaft_speed=2400 * math.pi / 30)
+    cond = OperatingCondition(radial_load=500.0, shaft_speed=SPEED)
     runs = [
         simulate(
             SKF6205,

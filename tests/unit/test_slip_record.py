@@ -10,9 +10,9 @@ import pytest
 from bearinglab.dynamics import Defect, SlipParameters, simulate, slip
 from bearinglab.dynamics.defects import pack_defects
 from bearinglab.operating import OperatingCondition
-from bearinglab.validation.seed004 import SKF6205
+from bearinglab.validation.seed004 import SKF6205, SPEED
 
-COND = OperatingCondition(radial_load=500.0, shaft_speed=2400 * math.pi / 30)
+COND = OperatingCondition(radial_load=500.0, shaft_speed=SPEED)
 
 
 @pytest.fixture(scope="module")
