@@ -283,6 +283,21 @@ def envelope(x, sample_rate, band=None, order: int = 4, squared: bool = False) -
     return magnitude - magnitude.mean()
 
 
+def _smooth_lengths(limit: int) -> list[int]:
+    """Every 2^a 3^b 5^c <= ``limit`` (a few hundred up to a million)."""
+    out, p5 = [], 1
+    while p5 <= limit:
+        p35 = p5
+        while p35 <= limit:
+            k = p35
+            while k <= limit:
+                out.append(k)
+                k *= 2
+            p35 *= 3
+        p5 *= 5
+    return out
+
+
 def fast_length(n: int) -> int:
     """The smallest 2^a 3^b 5^c >= ``n``: the lengths that numpy's pocketfft transforms
     fastest (what ``scipy.fft.next_fast_len(n, real=True)`` returns; numpy.fft is used
@@ -292,16 +307,7 @@ def fast_length(n: int) -> int:
     (480000, 486000, 8)
     """
     n = max(int(n), 1)
-    best = 1 << (n - 1).bit_length()  # a power of two is always a candidate
-    p5 = 1
-    while p5 < best:
-        p35 = p5
-        while p35 < best:
-            quotient = -(-n // p35)  # times a power of two >= this
-            best = min(best, p35 << (quotient - 1).bit_length())
-            p35 *= 3
-        p5 *= 5
-    return best
+    return min(k for k in _smooth_lengths(2 * n) if k >= n)  # a power of two <= 2n is one
 
 
 def fast_length_below(n: int) -> int:
@@ -310,15 +316,7 @@ def fast_length_below(n: int) -> int:
     >>> fast_length_below(479_999), fast_length_below(7)
     (472392, 6)
     """
-    n = max(int(n), 1)
-    best, p5 = 1, 1
-    while p5 <= n:
-        p35 = p5
-        while p35 <= n:
-            best = max(best, p35 << ((n // p35).bit_length() - 1))
-            p35 *= 3
-        p5 *= 5
-    return best
+    return max(_smooth_lengths(max(int(n), 1)))
 
 
 def analytic(x) -> np.ndarray:
