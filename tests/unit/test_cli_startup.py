@@ -16,14 +16,15 @@ CLI = Path(__file__).resolve().parents[2] / "src" / "bearinglab" / "cli"
 HEAVY = ("scipy", "pandas", "numba", "matplotlib", "bearinglab.dynamics", "bearinglab.signal")
 
 
-def _imported_after(argv: list[str]) -> list[str]:
-    """The heavy modules imported by running ``bearinglab ARGV`` in a new process."""
+def _imported_after(argv: list[str], prefixes: tuple = HEAVY) -> list[str]:
+    """The modules starting with ``prefixes`` (default: the heavy ones) imported by
+    running ``bearinglab ARGV`` in a new process."""
     code = (
         "import sys, json, io, contextlib\n"
         "from bearinglab.cli import main\n"
         "with contextlib.redirect_stdout(io.StringIO()):\n"
         f"    main({argv!r})\n"
-        f"print(json.dumps(sorted(m for m in sys.modules if m.startswith({HEAVY!r}))))\n"
+        f"print(json.dumps(sorted(m for m in sys.modules if m.startswith({prefixes!r}))))\n"
     )
     out = subprocess.run(
         [sys.executable, "-c", code], capture_output=True, text=True, check=True
@@ -69,14 +70,4 @@ def test_light_commands_import_no_scipy_nor_pydantic():
     """info and contact run without SciPy (Hertz's elliptic integrals by the AGM) and
     without pydantic (typer 0.26-0.28): each was 80-150 ms of their start-up."""
     for argv in (["info", "6205"], ["contact", "6205", "--ball-load-n", "1000"]):
-        code = (
-            "import sys, io, contextlib\n"
-            "from bearinglab.cli import main\n"
-            "with contextlib.redirect_stdout(io.StringIO()):\n"
-            f"    main({argv!r})\n"
-            "print(sorted({m.split('.')[0] for m in sys.modules} & {'scipy', 'pydantic'}))\n"
-        )
-        out = subprocess.run(
-            [sys.executable, "-c", code], capture_output=True, text=True, check=True
-        ).stdout
-        assert out.strip().splitlines()[-1] == "[]", (argv, out)
+        assert _imported_after(argv, ("scipy", "pydantic")) == [], argv
