@@ -30,7 +30,7 @@ import math
 import numpy as np
 
 from .families import FREQUENCY, Family
-from .statistics import SUPPORT_ALPHA, normalised, series_test
+from .statistics import SUPPORT_ALPHA, decades, normalised, series_test
 
 #: Verdict when no family passes.
 NO_FAULT = "no fault detected"
@@ -212,7 +212,7 @@ def label_peaks(
     labelled by the accepted families' lines or as a masked discrete line (shaft,
     supply, mesh harmonic of any order)."""
     from ..signal.peaks import local_maxima
-    from .statistics import bin_logp, decades
+    from .statistics import bin_logp
 
     z, f = spec.z, spec.frequency
     res = spec.resolution
@@ -278,5 +278,6 @@ def label_peaks(
 
 
 def significance(p: float) -> float:
-    """-log10 p [-]."""
-    return -math.log10(max(p, 1e-300))
+    """-log10 p [-] of a probability (floored at 1e-300), as :func:`.statistics.decades`
+    reads a logarithm."""
+    return decades(math.log(max(p, 1e-300)))
