@@ -87,6 +87,7 @@ class _Table(Table):
     wrapping (``benchmark`` at 80 columns)."""
 
     def __rich_console__(self, console, options):
+        # rich's own layout (a private method, pinned by tests/unit/test_cli.py's widths)
         widths = self._calculate_column_widths(console, options)
         if sum(widths) + self._extra_width > options.max_width:
             for column in self.columns:
