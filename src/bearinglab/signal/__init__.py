@@ -2,7 +2,7 @@
 analysis with a spectral-kurtosis band, peak matching to defect frequencies, coherence.
 
 Sources are cited in each module: Randall & Antoni 2011 (envelope analysis), Antoni 2006
-and 2007 (spectral kurtosis, kurtogram), SciPy (scipy.signal, scipy.io).
+and 2007 (spectral kurtosis, kurtogram), SciPy (scipy.signal, scipy.io) and numpy.fft.
 """
 
 from .bands import ISO15242_BANDS, VelocityBands, iso15242_bands, velocity_bands

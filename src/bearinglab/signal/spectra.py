@@ -1,9 +1,11 @@
 """Amplitude spectra, envelope analysis and the choice of a demodulation band.
 
 Layer 1 functions on 1-D sample arrays (any unit, e.g. m/s^2) sampled at ``sample_rate``
-[Hz]; frequencies in Hz. The numerical work is SciPy's (``scipy.signal.welch``,
-``butter``/``sosfiltfilt``, ``hilbert``, ``stft``); this module chooses the scaling and
-the parameters.
+[Hz]; frequencies in Hz. The numerical work is SciPy's (``butter``/``sosfiltfilt``,
+``stft``, windows other than Hann) and numpy.fft's (the Hann Welch average and the
+analytic signal, written out here as ``scipy.signal.welch`` and ``hilbert`` compute them,
+so that the command line imports neither scipy.signal nor scipy.fft); this module chooses
+the scaling and the parameters.
 
 Sources:
 - envelope analysis (band-pass round a structural resonance excited by the defect
