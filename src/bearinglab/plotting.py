@@ -29,6 +29,15 @@ def _pyplot():
     return plt
 
 
+def figure_axes(ax=None, *args, **kwargs):
+    """``(figure, ax)`` for a plot method's ``ax`` argument: the figure that ``ax`` (one
+    Axes, or a sequence of them) is on, or, when ``ax`` is None, a new figure and axes
+    from ``pyplot.subplots(*args, **kwargs)``."""
+    if ax is None:
+        return _pyplot().subplots(*args, **kwargs)
+    return (ax.figure if hasattr(ax, "figure") else ax[0].figure), ax
+
+
 def save_figure(fig, path: str | Path) -> Path:
     """Save ``fig`` to ``path`` atomically; the format follows the suffix (.png, .svg, .pdf)."""
     path = Path(path)
@@ -55,11 +64,7 @@ def ball_contacts_figure(curve, final, axes=None):
     axes : sequence of two matplotlib Axes, optional
         Where to draw; a new figure otherwise.
     """
-    plt = _pyplot()
-    if axes is None:
-        fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
-    else:
-        fig = axes[0].figure
+    fig, axes = figure_axes(axes, 1, 2, figsize=(11, 4.2))
     loads, q_max = np.asarray(curve.load), float(np.max(final.load))
     ax, ax2 = axes[0], axes[0].twinx()
     for race, c, style in (("inner", curve.inner, "-"), ("outer", curve.outer, "--")):
@@ -105,11 +110,7 @@ def frequencies_figure(freqs, names, harmonics: int = 3, ax=None):
     ax : matplotlib Axes, optional
         Where to draw.
     """
-    plt = _pyplot()
-    if ax is None:
-        fig, ax = plt.subplots(figsize=(10, 4))
-    else:
-        fig = ax.figure
+    fig, ax = figure_axes(ax, figsize=(10, 4))
     for i, name in enumerate(names):
         base = freqs.hz(name)
         h = np.arange(1, harmonics + 1) * base
@@ -194,10 +195,7 @@ def stiffness_map_figure(table, ax=None):
     ax : pair of matplotlib Axes, optional
         Where to draw.
     """
-    plt = _pyplot()
-    if ax is None:
-        fig, ax = plt.subplots(1, 2, figsize=(11, 4.2))
-    fig = ax[0].figure
+    fig, ax = figure_axes(ax, 1, 2, figsize=(11, 4.2))
     for (fa, rpm), group in table.groupby(["axial_load_n", "speed_rpm"]):
         label = f"F_a = {fa:g} N, {rpm:g} rpm"
         ax[0].plot(group["radial_load_n"], group["radial_stiffness_n_per_um"], ".-", label=label)

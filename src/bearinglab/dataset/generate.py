@@ -188,13 +188,10 @@ class DatasetResult:
 
     def plot(self, ax=None):
         """Records per fault type against speed (a scatter of the set's coverage)."""
-        from ..plotting import _pyplot
+        from ..plotting import figure_axes
 
         meta = self.to_pandas()
-        if ax is None:
-            fig, ax = _pyplot().subplots(figsize=(7, 4))
-        else:
-            fig = ax.figure
+        fig, ax = figure_axes(ax, figsize=(7, 4))
         for i, (fault, part) in enumerate(meta.groupby("fault_type")):
             ax.scatter(
                 part["speed_rpm"], part["load"], s=8, color=f"C{i}", label=f"{fault} ({len(part)})"

@@ -173,12 +173,9 @@ class FrictionResult:
 
     def plot(self, ax=None):
         """Bar chart of the torque components [N·mm]; returns (fig, ax), never shows."""
-        from ..plotting import _pyplot
+        from ..plotting import figure_axes
 
-        if ax is None:
-            fig, ax = _pyplot().subplots(figsize=(6, 3.5))
-        else:
-            fig = ax.figure
+        fig, ax = figure_axes(ax, figsize=(6, 3.5))
         table = self.to_pandas()
         ax.bar(table["component"], table["torque_n_mm"], color="tab:blue")
         ax.set_ylabel("friction torque [N·mm]")

@@ -196,12 +196,9 @@ class LifeResult:
     def plot(self, ax=None):
         """Basic rating life against the equivalent load (log-log), with the operating
         point and, when known, the modified life; returns (fig, ax)."""
-        from ..plotting import _pyplot
+        from ..plotting import figure_axes
 
-        if ax is None:
-            fig, ax = _pyplot().subplots(figsize=(7, 4.5))
-        else:
-            fig = ax.figure
+        fig, ax = figure_axes(ax, figsize=(7, 4.5))
         c = self.ratings.dynamic
         p = np.geomspace(0.02 * c, c, 100)
         ax.loglog(p, hours((c / p) ** 3, self.shaft_speed), color="C0", label="L10 = (C/P)^3")

@@ -102,12 +102,9 @@ class BearingVelocityBands:
 
     def plot(self, ax=None):
         """Bar chart of the three bands [um/s]; returns (fig, ax), never shows."""
-        from ..plotting import _pyplot
+        from ..plotting import figure_axes
 
-        if ax is None:
-            fig, ax = _pyplot().subplots(figsize=(6.5, 3.2))
-        else:
-            fig = ax.figure
+        fig, ax = figure_axes(ax, figsize=(6.5, 3.2))
         edges = self.bands.bands
         ax.bar(
             [f"{k}\n{edges[k][0]:.4g}-{edges[k][1]:.4g} Hz" for k in BAND_NAMES],

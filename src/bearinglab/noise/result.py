@@ -49,13 +49,9 @@ class Directivity:
 
     def plot(self, ax=None):
         """Polar plot of the levels [dB]; returns (fig, ax)."""
-        from ..plotting import _pyplot
+        from ..plotting import figure_axes
 
-        plt = _pyplot()
-        if ax is None:
-            fig, ax = plt.subplots(subplot_kw={"projection": "polar"}, figsize=(5.5, 5.5))
-        else:
-            fig = ax.figure
+        fig, ax = figure_axes(ax, subplot_kw={"projection": "polar"}, figsize=(5.5, 5.5))
         closed = np.append(self.angle, self.angle[0])
         for name, lv in self.levels.items():
             ax.plot(closed, np.append(lv, lv[0]), label=name)
@@ -235,13 +231,9 @@ class SoundPressure:
     def plot(self, axes=None):
         """Pressure against time (ring, balls, total) and SPL(t), labelled with its time
         mean and the L_eq of each part; returns (fig, axes)."""
-        from ..plotting import _pyplot
+        from ..plotting import figure_axes
 
-        plt = _pyplot()
-        if axes is None:
-            fig, axes = plt.subplots(2, 1, figsize=(8, 6), sharex=True)
-        else:
-            fig = axes[0].figure
+        fig, axes = figure_axes(axes, 2, 1, figsize=(8, 6), sharex=True)
         t = self.time - self.time[0]
         for name in ("inner_ring", "balls", "total"):
             if name in self.parts:

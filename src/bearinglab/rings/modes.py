@@ -149,12 +149,9 @@ class RingModes:
 
     def plot(self, ax=None):
         """Frequencies by mode number (free, approximate, refined, measured); (fig, ax)."""
-        from ..plotting import _pyplot
+        from ..plotting import figure_axes
 
-        if ax is None:
-            fig, ax = _pyplot().subplots(figsize=(8, 4.5))
-        else:
-            fig = ax.figure
+        fig, ax = figure_axes(ax, figsize=(8, 4.5))
         df = self.to_pandas()
         for i, (model, marker) in enumerate(
             (

@@ -59,7 +59,7 @@ def plot_study(table, output: str, x: str, y: str, *, path=None, ax=None):
     -------
     (figure, axes)
     """
-    from ..plotting import _pyplot, save_figure
+    from ..plotting import figure_axes, save_figure
 
     for what, name in (("output", output), ("x", x), ("y", y)):
         if name not in table.columns:
@@ -67,11 +67,7 @@ def plot_study(table, output: str, x: str, y: str, *, path=None, ax=None):
     ok = table[table["error"].isna()] if "error" in table.columns else table
     if ok.empty:
         raise InputError("output", output, "a study with at least one case that did not fail")
-    plt = _pyplot()
-    if ax is None:
-        fig, ax = plt.subplots(figsize=(7, 5))
-    else:
-        fig = ax.figure
+    fig, ax = figure_axes(ax, figsize=(7, 5))
     others = [
         c
         for c in ok.columns
