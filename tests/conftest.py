@@ -43,6 +43,19 @@ STATIC_BALL_KEYS = (
 )
 
 
+def simulate_seed004_slip(defects=(), **options):
+    """``simulate`` on the slip model of seed 004's 6205 (``validation.seed004.SKF6205``: no
+    clearance; default SlipParameters unless ``parameters`` is given) at 500 N radial and
+    2400 rpm, with ``defects`` and ``options`` (duration, sample_rate, settle, ...) as for
+    ``simulate``."""
+    from bearinglab.dynamics import simulate
+    from bearinglab.operating import OperatingCondition
+    from bearinglab.validation.seed004 import SKF6205, SPEED
+
+    condition = OperatingCondition(radial_load=500.0, shaft_speed=SPEED)
+    return simulate(SKF6205, condition, defects, model="slip", **options)
+
+
 def in_ci() -> bool:
     """True under CI (CI=true), where every optional test dependency must be installed."""
     return os.environ.get("CI", "").strip().lower() in ("true", "1", "yes")

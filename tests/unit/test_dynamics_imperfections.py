@@ -13,13 +13,13 @@ import math
 
 import numpy as np
 import pytest
+from conftest import simulate_seed004_slip
 
 from bearinglab.dynamics import simulate
 from bearinglab.geometry import BallBearing
 from bearinglab.imperfections import BallSizeErrors, Imperfections, Waviness
 from bearinglab.kinematics import defect_frequencies
 from bearinglab.operating import OperatingCondition
-from bearinglab.validation.seed004 import SKF6205, SPEED
 
 PRELOADED = BallBearing(
     ball_count=9, ball_diameter=7.94e-3, pitch_diameter=38.51e-3, diametral_clearance=-10e-6
@@ -80,18 +80,8 @@ def test_a_ball_size_error_turns_with_the_cage():
 
 
 def test_slip_model_takes_the_same_imperfections():
-    cond = OperatingCondition(radial_load=500.0, shaft_speed=SPEED)
     runs = [
-        simulate(
-            SKF6205,
-            cond,
-            (),
-            model="slip",
-            duration=0.005,
-            sample_rate=20e3,
-            settle=0.005,
-            imperfections=imp,
-        )
+        simulate_seed004_slip(duration=0.005, sample_rate=20e3, settle=0.005, imperfections=imp)
         for imp in (None, Imperfections([Waviness("outer", 10, 2e-6)]))
     ]
     plain, wavy = (r.signal.channels["disp_y"] for r in runs)

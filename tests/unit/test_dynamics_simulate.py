@@ -5,14 +5,14 @@ import math
 
 import numpy as np
 import pytest
+from conftest import simulate_seed004_slip
 
 from bearinglab.catalog import bearing_from_designation
 from bearinglab.dynamics import Defect, RigidParameters, SlipParameters, simulate
 from bearinglab.errors import InputError
 from bearinglab.operating import OperatingCondition
 from bearinglab.signal import envelope_spectrum, find_peaks, match_peaks
-from bearinglab.validation.dynamics import ER16K, SKF6205
-from bearinglab.validation.seed004 import SPEED
+from bearinglab.validation.dynamics import ER16K
 
 COND = OperatingCondition(radial_load=50.0, shaft_speed=1750 * math.pi / 30)
 
@@ -95,15 +95,8 @@ def test_ball_fault_shows_its_line(bearing, load):
 
 
 def test_slip_model_outputs():
-    cond = OperatingCondition(radial_load=500.0, shaft_speed=SPEED)
-    sim = simulate(
-        SKF6205,
-        cond,
-        [Defect("ball", 0.3e-3)],
-        model="slip",
-        duration=0.01,
-        sample_rate=20e3,
-        settle=0.01,
+    sim = simulate_seed004_slip(
+        [Defect("ball", 0.3e-3)], duration=0.01, sample_rate=20e3, settle=0.01
     )
     assert set(sim.signal.names) >= {"acc_x", "acc_y", "disp_x", "disp_y", "cage_speed"}
     assert sim.ball_spin_speed.shape == (9, 200) and sim.slip_outer.shape == (9, 200)
@@ -115,12 +108,8 @@ def test_slip_model_outputs():
 
 
 def test_slip_tolerances_do_not_move_the_ball_speeds():
-    cond = OperatingCondition(radial_load=500.0, shaft_speed=SPEED)
     runs = [
-        simulate(
-            SKF6205,
-            cond,
-            model="slip",
+        simulate_seed004_slip(
             duration=0.005,
             sample_rate=20e3,
             settle=0.01,

@@ -5,8 +5,9 @@ import math
 
 import numpy as np
 import pytest
+from conftest import simulate_seed004_slip
 
-from bearinglab.dynamics import Defect, SlipParameters, _slip_kernels, simulate, slip
+from bearinglab.dynamics import Defect, SlipParameters, _slip_kernels, slip
 from bearinglab.dynamics.defects import pack_defects
 from bearinglab.errors import InputError
 from bearinglab.operating import OperatingCondition
@@ -117,10 +118,7 @@ def test_pocket_friction_and_spin_drag_slow_the_balls():
     """Both brake the spin of the balls in the unloaded zone: the spin ratio falls."""
 
     def ratio(**kwargs):
-        return simulate(
-            SKF6205,
-            COND,
-            model="slip",
+        return simulate_seed004_slip(
             duration=0.1,
             sample_rate=5e3,
             settle=0.15,

@@ -6,6 +6,7 @@ import math
 
 import numpy as np
 import pytest
+from conftest import simulate_seed004_slip
 
 from bearinglab.dynamics import Defect, SlipParameters, simulate, slip
 from bearinglab.dynamics.defects import pack_defects
@@ -56,14 +57,8 @@ def test_halves_check(packed):
 
 
 def test_simulation_exposes_phase_and_measures_from_it():
-    sim = simulate(
-        SKF6205,
-        COND,
-        [Defect("ball", 0.27e-3)],
-        model="slip",
-        duration=0.05,
-        sample_rate=5e3,
-        settle=0.1,
+    sim = simulate_seed004_slip(
+        [Defect("ball", 0.27e-3)], duration=0.05, sample_rate=5e3, settle=0.1
     )
     n = sim.signal.n_samples
     assert sim.ball_spin_phase.shape == (9, n) and sim.cage_angle.shape == (n,)
@@ -89,14 +84,8 @@ def test_rigid_model_has_no_phase():
 
 def test_unsettled_record_is_reported():
     # no settling with pocket friction 0.3: the balls lose spin over the first revolution
-    sim = simulate(
-        SKF6205,
-        COND,
-        model="slip",
-        duration=0.03,
-        sample_rate=5e3,
-        settle=0.0,
-        parameters=SlipParameters(cage_friction=0.3),
+    sim = simulate_seed004_slip(
+        duration=0.03, sample_rate=5e3, settle=0.0, parameters=SlipParameters(cage_friction=0.3)
     )
     first, second = sim.halves["spin_speed_ratio"]
     assert first - second > slip.HALVES_TOLERANCE
@@ -121,7 +110,7 @@ def test_settling_is_detected_by_revolutions(packed):
 
 
 def test_simulate_settles_by_the_rule_and_warns_when_it_cannot(monkeypatch):
-    sim = simulate(SKF6205, COND, model="slip", duration=0.02, sample_rate=5e3)
+    sim = simulate_seed004_slip(duration=0.02, sample_rate=5e3)
     turns = sim.stats["settle_turns"]
     assert turns >= slip.MIN_SETTLE_TURNS
     w_c = sim.kinematic.orders["ftf"] * sim.kinematic.shaft_speed
@@ -129,6 +118,6 @@ def test_simulate_settles_by_the_rule_and_warns_when_it_cannot(monkeypatch):
     assert not any("not settled" in w for w in sim.warnings)
     monkeypatch.setattr(slip, "SETTLE_TOLERANCE", 1e-12)
     monkeypatch.setattr(slip, "MAX_SETTLE_TURNS", 4)
-    sim = simulate(SKF6205, COND, model="slip", duration=0.02, sample_rate=5e3)
+    sim = simulate_seed004_slip(duration=0.02, sample_rate=5e3)
     assert sim.stats["settle_turns"] == 4
     assert any("not settled after 4 cage revolutions" in w for w in sim.warnings)

@@ -17,7 +17,6 @@ from functools import cache
 from ..operating import OperatingCondition
 from . import seed003
 from .case import Case
-from .seed004 import SKF6205  # noqa: F401  (the seed-004 bearing, used by the tests)
 
 #: Seed 003's ER-16K with the catalogue's 90 um diametral clearance.
 ER16K = dataclasses.replace(seed003.ER16K, diametral_clearance=90e-6)
