@@ -20,8 +20,6 @@ from bearinglab.catalog import (
 )
 from bearinglab.kinematics import frequency_orders
 
-pytest.importorskip("bearinglab.designation")
-
 IN = 25.4e-3  # m per inch
 MM = 1e-3
 

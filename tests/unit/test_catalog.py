@@ -209,7 +209,6 @@ def test_unknown_family_without_series_is_a_catalog_error():
 
 
 def test_designation_text_is_parsed():
-    pytest.importorskip("bearinglab.designation")
     assert boundary_dimensions("6205-2RS") == boundary_dimensions("6205")
     gost = boundary_dimensions("180205")
     assert (gost.bore, gost.outside_diameter, gost.width) == pytest.approx((0.025, 0.052, 0.015))
@@ -224,7 +223,6 @@ def test_published_geometry_by_name_is_case_and_space_insensitive():
 
 @pytest.mark.parametrize("text", ["6205", "6205-2RS", "6205 2Z C3", "180205", "205"])
 def test_published_geometry_by_designation_ignores_suffixes(text):
-    pytest.importorskip("bearinglab.designation")
     assert published_geometry(text).name == "6205 (CWRU drive end)"
 
 
@@ -316,7 +314,6 @@ def test_every_ball_bearing_size_gives_a_valid_bearing():
 
 
 def test_published_bearing_keeps_its_sources():
-    pytest.importorskip("bearinglab.designation")
     b, des = bearing_from_designation("6205-2RS")
     assert des.series == "62" and b.name == "6205-2RS"
     assert (b.ball_count, b.ball_diameter, b.pitch_diameter) == pytest.approx(
@@ -342,7 +339,6 @@ def test_catalogue_name_without_designation():
 
 
 def test_partial_row_is_completed_by_the_estimate():
-    pytest.importorskip("bearinglab.designation")
     b, _ = bearing_from_designation("310", system="gost")  # seed 000: only Z = 8
     assert b.ball_count == 8 and b.sources["ball_count"].kind == "catalog"
     assert b.sources["ball_diameter"].kind == "estimated"
@@ -351,7 +347,6 @@ def test_partial_row_is_completed_by_the_estimate():
 
 
 def test_overrides_win_and_are_marked_user():
-    pytest.importorskip("bearinglab.designation")
     b, _ = bearing_from_designation(
         "6205",
         overrides={"ball_count": 8, "diametral_clearance": 20e-6, "outside_diameter": 0.0521},
@@ -364,7 +359,6 @@ def test_overrides_win_and_are_marked_user():
 
 
 def test_overrides_feed_the_estimate():
-    pytest.importorskip("bearinglab.designation")
     plain, _ = bearing_from_designation("6308")
     wide, _ = bearing_from_designation("6308", overrides={"bore": 0.038})
     assert wide.ball_diameter > plain.ball_diameter
@@ -372,7 +366,6 @@ def test_overrides_feed_the_estimate():
 
 
 def test_bad_overrides_are_input_errors():
-    pytest.importorskip("bearinglab.designation")
     with pytest.raises(InputError, match="overrides"):
         bearing_from_designation("6205", overrides={"balls": 9})
     with pytest.raises(InputError, match="ball_count"):
@@ -381,18 +374,15 @@ def test_bad_overrides_are_input_errors():
 
 @pytest.mark.parametrize("text", ["NU2210", "22310", "30205", "NA4905", "51205", "2205", "3205"])
 def test_non_modelled_types_are_catalog_errors(text):
-    pytest.importorskip("bearinglab.designation")
     with pytest.raises(CatalogError, match="internal-geometry model"):
         bearing_from_designation(text)
 
 
 def test_roller_bearings_still_have_boundary_dimensions():
-    pytest.importorskip("bearinglab.designation")
     assert boundary_dimensions("NU2210").width == pytest.approx(0.023)
 
 
 def test_angular_contact_uses_designation_or_family_angle():
-    pytest.importorskip("bearinglab.designation")
     b, _ = bearing_from_designation("7205")
     assert b.contact_angle == pytest.approx(math.radians(40))
     assert b.sources["contact_angle"].kind == "default"
@@ -402,7 +392,6 @@ def test_angular_contact_uses_designation_or_family_angle():
 
 
 def test_no_family_no_estimate():
-    pytest.importorskip("bearinglab.designation")
     with pytest.raises(CatalogError, match="cannot estimate"):
         bearing_from_designation("6421")
 

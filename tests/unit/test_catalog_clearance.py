@@ -140,7 +140,6 @@ def _mean(low_um, high_um):
 
 
 def test_6205_gets_the_cn_mean():
-    pytest.importorskip("bearinglab.designation")
     b, _ = bearing_from_designation("6205")
     assert b.diametral_clearance == pytest.approx(_mean(5, 20))
     src = b.sources["diametral_clearance"]
@@ -150,7 +149,6 @@ def test_6205_gets_the_cn_mean():
 
 
 def test_6205_c3_gets_the_c3_mean():
-    pytest.importorskip("bearinglab.designation")
     b, des = bearing_from_designation("6205 C3")
     assert "C3" in [code for code, _ in des.suffixes]
     assert b.diametral_clearance == pytest.approx(_mean(13, 28))
@@ -161,7 +159,6 @@ def test_6205_c3_gets_the_c3_mean():
 
 
 def test_6205_2rs_c4_gets_the_c4_mean():
-    pytest.importorskip("bearinglab.designation")
     b, des = bearing_from_designation("6205-2RS C4")
     assert des.closures == "2seals"
     assert b.diametral_clearance == pytest.approx(_mean(23, 41))
@@ -182,13 +179,11 @@ def test_6205_2rs_c4_gets_the_c4_mean():
     ],
 )
 def test_group_and_bore_pick_the_row(text, expected_um):
-    pytest.importorskip("bearinglab.designation")
     b, _ = bearing_from_designation(text)
     assert b.diametral_clearance == pytest.approx(_mean(*expected_um))
 
 
 def test_published_row_without_clearance_gets_the_table_value():
-    pytest.importorskip("bearinglab.designation")
     b, _ = bearing_from_designation("6205-2RS")  # the CWRU drive-end row
     assert b.sources["ball_count"].kind == "catalog"
     assert b.diametral_clearance == pytest.approx(_mean(5, 20))
@@ -196,14 +191,12 @@ def test_published_row_without_clearance_gets_the_table_value():
 
 
 def test_published_clearance_wins():
-    pytest.importorskip("bearinglab.designation")
     b, _ = bearing_from_designation("209 (Harris)")  # P_d = 15 um published
     assert b.diametral_clearance == pytest.approx(15 * UM)
     assert b.sources["diametral_clearance"].kind == "catalog"
 
 
 def test_overrides_win():
-    pytest.importorskip("bearinglab.designation")
     b, _ = bearing_from_designation("6205 C3", overrides={"diametral_clearance": 40e-6})
     assert b.diametral_clearance == pytest.approx(40e-6)
     assert b.sources["diametral_clearance"] == Source("user", "command line or caller")
@@ -213,7 +206,6 @@ def test_overrides_win():
 
 
 def test_contact_angle_override_keeps_the_table_clearance():
-    pytest.importorskip("bearinglab.designation")
     b, _ = bearing_from_designation("6205 C3", overrides={"contact_angle": 0.1})
     assert b.contact_angle == pytest.approx(0.1)
     assert b.sources["contact_angle"].kind == "user"
@@ -222,14 +214,12 @@ def test_contact_angle_override_keeps_the_table_clearance():
 
 
 def test_angular_contact_keeps_the_clearance_from_its_angle():
-    pytest.importorskip("bearinglab.designation")
     b, _ = bearing_from_designation("7205 B")
     assert b.sources["diametral_clearance"].kind == "default"
     assert b.free_contact_angle == pytest.approx(b.contact_angle)
 
 
 def test_gost_designations_get_cn_with_a_note():
-    pytest.importorskip("bearinglab.designation")
     plain, des = bearing_from_designation("180205")
     assert des.system == "gost"
     assert plain.diametral_clearance == pytest.approx(_mean(5, 20))
@@ -250,14 +240,12 @@ def test_gost_designations_get_cn_with_a_note():
     ],
 )
 def test_explicit_group_the_table_cannot_give_is_an_error(text, match):
-    pytest.importorskip("bearinglab.designation")
     with pytest.raises(CatalogError, match=match) as info:
         bearing_from_designation(text)
     assert "override" in str(info.value)
 
 
 def test_the_nominal_bore_of_the_designation_picks_the_row():
-    pytest.importorskip("bearinglab.designation")
     b, _ = bearing_from_designation("6205", overrides={"bore": 0.0245})
     assert b.bore == pytest.approx(0.0245)
     assert b.diametral_clearance == pytest.approx(_mean(5, 20))
