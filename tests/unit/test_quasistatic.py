@@ -215,14 +215,7 @@ def test_inner_ring_expansion_thin_ring_limit_and_effect():
     from bearinglab.quasistatic import inner_ring_expansion
 
     # a ring whose bore is almost its raceway is a thin ring: u = rho omega^2 R^3 / E
-    thin = BallBearing(
-        ball_count=9,
-        ball_diameter=7.94e-3,
-        pitch_diameter=39.04e-3,
-        bore=31.0e-3,
-        outside_diameter=52e-3,
-        width=15e-3,
-    )
+    thin = bearing(bore=31.0e-3, outside_diameter=52e-3, width=15e-3)
     omega = 30000 * math.pi / 30
     r = 0.5 * thin.inner_raceway_diameter
     assert inner_ring_expansion(thin, omega) == pytest.approx(
