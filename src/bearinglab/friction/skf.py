@@ -59,7 +59,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ..errors import InputError
+from ..errors import InputError, positive_number
 from ..units import rad_s_to_rpm, rpm_to_rad_s  # noqa: F401 - rpm_to_rad_s: doctests
 
 #: Conversions: SI -> SKF engineering units.
@@ -125,13 +125,7 @@ class SkfGeometryConstants:
             v = getattr(self, name)
             if v is None and name in ("r3", "s3"):
                 continue
-            if (
-                isinstance(v, bool)
-                or not isinstance(v, (int, float, np.integer, np.floating))
-                or not math.isfinite(v)
-                or v < 0
-            ):
-                raise InputError(name, v, "a finite constant >= 0 (SKF units)")
+            positive_number(name, v, "a finite constant >= 0 (SKF units)", zero=True)
 
 
 def _dgbb(r1, r2, s1, s2):

@@ -51,7 +51,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import InputError
+from ..errors import InputError, positive_number
 
 #: 0 degC in kelvin [K].
 ZERO_CELSIUS = 273.15
@@ -177,16 +177,6 @@ def roelands_index(viscosity, pressure_viscosity_coefficient):
 # ---------------------------------------------------------------- layer 2: the model
 
 
-def _positive(name: str, value, what: str) -> None:
-    if (
-        isinstance(value, bool)
-        or not isinstance(value, (int, float, np.integer, np.floating))
-        or not math.isfinite(value)
-        or value <= 0
-    ):
-        raise InputError(name, value, what)
-
-
 @dataclass(frozen=True)
 class Lubricant:
     """A Newtonian lubricant (oil, or the base oil of a grease) for EHL calculations.
@@ -233,8 +223,8 @@ class Lubricant:
     def __post_init__(self) -> None:
         if not isinstance(self.name, str) or not self.name.strip():
             raise InputError("name", self.name, "a non-empty string")
-        _positive("dynamic_viscosity", self.dynamic_viscosity, "a positive viscosity [Pa s]")
-        _positive(
+        positive_number("dynamic_viscosity", self.dynamic_viscosity, "a positive viscosity [Pa s]")
+        positive_number(
             "reference_temperature", self.reference_temperature, "an absolute temperature [K]"
         )
         if self.reference_temperature < MIN_TEMPERATURE:
@@ -244,7 +234,7 @@ class Lubricant:
                 f"an absolute temperature >= {MIN_TEMPERATURE} K",
                 "temperatures are in kelvin: 40 degC = 313.15 K",
             )
-        _positive(
+        positive_number(
             "pressure_viscosity_coefficient",
             self.pressure_viscosity_coefficient,
             "a positive coefficient alpha [1/Pa] (typically 1e-8 to 3e-8 for oils)",
@@ -256,7 +246,7 @@ class Lubricant:
                 "a coefficient in 1/Pa, at most 1e-6",
                 "GPa^-1 values must be multiplied by 1e-9",
             )
-        _positive("density", self.density, "a positive density [kg/m^3]")
+        positive_number("density", self.density, "a positive density [kg/m^3]")
         beta = self.temperature_coefficient
         if beta is not None and (
             isinstance(beta, bool)
@@ -274,7 +264,7 @@ class Lubricant:
             raise InputError("limiting_shear_coefficient", lim, "None or a value in (0, 1) [-]")
         z = self.roelands_index
         if z is not None:
-            _positive("roelands_index", z, "None or a positive index Z [-]")
+            positive_number("roelands_index", z, "None or a positive index Z [-]")
 
     @classmethod
     def from_roelands(
@@ -307,7 +297,7 @@ class Lubricant:
             ``temperature_coefficient`` [1/K], ``limiting_shear_coefficient`` [-],
             ``source`` [-].
         """
-        _positive("roelands_index", roelands_index, "a positive index Z [-]")
+        positive_number("roelands_index", roelands_index, "a positive index Z [-]")
         alpha = float(roelands_pressure_viscosity_coefficient(dynamic_viscosity, roelands_index))
         return cls(
             name,

@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..errors import InputError
+from ..errors import InputError, positive_number
 from .sources import AIR_DENSITY, AIR_SOUND_SPEED
 
 #: Distance of the default field point outside the bearing's outside diameter [m] (the
@@ -35,15 +35,8 @@ class Air:
 
     def __post_init__(self) -> None:
         for name, unit in (("density", "[kg/m^3]"), ("sound_speed", "[m/s]")):
-            v = getattr(self, name)
-            if (
-                isinstance(v, bool)
-                or not isinstance(v, (int, float, np.integer, np.floating))
-                or not math.isfinite(v)
-                or v <= 0
-            ):
-                raise InputError(name, v, f"a finite number > 0 {unit}")
-            object.__setattr__(self, name, float(v))
+            v = positive_number(name, getattr(self, name), f"a finite number > 0 {unit}")
+            object.__setattr__(self, name, v)
 
 
 @dataclass(frozen=True)

@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..errors import InputError
+from ..errors import InputError, positive_number
 from .frequencies import (
     free_ring_frequency,
     linear_stiffness_ratio,
@@ -186,15 +186,8 @@ class RingModes:
 
 
 def _scalar(name, value, unit, allow_zero=False):
-    if (
-        isinstance(value, bool)
-        or not isinstance(value, (int, float, np.integer, np.floating))
-        or not math.isfinite(value)
-        or value < 0
-        or (value == 0 and not allow_zero)
-    ):
-        raise InputError(name, value, f"a finite value {'>=' if allow_zero else '>'} 0 {unit}")
-    return float(value)
+    allowed = f"a finite value {'>=' if allow_zero else '>'} 0 {unit}"
+    return positive_number(name, value, allowed, zero=allow_zero)
 
 
 def _per_mode(values, ms, name) -> dict:
