@@ -147,6 +147,24 @@ def save_plot_figure(fig, path: Path, flag: str = "--plot") -> None:
         raise OptionError(flag, str(path), exc.allowed) from None
 
 
+def in_range(
+    flag: str, value: float | None, low: float, high: float, what: str, *, low_open: bool = False
+) -> float | None:
+    """An option's value checked against [low, high] ((low, high] with ``low_open``), in the
+    option's unit (its suffix); None (not given) passes."""
+    from ..units import unit_of
+
+    if value is None:
+        return None
+    if not (math.isfinite(value) and (low < value if low_open else low <= value) and value <= high):
+        unit = unit_of(flag)
+        symbol = f" {unit.symbol}" if unit is not None else ""
+        raise OptionError(
+            flag, value, f"{what} in {'(' if low_open else '['}{low:g}, {high:g}]{symbol}"
+        )
+    return float(value)
+
+
 def positive(flag: str, value, allowed: str, zero: bool = False):
     if value is not None and not (math.isfinite(value) and (value >= 0 if zero else value > 0)):
         raise OptionError(flag, value, allowed)

@@ -79,6 +79,18 @@ def _fmt(value, digits: int = 4) -> str:
     return escape(str(value))
 
 
+def _number(value) -> str:
+    """A value for a table: 4 significant digits, no exponent from 1e-4 to 1e6; None is "-",
+    a string is shown as it is."""
+    if value is None:
+        return "-"
+    if isinstance(value, str):
+        return value
+    if 1e4 <= abs(value) < 1e6:
+        return f"{value:.0f}"
+    return f"{value:.4g}"
+
+
 class _Table(Table):
     """A rich Table whose header words are kept whole (each column's ``min_width``) as
     long as the table then fits; where it would not, the minimum widths are dropped

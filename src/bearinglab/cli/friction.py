@@ -27,10 +27,11 @@ from ._inputs import (
     RadialLoadOpt,
     RingSpeedOpt,
     _print_warnings,
+    in_range,
     load_n,
     speed_rad_s,
 )
-from ._output import _emit_json, _table
+from ._output import _emit_json, _number, _table
 
 app = command_app()
 
@@ -93,22 +94,6 @@ class OilKind(str, Enum):
     transmission_fluid = "transmission-fluid"
 
 
-def _in_range(
-    flag: str, value: float | None, low: float, high: float, what: str, low_open: bool = True
-) -> float | None:
-    """An option's value checked against its range, in the option's unit (its suffix)."""
-    if value is None:
-        return None
-    ok = math.isfinite(value) and (low < value if low_open else low <= value) and value <= high
-    if not ok:
-        unit = unit_of(flag)
-        symbol = f" {unit.symbol}" if unit is not None else ""
-        raise OptionError(
-            flag, value, f"{what} in {'(' if low_open else '['}{low:g}, {high:g}]{symbol}"
-        )
-    return float(value)
-
-
 def _numbers(flag: str, text: str | None, counts: tuple, what: str) -> list[float] | None:
     if text is None:
         return None
@@ -122,7 +107,8 @@ def _numbers(flag: str, text: str | None, counts: tuple, what: str) -> list[floa
 
 
 def _mm(geometry: dict, name: str) -> float | None:
-    value = _in_range("--" + name.replace("_", "-"), geometry.get(name), 0.0, 1e5, "a length")
+    flag = "--" + name.replace("_", "-")
+    value = in_range(flag, geometry.get(name), 0.0, 1e5, "a length", low_open=True)
     return None if value is None else UNITS["mm"].to_si(value)
 
 
@@ -320,11 +306,13 @@ def friction_command(
     fr = load_n("--radial-load-n", radial_load_n)
     fa = load_n("--axial-load-n", axial_load_n)
     p = None if equivalent_load_n is None else load_n("--equivalent-load-n", equivalent_load_n)
-    c0 = _in_range("--static-load-rating-kn", static_load_rating_kn, 0.0, 1e5, "a rating")
-    nu = _in_range("--viscosity-mm2-s", viscosity_mm2_s, 0.0, 1e6, "a viscosity")
+    c0 = in_range(
+        "--static-load-rating-kn", static_load_rating_kn, 0.0, 1e5, "a rating", low_open=True
+    )
+    nu = in_range("--viscosity-mm2-s", viscosity_mm2_s, 0.0, 1e6, "a viscosity", low_open=True)
     t_low, t_high = (t - ZERO_CELSIUS for t in OPERATING_TEMPERATURE_RANGE)
-    t = _in_range("--temperature-c", temperature_c, t_low, t_high, "a temperature", low_open=False)
-    ds = _in_range("--seal-diameter-mm", seal_diameter_mm, 0.0, 1e5, "a diameter")
+    t = in_range("--temperature-c", temperature_c, t_low, t_high, "a temperature")
+    ds = in_range("--seal-diameter-mm", seal_diameter_mm, 0.0, 1e5, "a diameter", low_open=True)
     c = _numbers(
         "--skf-constants",
         skf_constants,
@@ -391,18 +379,6 @@ def friction_command(
         return
     _print(result, out)
     _print_warnings(out["warnings"])
-
-
-def _number(value) -> str:
-    """A value for a table: 4 significant digits, no exponent from 1e-4 to 1e6."""
-    if value is None:
-        return "-"
-    if isinstance(value, str):
-        return value
-    a = abs(value)
-    if 1e4 <= a < 1e6:
-        return f"{value:.0f}"
-    return f"{value:.4g}"
 
 
 def _print(result, out: dict) -> None:

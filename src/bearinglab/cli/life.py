@@ -2,7 +2,6 @@
 ISO 76:2006, or the ISO/TS 16281 reference life from the load distribution). Parses the
 options and calls :func:`bearinglab.life.rating_life` once."""
 
-import math
 from enum import Enum
 from pathlib import Path
 from typing import Annotated
@@ -28,10 +27,11 @@ from ._inputs import (
     RingSpeedOpt,
     _print_warnings,
     check_loads,
+    in_range,
     plot_option,
     speed_rad_s,
 )
-from ._output import _plot_and_emit, _table
+from ._output import _number, _plot_and_emit, _table
 
 app = command_app()
 
@@ -54,21 +54,6 @@ MAX_RATING_KN = 1e5
 class LifeMethod(str, Enum):
     iso281 = "iso281"
     iso16281 = "iso16281"
-
-
-def _in_range(
-    flag: str, value: float | None, low: float, high: float, what: str, low_open: bool = False
-) -> float | None:
-    """An option's value checked against its range, in the option's unit (its suffix)."""
-    if value is None:
-        return None
-    if not (math.isfinite(value) and (low < value if low_open else low <= value) and value <= high):
-        unit = unit_of(flag)
-        symbol = f" {unit.symbol}" if unit is not None else ""
-        raise OptionError(
-            flag, value, f"{what} in {'(' if low_open else '['}{low:g}, {high:g}]{symbol}"
-        )
-    return float(value)
 
 
 def _contamination(text: str | None):
@@ -173,9 +158,9 @@ def life_command(
 
     omega = speed_rad_s(speed_rpm)
     check_loads(radial_load_n, axial_load_n, unloaded="an unloaded bearing has no rating life")
-    _in_range("--reliability-percent", reliability_percent, 90.0, 99.95, "a reliability")
-    nu = _in_range("--viscosity-mm2-s", viscosity_mm2_s, 0.0, 1e6, "a viscosity", low_open=True)
-    tilt = _in_range("--misalignment-mrad", misalignment_mrad, -20.0, 20.0, "a tilt")
+    in_range("--reliability-percent", reliability_percent, 90.0, 99.95, "a reliability")
+    nu = in_range("--viscosity-mm2-s", viscosity_mm2_s, 0.0, 1e6, "a viscosity", low_open=True)
+    tilt = in_range("--misalignment-mrad", misalignment_mrad, -20.0, 20.0, "a tilt")
     if tilt and method is not LifeMethod.iso16281:
         raise OptionError(
             "--misalignment-mrad",
@@ -184,7 +169,7 @@ def life_command(
             "ISO 281 has no misalignment; use --method iso16281",
         )
     c, c0 = (
-        _in_range(flag, value, 0.0, MAX_RATING_KN, "a rating", low_open=True)
+        in_range(flag, value, 0.0, MAX_RATING_KN, "a rating", low_open=True)
         for flag, value in (
             ("--dynamic-load-rating-kn", dynamic_load_rating_kn),
             ("--static-load-rating-kn", static_load_rating_kn),
@@ -243,15 +228,6 @@ def life_command(
     if _plot_and_emit(out, json_output, result, plot):
         return
     _print(result, out, bearing)
-
-
-def _number(value) -> str:
-    """A value for a table: 4 significant digits, no exponent from 1e-4 to 1e6."""
-    if value is None:
-        return "-"
-    if 1e4 <= abs(value) < 1e6:
-        return f"{value:.0f}"
-    return f"{value:.4g}"
 
 
 def _print(result, out: dict, bearing) -> None:
