@@ -27,6 +27,7 @@ from ._inputs import (
     ShaftSpeedOpt,
     _print_warnings,
     check_loads,
+    in_range,
     option_error,
     speed_rad_s,
 )
@@ -47,10 +48,8 @@ DesignationArg = Annotated[
 def _check(speed_rpm, radial, axial, duration, slip_duration, sample_rate, viscosity, output):
     speed_rad_s(speed_rpm)
     check_loads(radial, axial, unloaded="an unloaded bearing has no load distribution or life")
-    if not (math.isfinite(duration) and 0 < duration <= 60):
-        raise OptionError("--duration-s", duration, "a duration in (0, 60] s")
-    if not (math.isfinite(slip_duration) and 0 <= slip_duration <= 10):
-        raise OptionError("--slip-duration-s", slip_duration, "a duration in [0, 10] s")
+    in_range("--duration-s", duration, 0.0, 60.0, "a duration", low_open=True)
+    in_range("--slip-duration-s", slip_duration, 0.0, 10.0, "a duration")
     if sample_rate is not None and not (math.isfinite(sample_rate) and 0 < sample_rate <= 1e7):
         raise OptionError("--sample-rate-hz", sample_rate, "a rate in (0, 1e7] Hz")
     if viscosity is not None and not (math.isfinite(viscosity) and 0 < viscosity <= 1e6):
