@@ -35,10 +35,11 @@ NOT_REPRODUCED = {
     "4 BSF (279.8 Hz, z 5.8); BSF z 2.6, 2 BSF + FTF z 2.3. Each "
     "line's empirical p-value is floored near 1/(reference "
     "positions) ~ 10^-2.6, so two lines make no series: ball "
-    "10^-0.9 (cpw), 10^-0.3 (drs-sk) against 10^-2.6",
+    "10^-2.0 (cpw), 10^-0.8 (drs-sk) against 10^-2.6, and "
+    "10^-0.9 without 2 BSF (support gate 10^-2)",
     "cwru/12k_DE/3005.mat": "ball 0.028 in, M1 Y2: 2 BSF +0.3 % (z 16.7) and 6 BSF (z 8.9) "
     "are the two largest lines of the cpw SES, 2 and 3 FTF z ~7: "
-    "ball 10^-2.71 (cpw), 10^-2.73 (drs-sk), 10^-2.32 (raw) "
+    "ball 10^-2.68 (cpw), 10^-2.70 (drs-sk), 10^-2.29 (raw) "
     "against 10^-2.60, but it rests on one line: without 2 BSF "
     "10^-1.3, short of the 10^-2 support gate",
     "cwru/12k_DE/197.mat": "outer 0.014 in at 6 o'clock, Y2 with M3 only: the cpw SES is "

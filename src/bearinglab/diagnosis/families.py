@@ -103,6 +103,14 @@ class Family:
     orders: int
     gate_orders: int = 0
 
+    @property
+    def lowest(self) -> float:
+        """Lowest frequency at which the family reads a line [Hz]: the fundamental at the
+        bottom of its window, less its deepest lower sideband where that stays above 0."""
+        low = self.frequency * (1.0 - self.below)
+        side = low - self.orders * (self.modulation or 0.0)
+        return side if side > 0 else low
+
     def to_dict(self) -> dict:
         """JSON form: ``kinematic_hz``, ``tolerance_below``, ``tolerance_above``,
         ``modulation_hz``, ``sideband_orders``."""

@@ -19,8 +19,9 @@ The test of a fault family (outer race, inner race, ball, cage):
    barely move a median;
 2. a line expected at frequency f is read as the largest normalised value z over the
    bin nearest f and its two neighbours (the line's own width under a Hann window); its
-   p-value is its rank among the same reading at every other position of the spectrum
-   up to the search limit (:func:`line_logp`: an empirical null, because the envelope
+   p-value is its rank among the same reading at every other position where a line may
+   stand, from the lowest line of any family to the search limit (:func:`line_logp`: an
+   empirical null, because the envelope
    spectrum of a real machine holds far more, and larger, lines than the chi-square law
    of noise allows - on the healthy CWRU record 97 the chi-square p-values put some
    family beyond 1e-900);
@@ -264,6 +265,7 @@ def series_test(
     orders: int = 0,
     valid: np.ndarray | None = None,
     gate_orders: int = 0,
+    bottom: float = 0.0,
 ) -> SeriesTest:
     """Significance of the harmonic series n f' (n = 1..``harmonics``) with its sidebands
     n f' +- k ``modulation`` (k = 1..``orders``), f' scanned over
@@ -294,6 +296,9 @@ def series_test(
     gate_orders : int
         Sideband orders counted with the harmonics in ``harmonic_log_p`` (0: harmonics
         alone).
+    bottom : float
+        Lowest frequency at which a line is sought [Hz]: the reference of each line's
+        p-value starts there (:func:`line_logp`).
 
     Returns
     -------
@@ -326,7 +331,14 @@ def series_test(
     readable = inside & (bins > 0)
     logp = np.where(
         readable,
-        line_logp(zmax, count, top / resolution, np.where(readable, values, 0.0), index),
+        line_logp(
+            zmax,
+            count,
+            top / resolution,
+            np.where(readable, values, 0.0),
+            index,
+            bottom / resolution,
+        ),
         0.0,
     )
     if not np.any(readable):
@@ -380,12 +392,23 @@ OWN_BINS = 2
 
 
 def line_logp(
-    zmax: np.ndarray, count: np.ndarray, top_bin: float, values, index: np.ndarray
+    zmax: np.ndarray,
+    count: np.ndarray,
+    top_bin: float,
+    values,
+    index: np.ndarray,
+    bottom_bin: float = 1.0,
 ) -> np.ndarray:
     """ln p of lines read as ``values`` (largest z over three bins, one row per candidate
     fundamental, at bins ``index``) against the same reading at every other valid
-    position of the spectrum from bin 1 to ``top_bin``: the empirical null
-    (1 + #positions reading at least as much) / (1 + #positions).
+    position of the spectrum from ``bottom_bin`` (at least 1) to ``top_bin``: the
+    empirical null (1 + #positions reading at least as much) / (1 + #positions).
+
+    The reference starts where a line may be sought (the analysis passes the lowest
+    line of any family, about 0.98 FTF): below it the positions read the main lobe and
+    first side lobes of the 0 Hz line (the envelope's mean, the largest value of every
+    envelope spectrum), a place no bearing line can stand and which would otherwise
+    count against every line of the record.
 
     The spectrum's own bins are the reference, clutter of unrelated discrete lines
     included: a real machine's envelope spectrum holds many more, and larger, lines than
@@ -396,8 +419,9 @@ def line_logp(
     no different from any others (exchangeable bins).
     """
     stop = int(min(top_bin, zmax.size - 1))
-    live = count[1 : stop + 1] > 0
-    ref = np.sort(zmax[1 : stop + 1][live])
+    start = int(min(max(math.floor(bottom_bin), 1), stop))
+    live = count[start : stop + 1] > 0
+    ref = np.sort(zmax[start : stop + 1][live])
     values = np.asarray(values, dtype=float)
     above = ref.size - np.searchsorted(ref, values, side="left")
     # the candidate's own positions (deduplicated), and how many of them reach each value
@@ -405,7 +429,7 @@ def line_logp(
     own = np.sort(own, axis=1)
     fresh = np.ones(own.shape, bool)
     fresh[:, 1:] = own[:, 1:] != own[:, :-1]
-    inside = fresh & (own >= 1) & (own <= stop)
+    inside = fresh & (own >= start) & (own <= stop)
     own_z = np.where(inside, zmax[np.clip(own, 0, zmax.size - 1)], -np.inf)
     own_live = inside & np.isfinite(own_z)
     own_above = np.sum(own_z[:, None, :] >= values[:, :, None], axis=2)

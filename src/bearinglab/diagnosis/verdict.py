@@ -96,9 +96,15 @@ def discrete_mask(
 
 
 def test_all(
-    spectra, fams: list[Family], valid: dict, max_frequency: float, harmonics: int
+    spectra,
+    fams: list[Family],
+    valid: dict,
+    max_frequency: float,
+    harmonics: int,
+    bottom: float = 0.0,
 ) -> dict:
-    """(method, family) -> SeriesTest for every method spectrum and family."""
+    """(method, family) -> SeriesTest for every method spectrum and family, each line read
+    against the positions from ``bottom`` [Hz] up (see :func:`series_test`)."""
     out = {}
     for spec in spectra:
         z = spec.z
@@ -116,6 +122,7 @@ def test_all(
                 fam.orders,
                 valid[spec.method],
                 fam.gate_orders,
+                bottom,
             )
     return out
 
@@ -154,12 +161,19 @@ def decide(
     alpha = false_alarm / (len(fams) * len(spectra))
     log_alpha, log_support = math.log(alpha), math.log(SUPPORT_ALPHA)
     valid = {m: v.copy() for m, v in base_valid.items()}
+    # every family's lines are read against the same positions: where any of them may stand
+    bottom = min(f.lowest for f in fams)
     accepted: list[str] = []
     best: dict[str, tuple] = {}
     remaining = [f.name for f in fams]
     while remaining:
         tests = test_all(
-            spectra, [f for f in fams if f.name in remaining], valid, max_frequency, harmonics
+            spectra,
+            [f for f in fams if f.name in remaining],
+            valid,
+            max_frequency,
+            harmonics,
+            bottom,
         )
         for name in remaining:
             method, test = min(
