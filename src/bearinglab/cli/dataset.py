@@ -35,6 +35,11 @@ _FLAGS = {
 }
 
 
+def _ranged(flag: str, what: str):
+    """The option of an input drawn per record from V, LOW:HIGH or A,B,C (_RANGE)."""
+    return typer.Option(flag, help=f"{what}: {_RANGE}.")
+
+
 def _resonance(text: str):
     freq, at, zeta = text.partition("@")
     if not at or not freq.strip() or not zeta.strip():
@@ -72,12 +77,8 @@ def dataset(
     bearings: Annotated[
         str, typer.Option("--bearings", help="Designations, A,B,C (one drawn per record).")
     ] = "6205-2RS",
-    speed_rpm: Annotated[
-        str, typer.Option("--speed-rpm", help=f"Speed [rpm]: {_RANGE}.")
-    ] = "1700:1800",
-    radial_load_n: Annotated[
-        str, typer.Option("--radial-load-n", help=f"Radial load [N]: {_RANGE}.")
-    ] = "200:2000",
+    speed_rpm: Annotated[str, _ranged("--speed-rpm", "Speed [rpm]")] = "1700:1800",
+    radial_load_n: Annotated[str, _ranged("--radial-load-n", "Radial load [N]")] = "200:2000",
     faults: Annotated[
         str,
         typer.Option(
@@ -86,32 +87,22 @@ def dataset(
             "(two defects); cage is refused: the models have no cage defect.",
         ),
     ] = "none,outer,inner,ball",
-    defect_width_mm: Annotated[
-        str, typer.Option("--defect-width-mm", help=f"Defect width [mm]: {_RANGE}.")
-    ] = "0.2:1.5",
-    defect_depth_mm: Annotated[
-        str, typer.Option("--defect-depth-mm", help=f"Defect depth [mm]: {_RANGE}.")
-    ] = "0.1:0.3",
+    defect_width_mm: Annotated[str, _ranged("--defect-width-mm", "Defect width [mm]")] = "0.2:1.5",
+    defect_depth_mm: Annotated[str, _ranged("--defect-depth-mm", "Defect depth [mm]")] = "0.1:0.3",
     defect_position_deg: Annotated[
         str,
-        typer.Option(
+        _ranged(
             "--defect-position-deg",
-            help="Outer-race defect position from +x towards +y "
-            f"[deg] (-90: bottom of the load zone): {_RANGE}.",
+            "Outer-race defect position from +x towards +y [deg] (-90: bottom of the load zone)",
         ),
     ] = "-135:-45",
-    waviness_um: Annotated[
-        str, typer.Option("--waviness-um", help=f"Raceway waviness amplitude [um]: {_RANGE}.")
-    ] = "0",
-    waviness_orders: Annotated[
-        str, typer.Option("--waviness-orders", help=f"Waviness orders: {_RANGE}.")
-    ] = "2:30",
+    waviness_um: Annotated[str, _ranged("--waviness-um", "Raceway waviness amplitude [um]")] = "0",
+    waviness_orders: Annotated[str, _ranged("--waviness-orders", "Waviness orders")] = "2:30",
     ball_size_error_um: Annotated[
-        str,
-        typer.Option("--ball-size-error-um", help=f"Band of ball diameter errors [um]: {_RANGE}."),
+        str, _ranged("--ball-size-error-um", "Band of ball diameter errors [um]")
     ] = "0",
     noise_ms2: Annotated[
-        str, typer.Option("--noise-ms2", help=f"RMS of the measurement noise [m/s^2]: {_RANGE}.")
+        str, _ranged("--noise-ms2", "RMS of the measurement noise [m/s^2]")
     ] = "0.5:5",
     resonance: Annotated[
         list[str] | None,
@@ -125,9 +116,7 @@ def dataset(
     sample_rate_hz: Annotated[
         str, typer.Option("--sample-rate-hz", help="Sample rate [Hz]: V or A,B,C.")
     ] = "20000",
-    duration_s: Annotated[
-        str, typer.Option("--duration-s", help=f"Record length [s]: {_RANGE}.")
-    ] = "1",
+    duration_s: Annotated[str, _ranged("--duration-s", "Record length [s]")] = "1",
     model: Annotated[
         str, typer.Option("--model", help="rigid (seed 003) or slip (seed 004), or rigid,slip.")
     ] = "rigid",
