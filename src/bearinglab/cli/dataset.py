@@ -11,7 +11,7 @@ from ..errors import InputError
 from ._app import command_app, console
 from ._inputs import JsonOpt, OptionError, SchedulerOpt, WorkersOpt
 from ._output import _emit_json, _table
-from .study import hint_of, run_rows
+from .study import run_rows
 
 app = command_app()
 
@@ -60,7 +60,7 @@ def _remap(exc: InputError) -> InputError:
             "add --yes to make them all",
         )
     flag = _FLAGS.get(exc.parameter, "--" + exc.parameter.replace("_", "-"))
-    return OptionError(flag, exc.value, exc.allowed, hint_of(exc))
+    return OptionError(flag, exc.value, exc.allowed, exc.hint)
 
 
 @app.command("dataset")

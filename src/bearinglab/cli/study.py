@@ -51,13 +51,6 @@ def _grid(items: list[str]) -> dict:
     return grid
 
 
-def hint_of(exc: InputError) -> str:
-    """The "(...)" part of an InputError's message, if any."""
-    text, head = str(exc), f"expected {exc.allowed}"
-    rest = text[text.find(head) + len(head) :] if head in text else ""
-    return rest[2:-1] if rest.startswith(" (") and rest.endswith(")") else ""
-
-
 def _remap(exc: InputError) -> InputError:
     """The library's error in the command line's terms (the flag the user typed)."""
     if exc.parameter == "cases" and "confirmation" in exc.allowed:
@@ -68,7 +61,7 @@ def _remap(exc: InputError) -> InputError:
             "add --yes to run them all",
         )
     flag = _FLAGS.get(exc.parameter, f"--set {exc.parameter}")
-    return OptionError(flag, exc.value, exc.allowed, hint_of(exc))
+    return OptionError(flag, exc.value, exc.allowed, exc.hint)
 
 
 def _label(name: str) -> str:
