@@ -64,6 +64,16 @@ RaceControlOpt = Annotated[
     ),
 ]
 
+#: static and stiffness-map share --gyroscopic and --race-control.
+GyroscopicOpt = Annotated[
+    bool,
+    typer.Option(
+        "--gyroscopic",
+        help="Include the balls' gyroscopic moments, held by friction at the controlling "
+        "raceway (--race-control).",
+    ),
+]
+
 
 def _grid(flag: str, text: str, signed: bool = False, speed: bool = False) -> np.ndarray:
     """'a:b:n' (n values from a to b), 'a,b,c' or a single value."""
@@ -151,14 +161,7 @@ def static(
             show_default=False,
         ),
     ] = None,
-    gyroscopic: Annotated[
-        bool,
-        typer.Option(
-            "--gyroscopic",
-            help="Include the balls' gyroscopic moments, held by friction "
-            "at the controlling raceway (--race-control).",
-        ),
-    ] = False,
+    gyroscopic: GyroscopicOpt = False,
     race_control: RaceControlOpt = RaceControl.outer,
     ring_expansion: Annotated[
         bool,
@@ -399,14 +402,7 @@ def stiffness_map(
             "--workers", help="Worker processes (default: all cores).", show_default=False
         ),
     ] = 0,
-    gyroscopic: Annotated[
-        bool,
-        typer.Option(
-            "--gyroscopic",
-            help="Include the balls' gyroscopic moments, held by "
-            "friction at the controlling raceway (--race-control).",
-        ),
-    ] = False,
+    gyroscopic: GyroscopicOpt = False,
     race_control: RaceControlOpt = RaceControl.outer,
     output: Annotated[
         Path | None,
