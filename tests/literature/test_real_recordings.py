@@ -35,13 +35,19 @@ NOT_REPRODUCED = {
     "4 BSF (279.8 Hz, z 5.8); BSF z 2.6, 2 BSF + FTF z 2.3. Each "
     "line's empirical p-value is floored near 1/(reference "
     "positions) ~ 10^-2.6, so two lines make no series: ball "
-    "10^-2.0 (cpw), 10^-0.8 (drs-sk) against 10^-2.6, and "
-    "10^-0.9 without 2 BSF (support gate 10^-2)",
+    "10^-2.64 (cpw, with 2 BSF + 2 FTF and 4 BSF - 2 FTF) against "
+    "10^-2.60, but its harmonics with their first sidebands "
+    "make 10^-0.0 (the gate is 10^-2): the series rests on its "
+    "second cage sidebands; 10^-0.6 (drs-sk), 10^-0.4 (raw)",
     "cwru/12k_DE/3005.mat": "ball 0.028 in, M1 Y2: 2 BSF +0.3 % (z 16.7) and 6 BSF (z 8.9) "
     "are the two largest lines of the cpw SES, 2 and 3 FTF z ~7: "
-    "ball 10^-2.68 (cpw), 10^-2.70 (drs-sk), 10^-2.29 (raw) "
-    "against 10^-2.60, but it rests on one line: without 2 BSF "
-    "10^-1.3, short of the 10^-2 support gate",
+    "with drs-sk 1, 2, 3 x 2 BSF (z 23, 10, 14) and 2 FTF (z 15): "
+    "ball 10^-5.2 against 10^-2.6, 10^-4.0 without 2 BSF, but the "
+    "harmonics with their first sidebands make 10^-1.2 (gate "
+    "10^-2): each line's p-value is floored near 10^-2.6 and "
+    "Fisher's combination is diluted by the 4th-6th harmonics "
+    "and the sidebands that hold nothing; cpw 10^-3.1 (gate "
+    "10^-1.9), raw 10^-3.3 (gate 10^-0.8)",
     "cwru/12k_DE/197.mat": "outer 0.014 in at 6 o'clock, Y2 with M3 only: the cpw SES is "
     "flat (largest line z 3.9), outer race 10^-0.0 with cpw and "
     "drs-sk, 10^-0.3 with raw; our fast-kurtogram band does not "

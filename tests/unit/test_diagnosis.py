@@ -15,7 +15,7 @@ from bearinglab.diagnosis import (
     peak_label,
 )
 from bearinglab.diagnosis.families import tolerances
-from bearinglab.diagnosis.statistics import chi2_logsf, series_test, welch_dof
+from bearinglab.diagnosis.statistics import chi2_logsf, decades, series_test, welch_dof
 from bearinglab.diagnosis.verdict import leakage_halfwidth
 from bearinglab.dynamics import Defect, simulate
 from bearinglab.errors import InputError
@@ -272,7 +272,34 @@ def test_nested_templates_keep_an_unmodulated_series():
             z[round((n * 100.0 + k * 7.0) / 0.5)] = 8.0
     modulated = series_test(z, 0.5, 40.0, 100.0, 0.02, 0.02, 5, 900.0, modulation=7.0, orders=2)
     assert modulated.significance > with_sidebands.significance + 3
-    assert sum(ln.kind == "sideband" and abs(ln.k) == 2 for ln in modulated.lines) == 10
+    second = [ln for ln in modulated.lines if ln.kind == "sideband" and abs(ln.k) == 2]
+    assert sum(ln.n >= 1 for ln in second) == 10
+
+
+def test_modulation_lines_support_a_series_but_are_no_harmonics():
+    # impacts at 100 Hz whose amplitude a carrier modulates at 7 Hz: the envelope holds the
+    # harmonics, their sidebands and the modulation's own lines k x 7 Hz (sidebands of the
+    # 0th harmonic)
+    rng = np.random.default_rng(5)
+    z = rng.chisquare(40, 2000) / 40
+    for n in range(1, 4):
+        for k in (-1, 0, 1):
+            z[round((n * 100.0 + k * 7.0) / 0.5)] = 6.0
+    args = (z, 0.5, 40.0, 100.0, 0.02, 0.02, 5, 900.0)
+    before = series_test(*args, modulation=7.0, orders=2, gate_orders=1)
+    for k in (1, 2):
+        z[round(k * 7.0 / 0.5)] = 6.0
+    after = series_test(*args, modulation=7.0, orders=2, gate_orders=1)
+    assert (0, 1) in {(ln.n, ln.k) for ln in after.lines}
+    assert after.significance > before.significance + 1
+    # the gate counts harmonics and their first sidebands only, never the modulation lines
+    assert after.harmonic_log_p == pytest.approx(before.harmonic_log_p, abs=0.05)
+    # modulation lines alone make no series: the harmonic gate stays at p = 1
+    alone = rng.chisquare(40, 2000) / 40
+    for k in (1, 2):
+        alone[round(k * 7.0 / 0.5)] = 50.0
+    lone = series_test(alone, *args[1:], modulation=7.0, orders=2, gate_orders=1)
+    assert decades(lone.harmonic_log_p) < 1.0
 
 
 def test_outer_race_with_twice_shaft_sidebands_only(kin):

@@ -19,6 +19,10 @@ MSSP 25(2) (2011) 485-520, sec. 2 and fig. 4):
 - ball: harmonics of the ball-defect rate 2 BSF (the defect strikes both races per spin
   revolution) with sidebands at the cage rate, which carries the ball through the load
   zone (+-1, 2 x FTF);
+- every modulated family also shows the modulation's own lines, k x shaft or k x FTF
+  (k = 1, 2: the sidebands of the 0th harmonic, :mod:`.statistics`); the shaft
+  harmonics are masked as the machine's, so this adds FTF lines to the ball family only,
+  and never to the test of its harmonics (FTF lines alone make no ball fault);
 - cage: harmonics of FTF. FTF lines are also the cage-rate modulation of a ball fault and
   appear beside outer-race faults (a series of unequal balls repeats once per cage
   revolution), so they make a cage fault only when no ball or outer-race series is found.
@@ -106,10 +110,13 @@ class Family:
     @property
     def lowest(self) -> float:
         """Lowest frequency at which the family reads a line [Hz]: the fundamental at the
-        bottom of its window, less its deepest lower sideband where that stays above 0."""
+        bottom of its window, its deepest lower sideband where that stays above 0, or the
+        modulation's own first line."""
         low = self.frequency * (1.0 - self.below)
-        side = low - self.orders * (self.modulation or 0.0)
-        return side if side > 0 else low
+        if not (self.modulation and self.orders):
+            return low
+        side = low - self.orders * self.modulation
+        return min(side if side > 0 else low, self.modulation)
 
     def to_dict(self) -> dict:
         """JSON form: ``kinematic_hz``, ``tolerance_below``, ``tolerance_above``,

@@ -25,8 +25,12 @@ The test of a fault family (outer race, inner race, ball, cage):
    spectrum of a real machine holds far more, and larger, lines than the chi-square law
    of noise allows - on the healthy CWRU record 97 the chi-square p-values put some
    family beyond 1e-900);
-3. the family's lines are its harmonics n f' (n = 1 .. N) and the modulation sidebands
-   n f' +- k f_m that the physics puts there; one fundamental f' = (1 + s) f_kin with one
+3. the family's lines are its harmonics n f' (n = 1 .. N), the modulation sidebands
+   n f' +- k f_m that the physics puts there, and the modulation's own lines k f_m (the
+   sidebands of the 0th harmonic: an impact train whose amplitude varies at f_m has
+   envelope lines at k f_m as well as around each harmonic - the envelope spectrum is
+   the modulation's spectrum convolved with the train's, whose 0 Hz line is its mean;
+   Randall & Antoni 2011, sec. 2); one fundamental f' = (1 + s) f_kin with one
    slip s for all of them (the cage has one mean speed over a record), scanned over the
    family's tolerance window on a grid fine enough to move the N-th harmonic by half a
    bin;
@@ -45,7 +49,8 @@ The test of a fault family (outer race, inner race, ball, cage):
    10^-10.9: docs/capabilities/diagnosis.md);
 5. the harmonics must be significant by themselves, at SUPPORT_ALPHA (sidebands support a
    series, they do not make one: a flexible template of harmonics and two orders of sidebands fits
-   stray lines, e.g. BPFO as a ball line's second cage sideband) - for ball and inner-race
+   stray lines, e.g. BPFO as a ball line's second cage sideband; the modulation's own
+   lines never count here, FTF lines alone are no ball fault) - for ball and inner-race
    faults with their first sidebands, since the load zone modulates those defects
    deeply (:data:`bearinglab.diagnosis.families.GATE_ORDERS`); and the series must
    not rest on one line: combined again without its strongest line, it must still
@@ -189,7 +194,8 @@ def fisher_logp(logps, axis=-1):
 @dataclass(frozen=True)
 class Line:
     """One line of a family as found: ``kind`` ("harmonic" or "sideband"), harmonic
-    ``n``, sideband order ``k`` (0 for a harmonic), ``expected_hz`` (on the fitted
+    ``n`` (0 for the modulation's own lines k f_m), sideband order ``k`` (0 for a
+    harmonic), ``expected_hz`` (on the fitted
     fundamental) and ``frequency_hz`` (bin of the largest value read) [Hz], normalised
     power ``z`` [-] and ``log_p`` (natural log of its p-value) [-]."""
 
@@ -268,7 +274,8 @@ def series_test(
     bottom: float = 0.0,
 ) -> SeriesTest:
     """Significance of the harmonic series n f' (n = 1..``harmonics``) with its sidebands
-    n f' +- k ``modulation`` (k = 1..``orders``), f' scanned over
+    n f' +- k ``modulation`` and the modulation's lines k ``modulation``
+    (k = 1..``orders``), f' scanned over
     [(1 - below) f, (1 + above) f] (see the module docstring).
 
     Parameters
@@ -320,6 +327,7 @@ def series_test(
             for k in range(1, orders + 1)
             for s in (-1, 1)
         ]
+        spec += [("sideband", 0, k) for k in range(1, orders + 1)]
     n_arr = np.array([r[1] for r in spec], float)
     k_arr = np.array([r[2] for r in spec], float)
     freq = grid[:, None] * n_arr[None, :] + k_arr[None, :] * (modulation or 0.0)
@@ -364,7 +372,7 @@ def series_test(
     lps = logp[best][row]
     rest = np.delete(lps, int(np.argmin(lps)))
     support = min(0.0, log_m + float(fisher_logp(rest))) if rest.size else 0.0
-    own = row & (np.abs(k_arr) <= gate_orders)
+    own = row & (np.abs(k_arr) <= gate_orders) & (n_arr >= 1)
     harmonic = min(0.0, log_m + float(fisher_logp(logp[best][own]))) if own.any() else 0.0
     lines = []
     for j in np.flatnonzero(row):
