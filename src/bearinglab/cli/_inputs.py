@@ -165,6 +165,23 @@ def in_range(
     return float(value)
 
 
+def number_list(
+    flag: str, text: str | None, allowed: str, *, counts: tuple = (), zero: bool = False
+) -> list[float] | None:
+    """A comma-separated option A,B,C as finite numbers, each > 0 (>= 0 with ``zero``) and
+    as many as one of ``counts`` (any number without); None (not given) passes."""
+    if text is None:
+        return None
+    try:
+        values = [float(v) for v in text.split(",")]
+    except ValueError:
+        values = []
+    counted = bool(values) and (not counts or len(values) in counts)
+    if not (counted and all(math.isfinite(v) and (v >= 0 if zero else v > 0) for v in values)):
+        raise OptionError(flag, text, allowed)
+    return values
+
+
 def positive(flag: str, value, allowed: str, zero: bool = False):
     if value is not None and not (math.isfinite(value) and (value >= 0 if zero else value > 0)):
         raise OptionError(flag, value, allowed)

@@ -21,6 +21,7 @@ from ._inputs import (
     OptionError,
     _print_warnings,
     check_path,
+    number_list,
     plot_option,
     positive,
     speed_rad_s,
@@ -47,6 +48,14 @@ FLAGS = {
 }
 
 
+def _low_high(flag: str, text: str, allowed: str) -> tuple[float, float]:
+    """An option LO,HI with 0 < LO < HI."""
+    low, high = number_list(flag, text, allowed, counts=(2,))
+    if not low < high:
+        raise OptionError(flag, text, allowed)
+    return low, high
+
+
 def parse_band(text: str | None):
     """--band-hz: none (each method's own band), auto (the fast kurtogram's for every
     method) or LO,HI [Hz]."""
@@ -54,15 +63,9 @@ def parse_band(text: str | None):
         return None
     if text.strip().lower() == "auto":
         return "auto"
-    try:
-        low, high = (float(v) for v in text.split(","))
-    except ValueError:
-        low = high = math.nan
-    if not (math.isfinite(low) and math.isfinite(high) and 0 < low < high):
-        raise OptionError(
-            "--band-hz", text, "none (each method's own band), auto or LO,HI in Hz with 0 < LO < HI"
-        )
-    return low, high
+    return _low_high(
+        "--band-hz", text, "none (each method's own band), auto or LO,HI in Hz with 0 < LO < HI"
+    )
 
 
 def parse_speed(text: str | None):
@@ -82,12 +85,7 @@ def parse_range(text: str | None):
     """--speed-range-rpm LO,HI -> (lo, hi) [rad/s]."""
     if text is None:
         return None
-    try:
-        low, high = (float(v) for v in text.split(","))
-    except ValueError:
-        low = high = math.nan
-    if not (math.isfinite(low) and math.isfinite(high) and 0 < low < high):
-        raise OptionError("--speed-range-rpm", text, "LO,HI in rpm with 0 < LO < HI")
+    low, high = _low_high("--speed-range-rpm", text, "LO,HI in rpm with 0 < LO < HI")
     return low * math.pi / 30, high * math.pi / 30
 
 

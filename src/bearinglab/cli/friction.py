@@ -3,7 +3,6 @@ the SKF four-component model. Parses the options and calls
 :func:`bearinglab.friction.bearing_friction`, which holds every rule (equivalent load,
 C_0, seals, viscosity, lubrication); the report calls the same function."""
 
-import math
 from enum import Enum
 from typing import Annotated
 
@@ -29,6 +28,7 @@ from ._inputs import (
     _print_warnings,
     in_range,
     load_n,
+    number_list,
     speed_rad_s,
 )
 from ._output import _emit_json, _number, _table
@@ -92,18 +92,6 @@ class OilKind(str, Enum):
     mineral = "mineral"
     synthetic = "synthetic"
     transmission_fluid = "transmission-fluid"
-
-
-def _numbers(flag: str, text: str | None, counts: tuple, what: str) -> list[float] | None:
-    if text is None:
-        return None
-    try:
-        values = [float(v) for v in text.split(",")]
-    except ValueError:
-        values = []
-    if len(values) not in counts or not all(math.isfinite(v) and v >= 0 for v in values):
-        raise OptionError(flag, text, what)
-    return values
 
 
 def _mm(geometry: dict, name: str) -> float | None:
@@ -313,15 +301,20 @@ def friction_command(
     t_low, t_high = (t - ZERO_CELSIUS for t in OPERATING_TEMPERATURE_RANGE)
     t = in_range("--temperature-c", temperature_c, t_low, t_high, "a temperature")
     ds = in_range("--seal-diameter-mm", seal_diameter_mm, 0.0, 1e5, "a diameter", low_open=True)
-    c = _numbers(
+    c = number_list(
         "--skf-constants",
         skf_constants,
-        (4, 6),
         "R1,R2,S1,S2 (deep-groove) or "
         "R1,R2,S1,S2,R3,S3 (angular contact), numbers >= 0 in SKF units",
+        counts=(4, 6),
+        zero=True,
     )
-    ks = _numbers(
-        "--seal-constants", seal_constants, (3,), "K_S1,K_S2,BETA, numbers >= 0 in SKF units"
+    ks = number_list(
+        "--seal-constants",
+        seal_constants,
+        "K_S1,K_S2,BETA, numbers >= 0 in SKF units",
+        counts=(3,),
+        zero=True,
     )
     typed = {
         "shaft_speed": speed_rpm,

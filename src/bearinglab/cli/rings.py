@@ -24,6 +24,7 @@ from ._inputs import (
     OptionError,
     _print_warnings,
     check_path,
+    number_list,
     option_error,
     plot_option,
 )
@@ -50,18 +51,6 @@ def _modes(text: str) -> list[int]:
     if not ms or min(ms) < 1 or max(ms) > 50:
         raise OptionError("--modes", text, "FIRST:LAST or a list of mode numbers 1..50")
     return ms
-
-
-def _frequencies(text: str | None) -> list[float] | None:
-    if text is None:
-        return None
-    try:
-        values = [float(v) for v in text.split(",")]
-    except ValueError:
-        values = []
-    if not values or not all(math.isfinite(v) and v > 0 for v in values):
-        raise OptionError("--free-frequencies-hz", text, "positive frequencies f2,f3,... [Hz]")
-    return values
 
 
 def _ring_level_only(designation: str | None, geometry: dict) -> bool:
@@ -149,7 +138,9 @@ def ring_modes_command(
     check_path("--plot", plot, (".png", ".svg", ".pdf"))
     ms = _modes(modes)
     flexural = [m for m in ms if m >= 2]
-    free = _frequencies(free_frequencies_hz)
+    free = number_list(
+        "--free-frequencies-hz", free_frequencies_hz, "positive frequencies f2,f3,... [Hz]"
+    )
     if free is not None:
         if len(free) != len(flexural):
             raise OptionError(
