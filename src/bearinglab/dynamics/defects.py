@@ -32,7 +32,7 @@ from typing import Literal
 
 import numpy as np
 
-from ..errors import InputError
+from ..errors import InputError, positive_number
 
 Location = Literal["outer", "inner", "ball"]
 LOCATIONS = ("outer", "inner", "ball")
@@ -111,13 +111,7 @@ class Defect:
         for name, value in (("width", self.width), ("depth", self.depth)):
             if name == "depth" and value is None:
                 continue
-            if (
-                isinstance(value, bool)
-                or not isinstance(value, (int, float, np.floating))
-                or not math.isfinite(value)
-                or value <= 0
-            ):
-                raise InputError(name, value, "a positive length [m]")
+            positive_number(name, value, "a positive length [m]")
         if not (isinstance(self.angle, (int, float, np.floating)) and math.isfinite(self.angle)):
             raise InputError("angle", self.angle, "a finite angle [rad]")
         if (

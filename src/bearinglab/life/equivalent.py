@@ -19,7 +19,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ..errors import InputError
+from ..errors import InputError, positive_number
 from ..geometry import BallBearing
 from . import tables as T
 
@@ -71,12 +71,9 @@ def load_factors(contact_angle: float, relative_axial_load: float) -> LoadFactor
             "an angle in [0, 45] degrees",
             "ISO 281 Table 3 covers radial and angular-contact ball bearings up to 45 deg",
         )
-    if not (
-        isinstance(relative_axial_load, (int, float, np.floating))
-        and math.isfinite(relative_axial_load)
-        and relative_axial_load >= 0.0
-    ):
-        raise InputError("relative_axial_load", relative_axial_load, "a finite value >= 0 [Pa]")
+    positive_number(
+        "relative_axial_load", relative_axial_load, "a finite value >= 0 [Pa]", zero=True
+    )
     angle = math.degrees(contact_angle)
     if angle >= 20.0:
         cols = [np.array([T.XYE_HIGH_SINGLE[a][k] for a in _HIGH_ANGLES]) for k in range(3)]

@@ -20,7 +20,7 @@ import math
 
 import numpy as np
 
-from ..errors import InputError
+from ..errors import InputError, positive_number
 from ..geometry import BallBearing
 from ..operating import OperatingCondition
 from ..units import rad_s_to_rpm, rpm_to_rad_s  # noqa: F401 - rpm_to_rad_s: doctests
@@ -185,12 +185,7 @@ def life_modification_factor(
             f"a viscosity ratio >= {T.KAPPA_MIN}",
             "ISO 281 gives no a_ISO below 0.1",
         )
-    if not (
-        isinstance(load_ratio, (int, float, np.floating))
-        and math.isfinite(load_ratio)
-        and load_ratio >= 0.0
-    ):
-        raise InputError("load_ratio", load_ratio, "e_C C_u / P, a finite value >= 0")
+    positive_number("load_ratio", load_ratio, "e_C C_u / P, a finite value >= 0", zero=True)
     cap = T.A_ISO_CAP
     if ep_additives and kappa < 1.0 and contamination >= T.EP_KAPPA_EC_MIN:
         kappa, cap = 1.0, T.EP_A_ISO_CAP

@@ -25,7 +25,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..errors import InputError
+from ..errors import InputError, positive_number
 from ..geometry import BallBearing
 from . import tables as T
 
@@ -309,14 +309,7 @@ class LoadRatings:
 def _given(name: str, value) -> float | None:
     if value is None:
         return None
-    if (
-        isinstance(value, bool)
-        or not isinstance(value, (int, float, np.floating))
-        or not math.isfinite(value)
-        or value <= 0
-    ):
-        raise InputError(name, value, "a rating > 0 [N]")
-    return float(value)
+    return positive_number(name, value, "a rating > 0 [N]")
 
 
 def load_ratings(
