@@ -31,7 +31,7 @@ from dataclasses import asdict, dataclass
 import numpy as np
 
 from ..contact import hertz
-from ..errors import InputError
+from ..errors import positive_number
 from ..kinematics import frequency_orders
 from ..materials import effective_modulus
 from . import _kernels as kern
@@ -75,16 +75,8 @@ class RigidParameters:
     def __post_init__(self) -> None:
         for name, value in asdict(self).items():
             positive = name.endswith("mass")
-            if (
-                isinstance(value, bool)
-                or not isinstance(value, (int, float, np.floating))
-                or not math.isfinite(value)
-                or value < 0
-                or (positive and value == 0)
-            ):
-                raise InputError(
-                    name, value, "a positive value" if positive else "a value >= 0 (SI units)"
-                )
+            allowed = "a positive value" if positive else "a value >= 0 (SI units)"
+            positive_number(name, value, allowed, zero=not positive)
 
     def to_dict(self) -> dict:
         """JSON-ready values (SI, with units in the keys)."""

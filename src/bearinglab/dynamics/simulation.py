@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..errors import ConvergenceError, InputError
+from ..errors import ConvergenceError, InputError, positive_number
 from ..kinematics import DefectFrequencies, defect_frequencies
 from ..signal import Signal
 from . import _integrate, _kernels, _rosenbrock, _slip_kernels, rigid, slip
@@ -156,18 +156,6 @@ class Simulation:
         return self._angle_ratio(self.ball_spin_phase, "bsf")
 
 
-def _check_number(name, value, allowed, low=0.0, inclusive=False):
-    if (
-        isinstance(value, bool)
-        or not isinstance(value, (int, float, np.floating))
-        or not math.isfinite(value)
-        or value < low
-        or (value == low and not inclusive)
-    ):
-        raise InputError(name, value, allowed)
-    return float(value)
-
-
 def simulate(
     bearing,
     condition,
@@ -223,13 +211,13 @@ def simulate(
     """
     if model not in MODELS:
         raise InputError("model", model, f"one of {MODELS}")
-    duration = _check_number("duration", duration, "a duration > 0 [s]")
-    sample_rate = _check_number("sample_rate", sample_rate, "a rate > 0 [Hz]")
+    duration = positive_number("duration", duration, "a duration > 0 [s]")
+    sample_rate = positive_number("sample_rate", sample_rate, "a rate > 0 [Hz]")
     if duration * sample_rate < 64:
         raise InputError("duration", duration, f"at least {64 / sample_rate:g} s (64 samples)")
     if duration * sample_rate > 5e7:
         raise InputError("duration", duration, "at most 5e7 samples in one record")
-    noise = _check_number("noise", noise, "an RMS >= 0 [m/s^2]", inclusive=True)
+    noise = positive_number("noise", noise, "an RMS >= 0 [m/s^2]", zero=True)
     if condition.shaft_speed <= 0:
         raise InputError("shaft_speed", condition.shaft_speed, "a speed > 0 [rad/s]")
     defects = tuple(defects)
@@ -254,8 +242,8 @@ def simulate(
         atol = slip.atol(bearing.ball_count)
         rtol = 1e-3 if rtol is None else rtol
     if settle is not None:  # slip default: detected below (slip.settle)
-        settle = _check_number("settle", settle, "a time >= 0 [s]", inclusive=True)
-    rtol = _check_number("rtol", rtol, "a tolerance in (0, 0.1]")
+        settle = positive_number("settle", settle, "a time >= 0 [s]", zero=True)
+    rtol = positive_number("rtol", rtol, "a tolerance in (0, 0.1]")
     if rtol > 0.1:
         raise InputError("rtol", rtol, "a tolerance in (0, 0.1]")
 

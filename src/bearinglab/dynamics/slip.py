@@ -62,7 +62,7 @@ from typing import Literal
 import numpy as np
 
 from ..contact import hertz
-from ..errors import InputError
+from ..errors import InputError, positive_number
 from ..lubrication import LUBRICANTS, Lubricant
 from ..lubrication.ehl import entrainment_speed, hamrock_dowson_film
 from ..materials import effective_modulus
@@ -184,13 +184,7 @@ class SlipParameters:
         for name, value in asdict(self).items():
             if name in ("traction", "impact_forces", "spin_drag") or value is None:
                 continue
-            if (
-                isinstance(value, bool)
-                or not isinstance(value, (int, float, np.floating))
-                or not math.isfinite(value)
-                or value < 0
-            ):
-                raise InputError(name, value, "a finite value >= 0 (SI units)")
+            positive_number(name, value, "a finite value >= 0 (SI units)", zero=True)
         for name in (
             "flow_index",
             "regularisation_speed",
