@@ -81,12 +81,33 @@ def speed_rad_s(speed_rpm: float, *, zero: bool = False) -> float:
     return speed_rpm * math.pi / 30
 
 
+def in_range(
+    flag: str,
+    value: float | None,
+    low: float,
+    high: float,
+    what: str,
+    *,
+    low_open: bool = False,
+    hint: str = "",
+) -> float | None:
+    """An option's value checked against [low, high] ((low, high] with ``low_open``), in the
+    option's unit (its suffix); None (not given) passes."""
+    if value is None:
+        return None
+    if not (math.isfinite(value) and (low < value if low_open else low <= value) and value <= high):
+        from ..units import unit_of
+
+        unit = unit_of(flag)
+        symbol = f" {unit.symbol}" if unit is not None else ""
+        interval = f"{'(' if low_open else '['}{low:g}, {high:g}]{symbol}"
+        raise OptionError(flag, value, f"{what} in {interval}", hint)
+    return float(value)
+
+
 def load_n(flag: str, value: float, signed: bool = False) -> float:
     """A load option [N] in [0, MAX_LOAD_N] ([-MAX_LOAD_N, MAX_LOAD_N] when ``signed``)."""
-    low = -MAX_LOAD_N if signed else 0.0
-    if not (math.isfinite(value) and low <= value <= MAX_LOAD_N):
-        raise OptionError(flag, value, f"a load in [{low:g}, {MAX_LOAD_N:g}] N")
-    return float(value)
+    return in_range(flag, value, -MAX_LOAD_N if signed else 0.0, MAX_LOAD_N, "a load")
 
 
 def check_loads(radial: float, axial: float, unloaded: str | None = None) -> None:
@@ -145,24 +166,6 @@ def save_plot_figure(fig, path: Path, flag: str = "--plot") -> None:
         ) from None
     except InputError as exc:
         raise OptionError(flag, str(path), exc.allowed) from None
-
-
-def in_range(
-    flag: str, value: float | None, low: float, high: float, what: str, *, low_open: bool = False
-) -> float | None:
-    """An option's value checked against [low, high] ((low, high] with ``low_open``), in the
-    option's unit (its suffix); None (not given) passes."""
-    from ..units import unit_of
-
-    if value is None:
-        return None
-    if not (math.isfinite(value) and (low < value if low_open else low <= value) and value <= high):
-        unit = unit_of(flag)
-        symbol = f" {unit.symbol}" if unit is not None else ""
-        raise OptionError(
-            flag, value, f"{what} in {'(' if low_open else '['}{low:g}, {high:g}]{symbol}"
-        )
-    return float(value)
 
 
 def number_list(

@@ -28,10 +28,10 @@ from ._geometry import (
 from ._inputs import (
     MAX_BALL_LOAD_N,
     JsonOpt,
-    OptionError,
     PlotOpt,
     RingSpeedOpt,
     _print_warnings,
+    in_range,
     speed_rad_s,
 )
 from ._output import (
@@ -315,8 +315,7 @@ def contact(
     geometry,
 ):
     """Hertz contact of one ball with the inner and outer raceway."""
-    if not (math.isfinite(ball_load_n) and 0 < ball_load_n <= MAX_BALL_LOAD_N):
-        raise OptionError("--ball-load-n", ball_load_n, f"a load in (0, {MAX_BALL_LOAD_N:g}] N")
+    in_range("--ball-load-n", ball_load_n, 0.0, MAX_BALL_LOAD_N, "a load", low_open=True)
     bearing, _ = resolve_bearing(designation, geometry)
     from ..contact.ball_race import ball_contacts  # scipy.special: only this command
 

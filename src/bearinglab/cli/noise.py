@@ -42,6 +42,7 @@ from ._inputs import (
     ShaftSpeedOpt,
     _print_warnings,
     check_path,
+    in_range,
     option_error,
     positive,
     save_plot_figure,
@@ -140,18 +141,20 @@ def noise_command(
     from ..noise.model import outer_radius
 
     speed_rad_s(speed_rpm)
-    if not (math.isfinite(radial_load_n) and 0 < radial_load_n <= MAX_LOAD_N):
-        raise OptionError(
-            "--radial-load-n",
-            radial_load_n,
-            f"a load in (0, {MAX_LOAD_N:g}] N (the orbit needs a load)",
-        )
+    in_range(
+        "--radial-load-n",
+        radial_load_n,
+        0.0,
+        MAX_LOAD_N,
+        "a load",
+        low_open=True,
+        hint="the orbit needs a load",
+    )
     positive("--distance-mm", distance_mm, "a distance > 0 mm")
     if not math.isfinite(angle_deg):
         raise OptionError("--angle-deg", angle_deg, "a finite angle [deg]")
     positive("--duration-s", duration_s, "a duration > 0 s")
-    if points is not None and not 16 <= points <= MAX_POINTS:
-        raise OptionError("--points", points, f"an integer in [16, {MAX_POINTS}]")
+    in_range("--points", points, 16, MAX_POINTS, "an integer")
     if seed is not None and seed < 0:
         raise OptionError("--seed", seed, "an integer >= 0")
     if duration_s is not None and points is None and duration_s * SAMPLE_RATE > MAX_POINTS:

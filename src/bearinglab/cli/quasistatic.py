@@ -35,6 +35,7 @@ from ._inputs import (
     PlotOpt,
     RadialLoadOpt,
     _print_warnings,
+    in_range,
     load_n,
     option_error,
     save_plot_figure,
@@ -227,8 +228,7 @@ def static(
         if path is not None and path.suffix.lower() not in (".png", ".svg", ".pdf"):
             raise OptionError(flag, str(path), "a file name ending in .png, .svg or .pdf")
     orbit = orbit or orbit_plot is not None
-    if orbit_points is not None and not 2 <= orbit_points <= 100_000:
-        raise OptionError("--orbit-points", orbit_points, "an integer in [2, 100000]")
+    in_range("--orbit-points", orbit_points, 2, 100_000, "an integer")
     condition = _condition(fr, fa, speed_rpm, radial_load_angle_deg, misalignment_mrad)
     oil, temperature = _lubricant(film, lubricant, temperature_c)
     forms = FormErrors(waviness, ball_size_error_um, surface3d)

@@ -24,6 +24,7 @@ from ._inputs import (
     OptionError,
     _print_warnings,
     check_path,
+    in_range,
     number_list,
     option_error,
     plot_option,
@@ -158,8 +159,7 @@ def ring_modes_command(
     ):
         if value is not None and not (math.isfinite(value) and 0 < value < 1e15):
             raise OptionError(flag, value, "a finite value > 0")
-    if not (math.isfinite(axial_load_n) and 0 < axial_load_n <= MAX_LOAD_N):
-        raise OptionError("--axial-load-n", axial_load_n, f"a load in (0, {MAX_LOAD_N:g}] N")
+    in_range("--axial-load-n", axial_load_n, 0.0, MAX_LOAD_N, "a load", low_open=True)
     if _ring_level_only(designation, geometry):
         bearing, ball_count = None, geometry.get("balls")
         if ball_count is None:
