@@ -3,6 +3,7 @@ the one-line option errors (:class:`OptionError`, :func:`option_error`) and outp
 The geometry options and the bearing they describe are in :mod:`._geometry`."""
 
 import math
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Annotated
 
@@ -153,19 +154,28 @@ def _print_warnings(warnings: list[str]) -> None:
         console.print(f"[yellow]warning:[/yellow] {escape(text)}")
 
 
-def save_plot_figure(fig, path: Path, flag: str = "--plot") -> None:
-    """Save a composed figure atomically (bearinglab.plotting.save_figure); an unwritable
-    path is a one-line error naming ``flag``."""
-    from ..plotting import save_figure
-
+@contextmanager
+def writing(flag: str, path: Path):
+    """Write ``path``, the value of ``flag``, inside the block: an OSError, or the writer's
+    InputError refusing the path (its suffix, its directory), is a one-line error naming
+    ``flag``."""
     try:
-        save_figure(fig, path)
+        yield
     except OSError as exc:
         raise OptionError(
             flag, str(path), "a writable file", exc.strerror or type(exc).__name__
         ) from None
     except InputError as exc:
         raise OptionError(flag, str(path), exc.allowed) from None
+
+
+def save_plot_figure(fig, path: Path, flag: str = "--plot") -> None:
+    """Save a composed figure atomically (bearinglab.plotting.save_figure); an unwritable
+    path is a one-line error naming ``flag``."""
+    from ..plotting import save_figure
+
+    with writing(flag, path):
+        save_figure(fig, path)
 
 
 def number_list(

@@ -11,11 +11,8 @@ from rich.table import Table
 
 from ..errors import BearinglabError
 from ..geometry import BallBearing
-from ..plotting import save_figure
 from ._app import console
-from ._inputs import (
-    OptionError,
-)
+from ._inputs import save_plot_figure
 
 
 # ------------------------------------------------------------------ output helpers
@@ -50,20 +47,11 @@ def _emit_json(obj: dict) -> None:
     sys.stdout.write(json.dumps(_tidy(obj), indent=2, allow_nan=False) + "\n")
 
 
-def _save_plot(result, plot: Path) -> None:
-    try:
-        save_figure(result.plot()[0], plot)
-    except OSError as exc:
-        raise OptionError(
-            "--plot", str(plot), "a writable file", exc.strerror or type(exc).__name__
-        ) from None
-
-
 def _plot_and_emit(out: dict, json_output: bool, result, plot: Path | None) -> bool:
     """Draw ``result`` to ``plot`` when one is given, then print ``out`` as JSON (True: the
     command is done) or check that it is finite for the tables (False)."""
     if plot is not None:
-        _save_plot(result, plot)
+        save_plot_figure(result.plot()[0], plot)
     if json_output:
         _emit_json(out)
         return True

@@ -24,9 +24,10 @@ from ._inputs import (
     number_list,
     plot_option,
     positive,
+    save_plot_figure,
     speed_rad_s,
 )
-from ._output import _emit_json, _save_plot, print_verdict
+from ._output import _emit_json, print_verdict
 
 app = command_app()
 PlotOpt = plot_option("the squared envelope spectrum")
@@ -281,7 +282,7 @@ def analyze_command(
             value = exc.value  # the file's own rate
         raise OptionError(flag, value, exc.allowed, hint) from None
     if plot is not None:
-        _save_plot(diag, plot)
+        save_plot_figure(diag.plot()[0], plot)
     out = {"file": str(signal_file), "designation": designation, **diag.to_dict()}
     out["warnings"] = list(out["warnings"]) + _geometry_warnings(bearing)
     if json_output:

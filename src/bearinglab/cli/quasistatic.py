@@ -14,7 +14,7 @@ from ..files import write_atomically
 from ..lubrication import LUBRICANTS, ZERO_CELSIUS
 from ..operating import OperatingCondition
 from ..plausibility import operating_warnings
-from ..plotting import save_figure, stiffness_map_figure
+from ..plotting import stiffness_map_figure
 from ..quasistatic import solve_load_distribution
 from ..quasistatic.orbit import inner_ring_orbit
 from ..quasistatic.study import stiffness_map as stiffness_map_study
@@ -40,8 +40,9 @@ from ._inputs import (
     option_error,
     save_plot_figure,
     speed_rad_s,
+    writing,
 )
-from ._output import _emit_json, _save_plot, _table, progress_bar
+from ._output import _emit_json, _table, progress_bar
 
 app = command_app()
 
@@ -276,7 +277,7 @@ def static(
         out["orbit"] = o.to_dict()
         out["orbit_peak_to_peak_um"] = o.peak_to_peak * 1e6
     if plot is not None:
-        _save_plot(result, plot)
+        save_plot_figure(result.plot()[0], plot)
     if orbit_plot is not None:
         _plot_orbit(o, orbit_plot)
     if stiffness_csv is not None:
@@ -452,10 +453,7 @@ def stiffness_map(
         _write_csv(table, output)
     solved = table[table["status"] == "ok"]
     if plot is not None and len(solved):
-        try:
-            save_figure(stiffness_map_figure(solved)[0], plot)
-        except OSError as exc:
-            raise OptionError("--plot", str(plot), "a writable file", exc.strerror) from None
+        save_plot_figure(stiffness_map_figure(solved)[0], plot)
     if json_output:
         _emit_json(
             {
@@ -511,7 +509,5 @@ def _write_csv(table, path: Path, index: bool = False, flag: str = "--output") -
     """Write atomically: a temporary file in the same directory, then rename."""
     if path.parent and not path.parent.exists():
         raise OptionError(flag, str(path), "a path in an existing directory")
-    try:
+    with writing(flag, path):
         write_atomically(path, lambda tmp: table.to_csv(tmp, index=index))
-    except OSError as exc:
-        raise OptionError(flag, str(path), "a writable file", exc.strerror) from None

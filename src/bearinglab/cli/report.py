@@ -30,6 +30,7 @@ from ._inputs import (
     in_range,
     option_error,
     speed_rad_s,
+    writing,
 )
 from ._output import _emit_json, progress_bar
 
@@ -191,12 +192,8 @@ def report_command(
                     "duration_s": duration_s,
                 },
             ) from None
-    try:
+    with writing("--output", output):
         report.write(output)
-    except OSError as exc:
-        raise OptionError(
-            "--output", str(output), "a writable file", exc.strerror or type(exc).__name__
-        ) from None
     failed = [{"section": s.key, "title": s.title, "error": s.error} for s in report.failed]
     warnings = _geometry_warnings(bearing) + list(report.warnings)
     err = Console(stderr=True)

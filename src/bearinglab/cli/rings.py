@@ -28,8 +28,9 @@ from ._inputs import (
     number_list,
     option_error,
     plot_option,
+    save_plot_figure,
 )
-from ._output import _emit_json, _save_plot, _table
+from ._output import _emit_json, _table
 
 app = command_app()
 PlotOpt = plot_option("the frequencies")
@@ -201,7 +202,7 @@ def ring_modes_command(
             },
         ) from None
     if plot is not None:
-        _save_plot(result, plot)
+        save_plot_figure(result.plot()[0], plot)
     d = result.to_dict()
     if json_output:
         _emit_json({"designation": designation, **d})

@@ -44,6 +44,7 @@ from ._inputs import (
     positive,
     save_plot_figure,
     speed_rad_s,
+    writing,
 )
 from ._output import (
     _emit_json,
@@ -263,7 +264,8 @@ def simulate_command(
                 },
             ) from None
     if output is not None:
-        _write(output, record.simulation.signal)
+        with writing("--output", output):
+            write_signal(output, record.simulation.signal)
     if plot is not None:
         save_plot_figure(record.plot()[0], plot)
     warnings = _geometry_warnings(bearing) + list(record.warnings)
@@ -332,14 +334,3 @@ def _simulate_error(exc: InputError, bearing, options: dict) -> BearinglabError:
     if exc.parameter == "noise":  # --noise-ms2: the one option without a unit-table suffix
         return OptionError("--noise-ms2", options.get("noise_ms2"), exc.allowed, exc.hint)
     return option_error(exc, options)
-
-
-def _write(path: Path, signal) -> None:
-    try:
-        write_signal(path, signal)
-    except InputError as exc:
-        raise OptionError("--output", str(path), exc.allowed) from None
-    except OSError as exc:
-        raise OptionError(
-            "--output", str(path), "a writable file", exc.strerror or type(exc).__name__
-        ) from None

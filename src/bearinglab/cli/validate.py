@@ -11,7 +11,7 @@ from rich.markup import escape
 from rich.table import Table
 
 from ._app import command_app, console
-from ._inputs import JsonOpt, OptionError, check_path
+from ._inputs import JsonOpt, check_path, writing
 from ._output import _emit_json, progress_bar
 
 app = command_app()
@@ -132,9 +132,5 @@ def _write_html(path: Path, results: list[dict], summary: dict) -> None:
         summary,
         f"generated {now} by bearinglab {__version__} in {summary['duration_s']:.1f} s",
     )
-    try:
+    with writing("--html", path):
         write_atomically(path, lambda tmp: Path(tmp).write_text(text, encoding="utf-8"))
-    except OSError as exc:
-        raise OptionError(
-            "--html", str(path), "a writable file", exc.strerror or type(exc).__name__
-        ) from None
