@@ -99,29 +99,11 @@ def _condense(tj, inner, s, q, nr, nz, dmat, emat, sp, force, stiff, cw):
 
 
 @numba.njit(cache=True)
-def solve_balls(
-    b,
-    c_rho,
-    c_z,
-    t,
-    inner,
-    free,
-    radius,
-    side,
-    z0,
-    k_poly,
-    film,
-    ring,
-    control,
-    lam_i,
-    spd,
-    k_seat,
-    tol,
-    max_iterations=100,
-):
-    """Every ball's equilibrium for given groove centres, the force of the balls on the
-    inner ring (5,) and the condensed stiffness (5, 5). Returns (b, q, n_rho, n_z, delta,
-    speed (Z, 7), force, stiffness, worst residual [N], converged).
+def solve_balls(b, c_rho, c_z, balls, tol, max_iterations=100):
+    """Every ball's equilibrium for given groove centres c_rho, c_z (Z, C), the force of
+    the balls on the inner ring (5,) and the condensed stiffness (5, 5); ``balls`` a
+    _kernels.BallSet. Returns (b, q, n_rho, n_z, delta, speed (Z, 7), force, stiffness,
+    worst residual [N], converged).
 
     Balls not fully driven by both races orbit at the cage speed: the mean orbital speed
     of the driven balls (whose speeds do not depend on it), so the balls are solved in two
@@ -142,7 +124,23 @@ def solve_balls(
     res = np.zeros(nb)
     ok = np.zeros(nb, dtype=np.bool_)
     driven = np.zeros(nb, dtype=np.bool_)
-    spd = spd.copy()
+    t, inner, free, radius, side, z0 = (
+        balls.t,
+        balls.inner,
+        balls.free,
+        balls.radius,
+        balls.side,
+        balls.z0,
+    )
+    k_poly, film, ring, control, lam_i = (
+        balls.k_poly,
+        balls.film,
+        balls.ring,
+        balls.control,
+        balls.lam_i,
+    )
+    k_seat = balls.k_seat
+    spd = balls.spd.copy()
     # Pass 0 solves every ball; pass 1 re-solves, at the cage speed of the driven balls,
     # those that are not driven by both races (only at speed and when some are driven).
     for sweep in range(2):

@@ -21,6 +21,8 @@ which without speed forces is sum T^T S T - (sum T^T S)(sum S)^-1 (sum S T).
 
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 
 
@@ -103,6 +105,58 @@ def ring_jacobian(psi, rho, z):
     return np.broadcast_to(t, (len(psi), len(rho), 2, 5)).copy()
 
 
+class BallSet(NamedTuple):
+    """What stays fixed while the balls and the inner ring move (one solve), handed to the
+    ball and ring kernels, compiled and NumPy, as one argument (numba takes a named tuple
+    of arrays); built by :meth:`bearinglab.quasistatic.solver._Problem.ball_set`.
+
+    Attributes
+    ----------
+    t : array (Z, C, 2, 5)
+        Ring kinematics T (:func:`ring_jacobian`).
+    c0_rho, c0_z : arrays (Z, C)
+        Groove centres with the inner ring centred (the outer ring's misalignment in) [m].
+    inner : bool array (C,)
+        Inner-ring contacts.
+    free : array (Z, C)
+        R - D_w/2 of each ball and contact [m] (the ball's diameter error in).
+    radius, side, z0, k_poly, film
+        As in :func:`contact_state`.
+    ring : int array (C,)
+        Ring of each contact (0 inner, 1 outer).
+    control, lam_i : arrays (Z,)
+        Raceway control (0 outer, 1 inner) and lambda_i of each ball (see _ball.py).
+    spd : array (8,)
+        Speed parameters (see _ball.py).
+    k_seat : float
+        Load-deflection constant sizing the seat of a loose ball [N/m^1.5].
+    """
+
+    t: np.ndarray
+    c0_rho: np.ndarray
+    c0_z: np.ndarray
+    inner: np.ndarray
+    free: np.ndarray
+    radius: np.ndarray
+    side: np.ndarray
+    z0: np.ndarray
+    k_poly: np.ndarray
+    film: np.ndarray
+    ring: np.ndarray
+    control: np.ndarray
+    lam_i: np.ndarray
+    spd: np.ndarray
+    k_seat: float
+
+    def rows(self, balls) -> BallSet:
+        """The set of the balls selected by ``balls`` (an index or mask over Z)."""
+        return self._replace(**{name: getattr(self, name)[balls] for name in _PER_BALL})
+
+
+#: The fields of a BallSet with one row per ball.
+_PER_BALL = ("t", "c0_rho", "c0_z", "free", "film", "control", "lam_i")
+
+
 # ------------------------------------------------------------------ ball equilibrium
 
 #: A full Newton step is accepted unless it multiplies the ball's residual by more than this.
@@ -182,9 +236,7 @@ def speed_forces(q, n_rho, n_z, ring, control, lam_i, spd):
     return out
 
 
-def _speed_derivatives(
-    b, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, control, lam_i, spd, state
-):
+def _speed_derivatives(b, c_rho, c_z, balls, state):
     """D (Z, C, 2, 2) and E (Z, C, 2, 2): central differences of the total speed force and
     of the inner friction with respect to each contact vector v_l = b - c_l."""
     q, n_rho, n_z = state[:3]
@@ -192,7 +244,8 @@ def _speed_derivatives(
     d = np.zeros((nb, ncon, 2, 2))
     e = np.zeros((nb, ncon, 2, 2))
     for col in range(ncon):
-        h = FD_STEP * free[:, col]
+        h = FD_STEP * balls.free[:, col]
+        one_contact = slice(col, col + 1)
         for a in range(2):
             for sign in (1.0, -1.0):
                 shift = np.zeros((nb, 2))
@@ -200,23 +253,23 @@ def _speed_derivatives(
                 one = contact_state(
                     b[:, 0] + shift[:, 0],
                     b[:, 1] + shift[:, 1],
-                    c_rho[:, col : col + 1],
-                    c_z[:, col : col + 1],
-                    free[:, col : col + 1],
-                    radius[col : col + 1],
-                    side[col : col + 1],
-                    z0[col : col + 1],
-                    k_poly[col : col + 1],
-                    film[:, col : col + 1],
+                    c_rho[:, one_contact],
+                    c_z[:, one_contact],
+                    balls.free[:, one_contact],
+                    balls.radius[one_contact],
+                    balls.side[one_contact],
+                    balls.z0[one_contact],
+                    balls.k_poly[one_contact],
+                    balls.film[:, one_contact],
                 )
                 qq, rr, zz = q.copy(), n_rho.copy(), n_z.copy()
                 qq[:, col], rr[:, col], zz[:, col] = one[0][:, 0], one[1][:, 0], one[2][:, 0]
-                sp = speed_forces(qq, rr, zz, ring, control, lam_i, spd)
+                sp = speed_forces(qq, rr, zz, balls.ring, balls.control, balls.lam_i, balls.spd)
                 w = (sign / (2.0 * h))[:, None]
                 d[:, col, :, a] += w * sp[:, 0:2]
                 e[:, col, :, a] += w * sp[:, 2:4]
     # as the compiled twin: unloaded contacts and balls not on both races add nothing
-    inner = ring == 0
+    inner = balls.ring == 0
     both = np.any(q[:, inner] > 0, axis=1) & np.any(q[:, ~inner] > 0, axis=1)
     keep = (q > 0) & both[:, None]
     d[~keep] = 0.0
@@ -250,26 +303,7 @@ def condense(t, inner, state, sp, d, e):
     return force, stiffness
 
 
-def solve_balls_numpy(
-    b,
-    c_rho,
-    c_z,
-    t,
-    inner,
-    free,
-    radius,
-    side,
-    z0,
-    k_poly,
-    film,
-    ring,
-    control,
-    lam_i,
-    spd,
-    k_seat,
-    tol,
-    max_iterations=100,
-):
+def solve_balls_numpy(b, c_rho, c_z, balls, tol, max_iterations=100):
     """Newton's method on every ball's equilibrium (all balls at once, NumPy twin of
     _ball_set.solve_balls, same arguments and returns: b, q, n_rho, n_z, delta, speed
     (Z, 7), force (5,), stiffness (5, 5), worst residual [N], converged).
@@ -279,9 +313,10 @@ def solve_balls_numpy(
     driven by both races orbit at the mean orbital speed of those that are (a second pass
     for them, as in the compiled twin).
     """
-    spd = np.array(spd, dtype=float)
-    args = (c_rho, c_z, free, radius, side, z0, k_poly, film, ring, control, lam_i)
-    b, st, norm, ok = _solve_all(b, *args, spd, ~inner, k_seat, tol, max_iterations)
+    spd = np.array(balls.spd, dtype=float)
+    balls = balls._replace(spd=spd)  # spd[6] becomes the cage speed of the driven balls
+    inner, ring, control, lam_i = balls.inner, balls.ring, balls.control, balls.lam_i
+    b, st, norm, ok = _solve_all(b, c_rho, c_z, balls, tol, max_iterations)
     if spd[0] > 0:
         q = st[0]
         qi, qo = q[:, inner].sum(axis=1), q[:, ~inner].sum(axis=1)
@@ -289,13 +324,8 @@ def solve_balls_numpy(
         if 0 < driven.sum() < len(b):
             spd[6] = float(np.mean(speed_forces(*st[:3], ring, control, lam_i, spd)[driven, 4]))
             rest = ~driven
-            sub = [
-                a[rest] if getattr(a, "shape", ()) and a.shape[0] == len(b) and a.ndim > 1 else a
-                for a in args
-            ]
-            sub[9], sub[10] = control[rest], lam_i[rest]
             b2, st2, norm2, ok2 = _solve_all(
-                b[rest], *sub, spd, ~inner, k_seat, tol, max_iterations
+                b[rest], c_rho[rest], c_z[rest], balls.rows(rest), tol, max_iterations
             )
             b = b.copy()
             b[rest] = b2
@@ -307,12 +337,10 @@ def solve_balls_numpy(
             ok = ok and ok2
     sp = speed_forces(*st[:3], ring, control, lam_i, spd)
     if spd[0] > 0:
-        d, e = _speed_derivatives(
-            b, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, control, lam_i, spd, st
-        )
+        d, e = _speed_derivatives(b, c_rho, c_z, balls, st)
     else:
         d = e = np.zeros(st[4].shape)
-    force, stiffness = condense(t, inner, st, sp, d, e)
+    force, stiffness = condense(balls.t, inner, st, sp, d, e)
     return b, st[0], st[1], st[2], st[3], sp, force, stiffness, float(np.max(norm)), ok
 
 
@@ -323,34 +351,18 @@ def _spread(values, rows):
     return out
 
 
-def _solve_all(
-    b,
-    c_rho,
-    c_z,
-    free,
-    radius,
-    side,
-    z0,
-    k_poly,
-    film,
-    ring,
-    control,
-    lam_i,
-    spd,
-    outer,
-    k_seat,
-    tol,
-    max_iterations,
-):
+def _solve_all(b, c_rho, c_z, balls, tol, max_iterations):
     """The Newton iteration over all given balls at once; returns (b, state, residuals,
     converged)."""
+    spd, free, outer, k_seat = balls.spd, balls.free, ~balls.inner, balls.k_seat
     fc_seat = max(spd[2] * spd[6] ** 2, spd[7])
+    contacts = (free, balls.radius, balls.side, balls.z0, balls.k_poly, balls.film)
 
     def state(bb):
-        return contact_state(bb[:, 0], bb[:, 1], c_rho, c_z, free, radius, side, z0, k_poly, film)
+        return contact_state(bb[:, 0], bb[:, 1], c_rho, c_z, *contacts)
 
     def residual(st):
-        sp = speed_forces(st[0], st[1], st[2], ring, control, lam_i, spd)
+        sp = speed_forces(st[0], st[1], st[2], balls.ring, balls.control, balls.lam_i, spd)
         return np.stack(
             [sp[:, 0] - np.sum(st[0] * st[1], axis=1), sp[:, 1] - np.sum(st[0] * st[2], axis=1)],
             axis=1,
@@ -367,9 +379,7 @@ def _solve_all(
             converged = True
             break
         if spd[0] > 0:
-            d = _speed_derivatives(
-                b, c_rho, c_z, free, radius, side, z0, k_poly, film, ring, control, lam_i, spd, st
-            )[0]
+            d = _speed_derivatives(b, c_rho, c_z, balls, st)[0]
         else:
             d = 0.0
         jb = (d - st[4]).sum(axis=1)  # sum_l P_l

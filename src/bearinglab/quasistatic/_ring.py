@@ -53,10 +53,12 @@ def _lu_solve(a, rhs):
 
 
 @numba.njit(cache=True)
-def _centres(u, t, c0_rho, c0_z, inner):
-    nb, ncon = c0_rho.shape
-    c_rho = c0_rho.copy()
-    c_z = c0_z.copy()
+def _centres(u, balls):
+    """Groove centres (Z, C) with the inner ring displaced by u."""
+    t, inner = balls.t, balls.inner
+    nb, ncon = balls.c0_rho.shape
+    c_rho = balls.c0_rho.copy()
+    c_z = balls.c0_z.copy()
     for j in range(nb):
         for k in range(ncon):
             if inner[k]:
@@ -67,46 +69,10 @@ def _centres(u, t, c0_rho, c0_z, inner):
 
 
 @numba.njit(cache=True)
-def _at(
-    u,
-    b,
-    t,
-    c0_rho,
-    c0_z,
-    inner,
-    free,
-    radius,
-    side,
-    z0,
-    k_poly,
-    film,
-    ring,
-    control,
-    lam_i,
-    spd,
-    k_seat,
-    ball_tol,
-):
-    c_rho, c_z = _centres(u, t, c0_rho, c0_z, inner)
-    return _ball_set.solve_balls(
-        b,
-        c_rho,
-        c_z,
-        t,
-        inner,
-        free,
-        radius,
-        side,
-        z0,
-        k_poly,
-        film,
-        ring,
-        control,
-        lam_i,
-        spd,
-        k_seat,
-        ball_tol,
-    )
+def _at(u, b, balls, ball_tol):
+    """The ball set at ring displacement u, from ball centres b (_ball_set.solve_balls)."""
+    c_rho, c_z = _centres(u, balls)
+    return _ball_set.solve_balls(b, c_rho, c_z, balls, ball_tol)
 
 
 @numba.njit(cache=True)
@@ -128,58 +94,14 @@ def _norm(x, free_dofs):
 
 
 @numba.njit(cache=True)
-def ring_newton(
-    u0,
-    b0,
-    free_dofs,
-    load,
-    scale,
-    max_step,
-    t,
-    c0_rho,
-    c0_z,
-    inner,
-    free,
-    radius,
-    side,
-    z0,
-    k_poly,
-    film,
-    ring,
-    control,
-    lam_i,
-    spd,
-    k_seat,
-    ball_tol,
-    target,
-    max_iterations,
-):
+def ring_newton(u0, b0, free_dofs, load, scale, max_step, balls, ball_tol, target, max_iterations):
     """Compiled twin of solver._newton (damped Newton with a line search on the free ring
-    DOFs). Returns (u, b, q, n_rho, n_z, delta, speed, force, stiffness, status, residual):
-    status 0 converged, 1 out of iterations, 2 no admissible step, 3 balls not solved at
-    the start."""
+    DOFs; ``balls`` a _kernels.BallSet). Returns (u, b, q, n_rho, n_z, delta, speed, force,
+    stiffness, status, residual): status 0 converged, 1 out of iterations, 2 no admissible
+    step, 3 balls not solved at the start."""
 
     def at(u_trial, b_trial):  # the ball set at ring displacement u_trial (inlined)
-        return _at(
-            u_trial,
-            b_trial,
-            t,
-            c0_rho,
-            c0_z,
-            inner,
-            free,
-            radius,
-            side,
-            z0,
-            k_poly,
-            film,
-            ring,
-            control,
-            lam_i,
-            spd,
-            k_seat,
-            ball_tol,
-        )
+        return _at(u_trial, b_trial, balls, ball_tol)
 
     u = u0.copy()
     nfree = 0
@@ -287,30 +209,7 @@ def ring_newton(
 
 @numba.njit(cache=True)
 def ring_newton_line(
-    loads,
-    u0,
-    b0,
-    free_dofs,
-    scale,
-    max_step,
-    t,
-    c0_rho,
-    c0_z,
-    inner,
-    free,
-    radius,
-    side,
-    z0,
-    k_poly,
-    film,
-    ring,
-    control,
-    lam_i,
-    spd,
-    k_seat,
-    tolerance,
-    floor,
-    max_iterations,
+    loads, u0, b0, free_dofs, scale, max_step, balls, tolerance, floor, max_iterations
 ):
     """Many load cases in one call (a stiffness-map line): each case starts from the
     previous solution (ring and balls). Stops at the first case that does not converge.
@@ -334,30 +233,7 @@ def ring_newton_line(
         ball_tol = max(tolerance * max(load_norm, 1.0) / nb, 2.0 * floor)
         target = tolerance * max(load_norm, 1.0)
         res = ring_newton(
-            u,
-            b,
-            free_dofs,
-            load,
-            scale,
-            max_step,
-            t,
-            c0_rho,
-            c0_z,
-            inner,
-            free,
-            radius,
-            side,
-            z0,
-            k_poly,
-            film,
-            ring,
-            control,
-            lam_i,
-            spd,
-            k_seat,
-            ball_tol,
-            target,
-            max_iterations,
+            u, b, free_dofs, load, scale, max_step, balls, ball_tol, target, max_iterations
         )
         status[i] = res[9]
         if res[9] != 0:

@@ -203,22 +203,26 @@ class _Problem:
         c_z = self.c0_z + np.where(self.inner, shift[..., 1], 0.0)
         return c_rho, c_z
 
-    def kernel_arguments(self):
+    def ball_set(self) -> _kernels.BallSet:
+        """The constants of the ball and ring kernels as they stand (the film, the raceway
+        controls and the speed parameters change between solves)."""
         cs = self.contacts
-        return (
-            self.t,
-            self.inner,
-            self.free,
-            cs.groove_radius,
-            self._side,
-            cs.z0,
-            cs.k_poly,
-            self.film,
-            self._ring,
-            self.control,
-            self.lam_i,
-            self.spd,
-            self.k_seat,
+        return _kernels.BallSet(
+            t=self.t,
+            c0_rho=self.c0_rho,
+            c0_z=self.c0_z,
+            inner=self.inner,
+            free=self.free,
+            radius=cs.groove_radius,
+            side=self._side,
+            z0=cs.z0,
+            k_poly=cs.k_poly,
+            film=self.film,
+            ring=self._ring,
+            control=self.control,
+            lam_i=self.lam_i,
+            spd=self.spd,
+            k_seat=self.k_seat,
         )
 
     def solve_balls(self, b, u, tol, compiled: bool | None = None):
@@ -237,12 +241,7 @@ class _Problem:
         c_rho, c_z = self.centres(u)
         kernel = _kernels.solve_balls_numpy if compiled is False else _solve_balls_compiled()
         b, q, n_rho, n_z, delta, speed, force, stiffness, worst, ok = kernel(
-            np.ascontiguousarray(b, dtype=float),
-            c_rho,
-            c_z,
-            *self.kernel_arguments()[:-1],
-            self.k_seat,
-            tol,
+            np.ascontiguousarray(b, dtype=float), c_rho, c_z, self.ball_set(), tol
         )
         if not ok:
             raise ConvergenceError(
@@ -458,8 +457,6 @@ def _ring(problem: _Problem, tolerance: float, max_iterations: int, initial):
     from . import _ring as compiled
 
     u, b, ball_tol, target, max_step = _setup(problem, tolerance, initial)
-    c0_rho, c0_z = np.ascontiguousarray(problem.c0_rho), np.ascontiguousarray(problem.c0_z)
-    args = problem.kernel_arguments()
     u, b, q, n_rho, n_z, delta, speed, force, stiff, status, residual = compiled.ring_newton(
         u,
         b,
@@ -467,10 +464,7 @@ def _ring(problem: _Problem, tolerance: float, max_iterations: int, initial):
         problem.load,
         problem.scale,
         max_step,
-        args[0],
-        c0_rho,
-        c0_z,
-        *args[1:],
+        problem.ball_set(),
         ball_tol,
         target,
         max_iterations,
@@ -500,7 +494,6 @@ def solve_line(
     from . import _ring as compiled
 
     _, _, _, _, max_step = _setup(problem, tolerance, initial)
-    args = problem.kernel_arguments()
     return compiled.ring_newton_line(
         np.ascontiguousarray(loads, dtype=float),
         np.asarray(initial, float),
@@ -508,10 +501,7 @@ def solve_line(
         problem.free_dofs,
         problem.scale,
         max_step,
-        args[0],
-        problem.c0_rho,
-        problem.c0_z,
-        *args[1:],
+        problem.ball_set(),
         tolerance,
         CENTRIFUGAL_FLOOR,
         max_iterations,
