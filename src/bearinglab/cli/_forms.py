@@ -212,10 +212,6 @@ def parse_spec(
     return prefix, values
 
 
-def bad_defect(text: str, hint: str) -> OptionError:
-    return OptionError("--defect", text, DEFECT_ALLOWED, hint)
-
-
 def parse_defect(text: str):
     """A :class:`~bearinglab.dynamics.Defect` (SI) from a --defect specification.
 
@@ -266,11 +262,24 @@ def defect_text(d) -> str:
     return text + (f", ball {d.ball}" if d.location == "ball" else "")
 
 
-def defect_reason(exc: InputError) -> str:
-    """Defect.check's error in the --defect spec's units."""
-    if exc.parameter == "width":
-        return f"width_mm = {exc.value * 1e3:g} must be {exc.allowed}"
-    return f"{exc.parameter} = {exc.value!r} must be {exc.allowed}"
+def check_defects(specs: list[str], defects: list, bearing) -> None:
+    """Each --defect (as typed, and as parse_defect read it) checked against the bearing
+    (Defect.check): one that does not fit is a one-line error in the spec's units."""
+    for text, defect in zip(specs, defects, strict=True):
+        try:
+            defect.check(bearing)
+        except InputError as exc:
+            shown = (
+                f"width_mm = {exc.value * 1e3:g}"
+                if exc.parameter == "width"
+                else f"{exc.parameter} = {exc.value!r}"
+            )
+            raise OptionError(
+                "--defect",
+                text,
+                DEFECT_ALLOWED,
+                f"for {bearing.name or 'this bearing'}: {shown} must be {exc.allowed}",
+            ) from None
 
 
 def parse_waviness(text: str):

@@ -13,7 +13,7 @@ from ..errors import InputError
 from ..operating import OperatingCondition
 from ..units import rpm_to_rad_s
 from ._app import command_app, console
-from ._forms import DEFECT_ALLOWED, parse_defect
+from ._forms import check_defects, parse_defect
 from ._geometry import (
     _geometry_warnings,
     resolve_bearing,
@@ -144,21 +144,7 @@ def report_command(
     specs = list(defect or [])
     defects = [parse_defect(text) for text in specs]
     bearing, decoded = resolve_bearing(designation, geometry)
-    for text, d in zip(specs, defects, strict=True):
-        try:
-            d.check(bearing)
-        except InputError as exc:
-            shown = (
-                f"width_mm = {exc.value * 1e3:g}"
-                if exc.parameter == "width"
-                else f"{exc.parameter} = {exc.value!r}"
-            )
-            raise OptionError(
-                "--defect",
-                text,
-                DEFECT_ALLOWED,
-                f"for {bearing.name or 'this bearing'}: {shown} must be {exc.allowed}",
-            ) from None
+    check_defects(specs, defects, bearing)
     if viscosity_mm2_s is None:
         from ..lubrication import LUBRICANTS
 

@@ -19,8 +19,7 @@ from ._forms import (
     FormErrors,
     Surface3dOpt,
     WavinessOpt,
-    bad_defect,
-    defect_reason,
+    check_defects,
     defect_text,
     form_errors_text,
     parse_defect,
@@ -204,13 +203,7 @@ def simulate_command(
     forms = FormErrors(waviness, ball_size_error_um, surface3d)
     bearing, _ = resolve_bearing(designation, geometry)
     imperfections = forms.build(bearing, seed)
-    for text, d in zip(specs, defects, strict=True):
-        try:
-            d.check(bearing)
-        except InputError as exc:
-            raise bad_defect(
-                text, f"for {bearing.name or 'this bearing'}: {defect_reason(exc)}"
-            ) from None
+    check_defects(specs, defects, bearing)
     condition = OperatingCondition(
         radial_load=radial_load_n, axial_load=axial_load_n, shaft_speed=shaft_speed
     )
