@@ -74,11 +74,7 @@ DesignationArg = Annotated[
 def speed_rad_s(speed_rpm: float, *, zero: bool = False) -> float:
     """Speed [rad/s] from --speed-rpm, which must lie in (0, MAX_SPEED_RPM] rpm ([0, ...]
     with ``zero``)."""
-    low_ok = speed_rpm >= 0 if zero else speed_rpm > 0
-    if not (math.isfinite(speed_rpm) and low_ok and speed_rpm <= MAX_SPEED_RPM):
-        raise OptionError(
-            "--speed-rpm", speed_rpm, f"a speed in {'[' if zero else '('}0, {MAX_SPEED_RPM:g}] rpm"
-        )
+    in_range("--speed-rpm", speed_rpm, 0.0, MAX_SPEED_RPM, "a speed", low_open=not zero)
     return speed_rpm * math.pi / 30
 
 
