@@ -18,14 +18,24 @@ m d_m / 2 [kg m], ball inertia J [kg m^2], D_w [m], gyroscopic (1/0), the cage s
 balls not driven by both races omega_c0 [rad/s], the floor of the outward force [N].
 Per ball: ``control`` (0 outer, 1 inner raceway control) and ``lam_i`` (share lambda_i of
 the gyroscopic friction held at the inner contact; lambda_o = 2 - lambda_i).
+
+What stays fixed while one ball is solved travels as one argument ``ball`` (a
+:class:`Ball`, made by :func:`one_ball`).
 """
 
 from __future__ import annotations
 
 import math
+from collections import namedtuple
 
 import numba
 import numpy as np
+
+#: One ball's constants: its groove centres c_rho, c_z (C,) [m], free distances R - D_w/2
+#: (C,) [m], groove radii R (C,) [m], arch sides (C,) and z0 (C,) [m], K polynomials (C, P),
+#: film (C,) [m], ring of each contact (C,) (0 inner, 1 outer), its raceway control and
+#: lambda_i, and the speed parameters spd (see the module docstring and _kernels.py).
+Ball = namedtuple("Ball", "c_rho c_z free radius side z0 k_poly film ring control lam_i spd")
 
 #: Relative finite-difference step of the speed-force derivatives (times R - D_w/2).
 FD_STEP = 1e-6
@@ -158,31 +168,30 @@ def speed_force(q, nr, nz, ring, control, lam_i, spd, out):
 
 
 @numba.njit(cache=True)
-def _ball_force(
-    br,
-    bz,
-    c_rho,
-    c_z,
-    free,
-    radius,
-    side,
-    z0,
-    k_poly,
-    film,
-    ring,
-    control,
-    lam_i,
-    spd,
-    q,
-    nr,
-    nz,
-    dl,
-    s,
-    sp,
-    tmp,
-):
-    """All contacts of one ball at (br, bz) into q, nr, nz, dl, s; speed forces into sp;
+def one_ball(balls, j, c_rho, c_z, spd):
+    """Ball j of a ball set (a _kernels.BallSet) with groove centres c_rho, c_z (Z, C)
+    and speed parameters spd, as the kernels here take it (a :class:`Ball`)."""
+    return Ball(
+        c_rho[j],
+        c_z[j],
+        balls.free[j],
+        balls.radius,
+        balls.side,
+        balls.z0,
+        balls.k_poly,
+        balls.film[j],
+        balls.ring,
+        balls.control[j],
+        balls.lam_i[j],
+        spd,
+    )
+
+
+@numba.njit(cache=True)
+def _ball_force(br, bz, ball, q, nr, nz, dl, s, sp, tmp):
+    """All contacts of ``ball`` at (br, bz) into q, nr, nz, dl, s; speed forces into sp;
     returns the total force on the ball (g_rho, g_z). ``tmp``: work array (8,)."""
+    c_rho, c_z, free, radius, side, z0, k_poly, film, ring, control, lam_i, spd = ball
     ncon = c_rho.shape[0]
     g_rho = 0.0
     g_z = 0.0
@@ -205,32 +214,12 @@ def _ball_force(
 
 
 @numba.njit(cache=True)
-def speed_derivatives(
-    br,
-    bz,
-    c_rho,
-    c_z,
-    free,
-    radius,
-    side,
-    z0,
-    k_poly,
-    film,
-    ring,
-    control,
-    lam_i,
-    spd,
-    q,
-    nr,
-    nz,
-    dmat,
-    emat,
-    work,
-):
+def speed_derivatives(br, bz, ball, q, nr, nz, dmat, emat, work):
     """Central differences of the speed forces on the ball per contact vector v_l = b - c_l:
     dmat[lc] = d(total speed force)/dv_l, emat[lc] = d(inner friction)/dv_l (2 x 2 each).
     Zero for a ball not driven by both races (its speed forces do not depend on v) and for
     unloaded contacts. ``work``: (4, C + 8) work array."""
+    c_rho, c_z, free, radius, side, z0, k_poly, film, ring, control, lam_i, spd = ball
     ncon = c_rho.shape[0]
     dmat[:] = 0.0
     emat[:] = 0.0
@@ -291,37 +280,11 @@ def _seat(br, bz, c_rho, c_z, free, ring, q, fc, k_seat):
 
 
 @numba.njit(cache=True)
-def solve_ball(
-    b,
-    c_rho,
-    c_z,
-    free,
-    radius,
-    side,
-    z0,
-    k_poly,
-    film,
-    ring,
-    control,
-    lam_i,
-    spd,
-    k_seat,
-    tol,
-    max_iterations,
-    q,
-    nr,
-    nz,
-    dl,
-    s,
-    sp,
-    dmat,
-    emat,
-    work,
-    ts,
-):
-    """Newton's method on one ball's equilibrium; b (2,) is updated in place. Returns
+def solve_ball(b, ball, k_seat, tol, max_iterations, q, nr, nz, dl, s, sp, dmat, emat, work, ts):
+    """Newton's method on the equilibrium of ``ball``; b (2,) is updated in place. Returns
     (residual [N], converged). A ball whose loads are all below 10 tol is loose. ``work``:
     (10, C + 8) and ts (C, 2, 2) work arrays."""
+    c_rho, c_z, free, ring, spd = ball.c_rho, ball.c_z, ball.free, ball.ring, ball.spd
     ncon = c_rho.shape[0]
     tq = work[4, :ncon]
     tr = work[5, :ncon]
@@ -332,33 +295,8 @@ def solve_ball(
     br, bz = b[0], b[1]
     fc_seat = max(spd[2] * spd[6] * spd[6], spd[7])
 
-    def force_into(r, z, q_, nr_, nz_, dl_, s_, sp_):  # net force at (r, z), inlined
-        return _ball_force(
-            r,
-            z,
-            c_rho,
-            c_z,
-            free,
-            radius,
-            side,
-            z0,
-            k_poly,
-            film,
-            ring,
-            control,
-            lam_i,
-            spd,
-            q_,
-            nr_,
-            nz_,
-            dl_,
-            s_,
-            sp_,
-            tmp,
-        )
-
-    def force(r, z):  # ... into the ball's own contact arrays
-        return force_into(r, z, q, nr, nz, dl, s, sp)
+    def force(r, z):  # net force at (r, z), into the ball's own contact arrays (inlined)
+        return _ball_force(r, z, ball, q, nr, nz, dl, s, sp, tmp)
 
     force(br, bz)
     br = _seat(br, bz, c_rho, c_z, free, ring, q, fc_seat, k_seat)
@@ -369,28 +307,7 @@ def solve_ball(
         if norm <= tol or np.max(q) <= 10.0 * tol:
             done = True
             break
-        speed_derivatives(
-            br,
-            bz,
-            c_rho,
-            c_z,
-            free,
-            radius,
-            side,
-            z0,
-            k_poly,
-            film,
-            ring,
-            control,
-            lam_i,
-            spd,
-            q,
-            nr,
-            nz,
-            dmat,
-            emat,
-            work,
-        )
+        speed_derivatives(br, bz, ball, q, nr, nz, dmat, emat, work)
         a = 0.0
         bb = 0.0
         c = 0.0
@@ -411,7 +328,7 @@ def solve_ball(
         for _ in range(30):
             nr_t = br + lam * step_r
             nz_t = bz + lam * step_z
-            tgr, tgz = force_into(nr_t, nz_t, tq, tr, tz, td, ts, tsp)
+            tgr, tgz = _ball_force(nr_t, nz_t, ball, tq, tr, tz, td, ts, tsp, tmp)
             allowed = (NONMONOTONE_FACTOR if lam == 1.0 else 1 - 1e-4 * lam) * norm
             if math.sqrt(tgr * tgr + tgz * tgz) <= allowed or lam <= 1e-6:
                 break

@@ -124,43 +124,18 @@ def solve_balls(b, c_rho, c_z, balls, tol, max_iterations=100):
     res = np.zeros(nb)
     ok = np.zeros(nb, dtype=np.bool_)
     driven = np.zeros(nb, dtype=np.bool_)
-    t, inner, free, radius, side, z0 = (
-        balls.t,
-        balls.inner,
-        balls.free,
-        balls.radius,
-        balls.side,
-        balls.z0,
-    )
-    k_poly, film, ring, control, lam_i = (
-        balls.k_poly,
-        balls.film,
-        balls.ring,
-        balls.control,
-        balls.lam_i,
-    )
-    k_seat = balls.k_seat
+    inner = balls.inner
     spd = balls.spd.copy()
     # Pass 0 solves every ball; pass 1 re-solves, at the cage speed of the driven balls,
     # those that are not driven by both races (only at speed and when some are driven).
     for sweep in range(2):
         for j in range(nb):
             if sweep == 0 or not driven[j]:
+                ball = _ball.one_ball(balls, j, c_rho, c_z, spd)
                 res[j], ok[j] = _ball.solve_ball(
                     b[j],
-                    c_rho[j],
-                    c_z[j],
-                    free[j],
-                    radius,
-                    side,
-                    z0,
-                    k_poly,
-                    film[j],
-                    ring,
-                    control[j],
-                    lam_i[j],
-                    spd,
-                    k_seat,
+                    ball,
+                    balls.k_seat,
                     tol,
                     max_iterations,
                     q[j],
@@ -196,27 +171,7 @@ def solve_balls(b, c_rho, c_z, balls, tol, max_iterations=100):
     force = np.zeros(5)
     stiff = np.zeros((5, 5))
     for j in range(nb):
-        _ball.speed_derivatives(
-            b[j, 0],
-            b[j, 1],
-            c_rho[j],
-            c_z[j],
-            free[j],
-            radius,
-            side,
-            z0,
-            k_poly,
-            film[j],
-            ring,
-            control[j],
-            lam_i[j],
-            spd,
-            q[j],
-            nr[j],
-            nz[j],
-            dmat,
-            emat,
-            work,
-        )
-        _condense(t[j], inner, s[j], q[j], nr[j], nz[j], dmat, emat, sp[j], force, stiff, cw)
+        ball = _ball.one_ball(balls, j, c_rho, c_z, spd)
+        _ball.speed_derivatives(b[j, 0], b[j, 1], ball, q[j], nr[j], nz[j], dmat, emat, work)
+        _condense(balls.t[j], inner, s[j], q[j], nr[j], nz[j], dmat, emat, sp[j], force, stiff, cw)
     return b, q, nr, nz, dl, sp, force, stiff, np.max(res), np.all(ok)
