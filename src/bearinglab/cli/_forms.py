@@ -57,7 +57,6 @@ WavinessOpt = Annotated[
         help="Sinusoidal waviness, repeatable: RACE:order=7,amplitude_um=0.5"
         "[,phase_deg=0][,ball=N] with RACE inner, outer or ball; r = A cos(order theta + phase) "
         "in the ring's (or ball's) own frame.",
-        show_default=False,
     ),
 ]
 BallErrorOpt = Annotated[
@@ -67,7 +66,6 @@ BallErrorOpt = Annotated[
         help="Random ball diameter errors: BAND (uniform in "
         "[-BAND/2, +BAND/2] um about the nominal diameter: BAND is the lot's largest minus "
         "smallest ball) or LOW,HIGH [um]; drawn with --seed.",
-        show_default=False,
     ),
 ]
 Surface3dOpt = Annotated[
@@ -77,7 +75,6 @@ Surface3dOpt = Annotated[
         help="Random 3-D raceway surface (seed 002 eq. 6), repeatable: "
         "RACE:amplitude_um=..,length_circ_mm=..,length_axial_mm=.. with RACE inner or outer "
         "(RMS height, circumferential and axial correlation lengths).",
-        show_default=False,
     ),
 ]
 SeedOpt = Annotated[
@@ -86,7 +83,6 @@ SeedOpt = Annotated[
         "--seed",
         help="Seed of the random ball-size errors and surfaces (default 0: the same "
         "command gives the same bearing; surface i in the order given uses SEED + 1 + i).",
-        show_default=False,
     ),
 ]
 

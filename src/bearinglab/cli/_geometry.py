@@ -137,7 +137,7 @@ def _geometry_parameters() -> list[inspect.Parameter]:
             name,
             inspect.Parameter.KEYWORD_ONLY,
             default=None,
-            annotation=Annotated[kind, typer.Option(flag, help=text, show_default=False)],
+            annotation=Annotated[kind, typer.Option(flag, help=text)],
         )
         for name, (flag, kind, text, _, _) in _GEOMETRY_OPTIONS.items()
     ]

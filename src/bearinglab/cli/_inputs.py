@@ -38,7 +38,6 @@ SchedulerOpt = Annotated[
         help="tcp://HOST:PORT of a running dask scheduler (default: "
         "$DASK_SCHEDULER_ADDRESS, else a LocalCluster of this machine's cores); 'serial' runs in "
         "this process.",
-        show_default=False,
     ),
 ]
 WorkersOpt = Annotated[
@@ -46,7 +45,6 @@ WorkersOpt = Annotated[
     typer.Option(
         "--workers",
         help="Worker processes of the LocalCluster (default: the cores).",
-        show_default=False,
     ),
 ]
 
@@ -55,9 +53,7 @@ def plot_option(what: str = "the result"):
     """The --plot option of a command that draws ``what``."""
     return Annotated[
         Path | None,
-        typer.Option(
-            "--plot", help=f"Also draw {what} to this .png, .svg or .pdf file.", show_default=False
-        ),
+        typer.Option("--plot", help=f"Also draw {what} to this .png, .svg or .pdf file."),
     ]
 
 
@@ -66,7 +62,6 @@ DesignationArg = Annotated[
     str | None,
     typer.Argument(
         help="Bearing designation or catalogue name; optional with explicit geometry.",
-        show_default=False,
     ),
 ]
 

@@ -119,7 +119,6 @@ def analyze_command(
         typer.Argument(
             help="Vibration record: .npz, .csv (with a time column), .wav or .mat (CWRU "
             "variables, MATLAB structs such as MFPT's bearing.gs, v7.3).",
-            show_default=False,
         ),
     ],
     channel: Annotated[
@@ -128,7 +127,6 @@ def analyze_command(
             "--channel",
             help="Channel or struct field path (e.g. DE, acc_y, bearing.gs or "
             "gs); default acc_y, DE or gs if present, else the first.",
-            show_default=False,
         ),
     ] = None,
     sample_rate_hz: Annotated[
@@ -137,7 +135,6 @@ def analyze_command(
             "--sample-rate-hz",
             help="Sample rate [Hz], when the file does not say (CWRU "
             ".mat: 12000 or 48000) or to override it.",
-            show_default=False,
         ),
     ] = None,
     designation: Annotated[
@@ -146,7 +143,6 @@ def analyze_command(
             "--designation",
             help="Bearing designation or catalogue name (e.g. ER-16K, "
             "6205); optional with explicit geometry.",
-            show_default=False,
         ),
     ] = None,
     speed_rpm: Annotated[
@@ -155,7 +151,6 @@ def analyze_command(
             "--speed-rpm",
             help="Shaft speed [rpm], or auto (the speed the signal shows); "
             "default the speed the file records.",
-            show_default=False,
         ),
     ] = None,
     speed_range_rpm: Annotated[
@@ -164,7 +159,6 @@ def analyze_command(
             "--speed-range-rpm",
             help="LO,HI [rpm]: where --speed-rpm auto searches (default "
             "+-5 % of the recorded speed).",
-            show_default=False,
         ),
     ] = None,
     method: Annotated[
@@ -174,7 +168,6 @@ def analyze_command(
             help="raw, cpw, drs-sk or all (repeatable or comma-separated): "
             "Smith & Randall's Methods 1-3; default cpw (raw for bearinglab "
             "simulations).",
-            show_default=False,
         ),
     ] = None,
     band_hz: Annotated[
@@ -184,7 +177,6 @@ def analyze_command(
             help="Demodulation band: none (each method's own: whole band, or "
             "the kurtogram's for drs-sk), auto (the kurtogram's for every method) or LO,HI "
             "[Hz].",
-            show_default=False,
         ),
     ] = None,
     tolerance: Annotated[
@@ -194,7 +186,6 @@ def analyze_command(
             help="Family tolerance FAMILY=FRACTION or FAMILY=BELOW,ABOVE "
             "(families outer, inner, ball, cage; defaults 0.02, 0.02, 0.07/0.02, 0.02); "
             "repeatable.",
-            show_default=False,
         ),
     ] = None,
     false_alarm: Annotated[
@@ -208,7 +199,6 @@ def analyze_command(
         typer.Option(
             "--supply-hz",
             help="Electrical supply frequency [Hz]: its harmonics are not bearing lines.",
-            show_default=False,
         ),
     ] = None,
     mesh_hz: Annotated[
@@ -216,7 +206,6 @@ def analyze_command(
         typer.Option(
             "--mesh-hz",
             help="Gear-mesh frequency [Hz]: its harmonics are not bearing lines.",
-            show_default=False,
         ),
     ] = None,
     json_output: JsonOpt = False,

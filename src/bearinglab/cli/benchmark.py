@@ -21,7 +21,6 @@ def benchmark_command(
         typer.Argument(
             help="Folder with a labels.csv (file, channel, sample_rate_hz, speed_rpm, the "
             "bearing, fault) and the recordings it names.",
-            show_default=False,
         ),
     ],
     method: Annotated[
@@ -30,7 +29,6 @@ def benchmark_command(
             "--method",
             help="raw, cpw, drs-sk or all (repeatable or comma-separated); each "
             "is also run on its own; default cpw.",
-            show_default=False,
         ),
     ] = None,
     jobs: Annotated[int, typer.Option("--jobs", help="Records diagnosed at once (processes).")] = 1,
@@ -39,7 +37,6 @@ def benchmark_command(
         typer.Option(
             "--html",
             help="Also write a page with each record's envelope spectrum and the lines it matched.",
-            show_default=False,
         ),
     ] = None,
     json_output: JsonOpt = False,

@@ -70,7 +70,6 @@ def dataset(
         typer.Argument(
             help="Folder of the data set; its name is the data set's name "
             "(bearing_datasets.open(NAME, root=PARENT) reads it).",
-            show_default=False,
         ),
     ],
     records: Annotated[int, typer.Option("--records", help="Number of records.")] = 100,
@@ -110,7 +109,6 @@ def dataset(
             "--resonance",
             help="A resonance of the path to the sensor, repeatable: "
             "FREQ_HZ@DAMPING_RATIO, each a value or LOW:HIGH (default 2500:4500@0.02:0.08).",
-            show_default=False,
         ),
     ] = None,
     sample_rate_hz: Annotated[
@@ -125,7 +123,7 @@ def dataset(
     ] = 0,
     partition_size: Annotated[
         int | None,
-        typer.Option("--partition-size", help="Records per partition.", show_default=False),
+        typer.Option("--partition-size", help="Records per partition."),
     ] = None,
     scheduler: SchedulerOpt = None,
     workers: WorkersOpt = None,

@@ -50,7 +50,6 @@ DesignationArg = Annotated[
     typer.Argument(
         help="Bearing designation (GOST 3189-89 or ISO, e.g. 6205-2RS, 180205) or catalogue "
         "name (e.g. ER-16K). Optional when the geometry is given explicitly.",
-        show_default=False,
     ),
 ]
 

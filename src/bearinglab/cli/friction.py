@@ -40,7 +40,6 @@ DesignationArg = Annotated[
     typer.Argument(
         help="Bearing designation or catalogue name; optional with --bore-mm and "
         "--outside-diameter-mm.",
-        show_default=False,
     ),
 ]
 #: The lubricant when neither --lubricant nor --viscosity-mm2-s is given.
@@ -191,7 +190,6 @@ def friction_command(
             + "; skf: "
             + ", ".join(SKF_BEARING_TYPES)
             + "). Default: from the designation.",
-            show_default=False,
         ),
     ] = None,
     equivalent_load_n: Annotated[
@@ -200,7 +198,6 @@ def friction_command(
             "--equivalent-load-n",
             help="Equivalent load P [N] (constant model; default: "
             "F_r, or ISO 281 from a ball bearing's geometry).",
-            show_default=False,
         ),
     ] = None,
     static_load_rating_kn: Annotated[
@@ -210,7 +207,6 @@ def friction_command(
             help="Basic static load rating C_0 [kN] for the SKF "
             "model with an axial load on a deep-groove bearing (default: ISO 76 from the "
             "geometry).",
-            show_default=False,
         ),
     ] = None,
     lubricant: Annotated[
@@ -220,7 +216,6 @@ def friction_command(
             help="Lubricant (built-in: iso-vg68, seed004-grease) for the viscosity "
             "at --temperature-c, and grease or oil for the --lubrication default (SKF model; "
             f"default {DEFAULT_LUBRICANT} unless --viscosity-mm2-s is given).",
-            show_default=False,
         ),
     ] = None,
     viscosity_mm2_s: Annotated[
@@ -229,7 +224,6 @@ def friction_command(
             "--viscosity-mm2-s",
             help="Operating kinematic viscosity of the oil or the "
             "grease's base oil [mm^2/s] (instead of the lubricant's at --temperature-c).",
-            show_default=False,
         ),
     ] = None,
     temperature_c: Annotated[
@@ -237,7 +231,6 @@ def friction_command(
         typer.Option(
             "--temperature-c",
             help="Operating temperature of the lubricant [degC] (default: its reference).",
-            show_default=False,
         ),
     ] = None,
     lubrication: Annotated[
@@ -246,7 +239,6 @@ def friction_command(
             "--lubrication",
             help="Lubrication method, sets K_rs (default: grease for a "
             "grease, oil-jet for an oil, grease for a viscosity alone).",
-            show_default=False,
         ),
     ] = None,
     oil: Annotated[
@@ -258,14 +250,11 @@ def friction_command(
             "--skf-constants",
             help="SKF geometry constants R1,R2,S1,S2 (deep groove) or "
             "R1,R2,S1,S2,R3,S3 (angular contact).",
-            show_default=False,
         ),
     ] = None,
     seals: Annotated[
         Seals | None,
-        typer.Option(
-            "--seals", help="Seals (default: from the designation's suffix).", show_default=False
-        ),
+        typer.Option("--seals", help="Seals (default: from the designation's suffix)."),
     ] = None,
     seal_constants: Annotated[
         str | None,
@@ -273,14 +262,11 @@ def friction_command(
             "--seal-constants",
             help="SKF seal constants K_S1,K_S2,BETA (M_seal = K_S1 "
             "d_s^BETA + K_S2 in N mm, d_s in mm).",
-            show_default=False,
         ),
     ] = None,
     seal_diameter_mm: Annotated[
         float | None,
-        typer.Option(
-            "--seal-diameter-mm", help="Seal counterface diameter d_s [mm].", show_default=False
-        ),
+        typer.Option("--seal-diameter-mm", help="Seal counterface diameter d_s [mm]."),
     ] = None,
     json_output: JsonOpt = False,
     *,

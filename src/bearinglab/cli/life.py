@@ -87,7 +87,6 @@ def life_command(
             "--viscosity-mm2-s",
             help="Operating kinematic viscosity of the lubricant "
             "[mm^2/s]; needed for kappa, a_ISO and the modified life.",
-            show_default=False,
         ),
     ] = None,
     contamination: Annotated[
@@ -97,7 +96,6 @@ def life_command(
             help="Contamination factor e_C: a number in [0, 1] or a level "
             "of ISO 281 Table 13 (extreme, high, normal, slight, typical, severe, "
             "very-severe); default normal with a viscosity.",
-            show_default=False,
         ),
     ] = None,
     method: Annotated[
@@ -135,7 +133,6 @@ def life_command(
             "--dynamic-load-rating-kn",
             help="Basic dynamic load rating C [kN], e.g. the "
             "maker's (default: ISO 281 from the geometry); used by both methods.",
-            show_default=False,
         ),
     ] = None,
     static_load_rating_kn: Annotated[
@@ -144,7 +141,6 @@ def life_command(
             "--static-load-rating-kn",
             help="Basic static load rating C0 [kN] (default: "
             "ISO 76 from the geometry); sets s0 and Cu.",
-            show_default=False,
         ),
     ] = None,
     json_output: JsonOpt = False,

@@ -82,7 +82,6 @@ def noise_command(
             help="Distance of the field point from the bearing centre [mm] "
             "(default: 10 mm outside the outside diameter; seed 003's point A is 10 mm from "
             "the centre).",
-            show_default=False,
         ),
     ] = None,
     angle_deg: Annotated[
@@ -99,7 +98,6 @@ def noise_command(
             "--duration-s",
             help="Length of the orbit record [s] (default: one cage "
             "revolution, so each ball carries its size error round once).",
-            show_default=False,
         ),
     ] = None,
     points: Annotated[
@@ -108,7 +106,6 @@ def noise_command(
             "--points",
             help="Instants of the orbit (default: 8192 per second, at least "
             "256). More points resolve higher frequencies; the time-mean SPL hardly changes.",
-            show_default=False,
         ),
     ] = None,
     bands_from: Annotated[
@@ -128,7 +125,6 @@ def noise_command(
             "--plot",
             help="Draw the pressure and SPL over time, the pressure spectrum and "
             "the directivity to this .png, .svg or .pdf file.",
-            show_default=False,
         ),
     ] = None,
     *,

@@ -160,7 +160,6 @@ def static(
         typer.Option(
             "--temperature-c",
             help="Lubricant temperature [degC] (default: its reference).",
-            show_default=False,
         ),
     ] = None,
     gyroscopic: GyroscopicOpt = False,
@@ -187,7 +186,6 @@ def static(
             "--orbit-points",
             help="Orbit positions: per ball spacing (default 24) or "
             "instants in time (default 64 per shaft revolution).",
-            show_default=False,
         ),
     ] = None,
     orbit_plot: Annotated[
@@ -196,7 +194,6 @@ def static(
             "--orbit-plot",
             help="Draw the orbit, the displacements and the ball centres "
             "to this .png, .svg or .pdf file (implies --orbit).",
-            show_default=False,
         ),
     ] = None,
     waviness: WavinessOpt = None,
@@ -208,7 +205,6 @@ def static(
         typer.Option(
             "--stiffness-csv",
             help="Write the 5x5 stiffness matrix (SI) to this CSV.",
-            show_default=False,
         ),
     ] = None,
     json_output: JsonOpt = False,
@@ -407,9 +403,7 @@ def stiffness_map(
     race_control: RaceControlOpt = RaceControl.outer,
     output: Annotated[
         Path | None,
-        typer.Option(
-            "-o", "--output", help="Write the table to this CSV file.", show_default=False
-        ),
+        typer.Option("-o", "--output", help="Write the table to this CSV file."),
     ] = None,
     json_output: JsonOpt = False,
     plot: PlotOpt = None,

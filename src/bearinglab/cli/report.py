@@ -41,7 +41,6 @@ DesignationArg = Annotated[
     typer.Argument(
         help="Bearing designation or catalogue name (e.g. 6205, 180205, ER-16K); optional with "
         "explicit geometry.",
-        show_default=False,
     ),
 ]
 
@@ -81,7 +80,6 @@ def report_command(
         typer.Option(
             "--viscosity-mm2-s",
             help="Operating kinematic viscosity [mm^2/s] instead of --lubricant.",
-            show_default=False,
         ),
     ] = None,
     defect: Annotated[
@@ -92,7 +90,6 @@ def report_command(
             "outer:width_mm=1.2,depth_mm=0.25[,angle_deg=270], inner:..., "
             "ball:width_mm=1.2[,ball=0]. Default: an example outer-race defect (said so in "
             "the report).",
-            show_default=False,
         ),
     ] = None,
     duration_s: Annotated[
@@ -116,7 +113,6 @@ def report_command(
             "--sample-rate-hz",
             help="Sample rate of the simulated record [Hz] (default: "
             "25.6 kHz, more at high speed so the ISO 15242 bands are resolved).",
-            show_default=False,
         ),
     ] = None,
     output: Annotated[Path, typer.Option("-o", "--output", help="The HTML file to write.")] = ...,

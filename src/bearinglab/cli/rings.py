@@ -79,7 +79,6 @@ def ring_modes_command(
         typer.Option(
             "--ring-mass-kg",
             help="Vibrating mass of the outer ring incl. sensors [kg].",
-            show_default=False,
         ),
     ] = None,
     radial_stiffness_n_per_m: Annotated[
@@ -87,7 +86,6 @@ def ring_modes_command(
         typer.Option(
             "--radial-stiffness-n-per-m",
             help="Radial bearing stiffness K_x [N/m].",
-            show_default=False,
         ),
     ] = None,
     rigid_body_frequency_hz: Annotated[
@@ -96,7 +94,6 @@ def ring_modes_command(
             "--rigid-body-frequency-hz",
             help="f_1 of the ring on the ball springs [Hz] "
             "(instead of sqrt(K_x / ring mass) / 2 pi).",
-            show_default=False,
         ),
     ] = None,
     free_frequencies_hz: Annotated[
@@ -104,19 +101,17 @@ def ring_modes_command(
         typer.Option(
             "--free-frequencies-hz",
             help="Measured free-ring frequencies f2,f3,... [Hz], one per flexural mode asked for.",
-            show_default=False,
         ),
     ] = None,
     ball_mass_ratio: Annotated[
         float | None,
-        typer.Option("--ball-mass-ratio", help="kappa = n m_b / m_k.", show_default=False),
+        typer.Option("--ball-mass-ratio", help="kappa = n m_b / m_k."),
     ] = None,
     contact_stiffness_ratio: Annotated[
         float | None,
         typer.Option(
             "--contact-stiffness-ratio",
             help="K1/K2 (outer over inner contact stiffness).",
-            show_default=False,
         ),
     ] = None,
     stiffness_from: Annotated[

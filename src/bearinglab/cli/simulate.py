@@ -80,7 +80,6 @@ def simulate_command(
             help="A defect, repeatable: outer:width_mm=1.2,depth_mm=0.25"
             "[,angle_deg=270] (angle from +x towards +y, 270 = bottom, the default), "
             "inner:width_mm=...,depth_mm=...[,angle_deg=...], ball:width_mm=1.2[,ball=0].",
-            show_default=False,
         ),
     ] = None,
     model: Annotated[
@@ -104,7 +103,6 @@ def simulate_command(
             help="Time simulated and discarded first [s] (default: 0.05 s "
             "rigid; slip: detected, whole cage revolutions, at least 4, until the cage and "
             "spin ratios change by less than 1e-3).",
-            show_default=False,
         ),
     ] = None,
     cage_friction: Annotated[
@@ -114,7 +112,6 @@ def simulate_command(
             help="Slip model: ball-cage pocket friction coefficient mu_c "
             "[-], 0-0.3 (lubricated pockets 0.05-0.2; default 0.1 = seed 004 eq. 11 at pure "
             "sliding).",
-            show_default=False,
         ),
     ] = None,
     spin_drag: Annotated[
@@ -133,7 +130,6 @@ def simulate_command(
             help="Slip model: volume fraction of oil in the oil-air mixture "
             "that drags balls and cage [-], 0-1 (default 0.03; Harris & Kotzalas give "
             "0.01-0.05).",
-            show_default=False,
         ),
     ] = None,
     noise_ms2: Annotated[
@@ -149,7 +145,6 @@ def simulate_command(
             "--seed",
             help="Seed of the noise (default: fresh noise) and of the random "
             "form errors (--ball-size-error-um, --surface3d; default 0 for those).",
-            show_default=False,
         ),
     ] = None,
     spectrum_channel: Annotated[
@@ -167,7 +162,6 @@ def simulate_command(
             "-o",
             "--output",
             help="Write the signal to this .npz, .csv, .wav or .mat file.",
-            show_default=False,
         ),
     ] = None,
     json_output: JsonOpt = False,

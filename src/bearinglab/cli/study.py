@@ -76,7 +76,6 @@ def study(
         str,
         typer.Argument(
             help="stiffness, static, frequencies, life, friction, ring-modes, noise or simulate.",
-            show_default=False,
         ),
     ],
     output: Annotated[
@@ -86,7 +85,6 @@ def study(
             "--output",
             help="Folder of the results (one Parquet file per partition); "
             "rerun with the same folder to finish an interrupted study.",
-            show_default=False,
         ),
     ],
     set_: Annotated[
@@ -97,7 +95,6 @@ def study(
             "NAME=START:STOP:COUNT, NAME=log:START:STOP:COUNT or NAME=uniform:LOW:HIGH "
             "(random per case). Names as the analysis' options, e.g. designation, "
             "radial_load_n, speed_rpm, clearance_um.",
-            show_default=False,
         ),
     ] = None,
     cases: Annotated[
@@ -106,7 +103,6 @@ def study(
             "--cases",
             help="A .csv or .parquet file of cases instead of --set (one row per "
             "case, columns named as the options).",
-            show_default=False,
         ),
     ] = None,
     seed: Annotated[
@@ -123,7 +119,6 @@ def study(
         typer.Option(
             "--partition-size",
             help="Cases per partition (default: from the analysis and the case count).",
-            show_default=False,
         ),
     ] = None,
     scheduler: SchedulerOpt = None,
@@ -136,7 +131,6 @@ def study(
         typer.Option(
             "--plot",
             help="Also draw one output over two inputs to this .png, .svg or .pdf (see --plot-of).",
-            show_default=False,
         ),
     ] = None,
     plot_of: Annotated[
@@ -145,7 +139,6 @@ def study(
             "--plot-of",
             help="OUTPUT,X,Y for --plot (default: the first output over the "
             "first two inputs that vary).",
-            show_default=False,
         ),
     ] = None,
     json_output: JsonOpt = False,

@@ -89,7 +89,6 @@ def validate_command(
         typer.Option(
             "--html",
             help="Also write the table as one self-contained HTML page.",
-            show_default=False,
         ),
     ] = None,
 ):
