@@ -150,20 +150,17 @@ def solve_load_distribution(
         bearing = dataclasses.replace(
             bearing, diametral_clearance=bearing.diametral_clearance - shrink
         )
+    options = {  # solver.solve's, the same in every pass of the coupled solve
+        "ball_phase": ball_phase,
+        "ball_diameter_errors": ball_diameter_errors,
+        "film": film,
+        "tolerance": tolerance,
+        "initial": initial,
+        "gyroscopic": gyroscopic,
+        "race_control": race_control,
+    }
     try:
-        u, b, state, problem = _solve_coupled(
-            bearing,
-            condition,
-            ball_phase,
-            ball_diameter_errors,
-            film,
-            lubricant,
-            temperature,
-            gyroscopic,
-            tolerance,
-            initial,
-            race_control,
-        )
+        u, b, state, problem = _solve_coupled(bearing, condition, lubricant, temperature, options)
     except ConvergenceError as exc:
         told = _in_user_terms(exc, bearing, condition)
         if told is exc and gyroscopic and condition.shaft_speed > 0:
@@ -202,39 +199,17 @@ def solve_load_distribution(
     )
 
 
-def _solve_coupled(
-    bearing,
-    condition,
-    ball_phase,
-    ball_diameter_errors,
-    film,
-    lubricant,
-    temperature,
-    gyroscopic,
-    tolerance,
-    initial,
-    race_control,
-):
-    """The solve, repeated until what depends on its result settles: the film (at its
-    loads) and, for ``hybrid``, which race controls each ball. (The cage speed of balls
-    not driven by both races, the mean orbital speed of those that are, is settled inside
-    the ball kernel.)"""
-    u, b, state, problem, _ = solve(
-        bearing,
-        condition,
-        ball_phase=ball_phase,
-        ball_diameter_errors=ball_diameter_errors,
-        film=film,
-        tolerance=tolerance,
-        initial=initial,
-        gyroscopic=gyroscopic,
-        race_control=race_control,
-    )
+def _solve_coupled(bearing, condition, lubricant, temperature, options):
+    """The solve (solver.solve with the keyword arguments ``options``), repeated until what
+    depends on its result settles: the film (at its loads) and, for ``hybrid``, which race
+    controls each ball. (The cage speed of balls not driven by both races, the mean
+    orbital speed of those that are, is settled inside the ball kernel.)"""
+    u, b, state, problem, _ = solve(bearing, condition, **options)
     if condition.shaft_speed <= 0:
         return u, b, state, problem
     # the re-solves below keep this problem, its film and raceway control updated in place
-    kwargs = {"tolerance": tolerance, "problem": problem}
-    with_film = lubricant is not None and film is None
+    kwargs = {"tolerance": options["tolerance"], "problem": problem}
+    with_film = lubricant is not None and options["film"] is None
     for _ in range(30):
         changed = False
         if with_film:
@@ -243,7 +218,7 @@ def _solve_coupled(
             )
             changed |= bool(np.max(np.abs(h - problem.film)) >= 1e-9)
             problem.film = np.ascontiguousarray(h)
-        if race_control == "hybrid":
+        if options["race_control"] == "hybrid":
             outer = outer_raceway_controls(bearing, problem, state) | ~_driven(problem, state)
             changed |= bool(np.any(outer != (problem.control == 0)))
             problem.set_control(outer)
