@@ -66,6 +66,25 @@ class Source(NamedTuple):
     reference: str = ""
 
 
+class References:
+    """Numbers each distinct source reference once, so that a table's cells read
+    "catalog [1]" and the full references (``refs``, in order) are listed once under it."""
+
+    def __init__(self) -> None:
+        self.refs: list[str] = []
+
+    def cell(self, bearing: BallBearing, field: str) -> str:
+        """Where ``bearing``'s ``field`` came from, with its reference number."""
+        src = bearing.sources.get(field)
+        if src is None:
+            return "default"
+        if not src.reference:
+            return src.kind
+        if src.reference not in self.refs:
+            self.refs.append(src.reference)
+        return f"{src.kind} [{self.refs.index(src.reference) + 1}]"
+
+
 # ---------------------------------------------------------------- layer 2: the model
 
 

@@ -10,7 +10,7 @@ from rich.markup import escape
 from rich.table import Table
 
 from ..errors import BearinglabError
-from ..geometry import BallBearing
+from ..geometry import References
 from ._app import console
 from ._inputs import save_plot_figure
 
@@ -111,22 +111,8 @@ def _table(title: str, columns: list[str], rows: list[list]) -> Table:
     return table
 
 
-class _References:
-    """Numbers each distinct reference once, so tables show "catalog [1]" and the full
-    references are printed once underneath."""
-
-    def __init__(self) -> None:
-        self.refs: list[str] = []
-
-    def cell(self, bearing: BallBearing, field: str) -> str:
-        src = bearing.sources.get(field)
-        if src is None:
-            return "default"
-        if not src.reference:
-            return src.kind
-        if src.reference not in self.refs:
-            self.refs.append(src.reference)
-        return f"{src.kind} [{self.refs.index(src.reference) + 1}]"
+class _References(References):
+    """Source references numbered once, printed under the table."""
 
     def print(self) -> None:
         for i, ref in enumerate(self.refs, start=1):

@@ -9,6 +9,7 @@ import math
 import numpy as np
 
 from ..contact.ball_race import ball_contacts
+from ..geometry import References
 from ..operating import OperatingCondition
 from ..quasistatic import DOF_NAMES, solve_load_distribution
 from ..rings import ring_modes
@@ -34,20 +35,8 @@ _GEOMETRY = (  # field, label, symbol, SI -> shown factor, unit
 )
 
 
-class _References:
-    """Numbers each distinct source reference once: cells read "catalog [1]"."""
-
-    def __init__(self) -> None:
-        self.refs: list[str] = []
-
-    def cell(self, source) -> str:
-        if source is None:
-            return "default"
-        if not source.reference:
-            return source.kind
-        if source.reference not in self.refs:
-            self.refs.append(source.reference)
-        return f"{source.kind} [{self.refs.index(source.reference) + 1}]"
+class _References(References):
+    """Source references numbered once, listed under the table."""
 
     def html(self) -> str:
         if not self.refs:
@@ -77,7 +66,7 @@ def identity(ctx: Context):
             if value is None
             else (int(value) if name == "ball_count" else float(value) * factor)
         )
-        rows.append([label, symbol, shown, unit, Raw(esc(refs.cell(b.sources.get(name))))])
+        rows.append([label, symbol, shown, unit, Raw(esc(refs.cell(b, name)))])
     derived = [
         ("inner raceway diameter", "d_i", b.inner_raceway_diameter * 1e3, "mm"),
         ("outer raceway diameter", "d_o", b.outer_raceway_diameter * 1e3, "mm"),
@@ -98,7 +87,7 @@ def identity(ctx: Context):
                     f"{m.poisson_ratio:.3g}, {m.density:.5g} kg/m3"
                 ),
                 "",
-                Raw(esc(refs.cell(b.sources.get(name)))),
+                Raw(esc(refs.cell(b, name))),
             ]
         )
     parts.append(
