@@ -579,6 +579,23 @@ def test_tables_wrap_long_cells_instead_of_cutting_them():
     assert path in cells
 
 
+def test_a_table_of_words_fits_80_columns_with_whole_headers():
+    """benchmark's verdicts as a table of words (no vertical rules, left-aligned): at 80
+    columns every header word and every verdict stays whole; only the paths wrap."""
+    from rich.console import Console
+
+    from bearinglab.cli._output import _table
+
+    heads = ["file", "label", "S&R 2015", "raw", "cpw", "drs-sk", "combined", "right"]
+    row = ["mfpt/OuterRaceFault_vload_1.mat", "outer", "M1:Y2 M2:Y2", *["no fault"] * 4, "yes"]
+    console = Console(width=80, record=True, color_system=None)
+    console.print(_table("verdicts", heads, [row], words=True))
+    lines = console.export_text().splitlines()
+    assert all(len(ln.rstrip()) <= 80 for ln in lines)
+    assert all(h in lines[1].split() for h in ("file", "label", "combined", "drs-sk", "right"))
+    assert lines[3].count("no fault") == 4 and lines[3].rstrip().endswith("yes")
+
+
 @pytest.mark.parametrize("width", [60, 80, 120])
 def test_wide_tables_keep_their_last_column(width):
     """A table that needs more than the terminal has (benchmark's verdicts: eight columns,

@@ -6,6 +6,7 @@ import sys
 from contextlib import contextmanager
 from pathlib import Path
 
+from rich import box
 from rich.markup import escape
 from rich.table import Table
 
@@ -95,14 +96,20 @@ class _Table(Table):
         yield from super().__rich_console__(console, options)
 
 
-def _table(title: str, columns: list[str], rows: list[list]) -> Table:
-    table = _Table(title=title, title_justify="left", show_header=True, header_style="bold")
+def _table(title: str, columns: list[str], rows: list[list], words: bool = False) -> Table:
+    """A table of ``rows`` under ``columns``; ``words``: a table of words (left-aligned,
+    no vertical rules), whose many columns then fit 80 terminal columns whole."""
+    light = dict(box=box.SIMPLE_HEAD, show_edge=False, pad_edge=False, collapse_padding=True)
+    light = light if words else {}
+    table = _Table(
+        title=title, title_justify="left", show_header=True, header_style="bold", **light
+    )
     for i, col in enumerate(columns):
         # a header's words are never cut: its column is at least as wide as its longest word;
         # in a narrow terminal a long cell wraps onto more lines instead of losing its end
         table.add_column(
             escape(col),
-            justify="right" if i and col not in ("source", "meaning") else "left",
+            justify="right" if i and not words and col not in ("source", "meaning") else "left",
             min_width=max(map(len, col.split()), default=1),
             overflow="fold",
         )

@@ -76,20 +76,21 @@ def benchmark_command(
         return
     cols = out["columns"]
     # headers and cells that wrap well in 80 columns: the methods together are "combined",
-    # "no fault detected" is "no fault", "outer_race" "outer race" (the JSON keeps them)
+    # verdicts in the labels' words - "outer", "inner", "no fault", "compound: outer + ball"
+    # (the JSON keeps the full names)
     heads = [("combined" if "+" in c else c) for c in cols]
     rows = [
         [
             r["file"],
             r["fault"],
             r["smith_randall_2015"] or "-",
-            *[(r.get(c) or "error").replace(" detected", "").replace("_", " ") for c in cols],
+            *[(r.get(c) or "error").replace(" detected", "").replace("_race", "") for c in cols],
             "yes" if r["right"] else "no",
         ]
         for r in out["records"]
     ]
     title = f"{folder}: verdicts" + (f" (combined: {cols[-1]})" if len(cols) > 1 else "")
-    console.print(_table(title, ["file", "label", "S&R 2015", *heads, "right"], rows))
+    console.print(_table(title, ["file", "label", "S&R 2015", *heads, "right"], rows, words=True))
     together = cols[-1]
     matrix = out["confusion"][together]
     verdicts = [c for c in next(iter(matrix.values())) if any(m[c] for m in matrix.values())]
