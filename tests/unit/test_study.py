@@ -176,8 +176,16 @@ def test_localcluster_matches_serial_row_for_row(tmp_path, cluster):
 
 
 _KILLABLE = textwrap.dedent("""
-    import sys
+    import sys, time
+    import bearinglab.study.runner as runner
     from bearinglab.study import run_study
+    compute = runner._partition
+    def slowed(task):
+        # 0.2 s a partition: the parent kills the run part-way even on a loaded machine,
+        # where the 60 partitions could otherwise all finish between two of its polls
+        time.sleep(0.2)
+        return compute(task)
+    runner._partition = slowed
     run_study("static", {"designation": "6205", "radial_load_n": "100:3000:40",
                          "misalignment_mrad": [0.0, 0.5, 1.0]},
               output=sys.argv[1], scheduler="serial", partition_size=2)
