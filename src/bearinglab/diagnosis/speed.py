@@ -90,15 +90,18 @@ def shaft_frequency(
     29.3
     """
     from .methods import segment_length
-    from .statistics import normalised, series_test
+    from .statistics import FLOOR_BINS, normalised, series_test
 
     n = segment_length(x.size, sample_rate, sample_rate / x.size)
     y = x[:n] - np.mean(x[:n])
     power = np.abs(np.fft.rfft(y * np.hanning(n + 1)[:-1])) ** 2
     resolution = sample_rate / n
-    z = normalised(power, 2.0)
     centre = 0.5 * (low + high)
     top = min(0.5 * sample_rate, (harmonics + 0.5) * high)
+    # only the bins up to the top harmonic are read; the floor's running median there
+    # needs FLOOR_BINS beyond it
+    power = power[: int(top / resolution) + FLOOR_BINS + 8]
+    z = normalised(power, 2.0)
     test = series_test(
         z, resolution, 2.0, centre, 1.0 - low / centre, high / centre - 1.0, harmonics, top
     )

@@ -248,14 +248,22 @@ class SeriesTest:
         return decades(self.log_p)
 
 
+def _distinct_rows(a: np.ndarray) -> int:
+    """Number of distinct rows of the 2-D integer array ``a`` (each row seen as one
+    value, so that NumPy's unique compares them at C speed)."""
+    rows = np.ascontiguousarray(a).view(np.dtype((np.void, a.dtype.itemsize * a.shape[1])))
+    return int(np.unique(rows).size)
+
+
 def _window_max(z: np.ndarray, valid: np.ndarray):
     """Largest valid z over each bin and its neighbours, the number of valid bins there,
-    and the offset (-1, 0, 1) of the largest."""
-    zm = np.where(valid, z, -np.inf)
-    padded = np.pad(zm, 1, constant_values=-np.inf)
-    stack = np.stack([padded[:-2], padded[1:-1], padded[2:]])  # offsets -1, 0, +1
-    count = np.sum(np.isfinite(stack), axis=0)
-    return stack.max(axis=0), count, stack.argmax(axis=0) - 1
+    and the offset (-1, 0, 1) of the largest (the first of equals)."""
+    padded = np.pad(np.where(valid, z, -np.inf), 1, constant_values=-np.inf)
+    left, mid, right = padded[:-2], padded[1:-1], padded[2:]
+    largest = np.maximum(np.maximum(left, mid), right)
+    count = np.isfinite(left).astype(int) + np.isfinite(mid) + np.isfinite(right)
+    offset = np.where(left == largest, -1, np.where(mid == largest, 0, 1))
+    return largest, count, offset
 
 
 def series_test(
@@ -313,6 +321,11 @@ def series_test(
     """
     valid = np.ones(z.shape, bool) if valid is None else valid
     top = min(max_frequency, (z.size - 2) * resolution)
+    # nothing above the limit is read, as a line or as reference: leave those bins out
+    # (with a margin: lines beyond the limit are clipped to the last bins, whose own
+    # positions must stay clear of the reference)
+    keep = int(math.floor(top / resolution)) + 4 + OWN_BINS
+    z, valid = z[:keep], valid[:keep]
     n_max = int(min(harmonics, math.floor(top / (fundamental * (1 + above)))))
     if n_max < 1:
         return SeriesTest(0.0, 0.0, 0.0, fundamental, 0.0, (), 0)
@@ -362,7 +375,7 @@ def series_test(
         combined = _fisher_rows(logp, use)
         row_best = int(np.argmin(combined))
         # distinct sets of bins the scan read (the scan's independent trials, at most)
-        m = int(len({tuple(r) for r in np.where(use, index, -1)}))
+        m = _distinct_rows(np.where(use, index, -1))
         trials.append((math.log(m) + float(combined[row_best]), row_best, m, use))
     log_k = math.log(len(trials))
     log_p, best, candidates, readable = min(trials, key=lambda t: t[0])
