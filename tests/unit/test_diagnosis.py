@@ -394,3 +394,26 @@ def test_labels_and_measured_ball_line():
     )
     assert peak_label({"matched": "shaft", "harmonic": 27}) == "27x shaft"
     assert peak_label({"matched": None}) == "-"
+
+
+def test_the_reason_names_the_gate_that_stopped_a_family_above_the_threshold():
+    """A family above the threshold that is not called must not read as a contradiction:
+    the reason says which series test it failed (seen on CWRU 3005, ball 10^-3.1)."""
+    from bearinglab.diagnosis.analysis import _reason
+
+    def row(sig, harmonic, support):
+        return {
+            "significance": sig,
+            "harmonic_significance": harmonic,
+            "support_significance": support,
+            "method": "cpw",
+        }
+
+    table = {f: row(0.5, 0.5, 0.0) for f in ("outer_race", "inner_race", "cage")}
+    decision = {"alpha": 0.01 / 4, "modulation": []}
+    gated = _reason((), {**table, "ball": row(3.13, 1.86, 2.06)}, decision, 0.01)
+    assert "ball reaches 3.13 > 2.6" in gated
+    assert "harmonics with their first sidebands reach only 1.86" in gated
+    assert "strongest" not in gated  # that test passed
+    weak = _reason((), {**table, "ball": row(1.2, 1.2, 0.3)}, decision, 0.01)
+    assert "stands out" in weak and "best: ball 1.2" in weak

@@ -17,11 +17,11 @@ from ..errors import InputError
 from ..geometry import BallBearing
 from ..kinematics import DefectFrequencies, defect_frequencies
 from ..signal import EnvelopeSpectrum, Signal
-from .families import FAMILIES, FREQUENCY, families, tolerances
+from .families import FAMILIES, FREQUENCY, GATE_ORDERS, families, tolerances
 from .methods import DESCRIPTIONS, METHODS, method_spectrum, parse_methods
 from .result import Diagnosis
 from .speed import SEARCH, shaft_frequency
-from .statistics import decades
+from .statistics import SUPPORT_ALPHA, decades
 from .verdict import LINE_ALPHA, NO_FAULT, decide, discrete_mask, label_peaks, significance, with_z
 
 #: Channels preferred when none is named: the vertical (load-direction) acceleration of
@@ -444,10 +444,25 @@ def _reason(faults, table, decision, pfa) -> str:
     threshold = significance(decision["alpha"])
     if not faults:
         best = max(FAMILIES, key=lambda f: table[f]["significance"])
+        t = table[best]
+        # above the threshold but stopped by a gate: say which, or the table reads wrong
+        gate = significance(SUPPORT_ALPHA)
+        own = "with their first sidebands" if GATE_ORDERS[best] else "alone"
+        short = []
+        if t["harmonic_significance"] < gate:
+            short.append(f"its harmonics {own} reach only {t['harmonic_significance']:.3g}")
+        if t["support_significance"] < gate:
+            short.append(f"without its strongest line it reaches {t['support_significance']:.3g}")
+        if t["significance"] > threshold and short:
+            return (
+                f"no fault called at a false-alarm probability of {pfa:g}: {best} reaches "
+                f"{t['significance']:.3g} > {threshold:.3g} by {t['method']}, but a fault "
+                f"shows as a series, and {' and '.join(short)} (at least {gate:.3g} needed)"
+            )
         return (
             f"no family's harmonic series stands out of the noise floor at a false-alarm "
             f"probability of {pfa:g} (threshold {threshold:.3g}; best: {best} "
-            f"{table[best]['significance']:.3g} by {table[best]['method']})"
+            f"{t['significance']:.3g} by {t['method']})"
         )
     parts = []
     for f in faults:
