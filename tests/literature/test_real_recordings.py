@@ -98,3 +98,26 @@ def test_clear_records_healthy_and_mfpt_are_diagnosed(row):
 )
 def test_partial_or_undiagnosable_records_get_no_wrong_fault(row):
     assert _verdict(row) in (EXPECTED[row["fault"]], NO_FAULT)
+
+
+def test_a_ball_series_lists_its_cage_rate_line_as_ftf():
+    """CWRU 185 (ball 0.014 in, Smith & Randall P2 with Methods 1 and 2): its ball series
+    rests on the cage-rate line, which is listed as "1x ftf" (the modulation's own line),
+    never as a 0th harmonic, and the reason counts it apart from the sidebands."""
+    from bearinglab.diagnosis import peak_label
+
+    row = next((r for r in _rows() if r["file"] == "cwru/12k_DE/185.mat"), None)
+    if row is None:
+        pytest.skip("cwru/12k_DE/185.mat is not in shared/data/real")
+    d = analyze_file(
+        REAL / row["file"],
+        _bearing(row),
+        channel=row["channel"],
+        sample_rate=float(row["sample_rate_hz"]),
+        shaft_speed=float(row["speed_rpm"]) * math.pi / 30,
+        methods="all",
+    )
+    labels = [peak_label(p) for p in d.peaks]
+    assert d.verdict == "ball"
+    assert "1x ftf" in labels and not any(label.startswith("0x") for label in labels)
+    assert "modulation lines (k x FTF) 1" in d.reason

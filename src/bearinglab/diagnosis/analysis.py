@@ -469,12 +469,16 @@ def _reason(faults, table, decision, pfa) -> str:
         t = table[f]
         found = t["lines"]
         harm = sorted({ln["n"] for ln in found if ln["kind"] == "harmonic"})
-        side = sum(ln["kind"] == "sideband" for ln in found)
+        side = sum(ln["kind"] == "sideband" and ln["n"] > 0 for ln in found)
+        own = sum(ln["n"] == 0 for ln in found)  # the modulation's own lines
+        rate = "shaft" if f in ("outer_race", "inner_race") else "FTF"
         parts.append(
-            f"{f}: harmonics {harm} of {FREQUENCY[f]} {t['fundamental_hz']:.5g} Hz "
-            f"({100 * t['slip']:+.2f} %), {side} sidebands, significance "
-            f"{t['significance']:.3g} > {threshold:.3g} ({t['method']}, "
-            f"{DESCRIPTIONS[t['method']].split(' (')[0]})"
+            f"{f}: {FREQUENCY[f]} {t['fundamental_hz']:.5g} Hz ({100 * t['slip']:+.2f} %), "
+            f"lines at {100 * LINE_ALPHA:g} %: harmonics {harm or 'none alone'}, "
+            f"sidebands {side}"
+            + (f", modulation lines (k x {rate}) {own}" if own else "")
+            + f"; series significance {t['significance']:.3g} > {threshold:.3g} "
+            f"({t['method']}, {DESCRIPTIONS[t['method']].split(' (')[0]})"
         )
     if decision["modulation"]:
         parts.append("FTF lines counted as the cage-rate modulation of the fault")

@@ -266,7 +266,15 @@ def label_peaks(
         if hit is not None:
             fam, line = hit
             name = FREQUENCY[fam.name]
-            if line.kind == "harmonic":
+            modulation = "shaft" if fam.name in ("outer_race", "inner_race") else "ftf"
+            if line.n == 0:  # the modulation's own line, k x f_m
+                k = abs(int(round(line.k)))
+                peak.update(
+                    matched=modulation,
+                    harmonic=k,
+                    deviation=float(f[i] / (k * fam.modulation) - 1.0),
+                )
+            elif line.kind == "harmonic":
                 peak.update(
                     matched=name,
                     harmonic=line.n,
@@ -277,7 +285,7 @@ def label_peaks(
                     sideband_of=name,
                     sideband_harmonic=line.n,
                     sideband_order=int(round(line.k)),
-                    modulation="shaft" if fam.name in ("outer_race", "inner_race") else "ftf",
+                    modulation=modulation,
                 )
         else:
             for name, orders in masked.items():
