@@ -472,13 +472,14 @@ def _reason(faults, table, decision, pfa) -> str:
         side = sum(ln["kind"] == "sideband" and ln["n"] > 0 for ln in found)
         own = sum(ln["n"] == 0 for ln in found)  # the modulation's own lines
         rate = "shaft" if f in ("outer_race", "inner_race") else "FTF"
+        gated = "with their first sidebands" if GATE_ORDERS[f] else "alone"
         parts.append(
             f"{f}: {FREQUENCY[f]} {t['fundamental_hz']:.5g} Hz ({100 * t['slip']:+.2f} %), "
-            f"lines at {100 * LINE_ALPHA:g} %: harmonics {harm or 'none alone'}, "
-            f"sidebands {side}"
-            + (f", modulation lines (k x {rate}) {own}" if own else "")
-            + f"; series significance {t['significance']:.3g} > {threshold:.3g} "
-            f"({t['method']}, {DESCRIPTIONS[t['method']].split(' (')[0]})"
+            f"series significance {t['significance']:.3g} > {threshold:.3g}, its harmonics "
+            f"{gated} {t['harmonic_significance']:.3g} ({t['method']}, "
+            f"{DESCRIPTIONS[t['method']].split(' (')[0]}); lines at {100 * LINE_ALPHA:g} % "
+            f"each: harmonics {harm or 'none'}, sidebands {side}"
+            + (f", k x {rate} {own}" if own else "")
         )
     if decision["modulation"]:
         parts.append("FTF lines counted as the cage-rate modulation of the fault")
