@@ -97,8 +97,9 @@ def in_range(
     return float(value)
 
 
-def load_n(flag: str, value: float, signed: bool = False) -> float:
-    """A load option [N] in [0, MAX_LOAD_N] ([-MAX_LOAD_N, MAX_LOAD_N] when ``signed``)."""
+def load_n(flag: str, value: float | None, signed: bool = False) -> float | None:
+    """A load option [N] in [0, MAX_LOAD_N] ([-MAX_LOAD_N, MAX_LOAD_N] when ``signed``);
+    None (not given) passes."""
     return in_range(flag, value, -MAX_LOAD_N if signed else 0.0, MAX_LOAD_N, "a load")
 
 

@@ -99,8 +99,11 @@ class _Table(Table):
 def _table(title: str, columns: list[str], rows: list[list], words: bool = False) -> Table:
     """A table of ``rows`` under ``columns``; ``words``: a table of words (left-aligned,
     no vertical rules), whose many columns then fit 80 terminal columns whole."""
-    light = dict(box=box.SIMPLE_HEAD, show_edge=False, pad_edge=False, collapse_padding=True)
-    light = light if words else {}
+    light = (
+        dict(box=box.SIMPLE_HEAD, show_edge=False, pad_edge=False, collapse_padding=True)
+        if words
+        else {}
+    )
     table = _Table(
         title=title, title_justify="left", show_header=True, header_style="bold", **light
     )

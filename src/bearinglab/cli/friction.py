@@ -279,7 +279,7 @@ def friction_command(
     omega = speed_rad_s(speed_rpm, zero=True)
     fr = load_n("--radial-load-n", radial_load_n)
     fa = load_n("--axial-load-n", axial_load_n)
-    p = None if equivalent_load_n is None else load_n("--equivalent-load-n", equivalent_load_n)
+    p = load_n("--equivalent-load-n", equivalent_load_n)
     c0 = in_range(
         "--static-load-rating-kn", static_load_rating_kn, 0.0, 1e5, "a rating", low_open=True
     )

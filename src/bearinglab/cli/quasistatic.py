@@ -66,7 +66,7 @@ RaceControlOpt = Annotated[
     ),
 ]
 
-#: static and stiffness-map share --gyroscopic and --race-control.
+#: static and stiffness-map share --gyroscopic.
 GyroscopicOpt = Annotated[
     bool,
     typer.Option(

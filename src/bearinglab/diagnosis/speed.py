@@ -99,7 +99,8 @@ def shaft_frequency(
     centre = 0.5 * (low + high)
     top = min(0.5 * sample_rate, (harmonics + 0.5) * high)
     # only the bins up to the top harmonic are read; the floor's running median there
-    # needs FLOOR_BINS beyond it
+    # needs FLOOR_BINS beyond it (normalised()'s guard against a zero floor now scales with
+    # these bins' largest floor: the same but for records with exact zeros)
     power = power[: int(top / resolution) + FLOOR_BINS + 8]
     z = normalised(power, 2.0)
     test = series_test(
