@@ -20,7 +20,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .errors import InputError
+from .errors import InputError, positive_number
 from .geometry_sections import RingSection, grooved_ring_section
 from .macrogeometry import (
     Race,
@@ -93,12 +93,7 @@ def _mm(value: float | None) -> float | None:
 
 
 def _positive(name: str, value: float) -> None:
-    if not (
-        isinstance(value, (int, float, np.floating, np.integer))
-        and math.isfinite(value)
-        and value > 0
-    ):
-        raise InputError(name, value, "a positive length [m]")
+    positive_number(name, value, "a positive length [m]")
 
 
 @dataclass(frozen=True)

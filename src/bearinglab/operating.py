@@ -17,7 +17,9 @@ from .errors import InputError
 
 
 def _finite(name: str, value: float, allowed: str = "a finite value") -> float:
-    if not (isinstance(value, (int, float, np.floating, np.integer)) and math.isfinite(value)):
+    if isinstance(value, bool) or not (
+        isinstance(value, (int, float, np.floating, np.integer)) and math.isfinite(value)
+    ):
         raise InputError(name, value, allowed)
     return float(value)
 

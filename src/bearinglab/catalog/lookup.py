@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 from typing import Any
 
-from ..errors import CatalogError, DesignationError, InputError
+from ..errors import CatalogError, DesignationError, InputError, positive_number
 from ..geometry import INTERNAL_FIELDS
 from . import _data
 from .families import FAMILIES, TABLE_FILES, Family, families_table
@@ -239,14 +239,7 @@ def _clearance_group(group: Any) -> str:
 def _clearance_band(bore: Any, group: Any = "CN") -> tuple[str, float, float, float, float]:
     """(group, bore over [mm], bore incl [mm], min [um], max [um]) of the ISO 5753-1 row."""
     key = _clearance_group(group)
-    if (
-        isinstance(bore, bool)
-        or not isinstance(bore, (int, float))
-        or not math.isfinite(bore)
-        or bore <= 0.0
-    ):
-        raise InputError("bore", bore, "a positive length [m]")
-    d_mm = round(float(bore) / _MM, 6)
+    d_mm = round(positive_number("bore", bore, "a positive length [m]") / _MM, 6)
     rows = [r for r in _data.rows(CLEARANCE_TABLE) if r["group"] == key]
     hit = [r for r in rows if r["bore_over_mm"] < d_mm <= r["bore_incl_mm"]]
     if not hit:

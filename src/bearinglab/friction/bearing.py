@@ -15,10 +15,9 @@ of the pitch diameter that seed 003's M = mu P d_m / 2 asks for.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
-from ..errors import InputError
+from ..errors import InputError, positive_number
 
 #: How d_m is estimated when it is not known.
 MEAN_DIAMETER_ESTIMATE = "estimated as (d + D) / 2"
@@ -35,12 +34,7 @@ _FRICTION_TYPE_BEARING = {
 def _length(name: str, value, *, optional: bool = False) -> float | None:
     if value is None and optional:
         return None
-    if (
-        isinstance(value, bool)
-        or not isinstance(value, (int, float))
-        or not math.isfinite(value)
-        or not 0.0 < value <= 100.0
-    ):
+    if positive_number(name, value, "a length in (0, 100] m") > 100.0:
         raise InputError(name, value, "a length in (0, 100] m")
     return float(value)
 
