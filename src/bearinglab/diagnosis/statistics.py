@@ -21,10 +21,9 @@ The test of a fault family (outer race, inner race, ball, cage):
    bin nearest f and its two neighbours (the line's own width under a Hann window); its
    p-value is its rank among the same reading at every other position where a line may
    stand, from the lowest line of any family to the search limit (:func:`line_logp`: an
-   empirical null, because the envelope
-   spectrum of a real machine holds far more, and larger, lines than the chi-square law
-   of noise allows - on the healthy CWRU record 97 the chi-square p-values put some
-   family beyond 1e-900);
+   empirical null, because the envelope spectrum of a real machine holds far more, and
+   larger, lines than the chi-square law of noise allows - on the healthy CWRU record 97
+   the chi-square p-values put some family beyond 1e-900);
 3. the family's lines are its harmonics n f' (n = 1 .. N), the modulation sidebands
    n f' +- k f_m that the physics puts there, and the modulation's own lines k f_m (the
    sidebands of the 0th harmonic: an impact train whose amplitude varies at f_m has
@@ -195,9 +194,9 @@ def fisher_logp(logps, axis=-1):
 class Line:
     """One line of a family as found: ``kind`` ("harmonic" or "sideband"), harmonic
     ``n`` (0 for the modulation's own lines k f_m), sideband order ``k`` (0 for a
-    harmonic), ``expected_hz`` (on the fitted
-    fundamental) and ``frequency_hz`` (bin of the largest value read) [Hz], normalised
-    power ``z`` [-] and ``log_p`` (natural log of its p-value) [-]."""
+    harmonic), ``expected_hz`` (on the fitted fundamental) and ``frequency_hz`` (bin of
+    the largest value read) [Hz], normalised power ``z`` [-] and ``log_p`` (natural log
+    of its p-value) [-]."""
 
     kind: str
     n: int
