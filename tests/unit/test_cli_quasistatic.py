@@ -47,6 +47,21 @@ def test_static_film_and_orbit(capsys):
     assert wet["orbit_peak_to_peak_um"] > 0 and len(wet["orbit"]["x_um"]) > 10
 
 
+def test_static_lubricant_options_without_film_are_checked_and_named_as_unused(capsys):
+    args = ("static", "6205", "--radial-load-n", "1000")
+    quiet = run_json(capsys, *args, "--film")
+    assert not any("no effect" in w for w in quiet["warnings"])
+    unused = run_json(capsys, *args, "--temperature-c", "50", "--lubricant", "seed004-grease")
+    assert any(
+        "--lubricant and --temperature-c: no effect without --film" in w for w in unused["warnings"]
+    )
+    # the same answer as without them
+    assert unused["radial_displacement_um"] == run_json(capsys, *args)["radial_displacement_um"]
+    # out of range even without --film (it was accepted silently)
+    assert main([*args, "--temperature-c", "500"]) == 2
+    assert "--temperature-c = 500" in capsys.readouterr().err
+
+
 def test_static_plot(tmp_path, capsys):
     out = tmp_path / "s.png"
     assert main(["static", "6205", "--radial-load-n", "800", "--plot", str(out)]) == 0

@@ -113,16 +113,29 @@ def _condition(radial, axial, speed_rpm, angle_deg, misalignment_mrad):
     )
 
 
+#: The film's lubricant when --lubricant is not given.
+DEFAULT_LUBRICANT = "iso-vg68"
+
+
 def _lubricant(film: bool, name: str, temperature_c: float | None):
-    if not film:
-        return None, None
+    """The film's lubricant and temperature [K] (None, None without --film), and the
+    warnings for lubricant options that then have no effect."""
     if name not in LUBRICANTS:
         raise OptionError("--lubricant", name, f"one of {', '.join(LUBRICANTS)}")
-    if temperature_c is not None and not (
-        math.isfinite(temperature_c) and -60 <= temperature_c <= 300
-    ):
-        raise OptionError("--temperature-c", temperature_c, "a temperature in [-60, 300] degC")
-    return LUBRICANTS[name], None if temperature_c is None else temperature_c + ZERO_CELSIUS
+    in_range("--temperature-c", temperature_c, -60.0, 300.0, "a temperature")
+    if not film:
+        given = [
+            flag
+            for flag, on in (
+                ("--lubricant", name != DEFAULT_LUBRICANT),
+                ("--temperature-c", temperature_c is not None),
+            )
+            if on
+        ]
+        notes = [f"{' and '.join(given)}: no effect without --film (the EHL film)"]
+        return None, None, notes if given else []
+    kelvin = None if temperature_c is None else temperature_c + ZERO_CELSIUS
+    return LUBRICANTS[name], kelvin, []
 
 
 @app.command()
@@ -154,7 +167,7 @@ def static(
     ] = False,
     lubricant: Annotated[
         str, typer.Option("--lubricant", help="Lubricant for the film: " + ", ".join(LUBRICANTS))
-    ] = "iso-vg68",
+    ] = DEFAULT_LUBRICANT,
     temperature_c: Annotated[
         float | None,
         typer.Option(
@@ -227,7 +240,7 @@ def static(
     orbit = orbit or orbit_plot is not None
     in_range("--orbit-points", orbit_points, 2, 100_000, "an integer")
     condition = _condition(fr, fa, speed_rpm, radial_load_angle_deg, misalignment_mrad)
-    oil, temperature = _lubricant(film, lubricant, temperature_c)
+    oil, temperature, unused = _lubricant(film, lubricant, temperature_c)
     forms = FormErrors(waviness, ball_size_error_um, surface3d)
     if orbit and forms.given and condition.shaft_speed <= 0:
         raise OptionError(
@@ -258,7 +271,7 @@ def static(
     )
     result = solve_load_distribution(bearing, condition, ball_diameter_errors=errors, **options)
     d = result.to_dict()
-    d["warnings"] = _geometry_warnings(bearing) + plausibility + d["warnings"]
+    d["warnings"] = _geometry_warnings(bearing) + plausibility + unused + d["warnings"]
     out = {"designation": designation, **d}
     if imperfections is not None:
         out["imperfections"] = imperfections.to_dict()
