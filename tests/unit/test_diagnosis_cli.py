@@ -8,6 +8,7 @@ import numpy as np
 import pytest
 
 from bearinglab.cli import main
+from bearinglab.machine import most_processes
 from bearinglab.signal import Signal, write_signal
 
 FS = 20000.0
@@ -176,3 +177,7 @@ def test_benchmark_json_and_html(folder, capsys, tmp_path):
     assert code == 0 and "confusion" in out
     code, _, err = run(capsys, "benchmark", str(tmp_path))
     assert code == 2 and "labels.csv" in err
+    # more processes than 4 per core only take memory (100 000 once filled 24 GB)
+    most = most_processes()
+    code, _, err = run(capsys, "benchmark", str(folder), "--jobs", str(most + 1))
+    assert code == 2 and f"--jobs = {most + 1} is not allowed" in err and f"[1, {most}]" in err

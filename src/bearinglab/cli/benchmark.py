@@ -42,8 +42,6 @@ def benchmark_command(
     json_output: JsonOpt = False,
 ):
     """Run the diagnosis over a folder of labelled recordings."""
-    if jobs < 1:
-        raise OptionError("--jobs", jobs, "an integer >= 1")
     check_path("--html", html, (".html", ".htm"))
     from ..diagnosis import run_benchmark
 

@@ -294,10 +294,14 @@ def run_benchmark(
 
     rows = read_labels(folder)
     names = parse_methods(DEFAULT_METHODS if methods is None else methods)
-    if isinstance(jobs, bool) or not isinstance(jobs, int) or jobs < 1:
-        raise InputError("jobs", jobs, "an integer >= 1")
+    from ..machine import most_processes
+
+    most = most_processes()
+    if isinstance(jobs, bool) or not isinstance(jobs, int) or not 1 <= jobs <= most:
+        raise InputError("jobs", jobs, f"an integer in [1, {most}] (4 per core)")
+    jobs = min(jobs, len(rows))  # no idle processes
     results: list[dict | None] = [None] * len(rows)
-    if jobs == 1:
+    if jobs <= 1:
         for i, row in enumerate(rows):
             results[i] = run_record(str(folder), row, names, keep_spectra)
             if progress:

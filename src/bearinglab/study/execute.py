@@ -84,10 +84,15 @@ def open_runner(
     connect_timeout : float
         Seconds to wait for a scheduler [s].
     """
+    from ..machine import most_processes
+
+    most = most_processes()
     if workers is not None and (
-        isinstance(workers, bool) or not isinstance(workers, int) or not 1 <= workers <= 1024
+        isinstance(workers, bool) or not isinstance(workers, int) or not 1 <= workers <= most
     ):
-        raise InputError("workers", workers, "a number of worker processes in [1, 1024]")
+        raise InputError(
+            "workers", workers, f"a number of worker processes in [1, {most}] (4 per core)"
+        )
     if scheduler is None:
         scheduler = os.environ.get(ENV_ADDRESS) or "local"
     if scheduler == "serial":
