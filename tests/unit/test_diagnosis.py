@@ -128,6 +128,18 @@ def test_supply_harmonics_are_masked(kin):
     d = analyze_signal(x, FS, kin, methods="raw", supply_frequency=50.0, tolerances={"outer": 0.05})
     assert d.verdict == NO_FAULT
     assert any(p["matched"] == "supply" for p in d.peaks)
+    assert not any("cover" in w for w in d.warnings)
+
+
+def test_supply_or_mesh_harmonics_that_would_mask_everything(kin):
+    # a faulty record: 1e-9 Hz once asked for 43 TiB of harmonics; a few Hz masks every bin
+    x = impacts(kin.hz("bpfo"))
+    res = analyze_signal(x, FS, kin, methods="raw").spectrum.frequency[1]
+    for name in ("supply_frequency", "mesh_frequency"):
+        with pytest.raises(InputError, match=rf"{name} = 1e-09 .* 3 x the envelope"):
+            analyze_signal(x, FS, kin, methods="raw", **{name: 1e-9})
+    d = analyze_signal(x, FS, kin, methods="raw", supply_frequency=3.5 * res)
+    assert any("cover" in w and "masked" in w for w in d.warnings)
 
 
 def test_two_faults_never_make_a_third(kin):

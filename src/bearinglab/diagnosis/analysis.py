@@ -369,9 +369,26 @@ def analyze_signal(
             )
     spectra = [with_z(method_spectrum(m, x, fs, resolution, band, largest)) for m in names]
     fams = families(freqs, windows)
+    res = spectra[0].resolution
+    for name, f in (("supply_frequency", supply), ("mesh_frequency", mesh)):
+        # each harmonic is masked with its neighbours: closer than 3 bins, they mask it all
+        if f is not None and f < 3.0 * res:
+            raise InputError(
+                name,
+                f,
+                f"a frequency >= {3.0 * res:.3g} Hz, 3 x the envelope spectrum's resolution",
+                "its harmonics, masked with their neighbouring bins, would cover the spectrum",
+            )
     valid, masked = discrete_mask(
         spectra, {"shaft": shaft_hz, "supply": supply, "mesh": mesh}, max_frequency
     )
+    covered = 1.0 - float(np.mean(valid[spectra[0].method][1 : int(max_frequency / res) + 1]))
+    if (supply or mesh) and covered > 0.5:
+        warnings.append(
+            f"the harmonics masked as the machine's (shaft, supply, mesh) cover {covered:.0%} "
+            f"of the envelope spectrum up to {max_frequency:.4g} Hz: a fault's lines may be "
+            "masked with them"
+        )
     decision = decide(spectra, fams, valid, max_frequency, harmonics, pfa, (shaft_hz, freqs["ftf"]))
     faults = tuple(decision["faults"])
     verdict = (
