@@ -198,6 +198,11 @@ def test_defect_spec_units_and_angles():
         (["--duration-s", "0.001"], "--duration-s"),
         (["--sample-rate-hz", "-5"], "--sample-rate-hz"),
         (["--noise-ms2", "-1"], "--noise-ms2"),
+        # slips of the keyboard: an overflow or an integrator that stalls, not named
+        (["--noise-ms2", "1e300"], "--noise-ms2 = 1e+300 is not allowed"),
+        (["--sample-rate-hz", "1e9"], "--sample-rate-hz = 1000000000 is not allowed"),
+        (["--settle-s", "1e9"], "--settle-s = 1000000000 is not allowed"),
+        (["--model", "slip", "--oil-fraction", "-1"], "--oil-fraction = -1 is not allowed"),
         (["--speed-rpm", "0"], "--speed-rpm"),
         (["--radial-load-n", "-3"], "--radial-load-n"),
         (["-o", "signal.txt"], "--output"),

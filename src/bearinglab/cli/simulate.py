@@ -38,9 +38,9 @@ from ._inputs import (
     _print_warnings,
     check_loads,
     check_path,
+    in_range,
     option_error,
     plot_option,
-    positive,
     save_plot_figure,
     speed_rad_s,
     writing,
@@ -174,10 +174,12 @@ def simulate_command(
     its plain spectrum."""
     shaft_speed = speed_rad_s(speed_rpm)
     check_loads(radial_load_n, axial_load_n)
-    positive("--duration-s", duration_s, "a duration > 0 s")
-    positive("--sample-rate-hz", sample_rate_hz, "a sample rate > 0 Hz")
-    positive("--settle-s", settle_s, "a time >= 0 s", zero=True)
-    positive("--noise-ms2", noise_ms2, "an RMS >= 0 m/s^2", zero=True)
+    # upper bounds far beyond any measurement, so that a slip of the keyboard (1e9 Hz,
+    # 1e300 m/s^2) is named here rather than overflowing or stalling the integrator
+    in_range("--duration-s", duration_s, 0.0, 3600.0, "a duration", low_open=True)
+    in_range("--sample-rate-hz", sample_rate_hz, 0.0, 1e6, "a sample rate", low_open=True)
+    in_range("--settle-s", settle_s, 0.0, 60.0, "a settling time")
+    in_range("--noise-ms2", noise_ms2, 0.0, 1e6, "an RMS acceleration (m/s²)")
     if seed is not None and seed < 0:
         raise OptionError("--seed", seed, "an integer >= 0")
     check_path("--output", output, SUFFIXES)
@@ -208,7 +210,10 @@ def simulate_command(
     }
     parameters = None
     if model is Model.slip:
-        parameters = SlipParameters(**{k: v for k, v in slip_given.items() if v is not None})
+        try:
+            parameters = SlipParameters(**{k: v for k, v in slip_given.items() if v is not None})
+        except InputError as exc:
+            raise option_error(exc, slip_given) from None
     elif any(v is not None for v in slip_given.values()):
         name = next(k for k, v in slip_given.items() if v is not None)
         raise OptionError(
