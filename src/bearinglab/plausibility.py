@@ -164,6 +164,11 @@ def speed_warnings(
     return out
 
 
+def _article(word: str) -> str:
+    """'an' before a vowel ('an inner-race', 'an outer-race'), else 'a'."""
+    return "an" if word[:1].lower() in "aeiou" else "a"
+
+
 def sampling_warnings(
     frequencies, sample_rate: float, duration: float | None = None, families=None
 ) -> list[str]:
@@ -217,8 +222,8 @@ def sampling_warnings(
     for family, name, f in too_high:
         out.append(
             f"{_LABEL[name]} = {f:.5g} Hz is above the Nyquist frequency "
-            f"{nyquist:.5g} Hz: a {family.replace('_', '-')} fault cannot show in "
-            "this record"
+            f"{nyquist:.5g} Hz: {_article(family)} {family.replace('_', '-')} fault cannot "
+            "show in this record"
         )
     if duration is not None:
         ftf = frequencies.hz("ftf")

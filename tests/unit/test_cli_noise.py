@@ -311,3 +311,13 @@ def test_example_script_draws_every_figure(tmp_path, capsys):
         "fig20_ball_band.png",
     }
     assert "mean SPL" in capsys.readouterr().out
+
+
+def test_the_record_sampling_is_checked_against_the_bearing(capsys, base):
+    """Too few points for the ball-pass lines, or less than a cage revolution, ran without
+    a word (an audit: 16 points in 1 s gave -17.7 dB and one aliased line)."""
+    assert not any("Nyquist" in w or "cage revolution" in w for w in base["warnings"])
+    sparse = run_json(capsys, *NOISE, *FORMS, "--points", "16", *POINT_A)
+    assert any("BPFI" in w and "Nyquist" in w for w in sparse["warnings"])
+    short = run_json(capsys, *NOISE, *FORMS, "--duration-s", "0.01", *FAST, *POINT_A)
+    assert any("shorter than one cage revolution" in w for w in short["warnings"])

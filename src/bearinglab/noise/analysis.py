@@ -229,7 +229,7 @@ def noise_analysis(
     from ..dynamics import needs_compiling
     from ..errors import InputError
     from ..kinematics import defect_frequencies
-    from ..plausibility import operating_warnings
+    from ..plausibility import operating_warnings, sampling_warnings
     from ..signal.lines import spectrum_lines
 
     def stage(fraction: float, text: str) -> None:
@@ -285,10 +285,22 @@ def noise_analysis(
     )
     stage(0.9, "pressure spectrum")
     sound = noise.sound
+    # the record's sampling against the bearing's lines (too few points), and its length
+    # against one cage revolution, the period of the steady orbit (not an envelope's
+    # resolution: the default record is exactly one revolution)
+    pressure = sound.pressure("total")
+    warnings += sampling_warnings(kin, sound.sample_rate)
+    revolution = 1.0 / kin.hz("ftf")
+    if pressure.size / sound.sample_rate < 0.99 * revolution:
+        warnings.append(
+            f"the record ({pressure.size / sound.sample_rate:.3g} s) is shorter than one cage "
+            f"revolution ({revolution:.3g} s): not every ball passes the load zone, and the "
+            "levels are of part of the orbit"
+        )
     top = PEAK_HARMONICS + 0.5
     max_frequency = min(0.5 * sound.sample_rate, top * max(kin.hz("bpfo"), kin.hz("bpfi")))
     spectrum, peaks = spectrum_lines(
-        sound.pressure("total"),
+        pressure,
         sound.sample_rate,
         kin,
         max_frequency,
