@@ -104,3 +104,15 @@ def test_transfer_path_resonance_and_low_frequency_gain():
         assert gain(both, f) == pytest.approx(gain(low, f) * gain(high, f), rel=0.01)
     with pytest.raises(InputError, match="damping ratio"):
         TransferPath(((3000.0, 1.5),))
+
+
+def test_a_record_that_cannot_show_its_label_is_refused():
+    """An inner-race record sampled at 300 Hz (BPFI ~160 Hz above Nyquist) or shorter than
+    a cage revolution was written and labelled "inner" (an audit); now it is a failed
+    record with the reason, before any simulating."""
+    slow = DatasetSpec(records=1, faults=("inner",), sample_rate_hz=300.0, resonances=())
+    with pytest.raises(InputError, match=r"sample_rate = 300.*BPFI.*Nyquist"):
+        make_record(slow, 0, 0)
+    short = DatasetSpec(records=1, faults=("inner",), duration_s=0.01, resonances=())
+    with pytest.raises(InputError, match="duration_s = 0.01 .* one cage revolution"):
+        make_record(short, 0, 0)

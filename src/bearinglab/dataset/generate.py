@@ -41,11 +41,20 @@ MAX_RECORDS = 10**7
 LARGEST_PARTITION = 20
 
 
-def make_record(spec: DatasetSpec, seed: int, index: int) -> tuple[np.ndarray, dict, dict]:
-    """(samples float32, record inputs, kinematic frequencies object) of record ``index``."""
+def make_record(
+    spec: DatasetSpec, seed: int, index: int, check: bool = True
+) -> tuple[np.ndarray, dict, dict]:
+    """(samples float32, record inputs, kinematic frequencies object) of record ``index``.
+
+    With ``check``, a record that cannot show what its label says is refused (an
+    InputError, which the set records as a failed record): a fault whose defect frequency
+    is above the Nyquist frequency, or less than one cage revolution (not every ball has
+    passed the load zone)."""
     from ..dynamics import Defect, simulate
     from ..imperfections import BallSizeErrors, Imperfections, Waviness
+    from ..kinematics import defect_frequencies
     from ..operating import OperatingCondition
+    from ..plausibility import LOCATION_FAMILY, sampling_warnings
     from ..study._inputs import bearing_of
     from .path import TransferPath
 
@@ -88,6 +97,17 @@ def make_record(spec: DatasetSpec, seed: int, index: int) -> tuple[np.ndarray, d
         radial_load=r["radial_load_n"], shaft_speed=r["speed_rpm"] * math.pi / 30.0
     )
     fs = r["sample_rate_hz"]
+    if check and condition.shaft_speed > 0:
+        kin = defect_frequencies(bearing, condition.shaft_speed)
+        sampling_warnings(kin, fs, None, [LOCATION_FAMILY[d.location] for d in defects])
+        revolution = 1.0 / kin.hz("ftf")
+        if r["duration_s"] < revolution:
+            raise InputError(
+                "duration_s",
+                r["duration_s"],
+                f"at least one cage revolution, {revolution:.4g} s",
+                "every ball passes the load zone once in it",
+            )
     sim = simulate(
         bearing,
         condition,
@@ -366,7 +386,10 @@ def _warm(args) -> None:
     import dataclasses
 
     make_record(
-        dataclasses.replace(spec, duration_s=0.02, sample_rate_hz=20000.0, resonances=()), seed, 0
+        dataclasses.replace(spec, duration_s=0.02, sample_rate_hz=20000.0, resonances=()),
+        seed,
+        0,
+        check=False,
     )
 
 
