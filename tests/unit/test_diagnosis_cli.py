@@ -181,3 +181,20 @@ def test_benchmark_json_and_html(folder, capsys, tmp_path):
     most = most_processes()
     code, _, err = run(capsys, "benchmark", str(folder), "--jobs", str(most + 1))
     assert code == 2 and f"--jobs = {most + 1} is not allowed" in err and f"[1, {most}]" in err
+
+
+def test_a_sample_rate_that_overrides_the_files_is_named(tmp_path, capsys):
+    """--sample-rate-hz 60000 on a file that stores 50 kHz shifts every line by 20 %: the
+    analysis says so (an audit found it silent)."""
+    path = tmp_path / "rec.npz"
+    noise = np.random.default_rng(0).standard_normal(50_000)
+    write_signal(path, Signal({"acc_y": noise}, 50_000.0, {}))
+    args = ("analyze", str(path), "--designation", "6205", *AT_1750, "--json")
+
+    def said(rate):
+        code, out, err = run(capsys, *args, "--sample-rate-hz", rate)
+        assert code == 0, err
+        return [w for w in json.loads(out)["warnings"] if "stores a sample rate" in w]
+
+    assert "50000 Hz and 60000 Hz was given" in said("60000")[0]
+    assert said("50000") == []

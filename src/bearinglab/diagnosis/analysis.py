@@ -330,6 +330,12 @@ def analyze_signal(
     supply = _positive("supply_frequency", supply_frequency, "a frequency > 0 Hz")
     mesh = _positive("mesh_frequency", mesh_frequency, "a frequency > 0 Hz")
     warnings: list[str] = []
+    stored = getattr(signal_or_array, "metadata", {}).get("stored_sample_rate_hz")
+    if stored is not None and abs(stored - fs) > 1e-9 * fs:
+        warnings.append(
+            f"the file stores a sample rate of {stored:g} Hz and {fs:g} Hz was given: every "
+            f"frequency of the record reads {fs / stored:.4g} times what the file says"
+        )
     kin, speed, shaft_hz = _speed(frequencies, shaft_speed, speed_range, x, fs, warnings)
     nyquist = fs / 2
     freqs = {name: kin.hz(name) for name in ("shaft", "ftf", "bpfo", "bpfi", "ball_defect")}

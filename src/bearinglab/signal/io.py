@@ -137,6 +137,8 @@ def read_signal(path, sample_rate=None, channel=None) -> Signal:
             "path", str(path), f"a readable {suffix} file", hint=f"{type(exc).__name__}: {exc}"
         ) from None
     fs = sample_rate if sample_rate is not None else file_rate
+    if sample_rate is not None and file_rate is not None and sample_rate != file_rate:
+        metadata["stored_sample_rate_hz"] = float(file_rate)  # overridden: say so later
     if fs is None:
         raise InputError(
             "sample_rate_hz",
