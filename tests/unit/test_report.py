@@ -184,6 +184,7 @@ def test_plausibility_warnings_on_the_page_and_in_json(capsys, tmp_path):
         (["-o", "r.html", "--defect", "outer:width_mm=9"], "--defect"),
         (["-o", "r.html", "--defect", "rim:width_mm=1"], "--defect"),
         (["-o", "r.html", "--lubricant", "water"], "--lubricant"),
+        (["-o", "r.html", "--viscosity-mm2-s", "20", "--lubricant", "foo"], "--lubricant"),
         (["-o", "r.html", "--duration-s", "0"], "--duration-s"),
     ],
 )

@@ -141,11 +141,11 @@ def report_command(
     defects = [parse_defect(text) for text in specs]
     bearing, decoded = resolve_bearing(designation, geometry)
     check_defects(specs, defects, bearing)
-    if viscosity_mm2_s is None:
-        from ..lubrication import LUBRICANTS
+    from ..lubrication import LUBRICANTS
 
-        if lubricant not in LUBRICANTS:
-            raise OptionError("--lubricant", lubricant, f"one of {', '.join(LUBRICANTS)}")
+    # checked even when --viscosity-mm2-s replaces it (a typo is never silently passed)
+    if lubricant not in LUBRICANTS:
+        raise OptionError("--lubricant", lubricant, f"one of {', '.join(LUBRICANTS)}")
     condition = OperatingCondition(
         radial_load=radial_load_n, axial_load=axial_load_n, shaft_speed=rpm_to_rad_s(speed_rpm)
     )
