@@ -117,6 +117,16 @@ def test_bad_input(capsys, args, words):
     assert len(err) == 1 and words in err[0]
 
 
+def test_stiffness_map_plot_with_nothing_solved_is_an_error(tmp_path, capsys):
+    # it exited 0 and wrote nothing (an audit); now: no file at all, and the reason
+    out = tmp_path / "map.csv"
+    plot = tmp_path / "map.png"
+    args = ["stiffness-map", "6205", "--radial-load-n", "0", "-o", str(out), "--plot", str(plot)]
+    assert main(args) == 2
+    assert "no case of the map solved" in capsys.readouterr().err
+    assert not out.exists() and not plot.exists()
+
+
 def test_stiffness_map_csv_and_json(tmp_path, capsys):
     csv = tmp_path / "m.csv"
     d = run_json(

@@ -456,10 +456,17 @@ def stiffness_map(
             race_control=race_control.value,
         )
     rows = table.to_dict(orient="records")
+    solved = table[table["status"] == "ok"]
+    if plot is not None and not len(solved):  # before anything is written
+        raise OptionError(
+            "--plot",
+            str(plot),
+            "a map with at least one solved case to draw",
+            "no case of the map solved: with no load a bearing has no stiffness",
+        )
     if output is not None:
         _write_csv(table, output)
-    solved = table[table["status"] == "ok"]
-    if plot is not None and len(solved):
+    if plot is not None:
         save_plot_figure(stiffness_map_figure(solved)[0], plot)
     if json_output:
         _emit_json(
