@@ -774,3 +774,18 @@ def test_cli_tables_fit_80_columns_uncut(capsys, monkeypatch, args):
     # every number of the table is printed whole (4 significant digits)
     for key in ("friction_torque_n_mm", "power_loss_w"):
         assert f"{d[key]:.4g}" in out
+
+
+def test_the_load_and_speed_are_checked_as_for_static():
+    """friction at 7.6 C0 or 2.7e6 mm/min ran without the warnings static gives (an audit);
+    a bearing known by its dimensions alone has no C0 to check against."""
+    b, _ = bearing_from_designation("6205")
+    heavy = bearing_friction(b, 100.0, 60_000.0)
+    assert any("s0 = C0/P0" in w for w in heavy.warnings)
+    fast = bearing_friction(b, 70_000 * math.pi / 30, 1000.0, lubricant="iso-vg68", model="skf")
+    assert any("speed factor" in w for w in fast.warnings)
+    assert not any("s0 = C0/P0" in w for w in bearing_friction(b, 100.0, 1000.0).warnings)
+    from bearinglab.friction import FrictionBearing
+
+    dims = FrictionBearing.from_dimensions(0.025, 0.052, pitch_diameter=0.0385)
+    assert not any("s0" in w for w in bearing_friction(dims, 100.0, 60_000.0).warnings)

@@ -376,6 +376,7 @@ def bearing_friction(
     else:
         nu, nu_how, lub = viscosity_of(viscosity, lubricant, temperature)
     ks = check_seal_constants(seal_constants, seal_kind)
+    plausible = _operating_warnings(bearing, w, fr, fa)
     if model == "constant":
         unused = {
             "viscosity": viscosity,
@@ -389,9 +390,10 @@ def bearing_friction(
         }
         if lubrication is not None:
             lubrication_of(lubrication, lub)
-        return _constant(
+        result = _constant(
             b, w, fr, fa, friction_type, equivalent_load, seal_kind, unused_note("constant", unused)
         )
+        return replace(result, warnings=plausible + result.warnings)
     kind = friction_type or b.bearing_type
     if kind not in SKF_BEARING_TYPES:
         what = "for the SKF model a ball bearing: " + ", ".join(SKF_BEARING_TYPES)
@@ -503,8 +505,23 @@ def bearing_friction(
         parameters=parameters,
         bearing_type=b.bearing_type,
         seals=seal_kind,
-        warnings=result.warnings + unused,
+        warnings=plausible + result.warnings + unused,
     )
+
+
+def _operating_warnings(bearing, shaft_speed, radial_load, axial_load) -> tuple:
+    """The load against C0 and the speed against the limit (plausibility.py), for a ball
+    bearing whose geometry gives them; none for a FrictionBearing of dimensions only."""
+    from ..geometry import BallBearing
+    from ..operating import OperatingCondition
+    from ..plausibility import operating_warnings
+
+    if not isinstance(bearing, BallBearing):
+        return ()
+    condition = OperatingCondition(
+        radial_load=radial_load, axial_load=axial_load, shaft_speed=shaft_speed
+    )
+    return tuple(operating_warnings(bearing, condition))
 
 
 def _constant(

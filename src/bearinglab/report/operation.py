@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from ..friction import bearing_friction
 from ..life import rating_life
+from ..plausibility import operating_warnings
 from ..units import UNITS, label
 from .context import Context
 from .document import figure, notes, number, paragraph, table
@@ -84,7 +85,9 @@ def friction(ctx: Context):
         )
     else:
         body.append(table(columns, rows, "Friction torque and power loss"))
-    body.append(notes(said, "Notes"))
+    # the load and speed checks stand at the report's head: not again under each model
+    head = set(operating_warnings(ctx.bearing, c))
+    body.append(notes([w for w in dict.fromkeys(said) if w not in head], "Notes"))
     best = skf or constant
     return "".join(body), [
         ("Friction torque", f"{number(best.torque * _N_MM, 3)} N·mm"),
