@@ -49,8 +49,19 @@ class BallContacts:
     @property
     def warnings(self) -> list[str]:
         """Validity warnings: a contact ellipse that runs over its groove shoulder (see the
-        module docstring for the criterion)."""
+        module docstring for the criterion), and a pressure above the 4200 MPa at which
+        ISO 76 puts a permanent deformation of 1e-4 D_w (the static rating's criterion)."""
+        from ..life.tables import STATIC_CONTACT_STRESS
+
         out = []
+        for race, c in (("inner", self.inner), ("outer", self.outer)):
+            peak = float(np.max(c.max_pressure))
+            if peak > STATIC_CONTACT_STRESS:
+                out.append(
+                    f"{race} contact: p_max = {peak / 1e6:.4g} MPa is above the "
+                    f"{STATIC_CONTACT_STRESS / 1e6:.4g} MPa at which ISO 76 puts a permanent "
+                    "deformation of 1e-4 D_w (the load is past the static rating)"
+                )
         b = self.bearing
         axis = 0.5 * math.pi if b.is_thrust else 0.0
         loads = np.broadcast_to(np.asarray(self.load, dtype=float), np.shape(self.inner.semi_major))
