@@ -429,3 +429,16 @@ def test_the_reason_names_the_gate_that_stopped_a_family_above_the_threshold():
     assert "strongest" not in gated  # that test passed
     weak = _reason((), {**table, "ball": row(1.2, 1.2, 0.3)}, decision, 0.01)
     assert "stands out" in weak and "best: ball 1.2" in weak
+
+
+def test_a_speed_range_that_misses_the_given_speed_is_named(kin):
+    """A speed range given with a fixed speed only bounds the check's search; one that
+    does not hold the speed was silent (an audit) and the check's message spoke of +-5 %."""
+    x = impacts(kin.hz("bpfo"))
+    low, high = 100 * math.pi / 30, 200 * math.pi / 30
+    d = analyze_signal(x, FS, kin, methods="raw", speed_range=(low, high))
+    assert any("outside the speed range 100-200 rpm" in w for w in d.warnings)
+    assert not any("within 5 %" in w for w in d.warnings)
+    inside = (0.9 * kin.shaft_speed, 1.1 * kin.shaft_speed)
+    d = analyze_signal(x, FS, kin, methods="raw", speed_range=inside)
+    assert not any("outside the speed range" in w for w in d.warnings)

@@ -126,6 +126,12 @@ def _speed(frequencies, shaft_speed, speed_range, x, fs, warnings):
             low = high = math.nan
         if not (0 < low < high):
             raise InputError("speed_range", speed_range, "(low, high) in rad/s, 0 < low < high")
+        if not auto and nominal is not None and not low <= nominal / (2 * math.pi) <= high:
+            warnings.append(
+                f"the given {nominal * 30 / math.pi:.6g} rpm is outside the speed range "
+                f"{60 * low:.6g}-{60 * high:.6g} rpm, which then only bounds the search "
+                "that checks it"
+            )
     elif nominal is not None:
         low, high = (nominal / (2 * math.pi) * (1 + s) for s in (-SEARCH, SEARCH))
     else:
@@ -151,10 +157,12 @@ def _speed(frequencies, shaft_speed, speed_range, x, fs, warnings):
     else:
         used, record["source"] = nominal, "given"
         if found.frequency is None:
-            warnings.append(
-                f"no shaft line found within {100 * SEARCH:g} % of the given "
-                f"{nominal * 30 / math.pi:.6g} rpm: the speed is not checked"
+            where = (
+                f"within {100 * SEARCH:g} % of the given {nominal * 30 / math.pi:.6g} rpm"
+                if speed_range is None
+                else f"between {60 * low:.6g} and {60 * high:.6g} rpm"
             )
+            warnings.append(f"no shaft line found {where}: the speed is not checked")
         elif found.sub_multiple:
             k = found.sub_multiple
             warnings.append(
