@@ -49,7 +49,7 @@ def test_static_film_and_orbit(capsys):
 
 def test_static_lubricant_options_without_film_are_checked_and_named_as_unused(capsys):
     args = ("static", "6205", "--radial-load-n", "1000")
-    quiet = run_json(capsys, *args, "--film")
+    quiet = run_json(capsys, *args, "--film", "--speed-rpm", "3000")
     assert not any("no effect" in w for w in quiet["warnings"])
     unused = run_json(capsys, *args, "--temperature-c", "50", "--lubricant", "seed004-grease")
     assert any(
@@ -57,6 +57,12 @@ def test_static_lubricant_options_without_film_are_checked_and_named_as_unused(c
     )
     # the same answer as without them
     assert unused["radial_displacement_um"] == run_json(capsys, *args)["radial_displacement_um"]
+    # at 0 rpm the speed's effects have nothing to act on
+    idle = run_json(capsys, *args, "--gyroscopic", "--film")
+    assert (
+        "--gyroscopic and --film: no effect at --speed-rpm 0 (no rolling speed)"
+        in (idle["warnings"])
+    )
     # out of range even without --film (it was accepted silently)
     assert main([*args, "--temperature-c", "500"]) == 2
     assert "--temperature-c = 500" in capsys.readouterr().err

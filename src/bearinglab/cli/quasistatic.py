@@ -241,6 +241,18 @@ def static(
     in_range("--orbit-points", orbit_points, 2, 100_000, "an integer")
     condition = _condition(fr, fa, speed_rpm, radial_load_angle_deg, misalignment_mrad)
     oil, temperature, unused = _lubricant(film, lubricant, temperature_c)
+    if condition.shaft_speed == 0:  # each of these acts through the balls' speed
+        idle = [
+            flag
+            for flag, on in (
+                ("--gyroscopic", gyroscopic),
+                ("--ring-expansion", ring_expansion),
+                ("--film", film),
+            )
+            if on
+        ]
+        if idle:
+            unused.append(f"{' and '.join(idle)}: no effect at --speed-rpm 0 (no rolling speed)")
     forms = FormErrors(waviness, ball_size_error_um, surface3d)
     if orbit and forms.given and condition.shaft_speed <= 0:
         raise OptionError(
