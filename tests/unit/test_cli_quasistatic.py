@@ -99,6 +99,13 @@ def test_static_plot(tmp_path, capsys):
         (["ring-modes", "--modes", "2:3"], "DESIGNATION"),
         (["ring-modes", "6310", "--axial-load-n", "0"], "--axial-load-n"),
         (["ring-modes", "6310", "--ring-mass-kg", "0"], "--ring-mass-kg"),
+        # an audit: 1e6 N gave a "tangent stiffness"; f_1 silently replaced the K_x given
+        (["ring-modes", "6205", "--axial-load-n", "1e6"], "--axial-load-n = 1000000"),
+        (
+            ["ring-modes", "6205", "--radial-stiffness-n-per-m", "2e8"]
+            + ["--rigid-body-frequency-hz", "100"],
+            "give one of them",
+        ),
         (
             [
                 "stiffness-map",

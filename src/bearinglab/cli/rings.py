@@ -194,6 +194,7 @@ def ring_modes_command(
                 "ball_mass_ratio": ball_mass_ratio,
                 "contact_stiffness_ratio": contact_stiffness_ratio,
                 "balls": ball_count,
+                "axial_load_n": axial_load_n,
             },
         ) from None
     if plot is not None:

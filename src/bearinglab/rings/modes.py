@@ -326,11 +326,22 @@ def ring_modes(
         bearing.width,
     ):
         ring_mass, src["ring_mass"] = bearing.outer_ring_mass, "bearing"
+    if radial_stiffness is not None and rigid_body_frequency is not None:
+        # f_1 would silently replace the K_x given (two answers to one question)
+        raise InputError(
+            "rigid_body_frequency",
+            rigid_body_frequency,
+            "no value when the radial stiffness K_x is given (give one of them)",
+            "f_1 = sqrt(K_x / ring mass) / (2 pi)",
+        )
     if radial_stiffness is not None:
         radial_stiffness = _scalar("radial_stiffness", radial_stiffness, "[N/m]", True)
         src["radial_stiffness"], axial_load = "user", None
     elif bearing is not None and axial_load is not None:
         axial_load = _scalar("axial_load", axial_load, "[N]")
+        from ..plausibility import load_warnings
+
+        load_warnings(bearing, 0.0, axial_load)  # past 8 C0 no elastic model applies: an error
         if radial_stiffness_from == "load_distribution":
             from ..operating import OperatingCondition
             from ..quasistatic import solve_load_distribution
