@@ -119,6 +119,20 @@ def speed_factor(bearing, shaft_speed: float) -> float:
     return abs(rad_s_to_rpm(shaft_speed)) * bearing.pitch_diameter * 1e3
 
 
+def speed_factor_warnings(bearing, shaft_speed: float) -> list[str]:
+    """The speed factor n d_m against the makers' usual limit (a warning); light, for the
+    kinematic commands that need no model of the contacts."""
+    ndm = speed_factor(bearing, shaft_speed)
+    if not ndm > HIGH_SPEED_FACTOR:
+        return []
+    return [
+        f"speed factor n d_m = {ndm:.3g} mm/min is above {HIGH_SPEED_FACTOR:.0e} "
+        "mm/min, beyond the limiting speeds makers list for standard ball "
+        "bearings: check the maker's limiting speed for this design and "
+        "lubrication"
+    ]
+
+
 def speed_warnings(
     bearing, shaft_speed: float, radial_load: float = 0.0, axial_load: float = 0.0
 ) -> list[str]:
@@ -140,15 +154,7 @@ def speed_warnings(
         "beyond it the balls' centrifugal force swamps the contact loads "
         "and no model here is valid",
     )
-    ndm = speed_factor(bearing, shaft_speed)
-    out = []
-    if ndm > HIGH_SPEED_FACTOR:
-        out.append(
-            f"speed factor n d_m = {ndm:.3g} mm/min is above {HIGH_SPEED_FACTOR:.0e} "
-            "mm/min, beyond the limiting speeds makers list for standard ball "
-            "bearings: check the maker's limiting speed for this design and "
-            "lubrication"
-        )
+    out = speed_factor_warnings(bearing, shaft_speed)
     fc = centrifugal_force(bearing, shaft_speed)
     z, alpha = bearing.ball_count, bearing.contact_angle
     q_max = max(

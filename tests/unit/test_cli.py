@@ -81,6 +81,14 @@ def test_frequencies_outer_rotating(capsys):
     assert outer["ftf_order"] == pytest.approx(1 - inner["ftf_order"])
 
 
+def test_frequencies_at_a_speed_past_the_makers_limits_says_so(capsys):
+    # an audit: 900 000 rpm was silent (the frequencies themselves stay kinematic)
+    fast = run_json(capsys, "frequencies", "6205", "--speed-rpm", "900000")
+    assert any("speed factor n d_m" in w for w in fast["warnings"])
+    slow = run_json(capsys, "frequencies", "6205", "--speed-rpm", "1797")
+    assert not any("speed factor" in w for w in slow["warnings"])
+
+
 def test_contact_json(capsys):
     d = run_json(capsys, "contact", "6205", "--ball-load-n", "1000")
     for side in ("inner", "outer"):

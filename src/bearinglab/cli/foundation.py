@@ -14,6 +14,7 @@ from ..designation import parse
 from ..errors import CatalogError, DesignationError, InputError
 from ..geometry import BallBearing
 from ..kinematics import FREQUENCY_NAMES, LONG_NAMES, defect_frequencies
+from ..plausibility import speed_factor_warnings
 from ._app import HertzMethod, command_app, console
 from ._geometry import (
     _catalog_message,
@@ -265,7 +266,7 @@ def frequencies(
     shaft_speed = speed_rad_s(speed_rpm, zero=True)
     bearing, _ = resolve_bearing(designation, geometry)
     f = defect_frequencies(bearing, shaft_speed, outer_rotating=outer_rotating)
-    warnings = _geometry_warnings(bearing)
+    warnings = _geometry_warnings(bearing) + speed_factor_warnings(bearing, shaft_speed)
     out = {"designation": designation, **f.to_dict(), "warnings": warnings}
     if _plot_and_emit(out, json_output, f, plot):
         return
