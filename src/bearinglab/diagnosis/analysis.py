@@ -17,7 +17,7 @@ from ..errors import InputError
 from ..geometry import BallBearing
 from ..kinematics import DefectFrequencies, defect_frequencies
 from ..signal import EnvelopeSpectrum, Signal
-from .families import FAMILIES, FREQUENCY, GATE_ORDERS, families, tolerances
+from .families import FAMILIES, FREQUENCY, GATE_ORDERS, SIDEBANDS, families, tolerances
 from .methods import DESCRIPTIONS, METHODS, method_spectrum, parse_methods
 from .result import Diagnosis
 from .speed import SEARCH, shaft_frequency
@@ -396,8 +396,9 @@ def analyze_signal(
     valid, masked = discrete_mask(
         spectra, {"shaft": shaft_hz, "supply": supply, "mesh": mesh}, max_frequency
     )
-    covered = 1.0 - float(np.mean(valid[spectra[0].method][1 : int(max_frequency / res) + 1]))
-    if (supply or mesh) and covered > 0.5:
+    searched = valid[spectra[0].method][1 : int(max_frequency / res) + 1]
+    covered = 1.0 - float(np.mean(searched)) if (supply or mesh) else 0.0
+    if covered > 0.5:
         warnings.append(
             f"the harmonics masked as the machine's (shaft, supply, mesh) cover {covered:.0%} "
             f"of the envelope spectrum up to {max_frequency:.4g} Hz: a fault's lines may be "
@@ -470,6 +471,11 @@ def _tolerances(overrides):
     return tolerances(overrides)
 
 
+def _gated(family: str) -> str:
+    """What the family's harmonic test counts with the harmonics (GATE_ORDERS)."""
+    return "with their first sidebands" if GATE_ORDERS[family] else "alone"
+
+
 def _reason(faults, table, decision, pfa) -> str:
     """One line: what the verdict rests on."""
     threshold = significance(decision["alpha"])
@@ -478,10 +484,11 @@ def _reason(faults, table, decision, pfa) -> str:
         t = table[best]
         # above the threshold but stopped by a gate: say which, or the table reads wrong
         gate = significance(SUPPORT_ALPHA)
-        own = "with their first sidebands" if GATE_ORDERS[best] else "alone"
         short = []
         if t["harmonic_significance"] < gate:
-            short.append(f"its harmonics {own} reach only {t['harmonic_significance']:.3g}")
+            short.append(
+                f"its harmonics {_gated(best)} reach only {t['harmonic_significance']:.3g}"
+            )
         if t["support_significance"] < gate:
             short.append(f"without its strongest line it reaches {t['support_significance']:.3g}")
         if t["significance"] > threshold and short:
@@ -502,12 +509,11 @@ def _reason(faults, table, decision, pfa) -> str:
         harm = sorted({ln["n"] for ln in found if ln["kind"] == "harmonic"})
         side = sum(ln["kind"] == "sideband" and ln["n"] > 0 for ln in found)
         own = sum(ln["n"] == 0 for ln in found)  # the modulation's own lines
-        rate = "shaft" if f in ("outer_race", "inner_race") else "FTF"
-        gated = "with their first sidebands" if GATE_ORDERS[f] else "alone"
+        rate = {"ftf": "FTF"}.get(SIDEBANDS[f][0], SIDEBANDS[f][0])
         parts.append(
             f"{f}: {FREQUENCY[f]} {t['fundamental_hz']:.5g} Hz ({100 * t['slip']:+.2f} %), "
             f"series significance {t['significance']:.3g} > {threshold:.3g}, its harmonics "
-            f"{gated} {t['harmonic_significance']:.3g} ({t['method']}, "
+            f"{_gated(f)} {t['harmonic_significance']:.3g} ({t['method']}, "
             f"{DESCRIPTIONS[t['method']].split(' (')[0]}); lines at {100 * LINE_ALPHA:g} % "
             f"each: harmonics {harm or 'none'}, sidebands {side}"
             + (f", k x {rate} {own}" if own else "")

@@ -29,7 +29,7 @@ import math
 
 import numpy as np
 
-from .families import FREQUENCY, Family
+from .families import FREQUENCY, SIDEBANDS, Family
 from .statistics import SUPPORT_ALPHA, decades, normalised, series_test
 
 #: Verdict when no family passes.
@@ -266,7 +266,7 @@ def label_peaks(
         if hit is not None:
             fam, line = hit
             name = FREQUENCY[fam.name]
-            modulation = "shaft" if fam.name in ("outer_race", "inner_race") else "ftf"
+            modulation = SIDEBANDS[fam.name][0]
             if line.n == 0:  # the modulation's own line, k x f_m
                 k = abs(int(round(line.k)))
                 peak.update(
