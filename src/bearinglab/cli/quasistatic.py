@@ -117,6 +117,13 @@ def _condition(radial, axial, speed_rpm, angle_deg, misalignment_mrad):
 DEFAULT_LUBRICANT = "iso-vg68"
 
 
+def _no_effect(flags, why: str) -> list[str]:
+    """A warning naming the options given (``flags``: (flag, given) pairs) that have no
+    effect ``why``; none when none was given."""
+    given = [flag for flag, on in flags if on]
+    return [f"{' and '.join(given)}: no effect {why}"] if given else []
+
+
 def _lubricant(film: bool, name: str, temperature_c: float | None):
     """The film's lubricant and temperature [K] (None, None without --film), and the
     warnings for lubricant options that then have no effect."""
@@ -124,16 +131,11 @@ def _lubricant(film: bool, name: str, temperature_c: float | None):
         raise OptionError("--lubricant", name, f"one of {', '.join(LUBRICANTS)}")
     in_range("--temperature-c", temperature_c, -60.0, 300.0, "a temperature")
     if not film:
-        given = [
-            flag
-            for flag, on in (
-                ("--lubricant", name != DEFAULT_LUBRICANT),
-                ("--temperature-c", temperature_c is not None),
-            )
-            if on
-        ]
-        notes = [f"{' and '.join(given)}: no effect without --film (the EHL film)"]
-        return None, None, notes if given else []
+        flags = (
+            ("--lubricant", name != DEFAULT_LUBRICANT),
+            ("--temperature-c", temperature_c is not None),
+        )
+        return None, None, _no_effect(flags, "without --film (the EHL film)")
     kelvin = None if temperature_c is None else temperature_c + ZERO_CELSIUS
     return LUBRICANTS[name], kelvin, []
 
@@ -242,17 +244,12 @@ def static(
     condition = _condition(fr, fa, speed_rpm, radial_load_angle_deg, misalignment_mrad)
     oil, temperature, unused = _lubricant(film, lubricant, temperature_c)
     if condition.shaft_speed == 0:  # each of these acts through the balls' speed
-        idle = [
-            flag
-            for flag, on in (
-                ("--gyroscopic", gyroscopic),
-                ("--ring-expansion", ring_expansion),
-                ("--film", film),
-            )
-            if on
-        ]
-        if idle:
-            unused.append(f"{' and '.join(idle)}: no effect at --speed-rpm 0 (no rolling speed)")
+        flags = (
+            ("--gyroscopic", gyroscopic),
+            ("--ring-expansion", ring_expansion),
+            ("--film", film),
+        )
+        unused += _no_effect(flags, "at --speed-rpm 0 (no rolling speed)")
     forms = FormErrors(waviness, ball_size_error_um, surface3d)
     if orbit and forms.given and condition.shaft_speed <= 0:
         raise OptionError(
@@ -474,7 +471,7 @@ def stiffness_map(
             "--plot",
             str(plot),
             "a map with at least one solved case to draw",
-            "no case of the map solved: with no load a bearing has no stiffness",
+            "no case of the map solved, status: " + ", ".join(sorted(set(table["status"]))),
         )
     if output is not None:
         _write_csv(table, output)
