@@ -114,6 +114,13 @@ def check_loads(radial: float, axial: float, unloaded: str | None = None) -> Non
         )
 
 
+def no_effect(flags, why: str) -> list[str]:
+    """A warning naming the options given (``flags``: (flag, given) pairs) that have no
+    effect ``why``; none when none was given."""
+    given = [flag for flag, on in flags if on]
+    return [f"{' and '.join(given)}: no effect {why}"] if given else []
+
+
 def _show(value) -> str:
     """A value as the user would type it: 90 rather than 90.0, strings quoted."""
     if isinstance(value, bool) or value is None:

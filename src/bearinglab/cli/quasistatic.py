@@ -37,6 +37,7 @@ from ._inputs import (
     _print_warnings,
     in_range,
     load_n,
+    no_effect,
     option_error,
     save_plot_figure,
     speed_rad_s,
@@ -117,13 +118,6 @@ def _condition(radial, axial, speed_rpm, angle_deg, misalignment_mrad):
 DEFAULT_LUBRICANT = "iso-vg68"
 
 
-def _no_effect(flags, why: str) -> list[str]:
-    """A warning naming the options given (``flags``: (flag, given) pairs) that have no
-    effect ``why``; none when none was given."""
-    given = [flag for flag, on in flags if on]
-    return [f"{' and '.join(given)}: no effect {why}"] if given else []
-
-
 def _lubricant(film: bool, name: str, temperature_c: float | None):
     """The film's lubricant and temperature [K] (None, None without --film), and the
     warnings for lubricant options that then have no effect."""
@@ -135,7 +129,7 @@ def _lubricant(film: bool, name: str, temperature_c: float | None):
             ("--lubricant", name != DEFAULT_LUBRICANT),
             ("--temperature-c", temperature_c is not None),
         )
-        return None, None, _no_effect(flags, "without --film (the EHL film)")
+        return None, None, no_effect(flags, "without --film (the EHL film)")
     kelvin = None if temperature_c is None else temperature_c + ZERO_CELSIUS
     return LUBRICANTS[name], kelvin, []
 
@@ -249,7 +243,7 @@ def static(
             ("--ring-expansion", ring_expansion),
             ("--film", film),
         )
-        unused += _no_effect(flags, "at --speed-rpm 0 (no rolling speed)")
+        unused += no_effect(flags, "at --speed-rpm 0 (no rolling speed)")
     forms = FormErrors(waviness, ball_size_error_um, surface3d)
     if orbit and forms.given and condition.shaft_speed <= 0:
         raise OptionError(
