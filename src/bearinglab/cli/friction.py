@@ -28,6 +28,7 @@ from ._inputs import (
     _print_warnings,
     in_range,
     load_n,
+    no_effect,
     number_list,
     speed_rad_s,
 )
@@ -351,13 +352,28 @@ def friction_command(
         )
     except InputError as exc:
         raise _option_error(exc, typed) from None
-    d = result.to_dict()
-    out = {"designation": designation, **d, "warnings": warnings + d["warnings"]}
+    # the library's warnings, less its note of the unused inputs, which is said in flags
+    said = warnings + list(result.warnings) + _unused(result.unused, model)
+    out = {"designation": designation, **result.to_dict(), "warnings": said}
     if json_output:
         _emit_json(out)
         return
     _print(result, out)
     _print_warnings(out["warnings"])
+
+
+def _unused(unused: tuple, model: FrictionModel) -> list[str]:
+    """The options given that the model did not use (the result's ``unused``), by flag."""
+    seal = model is FrictionModel.skf and "seal_diameter" in unused
+    rest = [n for n in unused if n not in ("r3", "s3") and not (seal and n == "seal_diameter")]
+    return (
+        no_effect([(_FLAGS[n], True) for n in rest], f"with --model {model.value}")
+        + no_effect([("--seal-diameter-mm", seal)], "without --seal-constants")
+        + no_effect(
+            [("R3,S3 of --skf-constants", "r3" in unused or "s3" in unused)],
+            "for a deep-groove ball bearing (its SKF model has no centrifugal-load terms)",
+        )
+    )
 
 
 def _print(result, out: dict) -> None:

@@ -27,6 +27,7 @@ from .constant import (
     friction_coefficient,
     friction_type_of,
 )
+from .ranges import check_constants, unused_constants
 from .result import FrictionResult
 from .rules import (
     SEALS,
@@ -36,7 +37,6 @@ from .rules import (
     equivalent_load_of,
     lubrication_of,
     seals_of,
-    unused_note,
     viscosity_of,
 )
 from .skf import (
@@ -192,6 +192,7 @@ def skf_friction(
         raise InputError("lubrication", lubrication, "one of " + ", ".join(K_RS))
     if lubricant_kind not in MU_EHL:
         raise InputError("lubricant_kind", lubricant_kind, "one of " + ", ".join(MU_EHL))
+    check_constants(bearing_type, constants)
     w = check_speed(shaft_speed)
     fr = check_load("radial_load", radial_load)
     fa = check_load("axial_load", axial_load)
@@ -300,7 +301,10 @@ def bearing_friction(
     M_seal = K_S1 d_s^beta + K_S2 with ``seal_constants`` and ``seal_diameter``.
 
     Every input given is checked, whichever model runs; one the model does not use is
-    named in the warnings.
+    named in the result's ``unused`` (and in ``to_dict``'s warnings), as are the R3, S3
+    given for a deep-groove bearing, whose SKF model has no centrifugal terms. SKF
+    constants outside the plausible range of the type are refused
+    (:func:`~.ranges.check_constants`).
 
     Parameters
     ----------
@@ -390,10 +394,8 @@ def bearing_friction(
         }
         if lubrication is not None:
             lubrication_of(lubrication, lub)
-        result = _constant(
-            b, w, fr, fa, friction_type, equivalent_load, seal_kind, unused_note("constant", unused)
-        )
-        return replace(result, warnings=plausible + result.warnings)
+        result = _constant(b, w, fr, fa, friction_type, equivalent_load, seal_kind)
+        return replace(result, warnings=plausible + result.warnings, unused=_given(unused))
     kind = friction_type or b.bearing_type
     if kind not in SKF_BEARING_TYPES:
         what = "for the SKF model a ball bearing: " + ", ".join(SKF_BEARING_TYPES)
@@ -493,20 +495,23 @@ def bearing_friction(
     }
     if lub is not None:
         parameters["lubricant"] = lub.name
-    unused = unused_note(
-        "SKF",
-        {
-            "equivalent_load": equivalent_load,
-            "seal_diameter": seal_diameter if ks is None else None,
-        },
-    )
+    unused = {
+        "equivalent_load": equivalent_load,
+        "seal_diameter": seal_diameter if ks is None else None,
+    }
     return replace(
         result,
         parameters=parameters,
         bearing_type=b.bearing_type,
         seals=seal_kind,
-        warnings=plausible + result.warnings + unused,
+        warnings=plausible + result.warnings,
+        unused=_given(unused) + unused_constants(kind, constants),
     )
+
+
+def _given(inputs: dict) -> tuple[str, ...]:
+    """The names of the inputs given (not None)."""
+    return tuple(name for name, value in inputs.items() if value is not None)
 
 
 def _operating_warnings(bearing, shaft_speed, radial_load, axial_load) -> tuple:
@@ -532,7 +537,6 @@ def _constant(
     friction_type,
     given_load,
     seal_kind: str,
-    unused: tuple,
 ) -> FrictionResult:
     kind = friction_type
     if kind is None:
@@ -565,5 +569,5 @@ def _constant(
         },
         bearing_type=b.bearing_type,
         seals=seal_kind,
-        warnings=result.warnings + seal_note + unused,
+        warnings=result.warnings + seal_note,
     )

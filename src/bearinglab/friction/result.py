@@ -28,8 +28,11 @@ class FrictionResult:
     (name -> moment [N m]: ``rolling``, ``sliding``, ``seal``, ``drag`` for the SKF model;
     empty for the constant model), ``parameters`` (the coefficients, factors, diameters and
     loads used, SI or dimensionless, and where each came from: ``*_source``), ``sources``,
-    ``warnings``, and the ``bearing_type`` and ``seals`` of the bearing (None when the
-    model was called with numbers only).
+    ``warnings``, the ``bearing_type`` and ``seals`` of the bearing (None when the
+    model was called with numbers only), and ``unused``: the inputs given that the model
+    does not use (parameter names of :func:`~.analysis.bearing_friction`; ``r3``, ``s3``
+    for the R3, S3 of a deep-groove bearing's constants), which ``to_dict`` names in its
+    warnings and an interface can name in its own terms.
     """
 
     model: str
@@ -44,6 +47,7 @@ class FrictionResult:
     warnings: tuple = ()
     bearing_type: str | None = None
     seals: str | None = None
+    unused: tuple = ()
 
     @property
     def power_loss(self) -> float:
@@ -124,8 +128,15 @@ class FrictionResult:
                 out["static_rating_n"] = p["static_rating"]
                 out["static_rating_source"] = p.get("static_rating_source", "given")
         out["sources"] = list(self.sources)
-        out["warnings"] = list(self.warnings)
+        out["warnings"] = list(self.warnings) + self._unused_note()
         return out
+
+    def _unused_note(self) -> list[str]:
+        """The inputs of :attr:`unused`, named in one warning."""
+        if not self.unused:
+            return []
+        model = "SKF" if self.model == "skf" else self.model
+        return [f"the {model} model does not use: {', '.join(self.unused)}"]
 
     def quantities(self) -> list[tuple[str, str]]:
         """The main numbers for a table: (what, key of :meth:`to_dict`); the key's suffix

@@ -134,14 +134,6 @@ def equivalent_load_of(
     )
 
 
-def unused_note(model: str, given: dict) -> tuple[str, ...]:
-    """A warning naming the inputs given (not None) that the model does not use."""
-    names = [name for name, value in given.items() if value is not None]
-    if not names:
-        return ()
-    return (f"the {model} model does not use: {', '.join(names)}",)
-
-
 def check_seal_constants(seal_constants, seals: str) -> tuple[float, float, float] | None:
     """(K_S1, K_S2, beta) checked, or None; they need contact seals."""
     if seal_constants is None:
