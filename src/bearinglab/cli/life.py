@@ -28,6 +28,7 @@ from ._inputs import (
     _print_warnings,
     check_loads,
     in_range,
+    no_effect,
     plot_option,
     speed_rad_s,
 )
@@ -219,8 +220,16 @@ def life_command(
         if flag is None:
             raise
         raise OptionError(flag, typed[exc.parameter], exc.allowed, exc.hint) from None
+    unused = no_effect(
+        [("--outer-rotating", outer_rotating and method is LifeMethod.iso281)],
+        "with --method iso281 (only iso16281 tells which ring turns)",
+    ) + no_effect(
+        [("--ep-additives", ep_additives and nu is None)],
+        "without --viscosity-mm2-s (the EP rule acts on a_ISO, which needs the viscosity)",
+    )
     d = result.to_dict()
-    out = {"designation": designation, **d, "warnings": _geometry_warnings(bearing) + d["warnings"]}
+    said = _geometry_warnings(bearing) + d["warnings"] + unused
+    out = {"designation": designation, **d, "warnings": said}
     if _plot_and_emit(out, json_output, result, plot):
         return
     _print(result, out, bearing)
