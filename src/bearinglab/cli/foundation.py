@@ -17,6 +17,7 @@ from ..kinematics import FREQUENCY_NAMES, LONG_NAMES, defect_frequencies
 from ..plausibility import speed_factor_warnings
 from ._app import HertzMethod, command_app, console
 from ._geometry import (
+    _GEOMETRY_OPTIONS,
     _catalog_message,
     _check_designation_text,
     _geometry_line,
@@ -33,6 +34,7 @@ from ._inputs import (
     RingSpeedOpt,
     _print_warnings,
     in_range,
+    no_effect,
     speed_rad_s,
 )
 from ._output import (
@@ -266,7 +268,24 @@ def frequencies(
     shaft_speed = speed_rad_s(speed_rpm, zero=True)
     bearing, _ = resolve_bearing(designation, geometry)
     f = defect_frequencies(bearing, shaft_speed, outer_rotating=outer_rotating)
-    warnings = _geometry_warnings(bearing) + speed_factor_warnings(bearing, shaft_speed)
+    # pure rolling needs Z, D_w, d_m and the contact angle; bore and D only when those
+    # are estimated from them
+    kinematic = {"system", "balls", "ball_diameter_mm", "pitch_diameter_mm", "contact_angle_deg"}
+    if any(
+        getattr(bearing.sources.get(k), "kind", None) == "estimated"
+        for k in ("ball_count", "ball_diameter", "pitch_diameter")
+    ):
+        kinematic |= {"bore_mm", "outside_diameter_mm"}
+    unused = [
+        (_GEOMETRY_OPTIONS[name][0], value is not None and name not in kinematic)
+        for name, value in geometry.items()
+        if name != "geometry"  # a file describes the whole bearing, for every command
+    ]
+    warnings = (
+        _geometry_warnings(bearing)
+        + speed_factor_warnings(bearing, shaft_speed)
+        + no_effect(unused, "on the defect frequencies (pure rolling: Z, D_w, d_m, contact angle)")
+    )
     out = {"designation": designation, **f.to_dict(), "warnings": warnings}
     if _plot_and_emit(out, json_output, f, plot):
         return
