@@ -9,7 +9,16 @@ from rich.markup import escape
 
 from ..errors import InputError
 from ._app import command_app, console
-from ._inputs import JsonOpt, OptionError, SchedulerOpt, WorkersOpt, check_path, save_plot_figure
+from ._inputs import (
+    JsonOpt,
+    OptionError,
+    SchedulerOpt,
+    WorkersOpt,
+    _print_warnings,
+    check_path,
+    no_effect,
+    save_plot_figure,
+)
 from ._output import _emit_json, _table
 
 app = command_app()
@@ -32,6 +41,13 @@ _FLAGS = {
     "option": "--set",
     "analysis": "ANALYSIS",
 }
+
+
+def typed(ctx: typer.Context) -> set[str]:
+    """The parameters of the command that the user typed (not left at their defaults)."""
+    # by name: typer vendors its own copy of click's ParameterSource
+    sources = {p.name: ctx.get_parameter_source(p.name) for p in ctx.command.params}
+    return {name for name, s in sources.items() if getattr(s, "name", None) == "COMMANDLINE"}
 
 
 def _grid(items: list[str]) -> dict:
@@ -70,8 +86,45 @@ def _label(name: str) -> str:
     return label(name)
 
 
+def runner_warnings(scheduler: str | None, workers: int | None) -> list[str]:
+    """--workers sizes a LocalCluster: without effect on any other scheduler."""
+    from ..study.execute import scheduler_of
+
+    where = scheduler_of(scheduler)
+    return no_effect(
+        [("--workers", workers is not None and where != "local")],
+        f"with the scheduler {where!r} (it sizes a LocalCluster only)",
+    )
+
+
+def _warnings(result, given: set, analysis: str, cases, repeats: int) -> list[str]:
+    """The options the run made moot: --seed and --repeats without random inputs,
+    --repeats with --cases."""
+    from ..study.analyses import analysis as get_analysis
+
+    seeded = [k for k, o in get_analysis(analysis).options.items() if o.seeded]
+    random = "--set NAME=uniform:LOW:HIGH" + (
+        f", or {' or '.join(seeded)} above 0" if seeded else ""
+    )
+    out = no_effect(
+        [("--seed", "seed" in given and not result.random_inputs)],
+        f"without random inputs ({random}): every case is fixed by its inputs",
+    )
+    if cases is not None:
+        return out + no_effect(
+            [("--repeats", "repeats" in given)], "with --cases (one row, one case)"
+        )
+    if repeats > 1 and not result.random_inputs:
+        out.append(
+            f"--repeats {repeats}: the {repeats} repeats of each grid point are identical "
+            f"cases, computed {repeats} times (no random inputs: {random})"
+        )
+    return out
+
+
 @app.command("study")
 def study(
+    ctx: typer.Context,
     analysis: Annotated[
         str,
         typer.Argument(
@@ -175,12 +228,15 @@ def study(
         )
     except InputError as exc:
         raise _remap(exc) from None
+    warnings = _warnings(result, typed(ctx), analysis, cases, repeats)
+    warnings += runner_warnings(scheduler, workers)
     if plot is not None:
         _plot(result, plot, plot_of)
     if json_output:
-        _emit_json(result.to_dict())
+        _emit_json({**result.to_dict(), "warnings": warnings})
         return
     _print(result, read_study(result.path))
+    _print_warnings(warnings)
 
 
 def _plot(result, path: Path, plot_of: str | None) -> None:

@@ -129,6 +129,7 @@ FORM_OPTIONS = {
         "number",
         0.0,
         "Band of random ball diameter errors [um] (uniform in +-band/2, drawn from the case seed).",
+        seeded=True,
     ),
 }
 

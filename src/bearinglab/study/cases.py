@@ -42,12 +42,15 @@ RANGE_FORMS = ("A,B,C", "START:STOP:COUNT", "log:START:STOP:COUNT", "uniform:LOW
 
 @dataclass(frozen=True)
 class Option:
-    """One input of an analysis: its kind, default (None: not used unless given) and help."""
+    """One input of an analysis: its kind, default (None: not used unless given), help,
+    choices, and ``seeded``: a value other than 0 is drawn afresh for each case from the
+    case seed (ball-size errors, measurement noise: the analysis' own random inputs)."""
 
     kind: str
     default: object
     help: str
     choices: tuple = ()
+    seeded: bool = False
 
 
 @dataclass(frozen=True)
@@ -245,6 +248,15 @@ class Grid:
             out.append({"case": row["case"], **{k: row[k] for k in self.columns}})
         return out
 
+    def random_inputs(self, options: dict) -> tuple[str, ...]:
+        """The inputs that change with the seed: the random ranges, and the seeded options
+        (:class:`Option`) wherever a value (or the default of one not given) is not 0."""
+        return tuple(
+            name
+            for name, o in options.items()
+            if name in self.random or (o.seeded and any(self.fixed.get(name, [o.default])))
+        )
+
     def identity(self) -> dict:
         """JSON-ready description (what makes two studies the same)."""
         return {
@@ -316,6 +328,14 @@ class CaseTable:
 
     def rows(self, start: int, stop: int) -> list[dict]:
         return [{"case": i, **self.records[i]} for i in range(start, stop)]
+
+    def random_inputs(self, options: dict) -> tuple[str, ...]:
+        """The seeded options (:class:`Option`) that are not 0 in some case."""
+        return tuple(
+            name
+            for name, o in options.items()
+            if o.seeded and any(r.get(name, o.default) for r in self.records)
+        )
 
     def identity(self) -> dict:
         return {"cases_file": self.path.name, "cases_sha256": self.digest}

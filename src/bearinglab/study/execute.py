@@ -67,6 +67,14 @@ def _check_address(address: str) -> str:
     return address
 
 
+def scheduler_of(scheduler: str | None) -> str:
+    """The scheduler :func:`open_runner` uses: ``scheduler``, else $DASK_SCHEDULER_ADDRESS,
+    else "local" (only a LocalCluster has a number of workers to choose)."""
+    if scheduler is None:
+        return os.environ.get(ENV_ADDRESS) or "local"
+    return scheduler
+
+
 def open_runner(
     scheduler: str | None = None,
     workers: int | None = None,
@@ -93,8 +101,7 @@ def open_runner(
         raise InputError(
             "workers", workers, f"a number of worker processes in [1, {most}] (4 per core)"
         )
-    if scheduler is None:
-        scheduler = os.environ.get(ENV_ADDRESS) or "local"
+    scheduler = scheduler_of(scheduler)
     if scheduler == "serial":
         return Runner(None, None, "serial (this process)", 1, None)
     from distributed import Client

@@ -88,7 +88,9 @@ class StudyResult:
     ``seconds`` (wall time of this run's partitions), ``workers``, ``scheduler``,
     ``dashboard``, ``inputs`` and ``outputs`` (column names), ``peak_memory`` (worker ->
     peak resident memory [bytes]), ``worker_cpu_seconds`` (worker -> CPU time its
-    partitions took [s]).
+    partitions took [s]), ``random_inputs`` (the inputs the seed draws: random ranges and
+    the analysis' own random inputs where they are not 0; none: every case is fixed by its
+    inputs alone).
     """
 
     path: Path
@@ -106,6 +108,7 @@ class StudyResult:
     outputs: tuple
     peak_memory: dict = field(default_factory=dict, repr=False)
     worker_cpu_seconds: dict = field(default_factory=dict, repr=False)
+    random_inputs: tuple = ()
 
     @property
     def cases_per_second(self) -> float | None:
@@ -351,6 +354,7 @@ def run_study(
         tuple(a.outputs),
         memory,
         cpu,
+        source.random_inputs(a.options),
     )
 
 

@@ -196,7 +196,7 @@ SIMULATE = Analysis(
         model=Option("text", "rigid", "rigid or slip.", ("rigid", "slip")),
         duration_s=Option("number", 0.5, "Record length [s]."),
         sample_rate_hz=Option("number", 20000.0, "Sample rate [Hz]."),
-        noise_ms2=Option("number", 0.0, "Measurement noise RMS [m/s^2]."),
+        noise_ms2=Option("number", 0.0, "Measurement noise RMS [m/s^2].", seeded=True),
     ),
     _SIM_OUT,
     _simulate,
