@@ -9,9 +9,9 @@ from rich.markup import escape
 
 from ..errors import InputError
 from ._app import command_app, console
-from ._inputs import JsonOpt, OptionError, SchedulerOpt, WorkersOpt
+from ._inputs import JsonOpt, OptionError, SchedulerOpt, WorkersOpt, _print_warnings, no_effect
 from ._output import _emit_json, _table
-from .study import run_rows
+from .study import run_rows, runner_warnings, typed
 
 app = command_app()
 
@@ -59,12 +59,36 @@ def _remap(exc: InputError) -> InputError:
             f"at most {CONFIRM_RECORDS} without --yes",
             "add --yes to make them all",
         )
-    flag = _FLAGS.get(exc.parameter, "--" + exc.parameter.replace("_", "-"))
+    flag = _FLAGS.get(exc.parameter, _flag(exc.parameter))
     return OptionError(flag, exc.value, exc.allowed, exc.hint)
+
+
+def _warnings(spec, given: set) -> list[str]:
+    """The options the set's faults and amplitudes make moot (``given``: the parameters
+    typed)."""
+    where = spec.defect_locations
+    defects = ("defect_width_mm", "defect_depth_mm", "defect_position_deg")
+    out = no_effect(
+        [(_flag(n), not where and n in given) for n in defects],
+        "with --faults none (no record has a defect)",
+    )
+    out += no_effect(
+        [(_flag(defects[2]), bool(where) and "outer" not in where and defects[2] in given)],
+        "without outer or compound in --faults (it places outer-race defects only)",
+    )
+    return out + no_effect(
+        [("--waviness-orders", not spec.has_waviness and "waviness_orders" in given)],
+        "at --waviness-um 0 (no waviness)",
+    )
+
+
+def _flag(name: str) -> str:
+    return "--" + name.replace("_", "-")
 
 
 @app.command("dataset")
 def dataset(
+    ctx: typer.Context,
     output: Annotated[
         Path,
         typer.Argument(
@@ -171,7 +195,8 @@ def dataset(
         )
     except InputError as exc:
         raise _remap(exc) from None
-    d = result.to_dict()
+    warnings = _warnings(result.spec, typed(ctx)) + runner_warnings(scheduler, workers)
+    d = {**result.to_dict(), "warnings": warnings}
     if json_output:
         _emit_json(d)
         return
@@ -195,3 +220,4 @@ def dataset(
         )
     )
     console.print(f"[dim]read it with {escape(d['open_with'])}[/dim]")
+    _print_warnings(warnings)

@@ -157,7 +157,8 @@ class DatasetResult:
     """A finished data set: ``path``, ``name``, ``records`` asked for, ``written`` and
     ``failed`` records, ``partitions``, ``computed`` (by this run), ``seconds`` (this run's
     wall time), ``workers``, ``scheduler``, ``dashboard``, ``peak_memory`` [bytes] and
-    ``worker_cpu_seconds`` [s] per worker process."""
+    ``worker_cpu_seconds`` [s] per worker process, and the ``spec`` the records were
+    drawn from (:class:`.sampling.DatasetSpec`)."""
 
     path: Path
     name: str
@@ -173,6 +174,7 @@ class DatasetResult:
     dashboard: str | None
     peak_memory: dict = field(default_factory=dict, repr=False)
     worker_cpu_seconds: dict = field(default_factory=dict, repr=False)
+    spec: DatasetSpec | None = field(default=None, repr=False, compare=False)
 
     @property
     def records_per_second(self) -> float | None:
@@ -377,6 +379,7 @@ def make_dataset(
         info[2],
         memory,
         cpu,
+        spec,
     )
 
 

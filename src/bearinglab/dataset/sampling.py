@@ -195,28 +195,63 @@ class DatasetSpec:
                 )
             )
         p["resonances"] = path
-        _check_path(path, p["sample_rate_hz"])
+        default_path = self.resonances == type(self).__dataclass_fields__["resonances"].default
+        _check_path(path, p["sample_rate_hz"], blame_rate=default_path)
         object.__setattr__(self, "parsed", p)
 
     def identity(self) -> dict:
         """JSON-ready description of everything drawn from (for resuming)."""
         return {k: v for k, v in self.parsed.items()} | {"records": self.records}
 
+    @property
+    def defect_locations(self) -> set[str]:
+        """Where the set's records can have defects (outer, inner, ball): none for a set of
+        healthy records only; all three with compound faults."""
+        faults = self.parsed["faults"]
+        names = faults[1] if faults[0] == "choice" else [faults[1]]
+        return {
+            where
+            for f in names
+            for where in (LOCATIONS if f == "compound" else [f])
+            if where in LOCATIONS
+        }
 
-def _check_path(path, rates) -> None:
-    """Every resonance must sit below 0.45 x the lowest sample rate the set may draw."""
+    @property
+    def has_waviness(self) -> bool:
+        """Whether a record can have raceway waviness (an amplitude above 0)."""
+        return _highest(self.parsed["waviness_amplitude_um"]) > 0
+
+
+def _highest(spec: tuple) -> float:
+    """The largest value a parsed range can draw."""
+    return spec[1] if spec[0] == "fixed" else (spec[2] if spec[0] == "uniform" else max(spec[1]))
+
+
+def _check_path(path, rates, blame_rate: bool = False) -> None:
+    """Every resonance must sit below 0.45 x the lowest sample rate the set may draw. The
+    error names the resonance, or with ``blame_rate`` (the path is the default one, so the
+    sample rate is what was chosen) the sample rate."""
     from .path import MAX_FRACTION
 
     lowest = rates[1] if rates[0] != "choice" else min(rates[1])
     for f, z in path:
-        top = f[1] if f[0] == "fixed" else (f[2] if f[0] == "uniform" else max(f[1]))
+        top = _highest(f)
         if top > MAX_FRACTION * lowest:
+            if blame_rate:
+                raise InputError(
+                    "sample_rate_hz",
+                    lowest,
+                    f"a sample rate of at least {top / MAX_FRACTION:.6g} Hz, so that the "
+                    f"transfer path's highest resonance, {top:g} Hz, lies below "
+                    f"{MAX_FRACTION:g} x the sample rate",
+                    "or give the path lower resonances",
+                )
             raise InputError(
                 "resonance frequency",
                 top,
                 f"at most {MAX_FRACTION:g} x the lowest sample rate ({MAX_FRACTION * lowest:g} Hz)",
             )
-        zeta = z[2] if z[0] == "uniform" else (max(z[1]) if z[0] == "choice" else z[1])
+        zeta = _highest(z)
         if zeta >= 1:
             raise InputError("damping ratio", zeta, "ratios in (0, 1)")
 
