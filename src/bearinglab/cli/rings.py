@@ -25,12 +25,14 @@ from ._inputs import (
     _print_warnings,
     check_path,
     in_range,
+    no_effect,
     number_list,
     option_error,
     plot_option,
     save_plot_figure,
 )
 from ._output import _emit_json, _table
+from .study import typed
 
 app = command_app()
 PlotOpt = plot_option("the frequencies")
@@ -39,6 +41,10 @@ PlotOpt = plot_option("the frequencies")
 class StiffnessSource(str, Enum):
     closed_form = "closed-form"
     load_distribution = "load-distribution"
+
+
+#: The options that set K_x from the bearing at an axial load: (flag, parameter).
+_AXIAL_OPTIONS = (("--axial-load-n", "axial_load_n"), ("--stiffness-from", "stiffness_from"))
 
 
 def _modes(text: str) -> list[int]:
@@ -64,6 +70,7 @@ def _ring_level_only(designation: str | None, geometry: dict) -> bool:
 @app.command("ring-modes")
 @with_geometry
 def ring_modes_command(
+    ctx: typer.Context,
     designation: DesignationArg = None,
     axial_load_n: Annotated[
         float, typer.Option("--axial-load-n", help="Axial load A [N], for K_x from the bearing.")
@@ -200,6 +207,18 @@ def ring_modes_command(
     if plot is not None:
         save_plot_figure(result.plot()[0], plot)
     d = result.to_dict()
+    # the axial load gives K_x, from a bearing, when K_x is not given
+    unused = no_effect(
+        [(flag, name in typed(ctx)) for flag, name in _AXIAL_OPTIONS],
+        "with --radial-stiffness-n-per-m (K_x is given)"
+        if radial_stiffness_n_per_m is not None
+        else "without a bearing (they give K_x from the bearing's contacts)",
+    )
+    d["warnings"] = (
+        (_geometry_warnings(bearing) if bearing is not None else [])
+        + d["warnings"]
+        + (unused if d["axial_load_n"] is None else [])
+    )
     if json_output:
         _emit_json({"designation": designation, **d})
         return
@@ -240,5 +259,4 @@ def _print(d: dict, bearing, axial_load_n: float) -> None:
         f"kHz, kappa {d['ball_mass_ratio']:.3g}, K1/K2 "
         f"{d['contact_stiffness_ratio']:.3g}"
     )
-    if bearing is not None:
-        _print_warnings(_geometry_warnings(bearing))
+    _print_warnings(d["warnings"])

@@ -53,7 +53,8 @@ class RingModes:
     K1/K2, ``ring_mass`` [kg], ``radial_stiffness`` K_x [N/m], ``axial_load`` [N],
     ``contact_angle`` [rad] (None where not used), ``bearing``, ``measured``
     ((m, (Hz, ...)) pairs, for comparison), ``sources`` (input -> user, bearing, derived
-    or default) and ``rigid_body_mode`` (mode 1 was asked for: the tables show it).
+    or default), ``rigid_body_mode`` (mode 1 was asked for: the tables show it) and
+    ``warnings`` (the axial load against the static rating, in the user's terms).
     """
 
     modes: tuple[RingMode, ...]
@@ -69,6 +70,7 @@ class RingModes:
     measured: tuple = ()
     sources: dict = field(default_factory=dict, compare=False)
     rigid_body_mode: bool = False
+    warnings: tuple[str, ...] = ()
 
     def mode(self, m: int) -> RingMode:
         """The :class:`RingMode` of mode number ``m``."""
@@ -123,6 +125,7 @@ class RingModes:
             "contact_stiffness_ratio": self.contact_stiffness_ratio,
             "sources": dict(self.sources),
             "modes": modes,
+            "warnings": list(self.warnings),
         }
 
     def to_pandas(self):
@@ -278,6 +281,7 @@ def ring_modes(
     rigid_mode = 1 in ms
     ms = sorted({int(m) for m in ms if m >= 2})
     src: dict[str, str] = {}
+    warnings: tuple[str, ...] = ()
     n = ball_count if ball_count is not None else getattr(bearing, "ball_count", None)
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 3:
         raise InputError("ball_count", n, "an integer >= 3 (or a bearing)")
@@ -341,7 +345,8 @@ def ring_modes(
         axial_load = _scalar("axial_load", axial_load, "[N]")
         from ..plausibility import load_warnings
 
-        load_warnings(bearing, 0.0, axial_load)  # past 8 C0 no elastic model applies: an error
+        # s0 < 1 a warning; past 8 C0 no elastic model applies: an error
+        warnings = tuple(load_warnings(bearing, 0.0, axial_load))
         if radial_stiffness_from == "load_distribution":
             from ..operating import OperatingCondition
             from ..quasistatic import solve_load_distribution
@@ -416,4 +421,5 @@ def ring_modes(
         meas,
         src,
         rigid_mode,
+        warnings,
     )
