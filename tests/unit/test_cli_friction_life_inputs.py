@@ -71,17 +71,10 @@ def test_plausible_ranges_hold_the_shipped_table_and_refuse_an_exponent_slip():
         with pytest.raises(InputError) as info:
             check_constants("radial_ball", slipped)
         assert info.value.parameter == "constants" and "R1" in info.value.allowed, series
+    operating_point = (0.025, 0.052, 1000.0, 0.0, 3000 * RPM, 20e-6)  # d, D, F_r, F_a, n, nu
+    typo = SkfGeometryConstants(0.39, 1.7, 3.23e-3, 36.5)
     with pytest.raises(InputError, match="R1 in"):
-        skf_friction(
-            "radial_ball",
-            0.025,
-            0.052,
-            1000.0,
-            0.0,
-            3000 * RPM,
-            20e-6,
-            SkfGeometryConstants(0.39, 1.7, 3.23e-3, 36.5),
-        )
+        skf_friction("radial_ball", *operating_point, typo)
 
 
 def test_angular_contact_r3_s3_range_holds_the_balls_centrifugal_load():
