@@ -12,9 +12,9 @@ a value outside is an exponent or unit slip.
 
 - Deep-groove ball bearings: :data:`.skf.DEEP_GROOVE_CONSTANTS`, the shipped table.
 - Angular-contact and four-point ball bearings: SKF's rows for the series 72 B, 73 B, 32 A,
-  33 A, QJ 2, QJ 3, not shipped (:mod:`.skf`); their orders of magnitude as transcribed in
-  public implementations of the model are the envelope :data:`ANGULAR_CONTACT_TABLE`
-  (secondary, not checked against a stored copy, like the deep-groove table). R3 and S3
+  33 A, QJ 2, QJ 3, not shipped (:mod:`.skf`). No stored source gives them; the envelope
+  :data:`ANGULAR_CONTACT_TABLE` holds their orders of magnitude as recalled from the
+  catalogue (unverified: only orders of magnitude are used, widened 10x each way). R3 and S3
   agree in order with the balls' centrifugal load, F_g = R3 d_m^4 n^2: a 7206's balls at
   the cage speed give Z m omega_c^2 D_pw / 2 = 3.2e-13 d_m^4 n^2 [N; mm, r/min]
   (tests/unit/test_cli_friction_life_inputs.py checks it against the range).
