@@ -121,6 +121,13 @@ def no_effect(flags, why: str) -> list[str]:
     return [f"{' and '.join(given)}: no effect {why}"] if given else []
 
 
+def typed(ctx: typer.Context) -> set[str]:
+    """The parameters of the command that the user typed (not left at their defaults)."""
+    # by name: typer vendors its own copy of click's ParameterSource
+    sources = {p.name: ctx.get_parameter_source(p.name) for p in ctx.command.params}
+    return {name for name, s in sources.items() if getattr(s, "name", None) == "COMMANDLINE"}
+
+
 def _show(value) -> str:
     """A value as the user would type it: 90 rather than 90.0, strings quoted."""
     if isinstance(value, bool) or value is None:

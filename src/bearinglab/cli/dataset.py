@@ -9,9 +9,17 @@ from rich.markup import escape
 
 from ..errors import InputError
 from ._app import command_app, console
-from ._inputs import JsonOpt, OptionError, SchedulerOpt, WorkersOpt, _print_warnings, no_effect
+from ._inputs import (
+    JsonOpt,
+    OptionError,
+    SchedulerOpt,
+    WorkersOpt,
+    _print_warnings,
+    no_effect,
+    typed,
+)
 from ._output import _emit_json, _table
-from .study import run_rows, runner_warnings, typed
+from .study import run_rows, runner_warnings
 
 app = command_app()
 

@@ -30,9 +30,9 @@ from ._inputs import (
     option_error,
     plot_option,
     save_plot_figure,
+    typed,
 )
 from ._output import _emit_json, _table
-from .study import typed
 
 app = command_app()
 PlotOpt = plot_option("the frequencies")

@@ -18,6 +18,7 @@ from ._inputs import (
     check_path,
     no_effect,
     save_plot_figure,
+    typed,
 )
 from ._output import _emit_json, _table
 
@@ -41,13 +42,6 @@ _FLAGS = {
     "option": "--set",
     "analysis": "ANALYSIS",
 }
-
-
-def typed(ctx: typer.Context) -> set[str]:
-    """The parameters of the command that the user typed (not left at their defaults)."""
-    # by name: typer vendors its own copy of click's ParameterSource
-    sources = {p.name: ctx.get_parameter_source(p.name) for p in ctx.command.params}
-    return {name for name, s in sources.items() if getattr(s, "name", None) == "COMMANDLINE"}
 
 
 def _grid(items: list[str]) -> dict:
