@@ -473,7 +473,7 @@ def _tolerances(overrides):
 
 def _gated(family: str) -> str:
     """What the family's harmonic test counts with the harmonics (GATE_ORDERS)."""
-    return "with their first sidebands" if GATE_ORDERS[family] else "alone"
+    return "alone or with their first sidebands" if GATE_ORDERS[family] else "alone"
 
 
 def _reason(faults, table, decision, pfa) -> str:

@@ -69,11 +69,12 @@ TOLERANCES = {
     "ball": (0.07, 0.02),
     "cage": (0.02, 0.02),
 }
-#: Family -> sideband orders counted with its harmonics when asking whether the series
-#: stands without its sidebands: the first sidebands where the load zone modulates the
-#: defect deeply, once per revolution of what carries it (inner race: shaft; ball: cage;
-#: Randall & Antoni 2011, sec. 2 and fig. 4), so that the carriers may be weaker than
-#: their sidebands; none for the outer race, whose defect does not move.
+#: Family -> deepest sideband order counted with its harmonics when asking whether the
+#: series stands without its sidebands: the first sidebands where the load zone may
+#: modulate the defect deeply, once per revolution of what carries it (inner race: shaft;
+#: ball: cage; Randall & Antoni 2011, sec. 2 and fig. 4), so that the carriers may be
+#: weaker than their sidebands - or not (the harmonics alone are tried too:
+#: :mod:`.statistics`); none for the outer race, whose defect does not move.
 GATE_ORDERS = {"outer_race": 0, "inner_race": 1, "ball": 1, "cage": 0}
 #: Keys accepted for a family in ``tolerances`` (JSON and CLI spellings too).
 ALIASES = {

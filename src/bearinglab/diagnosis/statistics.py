@@ -50,8 +50,12 @@ The test of a fault family (outer race, inner race, ball, cage):
    series, they do not make one: a flexible template of harmonics and two orders of sidebands fits
    stray lines, e.g. BPFO as a ball line's second cage sideband; the modulation's own
    lines never count here, FTF lines alone are no ball fault) - for ball and inner-race
-   faults with their first sidebands, since the load zone modulates those defects
-   deeply (:data:`bearinglab.diagnosis.families.GATE_ORDERS`); and the series must
+   faults alone or with their first sidebands, since the load zone modulates those
+   defects deeply (:data:`bearinglab.diagnosis.families.GATE_ORDERS`), by how much is
+   not known beforehand: nested as the templates are, the better of the two times 2
+   (Bonferroni; CWRU 3005, ball, shows 1, 2, 3 x 2 BSF and nearly nothing beside them,
+   and its harmonics with their sidebands fell short: docs/capabilities/diagnosis.md);
+   and the series must
    not rest on one line: combined again without its strongest line, it must still
    reach SUPPORT_ALPHA (an isolated line is more often a discrete component
    of the machine than a bearing fault; Randall & Antoni 2011, sec. 2: a fault shows as
@@ -218,7 +222,8 @@ class SeriesTest:
 
     ``log_p`` (natural log of the p-value: Fisher's, times ``candidates``),
     ``support_log_p`` (the same without the strongest line), ``harmonic_log_p`` (the
-    harmonics alone, without the sidebands), ``fundamental_hz`` (the best
+    harmonics alone or with their first ``gate_orders`` sidebands, the better times the
+    number of depths, times ``candidates``), ``fundamental_hz`` (the best
     f') and ``slip`` (f'/f_kin - 1) [-], the ``lines`` read, and ``candidates`` (M).
     ``log_p`` is 0 (p = 1) when no line could be read (all masked or above the limit).
     """
@@ -308,8 +313,8 @@ def series_test(
     valid : numpy.ndarray of bool, optional
         Bins that may be read (False: masked discrete lines or another fault's lines).
     gate_orders : int
-        Sideband orders counted with the harmonics in ``harmonic_log_p`` (0: harmonics
-        alone).
+        Deepest sideband order counted with the harmonics in ``harmonic_log_p`` (0:
+        harmonics alone; 1: alone or with the first sidebands, the better).
     bottom : float
         Lowest frequency at which a line is sought [Hz]: the reference of each line's
         p-value starts there (:func:`line_logp`).
@@ -384,8 +389,11 @@ def series_test(
     lps = logp[best][row]
     rest = np.delete(lps, int(np.argmin(lps)))
     support = min(0.0, log_m + float(fisher_logp(rest))) if rest.size else 0.0
-    own = row & (np.abs(k_arr) <= gate_orders) & (n_arr >= 1)
-    harmonic = min(0.0, log_m + float(fisher_logp(logp[best][own]))) if own.any() else 0.0
+    # the harmonics alone, then with their sidebands up to gate_orders: nested as the
+    # templates are (the depth of modulation is unknown), Bonferroni over the depths
+    gates = [row & (np.abs(k_arr) <= d) & (n_arr >= 1) for d in range(int(gate_orders) + 1)]
+    gates = [float(fisher_logp(logp[best][own])) for own in gates if own.any()]
+    harmonic = min(0.0, log_m + math.log(len(gates)) + min(gates)) if gates else 0.0
     lines = []
     for j in np.flatnonzero(row):
         kind, n, k = spec[j]
