@@ -71,3 +71,11 @@ def test_light_commands_import_no_scipy_nor_pydantic():
     without pydantic (typer 0.26-0.28): each was 80-150 ms of their start-up."""
     for argv in (["info", "6205"], ["contact", "6205", "--ball-load-n", "1000"]):
         assert _imported_after(argv, ("scipy", "pydantic")) == [], argv
+
+
+def test_static_imports_no_pandas_nor_matplotlib():
+    """static's table and JSON read the per-ball rows as plain values: pandas was 0.3 s
+    of its 1.7 s (the numba kernels load from the cache and stay)."""
+    argv = ["static", "6205", "--radial-load-n", "2000", "--speed-rpm", "3000"]
+    for extra in ([], ["--json"]):
+        assert _imported_after(argv + extra, ("pandas", "matplotlib")) == [], extra

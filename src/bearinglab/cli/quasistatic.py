@@ -297,7 +297,7 @@ def static(
     if json_output:
         _emit_json(out)
         return
-    table = result.ball_table()
+    balls = result.ball_rows()
     # column -> header with its unit (Greek symbols keep the table within 80 columns)
     cols = {
         "ball": "ball",
@@ -317,7 +317,7 @@ def static(
             + (", with EHL film" if film else "")
             + (f", gyroscopic ({race_control.value} raceway control)" if gyroscopic else ""),
             list(cols.values()),
-            table[list(cols)].to_numpy().tolist(),
+            [[ball[c] for c in cols] for ball in balls],
         )
     )
     console.print(escape(_geometry_line(bearing)))
