@@ -56,6 +56,8 @@ def refused(capsys, *args):
         ((*SKF_6205, "--model", "skf"), "3.9e-7,1.7,3.23e-3,36500", "S2 in [0.078, 1.98e+03]"),
         ((*SKF_6205, "--model", "skf"), "3.9e-7,0,3.23e-3,36.5", "R2 in [0.096, 17]"),
         ((*SKF_7206, "--model", "skf"), "5e-7,2,1e-2,0.7,2e-2,2e-12", "R3 in [7.8e-14, 1.9e-11]"),
+        # checked with the constant model too, which does not use them
+        (SKF_6205, "3.9e-1,1.7,3.23e-3,36.5", "R1 in [3.6e-08, 5.4e-06]"),
     ],
 )
 def test_implausible_skf_constants_are_refused_naming_the_option(capsys, args, typed, words):

@@ -303,7 +303,7 @@ def bearing_friction(
     Every input given is checked, whichever model runs; one the model does not use is
     named in the result's ``unused`` (and in ``to_dict``'s warnings), as are the R3, S3
     given for a deep-groove bearing, whose SKF model has no centrifugal terms. SKF
-    constants outside the plausible range of the type are refused
+    constants outside the plausible range of the type are refused, with either model
     (:func:`~.ranges.check_constants`).
 
     Parameters
@@ -394,6 +394,7 @@ def bearing_friction(
         }
         if lubrication is not None:
             lubrication_of(lubrication, lub)
+        check_constants(friction_type or b.bearing_type, constants)  # checked, though unused
         result = _constant(b, w, fr, fa, friction_type, equivalent_load, seal_kind)
         return replace(result, warnings=plausible + result.warnings, unused=_given(unused))
     kind = friction_type or b.bearing_type
