@@ -51,7 +51,7 @@ def refused(capsys, *args):
 @pytest.mark.parametrize(
     "args, typed, words",
     [
-        # the audit's typo: R1 3.9e-1 for 3.9e-7 gave 79 MW
+        # the audit's typo: R1 3.9e-1 for 3.9e-7 gave this 6205 8.3 MW of friction power
         ((*SKF_6205, "--model", "skf"), "3.9e-1,1.7,3.23e-3,36.5", "R1 in [3.6e-08, 5.4e-06]"),
         ((*SKF_6205, "--model", "skf"), "3.9e-7,1.7,3.23e-3,36500", "S2 in [0.078, 1.98e+03]"),
         ((*SKF_6205, "--model", "skf"), "3.9e-7,0,3.23e-3,36.5", "R2 in [0.096, 17]"),
@@ -161,12 +161,16 @@ def test_life_options_with_effect_are_not_named(capsys):
 
 # ------------------------------------------------------------------ given ratings
 def test_given_ratings_far_from_iso_are_flagged(capsys):
-    far = warnings_of(capsys, *LIFE_6205, "--dynamic-load-rating-kn", "140")
-    assert any("the given C = 140 kN is 9.98 times ISO 281's 14.03 kN" in w for w in far)
-    # SKF's Explorer rating, 5 % above ISO 281's, is a maker's rating and says nothing
-    maker = warnings_of(capsys, *LIFE_6205, "--dynamic-load-rating-kn", "14.8")
-    assert not any("the given C" in w for w in maker)
     b, _ = bearing_from_designation("6205")
-    r = load_ratings(b, static_load_rating=780.0)  # 7.8 kN typed as 0.78 kN
-    assert any(w.startswith("the given C0 = 0.78 kN is 0.0989 times ISO 76's") for w in r.warnings)
-    assert not load_ratings(b, static_load_rating=7800.0).warnings
+    iso = load_ratings(b)  # ISO 281/76 from the geometry
+    far = warnings_of(capsys, *LIFE_6205, "--dynamic-load-rating-kn", "140")
+    said = f"the given C = 140 kN is {140e3 / iso.dynamic:.3g} times ISO 281's"
+    assert any(w.startswith(said) and f"{iso.dynamic * 1e-3:.4g} kN" in w for w in far), far
+    # a maker's rating, 5 % above ISO 281's (SKF Explorer), says nothing
+    maker = warnings_of(capsys, *LIFE_6205, "--dynamic-load-rating-kn", f"{iso.dynamic * 1.05e-3}")
+    assert not any("the given C" in w for w in maker)
+    typo = 0.1 * iso.static  # C0 typed a decade low
+    r = load_ratings(b, static_load_rating=typo)
+    said = f"the given C0 = {typo * 1e-3:.4g} kN is 0.1 times ISO 76's"
+    assert any(w.startswith(said) for w in r.warnings), r.warnings
+    assert not load_ratings(b, static_load_rating=1.05 * iso.static).warnings
