@@ -220,10 +220,11 @@ class Line:
 class SeriesTest:
     """Result of :func:`series_test` for one fault family.
 
-    ``log_p`` (natural log of the p-value: Fisher's, times ``candidates``),
-    ``support_log_p`` (the same without the strongest line), ``harmonic_log_p`` (the
-    harmonics alone or with their first ``gate_orders`` sidebands, the better times the
-    number of depths, times ``candidates``), ``fundamental_hz`` (the best
+    ``log_p`` (natural log of the p-value: Fisher's, times ``candidates`` and the number
+    of nested templates), ``support_log_p`` (the same without the strongest line),
+    ``harmonic_log_p`` (the harmonics alone or with their sidebands up to order
+    ``gate_orders``, the better times the number of depths, and times the factors of
+    ``log_p``), ``fundamental_hz`` (the best
     f') and ``slip`` (f'/f_kin - 1) [-], the ``lines`` read, and ``candidates`` (M).
     ``log_p`` is 0 (p = 1) when no line could be read (all masked or above the limit).
     """
