@@ -199,3 +199,16 @@ def test_ring_modes_axial_load_without_effect_is_named(capsys):
         "--axial-load-n and --stiffness-from: no effect with --radial-stiffness-n-per-m "
         "(K_x is given)"
     ]
+    # the ring-level inputs alone (no bearing): f_1 given, no contacts to take K_x from
+    ring = ("ring-modes", "--balls", "9", "--ring-mass-kg", "0.1", "--ball-mass-ratio", "0.1")
+    ring += (
+        "--rigid-body-frequency-hz",
+        "500",
+        "--free-frequencies-hz",
+        "1000,2000,3000,4000,5000",
+    )
+    assert _no_effect(run_json(capsys, *ring)["warnings"]) == []
+    (warning,) = _no_effect(
+        run_json(capsys, *ring, "--stiffness-from", "load-distribution")["warnings"]
+    )
+    assert warning.startswith("--stiffness-from: no effect without a bearing")

@@ -212,7 +212,7 @@ def ring_modes_command(
         [(flag, name in typed(ctx)) for flag, name in _AXIAL_OPTIONS],
         "with --radial-stiffness-n-per-m (K_x is given)"
         if radial_stiffness_n_per_m is not None
-        else "without a bearing (they give K_x from the bearing's contacts)",
+        else "without a bearing (K_x from the axial load needs the bearing's contacts)",
     )
     d["warnings"] = (
         (_geometry_warnings(bearing) if bearing is not None else [])
