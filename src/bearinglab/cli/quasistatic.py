@@ -297,7 +297,7 @@ def static(
     if json_output:
         _emit_json(out)
         return
-    balls = result.ball_rows()
+    balls = out["balls"]  # the JSON's per-ball rows (LoadDistribution.ball_rows)
     # column -> header with its unit (Greek symbols keep the table within 80 columns)
     cols = {
         "ball": "ball",
