@@ -9,6 +9,7 @@ import json
 import math
 
 import pytest
+from conftest import run_json
 
 from bearinglab.catalog import bearing_from_designation
 from bearinglab.cli import main
@@ -30,13 +31,6 @@ def run(capsys, *args):
     code = main(list(args))
     out, err = capsys.readouterr()
     return code, out, err
-
-
-def warnings_of(capsys, *args):
-    """The --json warnings of a command that succeeds."""
-    code, out, err = run(capsys, *args, "--json")
-    assert code == 0, err
-    return json.loads(out)["warnings"]
 
 
 def refused(capsys, *args):
@@ -111,9 +105,10 @@ def test_r3_s3_of_a_deep_groove_bearing_are_named_as_without_effect(capsys):
 
 
 def test_unused_inputs_are_named_by_their_options(capsys):
-    constant = warnings_of(capsys, *SKF_6205, "--viscosity-mm2-s", "20", "--skf-constants", C62)
+    moot = ("--viscosity-mm2-s", "20", "--skf-constants", C62)
+    constant = run_json(capsys, *SKF_6205, *moot)["warnings"]
     assert "--viscosity-mm2-s and --skf-constants: no effect with --model constant" in constant
-    skf = warnings_of(
+    skf = run_json(
         capsys,
         *SKF_6205,
         "--model",
@@ -122,7 +117,7 @@ def test_unused_inputs_are_named_by_their_options(capsys):
         "900",
         "--seal-diameter-mm",
         "30",
-    )
+    )["warnings"]
     assert "--equivalent-load-n: no effect with --model skf" in skf
     assert "--seal-diameter-mm: no effect without --seal-constants" in skf
     # the library's own note, in parameter names, is not shown beside them
@@ -140,13 +135,13 @@ def test_unused_inputs_are_named_by_their_options(capsys):
     ],
 )
 def test_life_options_without_effect_are_named(capsys, options, said):
-    assert any(w.startswith(said) for w in warnings_of(capsys, *LIFE_6205, *options))
+    assert any(w.startswith(said) for w in run_json(capsys, *LIFE_6205, *options)["warnings"])
     code, out, _ = run(capsys, *LIFE_6205, *options)
     assert code == 0 and said.split(":")[0] + ":" in out
 
 
 def test_life_options_with_effect_are_not_named(capsys):
-    used = warnings_of(
+    used = run_json(
         capsys,
         *LIFE_6205,
         "--outer-rotating",
@@ -155,7 +150,7 @@ def test_life_options_with_effect_are_not_named(capsys):
         "--ep-additives",
         "--viscosity-mm2-s",
         "10",
-    )
+    )["warnings"]
     assert not any("no effect" in w for w in used)
 
 
@@ -163,11 +158,13 @@ def test_life_options_with_effect_are_not_named(capsys):
 def test_given_ratings_far_from_iso_are_flagged(capsys):
     b, _ = bearing_from_designation("6205")
     iso = load_ratings(b)  # ISO 281/76 from the geometry
-    far = warnings_of(capsys, *LIFE_6205, "--dynamic-load-rating-kn", "140")
+    far = run_json(capsys, *LIFE_6205, "--dynamic-load-rating-kn", "140")["warnings"]
     said = f"the given C = 140 kN is {140e3 / iso.dynamic:.3g} times ISO 281's"
     assert any(w.startswith(said) and f"{iso.dynamic * 1e-3:.4g} kN" in w for w in far), far
     # a maker's rating, 5 % above ISO 281's (SKF Explorer), says nothing
-    maker = warnings_of(capsys, *LIFE_6205, "--dynamic-load-rating-kn", f"{iso.dynamic * 1.05e-3}")
+    maker = run_json(capsys, *LIFE_6205, "--dynamic-load-rating-kn", f"{iso.dynamic * 1.05e-3}")[
+        "warnings"
+    ]
     assert not any("the given C" in w for w in maker)
     typo = 0.1 * iso.static  # C0 typed a decade low
     r = load_ratings(b, static_load_rating=typo)
