@@ -325,6 +325,9 @@ def test_the_harmonic_gate_tries_the_harmonics_alone_and_with_first_sidebands():
     alone = series_test(plain, *args, modulation=7.0, orders=2, gate_orders=0)
     nested = series_test(plain, *args, modulation=7.0, orders=2, gate_orders=1)
     assert nested.harmonic_log_p == pytest.approx(alone.harmonic_log_p + math.log(2), abs=1e-9)
+    # no sideband to read: one set of lines, one test, no factor
+    bare = [series_test(plain, *args, gate_orders=g).harmonic_log_p for g in (0, 1)]
+    assert bare[1] == pytest.approx(bare[0], abs=1e-12)
     deep = rng.chisquare(40, 2000) / 40
     for n in (1, 2, 3):  # deep modulation: sidebands stronger than their carriers
         for k in (-1, 1):

@@ -52,9 +52,11 @@ The test of a fault family (outer race, inner race, ball, cage):
    lines never count here, FTF lines alone are no ball fault) - for ball and inner-race
    faults alone or with their first sidebands, since the load zone modulates those
    defects deeply (:data:`bearinglab.diagnosis.families.GATE_ORDERS`), by how much is
-   not known beforehand: nested as the templates are, the better of the two times 2
-   (Bonferroni; CWRU 3005, ball, shows 1, 2, 3 x 2 BSF and nearly nothing beside them,
-   and its harmonics with their sidebands fell short: docs/capabilities/diagnosis.md);
+   not known beforehand: nested as the templates are, at the best fundamental whichever
+   template won, the better of the two times 2 (Bonferroni; 1 where no sideband can be
+   read, the two sets of lines then being one; CWRU 3005, ball, shows 1, 2, 3 x 2 BSF
+   and nearly nothing beside them, and its harmonics with their sidebands fell short:
+   docs/capabilities/diagnosis.md);
    and the series must
    not rest on one line: combined again without its strongest line, it must still
    reach SUPPORT_ALPHA (an isolated line is more often a discrete component
@@ -223,7 +225,8 @@ class SeriesTest:
     ``log_p`` (natural log of the p-value: Fisher's, times ``candidates`` and the number
     of nested templates), ``support_log_p`` (the same without the strongest line),
     ``harmonic_log_p`` (the harmonics alone or with their sidebands up to order
-    ``gate_orders``, the better times the number of depths, and times the factors of
+    ``gate_orders``, read at the best fundamental whichever template won, the better
+    times the number of distinct sets of lines, and times the factors of
     ``log_p``), ``fundamental_hz`` (the best
     f') and ``slip`` (f'/f_kin - 1) [-], the ``lines`` read, and ``candidates`` (M).
     ``log_p`` is 0 (p = 1) when no line could be read (all masked or above the limit).
@@ -383,17 +386,19 @@ def series_test(
         m = _distinct_rows(np.where(use, index, -1))
         trials.append((math.log(m) + float(combined[row_best]), row_best, m, use))
     log_k = math.log(len(trials))
-    log_p, best, candidates, readable = min(trials, key=lambda t: t[0])
+    log_p, best, candidates, use = min(trials, key=lambda t: t[0])
     log_m = math.log(candidates) + log_k  # Bonferroni: scan x templates
     log_p = min(0.0, log_p + log_k)
-    row = readable[best]
+    row = use[best]
     lps = logp[best][row]
     rest = np.delete(lps, int(np.argmin(lps)))
     support = min(0.0, log_m + float(fisher_logp(rest))) if rest.size else 0.0
-    # the harmonics alone, then with their sidebands up to gate_orders: nested as the
-    # templates are (the depth of modulation is unknown), Bonferroni over the depths
-    gates = [row & (np.abs(k_arr) <= d) & (n_arr >= 1) for d in range(int(gate_orders) + 1)]
-    gates = [float(fisher_logp(logp[best][own])) for own in gates if own.any()]
+    # the harmonics alone, then with their sidebands up to gate_orders, at the best
+    # fundamental whichever template won: nested as the templates are (the depth of
+    # modulation is unknown), Bonferroni over the distinct sets of lines
+    own = readable[best] & (n_arr >= 1)
+    gates = {tuple(np.flatnonzero(own & (np.abs(k_arr) <= d))) for d in range(int(gate_orders) + 1)}
+    gates = [float(fisher_logp(logp[best][list(g)])) for g in gates if g]
     harmonic = min(0.0, log_m + math.log(len(gates)) + min(gates)) if gates else 0.0
     lines = []
     for j in np.flatnonzero(row):
