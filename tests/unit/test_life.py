@@ -491,6 +491,19 @@ def test_iso16281_counts_clearance_and_misalignment():
     assert outer.l10 != base.l10 and any("cage speed" in w for w in outer.warnings)
 
 
+def test_inputs_without_effect_are_listed_by_the_library():
+    """rotating="outer" only matters to iso16281, ep_additives only with a viscosity: the
+    result lists them in ``unused`` and names them in its JSON warnings."""
+    b = bearing_from_designation("6205")[0]
+    cond = OperatingCondition(radial_load=2000.0, shaft_speed=300.0)
+    idle = rating_life(b, cond, rotating="outer", ep_additives=True)
+    assert idle.unused == ("rotating", "ep_additives")
+    assert "given without effect: rotating, ep_additives" in idle.to_dict()["warnings"]
+    used = rating_life(b, cond, method="iso16281", rotating="outer", viscosity=68e-6)
+    assert used.unused == ()
+    assert rating_life(b, cond, ep_additives=True, viscosity=68e-6).unused == ()
+
+
 def test_equivalent_ball_load_of_equal_loads_is_the_load():
     for w in (T.ROTATING_EXPONENT, T.STATIONARY_EXPONENT):
         assert equivalent_ball_load([250.0] * 7, w) == pytest.approx(250.0)

@@ -221,14 +221,15 @@ def life_command(
             raise
         raise OptionError(flag, typed[exc.parameter], exc.allowed, exc.hint) from None
     unused = no_effect(
-        [("--outer-rotating", outer_rotating and method is LifeMethod.iso281)],
+        [("--outer-rotating", "rotating" in result.unused)],
         "with --method iso281 (only iso16281 tells which ring turns)",
     ) + no_effect(
-        [("--ep-additives", ep_additives and nu is None)],
+        [("--ep-additives", "ep_additives" in result.unused)],
         "without --viscosity-mm2-s (the EP rule acts on a_ISO, which needs the viscosity)",
     )
     d = result.to_dict()
-    said = _geometry_warnings(bearing) + d["warnings"] + unused
+    # the library's warnings, less its note of the unused inputs, which is said in flags
+    said = _geometry_warnings(bearing) + list(result.warnings) + unused
     out = {"designation": designation, **d, "warnings": said}
     if _plot_and_emit(out, json_output, result, plot):
         return

@@ -384,6 +384,9 @@ def rating_life(
         warnings.append("contamination given without a viscosity: a_ISO needs both")
     else:
         warnings.append("no viscosity given: kappa, a_ISO and the modified life are not computed")
+    # inputs that this method or the missing viscosity leaves without effect
+    unused = ("rotating",) if rotating == "outer" and method == "iso281" else ()
+    unused += ("ep_additives",) if ep_additives and viscosity is None else ()
     return LifeResult(
         bearing=bearing,
         condition=condition,
@@ -398,5 +401,6 @@ def rating_life(
         iso281_equivalent_load=iso281_p,
         reference=reference,
         warnings=tuple(warnings),
+        unused=unused,
         **kwargs,
     )

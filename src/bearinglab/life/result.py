@@ -54,6 +54,10 @@ class LifeResult:
         ISO/TS 16281 details: contact ratings Q_ci, Q_ce, equivalent loads Q_ei, Q_ee [N],
         the per-ball inner and outer contact loads [N] and the rotating ring.
     warnings : tuple of str
+    unused : tuple of str
+        Inputs of :func:`~.life.rating_life` given that had no effect (``rotating`` with
+        ``iso281``, ``ep_additives`` without a viscosity), which ``to_dict`` names in its
+        warnings and an interface can name in its own terms.
     """
 
     bearing: BallBearing
@@ -76,6 +80,7 @@ class LifeResult:
     iso281_equivalent_load: float | None = None
     reference: dict | None = field(default=None, repr=False)
     warnings: tuple[str, ...] = ()
+    unused: tuple[str, ...] = ()
 
     @property
     def shaft_speed(self) -> float:
@@ -127,7 +132,8 @@ class LifeResult:
             "a_iso": self.a_iso,
             "l10m_million_rev": self.lnm,
             "l10m_hours": self.lnm_hours,
-            "warnings": list(self.warnings),
+            "warnings": list(self.warnings)
+            + ([f"given without effect: {', '.join(self.unused)}"] if self.unused else []),
         }
         if self.reference is not None:
             ref = self.reference
