@@ -40,6 +40,22 @@ LONG_NAMES = {
 }
 
 
+#: The bearing's fields that pure rolling reads (the nominal contact angle: the
+#: frequencies of a loaded bearing at its working angles are :mod:`bearinglab.quasistatic`'s).
+KINEMATIC_FIELDS = ("ball_count", "ball_diameter", "pitch_diameter", "contact_angle")
+
+
+def geometry_inputs(bearing: BallBearing) -> set[str]:
+    """The fields of ``bearing`` its defect frequencies depend on: KINEMATIC_FIELDS, and the
+    bore and outside diameter when Z, D_w or d_m were estimated from them."""
+    used = set(KINEMATIC_FIELDS)
+    if any(
+        getattr(bearing.sources.get(k), "kind", None) == "estimated" for k in KINEMATIC_FIELDS[:3]
+    ):
+        used |= {"bore", "outside_diameter"}
+    return used
+
+
 def frequency_orders(
     ball_count, ball_diameter, pitch_diameter, contact_angle=0.0, outer_rotating: bool = False
 ) -> dict:

@@ -45,3 +45,14 @@ def test_bad_speed(speed):
 def test_unknown_frequency_name():
     with pytest.raises(InputError):
         defect_frequencies(B, 100.0).hz("bpfx")
+
+
+def test_geometry_inputs_name_what_the_frequencies_depend_on():
+    from bearinglab.catalog import bearing_from_designation
+    from bearinglab.kinematics import KINEMATIC_FIELDS, geometry_inputs
+
+    catalogued = bearing_from_designation("6205")[0]  # Z, D_w, d_m from the catalogue
+    assert geometry_inputs(catalogued) == set(KINEMATIC_FIELDS)
+    estimated = bearing_from_designation("6305")[0]  # estimated from d and D
+    assert estimated.sources["ball_count"].kind == "estimated"
+    assert {"bore", "outside_diameter"} <= geometry_inputs(estimated)

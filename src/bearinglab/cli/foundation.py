@@ -13,7 +13,7 @@ from ..catalog import (
 from ..designation import parse
 from ..errors import CatalogError, DesignationError, InputError
 from ..geometry import BallBearing
-from ..kinematics import FREQUENCY_NAMES, LONG_NAMES, defect_frequencies
+from ..kinematics import FREQUENCY_NAMES, LONG_NAMES, defect_frequencies, geometry_inputs
 from ..plausibility import speed_factor_warnings
 from ._app import HertzMethod, command_app, console
 from ._geometry import (
@@ -268,18 +268,13 @@ def frequencies(
     shaft_speed = speed_rad_s(speed_rpm, zero=True)
     bearing, _ = resolve_bearing(designation, geometry)
     f = defect_frequencies(bearing, shaft_speed, outer_rotating=outer_rotating)
-    # pure rolling needs Z, D_w, d_m and the contact angle; bore and D only when those
-    # are estimated from them
-    kinematic = {"system", "balls", "ball_diameter_mm", "pitch_diameter_mm", "contact_angle_deg"}
-    if any(
-        getattr(bearing.sources.get(k), "kind", None) == "estimated"
-        for k in ("ball_count", "ball_diameter", "pitch_diameter")
-    ):
-        kinematic |= {"bore_mm", "outside_diameter_mm"}
+    used = geometry_inputs(bearing)
     unused = [
-        (_GEOMETRY_OPTIONS[name][0], value is not None and name not in kinematic)
+        (flag, value is not None and field not in used)
         for name, value in geometry.items()
-        if name != "geometry"  # a file describes the whole bearing, for every command
+        for flag, *_, field in [_GEOMETRY_OPTIONS[name]]
+        # --system reads the designation; a file describes the whole bearing
+        if name not in ("system", "geometry")
     ]
     warnings = (
         _geometry_warnings(bearing)
