@@ -212,3 +212,17 @@ def test_ring_modes_axial_load_without_effect_is_named(capsys):
         run_json(capsys, *ring, "--stiffness-from", "load-distribution")["warnings"]
     )
     assert warning.startswith("--stiffness-from: no effect without a bearing")
+
+
+def test_ring_modes_axial_load_with_a_given_f1_only_sets_the_reported_stiffness(capsys):
+    # f_1 fixes the contact stiffness: the axial load changes the K_x reported, not the
+    # frequencies, and the warning says so (no warning when the load is left at default)
+    f1 = ("ring-modes", "6205", "--rigid-body-frequency-hz", "800")
+    low, high = (run_json(capsys, *f1, "--axial-load-n", a) for a in ("300", "5000"))
+    assert low["modes"] == high["modes"]
+    assert low["radial_stiffness_n_per_m"] != high["radial_stiffness_n_per_m"]
+    assert _no_effect(high["warnings"]) == [
+        "--axial-load-n: no effect on the frequencies with --rigid-body-frequency-hz "
+        "(only on the K_x reported)"
+    ]
+    assert _no_effect(run_json(capsys, *f1)["warnings"]) == []

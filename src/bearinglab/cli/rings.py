@@ -207,18 +207,22 @@ def ring_modes_command(
     if plot is not None:
         save_plot_figure(result.plot()[0], plot)
     d = result.to_dict()
-    # the axial load gives K_x, from a bearing, when K_x is not given
-    unused = no_effect(
-        [(flag, name in typed(ctx)) for flag, name in _AXIAL_OPTIONS],
-        "with --radial-stiffness-n-per-m (K_x is given)"
-        if radial_stiffness_n_per_m is not None
-        else "without a bearing (K_x from the axial load needs the bearing's contacts)",
-    )
-    d["warnings"] = (
-        (_geometry_warnings(bearing) if bearing is not None else [])
-        + d["warnings"]
-        + (unused if d["axial_load_n"] is None else [])
-    )
+    # the axial load gives K_x, from a bearing, when K_x is not given; given f1, K_x is
+    # only reported (f1 fixes the contact stiffness)
+    if d["axial_load_n"] is None:
+        why = (
+            "with --radial-stiffness-n-per-m (K_x is given)"
+            if radial_stiffness_n_per_m is not None
+            else "without a bearing (K_x from the axial load needs the bearing's contacts)"
+        )
+    elif rigid_body_frequency_hz is not None:
+        why = "on the frequencies with --rigid-body-frequency-hz (only on the K_x reported)"
+    else:
+        why = None
+    flags = [(flag, why is not None and name in typed(ctx)) for flag, name in _AXIAL_OPTIONS]
+    unused = no_effect(flags, why or "")
+    d["warnings"] = (_geometry_warnings(bearing) if bearing is not None else []) + d["warnings"]
+    d["warnings"] += unused
     if json_output:
         _emit_json({"designation": designation, **d})
         return
