@@ -198,3 +198,30 @@ def test_a_sample_rate_that_overrides_the_files_is_named(tmp_path, capsys):
 
     assert "50000 Hz and 60000 Hz was given" in said("60000")[0]
     assert said("50000") == []
+
+
+def test_labels_in_other_data_sets_spellings(folder, tmp_path, capsys):
+    """Fault labels as other data sets spell them ("OR", "Inner race fault", "baseline")
+    are read as outer, inner, normal; an unknown one is refused with the spellings."""
+    from bearinglab.diagnosis.benchmark import label_fault
+
+    assert [label_fault(t) for t in ("OR", "Inner race fault", "baseline", "B", "crack")] == [
+        "outer",
+        "inner",
+        "normal",
+        "ball",
+        None,
+    ]
+    text = (folder / "labels.csv").read_text(encoding="utf-8")
+    other = tmp_path / "other"
+    other.mkdir()
+    for name in ("outer.npz", "inner.npz", "noise.npz"):
+        (other / name).symlink_to(folder / name)
+    spelled = text.replace(",outer\n", ",OR\n").replace(",inner\n", ",Inner race fault\n")
+    (other / "labels.csv").write_text(spelled.replace(",normal\n", ",baseline\n"), "utf-8")
+    code, out, err = run(capsys, "benchmark", str(other), "--method", "raw", "--json")
+    assert code == 0, err
+    assert json.loads(out)["right"]["raw"] == 3
+    (other / "labels.csv").write_text(text.replace(",normal\n", ",crack\n"), "utf-8")
+    code, _, err = run(capsys, "benchmark", str(other))
+    assert code == 2 and "'crack'" in err and "ir" in err

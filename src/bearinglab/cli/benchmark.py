@@ -57,7 +57,6 @@ def benchmark_command(
         except InputError as exc:
             flag = {
                 "folder": "FOLDER",
-                "labels.csv": "FOLDER",
                 "methods": "--method",
                 "jobs": "--jobs",
             }.get(exc.parameter)

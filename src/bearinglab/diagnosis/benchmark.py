@@ -30,6 +30,37 @@ EXPECTED = {
     "ball": "ball",
     "cage": "cage",
 }
+#: Other spellings of a label's fault that data sets use (after lower case, "-" and "_"
+#: read as spaces): CWRU's "IR", "OR", "B", MFPT's "baseline", "inner race fault" ...
+SPELLINGS = {
+    "no fault": "normal",
+    "none": "normal",
+    "baseline": "normal",
+    "ir": "inner",
+    "inner race": "inner",
+    "bpfi": "inner",
+    "or": "outer",
+    "outer race": "outer",
+    "bpfo": "outer",
+    "b": "ball",
+    "rolling element": "ball",
+    "bsf": "ball",
+    "ftf": "cage",
+}
+
+
+def label_fault(text: str) -> str | None:
+    """A label's fault as a key of EXPECTED (None when it is none of them).
+
+    >>> label_fault("Inner race fault"), label_fault("OR"), label_fault("healthy")
+    ('inner', 'outer', 'healthy')
+    """
+    words = " ".join(str(text).lower().replace("-", " ").replace("_", " ").split())
+    words = words.removesuffix(" fault").removesuffix(" defect")
+    key = SPELLINGS.get(words, words)
+    return key if key in EXPECTED else None
+
+
 #: Rows and columns of the confusion matrix.
 CLASSES = ("no fault detected", "outer_race", "inner_race", "ball", "cage", "compound")
 
@@ -46,8 +77,12 @@ def read_labels(folder) -> list[dict]:
     if not rows or not need <= set(rows[0]):
         raise InputError("labels.csv", str(path), f"a header with at least {sorted(need)}")
     for row in rows:
-        if row["fault"].strip().lower() not in EXPECTED:
-            raise InputError("labels.csv", row["fault"], f"faults among {sorted(EXPECTED)}")
+        if label_fault(row["fault"]) is None:
+            raise InputError(
+                "labels.csv",
+                row["fault"],
+                f"faults among {sorted(EXPECTED)} (or {', '.join(sorted(SPELLINGS))})",
+            )
     return rows
 
 
@@ -87,7 +122,7 @@ def run_record(folder: str, row: dict, methods: tuple, keep_spectra: bool = True
         "file": row["file"],
         "fault": row["fault"].strip().lower(),
         "smith_randall_2015": row.get("smith_randall_2015") or None,
-        "expected": EXPECTED[row["fault"].strip().lower()],
+        "expected": EXPECTED[label_fault(row["fault"])],
         "error": None,
     }
     try:
