@@ -225,3 +225,25 @@ def test_labels_in_other_data_sets_spellings(folder, tmp_path, capsys):
     (other / "labels.csv").write_text(text.replace(",normal\n", ",crack\n"), "utf-8")
     code, _, err = run(capsys, "benchmark", str(other))
     assert code == 2 and "'crack'" in err and "ir" in err
+
+
+def test_a_blank_speed_in_the_labels_is_the_files_own(folder, tmp_path, capsys):
+    """speed_rpm left blank: the speed the file stores; a file with none is that record's
+    error, naming speed_rpm, and the other records still run."""
+    other = tmp_path / "blank"
+    other.mkdir()
+    from bearinglab.signal import read_signal
+
+    outer = read_signal(folder / "outer.npz")
+    write_signal(other / "stored.npz", Signal(outer.channels, FS, {"speed_rpm": 1750.0}))
+    (other / "bare.npz").symlink_to(folder / "outer.npz")
+    (other / "labels.csv").write_text(
+        "file,channel,sample_rate_hz,speed_rpm,designation,fault\n"
+        f"stored.npz,acc,{FS},,ER-16K,outer\nbare.npz,acc,{FS},,ER-16K,outer\n",
+        "utf-8",
+    )
+    code, out, err = run(capsys, "benchmark", str(other), "--method", "raw", "--json")
+    assert code == 0, err
+    stored, bare = json.loads(out)["records"]
+    assert stored["verdict"] == "outer_race" and stored["error"] is None
+    assert bare["verdict"] == "error" and "speed_rpm" in bare["error"]

@@ -73,7 +73,7 @@ def read_labels(folder) -> list[dict]:
         raise InputError("folder", str(folder), "a folder with a labels.csv")
     with open(path, newline="", encoding="utf-8") as fh:
         rows = list(csv.DictReader(fh))
-    need = {"file", "fault", "speed_rpm"}
+    need = {"file", "fault"}
     if not rows or not need <= set(rows[0]):
         raise InputError("labels.csv", str(path), f"a header with at least {sorted(need)}")
     for row in rows:
@@ -131,7 +131,12 @@ def run_record(folder: str, row: dict, methods: tuple, keep_spectra: bool = True
         channel = (row.get("channel") or "").strip() or None
         if channel is not None and channel not in signal.names:
             channel = next((c for c in signal.names if c.rsplit(".", 1)[-1] == channel), channel)
-        speed = float(row["speed_rpm"]) * math.pi / 30
+        # a blank (or absent) speed: the one the file stores (CWRU XnnnRPM, MFPT rate)
+        text = (row.get("speed_rpm") or "").strip()
+        rpm = float(text) if text else signal.metadata.get("speed_rpm")
+        if rpm is None:
+            raise InputError("speed_rpm", row["file"], "a speed in labels.csv (the file has none)")
+        speed = float(rpm) * math.pi / 30
         kin = defect_frequencies(_bearing(row), speed)
         runs = (
             {"+".join(methods): methods}
