@@ -269,13 +269,14 @@ def frequencies(
     bearing, _ = resolve_bearing(designation, geometry)
     f = defect_frequencies(bearing, shaft_speed, outer_rotating=outer_rotating)
     used = geometry_inputs(bearing)
-    unused = [
-        (flag, value is not None and field not in used)
+    # (flag, bearing field) of each option given; --system reads the designation, and a
+    # --geometry file describes the whole bearing, for every command
+    given = [
+        (_GEOMETRY_OPTIONS[name][0], _GEOMETRY_OPTIONS[name][4])
         for name, value in geometry.items()
-        for flag, *_, field in [_GEOMETRY_OPTIONS[name]]
-        # --system reads the designation; a file describes the whole bearing
-        if name not in ("system", "geometry")
+        if value is not None and name not in ("system", "geometry")
     ]
+    unused = [(flag, field not in used) for flag, field in given]
     warnings = (
         _geometry_warnings(bearing)
         + speed_factor_warnings(bearing, shaft_speed)
