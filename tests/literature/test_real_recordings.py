@@ -139,3 +139,82 @@ def test_other_accelerometers_get_no_wrong_fault(row):
     (measured 2026-11-24: right on 8 of 14 FE and 7 of 13 BA records, no wrong fault; the
     raw envelope calls the ball record 118 "inner race" on BA)."""
     assert _verdict(row) in (EXPECTED[row["fault"]], NO_FAULT)
+
+
+def _samples(row, channel=None):
+    """(samples, sample rate [Hz]) of a labelled record's channel, as published."""
+    from bearinglab.signal import read_signal
+
+    signal = read_signal(REAL / row["file"], sample_rate=float(row["sample_rate_hz"]))
+    name = channel or row["channel"]
+    name = next((c for c in signal.names if c.rsplit(".", 1)[-1] == name), name)
+    return signal.channel(name), signal.sample_rate
+
+
+def _kinematics(row, factor=1.0):
+    from bearinglab.kinematics import defect_frequencies
+
+    return defect_frequencies(_bearing(row), factor * float(row["speed_rpm"]) * math.pi / 30)
+
+
+@pytest.mark.parametrize("channel", ["DE", "FE"])
+def test_healthy_record_segments_and_speeds_get_no_fault(channel):
+    """The healthy 97 cut into four 2.5 s segments, each analysed at the logged speed and
+    at 1 and 2 % either side of it (a tachometer's error): 20 records per channel, every
+    one "no fault detected" with the default method (measured 2026-11-24: 0 of 40 with
+    cpw and with drs-sk; the raw envelope 0 of 40, and 2 of 40 "outer race" when the
+    outer race's harmonic gate also counted its first sidebands, the change tried and
+    not kept in docs/capabilities/diagnosis.md)."""
+    from bearinglab.diagnosis import analyze_signal
+
+    row = next((r for r in _rows() if r["fault"] == "normal"), None)
+    if row is None:
+        pytest.skip("no healthy record in shared/data/real")
+    x, fs = _samples(row, channel)
+    quarter = x.size // 4
+    verdicts = [
+        analyze_signal(x[q * quarter : (q + 1) * quarter], fs, _kinematics(row, f)).verdict
+        for q in range(4)
+        for f in (0.98, 0.99, 1.0, 1.01, 1.02)
+    ]
+    assert verdicts == [NO_FAULT] * 20
+
+
+#: Halves of records where the default method names a wrong fault: (file, half) -> reason.
+WRONG_ON_A_HALF = {
+    ("cwru/12k_DE/197.mat", 0): "outer 0.014 in at 6 o'clock: its first 5 s with cpw "
+    "read 'ball' at 10^-3.38 (level 10^-2.6) from two lines, 139.2 Hz (z 3.2) and "
+    "278.3 Hz (z 2.0), each the largest reading of the flat whitened spectrum and so "
+    "at the empirical floor 10^-2.58; without the first the series still reaches "
+    "10^-2.13 (the support gate is 10^-2). The second half is 'no fault detected'",
+}
+
+
+@pytest.mark.parametrize(
+    "row, half",
+    [
+        pytest.param(
+            r,
+            h,
+            id=f"{r['file']} half {h + 1} [{r['fault']}]",
+            marks=[pytest.mark.xfail(strict=True, reason=WRONG_ON_A_HALF[r["file"], h])]
+            if (r["file"], h) in WRONG_ON_A_HALF
+            else [],
+        )
+        for r in _rows()
+        for h in (0, 1)
+    ],
+)
+def test_record_halves_get_no_wrong_fault(row, half):
+    """Each labelled record cut in two halves (5 s of CWRU, 1.5 s of MFPT), each
+    analysed alone with the default method: the fault, or "no fault detected", never a
+    wrong fault - a check of how much a verdict rests on one stretch of noise (measured
+    2026-11-24 over the halves and +-1 % speed of the records and of their FE and BA
+    channels: 1 wrong fault in 270 verdicts with cpw, 10 with the raw envelope, 4 with
+    drs-sk)."""
+    from bearinglab.diagnosis import analyze_signal
+
+    x, fs = _samples(row)
+    part = x[: x.size // 2] if half == 0 else x[x.size // 2 :]
+    verdict = analyze_signal(part, fs, _kinematics(row)).verdict
+    assert verdict in (EXPECTED[row["fault"]], NO_FAULT)
