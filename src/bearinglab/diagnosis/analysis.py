@@ -36,12 +36,14 @@ HARMONICS = 8
 #: Default probability of a false alarm on a record with no fault [-].
 FALSE_ALARM = 0.01
 #: Default methods, chosen by measurement on the 18 shared CWRU and MFPT records
-#: (docs/capabilities/diagnosis.md, 2026-11-24, nested sideband templates), scoring right
-#: Y records + healthy + MFPT minus twice the wrong faults: cpw 12 (9 of 12 Y, no wrong
-#: fault), all three 10 (9 Y), drs-sk 10 and raw 9 (all but cpw call record 118, a ball
-#: fault Smith & Randall find undiagnosable, "outer_race"). On synthetic records all three
-#: together detect more than cpw alone (the docs' table): the choice rests on the real
-#: records and is to be revisited on the larger set.
+#: (docs/capabilities/diagnosis.md, 2026-11-24, fourth session), scoring right Y records
+#: + healthy + MFPT minus twice the wrong faults: cpw 13 (10 of 12 Y, no wrong fault),
+#: all three 11, drs-sk 11 and raw 10 (all but cpw call record 118, a ball fault Smith &
+#: Randall find undiagnosable, "outer_race"); over the records' halves and +-1 % speeds,
+#: with their fan-end and base channels, cpw names 1 wrong fault in 270 verdicts, raw 10,
+#: drs-sk 4. On synthetic records all three together detect more than cpw alone (the
+#: docs' table): the choice rests on the real records and is to be revisited on the
+#: larger set.
 DEFAULT_METHODS = ("cpw",)
 #: Methods for a record simulated by bearinglab (no random slip: deterministic).
 SIMULATED_METHODS = ("raw",)
