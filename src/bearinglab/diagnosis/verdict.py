@@ -2,13 +2,15 @@
 
 1. Discrete lines that are not the bearing's - the shaft frequency and its harmonics, of
    any order, and the harmonics of the supply and gear-mesh frequencies when given - are
-   masked (one bin either side) in every method's spectrum.
+   masked, over the reach of their Hann leakage (1 to MAX_MASK_BINS bins either side),
+   in every method's spectrum.
 2. Every family is tested in every method (:func:`series_test`). With F families and M
    methods the level of each test is P_FA / (F M) (Bonferroni), so that the chance of
    any false alarm on a record with no fault is at most P_FA.
 3. The most significant family that passes (its p-value below that level, its harmonics
-   alone below SUPPORT_ALPHA, and still below SUPPORT_ALPHA without its strongest line)
-   is accepted; its lines
+   alone below SUPPORT_ALPHA, and still below SUPPORT_ALPHA without its strongest line,
+   all by one method: the most significant method that passes all three) is accepted;
+   its lines
    and their intermodulation with the shaft and cage rates (:func:`explained`) are
    masked and the others are tested again: a second fault is reported only with lines
    of its own (a compound fault), never with lines the first one explains (3 x BPFO of
@@ -166,6 +168,15 @@ def decide(
     accepted: list[str] = []
     best: dict[str, tuple] = {}
     remaining = [f.name for f in fams]
+
+    def passes(test) -> bool:
+        return (
+            test.log_p < log_alpha
+            and test.harmonic_log_p < log_support
+            and test.support_log_p < log_support
+        )
+
+    ball_beside_cage = None
     while remaining:
         tests = test_all(
             spectra,
@@ -176,21 +187,19 @@ def decide(
             bottom,
         )
         for name in remaining:
-            method, test = min(
-                ((m, t) for (m, f), t in tests.items() if f == name),
-                key=lambda mt: (mt[1].log_p, mt[1].support_log_p),
-            )
-            best[name] = (method, test)
-        passing = [
-            n
-            for n in remaining
-            if best[n][1].log_p < log_alpha
-            and best[n][1].harmonic_log_p < log_support
-            and best[n][1].support_log_p < log_support
-        ]
+            # the most significant method among those whose test passes every gate (the
+            # gates of one method are no reason to drop another's series); else the most
+            # significant
+            runs = [(m, t) for (m, f), t in tests.items() if f == name]
+            runs = [mt for mt in runs if passes(mt[1])] or runs
+            best[name] = min(runs, key=lambda mt: (mt[1].log_p, mt[1].support_log_p))
+        passing = [n for n in remaining if passes(best[n][1])]
         if not passing:
             break
         winner = min(passing, key=lambda n: (best[n][1].log_p, best[n][1].support_log_p))
+        if winner == "cage":
+            # the ball test as it stood beside the cage's lines, before they are masked
+            ball_beside_cage = best.get("ball")
         accepted.append(winner)
         remaining.remove(winner)
         resolution = spectra[0].resolution
@@ -204,10 +213,13 @@ def decide(
         accepted.remove("cage")
         modulation = ["cage"]
     elif (
-        "cage" in accepted and "ball" in best and best["ball"][1].log_p < math.log(BALL_GIVEN_CAGE)
+        "cage" in accepted
+        and ball_beside_cage is not None
+        and ball_beside_cage[1].log_p < math.log(BALL_GIVEN_CAGE)
     ):
         # a cage-rate series with ball lines beside it: the cage carries a ball defect
         accepted[accepted.index("cage")] = "ball"
+        best["ball"] = ball_beside_cage
         modulation = ["cage"]
     return {"faults": accepted, "tests": best, "alpha": alpha, "modulation": modulation}
 
