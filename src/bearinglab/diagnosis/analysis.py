@@ -384,7 +384,10 @@ def analyze_signal(
                 "resolution", resolution, f"a resolution >= {floor_res:.4g} Hz (1 / record length)"
             )
     spectra = [with_z(method_spectrum(m, x, fs, resolution, band, largest)) for m in names]
-    fams = families(freqs, windows)
+    # sidebands and intermodulation at the rates the signal shows: the shaft line found
+    # (the one masked), the cage in proportion
+    rates = {"shaft": shaft_hz, "ftf": freqs["ftf"] * shaft_hz / freqs["shaft"]}
+    fams = families(freqs, windows, rates)
     res = spectra[0].resolution
     for name, f in (("supply_frequency", supply), ("mesh_frequency", mesh)):
         # each harmonic is masked with its neighbours: closer than 3 bins, they mask it all
@@ -406,7 +409,9 @@ def analyze_signal(
             f"of the envelope spectrum up to {max_frequency:.4g} Hz: a fault's lines may be "
             "masked with them"
         )
-    decision = decide(spectra, fams, valid, max_frequency, harmonics, pfa, (shaft_hz, freqs["ftf"]))
+    decision = decide(
+        spectra, fams, valid, max_frequency, harmonics, pfa, (rates["shaft"], rates["ftf"])
+    )
     faults = tuple(decision["faults"])
     verdict = (
         NO_FAULT

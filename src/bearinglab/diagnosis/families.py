@@ -164,8 +164,13 @@ def tolerances(overrides=None) -> dict[str, tuple[float, float]]:
     return out
 
 
-def families(frequencies, windows: dict[str, tuple[float, float]]) -> list[Family]:
-    """The four families for ``frequencies`` (name -> Hz, with ``shaft``)."""
+def families(
+    frequencies, windows: dict[str, tuple[float, float]], modulations=None
+) -> list[Family]:
+    """The four families for ``frequencies`` (name -> Hz, with ``shaft``); their sidebands
+    are spaced by ``modulations`` (``shaft``, ``ftf`` -> Hz: the rates the signal shows)
+    where given, else by ``frequencies``."""
+    rates = modulations or frequencies
     out = []
     for name in FAMILIES:
         modulation, orders = SIDEBANDS[name]
@@ -176,7 +181,7 @@ def families(frequencies, windows: dict[str, tuple[float, float]]) -> list[Famil
                 float(frequencies[FREQUENCY[name]]),
                 below,
                 above,
-                None if modulation is None else float(frequencies[modulation]),
+                None if modulation is None else float(rates[modulation]),
                 orders,
                 GATE_ORDERS[name],
             )
