@@ -210,7 +210,7 @@ def test_record_halves_get_no_wrong_fault(row, half):
     analysed alone with the default method: the fault, or "no fault detected", never a
     wrong fault - a check of how much a verdict rests on one stretch of noise (measured
     2026-11-24 over the halves and +-1 % speed of the records and of their FE and BA
-    channels: 1 wrong fault in 270 verdicts with cpw, 10 with the raw envelope, 4 with
+    channels: 1 wrong fault in 270 verdicts with cpw, 9 with the raw envelope, 4 with
     drs-sk)."""
     from bearinglab.diagnosis import analyze_signal
 
