@@ -183,7 +183,7 @@ def test_healthy_record_segments_and_speeds_get_no_fault(channel):
 #: Halves of records where the default method names a wrong fault: (file, half) -> reason.
 WRONG_ON_A_HALF = {
     ("cwru/12k_DE/197.mat", 0): "outer 0.014 in at 6 o'clock: its first 5 s with cpw "
-    "read 'ball' at 10^-3.38 (level 10^-2.6) from two lines, 139.2 Hz (z 3.2) and "
+    "read 'ball' at 10^-3.37 (level 10^-2.6) from two lines, 139.2 Hz (z 3.2) and "
     "278.3 Hz (z 2.0), each the largest reading of the flat whitened spectrum and so "
     "at the empirical floor 10^-2.58; without the first the series still reaches "
     "10^-2.13 (the support gate is 10^-2). The second half is 'no fault detected'",
