@@ -40,7 +40,7 @@ FALSE_ALARM = 0.01
 #: + healthy + MFPT minus twice the wrong faults: cpw 13 (10 of 12 Y, no wrong fault),
 #: all three 11, drs-sk 11 and raw 10 (all but cpw call record 118, a ball fault Smith &
 #: Randall find undiagnosable, "outer_race"); over the records' halves and +-1 % speeds,
-#: with their fan-end and base channels, cpw names 1 wrong fault in 270 verdicts, raw 10,
+#: with their fan-end and base channels, cpw names 1 wrong fault in 270 verdicts, raw 9,
 #: drs-sk 4. On synthetic records all three together detect more than cpw alone (the
 #: docs' table): the choice rests on the real records and is to be revisited on the
 #: larger set.

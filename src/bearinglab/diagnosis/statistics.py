@@ -35,7 +35,8 @@ The test of a fault family (outer race, inner race, ball, cage):
    bin;
 4. the lines' p-values are combined by Fisher's method (-2 sum ln p ~ chi2 with 2L
    degrees of freedom for L independent lines: Fisher R. A., Statistical Methods for
-   Research Workers, 1932, sec. 21.1), the best fundamental is kept, and its p-value is
+   Research Workers, 1932, sec. 21.1; a line whose three bins overlap an earlier line's
+   is read once), the best fundamental is kept, and its p-value is
    multiplied by the number M of distinct line positions the scan tried (a Bonferroni
    bound on the search). The depth of modulation is not known beforehand (an outer-race
    defect under a fixed load is not modulated at all, the same defect under a rotating
