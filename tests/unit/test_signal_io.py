@@ -169,6 +169,32 @@ def test_cwru_mat_without_rpm_and_with_two_records(tmp_path):
     assert s.names == ("DE", "BA") and "speed_rpm" not in s.metadata
 
 
+def test_cwru_records_chosen_by_name_and_never_guessed(tmp_path):
+    """A file holding several records none of which is named like it is refused until the
+    record is named; the record can be named as X099, 099, 99; a record asked of a file
+    without CWRU records, or of another format, is refused."""
+    rng = np.random.default_rng(7)
+    variables = {f"X{n}_DE_time": rng.standard_normal((64, 1)) for n in ("098", "099")}
+    path = tmp_path / "500.mat"
+    scipy.io.savemat(path, variables)
+    with pytest.raises(InputError) as err:
+        read_signal(path, sample_rate=48000)
+    assert err.value.parameter == "record" and "X098" in err.value.allowed
+    for name in ("X099", "099", 99, "x099_DE_time"):
+        s = read_signal(path, sample_rate=48000, record=name)
+        assert s.metadata["cwru_record"] == "X099"
+        np.testing.assert_array_equal(s.channel("DE"), variables["X099_DE_time"][:, 0])
+    with pytest.raises(InputError, match="X098"):
+        read_signal(path, sample_rate=48000, record="X097")
+    scipy.io.savemat(tmp_path / "s.mat", {"bearing": {"gs": np.arange(32.0), "sr": 1000.0}})
+    with pytest.raises(InputError, match="no CWRU records"):
+        read_signal(tmp_path / "s.mat", record="X099")
+    write_signal(tmp_path / "r.npz", Signal({"a": np.zeros(32)}, 1000.0))
+    with pytest.raises(InputError) as err:
+        read_signal(tmp_path / "r.npz", record="X099")
+    assert err.value.parameter == "record"
+
+
 def test_foreign_mat_and_csv_files(tmp_path):
     scipy.io.savemat(tmp_path / "v.mat", {"vib": np.arange(32.0), "fs": 1000.0})
     s = read_signal(tmp_path / "v.mat", sample_rate=1000.0)

@@ -37,6 +37,7 @@ FLAGS = {
     "sample_rate": "--sample-rate-hz",
     "sample_rate_hz": "--sample-rate-hz",
     "channel": "--channel",
+    "record": "--record",
     "shaft_speed": "--speed-rpm",
     "speed_range": "--speed-range-rpm",
     "methods": "--method",
@@ -127,6 +128,14 @@ def analyze_command(
             "--channel",
             help="Channel or struct field path (e.g. DE, acc_y, bearing.gs or "
             "gs); default acc_y, DE or gs if present, else the first.",
+        ),
+    ] = None,
+    record: Annotated[
+        str | None,
+        typer.Option(
+            "--record",
+            help="CWRU record of a .mat file holding several (e.g. X099); default the "
+            "one named like the file.",
         ),
     ] = None,
     sample_rate_hz: Annotated[
@@ -222,6 +231,7 @@ def analyze_command(
         "shaft_speed": parse_speed(speed_rpm),
         "speed_range": parse_range(speed_range_rpm),
         "channel": channel,
+        "record": record,
         "sample_rate": sample_rate_hz,
         "band": parse_band(band_hz),
         "methods": method or None,
@@ -245,6 +255,7 @@ def analyze_command(
             "--method": method,
             "--band-hz": band_hz,
             "--channel": channel,
+            "--record": record,
             "--sample-rate-hz": sample_rate_hz,
             "--tolerance": tolerance,
             "--speed-range-rpm": speed_range_rpm,

@@ -14,7 +14,15 @@ from ..errors import InputError
 
 
 def analyze_file(
-    path, bearing, *, shaft_speed=None, speed_range=None, channel=None, sample_rate=None, **options
+    path,
+    bearing,
+    *,
+    shaft_speed=None,
+    speed_range=None,
+    channel=None,
+    sample_rate=None,
+    record=None,
+    **options,
 ):
     """Diagnose the recording ``path`` of ``bearing``.
 
@@ -33,6 +41,9 @@ def analyze_file(
         Channel or struct field path (``bearing.gs``, or just ``gs``).
     sample_rate : float, optional
         Sample rate [Hz] when the file does not store it, or to override it.
+    record : str, optional
+        The CWRU record of a .mat file holding several (``X099``); default the one named
+        like the file.
     **options
         Passed to :func:`~bearinglab.diagnosis.analyze_signal` (methods, band, tolerances,
         false_alarm, supply_frequency, mesh_frequency, ...).
@@ -46,9 +57,9 @@ def analyze_file(
     from ..signal import read_signal
     from .analysis import analyze_signal
 
-    signal = read_signal(path, sample_rate=sample_rate)
+    signal = read_signal(path, sample_rate=sample_rate, record=record)
     if channel is not None:
-        signal = read_signal(path, sample_rate=sample_rate, channel=channel)
+        signal = read_signal(path, sample_rate=sample_rate, channel=channel, record=record)
         channel = signal.names[0]
     recorded = signal.metadata.get("speed_rpm")
     recorded = (

@@ -91,7 +91,7 @@ def _suffix(path: Path) -> str:
     return suffix
 
 
-def read_signal(path, sample_rate=None, channel=None) -> Signal:
+def read_signal(path, sample_rate=None, channel=None, record=None) -> Signal:
     """Read a vibration record; the format follows the suffix (see the module docstring).
 
     Parameters
@@ -103,6 +103,9 @@ def read_signal(path, sample_rate=None, channel=None) -> Signal:
         column of a CSV, the WAV header, ``sample_rate_hz``); required for CWRU .mat files.
     channel : str or sequence of str, optional
         Keep only these channels (in this order); default all.
+    record : str or int, optional
+        The CWRU record of a .mat file holding several (``X099``, ``099`` or 99); default
+        the one named like the file, or the only one.
 
     Returns
     -------
@@ -128,8 +131,13 @@ def read_signal(path, sample_rate=None, channel=None) -> Signal:
             raise InputError("sample_rate", sample_rate, "a finite number > 0 Hz")
     if not path.is_file():
         raise InputError("path", str(path), "an existing file")
+    if record is not None and suffix != ".mat":
+        raise InputError("record", record, "None: records are chosen in CWRU .mat files only")
     try:
-        channels, file_rate, metadata = _READERS[suffix](path, sample_rate)
+        reader = _READERS[suffix]
+        channels, file_rate, metadata = (
+            reader(path, sample_rate, record) if suffix == ".mat" else reader(path, sample_rate)
+        )
     except InputError:
         raise
     except _corrupt() as exc:
@@ -392,7 +400,13 @@ def _walk_struct(name: str, value, channels: dict, scalars: dict, other: dict) -
     other[name] = "text" if a.dtype.kind in "US" else f"{a.dtype} data"
 
 
-def _read_mat(path: Path, sample_rate):
+def _record_number(record) -> int | None:
+    """The number of a CWRU record given as X099, 099, 99 or X099_DE_time (None: not one)."""
+    match = re.fullmatch(r"\s*X?(\d+)(_\w+)?\s*", str(record), flags=re.IGNORECASE)
+    return int(match[1]) if match else None
+
+
+def _read_mat(path: Path, sample_rate, record=None):
     import scipy.io
 
     try:
@@ -419,8 +433,22 @@ def _read_mat(path: Path, sample_rate):
             records.setdefault(match[1], {})[match[2]] = np.asarray(value).squeeze()
     if records:
         # some CWRU files hold two records; the one named like the file is the file's own
-        stem = re.sub(r"\D", "", path.stem)
-        number = next((r for r in records if stem and int(r) == int(stem)), next(iter(records)))
+        names = [f"X{r}" for r in records]
+        if record is not None:
+            wanted = _record_number(record)
+            number = next((r for r in records if int(r) == wanted), None)
+            if number is None:
+                raise InputError("record", record, f"one of {names} (the records of {path.name})")
+        else:
+            stem = re.sub(r"\D", "", path.stem)
+            number = next((r for r in records if stem and int(r) == int(stem)), None)
+            if number is None and len(records) > 1:
+                raise InputError(
+                    "record",
+                    None,
+                    f"one of {names}: {path.name} holds several records, none named like the file",
+                )
+            number = number or next(iter(records))
         channels = records[number]
         meta["cwru_record"] = f"X{number}"
         rpm = next(
@@ -429,6 +457,8 @@ def _read_mat(path: Path, sample_rate):
         if rpm is not None:
             meta["speed_rpm"] = _scalar(rpm, f"X{number}RPM")
         return channels, rate, meta
+    if record is not None:
+        raise InputError("record", record, f"None: {path.name} holds no CWRU records")
     channels, scalars = dict(nested), {}
     for key, value in variables.items():
         if key in RESERVED or _CWRU_RPM.match(key):
