@@ -247,3 +247,46 @@ def test_a_blank_speed_in_the_labels_is_the_files_own(folder, tmp_path, capsys):
     stored, bare = json.loads(out)["records"]
     assert stored["verdict"] == "outer_race" and stored["error"] is None
     assert bare["verdict"] == "error" and "speed_rpm" in bare["error"]
+
+
+def test_labels_as_spreadsheets_write_them(folder, tmp_path, capsys):
+    """labels.csv with a byte-order mark, semicolons, Windows line ends, headers in other
+    case with spaces, CWRU's fault codes, blank rows, Windows-1252 text and speed "auto"
+    runs; a value with a unit is that record's error naming the column; an unknown fault
+    names the line; the table prints each record's warnings."""
+    from bearinglab.signal import read_signal
+
+    other = tmp_path / "sheet"
+    other.mkdir()
+    for name in ("inner.npz", "noise.npz"):
+        (other / name).symlink_to(folder / name)
+    outer = read_signal(folder / "outer.npz")  # "auto" searches around the stored speed
+    write_signal(other / "outer.npz", Signal(outer.channels, FS, {"speed_rpm": 1750.0}))
+    lines = [
+        "File ; Channel;Sample_Rate_Hz; speed_rpm ;Designation;Fault;note",
+        f"outer.npz;acc;{FS};auto;ER-16K;OR007@6;ext\xe9rieur",
+        f"inner.npz;acc;{FS};1750;ER-16K;IR014;",
+        f"noise.npz;acc;{FS};1750;ER-16K;Normal Baseline;",
+        ";;;;;;",
+    ]
+    text = "\r\n".join(lines) + "\r\n"
+    for encoding in ("utf-8-sig", "cp1252"):
+        (other / "labels.csv").write_bytes(text.encode(encoding))
+        code, out, err = run(capsys, "benchmark", str(other), "--method", "raw", "--json")
+        assert code == 0, err
+        result = json.loads(out)
+        assert result["right"]["raw"] == 3 and result["total"] == 3
+        assert result["records"][0]["measured_rpm"] is not None  # auto: read from the signal
+    (other / "labels.csv").write_text(
+        text.replace("1750;ER-16K;IR014", "1750 rpm;ER-16K;IR014"), encoding="utf-8"
+    )
+    code, out, _ = run(capsys, "benchmark", str(other), "--method", "raw", "--json")
+    inner = json.loads(out)["records"][1]
+    assert code == 0 and inner["verdict"] == "error"
+    assert "speed_rpm = '1750 rpm'" in inner["error"] and "without a unit" in inner["error"]
+    (other / "labels.csv").write_text(text.replace("IR014", "IR014x"), encoding="utf-8")
+    code, _, err = run(capsys, "benchmark", str(other))
+    assert code == 2 and "'IR014x'" in err and "line 3" in err
+    (other / "labels.csv").write_text(text.replace(";1750;", ";1700;"), encoding="utf-8")
+    code, out, _ = run(capsys, "benchmark", str(other), "--method", "raw")
+    assert code == 0 and "inner.npz: the signal shows the shaft at" in " ".join(out.split())

@@ -9,7 +9,7 @@ import typer
 from ..errors import InputError
 from ._app import command_app, console
 from ._inputs import JsonOpt, OptionError, check_path
-from ._output import _emit_json, _table, progress_bar
+from ._output import _emit_json, _table, escape, progress_bar
 
 app = command_app()
 
@@ -109,8 +109,11 @@ def benchmark_command(
             ],
         )
     )
+    for r in out["records"]:
+        for warning in r.get("warnings") or []:
+            console.print(f"[yellow]{escape(r['file'])}: {escape(warning)}[/yellow]")
     errors = [r for r in out["records"] if r["error"]]
     for r in errors:
-        console.print(f"[red]{r['file']}: {r['error']}[/red]")
+        console.print(f"[red]{escape(r['file'])}: {escape(r['error'])}[/red]")
     if html is not None:
         console.print(f"page written to {html}")

@@ -14,7 +14,9 @@ the lines it matched.
 from __future__ import annotations
 
 import csv
+import io
 import math
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -34,8 +36,11 @@ EXPECTED = {
 #: read as spaces): CWRU's "IR", "OR", "B", MFPT's "baseline", "inner race fault" ...
 SPELLINGS = {
     "no fault": "normal",
+    "no fault detected": "normal",
     "none": "normal",
     "baseline": "normal",
+    "normal baseline": "normal",
+    "n": "normal",
     "ir": "inner",
     "inner race": "inner",
     "bpfi": "inner",
@@ -49,14 +54,23 @@ SPELLINGS = {
 }
 
 
+#: CWRU's fault codes: IR007, OR014@6, B021 (the fault's size in mils, the outer race's
+#: clock position).
+CWRU_CODE = re.compile(r"(ir|or|b) ?\d+( ?@ ?\d+)?")
+
+
 def label_fault(text: str) -> str | None:
     """A label's fault as a key of EXPECTED (None when it is none of them).
 
     >>> label_fault("Inner race fault"), label_fault("OR"), label_fault("healthy")
     ('inner', 'outer', 'healthy')
+    >>> label_fault("OR007@6"), label_fault("B021"), label_fault("Normal Baseline")
+    ('outer', 'ball', 'normal')
     """
     words = " ".join(str(text).lower().replace("-", " ").replace("_", " ").split())
     words = words.removesuffix(" fault").removesuffix(" defect")
+    code = CWRU_CODE.fullmatch(words)
+    words = code[1] if code else words
     key = SPELLINGS.get(words, words)
     return key if key in EXPECTED else None
 
@@ -66,24 +80,62 @@ CLASSES = ("no fault detected", "outer_race", "inner_race", "ball", "cage", "com
 
 
 def read_labels(folder) -> list[dict]:
-    """Rows of ``folder/labels.csv`` (InputError when missing or without the columns)."""
+    """Rows of ``folder/labels.csv`` (InputError when missing or without the columns).
+
+    Read as spreadsheets write it: UTF-8 with or without a byte-order mark (else
+    Windows-1252), comma, semicolon or tab separated, headers in any case and with spaces
+    around them; rows with every cell blank are skipped.
+    """
     folder = Path(folder)
     path = folder / "labels.csv"
     if not path.is_file():
         raise InputError("folder", str(folder), "a folder with a labels.csv")
-    with open(path, newline="", encoding="utf-8") as fh:
-        rows = list(csv.DictReader(fh))
+    raw = path.read_bytes()
+    try:
+        text = raw.decode("utf-8-sig")
+    except UnicodeDecodeError:
+        text = raw.decode("cp1252", errors="replace")
+    try:
+        dialect = csv.Sniffer().sniff(text.splitlines()[0] if text else "", delimiters=",;\t")
+    except csv.Error:
+        dialect = csv.excel
+    rows = []
+    for row in csv.DictReader(io.StringIO(text, newline=""), dialect=dialect):
+        row = {
+            key.strip().lower(): (value or "").strip()
+            for key, value in row.items()
+            if isinstance(key, str)
+        }
+        if any(row.values()):
+            rows.append(row)
     need = {"file", "fault"}
     if not rows or not need <= set(rows[0]):
         raise InputError("labels.csv", str(path), f"a header with at least {sorted(need)}")
-    for row in rows:
+    for number, row in enumerate(rows, start=2):
         if label_fault(row["fault"]) is None:
             raise InputError(
-                "labels.csv",
+                "fault",
                 row["fault"],
-                f"faults among {sorted(EXPECTED)} (or {', '.join(sorted(SPELLINGS))})",
+                f"faults among {sorted(EXPECTED)} (or {', '.join(sorted(SPELLINGS))}, or "
+                "CWRU's codes such as IR007, OR007@6, B007)",
+                hint=f"labels.csv line {number}, {row['file']}",
             )
     return rows
+
+
+def _number(row: dict, column: str, what: str) -> float | None:
+    """The number in ``column`` of a labels row (None when blank; InputError naming the
+    column when it is not a number > 0)."""
+    text = row.get(column) or ""
+    if not text:
+        return None
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not (math.isfinite(value) and value > 0):
+        raise InputError(column, text, f"{what}: a number > 0, without a unit")
+    return value
 
 
 def _bearing(row: dict):
@@ -126,25 +178,36 @@ def run_record(folder: str, row: dict, methods: tuple, keep_spectra: bool = True
         "error": None,
     }
     try:
-        fs = float(row["sample_rate_hz"]) if row.get("sample_rate_hz") else None
-        signal = read_signal(Path(folder) / row["file"], sample_rate=fs)
-        channel = (row.get("channel") or "").strip() or None
+        fs = _number(row, "sample_rate_hz", "the sample rate in Hz")
+        record = row.get("record_variable") or None
+        try:
+            signal = read_signal(Path(folder) / row["file"], sample_rate=fs, record=record)
+        except InputError as exc:
+            if exc.parameter != "record":
+                raise
+            raise InputError("record_variable", record, exc.allowed) from None
+        channel = row.get("channel") or None
         if channel is not None and channel not in signal.names:
             channel = next((c for c in signal.names if c.rsplit(".", 1)[-1] == channel), channel)
-        # a blank (or absent) speed: the one the file stores (CWRU XnnnRPM, MFPT rate)
-        text = (row.get("speed_rpm") or "").strip()
-        rpm = float(text) if text else signal.metadata.get("speed_rpm")
+        # a blank (or absent) speed: the one the file stores (CWRU XnnnRPM, MFPT rate);
+        # "auto": the speed the signal shows, within 5 % of the stored one
+        auto = (row.get("speed_rpm") or "").lower() == "auto"
+        rpm = None if auto else _number(row, "speed_rpm", "the shaft speed in rpm or auto")
+        rpm = rpm or signal.metadata.get("speed_rpm")
         if rpm is None:
-            raise InputError("speed_rpm", row["file"], "a speed in labels.csv (the file has none)")
-        speed = float(rpm) * math.pi / 30
-        kin = defect_frequencies(_bearing(row), speed)
+            raise InputError(
+                "speed_rpm", row.get("speed_rpm") or "", "a speed in rpm (the file has none)"
+            )
+        kin = defect_frequencies(_bearing(row), float(rpm) * math.pi / 30)
         runs = (
             {"+".join(methods): methods}
             if len(methods) == 1
             else {**{m: (m,) for m in methods}, "+".join(methods): methods}
         )
         for name, ms in runs.items():
-            d = analyze_signal(signal, None, kin, channel=channel, methods=ms)
+            d = analyze_signal(
+                signal, None, kin, channel=channel, methods=ms, shaft_speed="auto" if auto else None
+            )
             out[name] = d.verdict
             if ms == methods:
                 out["verdict"] = d.verdict
