@@ -57,10 +57,9 @@ def analyze_file(
     from ..signal import read_signal
     from .analysis import analyze_signal
 
-    signal = read_signal(path, sample_rate=sample_rate, record=record)
+    signal = read_signal(path, sample_rate=sample_rate, channel=channel, record=record)
     if channel is not None:
-        signal = read_signal(path, sample_rate=sample_rate, channel=channel, record=record)
-        channel = signal.names[0]
+        channel = signal.names[0]  # as resolved: a struct field path from its last part
     recorded = signal.metadata.get("speed_rpm")
     recorded = (
         float(recorded) * math.pi / 30
