@@ -179,16 +179,16 @@ def run_record(folder: str, row: dict, methods: tuple, keep_spectra: bool = True
     }
     try:
         fs = _number(row, "sample_rate_hz", "the sample rate in Hz")
-        record = row.get("record_variable") or None
+        record, channel = row.get("record_variable") or None, row.get("channel") or None
         try:
-            signal = read_signal(Path(folder) / row["file"], sample_rate=fs, record=record)
+            signal = read_signal(
+                Path(folder) / row["file"], sample_rate=fs, channel=channel, record=record
+            )
         except InputError as exc:
             if exc.parameter != "record":
                 raise
             raise InputError("record_variable", record, exc.allowed) from None
-        channel = row.get("channel") or None
-        if channel is not None and channel not in signal.names:
-            channel = next((c for c in signal.names if c.rsplit(".", 1)[-1] == channel), channel)
+        channel = signal.names[0] if channel is not None else None  # bearing.gs from gs
         # a blank (or absent) speed: the one the file stores (CWRU XnnnRPM, MFPT rate);
         # "auto": the speed the signal shows, within 5 % of the stored one
         auto = (row.get("speed_rpm") or "").lower() == "auto"
