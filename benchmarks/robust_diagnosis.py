@@ -23,6 +23,7 @@ from pathlib import Path
 
 from bearinglab.diagnosis import NO_FAULT, analyze_signal
 from bearinglab.diagnosis.benchmark import EXPECTED, _bearing, label_fault
+from bearinglab.errors import InputError
 from bearinglab.kinematics import defect_frequencies
 from bearinglab.signal import read_signal
 
@@ -40,12 +41,15 @@ VARIANTS = {
 def verdicts(folder: Path, row: dict) -> list[tuple]:
     """(variant, method, verdict) of one labelled record; [] when its channel is absent."""
     fs = float(row["sample_rate_hz"]) if row.get("sample_rate_hz") else None
-    signal = read_signal(folder / row["file"], sample_rate=fs)
-    name = row.get("channel") or signal.names[0]
-    name = next((c for c in signal.names if c.rsplit(".", 1)[-1] == name), None)
-    if name is None:
-        return []
-    x, fs = signal.channel(name), signal.sample_rate
+    try:
+        signal = read_signal(
+            folder / row["file"], sample_rate=fs, channel=row.get("channel") or None
+        )
+    except InputError as exc:
+        if exc.parameter == "channel":
+            return []
+        raise
+    x, fs = signal.channel(signal.names[0]), signal.sample_rate
     rpm = float(row["speed_rpm"]) if row.get("speed_rpm") else signal.metadata["speed_rpm"]
     out = []
     for variant, (part, factor) in VARIANTS.items():
