@@ -145,10 +145,12 @@ def _samples(row, channel=None):
     """(samples, sample rate [Hz]) of a labelled record's channel, as published."""
     from bearinglab.signal import read_signal
 
-    signal = read_signal(REAL / row["file"], sample_rate=float(row["sample_rate_hz"]))
-    name = channel or row["channel"]
-    name = next((c for c in signal.names if c.rsplit(".", 1)[-1] == name), name)
-    return signal.channel(name), signal.sample_rate
+    signal = read_signal(
+        REAL / row["file"],
+        sample_rate=float(row["sample_rate_hz"]),
+        channel=channel or row["channel"],
+    )
+    return signal.channel(signal.names[0]), signal.sample_rate
 
 
 def _kinematics(row, factor=1.0):
