@@ -139,6 +139,7 @@ def test_method_all_and_repeated(folder, capsys):
         (["--speed-rpm", "1750", "--tolerance", "ball"], "--tolerance"),
         (["--speed-rpm", "1750", "--sample-rate-hz", "150"], "--sample-rate-hz"),  # BPFO > Nyquist
         (["--speed-rpm", "auto"], "--speed-rpm"),  # no recorded speed to search round
+        (["--speed-rpm", "1750", "--record", "X099"], "--record"),  # an .npz holds no records
     ],
 )
 def test_analyze_errors_are_one_line(folder, capsys, tmp_path, args, flag):
