@@ -117,9 +117,15 @@ def test_a_ball_series_lists_its_cage_rate_line_as_ftf():
     assert "its harmonics alone or with their first sidebands" in d.reason
 
 
-#: CWRU records without a fan-end (FE) or base (BA) channel: the 0.028 in. faults (NTN
-#: bearing, 3000 series) have DE only; the healthy 97 has no base accelerometer.
-_NO_CHANNEL = {"FE": {"3001.mat", "3005.mat"}, "BA": {"97.mat", "3001.mat", "3005.mat"}}
+def _has_channel(row, channel: str) -> bool:
+    """Whether the labelled file holds ``channel``, as its variables say (some CWRU files
+    have the drive end only - the 0.028 in. faults of the 3000 series - and the healthy
+    97 has no base accelerometer): read from the file, so that a new file is tested
+    with the channels it has."""
+    import scipy.io
+
+    names = (name for name, _, _ in scipy.io.whosmat(REAL / row["file"]))
+    return any(name.endswith(f"_{channel}_time") for name in names)
 
 
 @pytest.mark.parametrize(
@@ -128,7 +134,7 @@ _NO_CHANNEL = {"FE": {"3001.mat", "3005.mat"}, "BA": {"97.mat", "3001.mat", "300
         pytest.param(dict(r, channel=ch), id=f"{r['file']} {ch} [{r['fault']}]")
         for ch in ("FE", "BA")
         for r in _rows()
-        if r["dataset"] == "CWRU" and Path(r["file"]).name not in _NO_CHANNEL[ch]
+        if r["dataset"] == "CWRU" and _has_channel(r, ch)
     ],
 )
 def test_other_accelerometers_get_no_wrong_fault(row):
@@ -227,7 +233,7 @@ def test_record_halves_get_no_wrong_fault(row, half):
     [
         pytest.param(r, id=f"{r['file']} FE [{r['fault']} at the drive end]")
         for r in _rows()
-        if r["dataset"] == "CWRU" and Path(r["file"]).name not in _NO_CHANNEL["FE"]
+        if r["dataset"] == "CWRU" and _has_channel(r, "FE")
     ],
 )
 def test_the_healthy_fan_end_bearing_gets_no_fault(row):
