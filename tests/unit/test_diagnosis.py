@@ -337,6 +337,41 @@ def test_the_harmonic_gate_tries_the_harmonics_alone_and_with_first_sidebands():
     assert decades(nested.harmonic_log_p) > decades(alone.harmonic_log_p) + 1
 
 
+def test_the_carrier_gated_harmonic_test_counts_sidebands_beside_shown_carriers_only():
+    # an outer-race defect loaded through a shaft-rate modulation (off the load line, or a
+    # rotating load): carriers with first sidebands; the load is never negative, so no
+    # sideband of a real series stands without its carrier
+    rng = np.random.default_rng(3)
+    args = (0.5, 40.0, 100.0, 0.02, 0.02, 6, 900.0)
+    modulated = rng.chisquare(40, 2000) / 40
+    for n in (1, 2):
+        for k in (-1, 0, 1):
+            modulated[round((n * 100.0 + k * 7.0) / 0.5)] = 8.0
+    alone = series_test(modulated, *args, modulation=7.0, orders=2, gate_orders=0)
+    gated = series_test(
+        modulated, *args, modulation=7.0, orders=2, gate_orders=1, gate_carriers=True
+    )
+    assert decades(gated.harmonic_log_p) > decades(alone.harmonic_log_p) + 1
+    # the same sidebands with no carrier between them (stray lines at n f +- f_m): they
+    # count when carriers are not asked for, never when they are
+    stray = modulated.copy()
+    for n in (1, 2):
+        stray[round(n * 100.0 / 0.5) - 1 : round(n * 100.0 / 0.5) + 2] = 1.0
+    free = series_test(stray, *args, modulation=7.0, orders=2, gate_orders=1)
+    gated = series_test(stray, *args, modulation=7.0, orders=2, gate_orders=1, gate_carriers=True)
+    alone = series_test(stray, *args, modulation=7.0, orders=2, gate_orders=0)
+    assert decades(free.harmonic_log_p) > decades(gated.harmonic_log_p) + 1
+    assert gated.harmonic_log_p == pytest.approx(alone.harmonic_log_p, abs=1e-9)
+
+
+def test_the_outer_race_gate_counts_first_sidebands_beside_its_carriers():
+    from bearinglab.diagnosis.families import families, tolerances
+
+    rates = {"shaft": 30.0, "ftf": 12.0, "bpfo": 107.0, "bpfi": 162.0, "ball_defect": 141.0}
+    outer = next(f for f in families(rates, tolerances()) if f.name == "outer_race")
+    assert (outer.gate_orders, outer.gate_carriers) == (1, True)
+
+
 def test_outer_race_with_twice_shaft_sidebands_only(kin):
     # an outer-race defect away from the load line under a rotating load: the load on it
     # follows the shaft angle through a load zone shorter than a turn, so the impacts

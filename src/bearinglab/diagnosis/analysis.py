@@ -17,12 +17,20 @@ from ..errors import InputError
 from ..geometry import BallBearing
 from ..kinematics import DefectFrequencies, defect_frequencies
 from ..signal import EnvelopeSpectrum, Signal
-from .families import FAMILIES, FREQUENCY, GATE_ORDERS, SIDEBANDS, families, tolerances
+from .families import (
+    FAMILIES,
+    FREQUENCY,
+    GATE_CARRIERS,
+    GATE_ORDERS,
+    SIDEBANDS,
+    families,
+    tolerances,
+)
 from .methods import DESCRIPTIONS, METHODS, method_spectrum, parse_methods
 from .result import Diagnosis
 from .speed import SEARCH, shaft_frequency
-from .statistics import SUPPORT_ALPHA, decades
-from .verdict import LINE_ALPHA, NO_FAULT, decide, discrete_mask, label_peaks, significance, with_z
+from .statistics import LINE_ALPHA, SUPPORT_ALPHA, decades
+from .verdict import NO_FAULT, decide, discrete_mask, label_peaks, significance, with_z
 
 #: Channels preferred when none is named: the vertical (load-direction) acceleration of
 #: a simulated record, the drive-end accelerometer of a CWRU record, MFPT's ``gs``.
@@ -479,8 +487,13 @@ def _tolerances(overrides):
 
 
 def _gated(family: str) -> str:
-    """What the family's harmonic test counts with the harmonics (GATE_ORDERS)."""
-    return "alone or with their first sidebands" if GATE_ORDERS[family] else "alone"
+    """What the family's harmonic test counts with the harmonics (GATE_ORDERS,
+    GATE_CARRIERS)."""
+    if not GATE_ORDERS[family]:
+        return "alone"
+    if GATE_CARRIERS[family]:
+        return "alone or with the first sidebands of those that show"
+    return "alone or with their first sidebands"
 
 
 def _reason(faults, table, decision, pfa) -> str:

@@ -52,7 +52,10 @@ The test of a fault family (outer race, inner race, ball, cage):
    stray lines, e.g. BPFO as a ball line's second cage sideband; the modulation's own
    lines never count here, FTF lines alone are no ball fault) - for ball and inner-race
    faults alone or with their first sidebands, since the load zone modulates those
-   defects deeply (:data:`bearinglab.diagnosis.families.GATE_ORDERS`), by how much is
+   defects deeply (:data:`bearinglab.diagnosis.families.GATE_ORDERS`), and for the outer
+   race alone or with the first sidebands of the carriers that show (a defect away from
+   the load line, or under a rotating load; its load is never negative, so that no
+   sideband exceeds its carrier: ``gate_carriers``), by how much is
    not known beforehand: nested as the templates are, at the best fundamental whichever
    template won, the better of the two times 2 (Bonferroni; 1 where no sideband can be
    read, the two sets of lines then being one; CWRU 3005, ball, shows 1, 2, 3 x 2 BSF
@@ -84,6 +87,9 @@ FLOOR_BINS = 61
 LINE_BINS = 3
 #: Level the family must still reach without its strongest line [-].
 SUPPORT_ALPHA = 0.01
+#: Level at which a single line shows: a line of an accepted family is listed at it, and
+#: a carrier must reach it for its sidebands to count in a carrier-gated harmonic test [-].
+LINE_ALPHA = 0.01
 #: Smallest p-value carried in the arithmetic (keeps logarithms finite).
 TINY = 1e-300
 
@@ -279,6 +285,7 @@ def series_test(
     valid: np.ndarray | None = None,
     gate_orders: int = 0,
     bottom: float = 0.0,
+    gate_carriers: bool = False,
 ) -> SeriesTest:
     """Significance of the harmonic series n f' (n = 1..``harmonics``) with its sidebands
     n f' +- k ``modulation`` and the modulation's lines k ``modulation``
@@ -313,6 +320,9 @@ def series_test(
     bottom : float
         Lowest frequency at which a line is sought [Hz]: the reference of each line's
         p-value starts there (:func:`line_logp`).
+    gate_carriers : bool
+        Count a sideband in ``harmonic_log_p`` only where its carrier (the harmonic it
+        flanks) shows at LINE_ALPHA.
 
     Returns
     -------
@@ -395,6 +405,13 @@ def series_test(
     # fundamental whichever template won: nested as the templates are (the depth of
     # modulation is unknown), Bonferroni over the distinct sets of lines
     own = readable[best] & (n_arr >= 1)
+    if gate_carriers:
+        # a sideband counts only beside a carrier that shows: the load that modulates a
+        # fixed defect's impacts is never negative, and the Fourier coefficients of a
+        # non-negative function are at most its mean (|c_k| <= c_0), so no sideband of a
+        # real series stands without its carrier (stray lines at n f +- k f_m do)
+        shown = n_arr[own & (k_arr == 0) & (logp[best] < math.log(LINE_ALPHA))]
+        own &= (k_arr == 0) | np.isin(n_arr, shown)
     gates = {tuple(np.flatnonzero(own & (np.abs(k_arr) <= d))) for d in range(int(gate_orders) + 1)}
     gates = [float(fisher_logp(logp[best][list(g)])) for g in gates if g]
     harmonic = min(0.0, log_m + math.log(len(gates)) + min(gates)) if gates else 0.0

@@ -32,15 +32,13 @@ import math
 import numpy as np
 
 from .families import FREQUENCY, SIDEBANDS, Family
-from .statistics import SUPPORT_ALPHA, decades, normalised, series_test
+from .statistics import LINE_ALPHA, SUPPORT_ALPHA, decades, normalised, series_test
 
 #: Verdict when no family passes.
 NO_FAULT = "no fault detected"
 #: Level the ball series must reach beside a significant cage-rate series for the verdict
 #: to be "ball" rather than "cage" [-] (the cage series already shows the periodicity).
 BALL_GIVEN_CAGE = 0.05
-#: Level at which a line of an accepted family is listed as one of its lines [-].
-LINE_ALPHA = 0.01
 
 
 #: Widest mask either side of a line [bins].
@@ -125,6 +123,7 @@ def test_all(
                 valid[spec.method],
                 fam.gate_orders,
                 bottom,
+                fam.gate_carriers,
             )
     return out
 
