@@ -234,6 +234,7 @@ DIMENSIONLESS: dict[str, str] = {
     "speed": "the speed given, found in the signal and used",
     "harmonics_found": "shaft harmonics found",
     "sub_multiple": "k when the shaft series is also one at 1/k of the speed (or null)",
+    "confirmed": "true when the signal's shaft series confirms the speed (null: not checked)",
     "defects": "the simulated defects",
     "location": "outer, inner or ball",
     "stats": "integrator statistics",

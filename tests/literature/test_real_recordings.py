@@ -259,3 +259,27 @@ def test_the_healthy_fan_end_bearing_gets_no_fault(row):
     fan_end = bearing_from_designation("6203-2RS")[0]
     kin = defect_frequencies(fan_end, float(row["speed_rpm"]) * math.pi / 30)
     assert analyze_signal(x, fs, kin).verdict == NO_FAULT
+
+
+@pytest.mark.parametrize(
+    "file, declared, way",
+    [
+        ("cwru/normal_48k/97.mat", 12000.0, "4 times too low"),
+        ("cwru/12k_DE/130.mat", 48000.0, "4 times too high"),
+        ("cwru/12k_DE/130.mat", 3000.0, "4 times too low"),
+    ],
+)
+def test_a_sample_rate_given_4_times_wrong_names_no_fault_and_says_which_way(file, declared, way):
+    """A record read at 4 times or a quarter of its sample rate: every line of the record
+    reads 4 times too high or too low, so the shaft series near the speed is missing (a
+    series stands at 4 x it) or is the 4th harmonic of the real shaft (a series stands at
+    1/4 of it). No fault is named at a speed the signal contradicts, and the warning says
+    which way the rate is off (before issue 21 the 12 kHz 130 read at 48 kHz got "no
+    fault detected" with only "no shaft line found", and the warning for 97 read at 12
+    kHz said a rate too low reads frequencies too high)."""
+    row = next((r for r in _rows() if r["file"] == file), None)
+    if row is None:
+        pytest.skip(f"{file} is not in shared/data/real")
+    d = analyze_file(REAL / file, _bearing(row), channel=row["channel"], sample_rate=declared)
+    assert d.verdict == NO_FAULT and d.speed["confirmed"] is False
+    assert any(f"sample rate given may be {way}" in w for w in d.warnings)

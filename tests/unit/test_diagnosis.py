@@ -203,6 +203,11 @@ def test_speed_check_and_auto(kin, er16k):
     wrong = defect_frequencies(er16k, 1.03 * SPEED)
     d = analyze_signal(x, FS, wrong, methods="raw")
     assert any("rpm" in w and "from the given" in w for w in d.warnings)
+    # ... and, the shaft series being unambiguous, the diagnosis rests on the speed shown
+    assert d.speed["source"] == "signal" and d.speed["confirmed"] is True
+    assert d.speed["used_rpm"] == pytest.approx(1750.0, rel=2e-3)
+    assert d.verdict == "outer_race"
+    assert any("uses the speed the signal shows" in w for w in d.warnings)
     # auto: the speed the signal shows is used
     d = analyze_signal(x, FS, wrong, methods="raw", shaft_speed="auto")
     assert d.speed["source"] == "signal"
@@ -217,6 +222,44 @@ def test_speed_check_and_auto(kin, er16k):
         speed_range=(1500 * math.pi / 30, 1900 * math.pi / 30),
     )
     assert d.speed["used_rpm"] == pytest.approx(1750.0, rel=2e-3)
+
+
+def test_a_sample_rate_given_4_times_wrong_is_named_with_its_direction(kin):
+    x = impacts(kin.hz("bpfo"), seconds=2.0, jitter=0.01, shaft_hz=kin.shaft_hz)
+    # declared 4 x too high: every line reads 4 x too high, none stands near the speed
+    d = analyze_signal(x, 4 * FS, kin, methods="raw")
+    assert d.verdict == NO_FAULT and d.speed["confirmed"] is False
+    (warning,) = [w for w in d.warnings if "shaft" in w]
+    assert "4 x it" in warning and "4 times too high" in warning
+    assert "does not confirm the speed given" in d.reason
+    # declared 4 x too low: the lines near the speed are the 4th harmonic of a shaft
+    # whose harmonics reach far (looseness; a healthy machine, 97.mat read at 12 kHz)
+    t = np.arange(int(8 * FS)) / FS
+    slow = np.random.default_rng(3).standard_normal(t.size)
+    slow += sum(0.3 * np.sin(2 * np.pi * k * kin.shaft_hz / 4 * t) for k in range(1, 25))
+    d = analyze_signal(slow, FS, kin, methods="raw")
+    assert d.verdict == NO_FAULT
+    assert d.speed["confirmed"] is False
+    (warning,) = [w for w in d.warnings if "1/4 of it" in w]
+    assert "may be 4 times too low (every frequency then reads 4 times too low)" in warning
+
+
+def test_no_sub_multiple_warning_when_the_fault_confirms_the_speed(kin):
+    # shaft lines at 1, 2, 3 x shaft and at the half orders (a sub-harmonic rub, or a
+    # belt): the shaft series is also one at half the speed, but the outer-race series
+    # sits where the given speed puts it
+    t = np.arange(int(4 * FS)) / FS
+    half = sum(0.4 / k * np.sin(np.pi * k * kin.shaft_hz * t) for k in (1, 3, 5, 7, 9))
+    x = impacts(kin.hz("bpfo"), seconds=4.0, jitter=0.01, shaft_hz=kin.shaft_hz) + half
+    d = analyze_signal(x, FS, kin, methods="raw")
+    assert d.speed["sub_multiple"] == 2
+    assert d.verdict == "outer_race" and d.speed["confirmed"] is True
+    assert not any("1/2 of it" in w for w in d.warnings)
+    quiet = np.random.default_rng(2).standard_normal(t.size) * 0.2
+    quiet += sum(0.5 / k * np.sin(2 * np.pi * k * kin.shaft_hz * t) for k in (1, 2, 3)) + half
+    d = analyze_signal(quiet, FS, kin, methods="raw")
+    assert d.verdict == NO_FAULT and d.speed["confirmed"] is False
+    assert any("1/2 of it" in w for w in d.warnings)
 
 
 def test_simulated_records_default_to_the_raw_envelope(er16k):

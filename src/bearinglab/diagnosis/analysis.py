@@ -28,7 +28,7 @@ from .families import (
 )
 from .methods import DESCRIPTIONS, METHODS, method_spectrum, parse_methods
 from .result import Diagnosis
-from .speed import SEARCH, shaft_frequency
+from .speed import SEARCH, shaft_frequency, shaft_multiple
 from .statistics import LINE_ALPHA, SUPPORT_ALPHA, decades
 from .verdict import NO_FAULT, decide, discrete_mask, label_peaks, significance, with_z
 
@@ -65,6 +65,9 @@ COARSE_CAGE_REVOLUTIONS = 10.0
 RESOLUTION_FTF = 0.1
 #: Speed disagreement that is warned about [-, fraction]: the race lines' tolerance.
 SPEED_WARNING = 0.02
+#: Faults whose series confirm a speed the shaft series puts in doubt (their lines sit
+#: where that speed puts them).
+SPEED_CONFIRMING = frozenset({"outer_race", "inner_race", "ball"})
 
 
 def _samples(signal_or_array, sample_rate, channel):
@@ -154,6 +157,7 @@ def _speed(frequencies, shaft_speed, speed_range, x, fs, warnings):
         raise InputError("speed_range", speed_range, f"speeds below Nyquist ({fs / 2:g} Hz)")
     found = shaft_frequency(x, fs, low, high)
     record = {"given_rpm": None if nominal is None else nominal * 30 / math.pi, **found.to_dict()}
+    doubt = None  # why the signal's shaft series points away from the speed given
     if auto:
         if found.frequency is None:
             raise InputError(
@@ -166,33 +170,68 @@ def _speed(frequencies, shaft_speed, speed_range, x, fs, warnings):
         used, record["source"] = 2 * math.pi * found.frequency, "signal"
     else:
         used, record["source"] = nominal, "given"
+        given_rpm = nominal * 30 / math.pi
         if found.frequency is None:
             where = (
-                f"within {100 * SEARCH:g} % of the given {nominal * 30 / math.pi:.6g} rpm"
+                f"within {100 * SEARCH:g} % of the given {given_rpm:.6g} rpm"
                 if speed_range is None
                 else f"between {60 * low:.6g} and {60 * high:.6g} rpm"
             )
-            warnings.append(f"no shaft line found {where}: the speed is not checked")
+            above = shaft_multiple(x, fs, nominal / (2 * math.pi))
+            if above is None:
+                warnings.append(f"no shaft line found {where}: the speed is not checked")
+            else:
+                k, f = above
+                doubt = (
+                    f"no shaft line found {where}, but a shaft series at {k} x it "
+                    f"({60 * f:.6g} rpm), and no fault's lines confirm the given speed: the "
+                    f"sample rate given may be {k} times too high (every frequency then "
+                    f"reads {k} times too high) or the speed {k} times too low"
+                )
         elif found.sub_multiple:
             k = found.sub_multiple
+            doubt = (
+                f"the shaft series near {given_rpm:.6g} rpm is also a series at 1/{k} of "
+                f"it ({60 * found.frequency / k:.6g} rpm), and no fault's lines confirm the "
+                f"given speed: the lines may be harmonic {k} of the real shaft - the sample "
+                f"rate given may be {k} times too low (every frequency then reads {k} times "
+                f"too low) or the speed {k} times too high"
+            )
+        elif _contradicts(found, nominal):
+            # the signal's own shaft series, unambiguous and off by more than the race
+            # lines' tolerance: defect lines read at the given speed would be read in the
+            # wrong place (a record that stores 1732 rpm but runs at 1774 rpm was called
+            # "outer race" from inner-race harmonics), so the speed shown is used
+            used, record["source"] = 2 * math.pi * found.frequency, "signal"
             warnings.append(
-                f"the shaft series near {nominal * 30 / math.pi:.6g} rpm is also a "
-                f"series at 1/{k} of it ({60 * found.frequency / k:.6g} rpm): "
-                f"the lines may be harmonic {k} of the real shaft - check "
-                f"the speed and the sample rate (a rate {k} times too low reads "
-                f"every frequency {k} times too high)"
+                f"the signal shows the shaft at {60 * found.frequency:.6g} rpm "
+                f"({found.harmonics} harmonics), "
+                f"{100 * (found.frequency / (nominal / (2 * math.pi)) - 1):+.1f} % from the "
+                f"given {given_rpm:.6g} rpm (tolerance {100 * SPEED_WARNING:g} %): the "
+                "diagnosis uses the speed the signal shows - check the speed and the "
+                "sample rate"
             )
         elif abs(found.frequency / (nominal / (2 * math.pi)) - 1) > SPEED_WARNING:
             warnings.append(
                 f"the signal shows the shaft at {60 * found.frequency:.6g} rpm, "
                 f"{100 * (found.frequency / (nominal / (2 * math.pi)) - 1):+.1f} % "
-                f"from the given {nominal * 30 / math.pi:.6g} rpm (tolerance "
+                f"from the given {given_rpm:.6g} rpm (tolerance "
                 f"{100 * SPEED_WARNING:g} %): check the speed and the sample rate"
             )
     record["used_rpm"] = used * 30 / math.pi
     kin = defect_frequencies(bearing, used, outer_rotating=outer, contact_angle=alpha)
     measured = found.frequency if found.frequency is not None else kin.shaft_hz
-    return kin, record, measured
+    # True: the signal's shaft series confirms the speed used; None: no shaft series to
+    # check it; a doubt is settled by the verdict (SPEED_CONFIRMING)
+    record["confirmed"] = None if found.frequency is None and doubt is None else doubt is None
+    return kin, record, measured, doubt
+
+
+def _contradicts(found, nominal: float) -> bool:
+    """Whether the shaft series found is unambiguous and off the nominal speed [rad/s] by
+    more than SPEED_WARNING."""
+    off = abs(found.frequency / (nominal / (2 * math.pi)) - 1)
+    return off > SPEED_WARNING and found.unambiguous
 
 
 def _checks(kin, n, fs, max_frequency, harmonics, warnings):
@@ -354,7 +393,7 @@ def analyze_signal(
             f"the file stores a sample rate of {stored:g} Hz and {fs:g} Hz was given: every "
             f"frequency of the record reads {fs / stored:.4g} times what the file says"
         )
-    kin, speed, shaft_hz = _speed(frequencies, shaft_speed, speed_range, x, fs, warnings)
+    kin, speed, shaft_hz, doubt = _speed(frequencies, shaft_speed, speed_range, x, fs, warnings)
     nyquist = fs / 2
     freqs = {name: kin.hz(name) for name in ("shaft", "ftf", "bpfo", "bpfi", "ball_defect")}
     largest = max(freqs.values())
@@ -420,7 +459,16 @@ def analyze_signal(
     decision = decide(
         spectra, fams, valid, max_frequency, harmonics, pfa, (rates["shaft"], rates["ftf"])
     )
-    faults = tuple(decision["faults"])
+    faults = withdrawn = tuple(decision["faults"])
+    if doubt is not None:
+        # a race or ball series sits where the given speed puts it: that confirms it; else
+        # the verdict cannot rest on that speed, and a cage series (low lines, where a
+        # real shaft's unmasked harmonics then stand) is not called
+        speed["confirmed"] = bool(SPEED_CONFIRMING & set(faults))
+        if not speed["confirmed"]:
+            warnings.append(doubt)
+            withdrawn, faults = faults, ()
+            decision = {**decision, "faults": [], "modulation": []}
     verdict = (
         NO_FAULT
         if not faults
@@ -459,6 +507,16 @@ def analyze_signal(
     shown = next(s for s in spectra if s.method == shown_method)
     peaks = label_peaks(shown, decision, fams, masked, count, max_frequency)
     reason = _reason(faults, table, decision, pfa)
+    if speed["confirmed"] is False:
+        reason = (
+            "no fault named: the signal's shaft series does not confirm the speed given, "
+            "and no race or ball series sits where that speed puts it (see the warnings)"
+            + "".join(
+                f"; {f} passed at that speed ({table[f]['significance']:.3g} by "
+                f"{table[f]['method']}), not called"
+                for f in withdrawn
+            )
+        )
     return Diagnosis(
         verdict=verdict,
         faults=faults,

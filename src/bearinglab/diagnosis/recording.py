@@ -94,6 +94,6 @@ def analyze_file(
         speed_range=speed_range,
         **options,
     )
-    if not auto and shaft_speed is None:
+    if not auto and shaft_speed is None and diagnosis.speed["source"] == "given":
         diagnosis.speed["source"] = "file"
     return diagnosis
