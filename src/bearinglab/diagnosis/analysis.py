@@ -17,6 +17,7 @@ from ..errors import InputError
 from ..geometry import BallBearing
 from ..kinematics import DefectFrequencies, defect_frequencies
 from ..signal import EnvelopeSpectrum, Signal
+from ..signal.quality import check_channel
 from .families import (
     FAMILIES,
     FREQUENCY,
@@ -30,7 +31,15 @@ from .methods import DESCRIPTIONS, METHODS, method_spectrum, parse_methods
 from .result import Diagnosis
 from .speed import SEARCH, shaft_frequency, shaft_multiple
 from .statistics import LINE_ALPHA, SUPPORT_ALPHA, decades
-from .verdict import NO_FAULT, decide, discrete_mask, label_peaks, significance, with_z
+from .verdict import (
+    NO_FAULT,
+    decide,
+    discrete_mask,
+    label_peaks,
+    significance,
+    stray_series,
+    with_z,
+)
 
 #: Channels preferred when none is named: the vertical (load-direction) acceleration of
 #: a simulated record, the drive-end accelerometer of a CWRU record, MFPT's ``gs``.
@@ -386,7 +395,8 @@ def analyze_signal(
         raise InputError("count", count, "an integer >= 1")
     supply = _positive("supply_frequency", supply_frequency, "a frequency > 0 Hz")
     mesh = _positive("mesh_frequency", mesh_frequency, "a frequency > 0 Hz")
-    warnings: list[str] = []
+    warnings: list[str] = list(check_channel(x, channel or "the array", "signal_or_array"))
+    warnings += getattr(signal_or_array, "metadata", {}).get("reading_notes", [])
     stored = getattr(signal_or_array, "metadata", {}).get("stored_sample_rate_hz")
     if stored is not None and abs(stored - fs) > 1e-9 * fs:
         warnings.append(
@@ -445,8 +455,13 @@ def analyze_signal(
                 f"a frequency >= {3.0 * res:.3g} Hz, 3 x the envelope spectrum's resolution",
                 "its harmonics, masked with their neighbouring bins, would cover the spectrum",
             )
+    # a simulated record of a bearing without a defect names its varying-compliance rate
+    # (dynamics.simulate): the model's own lines, masked as a machine's are
+    compliance = getattr(signal_or_array, "metadata", {}).get("varying_compliance_hz")
     valid, masked = discrete_mask(
-        spectra, {"shaft": shaft_hz, "supply": supply, "mesh": mesh}, max_frequency
+        spectra,
+        {"shaft": shaft_hz, "supply": supply, "mesh": mesh, "varying_compliance": compliance},
+        max_frequency,
     )
     searched = valid[spectra[0].method][1 : int(max_frequency / res) + 1]
     covered = 1.0 - float(np.mean(searched)) if (supply or mesh) else 0.0
@@ -474,6 +489,8 @@ def analyze_signal(
         if not faults
         else (faults[0] if len(faults) == 1 else "compound: " + " + ".join(faults))
     )
+    if not faults and speed["confirmed"] is not False:
+        warnings += _stray(spectra, fams, valid, max_frequency, pfa, freqs, shaft_hz)
     table = {}
     for fam in fams:
         method, test = decision["tests"][fam.name]
@@ -538,6 +555,29 @@ def analyze_signal(
         reason=reason,
         modulation=tuple(decision["modulation"]),
     )
+
+
+def _stray(spectra, fams, valid, max_frequency, pfa, freqs, shaft) -> list[str]:
+    """A warning for the strongest harmonic series that no family explains (the bearing
+    or the speed given may be wrong), at the verdict's false-alarm probability."""
+    found = [
+        (s, hit)
+        for s in spectra
+        if (hit := stray_series(s, fams, valid[s.method], max_frequency, pfa / len(spectra), shaft))
+    ]
+    if not found:
+        return []
+    spec, (f, test, log_p) = min(found, key=lambda sh: sh[1][2])
+    shown = sorted(ln.n for ln in test.lines if ln.log_p < math.log(LINE_ALPHA))
+    kinematic = ", ".join(
+        f"{name.upper()} {freqs[name]:.5g} Hz" for name in ("bpfo", "bpfi", "ball_defect", "ftf")
+    )
+    return [
+        f"a harmonic series at {f:.5g} Hz (harmonics {shown}, significance "
+        f"{decades(log_p):.3g} by {spec.method}) stands in the envelope spectrum, and none of "
+        f"the bearing's frequencies at the speed used explains it ({kinematic}): check the "
+        "bearing and the speed"
+    ]
 
 
 def _tolerances(overrides):

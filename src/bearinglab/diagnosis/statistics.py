@@ -398,6 +398,8 @@ def series_test(
     log_m = math.log(candidates) + log_k  # Bonferroni: scan x templates
     log_p = min(0.0, log_p + log_k)
     row = use[best]
+    if not row.any():  # every row reads nothing (all p = 1): the first has no lines
+        return SeriesTest(0.0, 0.0, 0.0, fundamental, 0.0, (), 0)
     lps = logp[best][row]
     rest = np.delete(lps, int(np.argmin(lps)))
     support = min(0.0, log_m + float(fisher_logp(rest))) if rest.size else 0.0

@@ -223,6 +223,79 @@ def decide(
     return {"faults": accepted, "tests": best, "alpha": alpha, "modulation": modulation}
 
 
+#: Fewest harmonics a fundamental must show to count as a stray series [-].
+STRAY_HARMONICS = 3
+#: Series explained by a family that are masked before an octave is given up [-].
+STRAY_TRIES = 3
+
+
+def stray_series(
+    spec, fams: list[Family], valid: np.ndarray, max_frequency: float, level, shaft=None
+):
+    """The strongest harmonic series of ``spec`` that none of ``fams`` explains, or None.
+
+    A record analysed with the wrong bearing, or at the wrong speed, hides its fault: the
+    families read their lines where there are none. This asks the envelope spectrum
+    blindly for any harmonic series (harmonics alone, read as the families' are, the
+    machine's lines masked: ``valid``) over fundamentals from the lowest family line to a
+    third of the search limit, in octaves, each octave's p-value multiplied by the number
+    of octaves (Bonferroni). A series whose fundamental, or its double or half, lies in a
+    family's window is the family's (it failed that family's own test), and one within 2 %
+    of 1/4 .. 2 x the ``shaft`` rate [Hz] the machine's: its lines are masked and the
+    octave is searched again (up to STRAY_TRIES times). Returns ``(fundamental [Hz],
+    SeriesTest, ln p)`` of the most significant series that passes ``level`` and both
+    gates with at least STRAY_HARMONICS harmonics at LINE_ALPHA, its first and second
+    among them (odd orders alone are a ladder of sidebands), else None.
+    """
+    res = spec.resolution
+    low = min(f.lowest for f in fams)
+    octaves = []
+    while low < max_frequency / STRAY_HARMONICS:
+        octaves.append((low, min(2 * low, max_frequency / STRAY_HARMONICS)))
+        low *= 2
+    log_bands = math.log(max(len(octaves), 1))
+
+    # (name, frequency, below, above) of what explains a series: the families, and the
+    # shaft (whose harmonics are masked, but not the leakage beside them that a series
+    # drifting off them reads) at its sub- and low multiples
+    known = [(f.frequency, f.below, f.above, (0.5, 1.0, 2.0)) for f in fams]
+    if shaft:
+        known.append((shaft, 0.02, 0.02, (0.25, 1 / 3, 0.5, 1.0, 2.0)))
+
+    def explained(f: float) -> bool:
+        return any(
+            fk * (1 - below) <= f * k <= fk * (1 + above)
+            for fk, below, above, multiples in known
+            for k in multiples
+        )
+
+    best = None
+    for lo, hi in octaves:
+        mid, free = 0.5 * (lo + hi), valid.copy()
+        for _ in range(STRAY_TRIES):
+            test = series_test(
+                spec.z, res, spec.nu, mid, 1 - lo / mid, hi / mid - 1, 8, max_frequency, valid=free
+            )
+            if not test.lines or not explained(test.fundamental_hz):
+                break
+            for line in test.lines:
+                mask_line(free, spec.z, int(round(line.frequency_hz / res)))
+        shown = {ln.n for ln in test.lines if ln.log_p < math.log(LINE_ALPHA)}
+        log_p = test.log_p + log_bands
+        if (
+            test.lines
+            and not explained(test.fundamental_hz)
+            and log_p < math.log(level)
+            and test.harmonic_log_p + log_bands < math.log(SUPPORT_ALPHA)
+            and test.support_log_p + log_bands < math.log(SUPPORT_ALPHA)
+            and len(shown) >= STRAY_HARMONICS
+            and {1, 2} <= shown  # a series, not a ladder of sidebands (odd orders only)
+            and (best is None or log_p < best[2])
+        ):
+            best = (test.fundamental_hz, test, log_p)
+    return best
+
+
 def with_z(spec):
     """The MethodSpectrum with its normalised power ``z`` [-] filled in."""
     import dataclasses

@@ -289,6 +289,7 @@ def simulate(
         seed,
         sample_rate,
         notes,
+        perfect=not defects and imperfections is None,
     )
     return dataclasses.replace(sim, imperfections=imperfections)
 
@@ -350,6 +351,7 @@ def _result(
     seed,
     sample_rate,
     notes=(),
+    perfect=False,
 ):
     accelerations = (
         _kernels.rigid_accelerations if model == "rigid" else _slip_kernels.slip_accelerations
@@ -398,6 +400,19 @@ def _result(
         "defects": [d.to_dict() for d in defects],
         "start_time_s": float(t_out[0]),
     }
+    if perfect:
+        # a bearing without a defect or a form error under a radial load still vibrates at
+        # the rate the balls pass the load zone, Z x the cage's: its stiffness varies as
+        # they do (varying compliance; Sunnersjo C. S., JSV 58 (1978) 363-373). Its lines
+        # are the model's, not a fault's: the diagnosis masks them as a machine line (form
+        # errors put lines of their own there: outer-race waviness of order kZ +- 1 at
+        # k x BPFO)
+        cage = extra["cage_angle"] if "cage_angle" in extra else None
+        ratio = 1.0
+        if cage is not None:
+            span = t_out[-1] - t_out[0]
+            ratio = float((cage[-1] - cage[0]) / span / (kin.orders["ftf"] * kin.shaft_speed))
+        metadata["varying_compliance_hz"] = float(kin.hz("bpfo") * ratio)
     signal = Signal(channels, sample_rate, metadata)
     return Simulation(
         model, bearing, condition, tuple(defects), signal, kin, params, stats, **extra

@@ -6,7 +6,10 @@ The format follows the file name's suffix:
   (the metadata as a JSON string); everything round-trips.
 - ``.csv``: a header row of channel names; a time column (``time_s``, ``time``, ``t``,
   ``time [s]``, ``time_ms``..., in any position) gives the sample rate (n - 1 intervals
-  over the time span), otherwise it must be passed. Metadata are not stored.
+  over the time span), otherwise it must be passed. Metadata are not stored. A file whose
+  first row is all numbers has no header: its columns are ``column_1``, ``column_2``...,
+  the first that rises at every row is the time in s, and both are said in
+  ``metadata["reading_notes"]`` (which the diagnosis repeats as warnings).
 - ``.wav`` (``scipy.io.wavfile``): written as 32-bit float, unscaled (WAV has no field for
   a scale factor); channels read back as ``channel_0``, ``channel_1``...; integer PCM
   files read as fractions of full scale in [-1, 1). The sample rate must be a whole
@@ -263,10 +266,28 @@ def _write_npz(signal: Signal):
 # ---------------------------------------------------------------- .csv
 
 
+def _number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
 def _read_csv(path: Path, sample_rate):
     with open(path, newline="", encoding="utf-8") as fh:
-        header = [h.strip() for h in next(csv.reader(fh), [])]
+        first = fh.readline()
+        header = [h.strip() for h in next(csv.reader([first]), [])]
         rows = fh.read()
+    notes = []
+    if header and all(_number(h) for h in header):
+        # no header row: the first row is data; a column that rises at every sample is the
+        # time (a headerless file read with its first row as names was analysed on it)
+        rows, header = first + rows, [f"column_{i + 1}" for i in range(len(header))]
+        notes.append(
+            f"{path.name} has no header row (its first row is numbers): its columns are "
+            f"read as {', '.join(header)}"
+        )
     if not header or not rows.strip():  # (loadtxt only warns about no data)
         raise InputError("path", str(path), "a CSV file with a header row and data rows")
     data = np.loadtxt(io.StringIO(rows), delimiter=",", ndmin=2)
@@ -279,10 +300,15 @@ def _read_csv(path: Path, sample_rate):
         )
     rate = None
     column = next((i for i, h in enumerate(header) if _TIME.match(h)), None)
+    if column is None and notes and data.shape[0] > 1:
+        rising = [i for i in range(data.shape[1]) if np.all(np.diff(data[:, i]) > 0)]
+        if rising:
+            column = rising[0]
+            notes.append(f"{header[column]} rises at every row: it is read as the time in s")
     if column is not None:
         time = data[:, column]
         data = np.delete(data, column, axis=1)
-        scale = 1e-3 if "ms" in header[column].lower() else 1.0
+        scale = 1e-3 if "ms" in header[column].lower() and not notes else 1.0
         header = header[:column] + header[column + 1 :]
         if sample_rate is None:
             rate = _rate_from_time(time * scale)
@@ -294,7 +320,8 @@ def _read_csv(path: Path, sample_rate):
         )
     if not header:
         raise InputError("path", str(path), "a CSV file with at least one channel column")
-    return {name: data[:, i] for i, name in enumerate(header)}, rate, {}
+    metadata = {"reading_notes": notes} if notes else {}
+    return {name: data[:, i] for i, name in enumerate(header)}, rate, metadata
 
 
 def _rate_from_time(time: np.ndarray) -> float:
