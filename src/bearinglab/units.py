@@ -363,6 +363,10 @@ DIMENSIONLESS: dict[str, str] = {
     "expected": "the fault family the label names (null: healthy)",
     "fault": "the label's fault (labels.csv)",
     "right": "true when the verdict is right",
+    "wrong": "map: column -> records given a fault that is not the label's",
+    "missed": "map: column -> faulty records called healthy",
+    "outcome": "right, wrong (a fault not the label's), missed (no fault on a faulty "
+    "record) or error",
     "smith_randall_2015": "Smith & Randall's diagnosability category of the record",
     "threshold": "the significance a family must reach (-log10 of the false-alarm "
     "probability, corrected)",

@@ -285,6 +285,31 @@ def test_healthy_simulation_is_no_fault(er16k):
     assert analyze_signal(sim.signal, None, sim.kinematic).verdict == NO_FAULT
 
 
+def test_every_harmonic_of_the_fault_found_is_labelled_by_its_family(er16k):
+    """An outer-race fault of an ER-16K at 1750 rpm: 7 x BPFO (728.6 Hz) is also the 25th
+    shaft harmonic (729.2 Hz), masked in the test; it is labelled 7x bpfo, not a shaft
+    line, as are the harmonics beyond the eighth (issue 21)."""
+    condition = OperatingCondition(radial_load=50.0, shaft_speed=SPEED)
+    sim = simulate(
+        er16k,
+        condition,
+        [Defect("outer", 1.2e-3, 0.25e-3)],
+        model="rigid",
+        duration=2.0,
+        sample_rate=FS,
+    )
+    d = analyze_signal(sim.signal, None, sim.kinematic, count=40)
+    assert d.verdict == "outer_race"
+    labels = {p["harmonic"]: p["matched"] for p in d.peaks if p["matched"] == "bpfo"}
+    assert {1, 2, 3, 4, 5, 6, 7, 8} <= set(labels)
+    near_7 = [
+        p
+        for p in d.peaks
+        if abs(p["frequency_hz"] - 7 * d.families["outer_race"]["fundamental_hz"]) < 2
+    ]
+    assert near_7 and near_7[0]["matched"] == "bpfo" and near_7[0]["harmonic"] == 7
+
+
 def test_a_noise_free_healthy_simulation_names_its_varying_compliance(er16k, tmp_path):
     """A perfect bearing under a radial load vibrates at the rate its balls pass the load
     zone (varying compliance): before issue 21, `simulate` without a defect reported

@@ -172,6 +172,10 @@ def test_benchmark_json_and_html(folder, capsys, tmp_path):
     assert code == 0, err
     d = json.loads(out)
     assert d["total"] == 3 and d["right"]["raw"] == 3
+    # wrong faults and misses apart: a wrong fault costs an engineer more than a miss
+    assert d["wrong"]["raw"] == 0 and d["missed"]["raw"] == 0
+    assert [r["outcome"] for r in d["records"]] == ["right"] * 3
+    assert all("measured_rpm" in r for r in d["records"])
     assert d["confusion"]["raw"]["outer_race"]["outer_race"] == 1
     assert d["recall"]["raw"]["no fault detected"] == 1.0
     assert page.read_text(encoding="utf-8").count("<img") >= 4  # matrix + 3 spectra

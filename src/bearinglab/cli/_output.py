@@ -96,9 +96,12 @@ class _Table(Table):
         yield from super().__rich_console__(console, options)
 
 
-def _table(title: str, columns: list[str], rows: list[list], words: bool = False) -> Table:
+def _table(
+    title: str, columns: list[str], rows: list[list], words: bool = False, whole: int | None = None
+) -> Table:
     """A table of ``rows`` under ``columns``; ``words``: a table of words (left-aligned,
-    no vertical rules), whose many columns then fit 80 terminal columns whole."""
+    no vertical rules), whose many columns then fit 80 terminal columns whole; column
+    ``whole`` (an index) is never folded (file names: the other columns wrap first)."""
     light = (
         dict(box=box.SIMPLE_HEAD, show_edge=False, pad_edge=False, collapse_padding=True)
         if words
@@ -113,8 +116,13 @@ def _table(title: str, columns: list[str], rows: list[list], words: bool = False
         table.add_column(
             escape(col),
             justify="right" if i and not words and col not in ("source", "meaning") else "left",
-            min_width=max(map(len, col.split()), default=1),
+            min_width=max(
+                max(map(len, col.split()), default=1),
+                max((len(_fmt(r[i])) for r in rows), default=1) if i == whole else 1,
+                max((len(w) for r in rows for w in _fmt(r[i]).split()), default=1) if words else 1,
+            ),
             overflow="fold",
+            no_wrap=i == whole,
         )
     for row in rows:
         table.add_row(*(_fmt(v) for v in row))

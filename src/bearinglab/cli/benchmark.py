@@ -82,12 +82,21 @@ def benchmark_command(
             r["fault"],
             r["smith_randall_2015"] or "-",
             *[(r.get(c) or "error").replace(" detected", "").replace("_race", "") for c in cols],
-            "yes" if r["right"] else "no",
+            r["outcome"],
+            "-" if r.get("measured_rpm") is None else f"{r['measured_rpm']:.1f}",
         ]
         for r in out["records"]
     ]
     title = f"{folder}: verdicts" + (f" (combined: {cols[-1]})" if len(cols) > 1 else "")
-    console.print(_table(title, ["file", "label", "S&R 2015", *heads, "right"], rows, words=True))
+    console.print(
+        _table(
+            title,
+            ["file", "label", "S&R 2015", *heads, "outcome", "shaft [rpm]"],
+            rows,
+            words=True,
+            whole=0,
+        )
+    )
     together = cols[-1]
     matrix = out["confusion"][together]
     verdicts = [c for c in next(iter(matrix.values())) if any(m[c] for m in matrix.values())]
@@ -100,9 +109,16 @@ def benchmark_command(
     )
     console.print(
         _table(
-            "right and recall per class",
+            "right, wrong faults, missed, and recall per class",
             ["", *heads],
-            [["right", *[f"{out['right'][c]} / {out['total']}" for c in cols]]]
+            [
+                [kind, *[f"{out[key][c]} / {out['total']}" for c in cols]]
+                for kind, key in (
+                    ("right", "right"),
+                    ("wrong fault", "wrong"),
+                    ("missed", "missed"),
+                )
+            ]
             + [
                 [f"recall {k}", *[out["recall"][c].get(k) for c in cols]]
                 for k in out["recall"][together]

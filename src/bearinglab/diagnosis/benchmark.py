@@ -23,6 +23,8 @@ from pathlib import Path
 from ..errors import InputError
 from .methods import parse_methods
 
+#: The verdict when no family passes (diagnosis.verdict.NO_FAULT).
+NO_FAULT = "no fault detected"
 #: Label in labels.csv -> the verdict that is right.
 EXPECTED = {
     "normal": "no fault detected",
@@ -164,6 +166,21 @@ def _category(verdict: str) -> str:
     return "compound" if verdict.startswith("compound") else verdict
 
 
+def outcome(verdict: str | None, expected: str) -> str:
+    """``right``, ``wrong`` (a fault that is not the label's, or any fault on a healthy
+    record: what costs an engineer most), ``missed`` (no fault on a faulty record) or
+    ``error``.
+
+    >>> outcome("ball", "ball"), outcome("outer_race", "ball"), outcome(NO_FAULT, "ball")
+    ('right', 'wrong', 'missed')
+    """
+    if verdict is None or verdict == "error":
+        return "error"
+    if verdict == expected:
+        return "right"
+    return "missed" if verdict == NO_FAULT else "wrong"
+
+
 def run_record(folder: str, row: dict, methods: tuple, keep_spectra: bool = True) -> dict:
     """Diagnose one labelled record by each method and by all together (a worker)."""
     from ..kinematics import defect_frequencies
@@ -222,6 +239,7 @@ def run_record(folder: str, row: dict, methods: tuple, keep_spectra: bool = True
         out["error"] = f"{type(exc).__name__}: {exc}"
         out["verdict"] = "error"
     out["right"] = out.get("verdict") == out["expected"]
+    out["outcome"] = outcome(out.get("verdict"), out["expected"])
     return out
 
 
@@ -231,8 +249,9 @@ class BenchmarkResult:
 
     ``records``: one dict per record (``file``, ``fault``, ``smith_randall_2015``,
     ``expected``, ``verdict`` with the methods together, one key per method with its own
-    verdict, ``right``, ``significance``, ``threshold``, ``measured_rpm``, ``warnings``,
-    ``reason``, ``error``); ``methods``; ``folder``.
+    verdict, ``right``, ``outcome`` (right, wrong, missed or error: :func:`outcome`),
+    ``significance``, ``threshold``, ``measured_rpm``, ``warnings``, ``reason``,
+    ``error``); ``methods``; ``folder``.
     """
 
     folder: str
@@ -256,6 +275,14 @@ class BenchmarkResult:
             matrix[r["expected"]][got if got in matrix[r["expected"]] else "error"] += 1
         return {k: v for k, v in matrix.items() if sum(v.values())}
 
+    def count(self, column: str, kind: str) -> int:
+        """Records of ``column`` whose :func:`outcome` is ``kind`` (right, wrong, missed,
+        error)."""
+        return sum(
+            outcome(None if r["error"] else r.get(column), r["expected"]) == kind
+            for r in self.records
+        )
+
     def recall(self, column: str | None = None) -> dict:
         """Per class: right / records of that class [-]."""
         return {k: row[k] / sum(row.values()) for k, row in self.confusion(column).items()}
@@ -273,7 +300,9 @@ class BenchmarkResult:
             "methods": list(self.methods),
             "columns": cols,
             "records": [{k: v for k, v in r.items() if k != "diagnosis"} for r in self.records],
-            "right": {c: sum(r.get(c) == r["expected"] for r in self.records) for c in cols},
+            "right": {c: self.count(c, "right") for c in cols},
+            "wrong": {c: self.count(c, "wrong") for c in cols},
+            "missed": {c: self.count(c, "missed") for c in cols},
             "total": len(self.records),
             "confusion": {c: self.confusion(c) for c in cols},
             "recall": {c: self.recall(c) for c in cols},
@@ -290,6 +319,7 @@ class BenchmarkResult:
             "expected",
             *self.columns,
             "right",
+            "outcome",
             "measured_rpm",
             "error",
         ]
@@ -329,7 +359,14 @@ class BenchmarkResult:
         cols = self.columns
         summary = table(
             ["", *cols],
-            [["right", *[f"{d['right'][c]} / {d['total']}" for c in cols]]]
+            [
+                [kind, *[f"{d[key][c]} / {d['total']}" for c in cols]]
+                for kind, key in (
+                    ("right", "right"),
+                    ("wrong fault", "wrong"),
+                    ("missed", "missed"),
+                )
+            ]
             + [
                 [f"recall {k}", *[d["recall"][c].get(k) for c in cols]]
                 for k in d["recall"][cols[-1]]

@@ -32,7 +32,7 @@ import math
 import numpy as np
 
 from .families import FREQUENCY, SIDEBANDS, Family
-from .statistics import LINE_ALPHA, SUPPORT_ALPHA, decades, normalised, series_test
+from .statistics import LINE_ALPHA, SUPPORT_ALPHA, Line, decades, normalised, series_test
 
 #: Verdict when no family passes.
 NO_FAULT = "no fault detected"
@@ -331,6 +331,15 @@ def label_peaks(
             known[i] = (fam, line)
             if line.log_p < math.log(LINE_ALPHA) and i <= inside[-1]:
                 keep.add(i - int(inside[0]))  # the fault's own lines are listed too
+        # every harmonic of the fault found is its line, also those the test did not read
+        # (beyond its harmonics, or masked where a shaft harmonic coincides: 7 x BPFO of
+        # an ER-16K at 1750 rpm is 25 x shaft)
+        f0 = test.fundamental_hz
+        for n in range(1, int(max_frequency / f0) + 1):
+            i = int(round(n * f0 / res))
+            for j in (i, i - 1, i + 1):
+                if j not in known:
+                    known[j] = (fam, Line("harmonic", n, 0, n * f0, j * res, 0.0, 0.0))
     keep = np.array(sorted(keep), dtype=int)
     keep = keep[np.argsort(zi[keep])[::-1][:count]]
     amplitude = spec.amplitude
