@@ -29,11 +29,14 @@ import numpy as np
 from ..errors import InputError
 from .alarm import (
     FALSE_ALARM,
+    MAX_PERSISTENCE_RECORDS,
     MIN_BASELINE_RECORDS,
     PERSISTENCE,
     STATISTICS,
-    check_rule,
+    check_false_alarm,
     first_alarms,
+    persistence_count,
+    rising_baselines,
     test_limits,
 )
 from .indicators import INDICATORS, acceleration_unit
@@ -185,7 +188,8 @@ def trend_records(
     baseline: float | None = BASELINE,
     baseline_records: int | None = None,
     false_alarm: float = FALSE_ALARM,
-    persistence: int = PERSISTENCE,
+    persistence: float | None = PERSISTENCE,
+    persistence_records: int | None = None,
     unit: str | None = None,
     machine: str | None = None,
     bearing=None,
@@ -216,8 +220,10 @@ def trend_records(
     false_alarm : float
         Probability that the rule raises a false alarm at a given record, all tests
         together, in (0, 0.1] (:mod:`.alarm`).
-    persistence : int
-        Consecutive records above a limit that raise the alarm.
+    persistence, persistence_records : float or int
+        How long records above a limit must last to raise the alarm: a duration [s]
+        (the records spanning it at the series' cadence, at least 2), or a count of
+        consecutive records (1 to 50). A count wins.
     unit : str, optional
         The channels' unit, ``g`` or ``m/s2``: adds their r.m.s. velocity over 10-1000 Hz.
     machine : str, optional
@@ -247,7 +253,16 @@ def trend_records(
     """
     from ..study.execute import run_partitions
 
-    rule_p, rule_r = check_rule(false_alarm, persistence)
+    rule_p = check_false_alarm(false_alarm)
+    persist_s, persist_n = _length("persistence", persistence, persistence_records)
+    if persist_n is not None and not 1 <= persist_n <= MAX_PERSISTENCE_RECORDS:
+        raise InputError(
+            "persistence_records",
+            persist_n,
+            f"a number of records in [1, {MAX_PERSISTENCE_RECORDS}]",
+        )
+    if persist_s is not None and persist_s <= 0:
+        raise InputError("persistence", persistence, "a duration > 0 s")
     settle_s, settle_n = _length("settle", settle, settle_records)
     base_s, base_n = _length("baseline", baseline, baseline_records)
     if base_n is not None and base_n < MIN_BASELINE_RECORDS:
@@ -323,10 +338,19 @@ def trend_records(
         values = {
             name: np.array([r["values"][name] for r in good], dtype=float) for name in INDICATORS
         }
+        spacing = float(np.median(np.diff(times))) if times.size > 1 else 0.0
+        rule_r = persist_n if persist_n is not None else persistence_count(persist_s, spacing)
         tests = tuple((name, c) for name in INDICATORS for c in range(len(channels)))
         stats = np.column_stack([STATISTICS[name](values[name][:, c]) for name, c in tests])
         limits = test_limits(stats, slice(first, stop), rule_p / len(tests), rule_r)
         alarms = first_alarms(stats, limits, stop, rule_r)
+        for j, p, rise in rising_baselines(times, stats, slice(first, stop), limits):
+            name, c = tests[j]
+            warnings.append(
+                f"the baseline of {name} ({channels[c]}) still rises (Mann-Kendall p = {p:.2g}, "
+                f"{math.expm1(rise):+.0%} over it): a running-in that goes on may raise the "
+                "alarm; a longer settling time avoids it"
+            )
         hits = [(a, j) for j, a in enumerate(alarms) if a is not None]
         alarm = None
         if hits:
@@ -367,6 +391,7 @@ def trend_records(
         baseline_stop=stop,
         false_alarm=rule_p,
         persistence=rule_r,
+        record_spacing=spacing,
         tests=tests,
         limits=tuple(limits),
         first_alarms=tuple(alarms),

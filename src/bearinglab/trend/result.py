@@ -142,6 +142,7 @@ class TrendResult:
     baseline_stop: int
     false_alarm: float
     persistence: int
+    record_spacing: float
     tests: tuple
     limits: tuple
     first_alarms: tuple
@@ -216,7 +217,8 @@ class TrendResult:
             f"{self.times[self.baseline_stop - 1]:.6g} s). Each of {len(self.tests)} tests "
             f"({len(INDICATORS)} indicators x {len(self.channels)} channels) compares the "
             f"{STATISTIC_TEXT} with a limit from the baseline ({TAIL_TEXT}); it alarms when "
-            f"{self.persistence} consecutive records exceed it, at a level of "
+            f"{self.persistence} consecutive records exceed it ({self.persistence} x "
+            f"{self.record_spacing:.3g} s, the cadence), at a level of "
             f"{self.test_level:.3g} per record (Bonferroni). The alarm is raised by the first "
             f"test to alarm and stays raised. False-alarm probability: at most "
             f"{self.false_alarm:.3g} per record, at most {self.false_alarm_per_run:.3g} over "
@@ -311,6 +313,7 @@ class TrendResult:
             "points": self.record_samples,
             "start_time": self.start_time(),
             "duration_s": float(self.times[-1]),
+            "record_spacing_s": self.record_spacing,
             "records": [self._record(i, above, zones) for i in range(n)],
             "baseline_records": self.baseline_records,
             "baseline": {
