@@ -194,7 +194,7 @@ def rising_baselines(times, statistics, baseline: slice, limits) -> list[tuple[i
     return out
 
 
-def test_limits(statistics, baseline: slice, level: float, persistence: int) -> list[TailLimit]:
+def baseline_limits(statistics, baseline: slice, level: float, persistence: int) -> list[TailLimit]:
     """The limit of each column of ``statistics`` (records x tests) from its ``baseline``
     rows."""
     s = np.asarray(statistics, dtype=float)

@@ -33,11 +33,11 @@ from .alarm import (
     MIN_BASELINE_RECORDS,
     PERSISTENCE,
     STATISTICS,
+    baseline_limits,
     check_false_alarm,
     first_alarms,
     persistence_count,
     rising_baselines,
-    test_limits,
 )
 from .indicators import INDICATORS, acceleration_unit
 from .result import Alarm, BlockDiagnosis, TrendResult
@@ -342,7 +342,7 @@ def trend_records(
         rule_r = persist_n if persist_n is not None else persistence_count(persist_s, spacing)
         tests = tuple((name, c) for name in INDICATORS for c in range(len(channels)))
         stats = np.column_stack([STATISTICS[name](values[name][:, c]) for name, c in tests])
-        limits = test_limits(stats, slice(first, stop), rule_p / len(tests), rule_r)
+        limits = baseline_limits(stats, slice(first, stop), rule_p / len(tests), rule_r)
         alarms = first_alarms(stats, limits, stop, rule_r)
         for j, p, rise in rising_baselines(times, stats, slice(first, stop), limits):
             name, c = tests[j]

@@ -184,6 +184,19 @@ class TrendResult:
         out[: self.baseline_stop] = False
         return out
 
+    def runs(self) -> np.ndarray:
+        """records x tests: True where a run of ``persistence`` monitored records above the
+        test's limit ends (each such record is a window where the rule fires; the first
+        one, over all tests, is the alarm)."""
+        above = self.above().astype(int)
+        r = self.persistence
+        out = np.zeros_like(above, dtype=bool)
+        if above.shape[0] >= r:
+            kernel = np.ones(r, dtype=int)
+            for j in range(above.shape[1]):
+                out[r - 1 :, j] = np.convolve(above[:, j], kernel, mode="valid") >= r
+        return out
+
     @property
     def velocity_zones(self) -> np.ndarray | None:
         """records x channels: the ISO zone of each velocity (None without a machine)."""
