@@ -41,7 +41,8 @@ FLAGS = {
     "baseline": "--baseline-s",
     "baseline_records": "--baseline-records",
     "false_alarm": "--false-alarm",
-    "persistence": "--persistence",
+    "persistence": "--persistence-s",
+    "persistence_records": "--persistence-records",
     "unit": "--unit",
     "machine": "--machine",
     "shaft_speed": "--speed-rpm",
@@ -111,12 +112,20 @@ def trend_command(
             "together (the rule's tail model).",
         ),
     ] = 1e-5,
-    persistence: Annotated[
-        int,
+    persistence_s: Annotated[
+        float,
         typer.Option(
-            "--persistence", help="Consecutive records above a limit that raise the alarm."
+            "--persistence-s",
+            help="How long records above a limit must last to raise the alarm [s]: the records "
+            "spanning it at the series' cadence, at least 2.",
         ),
-    ] = 3,
+    ] = 30.0,
+    persistence_records: Annotated[
+        int | None,
+        typer.Option(
+            "--persistence-records", help="Persistence as a number of consecutive records instead."
+        ),
+    ] = None,
     unit: Annotated[
         str | None,
         typer.Option(
@@ -163,7 +172,11 @@ def trend_command(
     check_path("--plot", plot, (".png", ".svg", ".pdf"))
     check_path("--html", html, (".html", ".htm"))
     given = typed(ctx)
-    for seconds, records in (("settle_s", "settle_records"), ("baseline_s", "baseline_records")):
+    for seconds, records in (
+        ("settle_s", "settle_records"),
+        ("baseline_s", "baseline_records"),
+        ("persistence_s", "persistence_records"),
+    ):
         if seconds in given and records in given:
             flag = "--" + records.replace("_", "-")
             raise OptionError(
@@ -186,7 +199,8 @@ def trend_command(
                 baseline=baseline_s,
                 baseline_records=baseline_records,
                 false_alarm=false_alarm,
-                persistence=persistence,
+                persistence=persistence_s,
+                persistence_records=persistence_records,
                 unit=unit,
                 machine=machine,
                 bearing=bearing,
@@ -204,7 +218,8 @@ def trend_command(
                 "--baseline-s": baseline_s,
                 "--baseline-records": baseline_records,
                 "--false-alarm": false_alarm,
-                "--persistence": persistence,
+                "--persistence-s": persistence_s,
+                "--persistence-records": persistence_records,
                 "--unit": unit,
                 "--machine": machine,
                 "--speed-rpm": speed_rpm,

@@ -154,6 +154,32 @@ def fast_kurtogram(
     )
 
 
+def tukey(m: int, alpha: float) -> np.ndarray:
+    """The symmetric Tukey (tapered cosine) window of ``m`` points whose tapers cover the
+    fraction ``alpha`` of it, as ``scipy.signal.windows.tukey(m, alpha)`` defines it
+    (Harris 1978 [HarrisFJ1978]); here so that a kurtogram does not import scipy.signal
+    (~0.5 s).
+
+    >>> tukey(5, 0.5).round(3).tolist()
+    [0.0, 1.0, 1.0, 1.0, 0.0]
+    """
+    if m <= 1:
+        return np.ones(max(m, 0))
+    if alpha <= 0:
+        return np.ones(m)
+    if alpha >= 1:
+        alpha = 1.0
+    n = np.arange(m)
+    width = int(np.floor(alpha * (m - 1) / 2.0))
+    w = np.ones(m)
+    head, tail = n[: width + 1], n[m - width - 1 :]
+    w[: width + 1] = 0.5 * (1 + np.cos(np.pi * (-1 + 2.0 * head / alpha / (m - 1))))
+    w[m - width - 1 :] = 0.5 * (
+        1 + np.cos(np.pi * (-2.0 / alpha + 1 + 2.0 * tail / alpha / (m - 1)))
+    )
+    return w
+
+
 def _deepest_level(n: int) -> int:
     """The deepest level whose bands keep MIN_BAND_SAMPLES envelope samples of a record of
     ``n`` samples (InputError below 2 x MIN_BAND_SAMPLES samples)."""
@@ -169,8 +195,6 @@ def _levels(x: np.ndarray, fs: float, max_level: int, min_bw: float, ceiling: fl
     kurtosis of each band's complex envelope along the last axis of ``x``, the bands that
     may be chosen). ``x`` holds records along its last axis; the kurtosis has the leading
     shape plus one axis of bands."""
-    from scipy.signal.windows import tukey  # here: scipy.signal costs ~0.5 s to import
-
     n = x.shape[-1]
     nfft = fast_length(n)
     spectrum = np.fft.rfft(x - x.mean(axis=-1, keepdims=True), n=nfft, axis=-1)

@@ -169,46 +169,97 @@ def read_index(path) -> tuple[tuple[str, ...], tuple[float, ...]]:
     return tuple(files), tuple(times)
 
 
-def _separator(path: Path) -> tuple[str, str]:
+#: What a PRONOSTIA snapshot must be.
+_SNAPSHOT = (
+    "a PRONOSTIA snapshot: a headerless CSV of 6 numeric columns (hour, minute, second, "
+    f"microsecond, horizontal, vertical [g]), at least {MIN_RECORD_SAMPLES} rows"
+)
+
+
+def _dialect(data: bytes) -> tuple[str, str]:
     """(column separator, decimal mark) of a PRONOSTIA file, from its first line."""
-    with open(path, "rb") as fh:
-        first = fh.readline().decode("ascii", errors="replace")
-    if ";" in first:
-        return ";", "," if "," in first else "."
+    first = data.split(b"\n", 1)[0]
+    if b";" in first:
+        return ";", "," if b"," in first else "."
     return ",", "."
 
 
-def read_pronostia(path) -> tuple[float, np.ndarray]:
-    """(time of day of the first sample [s], samples: 2 x n [g]) of a PRONOSTIA snapshot.
-
-    The columns are hour, minute, second, microsecond, horizontal and vertical
-    acceleration; the microseconds may be written as 1.1879e+05 or 1.6558e+005.
-    """
+def _parse(data: bytes, dialect: tuple[str, str]) -> np.ndarray:
+    """The table of CSV bytes (ValueError when pandas cannot read it as numbers)."""
     import pandas as pd
 
-    path = Path(path)
-    allowed = (
-        "a PRONOSTIA snapshot: a headerless CSV of 6 numeric columns (hour, minute, "
-        f"second, microsecond, horizontal, vertical [g]), at least {MIN_RECORD_SAMPLES} rows"
-    )
-    try:
-        sep, decimal = _separator(path)
-        table = pd.read_csv(
-            path, header=None, sep=sep, decimal=decimal, dtype=np.float64, engine="c"
-        ).to_numpy()
-    except (OSError, ValueError) as exc:  # pandas' parser and empty-data errors are ValueErrors
-        raise InputError(
-            "path", path.name, allowed, hint=" ".join(str(exc).split())[:120]
-        ) from None
+    sep, decimal = dialect
+    return pd.read_csv(
+        io.BytesIO(data), header=None, sep=sep, decimal=decimal, dtype=np.float64, engine="c"
+    ).to_numpy()
+
+
+def _snapshot(name: str, table: np.ndarray) -> tuple[float, np.ndarray]:
+    """(clock [s], samples 2 x n) of one snapshot's table, or InputError naming it."""
     if table.ndim != 2 or table.shape[1] != 6 or table.shape[0] < MIN_RECORD_SAMPLES:
-        raise InputError("path", path.name, allowed, hint=f"it holds a table of {table.shape}")
+        raise InputError("path", name, _SNAPSHOT, hint=f"it holds a table of {table.shape}")
     if not np.all(np.isfinite(table)):
-        raise InputError("path", path.name, allowed, hint="it has empty or non-finite cells")
+        raise InputError("path", name, _SNAPSHOT, hint="it has empty or non-finite cells")
     h, m, s, us = table[0, :4]
     clock = 3600.0 * h + 60.0 * m + s + 1e-6 * us
     if not 0.0 <= clock < DAY + 1.0:
-        raise InputError("path", path.name, allowed, hint=f"its first time reads {h:g}:{m:g}:{s:g}")
+        raise InputError("path", name, _SNAPSHOT, hint=f"its first time reads {h:g}:{m:g}:{s:g}")
     return float(clock), np.ascontiguousarray(table[:, 4:6].T)
+
+
+def read_pronostia_files(paths) -> list:
+    """Each PRONOSTIA snapshot of ``paths`` as (time of day of its first sample [s],
+    samples: 2 x n [g]), or the InputError that names it.
+
+    The columns are hour, minute, second, microsecond, horizontal and vertical
+    acceleration; the microseconds may be written as 1.1879e+05 or 1.6558e+005. Files of
+    one dialect are parsed together (one pandas call: its fixed cost is most of a small
+    file's); when that fails, each file alone, so that the bad one is named.
+    """
+    paths = [Path(p) for p in paths]
+    out: list = [None] * len(paths)
+    groups: dict[tuple, list] = {}
+    for i, path in enumerate(paths):
+        try:
+            data = path.read_bytes()
+        except OSError as exc:
+            out[i] = InputError("path", path.name, _SNAPSHOT, hint=exc.strerror or "unreadable")
+            continue
+        if data and not data.endswith(b"\n"):
+            data += b"\n"
+        groups.setdefault(_dialect(data), []).append((i, data))
+    for dialect, members in groups.items():
+        rows = [data.count(b"\n") for _, data in members]
+        try:
+            table = _parse(b"".join(data for _, data in members), dialect)
+            if table.shape != (sum(rows), 6):
+                raise ValueError("rows")
+        except ValueError:
+            table = None
+        for k, (i, data) in enumerate(members):
+            name = paths[i].name
+            try:
+                if table is not None:
+                    part = table[sum(rows[:k]) : sum(rows[: k + 1])]
+                else:
+                    try:
+                        part = _parse(data, dialect)
+                    except ValueError as exc:  # parser and empty-data errors
+                        hint = " ".join(str(exc).split())[:120]
+                        raise InputError("path", name, _SNAPSHOT, hint=hint) from None
+                out[i] = _snapshot(name, part)
+            except InputError as exc:
+                out[i] = exc
+    return out
+
+
+def read_pronostia(path) -> tuple[float, np.ndarray]:
+    """(time of day of the first sample [s], samples: 2 x n [g]) of a PRONOSTIA snapshot
+    (:func:`read_pronostia_files`); InputError naming it when it cannot be read."""
+    (result,) = read_pronostia_files([path])
+    if isinstance(result, InputError):
+        raise result
+    return result
 
 
 def _metadata_time(metadata: dict) -> float | None:
@@ -223,33 +274,26 @@ def _metadata_time(metadata: dict) -> float | None:
     return None
 
 
-def read_record(
-    listing: Listing,
-    index: int,
-    channels: tuple[str, ...] | None = None,
-    sample_rate: float | None = None,
-) -> Record:
-    """Record ``index`` of ``listing``, with ``channels`` (default all) in that order.
+def _select(record: tuple, file: str, channels, sample_rate) -> Record:
+    """A PRONOSTIA record from (clock, samples), with the channels asked for."""
+    clock, x = record
+    names = PRONOSTIA_CHANNELS
+    fs = PRONOSTIA_SAMPLE_RATE if sample_rate is None else float(sample_rate)
+    if channels is not None:
+        missing = [c for c in channels if c not in names]
+        if missing:
+            raise InputError("channels", missing[0], f"one of {list(names)}")
+        x = x[[names.index(c) for c in channels]]
+        names = tuple(channels)
+    return Record(file, clock, fs, tuple(names), x)
 
-    Raises InputError naming the file when it cannot be read, lacks a channel, has no
-    time or is too short.
-    """
-    file = listing.files[index]
-    path = Path(listing.folder) / file
-    if listing.layout == "pronostia":
-        clock, x = read_pronostia(path)
-        names = PRONOSTIA_CHANNELS
-        fs = PRONOSTIA_SAMPLE_RATE if sample_rate is None else float(sample_rate)
-        if channels is not None:
-            missing = [c for c in channels if c not in names]
-            if missing:
-                raise InputError("channels", missing[0], f"one of {list(names)}")
-            x = x[[names.index(c) for c in channels]]
-            names = tuple(channels)
-        return Record(file, clock, fs, tuple(names), x)
+
+def _read_one(listing: Listing, index: int, channels, sample_rate) -> Record:
+    """Record ``index`` of a folder of records (InputError naming the file)."""
     from ..signal import read_signal
 
-    signal = read_signal(path, sample_rate=sample_rate, channel=channels)
+    file = listing.files[index]
+    signal = read_signal(Path(listing.folder) / file, sample_rate=sample_rate, channel=channels)
     if listing.times is not None:
         clock = listing.times[index]
     else:
@@ -267,6 +311,51 @@ def read_record(
         )
     x = np.stack([signal.channel(c) for c in signal.names])
     return Record(file, float(clock), signal.sample_rate, signal.names, x)
+
+
+def read_records(
+    listing: Listing,
+    indices=None,
+    channels: tuple[str, ...] | None = None,
+    sample_rate: float | None = None,
+) -> list:
+    """Records ``indices`` (default all) of ``listing``, with ``channels`` (default all)
+    in that order: each a :class:`Record`, or the InputError naming the file that could
+    not be read, lacks a channel, has no time or is too short."""
+    indices = range(len(listing.files)) if indices is None else indices
+    if listing.layout == "pronostia":
+        files = [listing.files[i] for i in indices]
+        raw = read_pronostia_files([Path(listing.folder) / f for f in files])
+        out = []
+        for file, r in zip(files, raw, strict=True):
+            try:
+                out.append(
+                    r if isinstance(r, InputError) else _select(r, file, channels, sample_rate)
+                )
+            except InputError as exc:
+                out.append(exc)
+        return out
+    out = []
+    for i in indices:
+        try:
+            out.append(_read_one(listing, i, channels, sample_rate))
+        except InputError as exc:
+            out.append(exc)
+    return out
+
+
+def read_record(
+    listing: Listing,
+    index: int,
+    channels: tuple[str, ...] | None = None,
+    sample_rate: float | None = None,
+) -> Record:
+    """Record ``index`` of ``listing`` (:func:`read_records`); InputError naming the file
+    when it cannot be read."""
+    (record,) = read_records(listing, [index], channels, sample_rate)
+    if isinstance(record, InputError):
+        raise record
+    return record
 
 
 def _longest_increasing(t: np.ndarray) -> np.ndarray:

@@ -8,7 +8,7 @@ import numpy as np
 
 from ..errors import InputError
 from .indicators import record_indicators, velocity_rms
-from .series import read_record
+from .series import read_records
 
 
 def _failure(index: int, file: str, exc: InputError) -> dict:
@@ -26,18 +26,17 @@ def read_chunk(task: tuple) -> list[dict]:
     listing, channels, sample_rate, unit, start = task
     rows: list[dict] = []
     groups: dict[tuple, list] = {}
-    for i, file in enumerate(listing.files, start=start):
-        try:
-            record = read_record(listing, i - start, channels, sample_rate)
+    records = read_records(listing, None, channels, sample_rate)
+    for i, (file, record) in enumerate(zip(listing.files, records, strict=True), start=start):
+        if not isinstance(record, InputError):
             flat = [
                 c for c, x in zip(record.channels, record.samples, strict=True) if np.ptp(x) == 0
             ]
             if flat:
-                raise InputError(
-                    "path", file, "a record whose channels vary", hint=f"{flat[0]} is constant"
-                )
-        except InputError as exc:
-            rows.append(_failure(i, file, exc))
+                hint = f"{flat[0]} is constant"
+                record = InputError("path", file, "a record whose channels vary", hint=hint)
+        if isinstance(record, InputError):
+            rows.append(_failure(i, file, record))
             continue
         key = (record.sample_rate, record.samples.shape)
         groups.setdefault(key, []).append((i, record))
@@ -69,9 +68,10 @@ def diagnose_block(task: tuple) -> dict:
 
     listing, channel, sample_rate, frequencies = task
     try:
-        records = [
-            read_record(listing, i, (channel,), sample_rate) for i in range(len(listing.files))
-        ]
+        records = read_records(listing, None, (channel,), sample_rate)
+        bad = next((r for r in records if isinstance(r, InputError)), None)
+        if bad is not None:
+            raise bad
         x = np.concatenate([r.samples[0] for r in records])
         d = analyze_signal(x, records[0].sample_rate, frequencies)
     except InputError as exc:
