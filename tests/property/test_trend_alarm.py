@@ -74,7 +74,7 @@ def test_healthy_simulated_series_alarm_at_no_more_than_the_stated_rate(tmp_path
             tmp_path / f"healthy{seed}", BEARING, CONDITION, records=100, seed=seed
         )
         counts = {"settle_records": 0, "baseline_records": 40}
-        assert trend_records(folder, **counts).alarm is None  # the default 1e-5 per record
+        assert trend_records(folder, **counts).alarm is None  # the default 1e-6 per record
         # a level whose firings can be counted: 2 % per record, 2 records in a row
         result = trend_records(folder, false_alarm=0.02, persistence_records=2, **counts)
         f, w = _fired(result)

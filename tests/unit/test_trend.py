@@ -263,7 +263,7 @@ def test_a_healthy_series_raises_no_alarm(healthy):
     assert r.alarm is None and r.baseline_records == 30 and r.persistence == 3
     d = r.to_dict()
     assert d["alarm"] is None and d["baseline_records"] == 30 and len(d["records"]) == 90
-    assert d["rule"]["tests"] == 10 and d["rule"]["test_level"] == pytest.approx(1e-6)
+    assert d["rule"]["tests"] == 10 and d["rule"]["test_level"] == pytest.approx(1e-7)
     json.dumps(d, allow_nan=False)
 
 

@@ -9,6 +9,8 @@ from typing import Annotated
 import typer
 
 from ..errors import InputError
+from ..trend.alarm import FALSE_ALARM, PERSISTENCE
+from ..trend.analysis import BASELINE, SETTLE
 from ._app import command_app, console
 from ._geometry import _geometry_warnings, resolve_bearing, with_geometry
 from ._inputs import (
@@ -87,7 +89,7 @@ def trend_command(
             help="Running-in left out of the baseline: the records of the first SETTLE "
             "seconds [s].",
         ),
-    ] = 600.0,
+    ] = SETTLE,
     settle_records: Annotated[
         int | None,
         typer.Option("--settle-records", help="Running-in as a number of records instead."),
@@ -99,7 +101,7 @@ def trend_command(
             help="Baseline after the running-in [s]; at least 30 records (extended when the "
             "records are sparse).",
         ),
-    ] = 600.0,
+    ] = BASELINE,
     baseline_records: Annotated[
         int | None,
         typer.Option("--baseline-records", help="Baseline as a number of records instead (>= 10)."),
@@ -111,7 +113,7 @@ def trend_command(
             help="Probability of a false alarm at a given record, all indicators and channels "
             "together (the rule's tail model).",
         ),
-    ] = 1e-5,
+    ] = FALSE_ALARM,
     persistence_s: Annotated[
         float,
         typer.Option(
@@ -119,7 +121,7 @@ def trend_command(
             help="How long records above a limit must last to raise the alarm [s]: the records "
             "spanning it at the series' cadence, at least 2.",
         ),
-    ] = 30.0,
+    ] = PERSISTENCE,
     persistence_records: Annotated[
         int | None,
         typer.Option(
@@ -186,7 +188,7 @@ def trend_command(
     if designation is not None or any(v is not None for v in geometry.values()):
         bearing, _ = resolve_bearing(designation, geometry)
     shaft_speed = None if speed_rpm is None else speed_rad_s(speed_rpm)
-    from ..trend import trend_records
+    from ..trend.analysis import trend_records
 
     with progress_bar("reading records", enabled=not json_output) as update:
         try:

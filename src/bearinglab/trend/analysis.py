@@ -45,8 +45,9 @@ from .series import Listing, Record, list_records, read_record, snapshot_number,
 
 #: Default settling time: the records of the first 10 minutes are not in the baseline [s].
 SETTLE = 600.0
-#: Default baseline length after the settling time [s].
-BASELINE = 600.0
+#: Default baseline length after the settling time [s]: 20 minutes, so that the baseline
+#: sees some of the slow wander of a running machine, not only its record-to-record scatter.
+BASELINE = 1200.0
 #: Fewest records a baseline given as a duration holds: a shorter one is extended.
 BASELINE_MIN_RECORDS = 30
 #: Records read per task.
