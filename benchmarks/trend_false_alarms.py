@@ -12,7 +12,8 @@ Prints the figures of docs/capabilities/trend.md:
    rise near 12 000 s; Bearing3_1 up to 4 800 s, its failure starting at 4 900 s), with
    the baseline slid across the stretch to pool more records: the same figures, and those
    of the Gaussian limit mean + 6 sigma of the baseline for comparison.
-3. The reference rule and ours on each development run: alarm time and lead.
+3. The reference rule and ours on each development run: alarm time and lead, and how
+   they move with the rule's settings (``--sensitivity``).
 
     .venv/bin/python benchmarks/trend_false_alarms.py [--series 5] [--records 600]
 """
@@ -159,11 +160,43 @@ def real() -> None:
         )
 
 
+#: Settings tried by --sensitivity, one change from the defaults at a time.
+VARIANTS = {
+    "defaults": {},
+    "false_alarm 1e-5": {"false_alarm": 1e-5},
+    "false_alarm 1e-7": {"false_alarm": 1e-7},
+    "persistence 3 records": {"persistence_records": 3},
+    "persistence 4 records": {"persistence_records": 4},
+    "no settling": {"settle": 0.0},
+    "settling 1800 s": {"settle": 1800.0},
+    "baseline 60 records": {"baseline_records": 60},
+}
+
+
+def sensitivity() -> None:
+    print("\nalarm time and lead before the last snapshot [s], one setting changed at a time")
+    for name, kwargs in VARIANTS.items():
+        cells = []
+        for run in HEALTHY:
+            r = trend_records(RUNS / run, **kwargs)
+            a = r.alarm
+            if a is None:
+                cells.append(f"{run} -")
+                continue
+            t = r.times[a.record]
+            cells.append(f"{run} {t:.0f} ({r.times[-1] - t:.0f}, {a.indicator})")
+        print(f"{name:24s} " + "; ".join(cells))
+
+
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--series", type=int, default=5)
     parser.add_argument("--records", type=int, default=600)
+    parser.add_argument("--sensitivity", action="store_true", help="only the settings' table")
     args = parser.parse_args()
+    if args.sensitivity:
+        sensitivity()
+        return
     real()
     simulated(args.series, args.records)
 

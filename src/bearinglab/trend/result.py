@@ -389,6 +389,8 @@ class TrendResult:
         """The indicators over time (one panel each; all channels), the baseline shaded,
         each test's limit dashed, the alarm as a red line; the velocity with its ISO zones
         and the family significance when computed. Returns (figure, axes)."""
+        from matplotlib.ticker import FormatStrFormatter, LogLocator, NullFormatter
+
         from ..plotting import figure_axes
 
         panels = list(INDICATORS)
@@ -419,8 +421,13 @@ class TrendResult:
                     j = self.tests.index((panel, c))
                     ax_.axhline(self.limit(j), color=colour, ls="--", lw=0.8)
                 ax_.set_ylabel(panel.replace("_", " "))
-                if panel != "spectral_kurtosis":
+                if panel == "spectral_kurtosis":
+                    ax_.set_yscale("symlog", linthresh=1.0)
+                else:
                     ax_.set_yscale("log")
+                    ax_.yaxis.set_major_locator(LogLocator(subs=(1.0, 2.0, 5.0)))
+                    ax_.yaxis.set_minor_formatter(NullFormatter())
+                ax_.yaxis.set_major_formatter(FormatStrFormatter("%g"))
             elif panel == "velocity":
                 for c, ch in enumerate(self.channels):
                     ax_.plot(t, self.velocity[:, c] * 1e3, lw=0.8, color=colours[c % 4], label=ch)
