@@ -82,15 +82,13 @@ def main() -> None:
             ],
             "2800 snapshots": [*BIN, "trend", str(big), "--json"],
             "2800 snapshots, --jobs 2": [*BIN, "trend", str(big), "--jobs", "2", "--json"],
-            "2800 snapshots, diagnosis, --jobs 2": [
+            "2800 snapshots, diagnosis": [
                 *BIN,
                 "trend",
                 str(big),
                 *GEOMETRY,
                 "--speed-rpm",
                 "1800",
-                "--jobs",
-                "2",
                 "--json",
             ],
         }

@@ -323,7 +323,13 @@ def _print(out: dict) -> None:
             "Tests (limits in the indicator's unit)",
             ["indicator", "channel", "baseline median", "limit", "first alarm [s]"],
             [
-                [t["indicator"], t["channel"], t["baseline_median"], t["limit"], t["first_alarm_s"]]
+                [
+                    t["indicator"],
+                    t["channel"],
+                    t["baseline_median"],
+                    t["limit"],
+                    "-" if t["first_alarm_s"] is None else f"{t['first_alarm_s']:.6g}",
+                ]
                 for t in out["tests"]
             ],
         )

@@ -5,7 +5,7 @@ samples, say) and returns one value per record and channel; the sensor's unit is
 (g, m/s², V) except where a unit is asked for. Definitions and sources:
 
 - ``rms``: root mean square of the record about its mean (the sensor's offset removed),
-  sqrt(<(x - <x>)²>): the overall vibration level ([ISO2041], [Randall2011] ch. 1).
+  sqrt(<(x - <x>)²>): the overall vibration level ([Randall2011] ch. 1).
 - ``peak``: max |x - <x>|, the largest excursion.
 - ``crest_factor``: peak / rms [-]; rises as impacts appear in an otherwise steady signal
   and falls again when the damage spreads and the rms catches up ([Randall2011] ch. 5).
