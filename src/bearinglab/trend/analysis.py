@@ -6,17 +6,6 @@ them in time order; learn the baseline after the settling time and test every in
 of every channel against it (:mod:`.alarm`); when the bearing and the speed are given,
 run the diagnosis over blocks of consecutive records and at the alarm; place the velocity
 in the ISO 20816 zones when the unit and the machine group are given (:mod:`.severity`).
-
-**The diagnosis of short records.** The diagnosis refuses a record shorter than three
-cage revolutions (``MIN_CAGE_REVOLUTIONS`` of :mod:`bearinglab.diagnosis.analysis`): a
-0.1 s PRONOSTIA snapshot of its bearing at 1800 rpm holds 1.3. A family's significance
-is therefore computed over a block of the fewest consecutive records that hold three
-cage revolutions, joined end to end, and every record of a block carries the block's
-result; at the alarm, the block is the records ending at the alarm record. Joining
-independent snapshots keeps each fault's lines (the envelope spectrum of the joined
-record is close to the average of the snapshots' spectra, each line widened by the
-snapshot's 1/T) and adds small steps at the joins; on simulated PRONOSTIA-like snapshots
-(docs/capabilities/trend.md) it finds what a continuous record of the same length does.
 """
 
 from __future__ import annotations
@@ -39,8 +28,9 @@ from .alarm import (
     persistence_count,
     rising_baselines,
 )
+from .blocks import block_size, diagnose_blocks
 from .indicators import INDICATORS, acceleration_unit
-from .result import Alarm, BlockDiagnosis, TrendResult
+from .result import Alarm, TrendResult
 from .series import Listing, Record, list_records, read_record, snapshot_number, snapshot_times
 
 #: Default settling time: the records of the first 10 minutes are not in the baseline [s].
@@ -84,12 +74,6 @@ def _runner(jobs, scheduler):
     if scheduler is None:
         return open_runner("serial" if jobs == 1 else "local", workers=int(jobs))
     return open_runner(scheduler, workers=int(jobs) if scheduler == "local" else None)
-
-
-def _sub(listing: Listing, part) -> Listing:
-    """The records ``part`` (indices) of ``listing``."""
-    times = None if listing.times is None else tuple(listing.times[i] for i in part)
-    return Listing(listing.folder, listing.layout, tuple(listing.files[i] for i in part), times)
 
 
 def _probe(listing: Listing, channels, sample_rate) -> tuple[tuple[str, ...], Record]:
@@ -158,25 +142,104 @@ def _baseline(times, settle, settle_n, baseline, baseline_n) -> tuple[int, int]:
     return first, stop
 
 
-def _blocks(count: int, size: int) -> list[np.ndarray]:
-    """Consecutive blocks of ``size`` of ``count`` records (the last one ends at the last
-    record, so that every block holds ``size`` records).
+def _rule(false_alarm, persistence, persistence_n, settle, settle_n, baseline, baseline_n) -> dict:
+    """The rule's settings, checked: false_alarm, persistence (s or records), settle and
+    baseline (s or records)."""
+    p = check_false_alarm(false_alarm)
+    persist_s, persist_n = _length("persistence", persistence, persistence_n)
+    if persist_n is not None and not 1 <= persist_n <= MAX_PERSISTENCE_RECORDS:
+        raise InputError(
+            "persistence_records",
+            persist_n,
+            f"a number of records in [1, {MAX_PERSISTENCE_RECORDS}]",
+        )
+    if persist_s is not None and persist_s <= 0:
+        raise InputError("persistence", persistence, "a duration > 0 s")
+    settle_s, settle_count = _length("settle", settle, settle_n)
+    base_s, base_count = _length("baseline", baseline, baseline_n)
+    if base_count is not None and base_count < MIN_BASELINE_RECORDS:
+        raise InputError("baseline_records", base_count, f"at least {MIN_BASELINE_RECORDS} records")
+    return {
+        "false_alarm": p,
+        "persistence": persist_s,
+        "persistence_n": persist_n,
+        "settle": settle_s,
+        "settle_n": settle_count,
+        "baseline": base_s,
+        "baseline_n": base_count,
+    }
 
-    >>> [b.tolist() for b in _blocks(7, 3)]
-    [[0, 1, 2], [3, 4, 5], [4, 5, 6]]
-    """
-    starts = list(range(0, count - size + 1, size))
-    if starts and starts[-1] + size < count:
-        starts.append(count - size)
-    return [np.arange(s, s + size) for s in starts]
+
+def _severity(unit, machine):
+    """(the channels' unit, the machine's ISO zones or None), checked together."""
+    unit = acceleration_unit(unit)
+    if machine is None:
+        return unit, None
+    from .severity import machine_zones
+
+    zones = machine_zones(machine)
+    if unit is None:
+        raise InputError(
+            "unit",
+            None,
+            f"the channels' unit (g or m/s2), to place their velocity in the zones of {machine}",
+        )
+    return unit, zones
 
 
-def _block_size(record: Record, frequencies) -> int:
-    """Fewest consecutive records that hold the diagnosis' minimum of cage revolutions."""
-    from ..diagnosis.analysis import MIN_CAGE_REVOLUTIONS
+def _frequencies(bearing, shaft_speed):
+    """The bearing's kinematic frequencies at the shaft speed, or None without either."""
+    if (bearing is None) != (shaft_speed is None):
+        raise InputError(
+            "shaft_speed" if bearing is not None else "bearing",
+            None,
+            "the bearing and the shaft speed together, for the diagnosis (or neither)",
+        )
+    if bearing is None:
+        return None
+    from ..kinematics import defect_frequencies
 
-    duration = record.samples.shape[-1] / record.sample_rate
-    return max(1, math.ceil(MIN_CAGE_REVOLUTIONS / (duration * frequencies.hz("ftf")) - 1e-9))
+    try:
+        speed = float(shaft_speed)
+    except (TypeError, ValueError):
+        speed = math.nan
+    if not (math.isfinite(speed) and speed > 0):
+        raise InputError("shaft_speed", shaft_speed, "a speed > 0 rad/s")
+    return defect_frequencies(bearing, speed)
+
+
+def _evaluate(times, values, channels, first, stop, rule, warnings) -> dict:
+    """The tests, their limits from the baseline records first..stop-1, their first
+    alarms and the alarm (with the record spacing and the persistence it gives)."""
+    spacing = float(np.median(np.diff(times))) if times.size > 1 else 0.0
+    r = rule["persistence_n"]
+    if r is None:
+        r = persistence_count(rule["persistence"], spacing)
+    tests = tuple((name, c) for name in INDICATORS for c in range(len(channels)))
+    stats = np.column_stack([STATISTICS[name](values[name][:, c]) for name, c in tests])
+    limits = baseline_limits(stats, slice(first, stop), rule["false_alarm"] / len(tests), r)
+    alarms = first_alarms(stats, limits, stop, r)
+    for j, p, rise in rising_baselines(times, stats, slice(first, stop), limits):
+        name, c = tests[j]
+        warnings.append(
+            f"the baseline of {name} ({channels[c]}) still rises (Mann-Kendall p = {p:.2g}, "
+            f"{math.expm1(rise):+.0%} over it): a running-in that goes on may raise the "
+            "alarm; a longer settling time avoids it"
+        )
+    hits = [(a, j) for j, a in enumerate(alarms) if a is not None]
+    alarm = None
+    if hits:
+        index, j = min(hits)
+        name, c = tests[j]
+        alarm = Alarm(index, name, channels[c], float(values[name][index, c]))
+    return {
+        "persistence": r,
+        "record_spacing": spacing,
+        "tests": tests,
+        "limits": tuple(limits),
+        "first_alarms": tuple(alarms),
+        "alarm": alarm,
+    }
 
 
 def trend_records(
@@ -243,64 +306,24 @@ def trend_records(
     Returns
     -------
     TrendResult
-
-    Examples
-    --------
-    >>> from pathlib import Path
-    >>> run = Path(__file__).resolve().parents[4] / "shared/data/run-to-failure/Bearing3_1"
-    >>> if run.is_dir():  # doctest: +SKIP
-    ...     result = trend_records(run)
-    ...     result.alarm.indicator, round(result.times[result.alarm.record])
     """
     from ..study.execute import run_partitions
+    from .tasks import read_chunk
 
-    rule_p = check_false_alarm(false_alarm)
-    persist_s, persist_n = _length("persistence", persistence, persistence_records)
-    if persist_n is not None and not 1 <= persist_n <= MAX_PERSISTENCE_RECORDS:
-        raise InputError(
-            "persistence_records",
-            persist_n,
-            f"a number of records in [1, {MAX_PERSISTENCE_RECORDS}]",
-        )
-    if persist_s is not None and persist_s <= 0:
-        raise InputError("persistence", persistence, "a duration > 0 s")
-    settle_s, settle_n = _length("settle", settle, settle_records)
-    base_s, base_n = _length("baseline", baseline, baseline_records)
-    if base_n is not None and base_n < MIN_BASELINE_RECORDS:
-        raise InputError("baseline_records", base_n, f"at least {MIN_BASELINE_RECORDS} records")
-    unit = acceleration_unit(unit)
-    zones = None
-    if machine is not None:
-        from .severity import machine_zones
-
-        zones = machine_zones(machine)
-        if unit is None:
-            raise InputError(
-                "unit",
-                None,
-                f"the channels' unit (g or m/s2), to place their velocity in the zones of "
-                f"{machine}",
-            )
-    if (bearing is None) != (shaft_speed is None):
-        raise InputError(
-            "shaft_speed" if bearing is not None else "bearing",
-            None,
-            "the bearing and the shaft speed together, for the diagnosis (or neither)",
-        )
-    kin = None
-    if bearing is not None:
-        from ..kinematics import defect_frequencies
-
-        try:
-            speed = float(shaft_speed)
-        except (TypeError, ValueError):
-            speed = math.nan
-        if not (math.isfinite(speed) and speed > 0):
-            raise InputError("shaft_speed", shaft_speed, "a speed > 0 rad/s")
-        kin = defect_frequencies(bearing, speed)
+    rule = _rule(
+        false_alarm,
+        persistence,
+        persistence_records,
+        settle,
+        settle_records,
+        baseline,
+        baseline_records,
+    )
+    unit, zones = _severity(unit, machine)
+    kin = _frequencies(bearing, shaft_speed)
     listing = list_records(folder)
     channels, probe = _probe(listing, channels, sample_rate)
-    size = None if kin is None else _block_size(probe, kin)
+    size = None if kin is None else block_size(probe, kin)
     total = len(listing.files)
     work = total + (0 if size is None else total + size)
     warnings: list[str] = []
@@ -318,9 +341,7 @@ def trend_records(
 
     rows: list[dict] = []
     parts = [range(s, min(s + CHUNK, total)) for s in range(0, total, CHUNK)]
-    tasks = [(_sub(listing, p), channels, sample_rate, unit, p.start) for p in parts]
-    from .tasks import read_chunk
-
+    tasks = [(listing.subset(p), channels, sample_rate, unit, p.start) for p in parts]
     with _runner(jobs, scheduler) as runner:
         run_partitions(
             runner,
@@ -335,29 +356,13 @@ def trend_records(
         good = [good[i] for i in order]
         clock = clock[order]
         times = clock - clock[0]
-        first, stop = _baseline(times, settle_s, settle_n, base_s, base_n)
+        first, stop = _baseline(
+            times, rule["settle"], rule["settle_n"], rule["baseline"], rule["baseline_n"]
+        )
         values = {
             name: np.array([r["values"][name] for r in good], dtype=float) for name in INDICATORS
         }
-        spacing = float(np.median(np.diff(times))) if times.size > 1 else 0.0
-        rule_r = persist_n if persist_n is not None else persistence_count(persist_s, spacing)
-        tests = tuple((name, c) for name in INDICATORS for c in range(len(channels)))
-        stats = np.column_stack([STATISTICS[name](values[name][:, c]) for name, c in tests])
-        limits = baseline_limits(stats, slice(first, stop), rule_p / len(tests), rule_r)
-        alarms = first_alarms(stats, limits, stop, rule_r)
-        for j, p, rise in rising_baselines(times, stats, slice(first, stop), limits):
-            name, c = tests[j]
-            warnings.append(
-                f"the baseline of {name} ({channels[c]}) still rises (Mann-Kendall p = {p:.2g}, "
-                f"{math.expm1(rise):+.0%} over it): a running-in that goes on may raise the "
-                "alarm; a longer settling time avoids it"
-            )
-        hits = [(a, j) for j, a in enumerate(alarms) if a is not None]
-        alarm = None
-        if hits:
-            index, j = min(hits)
-            name, c = tests[j]
-            alarm = Alarm(index, name, channels[c], float(values[name][index, c]))
+        evaluation = _evaluate(times, values, channels, first, stop, rule, warnings)
         diagnosis = None
         if kin is not None:
             files = Listing(
@@ -366,7 +371,8 @@ def trend_records(
                 tuple(r["file"] for r in good),
                 None if listing.times is None else tuple(r["time"] for r in good),
             )
-            diagnosis = _diagnose(
+            alarm = evaluation["alarm"]
+            diagnosis = diagnose_blocks(
                 runner, files, channels[0], sample_rate, kin, size, alarm, advance
             )
             if diagnosis is None:
@@ -390,14 +396,9 @@ def trend_records(
         zones=zones,
         settle_records=first,
         baseline_stop=stop,
-        false_alarm=rule_p,
-        persistence=rule_r,
-        record_spacing=spacing,
-        tests=tests,
-        limits=tuple(limits),
-        first_alarms=tuple(alarms),
-        alarm=alarm,
+        false_alarm=rule["false_alarm"],
         diagnosis=diagnosis,
+        **evaluation,
         warnings=tuple(warnings),
     )
 
@@ -451,38 +452,3 @@ def _good_rows(listing: Listing, rows: list[dict], warnings: list[str], folder) 
                 hint=f"{r['file']} is at {r['sample_rate']:g} Hz",
             )
     return good
-
-
-def _diagnose(runner, files: Listing, channel, sample_rate, kin, size, alarm, advance):
-    """The diagnosis over blocks of ``size`` consecutive records of ``files`` (time order)
-    and over the block ending at the alarm; None when the series is shorter than a block."""
-    from ..study.execute import run_partitions
-    from .tasks import diagnose_block
-
-    count = len(files.files)
-    if size > count:
-        return None
-    blocks = _blocks(count, size)
-    extra = []
-    if alarm is not None and alarm.record >= size - 1:
-        extra = [np.arange(alarm.record - size + 1, alarm.record + 1)]
-    tasks = [(_sub(files, b), channel, sample_rate, kin) for b in (*blocks, *extra)]
-    outcome: dict[int, dict] = {}
-
-    def collect(task, result):
-        outcome[id(task)] = result
-        advance(len(task[0].files))
-
-    run_partitions(runner, diagnose_block, tasks, [size] * len(tasks), collect)
-    results = [outcome[id(t)] for t in tasks]
-    if all("error" in r for r in results):
-        raise InputError(*results[0]["error"])
-    return BlockDiagnosis.from_blocks(
-        channel,
-        size,
-        kin,
-        blocks,
-        results[: len(blocks)],
-        results[len(blocks)] if extra else None,
-        count,
-    )

@@ -4,14 +4,13 @@
 from __future__ import annotations
 
 import math
-import re
-from collections import Counter
 from dataclasses import dataclass, field
 from datetime import UTC, datetime
 from pathlib import Path
 
 import numpy as np
 
+from .blocks import BlockDiagnosis
 from .indicators import INDICATORS
 
 #: What the test statistic of each indicator is, in words.
@@ -35,77 +34,6 @@ class Alarm:
     indicator: str
     channel: str
     value: float
-
-
-@dataclass(frozen=True, eq=False)
-class BlockDiagnosis:
-    """The diagnosis over blocks of ``block_records`` consecutive records of ``channel``
-    joined end to end: per record, its block's ``verdicts`` and ``significance`` (family ->
-    -log10 p; None where its block failed); the ``alarm`` block's outcome (the records
-    ending at the alarm), the ``threshold`` significance, the blocks' ``warnings``, and the
-    kinematic ``frequencies``."""
-
-    channel: str
-    block_records: int
-    frequencies: object
-    verdicts: tuple
-    significance: tuple
-    blocks: tuple
-    block_verdicts: tuple
-    alarm: dict | None
-    threshold: float | None
-    warnings: tuple = ()
-
-    @classmethod
-    def from_blocks(cls, channel, size, frequencies, blocks, outcome, alarm_outcome, count):
-        verdicts: list = [None] * count
-        significance: list = [None] * count
-        for block, o in zip(blocks, outcome, strict=True):
-            for i in block:
-                verdicts[i] = o.get("verdict")
-                significance[i] = o.get("significance")
-        done = [o for o in outcome if "error" not in o]
-        notes = _grouped([w for o in done for w in o["warnings"]], len(done))
-        failed = [o["error"] for o in outcome if "error" in o]
-        if failed:
-            notes.append(
-                f"{len(failed)} diagnosis block(s) failed: {failed[0][2]} ({failed[0][3]})"
-            )
-        return cls(
-            channel,
-            size,
-            frequencies,
-            tuple(verdicts),
-            tuple(significance),
-            tuple(tuple(int(i) for i in b) for b in blocks),
-            tuple(o.get("verdict") for o in outcome),
-            alarm_outcome if alarm_outcome and "error" not in alarm_outcome else None,
-            done[0]["threshold"] if done else None,
-            tuple(notes),
-        )
-
-    def after(self, record: int) -> dict:
-        """Verdict -> blocks that start at or after ``record``."""
-        return dict(
-            Counter(
-                v
-                for b, v in zip(self.blocks, self.block_verdicts, strict=True)
-                if b[0] >= record and v is not None
-            )
-        )
-
-
-def _grouped(warnings: list[str], blocks: int) -> list[str]:
-    """The blocks' diagnosis warnings, one line per kind (the same words, other numbers),
-    with how many blocks gave it and its first wording.
-
-    >>> _grouped(["shaft at 1836 rpm", "shaft at 1840 rpm", "coarse"], 3)
-    ['diagnosis, 2 of 3 blocks: shaft at 1836 rpm', 'diagnosis, 1 of 3 blocks: coarse']
-    """
-    kinds: dict[str, list] = {}
-    for w in warnings:
-        kinds.setdefault(re.sub(r"[-+]?\d[\d.]*", "#", w), [w, 0])[1] += 1
-    return [f"diagnosis, {n} of {blocks} blocks: {w}" for w, n in kinds.values()]
 
 
 def _indicator_value(name: str, statistic: float) -> float:
@@ -377,93 +305,12 @@ class TrendResult:
         return pd.DataFrame(data)
 
     # ------------------------------------------------------------------ figure
-    def _time_axis(self) -> tuple[np.ndarray, str, float]:
-        span = float(self.times[-1])
-        if span > 3 * 3600:
-            return self.times / 3600.0, "time [h]", 3600.0
-        if span > 180:
-            return self.times / 60.0, "time [min]", 60.0
-        return self.times, "time [s]", 1.0
-
     def plot(self, ax=None):
-        """The indicators over time (one panel each; all channels), the baseline shaded,
-        each test's limit dashed, the alarm as a red line; the velocity with its ISO zones
-        and the family significance when computed. Returns (figure, axes)."""
-        from matplotlib.ticker import FormatStrFormatter, LogLocator, NullFormatter
+        """The indicators over time, the baseline, the limits and the alarm
+        (:func:`.figure.trend_figure`); returns (figure, axes)."""
+        from .figure import trend_figure
 
-        from ..plotting import figure_axes
-
-        panels = list(INDICATORS)
-        if self.velocity is not None:
-            panels.append("velocity")
-        if self.diagnosis is not None:
-            panels.append("families")
-        fig, axes = figure_axes(
-            ax, len(panels), 1, sharex=True, figsize=(10, 1.9 * len(panels) + 0.8), squeeze=False
-        )
-        axes = np.asarray(axes).ravel()
-        t, label, scale = self._time_axis()
-        colours = ["tab:blue", "tab:orange", "tab:green", "tab:purple"]
-        base = (
-            self.times[self.settle_records] / scale,
-            self.times[self.baseline_stop - 1] / scale,
-        )
-        for k, (ax_, panel) in enumerate(zip(axes, panels, strict=True)):
-            ax_.axvspan(*base, color="0.85", lw=0, label="baseline" if k == 0 else None)
-            if self.alarm is not None:
-                ax_.axvline(
-                    t[self.alarm.record], color="red", lw=1.2, label="alarm" if k == 0 else None
-                )
-            if panel in INDICATORS:
-                for c, ch in enumerate(self.channels):
-                    colour = colours[c % len(colours)]
-                    ax_.plot(t, self.values[panel][:, c], lw=0.8, color=colour, label=ch)
-                    j = self.tests.index((panel, c))
-                    ax_.axhline(self.limit(j), color=colour, ls="--", lw=0.8)
-                ax_.set_ylabel(panel.replace("_", " "))
-                if panel == "spectral_kurtosis":
-                    ax_.set_yscale("symlog", linthresh=1.0)
-                else:
-                    ax_.set_yscale("log")
-                    ax_.yaxis.set_major_locator(LogLocator(subs=(1.0, 2.0, 5.0)))
-                    ax_.yaxis.set_minor_formatter(NullFormatter())
-                ax_.yaxis.set_major_formatter(FormatStrFormatter("%g"))
-            elif panel == "velocity":
-                for c, ch in enumerate(self.channels):
-                    ax_.plot(t, self.velocity[:, c] * 1e3, lw=0.8, color=colours[c % 4], label=ch)
-                if self.zones is not None:
-                    for name, v in (
-                        ("A/B", self.zones.a_b),
-                        ("B/C", self.zones.b_c),
-                        ("C/D", self.zones.c_d),
-                    ):
-                        ax_.axhline(v * 1e3, color="0.4", ls=":", lw=0.8)
-                        ax_.annotate(name, (t[0], v * 1e3), fontsize=7, color="0.3", va="bottom")
-                ax_.set_ylabel("velocity rms\n10-1000 Hz [mm/s]")
-                ax_.set_yscale("log")
-            else:
-                d = self.diagnosis
-                for fam in ("outer_race", "inner_race", "ball", "cage"):
-                    y = [np.nan if s is None else s.get(fam, np.nan) for s in d.significance]
-                    ax_.plot(t, y, lw=0.8, label=fam)
-                if d.threshold is not None:
-                    ax_.axhline(d.threshold, color="0.3", ls="--", lw=0.8)
-                ax_.set_ylabel("family signif.\n-log10 p")
-                ax_.legend(fontsize=7, loc="upper left", ncol=4)
-        axes[0].legend(fontsize=7, loc="upper left", ncol=4)
-        axes[-1].set_xlabel(label)
-        title = Path(self.folder).name or self.folder
-        if self.alarm is not None:
-            a = self.alarm
-            title += (
-                f": alarm at {t[a.record]:.4g} {label.split('[')[1].rstrip(']')} "
-                f"({a.indicator.replace('_', ' ')}, {a.channel})"
-            )
-        else:
-            title += ": no alarm"
-        axes[0].set_title(title)
-        fig.tight_layout()
-        return fig, axes
+        return trend_figure(self, ax)
 
     # ------------------------------------------------------------------ page
     def to_html(self) -> str:

@@ -67,6 +67,11 @@ class Listing:
     times: tuple[float, ...] | None = None
     unlisted: tuple[str, ...] = ()
 
+    def subset(self, indices) -> Listing:
+        """The records ``indices`` of this listing, in that order."""
+        times = None if self.times is None else tuple(self.times[i] for i in indices)
+        return Listing(self.folder, self.layout, tuple(self.files[i] for i in indices), times)
+
 
 @dataclass(frozen=True)
 class Record:
