@@ -12,8 +12,10 @@ Modules, one sub-problem each:
 - :mod:`.indicators`: rms, peak, crest factor, kurtosis, spectral kurtosis, velocity;
 - :mod:`.severity`: the ISO 20816 zones;
 - :mod:`.alarm`: the baseline limits, persistence and their false-alarm probability;
+- :mod:`.blocks`: the diagnosis over blocks of consecutive records, at and after the alarm;
 - :mod:`.tasks`: the work run on the workers; :mod:`.result`: :class:`TrendResult`;
-- :mod:`.analysis`: :func:`trend_records`.
+  :mod:`.figure`: its figure;
+- :mod:`.analysis`: :func:`trend_records`; :mod:`.simulated`: :func:`simulate_series`.
 
 Sources are cited in each module; docs/capabilities/trend.md says what was measured.
 """

@@ -4,8 +4,9 @@ Steps: list the folder (:mod:`.series`); read the records in chunks, in this pro
 on dask workers (:mod:`.tasks`), into their health indicators (:mod:`.indicators`); put
 them in time order; learn the baseline after the settling time and test every indicator
 of every channel against it (:mod:`.alarm`); when the bearing and the speed are given,
-run the diagnosis over blocks of consecutive records and at the alarm; place the velocity
-in the ISO 20816 zones when the unit and the machine group are given (:mod:`.severity`).
+run the diagnosis over blocks of consecutive records and at the alarm (:mod:`.blocks`);
+place the velocity in the ISO 20816 zones when the unit and the machine group are given
+(:mod:`.severity`).
 """
 
 from __future__ import annotations
