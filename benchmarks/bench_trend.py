@@ -14,13 +14,12 @@ from __future__ import annotations
 
 import argparse
 import statistics
-import subprocess
 import sys
 import tempfile
-import time
 from pathlib import Path
 
 import numpy as np
+from bench_cli import _time  # a command's wall time as a new process
 
 ROOT = Path(__file__).resolve().parents[1]
 RUN = ROOT.parent / "shared" / "data" / "run-to-failure" / "Bearing1_1"
@@ -49,15 +48,6 @@ def long_series(folder: Path, count: int = 2800) -> Path:
         table = np.column_stack([hour, minute, second, np.round(micro * 1e6), x])
         np.savetxt(folder / f"acc_{i + 1:05d}.csv", table, fmt="%d,%d,%d,%d,%.3f,%.3f")
     return folder
-
-
-def _time(argv: list[str]) -> float:
-    start = time.perf_counter()
-    done = subprocess.run(argv, capture_output=True, cwd=ROOT)
-    elapsed = time.perf_counter() - start
-    if done.returncode != 0:
-        raise SystemExit(f"{' '.join(argv)} failed:\n{done.stderr.decode()}")
-    return elapsed
 
 
 def main() -> None:
