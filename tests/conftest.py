@@ -91,3 +91,30 @@ def run_error(capsys, *args):
     assert code == 2, (out, err)
     assert err.startswith("error: ") and err.count("\n") == 1, err
     return err
+
+
+def write_pronostia(folder, samples, start=34779.065664, spacing=10.0, numbers=None, sep=","):
+    """Write ``samples`` (records x 2 x n, in g) as PRONOSTIA snapshots ``acc_NNNNN.csv``,
+    as the data set publishes them: headerless, hour, minute, second and microsecond of
+    each sample at 25.6 kHz, then the horizontal and vertical accelerations (3 decimals).
+    Record k starts ``start`` + k ``spacing`` seconds into the day; ``numbers`` are the
+    snapshot numbers (default 1, 2, ...). Returns the folder."""
+    from pathlib import Path
+
+    import numpy as np
+
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    samples = np.asarray(samples, dtype=float)
+    numbers = range(1, len(samples) + 1) if numbers is None else numbers
+    for k, (number, x) in enumerate(zip(numbers, samples, strict=True)):
+        t = (start + k * spacing + np.arange(x.shape[-1]) / 25600.0) % 86400.0
+        hour, rest = np.divmod(t, 3600.0)
+        minute, rest = np.divmod(rest, 60.0)
+        second, micro = np.divmod(rest, 1.0)
+        lines = [
+            f"{h:.0f}{sep}{m:.0f}{sep}{s:.0f}{sep}{u * 1e6:.5g}{sep}{a:.3f}{sep}{b:.3f}"
+            for h, m, s, u, a, b in zip(hour, minute, second, micro, x[0], x[1], strict=True)
+        ]
+        (folder / f"acc_{number:05d}.csv").write_text("\n".join(lines) + "\n")
+    return folder

@@ -54,6 +54,7 @@ _EXPORTS = {
     "rating_life": "life",
     "run_validation": "validation.run",
     "build_report": "report",
+    "trend_records": "trend",
 }
 #: names that differ in their module
 _ALIASES = {"parse_designation": "parse"}

@@ -100,6 +100,7 @@ UNITS: dict[str, Unit] = _units(
     ("rad_s", "rad/s", 1.0, "angular speed"),
     ("m_s", "m/s", 1.0, "velocity"),
     ("um_s", "µm/s", 1e-6, "velocity"),
+    ("mm_s", "mm/s", 1e-3, "velocity"),
     ("m_s2", "m/s²", 1.0, "acceleration"),
     ("w", "W", 1.0, "power"),
     ("mm2_s", "mm²/s", 1e-6, "kinematic viscosity"),
@@ -139,7 +140,7 @@ DIMENSIONLESS: dict[str, str] = {
     "text": "the text of a part as written",
     "parts": "list of designation parts with their meaning",
     "meaning": "what a designation part means",
-    "description": "one-line description of a reading",
+    "description": "one-line description (of a reading, of a rule)",
     "prefixes": "designation prefixes",
     "suffixes": "designation suffixes",
     "series": "ISO family, e.g. 62",
@@ -221,7 +222,8 @@ DIMENSIONLESS: dict[str, str] = {
     "families": "map: fault family -> its series test",
     "tolerances": "map: fault family -> tolerance window (fractions below, above)",
     "false_alarm_probability": "largest chance of a fault called on a record without one",
-    "test_level": "level of each family test (false alarm / (families x methods))",
+    "test_level": "level of each test: the false-alarm probability over the tests "
+    "(diagnosis: families x methods; trend: indicators x channels)",
     "threshold_significance": "-log10 of the test level",
     "significance": "-log10 of a p-value",
     "z": "line level over the local noise floor of the envelope spectrum",
@@ -356,7 +358,7 @@ DIMENSIONLESS: dict[str, str] = {
     "records_written": "records written",
     "open_with": "how to open the data set",
     # the diagnosis benchmark
-    "folder": "the folder of labelled recordings",
+    "folder": "the folder of recordings (labelled, for benchmark)",
     "columns": "the methods' columns",
     "confusion": "map: label -> verdict -> count",
     "recall": "map: label -> recall",
@@ -374,6 +376,43 @@ DIMENSIONLESS: dict[str, str] = {
     "cpw": "the verdict after cepstral pre-whitening",
     "drs-sk": "the verdict after discrete/random separation and a kurtogram band",
     "all": "the verdict of the three methods together",
+    # the trend of a series of recordings
+    "layout": "how a trend's folder is laid out: pronostia or records",
+    "channel_unit": "the channels' unit (g or m/s2), or null when not given",
+    "start_time": "the first record's time as the files give it (time of day, or a UTC "
+    "date and time), or null",
+    "indicators": "map: channel -> its health indicators",
+    "rms": "r.m.s. of a record about its mean, in the channel's unit",
+    "peak": "largest excursion of a record from its mean, in the channel's unit",
+    "crest_factor": "peak / rms",
+    "kurtosis": "fourth moment over the squared variance (3 for Gaussian noise)",
+    "spectral_kurtosis": "largest spectral kurtosis of the fast kurtogram",
+    "zone": "ISO 20816 zone of the velocity: A, B, C or D",
+    "above_limit": "the tests (indicator:channel) whose limit a record is above",
+    "baseline": "the baseline: running-in records left out, its first and last times",
+    "baseline_records": "records in the baseline",
+    "settle_records": "running-in records left out of the baseline",
+    "rule": "the alarm rule and its false-alarm probabilities",
+    "statistic": "what each test compares with its limit",
+    "tail_model": "the model of the baseline's upper tail",
+    "persistence": "consecutive records above a limit that raise the alarm",
+    "tests": "the tests (indicator x channel), or how many",
+    "false_alarm_per_record": "largest chance that the rule raises a false alarm at a "
+    "given record (its model: independent records, exponential tail)",
+    "false_alarm_per_run": "bound on the chance of a false alarm over the records monitored",
+    "monitored_records": "records after the baseline, tested against it",
+    "indicator": "a health indicator: rms, peak, crest_factor, kurtosis, spectral_kurtosis",
+    "baseline_median": "median of the baseline, in the indicator's unit",
+    "limit": "a test's limit, in the indicator's unit",
+    "value": "the indicator's value, in its unit",
+    "first_alarm_record": "record completing a test's first run above its limit (or null)",
+    "alarm": "the alarm (null: none): its record, time and the test that raised it",
+    "record": "a record's index in time order",
+    "block_records": "consecutive records joined end to end for one diagnosis",
+    "blocks": "diagnosis blocks",
+    "after_alarm": "map: verdict -> diagnosis blocks after the alarm",
+    "severity": "the ISO 20816 zones: machine group, boundaries, when each zone was reached",
+    "machine": "the machine group of the ISO 20816 zones",
 }
 
 #: Keys whose members are named by data, not by the contract (e.g. ``sources``), so the
@@ -389,6 +428,8 @@ MAPS = frozenset(
         "confusion",
         "recall",
         "significance",
+        "indicators",
+        "after_alarm",
     }
 )
 

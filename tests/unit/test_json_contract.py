@@ -6,7 +6,7 @@ import json
 from pathlib import Path
 
 import pytest
-from conftest import README_REPORT, README_STATIC
+from conftest import README_REPORT, README_STATIC, write_pronostia
 
 from bearinglab.cli import main
 from bearinglab.units import DIMENSIONLESS, MAPS, contract_markdown, unit_of
@@ -125,6 +125,31 @@ def outputs(tmp_path_factory):
     later = {
         "analyze": ["analyze", str(tmp / "sim.npz"), "--designation", "6205", "--speed-rpm", "1800"]
     }
+    # a short PRONOSTIA-like series whose last records ring: an alarm, its diagnosis, zones
+    import numpy as np
+
+    x = 0.3 * np.random.default_rng(0).standard_normal((48, 2, 2560))
+    x[40:] *= 4.0
+    later["trend"] = [
+        "trend",
+        str(write_pronostia(tmp / "run", x)),
+        "--settle-records",
+        "0",
+        "--baseline-records",
+        "30",
+        "--unit",
+        "g",
+        "--machine",
+        "class1",
+        "--balls",
+        "13",
+        "--ball-diameter-mm",
+        "3.5",
+        "--pitch-diameter-mm",
+        "25.6",
+        "--speed-rpm",
+        "1800",
+    ]
     if (REAL / "labels.csv").exists():  # a labelled folder of one real record
         import shutil
 
@@ -145,7 +170,7 @@ def outputs(tmp_path_factory):
     return out
 
 
-@pytest.mark.parametrize("name", [*COMMANDS, "analyze", "benchmark"])
+@pytest.mark.parametrize("name", [*COMMANDS, "analyze", "benchmark", "trend"])
 def test_every_key_carries_its_unit_or_is_dimensionless(outputs, name):
     if name not in outputs:
         pytest.skip("the shared recordings are not here")
@@ -171,7 +196,7 @@ def _families_named(obj) -> set:
     return named
 
 
-@pytest.mark.parametrize("name", ["simulate", "analyze", "benchmark"])
+@pytest.mark.parametrize("name", ["simulate", "analyze", "benchmark", "trend"])
 def test_one_spelling_of_the_fault_families(outputs, name):
     if name not in outputs:
         pytest.skip("the shared recordings are not here")

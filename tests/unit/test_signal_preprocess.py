@@ -85,3 +85,13 @@ def test_analytic_signal_at_a_fast_length_matches_hilbert():
     ours, ref = np.abs(analytic(x)), np.abs(scipy.signal.hilbert(x))
     inner = slice(1000, -1000)
     assert np.max(np.abs(ours[inner] - ref[inner])) < 0.02 * np.max(ref)
+
+
+@pytest.mark.parametrize("m", [1, 2, 3, 8, 9, 100, 101])
+@pytest.mark.parametrize("alpha", [0.0, 0.25, 0.5, 1.0])
+def test_the_kurtogram_taper_is_scipys_tukey_window(m, alpha):
+    from scipy.signal.windows import tukey as scipy_tukey
+
+    from bearinglab.signal.kurtogram import tukey
+
+    np.testing.assert_allclose(tukey(m, alpha), scipy_tukey(m, alpha), rtol=0, atol=1e-15)

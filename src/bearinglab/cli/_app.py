@@ -58,6 +58,10 @@ COMMANDS: dict[str, tuple[str, str]] = {
     ),
     "analyze": ("analyze", "Diagnose a vibration record by envelope analysis."),
     "benchmark": ("benchmark", "Run the diagnosis over a folder of labelled recordings."),
+    "trend": (
+        "trend",
+        "Trend health indicators over a series of recordings and raise an alarm.",
+    ),
     "noise": (
         "noise",
         (

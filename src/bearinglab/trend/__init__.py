@@ -1,0 +1,40 @@
+"""The trend of a machine over a series of recordings: health indicators per record, a
+baseline learned from the start of the series, an alarm with a stated false-alarm
+probability that stays raised, the diagnosis at and after it, and ISO 20816 severity.
+
+Layer 3 (see docs/architecture.md). :func:`trend_records` reads a folder (PRONOSTIA
+snapshots as published, or the records ``analyze`` reads with their times) and returns a
+:class:`TrendResult` (``to_dict``, ``to_pandas``, ``plot``, ``write_html``).
+
+Modules, one sub-problem each:
+
+- :mod:`.series`: the folder layouts, each record's time, the readers;
+- :mod:`.indicators`: rms, peak, crest factor, kurtosis, spectral kurtosis, velocity;
+- :mod:`.severity`: the ISO 20816 zones;
+- :mod:`.alarm`: the baseline limits, persistence and their false-alarm probability;
+- :mod:`.blocks`: the diagnosis over blocks of consecutive records, at and after the alarm;
+- :mod:`.tasks`: the work run on the workers; :mod:`.result`: :class:`TrendResult`;
+  :mod:`.figure`: its figure;
+- :mod:`.analysis`: :func:`trend_records`; :mod:`.simulated`: :func:`simulate_series`.
+
+Sources are cited in each module; docs/capabilities/trend.md says what was measured.
+"""
+
+from .alarm import FALSE_ALARM, PERSISTENCE, plain_rule
+from .analysis import BASELINE, SETTLE, trend_records
+from .indicators import INDICATORS
+from .result import Alarm, TrendResult
+from .severity import MACHINES
+
+__all__ = [
+    "BASELINE",
+    "FALSE_ALARM",
+    "INDICATORS",
+    "MACHINES",
+    "PERSISTENCE",
+    "SETTLE",
+    "Alarm",
+    "TrendResult",
+    "plain_rule",
+    "trend_records",
+]
