@@ -195,7 +195,8 @@ def test_plot_saves_png(kin, tmp_path):
 
 # ------------------------------------------------------------------ speed
 def test_speed_check_and_auto(kin, er16k):
-    x = impacts(kin.hz("bpfo"), jitter=0.01, shaft_hz=kin.shaft_hz)
+    # 4 s: 117 shaft revolutions, which a speed 2 % off needs to be told apart
+    x = impacts(kin.hz("bpfo"), seconds=4.0, jitter=0.01, shaft_hz=kin.shaft_hz)
     d = analyze_signal(x, FS, kin, methods="raw")
     assert d.speed["measured_rpm"] == pytest.approx(1750.0, rel=2e-3)
     assert d.speed["source"] == "given" and not d.warnings
@@ -208,6 +209,10 @@ def test_speed_check_and_auto(kin, er16k):
     assert d.speed["used_rpm"] == pytest.approx(1750.0, rel=2e-3)
     assert d.verdict == "outer_race"
     assert any("uses the speed the signal shows" in w for w in d.warnings)
+    # a short piece (0.6 s, 17 revolutions: bins 5 % of the shaft) cannot tell 3 % apart:
+    # warned about, not acted on
+    d = analyze_signal(x[: int(0.6 * FS)], FS, wrong, methods="raw")
+    assert d.speed["source"] == "given"
     # auto: the speed the signal shows is used
     d = analyze_signal(x, FS, wrong, methods="raw", shaft_speed="auto")
     assert d.speed["source"] == "signal"

@@ -29,7 +29,7 @@ from .families import (
 )
 from .methods import DESCRIPTIONS, METHODS, method_spectrum, parse_methods
 from .result import Diagnosis
-from .speed import SEARCH, shaft_frequency, shaft_multiple
+from .speed import PRECISE, RESOLVED, SEARCH, shaft_frequency, shaft_multiple
 from .statistics import LINE_ALPHA, SUPPORT_ALPHA, decades
 from .verdict import (
     NO_FAULT,
@@ -197,7 +197,8 @@ def _speed(frequencies, shaft_speed, speed_range, x, fs, warnings):
                     f"sample rate given may be {k} times too high (every frequency then "
                     f"reads {k} times too high) or the speed {k} times too low"
                 )
-        elif found.sub_multiple:
+        elif found.sub_multiple and found.resolves(found.frequency / found.sub_multiple, RESOLVED):
+            # (only a spectrum that resolves the shaft may put the speed in doubt)
             k = found.sub_multiple
             doubt = (
                 f"the shaft series near {given_rpm:.6g} rpm is also a series at 1/{k} of "
@@ -237,10 +238,10 @@ def _speed(frequencies, shaft_speed, speed_range, x, fs, warnings):
 
 
 def _contradicts(found, nominal: float) -> bool:
-    """Whether the shaft series found is unambiguous and off the nominal speed [rad/s] by
-    more than SPEED_WARNING."""
+    """Whether the shaft series found is unambiguous, precise (speed.PRECISE) and off the
+    nominal speed [rad/s] by more than SPEED_WARNING."""
     off = abs(found.frequency / (nominal / (2 * math.pi)) - 1)
-    return off > SPEED_WARNING and found.unambiguous
+    return off > SPEED_WARNING and found.unambiguous and found.resolves(found.frequency, PRECISE)
 
 
 def _checks(kin, n, fs, max_frequency, harmonics, warnings):

@@ -35,6 +35,13 @@ SEARCH = 0.05
 #: sub-multiple of its frequency (on the CWRU and MFPT records of shared/data/real the
 #: shaft series holds 3 to 5 of its first 5 harmonics at p 1e-4 to 0.03).
 UNAMBIGUOUS_HARMONICS = 3
+#: Resolution of the raw spectrum, as a fraction of the shaft frequency, at which its
+#: shaft series may replace a speed given 2 % off (a bin no wider than that: 50 shaft
+#: revolutions or more in the record; a 0.3 s record's 3.3 Hz bins read an 1800 rpm shaft
+#: at 1850 rpm), and at which it may put a speed in doubt (the search's own half-width:
+#: 20 revolutions or more).
+PRECISE = 0.02
+RESOLVED = SEARCH
 #: Multiples of the given speed searched when no shaft line stands near it (a sample rate
 #: given that many times too high, or a speed that many times too low).
 MULTIPLES = (2, 3, 4)
@@ -46,7 +53,7 @@ class ShaftEstimate:
     series was found), the search range ``low`` - ``high`` [Hz], the series' ``p_value``
     [-], the number of ``harmonics`` found [-] and ``sub_multiple`` k when the series
     found is also a significant series at frequency / k below the range (a sample rate or
-    speed k times too high) [-]."""
+    speed k times too high) [-], and the ``resolution`` of the spectrum searched [Hz]."""
 
     frequency: float | None
     low: float
@@ -54,15 +61,21 @@ class ShaftEstimate:
     p_value: float
     harmonics: int
     sub_multiple: int | None = None
+    resolution: float = 0.0
 
     @property
     def unambiguous(self) -> bool:
-        """Whether the series found is strong enough to overrule a speed given."""
+        """Whether the series found is strong enough to overrule a speed given:
+        UNAMBIGUOUS_HARMONICS harmonics or more, and no sub-multiple."""
         return (
             self.frequency is not None
             and self.harmonics >= UNAMBIGUOUS_HARMONICS
             and self.sub_multiple is None
         )
+
+    def resolves(self, frequency: float, fraction: float) -> bool:
+        """Whether the spectrum searched resolves ``fraction`` of ``frequency`` [Hz]."""
+        return self.resolution <= fraction * frequency
 
     def to_dict(self) -> dict:
         """JSON form (Hz and rpm)."""
@@ -125,7 +138,7 @@ def shaft_frequency(
     )
     found = [ln for ln in test.lines if ln.p_value < SPEED_ALPHA]
     if test.p_value >= SPEED_ALPHA or not found:
-        return ShaftEstimate(None, low, high, test.p_value, 0)
+        return ShaftEstimate(None, low, high, test.p_value, 0, resolution=resolution)
     # a series at f also shows at 2f (every other line): prefer the lowest sub-multiple
     # inside the range whose own series is significant (octave errors of pitch search)
     below = None
@@ -158,7 +171,7 @@ def shaft_frequency(
     estimate = float(np.sum(k * f) / np.sum(k * k)) if k.size else test.fundamental_hz
     if not math.isfinite(estimate) or not low <= estimate <= high:
         estimate = test.fundamental_hz
-    return ShaftEstimate(estimate, low, high, test.p_value, len(found), below)
+    return ShaftEstimate(estimate, low, high, test.p_value, len(found), below, resolution)
 
 
 def shaft_multiple(x: np.ndarray, sample_rate: float, nominal: float):
@@ -171,6 +184,10 @@ def shaft_multiple(x: np.ndarray, sample_rate: float, nominal: float):
             break
         found = shaft_frequency(x, sample_rate, low, high)
         # Bonferroni over the multiples tried
-        if found.unambiguous and found.p_value < SPEED_ALPHA / len(MULTIPLES):
+        if (
+            found.unambiguous
+            and found.resolves(found.frequency, RESOLVED)
+            and found.p_value < SPEED_ALPHA / len(MULTIPLES)
+        ):
             return k, found.frequency
     return None
