@@ -383,7 +383,9 @@ def analyze_signal(
             raise InputError(
                 "resolution", resolution, f"a resolution >= {floor_res:.4g} Hz (1 / record length)"
             )
-    spectra = [with_z(method_spectrum(m, x, fs, resolution, band, largest)) for m in names]
+    spectra = [
+        with_z(method_spectrum(m, x, fs, resolution, band, largest, max_frequency)) for m in names
+    ]
     # sidebands and intermodulation at the rates the signal shows: the shaft line found
     # (the one masked), the cage in proportion
     rates = {"shaft": shaft_hz, "ftf": freqs["ftf"] * shaft_hz / freqs["shaft"]}
