@@ -57,7 +57,8 @@ def _rows(folder: Path) -> list[dict]:
 
 def _channel(folder: Path, row: dict, channel: str):
     try:
-        s = read_signal(folder / row["file"], sample_rate=None, channel=channel)
+        fs = float(row["sample_rate_hz"]) if row.get("sample_rate_hz") else None
+        s = read_signal(folder / row["file"], sample_rate=fs, channel=channel)
     except InputError as exc:
         if exc.parameter == "channel":
             return None
