@@ -263,7 +263,9 @@ def analyze_signal(
     channel : str, optional
         Channel of a Signal; default ``acc_y``, ``DE`` or ``gs`` if present, else the first.
     methods : str or sequence of str, optional
-        ``raw``, ``cpw``, ``drs-sk`` (Smith & Randall's Methods 1-3), several, or "all".
+        ``raw``, ``cpw``, ``drs-sk`` (Smith & Randall's Methods 1-3), several, or "all"
+        (those three); ``ies``, the improved envelope spectrum (optional, never in "all":
+        :mod:`.methods`).
         Default DEFAULT_METHODS (``cpw``), except for a record simulated
         by bearinglab (a Signal whose metadata names its ``model``): SIMULATED_METHODS
         (``raw``), because a simulation without random slip is deterministic, and
