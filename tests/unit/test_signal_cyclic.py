@@ -169,6 +169,8 @@ def test_inputs_are_checked():
         spectral_coherence(x, FS, 100, 300.0, 4096)
     with pytest.raises(InputError, match="alpha_max"):
         spectral_coherence(x, FS, 256, 5900.0, 4096)
+    with pytest.raises(InputError, match="hop"):
+        spectral_coherence(x, FS, 256, 300.0, 4096, hop=48)
     with pytest.raises(InputError, match="block_length"):
         spectral_coherence(x, FS, 256, 300.0, 4100)
     c = spectral_coherence(x, FS, 256, 300.0, 4096)

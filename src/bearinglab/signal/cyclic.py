@@ -58,9 +58,10 @@ CHUNK_BLOCKS = 4
 
 class CyclicCorrelation(NamedTuple):
     """Full-record fast spectral correlation: ``alpha`` [Hz] (the cyclic frequencies,
-    spacing f_s / (K R)), ``frequency`` [Hz] (the spectral frequencies f_k), ``correlation``
-    S_x(alpha, f_k) (complex, shape (alpha, frequency), unit of x squared per Hz times
-    f_s... see :func:`fast_spectral_correlation`) and ``power`` S_x(0, f_k)."""
+    spacing f_s / (K R)), ``frequency`` [Hz] (the spectral frequencies f_k),
+    ``correlation`` S_x(alpha, f_k) (complex, shape (alpha, frequency); NaN for the bins
+    below the cyclic range) and ``power`` S_x(0, f_k), both as averages of |X(i, k)|^2
+    [unit of x squared] (:func:`fast_spectral_correlation`)."""
 
     alpha: np.ndarray
     frequency: np.ndarray
@@ -121,8 +122,14 @@ def _check(window_length, hop, n):
         raise InputError(
             "window_length", window_length, f"a power of two from 16 to the {n} samples"
         )
-    if not (isinstance(hop, (int, np.integer)) and 1 <= hop <= window_length // 4):
-        raise InputError("hop", hop, f"an integer from 1 to {window_length // 4} (N_w / 4)")
+    if not (
+        isinstance(hop, (int, np.integer))
+        and 1 <= hop <= window_length // 4
+        and window_length % hop == 0
+    ):
+        raise InputError(
+            "hop", hop, f"a divisor of N_w = {window_length} from 1 to {window_length // 4}"
+        )
 
 
 def _shifts(alpha_bins: np.ndarray, ratio: float, p_max: int):
@@ -195,7 +202,8 @@ def fast_spectral_correlation(
     -------
     CyclicCorrelation
         S_x(alpha, f_k) at alpha = 0, f_s / (K' R), ... (K' the frames, rounded up to a
-        fast transform length), for the spectral bins f_k >= alpha_max + 2 Delta f (the
+        multiple of N_w / R so that Delta f is a whole number of cyclic bins), for the
+        spectral bins f_k >= alpha_max + 2 Delta f (the
         others are NaN); ``power`` is S_x(0, f_k). Both in x's unit squared, as averages
         of |X(i, k)|^2 (divide by f_s sum w^2 for a density).
 
