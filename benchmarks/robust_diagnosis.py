@@ -7,6 +7,10 @@ given 1 % low and 1 % high (a tachometer's error). A verdict is right (the label
 record) or a miss ("no fault detected" on a faulty record). Run from the repository root:
 
     python benchmarks/robust_diagnosis.py ../shared/data/real [more folders...]
+        [--methods raw,cpw,drs-sk,ies,cpw+ies]
+
+``--methods``: the method sets, comma-separated; a set joins methods with "+" (diagnosed
+together, as ``analyze --method cpw,ies`` does); default METHODS.
 
 The fan-end and base channels of the CWRU files make two more folders: a copy of
 labels.csv with ``channel`` set to FE or BA beside links to the recordings
@@ -27,7 +31,7 @@ from bearinglab.errors import InputError
 from bearinglab.kinematics import defect_frequencies
 from bearinglab.signal import read_signal
 
-METHODS = ("raw", "cpw", "drs-sk")
+METHODS = ("raw", "cpw", "drs-sk", "ies")
 #: variant -> (part of the record, factor on the speed given)
 VARIANTS = {
     "whole": (slice(None), 1.0),
@@ -38,8 +42,9 @@ VARIANTS = {
 }
 
 
-def verdicts(folder: Path, row: dict) -> list[tuple]:
-    """(variant, method, verdict) of one labelled record; [] when its channel is absent."""
+def verdicts(folder: Path, row: dict, methods=METHODS) -> list[tuple]:
+    """(variant, method set, verdict) of one labelled record; [] when its channel is
+    absent."""
     fs = float(row["sample_rate_hz"]) if row.get("sample_rate_hz") else None
     try:
         signal = read_signal(
@@ -56,12 +61,13 @@ def verdicts(folder: Path, row: dict) -> list[tuple]:
         half = x.size // 2
         y = x[:half] if part == "first" else x[half:] if part == "second" else x[part]
         kin = defect_frequencies(_bearing(row), factor * rpm * math.pi / 30)
-        for method in METHODS:
-            out.append((variant, method, analyze_signal(y, fs, kin, methods=method).verdict))
+        for method in methods:
+            names = tuple(method.split("+"))
+            out.append((variant, method, analyze_signal(y, fs, kin, methods=names).verdict))
     return out
 
 
-def main(folders: list[str]) -> None:
+def main(folders: list[str], methods=METHODS) -> None:
     counts: Counter = Counter()
     wrong = []
     for folder in map(Path, folders):
@@ -69,7 +75,7 @@ def main(folders: list[str]) -> None:
             rows = list(csv.DictReader(f))
         for row in rows:
             expected = EXPECTED[label_fault(row["fault"])]
-            for variant, method, verdict in verdicts(folder, row):
+            for variant, method, verdict in verdicts(folder, row, methods):
                 kind = (
                     "right" if verdict == expected else "miss" if verdict == NO_FAULT else "wrong"
                 )
@@ -79,10 +85,10 @@ def main(folders: list[str]) -> None:
                         f"{folder.name}/{row['file']} {row.get('channel', '')} "
                         f"({row['fault']}), {variant}, {method}: {verdict}"
                     )
-    print(f"{'method':8s} {'right':>6s} {'wrong':>6s} {'miss':>6s}")
-    for method in METHODS:
+    print(f"{'method':14s} {'right':>6s} {'wrong':>6s} {'miss':>6s}")
+    for method in methods:
         print(
-            f"{method:8s} "
+            f"{method:14s} "
             + " ".join(f"{counts[method, k]:6d}" for k in ("right", "wrong", "miss"))
         )
     print("wrong faults:")
@@ -90,4 +96,10 @@ def main(folders: list[str]) -> None:
 
 
 if __name__ == "__main__":
-    main(sys.argv[1:] or ["../shared/data/real"])
+    args = sys.argv[1:]
+    chosen = METHODS
+    if "--methods" in args:
+        i = args.index("--methods")
+        chosen = tuple(m for m in args[i + 1].split(",") if m)
+        del args[i : i + 2]
+    main(args or ["../shared/data/real"], chosen)

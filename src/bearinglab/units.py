@@ -228,7 +228,7 @@ DIMENSIONLESS: dict[str, str] = {
     "significance": "-log10 of a p-value",
     "z": "line level over the local noise floor of the envelope spectrum",
     "p_value": "chance that noise alone shows what was found",
-    "methods": "the diagnosis methods run (raw, cpw, drs-sk)",
+    "methods": "the diagnosis methods run (raw, cpw, drs-sk, ies)",
     "method_shown": "the method whose spectrum is shown",
     "cage_modulation_of": "faults whose FTF lines were counted as cage modulation",
     "band_kurtosis": "spectral kurtosis of the demodulation band",
@@ -375,6 +375,7 @@ DIMENSIONLESS: dict[str, str] = {
     "raw": "the verdict of the envelope of the raw signal",
     "cpw": "the verdict after cepstral pre-whitening",
     "drs-sk": "the verdict after discrete/random separation and a kurtogram band",
+    "ies": "the verdict of the improved envelope spectrum (spectral coherence)",
     "all": "the verdict of the three methods together",
     # the trend of a series of recordings
     "layout": "how a trend's folder is laid out: pronostia or records",

@@ -3,8 +3,9 @@ probability (1 %): white noise and healthy simulated bearings, in at least 95 % 
 (issue 11), with and without measurement noise (issue 21). Measured 2026-11-24 with the
 nested sideband templates: white noise 0/200 seeds called faulty with cpw and raw, 1/200
 with drs-sk and with all three; healthy rigid-model 6205 records 0/40 (noise 1 m/s^2;
-1/40 before the nested templates).
-The default run is short; the ``slow`` ones use more seeds."""
+1/40 before the nested templates). The optional ``ies`` method (2026-11-26): 0/200
+white-noise records of 1-5 s (benchmarks/null_diagnosis.py). The default run is short;
+the ``slow`` ones use more seeds."""
 
 import math
 
@@ -69,7 +70,7 @@ def _false_alarms_noise_free(cases, methods=("raw", "cpw", "drs-sk"), duration=0
     return bad
 
 
-@pytest.mark.parametrize("methods", ["cpw", "all"])
+@pytest.mark.parametrize("methods", ["cpw", "all", "ies"])
 def test_white_noise_is_no_fault(bearing, methods):
     assert _false_alarms_white(bearing, range(20), methods) <= 1  # >= 95 %
 
@@ -99,7 +100,7 @@ def test_noise_free_healthy_simulations_are_no_fault_over_loads_and_speeds():
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("methods", ["raw", "cpw", "drs-sk", "all"])
+@pytest.mark.parametrize("methods", ["raw", "cpw", "drs-sk", "all", "ies"])
 def test_white_noise_is_no_fault_many_seeds(bearing, methods):
     assert _false_alarms_white(bearing, range(100, 300), methods) <= 10
 

@@ -175,7 +175,8 @@ def analyze_command(
         typer.Option(
             "--method",
             help="raw, cpw, drs-sk or all (repeatable or comma-separated): "
-            "Smith & Randall's Methods 1-3; default cpw (raw for bearinglab "
+            "Smith & Randall's Methods 1-3; ies: the improved envelope spectrum "
+            "(spectral coherence), optional; default cpw (raw for bearinglab "
             "simulations).",
         ),
     ] = None,

@@ -27,8 +27,8 @@ def benchmark_command(
         list[str] | None,
         typer.Option(
             "--method",
-            help="raw, cpw, drs-sk or all (repeatable or comma-separated); each "
-            "is also run on its own; default cpw.",
+            help="raw, cpw, drs-sk, all (the three) or ies (repeatable or "
+            "comma-separated); each is also run on its own; default cpw.",
         ),
     ] = None,
     jobs: Annotated[int, typer.Option("--jobs", help="Records diagnosed at once (processes).")] = 1,

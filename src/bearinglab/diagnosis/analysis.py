@@ -320,7 +320,9 @@ def analyze_signal(
     channel : str, optional
         Channel of a Signal; default ``acc_y``, ``DE`` or ``gs`` if present, else the first.
     methods : str or sequence of str, optional
-        ``raw``, ``cpw``, ``drs-sk`` (Smith & Randall's Methods 1-3), several, or "all".
+        ``raw``, ``cpw``, ``drs-sk`` (Smith & Randall's Methods 1-3), several, or "all"
+        (those three); ``ies``, the improved envelope spectrum (optional, never in "all":
+        :mod:`.methods`).
         Default DEFAULT_METHODS (``cpw``), except for a record simulated
         by bearinglab (a Signal whose metadata names its ``model``): SIMULATED_METHODS
         (``raw``), because a simulation without random slip is deterministic, and
@@ -441,7 +443,9 @@ def analyze_signal(
             raise InputError(
                 "resolution", resolution, f"a resolution >= {floor_res:.4g} Hz (1 / record length)"
             )
-    spectra = [with_z(method_spectrum(m, x, fs, resolution, band, largest)) for m in names]
+    spectra = [
+        with_z(method_spectrum(m, x, fs, resolution, band, largest, max_frequency)) for m in names
+    ]
     # sidebands and intermodulation at the rates the signal shows: the shaft line found
     # (the one masked), the cage in proportion
     rates = {"shaft": shaft_hz, "ftf": freqs["ftf"] * shaft_hz / freqs["shaft"]}

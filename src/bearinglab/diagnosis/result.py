@@ -31,8 +31,9 @@ class Diagnosis:
         Level of each family test: ``false_alarm`` / (families x methods) [-].
     spectrum : EnvelopeSpectrum
         Squared envelope spectrum of the method that showed the primary fault (else the
-        first method): ``frequency`` [Hz], ``amplitude`` [unit of the samples squared],
-        ``band`` [Hz] or None.
+        first method): ``frequency`` [Hz], ``amplitude`` [unit of the samples squared;
+        for ``ies`` sqrt(2 x the improved envelope spectrum over its noise level), no
+        unit], ``band`` [Hz] or None (for ``ies`` the spectral frequencies averaged).
     spectra : dict
         Method -> its MethodSpectrum (with the normalised power ``z``).
     peaks : tuple of dict

@@ -297,9 +297,12 @@ def stray_series(
 
 
 def with_z(spec):
-    """The MethodSpectrum with its normalised power ``z`` [-] filled in."""
+    """The MethodSpectrum with its normalised power ``z`` [-] filled in (kept when the
+    method set its own: ``ies``)."""
     import dataclasses
 
+    if spec.z is not None:
+        return spec
     return dataclasses.replace(spec, z=normalised(spec.power, spec.nu))
 
 

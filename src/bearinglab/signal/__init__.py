@@ -1,8 +1,11 @@
 """Signal analysis for bearing diagnostics: records and their files, spectra, envelope
-analysis with a spectral-kurtosis band, peak matching to defect frequencies, coherence.
+analysis with a spectral-kurtosis band, peak matching to defect frequencies, coherence,
+and cyclic spectral analysis (:mod:`.cyclic`: the fast spectral correlation and the
+improved envelope spectrum).
 
 Sources are cited in each module: Randall & Antoni 2011 (envelope analysis), Antoni 2006
-and 2007 (spectral kurtosis, kurtogram), SciPy (scipy.signal, scipy.io) and numpy.fft.
+and 2007 (spectral kurtosis, kurtogram), Antoni, Xin & Hamzaoui 2017 and Mauricio et al.
+2020 (cyclic spectral analysis), SciPy (scipy.signal, scipy.io) and numpy.fft.
 """
 
 from .bands import ISO15242_BANDS, VelocityBands, iso15242_bands, velocity_bands
