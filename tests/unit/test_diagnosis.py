@@ -573,7 +573,7 @@ def test_labels_and_measured_ball_line():
 def test_the_reason_names_the_gate_that_stopped_a_family_above_the_threshold():
     """A family above the threshold that is not called must not read as a contradiction:
     the reason says which series test it failed (seen on CWRU 3005, ball 10^-3.1)."""
-    from bearinglab.diagnosis.analysis import _reason
+    from bearinglab.diagnosis.reasons import verdict_reason as _reason
 
     def row(sig, harmonic, support):
         return {

@@ -19,27 +19,15 @@ from ..kinematics import DefectFrequencies, defect_frequencies
 from ..signal import EnvelopeSpectrum, Signal
 from ..signal.quality import check_channel
 from .families import (
-    FAMILIES,
-    FREQUENCY,
-    GATE_CARRIERS,
-    GATE_ORDERS,
-    SIDEBANDS,
     families,
     tolerances,
 )
-from .methods import DESCRIPTIONS, METHODS, method_spectrum, parse_methods
+from .methods import METHODS, method_spectrum, parse_methods
+from .reasons import doubt_reason, stray_warning, verdict_reason
 from .result import Diagnosis
-from .speed import PRECISE, RESOLVED, SEARCH, shaft_frequency, shaft_multiple
-from .statistics import LINE_ALPHA, SUPPORT_ALPHA, decades
-from .verdict import (
-    NO_FAULT,
-    decide,
-    discrete_mask,
-    label_peaks,
-    significance,
-    stray_series,
-    with_z,
-)
+from .speed import SPEED_CONFIRMING, speed_used
+from .statistics import LINE_ALPHA, decades
+from .verdict import NO_FAULT, decide, discrete_mask, label_peaks, with_z
 
 #: Channels preferred when none is named: the vertical (load-direction) acceleration of
 #: a simulated record, the drive-end accelerometer of a CWRU record, MFPT's ``gs``.
@@ -72,11 +60,6 @@ COARSE_CAGE_REVOLUTIONS = 10.0
 #: Resolution of the envelope spectra, as a fraction of FTF (ten bins between the cage
 #: sidebands of a ball line), unless the record is shorter.
 RESOLUTION_FTF = 0.1
-#: Speed disagreement that is warned about [-, fraction]: the race lines' tolerance.
-SPEED_WARNING = 0.02
-#: Faults whose series confirm a speed the shaft series puts in doubt (their lines sit
-#: where that speed puts them).
-SPEED_CONFIRMING = frozenset({"outer_race", "inner_race", "ball"})
 
 
 def _samples(signal_or_array, sample_rate, channel):
@@ -119,7 +102,9 @@ def _positive(name: str, value, allowed: str, optional: bool = True) -> float | 
 
 
 def _speed(frequencies, shaft_speed, speed_range, x, fs, warnings):
-    """(DefectFrequencies at the speed used, the speed record)."""
+    """(DefectFrequencies at the speed used, the speed record, the shaft rate the signal
+    shows [Hz], the doubt on the speed given or None): the inputs checked here, the speed
+    by :func:`.speed.speed_used`."""
     if isinstance(frequencies, DefectFrequencies):
         bearing, nominal = frequencies.bearing, frequencies.shaft_speed
         outer, alpha = frequencies.outer_rotating, frequencies.contact_angle
@@ -141,107 +126,9 @@ def _speed(frequencies, shaft_speed, speed_range, x, fs, warnings):
         raise InputError("shaft_speed", nominal, 'a speed > 0 rad/s or "auto"')
     if nominal is None and not auto:
         raise InputError("shaft_speed", None, 'a speed > 0 rad/s or "auto" with a BallBearing')
-    if speed_range is not None:
-        try:
-            low, high = (float(v) / (2 * math.pi) for v in speed_range)
-        except (TypeError, ValueError):
-            low = high = math.nan
-        if not (0 < low < high):
-            raise InputError("speed_range", speed_range, "(low, high) in rad/s, 0 < low < high")
-        if not auto and nominal is not None and not low <= nominal / (2 * math.pi) <= high:
-            warnings.append(
-                f"the given {nominal * 30 / math.pi:.6g} rpm is outside the speed range "
-                f"{60 * low:.6g}-{60 * high:.6g} rpm, which then only bounds the search "
-                "that checks it"
-            )
-    elif nominal is not None:
-        low, high = (nominal / (2 * math.pi) * (1 + s) for s in (-SEARCH, SEARCH))
-    else:
-        raise InputError(
-            "speed_range",
-            None,
-            'a (low, high) range in rad/s for shaft_speed="auto" without a nominal speed',
-        )
-    if high >= fs / 2:
-        raise InputError("speed_range", speed_range, f"speeds below Nyquist ({fs / 2:g} Hz)")
-    found = shaft_frequency(x, fs, low, high)
-    record = {"given_rpm": None if nominal is None else nominal * 30 / math.pi, **found.to_dict()}
-    doubt = None  # why the signal's shaft series points away from the speed given
-    if auto:
-        if found.frequency is None:
-            raise InputError(
-                "shaft_speed",
-                "auto",
-                f"a record whose shaft line stands out between {60 * low:.6g} and "
-                f"{60 * high:.6g} rpm, or a speed",
-                hint="no shaft line found",
-            )
-        used, record["source"] = 2 * math.pi * found.frequency, "signal"
-    else:
-        used, record["source"] = nominal, "given"
-        given_rpm = nominal * 30 / math.pi
-        if found.frequency is None:
-            where = (
-                f"within {100 * SEARCH:g} % of the given {given_rpm:.6g} rpm"
-                if speed_range is None
-                else f"between {60 * low:.6g} and {60 * high:.6g} rpm"
-            )
-            above = shaft_multiple(x, fs, nominal / (2 * math.pi))
-            if above is None:
-                warnings.append(f"no shaft line found {where}: the speed is not checked")
-            else:
-                k, f = above
-                doubt = (
-                    f"no shaft line found {where}, but a shaft series at {k} x it "
-                    f"({60 * f:.6g} rpm), and no fault's lines confirm the given speed: the "
-                    f"sample rate given may be {k} times too high (every frequency then "
-                    f"reads {k} times too high) or the speed {k} times too low"
-                )
-        elif found.sub_multiple and found.resolves(found.frequency / found.sub_multiple, RESOLVED):
-            # (only a spectrum that resolves the shaft may put the speed in doubt)
-            k = found.sub_multiple
-            doubt = (
-                f"the shaft series near {given_rpm:.6g} rpm is also a series at 1/{k} of "
-                f"it ({60 * found.frequency / k:.6g} rpm), and no fault's lines confirm the "
-                f"given speed: the lines may be harmonic {k} of the real shaft - the sample "
-                f"rate given may be {k} times too low (every frequency then reads {k} times "
-                f"too low) or the speed {k} times too high"
-            )
-        elif _contradicts(found, nominal):
-            # the signal's own shaft series, unambiguous and off by more than the race
-            # lines' tolerance: defect lines read at the given speed would be read in the
-            # wrong place (a record that stores 1732 rpm but runs at 1774 rpm was called
-            # "outer race" from inner-race harmonics), so the speed shown is used
-            used, record["source"] = 2 * math.pi * found.frequency, "signal"
-            warnings.append(
-                f"the signal shows the shaft at {60 * found.frequency:.6g} rpm "
-                f"({found.harmonics} harmonics), "
-                f"{100 * (found.frequency / (nominal / (2 * math.pi)) - 1):+.1f} % from the "
-                f"given {given_rpm:.6g} rpm (tolerance {100 * SPEED_WARNING:g} %): the "
-                "diagnosis uses the speed the signal shows - check the speed and the "
-                "sample rate"
-            )
-        elif abs(found.frequency / (nominal / (2 * math.pi)) - 1) > SPEED_WARNING:
-            warnings.append(
-                f"the signal shows the shaft at {60 * found.frequency:.6g} rpm, "
-                f"{100 * (found.frequency / (nominal / (2 * math.pi)) - 1):+.1f} % "
-                f"from the given {given_rpm:.6g} rpm (tolerance "
-                f"{100 * SPEED_WARNING:g} %): check the speed and the sample rate"
-            )
-    record["used_rpm"] = used * 30 / math.pi
+    used, record, measured, doubt = speed_used(x, fs, nominal, speed_range, auto, warnings)
     kin = defect_frequencies(bearing, used, outer_rotating=outer, contact_angle=alpha)
-    measured = found.frequency if found.frequency is not None else kin.shaft_hz
-    # True: the signal's shaft series confirms the speed used; None: no shaft series to
-    # check it; a doubt is settled by the verdict (SPEED_CONFIRMING)
-    record["confirmed"] = None if found.frequency is None and doubt is None else doubt is None
-    return kin, record, measured, doubt
-
-
-def _contradicts(found, nominal: float) -> bool:
-    """Whether the shaft series found is unambiguous, precise (speed.PRECISE) and off the
-    nominal speed [rad/s] by more than SPEED_WARNING."""
-    off = abs(found.frequency / (nominal / (2 * math.pi)) - 1)
-    return off > SPEED_WARNING and found.unambiguous and found.resolves(found.frequency, PRECISE)
+    return kin, record, kin.shaft_hz if measured is None else measured, doubt
 
 
 def _checks(kin, n, fs, max_frequency, harmonics, warnings):
@@ -398,9 +285,10 @@ def analyze_signal(
         raise InputError("count", count, "an integer >= 1")
     supply = _positive("supply_frequency", supply_frequency, "a frequency > 0 Hz")
     mesh = _positive("mesh_frequency", mesh_frequency, "a frequency > 0 Hz")
+    metadata = getattr(signal_or_array, "metadata", {})
     warnings: list[str] = list(check_channel(x, channel or "the array", "signal_or_array"))
-    warnings += getattr(signal_or_array, "metadata", {}).get("reading_notes", [])
-    stored = getattr(signal_or_array, "metadata", {}).get("stored_sample_rate_hz")
+    warnings += metadata.get("reading_notes", [])
+    stored = metadata.get("stored_sample_rate_hz")
     if stored is not None and abs(stored - fs) > 1e-9 * fs:
         warnings.append(
             f"the file stores a sample rate of {stored:g} Hz and {fs:g} Hz was given: every "
@@ -462,7 +350,7 @@ def analyze_signal(
             )
     # a simulated record of a bearing without a defect names its varying-compliance rate
     # (dynamics.simulate): the model's own lines, masked as a machine's are
-    compliance = getattr(signal_or_array, "metadata", {}).get("varying_compliance_hz")
+    compliance = metadata.get("varying_compliance_hz")
     valid, masked = discrete_mask(
         spectra,
         {"shaft": shaft_hz, "supply": supply, "mesh": mesh, "varying_compliance": compliance},
@@ -495,7 +383,7 @@ def analyze_signal(
         else (faults[0] if len(faults) == 1 else "compound: " + " + ".join(faults))
     )
     if not faults and speed["confirmed"] is not False:
-        warnings += _stray(spectra, fams, valid, max_frequency, pfa, freqs, shaft_hz)
+        warnings += stray_warning(spectra, fams, valid, max_frequency, pfa, freqs, shaft_hz)
     table = {}
     for fam in fams:
         method, test = decision["tests"][fam.name]
@@ -528,17 +416,11 @@ def analyze_signal(
     shown_method = table[faults[0]]["method"] if faults else names[0]
     shown = next(s for s in spectra if s.method == shown_method)
     peaks = label_peaks(shown, decision, fams, masked, count, max_frequency)
-    reason = _reason(faults, table, decision, pfa)
-    if speed["confirmed"] is False:
-        reason = (
-            "no fault named: the signal's shaft series does not confirm the speed given, "
-            "and no race or ball series sits where that speed puts it (see the warnings)"
-            + "".join(
-                f"; {f} passed at that speed ({table[f]['significance']:.3g} by "
-                f"{table[f]['method']}), not called"
-                for f in withdrawn
-            )
-        )
+    reason = (
+        doubt_reason(withdrawn, table)
+        if speed["confirmed"] is False
+        else verdict_reason(faults, table, decision, pfa)
+    )
     return Diagnosis(
         verdict=verdict,
         faults=faults,
@@ -562,88 +444,8 @@ def analyze_signal(
     )
 
 
-def _stray(spectra, fams, valid, max_frequency, pfa, freqs, shaft) -> list[str]:
-    """A warning for the strongest harmonic series that no family explains (the bearing
-    or the speed given may be wrong), at the verdict's false-alarm probability."""
-    found = [
-        (s, hit)
-        for s in spectra
-        if (hit := stray_series(s, fams, valid[s.method], max_frequency, pfa / len(spectra), shaft))
-    ]
-    if not found:
-        return []
-    spec, (f, test, log_p) = min(found, key=lambda sh: sh[1][2])
-    shown = sorted(ln.n for ln in test.lines if ln.log_p < math.log(LINE_ALPHA))
-    kinematic = ", ".join(
-        f"{name.upper()} {freqs[name]:.5g} Hz" for name in ("bpfo", "bpfi", "ball_defect", "ftf")
-    )
-    return [
-        f"a harmonic series at {f:.5g} Hz (harmonics {shown}, significance "
-        f"{decades(log_p):.3g} by {spec.method}) stands in the envelope spectrum, and none of "
-        f"the bearing's frequencies at the speed used explains it ({kinematic}): check the "
-        "bearing and the speed"
-    ]
-
-
 def _tolerances(overrides):
     return tolerances(overrides)
-
-
-def _gated(family: str) -> str:
-    """What the family's harmonic test counts with the harmonics (GATE_ORDERS,
-    GATE_CARRIERS)."""
-    if not GATE_ORDERS[family]:
-        return "alone"
-    if GATE_CARRIERS[family]:
-        return "alone or with the first sidebands of those that show"
-    return "alone or with their first sidebands"
-
-
-def _reason(faults, table, decision, pfa) -> str:
-    """One line: what the verdict rests on."""
-    threshold = significance(decision["alpha"])
-    if not faults:
-        best = max(FAMILIES, key=lambda f: table[f]["significance"])
-        t = table[best]
-        # above the threshold but stopped by a gate: say which, or the table reads wrong
-        gate = significance(SUPPORT_ALPHA)
-        short = []
-        if t["harmonic_significance"] < gate:
-            short.append(
-                f"its harmonics {_gated(best)} reach only {t['harmonic_significance']:.3g}"
-            )
-        if t["support_significance"] < gate:
-            short.append(f"without its strongest line it reaches {t['support_significance']:.3g}")
-        if t["significance"] > threshold and short:
-            return (
-                f"no fault called at a false-alarm probability of {pfa:g}: {best} reaches "
-                f"{t['significance']:.3g} > {threshold:.3g} by {t['method']}, but a fault "
-                f"shows as a series, and {' and '.join(short)} (at least {gate:.3g} needed)"
-            )
-        return (
-            f"no family's harmonic series stands out of the noise floor at a false-alarm "
-            f"probability of {pfa:g} (threshold {threshold:.3g}; best: {best} "
-            f"{t['significance']:.3g} by {t['method']})"
-        )
-    parts = []
-    for f in faults:
-        t = table[f]
-        found = t["lines"]
-        harm = sorted({ln["n"] for ln in found if ln["kind"] == "harmonic"})
-        side = sum(ln["kind"] == "sideband" and ln["n"] > 0 for ln in found)
-        own = sum(ln["n"] == 0 for ln in found)  # the modulation's own lines
-        rate = {"ftf": "FTF"}.get(SIDEBANDS[f][0], SIDEBANDS[f][0])
-        parts.append(
-            f"{f}: {FREQUENCY[f]} {t['fundamental_hz']:.5g} Hz ({100 * t['slip']:+.2f} %), "
-            f"series significance {t['significance']:.3g} > {threshold:.3g}, its harmonics "
-            f"{_gated(f)} {t['harmonic_significance']:.3g} ({t['method']}, "
-            f"{DESCRIPTIONS[t['method']].split(' (')[0]}); lines at {100 * LINE_ALPHA:g} % "
-            f"each: harmonics {harm or 'none'}, sidebands {side}"
-            + (f", k x {rate} {own}" if own else "")
-        )
-    if decision["modulation"]:
-        parts.append("FTF lines counted as the cage-rate modulation of the fault")
-    return "; ".join(parts)
 
 
 __all__ = [

@@ -22,6 +22,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..errors import InputError
+
 #: Harmonics of the shaft frequency read [-].
 SHAFT_HARMONICS = 5
 #: Level at which the shaft series counts as found [-]: the shaft is always there, the
@@ -35,6 +37,11 @@ SEARCH = 0.05
 #: sub-multiple of its frequency (on the CWRU and MFPT records of shared/data/real the
 #: shaft series holds 3 to 5 of its first 5 harmonics at p 1e-4 to 0.03).
 UNAMBIGUOUS_HARMONICS = 3
+#: Speed disagreement that is warned about [-, fraction]: the race lines' tolerance.
+SPEED_WARNING = 0.02
+#: Faults whose series confirm a speed the shaft series puts in doubt (their lines sit
+#: where that speed puts them).
+SPEED_CONFIRMING = frozenset({"outer_race", "inner_race", "ball"})
 #: Resolution of the raw spectrum, as a fraction of the shaft frequency, at which its
 #: shaft series may replace a speed given 2 % off (a bin no wider than that: 50 shaft
 #: revolutions or more in the record; a 0.3 s record's 3.3 Hz bins read an 1800 rpm shaft
@@ -191,3 +198,110 @@ def shaft_multiple(x: np.ndarray, sample_rate: float, nominal: float):
         ):
             return k, found.frequency
     return None
+
+
+def speed_used(x, sample_rate, nominal, speed_range, auto: bool, warnings: list):
+    """The speed a diagnosis runs at, and what the record's shaft series says of it.
+
+    The shaft series is searched in ``speed_range`` ((low, high) [rad/s]; default
+    +-SEARCH round ``nominal`` [rad/s]). With ``auto`` its speed is used. Otherwise the
+    speed given is used, unless the series disagrees by more than SPEED_WARNING and is
+    unambiguous and PRECISE (then the signal's, and a warning says so); a series at a
+    sub-multiple of it, or none near it but one at k x it (:func:`shaft_multiple`), is a
+    doubt that the verdict settles (a sample rate or speed given k times wrong).
+    Warnings are appended to ``warnings``.
+
+    Returns
+    -------
+    (speed used [rad/s], the speed record (JSON: given, measured, source, confirmed...),
+    the shaft frequency found [Hz] or None, the doubt's warning or None)
+    """
+    if speed_range is not None:
+        try:
+            low, high = (float(v) / (2 * math.pi) for v in speed_range)
+        except (TypeError, ValueError):
+            low = high = math.nan
+        if not (0 < low < high):
+            raise InputError("speed_range", speed_range, "(low, high) in rad/s, 0 < low < high")
+        if not auto and nominal is not None and not low <= nominal / (2 * math.pi) <= high:
+            warnings.append(
+                f"the given {nominal * 30 / math.pi:.6g} rpm is outside the speed range "
+                f"{60 * low:.6g}-{60 * high:.6g} rpm, which then only bounds the search "
+                "that checks it"
+            )
+    elif nominal is not None:
+        low, high = (nominal / (2 * math.pi) * (1 + s) for s in (-SEARCH, SEARCH))
+    else:
+        raise InputError(
+            "speed_range",
+            None,
+            'a (low, high) range in rad/s for shaft_speed="auto" without a nominal speed',
+        )
+    if high >= sample_rate / 2:
+        raise InputError(
+            "speed_range", speed_range, f"speeds below Nyquist ({sample_rate / 2:g} Hz)"
+        )
+    found = shaft_frequency(x, sample_rate, low, high)
+    record = {"given_rpm": None if nominal is None else nominal * 30 / math.pi, **found.to_dict()}
+    doubt = None  # why the signal's shaft series points away from the speed given
+    if auto:
+        if found.frequency is None:
+            raise InputError(
+                "shaft_speed",
+                "auto",
+                f"a record whose shaft line stands out between {60 * low:.6g} and "
+                f"{60 * high:.6g} rpm, or a speed",
+                hint="no shaft line found",
+            )
+        used, record["source"] = 2 * math.pi * found.frequency, "signal"
+    else:
+        used, record["source"] = nominal, "given"
+        given_rpm = nominal * 30 / math.pi
+        if found.frequency is None:
+            where = (
+                f"within {100 * SEARCH:g} % of the given {given_rpm:.6g} rpm"
+                if speed_range is None
+                else f"between {60 * low:.6g} and {60 * high:.6g} rpm"
+            )
+            above = shaft_multiple(x, sample_rate, nominal / (2 * math.pi))
+            if above is None:
+                warnings.append(f"no shaft line found {where}: the speed is not checked")
+            else:
+                k, f = above
+                doubt = (
+                    f"no shaft line found {where}, but a shaft series at {k} x it "
+                    f"({60 * f:.6g} rpm), and no fault's lines confirm the given speed: the "
+                    f"sample rate given may be {k} times too high (every frequency then "
+                    f"reads {k} times too high) or the speed {k} times too low"
+                )
+        elif found.sub_multiple and found.resolves(found.frequency / found.sub_multiple, RESOLVED):
+            # (only a spectrum that resolves the shaft may put the speed in doubt)
+            k = found.sub_multiple
+            doubt = (
+                f"the shaft series near {given_rpm:.6g} rpm is also a series at 1/{k} of "
+                f"it ({60 * found.frequency / k:.6g} rpm), and no fault's lines confirm the "
+                f"given speed: the lines may be harmonic {k} of the real shaft - the sample "
+                f"rate given may be {k} times too low (every frequency then reads {k} times "
+                f"too low) or the speed {k} times too high"
+            )
+        elif abs(off := found.frequency / (nominal / (2 * math.pi)) - 1) > SPEED_WARNING:
+            # an unambiguous, precise shaft series off by more than the race lines'
+            # tolerance replaces the speed given: defect lines read at it would be read in
+            # the wrong place (a record that stores 1732 rpm but runs at 1774 rpm was
+            # called "outer race" from inner-race harmonics)
+            replace = found.unambiguous and found.resolves(found.frequency, PRECISE)
+            if replace:
+                used, record["source"] = 2 * math.pi * found.frequency, "signal"
+            warnings.append(
+                f"the signal shows the shaft at {60 * found.frequency:.6g} rpm"
+                + (f" ({found.harmonics} harmonics)" if replace else "")
+                + f", {100 * off:+.1f} % from the given {given_rpm:.6g} rpm (tolerance "
+                f"{100 * SPEED_WARNING:g} %): "
+                + ("the diagnosis uses the speed the signal shows - " if replace else "")
+                + "check the speed and the sample rate"
+            )
+    record["used_rpm"] = used * 30 / math.pi
+    # True: the signal's shaft series confirms the speed used; None: no shaft series to
+    # check it; a doubt is settled by the verdict (SPEED_CONFIRMING)
+    record["confirmed"] = None if found.frequency is None and doubt is None else doubt is None
+    return used, record, found.frequency, doubt
