@@ -132,10 +132,8 @@ class Simulation:
         return fig, axes
 
     def _angle_ratio(self, angle, order) -> float:
-        # advance of a continuous angle over the record / (pure-rolling speed x span)
         span = (self.signal.n_samples - 1) / self.signal.sample_rate
-        pure = self.kinematic.orders[order] * self.kinematic.shaft_speed
-        return float(np.mean(angle[..., -1] - angle[..., 0]) / span / pure)
+        return advance_ratio(angle, span, self.kinematic, order)
 
     @property
     def cage_speed_ratio(self) -> float | None:
@@ -154,6 +152,13 @@ class Simulation:
         if self.ball_spin_phase is None:
             return None
         return self._angle_ratio(self.ball_spin_phase, "bsf")
+
+
+def advance_ratio(angle, span: float, kin, order: str) -> float:
+    """Advance of a continuous angle (or the mean of several) over ``span`` [s], as a
+    ratio to the pure-rolling speed of ``order`` (:attr:`DefectFrequencies.orders`) [-]."""
+    pure = kin.orders[order] * kin.shaft_speed
+    return float(np.mean(angle[..., -1] - angle[..., 0]) / span / pure)
 
 
 def simulate(
@@ -407,11 +412,8 @@ def _result(
         # are the model's, not a fault's: the diagnosis masks them as a machine line (form
         # errors put lines of their own there: outer-race waviness of order kZ +- 1 at
         # k x BPFO)
-        cage = extra["cage_angle"] if "cage_angle" in extra else None
-        ratio = 1.0
-        if cage is not None:
-            span = t_out[-1] - t_out[0]
-            ratio = float((cage[-1] - cage[0]) / span / (kin.orders["ftf"] * kin.shaft_speed))
+        cage = extra.get("cage_angle")  # the slip model's cage slips; the rigid one's not
+        ratio = 1.0 if cage is None else advance_ratio(cage, t_out[-1] - t_out[0], kin, "ftf")
         metadata["varying_compliance_hz"] = float(kin.hz("bpfo") * ratio)
     signal = Signal(channels, sample_rate, metadata)
     return Simulation(
