@@ -24,7 +24,7 @@ def _pyplot():
         import matplotlib.pyplot as plt
     except ImportError:  # pragma: no cover - depends on the install
         raise InputError(
-            "--plot", None, "matplotlib installed", "pip install 'bearinglab[plot]'"
+            "matplotlib", None, "matplotlib installed (a dependency)", "pip install matplotlib"
         ) from None
     return plt
 
@@ -43,9 +43,9 @@ def save_figure(fig, path: str | Path) -> Path:
     path = Path(path)
     suffix = path.suffix.lower()
     if suffix not in (".png", ".svg", ".pdf"):
-        raise InputError("--plot", str(path), "a file name ending in .png, .svg or .pdf")
+        raise InputError("path", str(path), "a file name ending in .png, .svg or .pdf")
     if not path.parent.exists():
-        raise InputError("--plot", str(path), "a path in an existing directory")
+        raise InputError("path", str(path), "a path in an existing directory")
     write_atomically(path, lambda tmp: fig.savefig(tmp, dpi=120, bbox_inches="tight"))
     _pyplot().close(fig)
     return path

@@ -460,8 +460,8 @@ def bearing_friction(
         if ks is None:
             notes.append(
                 "contact seals: M_seal is not included (SKF's seal constants are not "
-                "shipped; give K_S1, K_S2, beta and d_s: --seal-constants, "
-                "--seal-diameter-mm)"
+                "shipped; give the seal constants K_S1, K_S2, beta and the counterface "
+                "diameter d_s)"
             )
         elif seal_diameter is None:
             raise InputError(
