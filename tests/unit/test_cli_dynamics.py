@@ -6,8 +6,8 @@ import pytest
 from conftest import run_error, run_json
 
 from bearinglab.cli import main
-from bearinglab.cli._forms import parse_defect
 from bearinglab.errors import InputError
+from bearinglab.inputs import parse_defect
 
 SIM = [
     "simulate",

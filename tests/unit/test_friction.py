@@ -6,9 +6,9 @@ import conftest
 import numpy as np
 import pytest
 
+from bearinglab.analyses.operation import FRICTION
 from bearinglab.catalog import bearing_from_designation
 from bearinglab.cli import main
-from bearinglab.cli.friction import Lubrication, OilKind
 from bearinglab.errors import InputError
 from bearinglab.friction import (
     DEEP_GROOVE_CONSTANTS,
@@ -501,8 +501,8 @@ def test_cli_table(capsys):
         (["6205", "--speed-rpm", "10", "--radial-load-n", "nan"], "--radial-load-n"),
         ([*BORE_AND_OD, "--axial-load-n", "10"], "--axial-load-n"),
         (["NU205", "--speed-rpm", "10", "--axial-load-n", "10"], "--equivalent-load-n"),
-        (["1205", "--speed-rpm", "10"], "--type"),
-        (["6205", "--speed-rpm", "10", "--type", "plain"], "--type"),
+        (["1205", "--speed-rpm", "10"], "--friction-type"),
+        (["6205", "--speed-rpm", "10", "--type", "plain"], "--friction-type"),
         (["NU205", "--speed-rpm", "10", "--model", "skf"], "use --model constant"),
         (["7206", "--speed-rpm", "10", "--model", "skf"], "--skf-constants"),
         ([*SKF_SLOW, "--skf-constants", "1,2"], "--skf-constants"),
@@ -540,8 +540,8 @@ def test_cli_errors(capsys, args, words):
 
 
 def test_cli_enums_mirror_the_model_tables():
-    assert {m.value for m in Lubrication} == set(K_RS)
-    assert {m.value for m in OilKind} == set(MU_EHL)
+    assert set(FRICTION.options["lubrication"].choices) == set(K_RS)
+    assert set(FRICTION.options["oil"].choices) == set(MU_EHL)
     assert set(SEED003_COEFFICIENTS) >= {"radial_ball", "thrust_ball"}
 
 
@@ -686,7 +686,7 @@ def test_cli_and_report_give_the_same_torques(capsys, designation, cli, report):
             ["NU205", "--speed-rpm", "10", "--bore-mm", "60"],
             "--bore-mm = 60 is not allowed: expected less than the outside diameter 52 mm",
         ),
-        ([*BORE_AND_OD, "--type", "plain"], "--type = 'plain' is not allowed"),
+        ([*BORE_AND_OD, "--type", "plain"], "--friction-type = 'plain' is not allowed"),
         (
             ["--bore-mm", "-25", "--outside-diameter-mm", "52", "--speed-rpm", "10"],
             "--bore-mm = -25 is not allowed: expected a length in (0, 100000] mm",

@@ -2,7 +2,10 @@
 the one-line option errors (:class:`OptionError`, :func:`option_error`) and output paths.
 The geometry options and the bearing they describe are in :mod:`._geometry`."""
 
+import functools
+import inspect
 import math
+import re
 from contextlib import contextmanager
 from pathlib import Path
 from typing import Annotated
@@ -10,27 +13,10 @@ from typing import Annotated
 import typer
 from rich.markup import escape
 
-from ..errors import InputError
+from ..errors import BearinglabError, CatalogError, InputError
 from ._app import console
 
-#: Limits of the analysis options, in their units.
-MAX_BALL_LOAD_N = 1e7
-MAX_SPEED_RPM = 1e6
-MAX_LOAD_N = 1e7
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON object instead of tables.")]
-#: The options most commands share (each command gives its own default).
-RingSpeedOpt = Annotated[
-    float, typer.Option("--speed-rpm", help="Speed of the rotating ring [rpm].")
-]
-ShaftSpeedOpt = Annotated[
-    float, typer.Option("--speed-rpm", help="Shaft (inner-ring) speed [rpm].")
-]
-RadialLoadOpt = Annotated[
-    float, typer.Option("--radial-load-n", help="Radial load F_r on the shaft, downwards [N].")
-]
-AxialLoadOpt = Annotated[
-    float, typer.Option("--axial-load-n", help="Axial load F_a on the inner ring [N].")
-]
 SchedulerOpt = Annotated[
     str | None,
     typer.Option(
@@ -58,60 +44,155 @@ def plot_option(what: str = "the result"):
 
 
 PlotOpt = plot_option()
-DesignationArg = Annotated[
-    str | None,
-    typer.Argument(
-        help="Bearing designation or catalogue name; optional with explicit geometry.",
-    ),
-]
+
+#: Python type of an option of each input kind.
+_TYPES = {
+    "number": float | None,
+    "integer": int | None,
+    "text": str | None,
+    "texts": list[str] | None,
+    "bool": bool,
+    "path": Path | None,
+}
+
+
+def flag(name: str) -> str:
+    """The command-line flag of input ``name``: ``radial_load_n`` -> ``--radial-load-n``."""
+    return "--" + name.replace("_", "-")
+
+
+def _parameter(name: str, spec, *, argument: bool, default, help_: str) -> inspect.Parameter:
+    kind = _TYPES[spec.kind]
+    if argument:
+        info = typer.Argument(help=help_, show_default=False)
+    else:
+        flags = [flag(n) for n in (name, *spec.aliases)]
+        shown = default is not None and spec.kind != "bool"
+        info = typer.Option(*flags, help=help_, show_default=shown)
+    if spec.kind == "bool":
+        default = bool(default)
+    return inspect.Parameter(
+        name, inspect.Parameter.KEYWORD_ONLY, default=default, annotation=Annotated[kind, info]
+    )
+
+
+def takes(*names: str, argument: str | None = None, defaults=None, helps=None, **specs):
+    """Give a command the inputs ``names`` of :data:`bearinglab.inputs.INPUTS` (and
+    ``specs``: name -> Input, the command's own reading of a name) as options
+    (``argument``: the one given as a positional argument; ``defaults`` and ``helps``: this
+    command's own). The command receives them as ``values`` (name -> value as typed); a
+    library error naming one of the command's parameters is worded as its flag."""
+    from ..inputs import BEARING, INPUTS
+
+    defaults, helps = defaults or {}, helps or {}
+    names = tuple(dict.fromkeys((*names, *specs)))
+    table = {**INPUTS, **specs}
+
+    def decorate(func):
+        sig = inspect.signature(func)
+        own = [
+            p.replace(kind=inspect.Parameter.KEYWORD_ONLY)
+            for p in sig.parameters.values()
+            if p.name != "values"
+        ]
+        made = {
+            name: _parameter(
+                name,
+                table[name],
+                argument=name == argument,
+                default=defaults.get(name, table[name].default),
+                help_=helps.get(name, table[name].help),
+            )
+            for name in names
+        }
+        first = [made[n] for n in names if n not in BEARING or n == argument]
+        params = first + own + [made[n] for n in names if n in BEARING and n != argument]
+        shown = {p.name: p.name.upper() if p.name == argument else flag(p.name) for p in params}
+        shown["json_output"] = "--json"
+
+        @functools.wraps(func)
+        def wrapper(**kwargs):
+            values = {name: kwargs.pop(name) for name in names}
+            _SHOWN.clear()
+            _SHOWN.update(shown)
+            try:
+                for name, value in values.items():  # ranges in the inputs' units
+                    table[name].check(name, value)
+                return (
+                    func(values=values, **kwargs)
+                    if "values" in sig.parameters
+                    else func(**values, **kwargs)
+                )
+            except InputError as exc:
+                raise worded(exc, shown) from None
+            except (CatalogError, BearinglabError) as exc:
+                if type(exc) not in (CatalogError, BearinglabError):
+                    raise
+                raise type(exc)(in_flags(str(exc), shown)) from None
+
+        wrapper.__signature__ = sig.replace(parameters=params)
+        wrapper.__annotations__ = {p.name: p.annotation for p in params}
+        del wrapper.__wrapped__
+        return wrapper
+
+    return decorate
+
+
+def worded(exc: InputError, shown: dict) -> InputError:
+    """A library error in the command line's terms: an input named first in its
+    parameter (``radial_load_n``, ``geometry ball_diameter_mm``) as the command's flag,
+    its value as typed."""
+    if isinstance(exc, OptionError):
+        return exc
+    head, space, rest = exc.parameter.partition(" ")
+    if head not in shown:
+        return exc
+    # a specification's keys (width_mm=...) are not the inputs of the same name
+    words = (lambda text: text) if head in _SPECIFICATIONS else (lambda t: in_flags(t, shown))
+    return OptionError(shown[head] + space + rest, exc.value, words(exc.allowed), words(exc.hint))
+
+
+#: Inputs written as KEY=VALUE specifications.
+_SPECIFICATIONS = ("defect", "waviness", "surface3d", "ball_size_error_um")
+
+
+#: The flags of the command running (parameter name -> flag), for its warnings.
+_SHOWN: dict[str, str] = {}
+
+
+def in_flags(text: str, shown: dict | None = None) -> str:
+    """``text`` with the inputs it names as the command's flags: a name in backquotes
+    (`balls`), or a snake_case name of one of the command's parameters."""
+    shown = _SHOWN if shown is None else shown
+    text = re.sub(r"`(\w+)`", lambda m: shown.get(m.group(1), m.group(1)), text)
+    names = [n for n in shown if "_" in n and n in text]
+    if not names:
+        return text
+    # not a key of a specification: width_mm=1.2, outer:width_mm
+    pattern = r"(?<![\w:,=])(" + "|".join(sorted(names, key=len, reverse=True)) + r")(?![\w=])"
+    return re.sub(pattern, lambda m: shown[m.group(1)], text)
 
 
 def speed_rad_s(speed_rpm: float, *, zero: bool = False) -> float:
-    """Speed [rad/s] from --speed-rpm, which must lie in (0, MAX_SPEED_RPM] rpm ([0, ...]
-    with ``zero``)."""
-    in_range("--speed-rpm", speed_rpm, 0.0, MAX_SPEED_RPM, "a speed", low_open=not zero)
+    """Speed [rad/s] from --speed-rpm, in the table's range (> 0 unless ``zero``)."""
+    from ..inputs import INPUTS
+
+    INPUTS["speed_rpm"].check("--speed-rpm", speed_rpm)
+    if not zero and speed_rpm <= 0:
+        raise OptionError("--speed-rpm", speed_rpm, "a speed > 0 rpm")
     return speed_rpm * math.pi / 30
 
 
-def in_range(
-    flag: str,
-    value: float | None,
-    low: float,
-    high: float,
-    what: str,
-    *,
-    low_open: bool = False,
-    hint: str = "",
-) -> float | None:
-    """An option's value checked against [low, high] ((low, high] with ``low_open``), in the
-    option's unit (its suffix); None (not given) passes."""
-    if value is None:
-        return None
-    if not (math.isfinite(value) and (low < value if low_open else low <= value) and value <= high):
-        from ..units import unit_of
-
-        unit = unit_of(flag)
-        symbol = f" {unit.symbol}" if unit is not None else ""
-        interval = f"{'(' if low_open else '['}{low:g}, {high:g}]{symbol}"
-        raise OptionError(flag, value, f"{what} in {interval}", hint)
-    return float(value)
-
-
 def load_n(flag: str, value: float | None, signed: bool = False) -> float | None:
-    """A load option [N] in [0, MAX_LOAD_N] ([-MAX_LOAD_N, MAX_LOAD_N] when ``signed``);
-    None (not given) passes."""
-    return in_range(flag, value, -MAX_LOAD_N if signed else 0.0, MAX_LOAD_N, "a load")
+    """A load option [N] in the table's range of an axial (``signed``) or radial load."""
+    from ..inputs import INPUTS
 
-
-def check_loads(radial: float, axial: float, unloaded: str | None = None) -> None:
-    """--radial-load-n in [0, max], --axial-load-n signed; with ``unloaded`` (the reason
-    a load is needed) at least one of them nonzero."""
-    load_n("--radial-load-n", radial)
-    load_n("--axial-load-n", axial, signed=True)
-    if unloaded and radial == 0 and axial == 0:
-        raise OptionError(
-            "--radial-load-n", radial, "a load > 0 N (or an --axial-load-n)", unloaded
-        )
+    spec = INPUTS["axial_load_n" if signed else "radial_load_n"]
+    try:
+        spec.check(flag, value)
+    except InputError as exc:
+        raise OptionError(flag, value, exc.allowed) from None
+    return value
 
 
 def no_effect(flags, why: str) -> list[str]:
@@ -138,6 +219,8 @@ def _show(value) -> str:
         return repr(value) if isinstance(value, str) else str(value)
     if isinstance(value, Path):
         return repr(str(value))
+    if isinstance(value, list) and all(isinstance(v, str) for v in value):
+        return " ".join(_show(v) for v in value)  # a repeatable option: its values as typed
     return repr(value)
 
 
@@ -157,7 +240,7 @@ class OptionError(InputError):
 
 def _print_warnings(warnings: list[str]) -> None:
     for text in warnings:
-        console.print(f"[yellow]warning:[/yellow] {escape(text)}")
+        console.print(f"[yellow]warning:[/yellow] {escape(in_flags(text))}")
 
 
 @contextmanager
@@ -184,64 +267,13 @@ def save_plot_figure(fig, path: Path, flag: str = "--plot") -> None:
         save_figure(fig, path)
 
 
-def number_list(
-    flag: str, text: str | None, allowed: str, *, counts: tuple = (), zero: bool = False
-) -> list[float] | None:
-    """A comma-separated option A,B,C as finite numbers, each > 0 (>= 0 with ``zero``) and
-    as many as one of ``counts`` (any number without); None (not given) passes."""
-    if text is None:
-        return None
-    try:
-        values = [float(v) for v in text.split(",")]
-    except ValueError:
-        values = []
-    counted = bool(values) and (not counts or len(values) in counts)
-    if not (counted and all(math.isfinite(v) and (v >= 0 if zero else v > 0) for v in values)):
-        raise OptionError(flag, text, allowed)
-    return values
-
-
-def positive(flag: str, value, allowed: str, zero: bool = False):
-    if value is not None and not (math.isfinite(value) and (value >= 0 if zero else value > 0)):
-        raise OptionError(flag, value, allowed)
-    return value
-
-
-def check_path(flag: str, path: Path | None, suffixes: tuple[str, ...]) -> None:
-    """Refuse an output path with an unknown suffix or in a missing directory, before
-    any simulating."""
+def check_path(name: str, path: Path | None, suffixes: tuple[str, ...] = ()) -> None:
+    """Refuse an output path with an unknown suffix (any with no ``suffixes``) or in a
+    missing directory, before any work; ``name`` is the input (or a flag as typed)."""
     if path is None:
         return
-    if path.suffix.lower() not in suffixes:
-        raise OptionError(flag, str(path), f"a file name ending in {', '.join(suffixes)}")
+    error = OptionError if name.startswith("-") else InputError
+    if suffixes and path.suffix.lower() not in suffixes:
+        raise error(name, str(path), f"a file name ending in {', '.join(suffixes)}")
     if not path.parent.is_dir():
-        raise OptionError(flag, str(path), "a path in an existing directory")
-
-
-#: library parameter -> the option's quantity name where the two differ
-_PARAMETER_OPTIONS = {"shaft_speed": "speed"}
-
-
-def option_error(exc: InputError, options: dict) -> InputError:
-    """A library error in the command line's terms: the option that holds the parameter.
-
-    ``options`` maps a command's option names (``ring_mass_kg``, with the unit suffix of
-    :data:`bearinglab.units.UNITS`) to the values typed. The option whose name, less its
-    unit suffix, is the error's parameter is named, with the value as typed (or the
-    error's SI value in the option's unit). Errors of other parameters are returned as
-    they are."""
-    from ..units import unit_of
-
-    if isinstance(exc, OptionError):
-        return exc
-    parameter = _PARAMETER_OPTIONS.get(exc.parameter, exc.parameter)
-    for name, typed in options.items():
-        unit = unit_of(name)
-        base = name[: -len(unit.suffix) - 1] if unit is not None else name
-        if base != parameter:
-            continue
-        value = typed
-        if value is None and isinstance(exc.value, (int, float)) and unit is not None:
-            value = unit.from_si(exc.value)
-        return OptionError("--" + name.replace("_", "-"), value, exc.allowed, exc.hint)
-    return exc
+        raise error(name, str(path), "a path in an existing directory")

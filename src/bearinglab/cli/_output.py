@@ -44,7 +44,15 @@ def _check_finite(value, path: str = "") -> None:
 
 
 def _emit_json(obj: dict) -> None:
+    """Print ``obj`` as JSON; its warnings name the inputs as this command's flags."""
+    from ._inputs import in_flags
+
     _check_finite(obj)
+    if isinstance(obj.get("warnings"), list):
+        obj = {
+            **obj,
+            "warnings": [in_flags(w) if isinstance(w, str) else w for w in obj["warnings"]],
+        }
     sys.stdout.write(json.dumps(_tidy(obj), indent=2, allow_nan=False) + "\n")
 
 
@@ -227,9 +235,9 @@ def print_verdict(diag, name: str, bearing) -> None:
             ],
         )
     )
-    from ._geometry import _geometry_line
+    from ..inputs import geometry_line
 
-    console.print(escape(_geometry_line(bearing)))
+    console.print(escape(geometry_line(bearing)))
     rows = [
         [
             name,

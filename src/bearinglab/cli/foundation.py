@@ -1,96 +1,52 @@
 """Commands of the foundation: info, frequencies, contact."""
 
 import math
-from typing import Annotated
 
-import typer
 from rich.markup import escape
 
-from ..catalog import (
-    boundary_dimensions,
-    published_geometry,
-)
+from ..catalog import boundary_dimensions, published_geometry
 from ..designation import parse
-from ..errors import CatalogError, DesignationError, InputError
+from ..errors import CatalogError, DesignationError
 from ..geometry import BallBearing
+from ..inputs import BEARING, Input, bearing_from, bearing_warnings, geometry_line, given_fields
 from ..kinematics import FREQUENCY_NAMES, LONG_NAMES, defect_frequencies, geometry_inputs
 from ..plausibility import speed_factor_warnings
-from ._app import HertzMethod, command_app, console
-from ._geometry import (
-    _GEOMETRY_OPTIONS,
-    _catalog_message,
-    _check_designation_text,
-    _geometry_line,
-    _geometry_warnings,
-    _Inputs,
-    _resolve,
-    resolve_bearing,
-    with_geometry,
-)
-from ._inputs import (
-    MAX_BALL_LOAD_N,
-    JsonOpt,
-    PlotOpt,
-    RingSpeedOpt,
-    _print_warnings,
-    in_range,
-    no_effect,
-    speed_rad_s,
-)
-from ._output import (
-    _check_finite,
-    _emit_json,
-    _plot_and_emit,
-    _References,
-    _table,
-)
+from ._app import command_app, console
+from ._inputs import JsonOpt, PlotOpt, _print_warnings, in_flags, no_effect, speed_rad_s, takes
+from ._output import _check_finite, _emit_json, _plot_and_emit, _References, _table
 
 app = command_app()
 
-# ------------------------------------------------------------------ commands
-DesignationArg = Annotated[
-    str | None,
-    typer.Argument(
-        help="Bearing designation (GOST 3189-89 or ISO, e.g. 6205-2RS, 180205) or catalogue "
-        "name (e.g. ER-16K). Optional when the geometry is given explicitly.",
-    ),
-]
-
 
 @app.command()
-@with_geometry
-def info(designation: DesignationArg = None, json_output: JsonOpt = False, *, geometry):
+@takes(*BEARING, argument="designation")
+def info(values, json_output: JsonOpt = False):
     """Decode a designation; show dimensions, internal geometry (with sources) and
     frequency factors."""
-    _check_designation_text(designation)
-    inputs = _Inputs(geometry)
+    designation = values["designation"]
     decoded = None
+    try:
+        bearing, from_catalog = bearing_from(values)
+    except CatalogError as exc:  # roller bearings, sizes not in the catalogue...
+        bearing, from_catalog, why_no_geometry = None, None, in_flags(str(exc))
+    else:
+        why_no_geometry = None
     if designation:
         try:
-            decoded = parse(designation, system=inputs.system)
+            decoded = from_catalog or parse(designation, system=values["system"])
         except DesignationError:
             if published_geometry(designation) is None:  # not a catalogue name either
                 raise
-    try:
-        bearing, from_catalog = _resolve(designation, inputs)
-        decoded, why_no_geometry = from_catalog or decoded, None
-    except CatalogError as exc:  # roller bearings, sizes not in the catalogue...
-        if decoded is None:
-            raise
-        bearing, why_no_geometry = None, _catalog_message(exc)
+    if bearing is None and decoded is None:
+        raise CatalogError(why_no_geometry)
     dims = why_no_dims = None
     if bearing is None:
         try:
             dims = boundary_dimensions(decoded)
         except CatalogError as exc:
             why_no_dims = str(exc)
-    warnings = [] if bearing is None else _geometry_warnings(bearing)
-    try:
-        out = _info_dict(
-            designation, decoded, bearing, dims, why_no_geometry, why_no_dims, warnings
-        )
-    except InputError as exc:
-        raise inputs.remap(exc) from None
+    warnings = [] if bearing is None else bearing_warnings(bearing)
+    out = _info_dict(designation, decoded, bearing, dims, why_no_geometry, why_no_dims, warnings)
     if json_output:
         _emit_json(out)
         return
@@ -251,34 +207,19 @@ def _print_bearing(b: BallBearing) -> None:
 
 
 @app.command()
-@with_geometry
-def frequencies(
-    designation: DesignationArg = None,
-    speed_rpm: RingSpeedOpt = ...,
-    outer_rotating: Annotated[
-        bool,
-        typer.Option("--outer-rotating", help="The outer ring turns, the inner ring is fixed."),
-    ] = False,
-    json_output: JsonOpt = False,
-    plot: PlotOpt = None,
-    *,
-    geometry,
-):
+@takes(*BEARING, "speed_rpm", "outer_rotating", argument="designation", defaults={"speed_rpm": ...})
+def frequencies(values, json_output: JsonOpt = False, plot: PlotOpt = None):
     """Kinematic defect frequencies (pure rolling) in Hz and as orders."""
+    designation, speed_rpm, outer_rotating = (
+        values[k] for k in ("designation", "speed_rpm", "outer_rotating")
+    )
     shaft_speed = speed_rad_s(speed_rpm, zero=True)
-    bearing, _ = resolve_bearing(designation, geometry)
+    bearing, decoded = bearing_from(values)
     f = defect_frequencies(bearing, shaft_speed, outer_rotating=outer_rotating)
     used = geometry_inputs(bearing)
-    # (flag, bearing field) of each option given; --system reads the designation, and a
-    # --geometry file describes the whole bearing, for every command
-    given = [
-        (_GEOMETRY_OPTIONS[name][0], _GEOMETRY_OPTIONS[name][4])
-        for name, value in geometry.items()
-        if value is not None and name not in ("system", "geometry")
-    ]
-    unused = [(flag, field not in used) for flag, field in given]
+    unused = [(name, field not in used) for name, field in given_fields(values).items()]
     warnings = (
-        _geometry_warnings(bearing)
+        bearing_warnings(bearing, decoded)
         + speed_factor_warnings(bearing, shaft_speed)
         + no_effect(unused, "on the defect frequencies (pure rolling: Z, D_w, d_m, contact angle)")
     )
@@ -303,7 +244,7 @@ def frequencies(
             ],
         )
     )
-    console.print(escape(_geometry_line(bearing, f.contact_angle)))
+    console.print(escape(geometry_line(bearing, f.contact_angle)))
     console.print(
         "[dim]BSF is one spin revolution; a ball defect strikes the races at "
         "2 x BSF (some tables print that as 'ball spin').[/dim]"
@@ -312,31 +253,34 @@ def frequencies(
 
 
 @app.command()
-@with_geometry
-def contact(
-    designation: DesignationArg = None,
-    ball_load_n: Annotated[
-        float, typer.Option("--ball-load-n", help="Normal load on one ball [N].")
-    ] = ...,
-    method: Annotated[
-        HertzMethod,
-        typer.Option(
-            "--method", help="Ellipticity and elliptic integrals: exact or Hamrock-Brewe."
-        ),
-    ] = HertzMethod.exact,
-    json_output: JsonOpt = False,
-    plot: PlotOpt = None,
-    *,
-    geometry,
-):
+@takes(
+    *BEARING,
+    argument="designation",
+    ball_load_n=Input(
+        "number",
+        ...,
+        "Normal load on one ball [N].",
+        low=0.0,
+        high=1e7,
+        low_open=True,
+        what="a load",
+    ),
+    method=Input(
+        "text",
+        "exact",
+        "Ellipticity and elliptic integrals: exact or Hamrock-Brewe.",
+        choices=("exact", "hamrock-brewe"),
+    ),
+)
+def contact(values, json_output: JsonOpt = False, plot: PlotOpt = None):
     """Hertz contact of one ball with the inner and outer raceway."""
-    in_range("--ball-load-n", ball_load_n, 0.0, MAX_BALL_LOAD_N, "a load", low_open=True)
-    bearing, _ = resolve_bearing(designation, geometry)
+    designation, ball_load_n, method = (values[k] for k in ("designation", "ball_load_n", "method"))
+    bearing, decoded = bearing_from(values)
     from ..contact.ball_race import ball_contacts  # scipy.special: only this command
 
-    result = ball_contacts(bearing, ball_load_n, method=method.value.replace("-", "_"))
+    result = ball_contacts(bearing, ball_load_n, method=method.replace("-", "_"))
     d = result.to_dict()
-    d["warnings"] = _geometry_warnings(bearing) + d["warnings"]
+    d["warnings"] = bearing_warnings(bearing, decoded) + d["warnings"]
     out = {"designation": designation, **d}
     if _plot_and_emit(out, json_output, result, plot):
         return
@@ -354,12 +298,12 @@ def contact(
     console.print(
         _table(
             f"{bearing.name or 'bearing'}: Hertz contact, Q = {ball_load_n:g} N, "
-            f"contact angle {d['contact_angle_deg']:g} deg ({method.value})",
+            f"contact angle {d['contact_angle_deg']:g} deg ({method})",
             ["quantity", "inner", "outer", "unit"],
             rows,
         )
     )
-    console.print(escape(_geometry_line(bearing, result.contact_angle)))
+    console.print(escape(geometry_line(bearing, result.contact_angle)))
     console.print(
         f"ball between both races: total approach {d['total_approach_um']:.4g} um, "
         f"K_n = {d['ball_load_deflection_constant_n_per_m1_5']:.4g} N/m^1.5"

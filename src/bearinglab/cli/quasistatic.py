@@ -1,7 +1,6 @@
 """Commands of the load-distribution issue: static, stiffness-map, ring-modes."""
 
 import math
-from enum import Enum
 from pathlib import Path
 from typing import Annotated
 
@@ -9,38 +8,24 @@ import numpy as np
 import typer
 from rich.markup import escape
 
-from ..errors import InputError
+from ..analyses.mechanics import STATIC
 from ..files import write_atomically
-from ..lubrication import LUBRICANTS, ZERO_CELSIUS
-from ..operating import OperatingCondition
-from ..plausibility import operating_warnings
+from ..inputs import BEARING, Input, bearing_from, bearing_warnings, geometry_line
+from ..inputs.specs import form_errors_text
 from ..plotting import stiffness_map_figure
-from ..quasistatic import solve_load_distribution
-from ..quasistatic.orbit import inner_ring_orbit
 from ..quasistatic.study import stiffness_map as stiffness_map_study
 from ..units import label
 from ._app import command_app, console
-from ._forms import BallErrorOpt, FormErrors, SeedOpt, Surface3dOpt, WavinessOpt
-from ._geometry import (
-    _geometry_line,
-    _geometry_warnings,
-    resolve_bearing,
-    with_geometry,
-)
 from ._inputs import (
-    AxialLoadOpt,
-    DesignationArg,
     JsonOpt,
     OptionError,
     PlotOpt,
-    RadialLoadOpt,
     _print_warnings,
-    in_range,
+    check_path,
     load_n,
-    no_effect,
-    option_error,
     save_plot_figure,
     speed_rad_s,
+    takes,
     writing,
 )
 from ._output import _emit_json, _table, progress_bar
@@ -48,34 +33,6 @@ from ._output import _emit_json, _table, progress_bar
 app = command_app()
 
 MAX_CASES = 1_000_000
-
-
-class RaceControl(str, Enum):
-    outer = "outer"
-    inner = "inner"
-    hybrid = "hybrid"
-
-
-RaceControlOpt = Annotated[
-    RaceControl,
-    typer.Option(
-        "--race-control",
-        help="Raceway control that sets each ball's orbital speed (centrifugal "
-        "force) and spin (gyroscopic moment): outer or inner (the ball rolls without spinning on "
-        "that race, Jones), or hybrid (per ball by Jones's criterion, friction shared as Harris "
-        "does).",
-    ),
-]
-
-#: static and stiffness-map share --gyroscopic.
-GyroscopicOpt = Annotated[
-    bool,
-    typer.Option(
-        "--gyroscopic",
-        help="Include the balls' gyroscopic moments, held by friction at the controlling "
-        "raceway (--race-control).",
-    ),
-]
 
 
 def _grid(flag: str, text: str, signed: bool = False, speed: bool = False) -> np.ndarray:
@@ -97,106 +54,10 @@ def _grid(flag: str, text: str, signed: bool = False, speed: bool = False) -> np
     return values
 
 
-def _condition(radial, axial, speed_rpm, angle_deg, misalignment_mrad):
-    if not math.isfinite(angle_deg):
-        raise OptionError("--radial-load-angle-deg", angle_deg, "a finite angle")
-    if not (math.isfinite(misalignment_mrad) and abs(misalignment_mrad) <= 20):
-        raise OptionError("--misalignment-mrad", misalignment_mrad, "a tilt within +-20 mrad")
-    # the tilt is about the axis perpendicular to the radial load in the radial plane
-    a = math.radians(angle_deg)
-    tilt = misalignment_mrad * 1e-3
-    return OperatingCondition(
-        radial_load=radial,
-        radial_load_angle=a,
-        axial_load=axial,
-        misalignment=(-tilt * math.sin(a), tilt * math.cos(a)),
-        shaft_speed=speed_rad_s(speed_rpm, zero=True),
-    )
-
-
-#: The film's lubricant when --lubricant is not given.
-DEFAULT_LUBRICANT = "iso-vg68"
-
-
-def _lubricant(film: bool, name: str, temperature_c: float | None):
-    """The film's lubricant and temperature [K] (None, None without --film), and the
-    warnings for lubricant options that then have no effect."""
-    if name not in LUBRICANTS:
-        raise OptionError("--lubricant", name, f"one of {', '.join(LUBRICANTS)}")
-    in_range("--temperature-c", temperature_c, -60.0, 300.0, "a temperature")
-    if not film:
-        flags = (
-            ("--lubricant", name != DEFAULT_LUBRICANT),
-            ("--temperature-c", temperature_c is not None),
-        )
-        return None, None, no_effect(flags, "without --film (the EHL film)")
-    kelvin = None if temperature_c is None else temperature_c + ZERO_CELSIUS
-    return LUBRICANTS[name], kelvin, []
-
-
 @app.command()
-@with_geometry
+@takes(argument="designation", **STATIC.command_options)
 def static(
-    designation: DesignationArg = None,
-    radial_load_n: RadialLoadOpt = 0.0,
-    axial_load_n: AxialLoadOpt = 0.0,
-    speed_rpm: Annotated[float, typer.Option("--speed-rpm", help="Inner-ring speed [rpm].")] = 0.0,
-    radial_load_angle_deg: Annotated[
-        float,
-        typer.Option(
-            "--radial-load-angle-deg",
-            help="Direction of the radial load from +x towards +y [deg]; -90 = downwards.",
-        ),
-    ] = -90.0,
-    misalignment_mrad: Annotated[
-        float,
-        typer.Option(
-            "--misalignment-mrad",
-            help="Imposed tilt of the inner ring about the axis across the radial load [mrad].",
-        ),
-    ] = 0.0,
-    film: Annotated[
-        bool,
-        typer.Option(
-            "--film/--no-film", help="Subtract the Hamrock-Dowson film from the approaches."
-        ),
-    ] = False,
-    lubricant: Annotated[
-        str, typer.Option("--lubricant", help="Lubricant for the film: " + ", ".join(LUBRICANTS))
-    ] = DEFAULT_LUBRICANT,
-    temperature_c: Annotated[
-        float | None,
-        typer.Option(
-            "--temperature-c",
-            help="Lubricant temperature [degC] (default: its reference).",
-        ),
-    ] = None,
-    gyroscopic: GyroscopicOpt = False,
-    race_control: RaceControlOpt = RaceControl.outer,
-    ring_expansion: Annotated[
-        bool,
-        typer.Option(
-            "--ring-expansion",
-            help="Reduce the clearance by the inner ring's centrifugal expansion.",
-        ),
-    ] = False,
-    orbit: Annotated[
-        bool,
-        typer.Option(
-            "--orbit",
-            help="Also the inner-ring centre orbit: over one ball spacing "
-            "(uniform balls), or, with form errors, in time over one cage revolution "
-            "(seed 003 eqs. 14-18; needs --speed-rpm > 0).",
-        ),
-    ] = False,
-    orbit_points: Annotated[
-        int | None,
-        typer.Option(
-            "--orbit-points",
-            help="Orbit positions: per ball spacing (default 24) or "
-            "instants in time (default 64 per shaft revolution).",
-        ),
-    ] = None,
+    values,
     orbit_plot: Annotated[
         Path | None,
         typer.Option(
@@ -205,99 +66,32 @@ def static(
             "to this .png, .svg or .pdf file (implies --orbit).",
         ),
     ] = None,
-    waviness: WavinessOpt = None,
-    ball_size_error_um: BallErrorOpt = None,
-    surface3d: Surface3dOpt = None,
-    seed: SeedOpt = None,
     stiffness_csv: Annotated[
         Path | None,
-        typer.Option(
-            "--stiffness-csv",
-            help="Write the 5x5 stiffness matrix (SI) to this CSV.",
-        ),
+        typer.Option("--stiffness-csv", help="Write the 5x5 stiffness matrix (SI) to this CSV."),
     ] = None,
     json_output: JsonOpt = False,
     plot: PlotOpt = None,
-    *,
-    geometry,
 ):
     """Quasi-static load distribution: per-ball loads and contact angles, ring
     displacements and the 5x5 stiffness matrix; with form errors (waviness, ball-size
     errors, 3-D surfaces) at the instant the shaft angle is 0, and with --orbit the
     inner-ring centre orbit."""
-    fr = load_n("--radial-load-n", radial_load_n)
-    fa = load_n("--axial-load-n", axial_load_n, signed=True)
-    _check_output(
-        ("--plot", plot), ("--stiffness-csv", stiffness_csv), ("--orbit-plot", orbit_plot)
-    )
-    for flag, path in (("--plot", plot), ("--orbit-plot", orbit_plot)):
-        if path is not None and path.suffix.lower() not in (".png", ".svg", ".pdf"):
-            raise OptionError(flag, str(path), "a file name ending in .png, .svg or .pdf")
-    orbit = orbit or orbit_plot is not None
-    in_range("--orbit-points", orbit_points, 2, 100_000, "an integer")
-    condition = _condition(fr, fa, speed_rpm, radial_load_angle_deg, misalignment_mrad)
-    oil, temperature, unused = _lubricant(film, lubricant, temperature_c)
-    if condition.shaft_speed == 0:  # each of these acts through the balls' speed
-        flags = (
-            ("--gyroscopic", gyroscopic),
-            ("--ring-expansion", ring_expansion),
-            ("--film", film),
-        )
-        unused += no_effect(flags, "at --speed-rpm 0 (no rolling speed)")
-    forms = FormErrors(waviness, ball_size_error_um, surface3d)
-    if orbit and forms.given and condition.shaft_speed <= 0:
-        raise OptionError(
-            "--speed-rpm",
-            speed_rpm,
-            "a speed > 0 rpm with --orbit and form errors (the orbit then runs in time)",
-        )
-    bearing, _ = resolve_bearing(designation, geometry)
-    try:
-        plausibility = operating_warnings(bearing, condition)
-    except InputError as exc:
-        raise option_error(
-            exc,
-            {"radial_load_n": radial_load_n, "axial_load_n": axial_load_n, "speed_rpm": speed_rpm},
-        ) from None
-    imperfections = forms.build(bearing, seed)
-    options = {
-        "lubricant": oil,
-        "temperature": temperature,
-        "gyroscopic": gyroscopic,
-        "race_control": race_control.value,
-        "ring_expansion": ring_expansion,
-    }
-    errors = (
-        None
-        if imperfections is None  # the form errors at t = 0, ball 0 under the load
-        else imperfections.diameter_errors_at_rest(bearing, condition.radial_load_angle)
-    )
-    result = solve_load_distribution(bearing, condition, ball_diameter_errors=errors, **options)
-    d = result.to_dict()
-    d["warnings"] = _geometry_warnings(bearing) + plausibility + unused + d["warnings"]
-    out = {"designation": designation, **d}
-    if imperfections is not None:
-        out["imperfections"] = imperfections.to_dict()
-        out["seed"] = 0 if seed is None else seed
-        out["effective_diameter_error_um"] = (errors * 1e6).tolist()
-    o = None
-    if orbit:
-        o = inner_ring_orbit(
-            bearing, condition, imperfections=imperfections, points=orbit_points, **options
-        )
-        out["orbit_kind"] = "time" if o.time is not None else "ball_set"
-        out["orbit"] = o.to_dict()
-        out["orbit_peak_to_peak_um"] = o.peak_to_peak * 1e6
+    for name, path in (("plot", plot), ("orbit_plot", orbit_plot)):
+        check_path(name, path, (".png", ".svg", ".pdf"))
+    check_path("stiffness_csv", stiffness_csv, (".csv",))
+    values["orbit"] = values["orbit"] or orbit_plot is not None
+    r = STATIC.run(values)
+    result, o, d = r.distribution, r.orbit, r.to_dict()
     if plot is not None:
-        save_plot_figure(result.plot()[0], plot)
+        save_plot_figure(r.plot()[0], plot)
     if orbit_plot is not None:
         _plot_orbit(o, orbit_plot)
     if stiffness_csv is not None:
         _write_csv(result.stiffness_frame(), stiffness_csv, index=True, flag="--stiffness-csv")
     if json_output:
-        _emit_json(out)
+        _emit_json(d)
         return
-    balls = out["balls"]  # the JSON's per-ball rows (LoadDistribution.ball_rows)
     # column -> header with its unit (Greek symbols keep the table within 80 columns)
     cols = {
         "ball": "ball",
@@ -312,21 +106,23 @@ def static(
     }
     console.print(
         _table(
-            f"{bearing.name or 'bearing'}: F_r = {fr:g} N, F_a = {fa:g} N, "
-            f"{speed_rpm:g} rpm"
-            + (", with EHL film" if film else "")
-            + (f", gyroscopic ({race_control.value} raceway control)" if gyroscopic else ""),
+            f"{r.bearing.name or 'bearing'}: F_r = {d['radial_load_n']:g} N, "
+            f"F_a = {d['axial_load_n']:g} N, {d['speed_rpm']:g} rpm"
+            + (", with EHL film" if values["film"] else "")
+            + (
+                f", gyroscopic ({d['race_control']} raceway control)"
+                if values["gyroscopic"]
+                else ""
+            ),
             list(cols.values()),
-            [[ball[c] for c in cols] for ball in balls],
+            [[ball[c] for c in cols] for ball in d["balls"]],
         )
     )
-    console.print(escape(_geometry_line(bearing)))
-    if imperfections is not None:
-        from ._forms import form_errors_text
-
+    console.print(escape(geometry_line(r.bearing)))
+    if r.imperfections is not None:
         console.print(
             escape(
-                f"form errors: {form_errors_text(imperfections)} (the load "
+                f"form errors: {form_errors_text(r.imperfections)} (the load "
                 "distribution at shaft angle 0, ball 0 under the load)"
             )
         )
@@ -344,10 +140,10 @@ def static(
             ]
             + (
                 [
-                    ["orbit peak to peak", out["orbit_peak_to_peak_um"], "µm"],
+                    ["orbit peak to peak", d["orbit_peak_to_peak_um"], "µm"],
                     ["orbit", _orbit_text(o), ""],
                 ]
-                if orbit
+                if o is not None
                 else []
             ),
         )
@@ -395,38 +191,43 @@ def _plot_orbit(o, path: Path) -> None:
     save_plot_figure(fig, path, "--orbit-plot")
 
 
+def _grid_input(default: str, help_: str) -> Input:
+    return Input("text", default, help_)
+
+
 @app.command("stiffness-map")
-@with_geometry
+@takes(
+    *BEARING,
+    "gyroscopic",
+    "race_control",
+    argument="designation",
+    radial_load_n=_grid_input(
+        "0:2000:21", "Radial loads: START:STOP:COUNT, A,B,C or one value [N]."
+    ),
+    axial_load_n=_grid_input("0", "Axial loads [N], same forms."),
+    speed_rpm=_grid_input("0", "Speeds [rpm], same forms."),
+)
 def stiffness_map(
-    designation: DesignationArg = None,
-    radial_load_n: Annotated[
-        str,
-        typer.Option(
-            "--radial-load-n", help="Radial loads: START:STOP:COUNT, A,B,C or one value [N]."
-        ),
-    ] = "0:2000:21",
-    axial_load_n: Annotated[
-        str, typer.Option("--axial-load-n", help="Axial loads [N], same forms.")
-    ] = "0",
-    speed_rpm: Annotated[str, typer.Option("--speed-rpm", help="Speeds [rpm], same forms.")] = "0",
+    values,
     workers: Annotated[
         int,
         typer.Option(
             "--workers", help="Worker processes (default: all cores).", show_default=False
         ),
     ] = 0,
-    gyroscopic: GyroscopicOpt = False,
-    race_control: RaceControlOpt = RaceControl.outer,
     output: Annotated[
         Path | None,
         typer.Option("-o", "--output", help="Write the table to this CSV file."),
     ] = None,
     json_output: JsonOpt = False,
     plot: PlotOpt = None,
-    *,
-    geometry,
 ):
     """Radial and axial stiffness (and displacements) over a grid of loads and speeds."""
+    designation = values["designation"]
+    radial_load_n, axial_load_n, speed_rpm = (
+        values[k] for k in ("radial_load_n", "axial_load_n", "speed_rpm")
+    )
+    gyroscopic, race_control = values["gyroscopic"], values["race_control"]
     radial = _grid("--radial-load-n", radial_load_n)
     axial = _grid("--axial-load-n", axial_load_n, signed=True)
     speeds = _grid("--speed-rpm", speed_rpm, speed=True)
@@ -438,8 +239,9 @@ def stiffness_map(
             radial_load_n,
             f"a grid of at most {MAX_CASES:g} cases in all (radial x axial x speed counts)",
         )
-    _check_output(("--plot", plot), ("--output", output))
-    bearing, _ = resolve_bearing(designation, geometry)
+    check_path("plot", plot, (".png", ".svg", ".pdf"))
+    check_path("output", output)
+    bearing, decoded = bearing_from(values)
     total = len(radial) * len(axial) * len(speeds)
     done = [0]
 
@@ -456,10 +258,11 @@ def stiffness_map(
             workers=workers or None,
             progress=advance,
             gyroscopic=gyroscopic,
-            race_control=race_control.value,
+            race_control=race_control,
         )
     rows = table.to_dict(orient="records")
     solved = table[table["status"] == "ok"]
+    warnings = bearing_warnings(bearing, decoded)
     if plot is not None and not len(solved):  # before anything is written
         raise OptionError(
             "--plot",
@@ -484,6 +287,7 @@ def stiffness_map(
                     }
                     for row in rows
                 ],
+                "warnings": warnings,
             }
         )
         return
@@ -513,13 +317,7 @@ def stiffness_map(
         console.print(
             f"[yellow]{failed} case(s) did not converge (see the CSV/JSON status)[/yellow]"
         )
-
-
-def _check_output(*flags) -> None:
-    """Refuse output paths in missing directories before any solving."""
-    for flag, path in flags:
-        if path is not None and not Path(path).parent.exists():
-            raise OptionError(flag, str(path), "a path in an existing directory")
+    _print_warnings(warnings)
 
 
 def _write_csv(table, path: Path, index: bool = False, flag: str = "--output") -> None:

@@ -131,7 +131,10 @@ def build_report(
     # models' limits, before any section runs)
     kin = defect_frequencies(bearing, condition.shaft_speed)
     check_record_length(kin, duration)
-    warnings = operating_warnings(bearing, condition) + sampling_warnings(
+    from ..inputs import bearing_warnings
+
+    warnings = bearing_warnings(bearing, designation) + operating_warnings(bearing, condition)
+    warnings += sampling_warnings(
         kin, rate, duration, [LOCATION_FAMILY[d.location] for d in chosen]
     )
     ctx = Context(

@@ -1,13 +1,7 @@
-"""The analyses a study can sweep: their options (the command line's names, engineering
-units) and output columns (the result's ``to_dict()`` keys, unit in every name).
-
-Each analysis is one layer-3 call per case (:func:`run_cases`); ``stiffness`` hands the
-cases of a partition that differ only in radial load to one
-:func:`bearinglab.quasistatic.study.stiffness_map` line. The analyses are grouped by
-family: mechanics.py (static, stiffness, frequencies, ring-modes), operation.py (life,
-friction) and vibration.py (noise, simulate); :class:`Analysis` and what they share is in
-_analysis.py. Physics is never repeated here: the analyses only convert units and pick
-result fields.
+"""The analyses a study can sweep: the registry of :mod:`bearinglab.analyses` (each
+analysis' inputs - its command's, in engineering units - and its output columns), and
+running a partition's cases through it (:func:`run_cases`): one ``evaluate`` per case,
+or one ``batch`` for the whole partition (``stiffness``: stiffness_map lines).
 """
 
 from __future__ import annotations
@@ -16,35 +10,10 @@ import math
 
 import numpy as np
 
+from ..analyses import ALIASES, ANALYSES, Analysis, analysis
 from ..errors import InputError
-from . import mechanics, operation, vibration
-from ._analysis import Analysis
 
 __all__ = ["ALIASES", "ANALYSES", "Analysis", "analysis", "error_text", "run_cases", "warm_up"]
-
-#: The registry, in the order the command line lists the analyses.
-ANALYSES = {
-    a.name: a
-    for a in (
-        mechanics.STIFFNESS,
-        mechanics.STATIC,
-        mechanics.FREQUENCIES,
-        operation.LIFE,
-        operation.FRICTION,
-        mechanics.RING_MODES,
-        vibration.NOISE,
-        vibration.SIMULATE,
-    )
-}
-ALIASES = {"ring_modes": "ring-modes", "load-distribution": "static"}
-
-
-def analysis(name: str) -> Analysis:
-    """The analysis called ``name`` (InputError naming the choices otherwise)."""
-    name = ALIASES.get(name, name)
-    if name not in ANALYSES:
-        raise InputError("analysis", name, "one of " + ", ".join(ANALYSES))
-    return ANALYSES[name]
 
 
 def error_text(exc: BaseException) -> str:

@@ -35,6 +35,8 @@ KINDS = {
     "number": "a number",
     "integer": "a whole number",
     "text": "a text",
+    "texts": "specifications, ';' between them (one value per case)",
+    "path": "a file name",
     "bool": "true or false",
 }
 RANGE_FORMS = ("A,B,C", "START:STOP:COUNT", "log:START:STOP:COUNT", "uniform:LOW:HIGH")
@@ -98,7 +100,7 @@ def _number(name: str, text: str, kind: str):
 def _scalar(name: str, value, option: Option):
     """One value of ``option`` checked for its kind (text parsed)."""
     kind = option.kind
-    if kind == "text":
+    if kind in ("text", "texts", "path"):
         if not isinstance(value, str) or not value.strip():
             raise InputError(name, value, "a non-empty text")
         value = value.strip()
@@ -183,7 +185,9 @@ def parse_values(name: str, value, option: Option) -> list | Uniform:
                 else _scalar(name, round(float(v)), option)
                 for v in values
             ]
-        items = [t for t in text.split(",")] if "," in text else [text]
+        # a specification (outer:order=8,amplitude_um=0.5) is one value: its commas are
+        # its own
+        items = text.split(",") if "," in text and option.kind not in ("texts", "path") else [text]
         if any(not t.strip() for t in items):
             raise InputError(
                 name,
@@ -284,7 +288,10 @@ class CaseTable:
         try:
             if suffix == ".csv":  # designations such as 6205 stay text
                 frame = pd.read_csv(
-                    path, dtype={k: str for k, o in options.items() if o.kind == "text"}
+                    path,
+                    dtype={
+                        k: str for k, o in options.items() if o.kind in ("text", "texts", "path")
+                    },
                 )
             elif suffix in (".parquet", ".pq"):
                 frame = pd.read_parquet(path)

@@ -42,6 +42,8 @@ _ARROW = {
     "number": "float64",
     "integer": "int64",
     "text": "string",
+    "texts": "string",
+    "path": "string",
     "bool": "bool",
     "f": "float64",
     "i": "int64",

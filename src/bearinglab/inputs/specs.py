@@ -1,16 +1,14 @@
-"""Command-line specifications of what is wrong with a bearing: --defect (localised pits,
-issue 4) and the form errors --waviness, --ball-size-error-um, --surface3d and --seed
-(issue 5), parsed into :class:`~bearinglab.dynamics.Defect` and one
+"""The specifications of what is wrong with a bearing, as a user writes them: ``defect``
+(localised pits, issue 4) and the form errors ``waviness``, ``ball_size_error_um``,
+``surface3d`` and ``seed`` (issue 5), parsed and checked in
+their units into :class:`~bearinglab.dynamics.Defect` and one
 :class:`~bearinglab.imperfections.Imperfections`."""
 
 import math
-from typing import Annotated
 
 import numpy as np
-import typer
 
 from ..errors import InputError
-from ._inputs import OptionError
 
 WAVINESS_ALLOWED = (
     "RACE:KEY=VALUE,... with RACE inner, outer or ball and keys order (waves "
@@ -50,43 +48,7 @@ MAX_SURFACE_POINTS = 1 << 22
 #: on an approach change).
 MAX_FORM_ERROR = 0.05
 
-WavinessOpt = Annotated[
-    list[str] | None,
-    typer.Option(
-        "--waviness",
-        help="Sinusoidal waviness, repeatable: RACE:order=7,amplitude_um=0.5"
-        "[,phase_deg=0][,ball=N] with RACE inner, outer or ball; r = A cos(order theta + phase) "
-        "in the ring's (or ball's) own frame.",
-    ),
-]
-BallErrorOpt = Annotated[
-    str | None,
-    typer.Option(
-        "--ball-size-error-um",
-        help="Random ball diameter errors: BAND (uniform in "
-        "[-BAND/2, +BAND/2] um about the nominal diameter: BAND is the lot's largest minus "
-        "smallest ball) or LOW,HIGH [um]; drawn with --seed.",
-    ),
-]
-Surface3dOpt = Annotated[
-    list[str] | None,
-    typer.Option(
-        "--surface3d",
-        help="Random 3-D raceway surface (seed 002 eq. 6), repeatable: "
-        "RACE:amplitude_um=..,length_circ_mm=..,length_axial_mm=.. with RACE inner or outer "
-        "(RMS height, circumferential and axial correlation lengths).",
-    ),
-]
-SeedOpt = Annotated[
-    int | None,
-    typer.Option(
-        "--seed",
-        help="Seed of the random ball-size errors and surfaces (default 0: the same "
-        "command gives the same bearing; surface i in the order given uses SEED + 1 + i).",
-    ),
-]
-
-#: What a --defect specification may hold.
+#: What a defect specification may hold.
 DEFECT_ALLOWED = (
     "LOCATION:KEY=VALUE,... with LOCATION outer, inner or ball and keys "
     "width_mm (> 0, required), depth_mm (> 0), angle_deg (outer: position from "
@@ -113,7 +75,7 @@ _SPEC_KINDS = ("number", "positive", "nonnegative", "index", "order")
 
 def parse_spec(
     text: str,
-    flag: str,
+    name: str,
     allowed: str,
     keys: dict[str, dict[str, str]],
     *,
@@ -121,16 +83,16 @@ def parse_spec(
     word: str = "location",
     required: tuple[str, ...] = (),
 ) -> tuple[str, dict]:
-    """Read one ``PREFIX:KEY=VALUE,...`` specification (--defect, --waviness, --surface3d).
+    """Read one ``PREFIX:KEY=VALUE,...`` specification (defect, waviness, surface3d).
 
     Parameters
     ----------
     text : str
         The specification as typed.
-    flag : str
-        The option, for the error (e.g. ``--defect``).
+    name : str
+        The input, for the error (e.g. ``defect``).
     allowed : str
-        What the option accepts (the error's "expected ...").
+        What the input accepts (the error's "expected ...").
     keys : dict
         Prefix (lower case) -> {key: kind}; kinds: ``number`` (finite), ``positive``
         (> 0), ``nonnegative`` (>= 0), ``index`` (whole number >= 0), ``order`` (whole
@@ -145,21 +107,21 @@ def parse_spec(
     Returns
     -------
     (prefix, {key: int or float})
-        In the option's units (no conversion).
+        In the input's units (no conversion).
 
     Raises
     ------
-    OptionError
-        One line naming the option, the specification and the part that is wrong.
+    InputError
+        One line naming the input, the specification and the part that is wrong.
 
-    >>> parse_spec("Inner : order=7, amplitude_um=0.5", "--waviness", "...",
+    >>> parse_spec("Inner : order=7, amplitude_um=0.5", "waviness", "...",
     ...            {"inner": {"order": "order", "amplitude_um": "nonnegative"}},
     ...            noun="waviness", word="race")
     ('inner', {'order': 7, 'amplitude_um': 0.5})
     """
 
-    def bad(hint: str) -> OptionError:
-        return OptionError(flag, text, allowed, hint)
+    def bad(hint: str) -> InputError:
+        return InputError(name, text, allowed, hint)
 
     prefix, sep, rest = text.strip().partition(":")
     prefix = prefix.strip().lower()
@@ -209,7 +171,7 @@ def parse_spec(
 
 
 def parse_defect(text: str):
-    """A :class:`~bearinglab.dynamics.Defect` (SI) from a --defect specification.
+    """A :class:`~bearinglab.dynamics.Defect` (SI) from a defect specification.
 
     ``outer:width_mm=1.2,depth_mm=0.25[,angle_deg=270]``, ``inner:...`` or
     ``ball:width_mm=1.2[,ball=0]``; widths and depths in mm, angles in degrees (for the
@@ -219,7 +181,7 @@ def parse_defect(text: str):
     -90.0
     """
     location, values = parse_spec(
-        text, "--defect", DEFECT_ALLOWED, _DEFECT_KEYS, noun="defects", required=("width_mm",)
+        text, "defect", DEFECT_ALLOWED, _DEFECT_KEYS, noun="defects", required=("width_mm",)
     )
     kwargs = {
         "width": values["width_mm"] * 1e-3,
@@ -259,7 +221,7 @@ def defect_text(d) -> str:
 
 
 def check_defects(specs: list[str], defects: list, bearing) -> None:
-    """Each --defect (as typed, and as parse_defect read it) checked against the bearing
+    """Each defect (as typed, and as parse_defect read it) checked against the bearing
     (Defect.check): one that does not fit is a one-line error in the spec's units."""
     for text, defect in zip(specs, defects, strict=True):
         try:
@@ -270,8 +232,8 @@ def check_defects(specs: list[str], defects: list, bearing) -> None:
                 if exc.parameter == "width"
                 else f"{exc.parameter} = {exc.value!r}"
             )
-            raise OptionError(
-                "--defect",
+            raise InputError(
+                "defect",
                 text,
                 DEFECT_ALLOWED,
                 f"for {bearing.name or 'this bearing'}: {shown} must be {exc.allowed}",
@@ -279,7 +241,7 @@ def check_defects(specs: list[str], defects: list, bearing) -> None:
 
 
 def parse_waviness(text: str):
-    """A :class:`~bearinglab.imperfections.Waviness` (SI) from a --waviness specification.
+    """A :class:`~bearinglab.imperfections.Waviness` (SI) from a waviness specification.
 
     >>> w = parse_waviness("ball:order=2,amplitude_um=0.5,phase_deg=90,ball=3")
     >>> w.race, w.order, round(w.amplitude * 1e6, 9), round(w.phase, 6), w.ball
@@ -289,7 +251,7 @@ def parse_waviness(text: str):
 
     race, v = parse_spec(
         text,
-        "--waviness",
+        "waviness",
         WAVINESS_ALLOWED,
         _WAVINESS_KEYS,
         noun="waviness",
@@ -306,7 +268,7 @@ def parse_waviness(text: str):
 
 
 def parse_ball_band(text: str):
-    """--ball-size-error-um: a band width [m] or a pair (low, high) [m].
+    """ball_size_error_um: a band width [m] or a pair (low, high) [m].
 
     >>> parse_ball_band("2"), parse_ball_band("0, 3")
     (2e-06, (0.0, 3e-06))
@@ -317,24 +279,24 @@ def parse_ball_band(text: str):
     except ValueError:
         values = []
     if len(values) not in (1, 2) or not all(math.isfinite(v) for v in values):
-        raise OptionError("--ball-size-error-um", text, BALL_ERROR_ALLOWED)
+        raise InputError("ball_size_error_um", text, BALL_ERROR_ALLOWED)
     if len(values) == 1:
         if values[0] < 0:
-            raise OptionError(
-                "--ball-size-error-um", text, BALL_ERROR_ALLOWED, "the band must be >= 0"
+            raise InputError(
+                "ball_size_error_um", text, BALL_ERROR_ALLOWED, "the band must be >= 0"
             )
         return values[0] * 1e-6
     if values[0] > values[1]:
-        raise OptionError("--ball-size-error-um", text, BALL_ERROR_ALLOWED, "LOW > HIGH")
+        raise InputError("ball_size_error_um", text, BALL_ERROR_ALLOWED, "LOW > HIGH")
     return values[0] * 1e-6, values[1] * 1e-6
 
 
 def parse_surface(text: str) -> tuple[str, dict]:
-    """(race, {amplitude_um, length_circ_mm, length_axial_mm}) from a --surface3d
+    """(race, {amplitude_um, length_circ_mm, length_axial_mm}) from a surface3d
     specification (the surface itself needs the bearing: :meth:`FormErrors.build`)."""
     return parse_spec(
         text,
-        "--surface3d",
+        "surface3d",
         SURFACE_ALLOWED,
         _SURFACE_KEYS,
         noun="surfaces",
@@ -344,8 +306,8 @@ def parse_surface(text: str) -> tuple[str, dict]:
 
 
 class FormErrors:
-    """The form-error options as typed and parsed (before the bearing is known):
-    --waviness, --ball-size-error-um, --surface3d. :meth:`build` makes the
+    """The form-error inputs as given and parsed (before the bearing is known):
+    waviness, ball_size_error_um, surface3d. :meth:`build` makes the
     :class:`~bearinglab.imperfections.Imperfections` for a bearing and a seed."""
 
     def __init__(
@@ -366,13 +328,13 @@ class FormErrors:
 
     def build(self, bearing, seed: int | None = None):
         """The Imperfections on ``bearing`` (None when none were given); errors name the
-        option and the specification."""
+        input and the specification."""
         from ..imperfections import BallSizeErrors, Imperfections, RandomSurface
 
         if not self.given:
             return None
         if seed is not None and seed < 0:
-            raise OptionError("--seed", seed, "an integer >= 0")
+            raise InputError("seed", seed, "an integer >= 0")
         seed = 0 if seed is None else int(seed)
         name = bearing.name or "this bearing"
         limit = MAX_FORM_ERROR * bearing.ball_diameter
@@ -380,15 +342,15 @@ class FormErrors:
             try:
                 w.check(bearing)
             except InputError as exc:
-                raise OptionError(
-                    "--waviness",
+                raise InputError(
+                    "waviness",
                     text,
                     WAVINESS_ALLOWED,
                     f"for {name}: {exc.parameter} = {exc.value!r} must be {exc.allowed}",
                 ) from None
             if w.amplitude > limit:
-                raise OptionError(
-                    "--waviness",
+                raise InputError(
+                    "waviness",
                     text,
                     WAVINESS_ALLOWED,
                     f"amplitude_um must be at most {limit * 1e6:.4g} for {name} "
@@ -398,8 +360,8 @@ class FormErrors:
         if self.band is not None:
             errors = BallSizeErrors.random(bearing.ball_count, self.band, seed=seed)
             if np.max(np.abs(errors.errors)) > limit:
-                raise OptionError(
-                    "--ball-size-error-um",
+                raise InputError(
+                    "ball_size_error_um",
                     self.band_text,
                     BALL_ERROR_ALLOWED,
                     f"errors must stay within +-{limit * 1e6:.4g} um for {name} "
@@ -408,8 +370,8 @@ class FormErrors:
         surfaces = []
         for i, (text, race, v) in enumerate(self.surfaces):
             if v["amplitude_um"] * 1e-6 > limit / 3:
-                raise OptionError(
-                    "--surface3d",
+                raise InputError(
+                    "surface3d",
                     text,
                     SURFACE_ALLOWED,
                     f"amplitude_um must be at most {limit / 3 * 1e6:.4g} for "
@@ -423,8 +385,8 @@ class FormErrors:
                 else bearing.outer_raceway_diameter
             )
             if length_r > math.pi * radius:
-                raise OptionError(
-                    "--surface3d",
+                raise InputError(
+                    "surface3d",
                     text,
                     SURFACE_ALLOWED,
                     f"length_circ_mm must be at most {math.pi * radius * 1e3:.4g} "
@@ -432,8 +394,8 @@ class FormErrors:
                 )
             points = _surface_points(bearing, race, length_r, length_z)
             if points > MAX_SURFACE_POINTS:
-                raise OptionError(
-                    "--surface3d",
+                raise InputError(
+                    "surface3d",
                     text,
                     SURFACE_ALLOWED,
                     f"the correlation lengths need a grid of {points:.3g} points "
@@ -447,9 +409,7 @@ class FormErrors:
                     )
                 )
             except InputError as exc:
-                raise OptionError(
-                    "--surface3d", text, SURFACE_ALLOWED, f"for {name}: {exc}"
-                ) from None
+                raise InputError("surface3d", text, SURFACE_ALLOWED, f"for {name}: {exc}") from None
         return Imperfections(
             [w for _, w in self.waviness], ball_size_errors=errors, surfaces=surfaces
         )

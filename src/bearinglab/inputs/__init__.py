@@ -1,0 +1,123 @@
+"""The request: what a user gives, declared once (:data:`INPUTS`), and the builders that
+turn it into model objects in SI, checking it in the user's units.
+
+Every front end - the command line, the studies, the data sets, the report - takes its
+inputs from :data:`INPUTS` and calls these builders; their errors name the input by its
+public name (``radial_load_n``), with the value as given, and the command line words
+that name as its flag (``--radial-load-n``).
+
+>>> bearing, _ = bearing_from({"designation": "6205"})
+>>> round(bearing.ball_diameter * 1e3, 2)
+7.94
+>>> condition_from({"radial_load_n": 1000.0, "speed_rpm": 1797.0}).radial_load
+1000.0
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..errors import InputError
+from .bearing import (
+    bearing_from,
+    bearing_warnings,
+    geometry_line,
+    given_fields,
+    read_geometry_file,
+)
+from .specs import FormErrors, check_defects, parse_defect
+from .table import BEARING, FORMS, GEOMETRY_NEEDED, INPUTS, Input, check
+
+__all__ = [
+    "BEARING",
+    "FORMS",
+    "GEOMETRY_NEEDED",
+    "INPUTS",
+    "FormErrors",
+    "Input",
+    "bearing_from",
+    "bearing_warnings",
+    "check",
+    "check_defects",
+    "condition_from",
+    "geometry_line",
+    "given_fields",
+    "lubricant_from",
+    "no_effect",
+    "parse_defect",
+    "read_geometry_file",
+    "speed_from",
+]
+
+_CONDITION = (
+    "speed_rpm",
+    "radial_load_n",
+    "axial_load_n",
+    "radial_load_angle_deg",
+    "misalignment_mrad",
+)
+
+
+def speed_from(values: dict, *, positive: bool = True) -> float:
+    """The shaft speed [rad/s] of ``speed_rpm`` (> 0 rpm, or >= 0 unless ``positive``)."""
+    rpm = values.get("speed_rpm")
+    if rpm is None:
+        raise InputError("speed_rpm", None, "a speed in rpm")
+    INPUTS["speed_rpm"].check("speed_rpm", rpm)
+    if positive and rpm <= 0:
+        raise InputError("speed_rpm", rpm, "a speed > 0 rpm")
+    return rpm * math.pi / 30.0
+
+
+def condition_from(values: dict, *, positive_speed: bool = False, unloaded: str = ""):
+    """The OperatingCondition of ``speed_rpm``, ``radial_load_n``, ``axial_load_n``,
+    ``radial_load_angle_deg`` and ``misalignment_mrad`` (a tilt about the radial-plane axis
+    across the load); absent inputs take the table's defaults (speed 0). With
+    ``unloaded`` (why a load is needed) a load of zero is refused."""
+    from ..operating import OperatingCondition
+
+    v = {name: values.get(name, INPUTS[name].default) for name in _CONDITION}
+    v = {name: INPUTS[name].default if x is None else x for name, x in v.items()}
+    check(v)
+    if unloaded and not v["radial_load_n"] and not v["axial_load_n"]:
+        raise InputError(
+            "radial_load_n", v["radial_load_n"], "a load > 0 N (or an axial_load_n)", unloaded
+        )
+    angle = math.radians(v["radial_load_angle_deg"])
+    tilt = v["misalignment_mrad"] * 1e-3
+    speed = 0.0 if v["speed_rpm"] is None else speed_from(v, positive=positive_speed)
+    return OperatingCondition(
+        radial_load=float(v["radial_load_n"]),
+        radial_load_angle=angle,
+        axial_load=float(v["axial_load_n"]),
+        misalignment=(-tilt * math.sin(angle), tilt * math.cos(angle)),
+        shaft_speed=speed,
+    )
+
+
+def no_effect(given, why: str) -> list[str]:
+    """A warning naming the inputs given (``given``: (name, given) pairs) that have no
+    effect ``why``; none when none was given."""
+    names = [f"`{name}`" if name.isidentifier() else name for name, on in given if on]
+    return [f"{' and '.join(names)}: no effect {why}"] if names else []
+
+
+#: The film's lubricant when none is named.
+DEFAULT_LUBRICANT = "iso-vg68"
+
+
+def lubricant_from(values: dict):
+    """(Lubricant, temperature [K] or None, warnings) of ``lubricant`` and
+    ``temperature_c`` for the EHL ``film``: (None, None, warnings) without the film, the
+    warnings naming the lubricant inputs that then have no effect."""
+    from ..lubrication import LUBRICANTS, ZERO_CELSIUS
+
+    check(values, ("lubricant", "temperature_c"))
+    name = values.get("lubricant") or DEFAULT_LUBRICANT
+    temperature = values.get("temperature_c")
+    if not values.get("film"):
+        given = (("lubricant", values.get("lubricant") not in (None, DEFAULT_LUBRICANT)),)
+        given += (("temperature_c", temperature is not None),)
+        return None, None, no_effect(given, "without `film` (the EHL film)")
+    kelvin = None if temperature is None else temperature + ZERO_CELSIUS
+    return LUBRICANTS[name], kelvin, []
