@@ -10,9 +10,9 @@ import numpy as np
 
 from ..geometry import BallBearing
 from ..operating import OperatingCondition
+from ..ratings.basic import LoadRatings
+from ..ratings.equivalent import LoadFactors
 from ..units import rad_s_to_hz, rad_s_to_rpm, unit_of
-from .equivalent import LoadFactors
-from .ratings import LoadRatings
 
 
 def hours(million_rev: float, shaft_speed: float) -> float:

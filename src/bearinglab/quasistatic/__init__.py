@@ -277,10 +277,9 @@ def _in_user_terms(
     exc: ConvergenceError, bearing: BallBearing, condition: OperatingCondition
 ) -> ConvergenceError:
     """A solver failure for a load beyond the static rating, told as that load against C0
-    (ISO 76, life/ratings.py); other failures keep the solver's words."""
+    (ISO 76, ratings/basic.py); other failures keep the solver's words."""
     try:
-        from ..life.equivalent import equivalent_static_load
-        from ..life.ratings import load_ratings
+        from ..ratings import equivalent_static_load, load_ratings
 
         c0 = load_ratings(bearing).static
         p0 = equivalent_static_load(bearing, condition.radial_load, abs(condition.axial_load))
