@@ -284,11 +284,13 @@ class BenchmarkResult:
         )
 
     def recall(self, column: str | None = None) -> dict:
-        """Per class: right / records of that class [-]."""
+        """Per class: right / records of that class [-], for the verdicts of ``column``
+        (a method, or by default the methods together)."""
         return {k: row[k] / sum(row.values()) for k, row in self.confusion(column).items()}
 
     def accuracy(self, column: str | None = None) -> float:
-        """Share of records right [-]."""
+        """Share of records right [-], for the verdicts of ``column`` (a method, or by
+        default the methods together)."""
         column = column or "+".join(self.methods)
         return sum(r.get(column) == r["expected"] for r in self.records) / len(self.records)
 
@@ -326,7 +328,9 @@ class BenchmarkResult:
         return pd.DataFrame([{k: r.get(k) for k in keys} for r in self.records], columns=keys)
 
     def plot(self, ax=None, column: str | None = None):
-        """Confusion matrix as an image with counts; returns (figure, axes)."""
+        """Confusion matrix of ``column`` (a method, or by default the methods together)
+        as an image with counts, on ``ax`` (a matplotlib Axes; a new figure by default);
+        returns (figure, axes)."""
         from ..plotting import _pyplot
 
         plt = _pyplot()

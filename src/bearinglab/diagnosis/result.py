@@ -236,7 +236,8 @@ class Diagnosis:
 
 
 def measured_ball_defect_frequency(matched_peaks) -> float | None:
-    """Ball-defect frequency read off labelled envelope lines [Hz].
+    """Ball-defect frequency read off labelled envelope lines, ``matched_peaks`` (the
+    dicts of :func:`bearinglab.signal.match_peaks`) [Hz].
 
     The strongest line matched to ``ball_defect`` at harmonic 1; if there is none, half
     the strongest matched at harmonic 2; else None. Sidebands are not used.

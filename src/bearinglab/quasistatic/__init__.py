@@ -50,7 +50,8 @@ MAX_SPEED_FACTOR = 3.0e6
 
 
 def speed_limit(bearing: BallBearing) -> float:
-    """Highest shaft speed this model answers for, n d_m = MAX_SPEED_FACTOR [rad/s]."""
+    """Highest shaft speed this model answers for ``bearing``, n d_m = MAX_SPEED_FACTOR
+    [rad/s]."""
     return MAX_SPEED_FACTOR / (bearing.pitch_diameter * 1e3) * math.pi / 30.0
 
 

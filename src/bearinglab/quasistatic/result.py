@@ -270,7 +270,8 @@ class LoadDistribution:
         return pd.DataFrame(self.stiffness_matrix, index=list(DOF_NAMES), columns=list(DOF_NAMES))
 
     def plot(self, axes=None):
-        """Polar load distribution and contact angles; returns (fig, axes)."""
+        """Polar load distribution and contact angles on ``axes`` (a polar and a plain
+        matplotlib Axes; a new figure by default); returns (fig, axes)."""
         from ..plotting import load_distribution_figure
 
         return load_distribution_figure(self, axes)

@@ -357,7 +357,8 @@ def match_peaks(
 
 
 def peak_label(p: dict) -> str:
-    """Short label of a labelled line: "2x bpfo", "1x bpfi -1 shaft", "10x shaft" or "-".
+    """Short label of a labelled line ``p`` (a dict of :func:`match_peaks`): "2x bpfo",
+    "1x bpfi -1 shaft", "10x shaft" or "-".
 
     >>> peak_label({"matched": "bpfo", "harmonic": 2})
     '2x bpfo'

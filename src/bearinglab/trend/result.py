@@ -145,6 +145,7 @@ class TrendResult:
         return None
 
     def test_name(self, j: int) -> str:
+        """The name of test ``j`` (an index of ``tests``): "indicator:channel"."""
         name, c = self.tests[j]
         return f"{name}:{self.channels[c]}"
 
@@ -306,7 +307,8 @@ class TrendResult:
     # ------------------------------------------------------------------ figure
     def plot(self, ax=None):
         """The indicators over time, the baseline, the limits and the alarm
-        (:func:`.figure.trend_figure`); returns (figure, axes)."""
+        (:func:`.figure.trend_figure`), on ``ax`` (six matplotlib Axes; a new figure by
+        default); returns (figure, axes)."""
         from .figure import trend_figure
 
         return trend_figure(self, ax)
