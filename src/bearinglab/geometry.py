@@ -343,21 +343,23 @@ class BallBearing:
 
     def shoulder_angle(self, race: Race, side: int = 1) -> float:
         """Contact angle, measured at the groove centre from the groove bottom, at which
-        the groove meets its shoulder on ``side`` (+1 thrust side, -1 the other):
-        arccos(1 - depth / (f D_w)) [rad]."""
+        the groove meets its shoulder on ``side`` (+1 thrust side, -1 the other) of the
+        ``race`` ("inner" or "outer"): arccos(1 - depth / (f D_w)) [rad]."""
         f = self.inner_groove_factor if race == "inner" else self.outer_groove_factor
         return math.acos(
             max(-1.0, min(1.0, 1.0 - self.shoulder_depth(side) / (f * self.ball_diameter)))
         )
 
     def contact_radii(self, race: Race, contact_angle: float | None = None):
-        """(R_x, R_y) of the inner or outer contact [m]; see :func:`contact_radii`."""
+        """(R_x, R_y) of the ``race``'s contact ("inner" or "outer") at ``contact_angle``
+        [rad] (default: the free contact angle) [m]; see :func:`contact_radii`."""
         f = self.inner_groove_factor if race == "inner" else self.outer_groove_factor
         alpha = self.contact_angle if contact_angle is None else contact_angle
         return contact_radii(self.ball_diameter, self.pitch_diameter, f, alpha, race)
 
     def curvature(self, race: Race, contact_angle: float | None = None):
-        """Curvature sum [1/m] and difference [-] of the inner or outer contact."""
+        """Curvature sum [1/m] and difference [-] of the ``race``'s contact ("inner" or
+        "outer") at ``contact_angle`` [rad] (default: the free contact angle)."""
         return curvature_sum_difference(*self.contact_radii(race, contact_angle))
 
     # ---- masses and ring sections

@@ -94,8 +94,8 @@ class OperatingCondition:
 
     @classmethod
     def at_rpm(cls, speed_rpm: float, **loads) -> OperatingCondition:
-        """The condition with the shaft speed given in rpm (every other field as for the
-        class, SI), so that a speed in rpm cannot pass for rad/s.
+        """The condition with the shaft speed given in rpm, ``speed_rpm`` (every other
+        field as for the class, SI), so that a speed in rpm cannot pass for rad/s.
 
         >>> round(OperatingCondition.at_rpm(1797, radial_load=500.0).shaft_speed, 4)
         188.1814

@@ -226,7 +226,7 @@ def draw_spectrum(
     lines and their harmonics marked and the labelled peaks annotated (the lines of
     :func:`bearinglab.signal.lines.spectrum_lines` or of a diagnosis). ``highlight(line)``
     says which peaks to draw in colour; by default those matched to any line."""
-    from .diagnosis import peak_label
+    from .signal.peaks import peak_label
 
     f, a = spec.frequency, spec.amplitude
     shown = (f > 0) & (f <= max_frequency)  # a DC offset (or envelope mean) would set the scale

@@ -38,8 +38,8 @@ from bearinglab.life import (
     static_load_factors,
     static_load_rating,
 )
-from bearinglab.life import tables as T
 from bearinglab.operating import OperatingCondition
+from bearinglab.ratings import tables as T
 
 RPM = math.pi / 30
 

@@ -15,7 +15,7 @@ from bearinglab.errors import InputError
 from bearinglab.geometry import BallBearing
 from bearinglab.operating import OperatingCondition
 from bearinglab.quasistatic import solve_load_distribution
-from bearinglab.rotordynamics import KRAMER_FACTOR, bearing_element, ross_bearing
+from bearinglab.rotordynamics import KRAMER_FACTOR, bearing_element, ross_bearing, ross_element
 
 BEARING = BallBearing(
     ball_count=9,
@@ -83,9 +83,9 @@ def test_stiffness_frame_names_rows_and_columns():
     assert f.loc["y", "y"] == R.stiffness_matrix[1, 1]
 
 
-def test_to_ross_maps_the_matrix(monkeypatch):
+def test_ross_element_maps_the_matrix(monkeypatch):
     calls = _fake_ross(monkeypatch, "frequency")
-    R.to_ross(n=3, damping=50.0)
+    ross_element(R, 3, damping=50.0)
     k = R.stiffness_matrix
     assert calls["n"] == 3 and calls["tag"] == "6205 n3"  # the node in the tag
     assert (calls["kxx"], calls["kyy"], calls["kxy"], calls["kyx"], calls["kzz"]) == (
@@ -101,7 +101,7 @@ def test_to_ross_maps_the_matrix(monkeypatch):
 
 def test_ross_3_gets_the_speed_as_speed(monkeypatch):
     calls = _fake_ross(monkeypatch, "speed")
-    R.to_ross(n=1, tag="front")
+    ross_element(R, 1, tag="front")
     assert calls["speed"] == [pytest.approx(3000 * np.pi / 30)]
     assert calls["frequency"] is None  # ROSS 3's whirl-frequency axis
     assert calls["tag"] == "front"
@@ -128,17 +128,17 @@ def test_coefficients_at_several_speeds(monkeypatch):
 def test_bad_damping_and_speeds_are_refused(monkeypatch):
     _fake_ross(monkeypatch, "frequency")
     with pytest.raises(InputError, match="damping"):
-        R.to_ross(n=0, damping=-1.0)
+        ross_element(R, 0, damping=-1.0)
     with pytest.raises(InputError, match="speeds_rpm"):
         bearing_element(BEARING, 0, speeds_rpm=[-5.0], radial_load=100.0)
     with pytest.raises(InputError, match="speeds"):
         bearing_element(BEARING, 0, speeds_rpm=[3000.0, 1000.0], radial_load=100.0)
 
 
-def test_to_ross_without_ross_says_how_to_get_it(monkeypatch):
+def test_ross_element_without_ross_says_how_to_get_it(monkeypatch):
     monkeypatch.setitem(sys.modules, "ross", None)
     with pytest.raises(ImportError, match="pip install ross-rotordynamics"):
-        R.to_ross(n=0)
+        ross_element(R, 0)
 
 
 def test_static_writes_the_stiffness_csv(tmp_path, capsys):

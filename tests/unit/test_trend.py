@@ -340,7 +340,9 @@ def test_outputs_table_figure_page_and_velocity(failing, tmp_path):
     assert d["severity"]["boundaries_mm_s"]["a_b"] == pytest.approx(1.4)
     fig, axes = r.plot()
     assert len(axes) == 6  # five indicators and the velocity
-    page = r.write_html(tmp_path / "trend.html").read_text()
+    from bearinglab.report.trend import write_trend_page
+
+    page = write_trend_page(r, tmp_path / "trend.html").read_text()
     assert "bearinglab trend" in page and "data:image/png;base64" in page
 
 

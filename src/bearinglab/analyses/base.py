@@ -54,7 +54,7 @@ class Analysis:
         return {k: v for k, v in self.options.items() if k not in self.extra}
 
     def evaluate(self, case: dict, seed: int) -> dict:
-        """A study case's output columns; ``seed`` (the case's) draws its random inputs
+        """A study ``case``'s output columns; ``seed`` (the case's) draws its random inputs
         unless the case gives a ``seed``."""
         values = {**case}
         if "seed" in self.options and values.get("seed") is None:
@@ -65,7 +65,7 @@ class Analysis:
 
 
 def pick(d: dict, outputs: dict) -> dict:
-    """The ``outputs`` columns of a result's dict (lists joined for text columns)."""
+    """The ``outputs`` columns of a result's dict ``d`` (lists joined for text columns)."""
     out = {}
     for k, kind in outputs.items():
         v = d.get(k)
@@ -80,7 +80,8 @@ _PARAMETERS = {"shaft_speed": "speed_rpm", "noise": "noise_ms2"}
 
 
 def in_request_terms(exc, values: dict, names: dict | None = None):
-    """A library error about a model parameter as the request's input: the input named in
+    """A library error ``exc`` about a model parameter as the input of the request
+    ``values`` that holds it: the input named in
     ``names`` (parameter -> input), else the input whose name less its unit suffix is the
     parameter (``duration`` -> ``duration_s``), with the value as given (or the error's SI
     value in the input's unit) and lengths in the message in the input's unit. Errors

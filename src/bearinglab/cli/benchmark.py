@@ -66,7 +66,9 @@ def benchmark_command(
                 flag, exc.value if flag != "FOLDER" else str(folder), exc.allowed, exc.hint
             ) from None
     if html is not None:
-        result.write_html(html)
+        from ..report.benchmark import write_benchmark_page
+
+        write_benchmark_page(result, html)
     out = result.to_dict()
     if json_output:
         _emit_json(out)

@@ -233,7 +233,9 @@ def trend_command(
     if plot is not None:
         save_plot_figure(result.plot()[0], plot)
     if html is not None:
-        result.write_html(html)
+        from ..report.trend import write_trend_page
+
+        write_trend_page(result, html)
     out = result.to_dict()
     if bearing is not None:
         out["warnings"] += _geometry_warnings(bearing)

@@ -51,7 +51,7 @@ class BallContacts:
         """Validity warnings: a contact ellipse that runs over its groove shoulder (see the
         module docstring for the criterion), and a pressure above the 4200 MPa at which
         ISO 76 puts a permanent deformation of 1e-4 D_w (the static rating's criterion)."""
-        from ..life.tables import STATIC_CONTACT_STRESS
+        from ..ratings.tables import STATIC_CONTACT_STRESS
 
         out = []
         for race, c in (("inner", self.inner), ("outer", self.outer)):

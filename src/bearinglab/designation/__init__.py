@@ -98,10 +98,7 @@ def parse(text: str, system: str | None = None) -> Designation:
         same = iso.bearing_type == gost.bearing_type and gost.iso_equivalent == iso.iso_equivalent
         if not same:
             notes += (
-                (
-                    f"also reads as GOST 3189-89: {gost.description}; force it with "
-                    "system='gost' (command line: --system gost)"
-                ),
+                (f"also reads as GOST 3189-89: {gost.description}; force it with system='gost'"),
             )
         return replace(iso, alternatives=(gost,), notes=notes)
     if iso is not None:

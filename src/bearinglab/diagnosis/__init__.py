@@ -26,6 +26,7 @@ using the Case Western Reserve University data: a benchmark study", MSSP 64-65 (
 others in each module. docs/capabilities/diagnosis.md says what was measured.
 """
 
+from ..signal.peaks import peak_label
 from .analysis import (
     COUNT,
     DEFAULT_METHODS,
@@ -40,7 +41,7 @@ from .benchmark import BenchmarkResult, run_benchmark
 from .families import FAMILIES, TOLERANCES
 from .methods import METHODS
 from .recording import analyze_file
-from .result import Diagnosis, measured_ball_defect_frequency, peak_label
+from .result import Diagnosis, measured_ball_defect_frequency
 from .verdict import NO_FAULT
 
 __all__ = [

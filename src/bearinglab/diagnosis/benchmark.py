@@ -7,8 +7,8 @@ label ``fault``: normal, inner, outer, ball, cage; optional ``smith_randall_2015
 record is diagnosed by each method asked for on its own and by the methods together (the
 verdict users get); records run in parallel (``concurrent.futures``, one process per
 job). :class:`BenchmarkResult` holds the per-record table, the confusion matrix and the
-per-class recall, and writes an HTML page with the envelope spectrum of each record and
-the lines it matched.
+per-class recall; its HTML page (the envelope spectrum of each record and the lines it
+matched) is :func:`bearinglab.report.benchmark.write_benchmark_page`.
 """
 
 from __future__ import annotations
@@ -284,11 +284,13 @@ class BenchmarkResult:
         )
 
     def recall(self, column: str | None = None) -> dict:
-        """Per class: right / records of that class [-]."""
+        """Per class: right / records of that class [-], for the verdicts of ``column``
+        (a method, or by default the methods together)."""
         return {k: row[k] / sum(row.values()) for k, row in self.confusion(column).items()}
 
     def accuracy(self, column: str | None = None) -> float:
-        """Share of records right [-]."""
+        """Share of records right [-], for the verdicts of ``column`` (a method, or by
+        default the methods together)."""
         column = column or "+".join(self.methods)
         return sum(r.get(column) == r["expected"] for r in self.records) / len(self.records)
 
@@ -326,7 +328,9 @@ class BenchmarkResult:
         return pd.DataFrame([{k: r.get(k) for k in keys} for r in self.records], columns=keys)
 
     def plot(self, ax=None, column: str | None = None):
-        """Confusion matrix as an image with counts; returns (figure, axes)."""
+        """Confusion matrix of ``column`` (a method, or by default the methods together)
+        as an image with counts, on ``ax`` (a matplotlib Axes; a new figure by default);
+        returns (figure, axes)."""
         from ..plotting import _pyplot
 
         plt = _pyplot()
@@ -349,62 +353,6 @@ class BenchmarkResult:
         ax.set_title(f"{column or '+'.join(self.methods)}: {self.accuracy(column):.0%} right")
         fig.tight_layout()
         return fig, ax
-
-    def to_html(self) -> str:
-        """A self-contained page: the summary, the per-record table and, per record, its
-        envelope spectrum with the lines matched (report/document.py helpers)."""
-        from ..report.document import figure, page, paragraph, table
-
-        d = self.to_dict()
-        cols = self.columns
-        summary = table(
-            ["", *cols],
-            [
-                [kind, *[f"{d[key][c]} / {d['total']}" for c in cols]]
-                for kind, key in (
-                    ("right", "right"),
-                    ("wrong fault", "wrong"),
-                    ("missed", "missed"),
-                )
-            ]
-            + [
-                [f"recall {k}", *[d["recall"][c].get(k) for c in cols]]
-                for k in d["recall"][cols[-1]]
-            ],
-            "Summary",
-        )
-        rows = [
-            [
-                r["file"],
-                r["fault"],
-                r["smith_randall_2015"] or "",
-                *[r.get(c) or r.get("error") for c in cols],
-                "yes" if r["right"] else "no",
-            ]
-            for r in self.records
-        ]
-        body = [
-            paragraph(f"Folder {self.folder}; methods {', '.join(self.methods)}."),
-            summary,
-            figure(self.plot()[0], "Confusion matrix (methods together)", 60),
-            table(
-                ["file", "label", "Smith & Randall", *cols, "right"], rows, "Records", numeric=()
-            ),
-        ]
-        for r in self.records:
-            diag = self.diagnoses.get(r["file"])
-            body.append(f"<h3>{r['file']}: {r['verdict']} (label {r['fault']})</h3>")
-            body.append(paragraph(r.get("reason") or r.get("error") or ""))
-            if diag is not None:
-                body.append(figure(diag.plot()[0], f"{r['file']}: squared envelope spectrum"))
-        return page("bearinglab benchmark", [f"{self.folder}"], "".join(body))
-
-    def write_html(self, path) -> Path:
-        """Write :meth:`to_html` atomically to ``path``."""
-        from ..files import write_atomically
-
-        text = self.to_html()
-        return write_atomically(path, lambda tmp: Path(tmp).write_text(text, encoding="utf-8"))
 
 
 def run_benchmark(

@@ -235,24 +235,9 @@ class Diagnosis:
         return fig, ax
 
 
-def peak_label(p: dict) -> str:
-    """Short label of a labelled line: "2x bpfo", "1x bpfi -1 shaft", "10x shaft" or "-".
-
-    >>> peak_label({"matched": "bpfo", "harmonic": 2})
-    '2x bpfo'
-    """
-    if p.get("matched"):
-        return f"{p['harmonic']}x {p['matched']}"
-    if p.get("sideband_of"):
-        return (
-            f"{p['sideband_harmonic']}x {p['sideband_of']} {p['sideband_order']:+d} "
-            f"{p['modulation']}"
-        )
-    return "-"
-
-
 def measured_ball_defect_frequency(matched_peaks) -> float | None:
-    """Ball-defect frequency read off labelled envelope lines [Hz].
+    """Ball-defect frequency read off labelled envelope lines, ``matched_peaks`` (the
+    dicts of :func:`bearinglab.signal.match_peaks`) [Hz].
 
     The strongest line matched to ``ball_defect`` at harmonic 1; if there is none, half
     the strongest matched at harmonic 2; else None. Sidebands are not used.

@@ -106,7 +106,8 @@ class Simulation:
         return pd.DataFrame(table)
 
     def plot(self, axes=None, channels=("acc_y", "disp_y")):
-        """The record's ``channels`` against time, one above the other; (fig, axes)."""
+        """The record's ``channels`` against time, one above the other, on ``axes`` (one
+        matplotlib Axes per channel; a new figure by default); (fig, axes)."""
         from ..plotting import _pyplot
 
         if axes is None:

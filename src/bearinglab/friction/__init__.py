@@ -2,7 +2,7 @@
 
 - :mod:`.constant` -- seed 003's constant coefficient by bearing type, M = mu P d_m / 2
   (d_m the pitch diameter, as the seed defines it), N = M omega; the equivalent load P of
-  ball bearings from ISO 281 (:func:`bearinglab.life.equivalent_dynamic_load`).
+  ball bearings from ISO 281 (:func:`bearinglab.ratings.equivalent_dynamic_load`).
 - :mod:`.skf` -- the SKF four-component model M = phi_ish phi_rs M_rr + M_sl + M_seal +
   M_drag (SKF catalogue 10000 EN), and the viscosity ratio kappa (ISO 281's nu_1 from
   :mod:`bearinglab.life`).

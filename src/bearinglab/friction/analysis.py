@@ -287,7 +287,7 @@ def bearing_friction(
     ``friction_type`` or the bearing's (:func:`~.constant.friction_type_of`), d_m the
     bearing's pitch diameter, P ``equivalent_load``, F_r without axial load, ISO 281's
     dynamic equivalent load from a ball bearing's geometry
-    (:func:`bearinglab.life.equivalent_dynamic_load`), or F_a for a thrust ball bearing
+    (:func:`bearinglab.ratings.equivalent_dynamic_load`), or F_a for a thrust ball bearing
     under axial load alone.
 
     ``model="skf"`` (:func:`skf_friction`): the type is ``friction_type`` or the bearing's
@@ -406,15 +406,14 @@ def bearing_friction(
             "bearing_type",
             kind,
             what,
-            f"this bearing is {kind}; use --model "
-            "constant (model='constant'), which covers every type",
+            f"this bearing is {kind}; use model='constant', which covers every type",
         )
     if b.bore is None or b.outside_diameter is None:
         raise InputError(
             "bore",
             None,
             "the bore and outside diameter (the SKF model uses d_m = 0.5 (d + D))",
-            "command line: --bore-mm, --outside-diameter-mm",
+            "give the bearing's bore and outside_diameter",
         )
     if nu is None:
         raise InputError(
@@ -430,7 +429,7 @@ def bearing_friction(
                 None,
                 "SKF geometry constants R1, R2, S1, S2, R3, S3 "
                 f"for {kind} (SKF's table is not shipped)",
-                "command line: --skf-constants",
+                "give them (constants)",
             )
         constants = deep_groove_constants(series or b.series)
     notes = list(skf_options.pop("notes", ()))
@@ -444,14 +443,14 @@ def bearing_friction(
                 "the basic static load rating C_0 "
                 "[N] when there is an axial load (SKF: alpha_F = 24.6 "
                 "(F_a/C_0)^0.24)",
-                "command line: --static-load-rating-kn",
+                "give it (static_load_rating)",
             )
-        from ..life import load_ratings
+        from ..ratings import load_ratings
 
         c0, c0_how = load_ratings(ball).static, _ISO76_C0
         notes.append(
             f"C_0 = {c0:.5g} N from ISO 76 and the internal geometry "
-            "(bearinglab.life); give the maker's (--static-load-rating-kn)"
+            "(bearinglab.ratings); give the maker's (static_load_rating)"
         )
     if c0 is not None and fa > c0:
         raise InputError("axial_load", fa, f"at most C_0 = {c0:g} N")

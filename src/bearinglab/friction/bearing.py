@@ -102,8 +102,9 @@ class FrictionBearing:
 
     @classmethod
     def from_ball_bearing(cls, bearing, designation=None) -> FrictionBearing:
-        """A :class:`~bearinglab.geometry.BallBearing` (d_m its ball pitch diameter) and,
-        optionally, its decoded :class:`~bearinglab.designation.Designation`; without one
+        """A ``bearing`` (:class:`~bearinglab.geometry.BallBearing`; d_m its ball pitch
+        diameter) and, optionally, its decoded ``designation``
+        (:class:`~bearinglab.designation.Designation`); without one
         the series is read from the bearing's name when that is a designation.
 
         >>> from bearinglab.catalog import bearing_from_designation

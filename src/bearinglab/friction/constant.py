@@ -19,7 +19,7 @@ Bearing Company article:
 
 Equivalent load P: the seed does not say how P is formed. The analyses
 (:func:`bearinglab.friction.bearing_friction`, the ``friction`` command) use ISO 281's
-dynamic equivalent load from :func:`bearinglab.life.equivalent_dynamic_load` for ball
+dynamic equivalent load from :func:`bearinglab.ratings.equivalent_dynamic_load` for ball
 bearings (P = F_r with no axial load); for other types the caller supplies P.
 
 All functions take and return SI units (N, m, rad/s, N m, W) and broadcast over arrays.
@@ -113,7 +113,7 @@ def friction_type_of(bearing_type: str, design_variant: str | None = None) -> st
         "bearing_type",
         bearing_type,
         "a type that seed 003's Table III names: " + ", ".join(SEED003_COEFFICIENTS),
-        "give the friction type explicitly (command line: --type)",
+        "give the friction type explicitly (friction_type)",
     )
 
 

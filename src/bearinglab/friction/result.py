@@ -183,7 +183,8 @@ class FrictionResult:
         return pd.DataFrame(rows)
 
     def plot(self, ax=None):
-        """Bar chart of the torque components [N·mm]; returns (fig, ax), never shows."""
+        """Bar chart of the torque components [N·mm] on ``ax`` (a matplotlib Axes; a new
+        figure by default); returns (fig, ax), never shows."""
         from ..plotting import figure_axes
 
         fig, ax = figure_axes(ax, figsize=(6, 3.5))

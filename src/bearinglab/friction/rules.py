@@ -3,7 +3,7 @@
 viscosity from a lubricant at its temperature (:func:`bearinglab.lubrication.lubricant.
 operating_viscosity`), the lubrication method that sets SKF's K_rs, and seed 003's
 equivalent load P (which the seed does not define: ISO 281:2007 Table 3 through
-:func:`bearinglab.life.equivalent_dynamic_load` for ball bearings). Inputs in SI.
+:func:`bearinglab.ratings.equivalent_dynamic_load` for ball bearings). Inputs in SI.
 """
 
 from __future__ import annotations
@@ -116,7 +116,7 @@ def equivalent_load_of(
         "angular_contact_ball",
         "thrust_ball",
     ):
-        from ..life import equivalent_dynamic_load
+        from ..ratings import equivalent_dynamic_load
 
         p, f = equivalent_dynamic_load(ball, fr, fa)
         return float(p), (
@@ -130,7 +130,7 @@ def equivalent_load_of(
         fa,
         "0, or the equivalent load P given",
         f"no equivalent-load rule is built in for {kind} under an axial load "
-        "here; give P (equivalent_load; command line: --equivalent-load-n)",
+        "here; give P (equivalent_load)",
     )
 
 
@@ -153,6 +153,6 @@ def check_seal_constants(seal_constants, seals: str) -> tuple[float, float, floa
             "seal_constants",
             seal_constants,
             "seal constants only with contact seals",
-            f"the seals are '{seals}' (seals='contact'; command line: --seals contact)",
+            f"the seals are '{seals}' (give seals='contact')",
         )
     return ks1, ks2, beta

@@ -163,7 +163,7 @@ def deep_groove_constants(series: str) -> SkfGeometryConstants:
             "series",
             series,
             "a deep-groove series with SKF constants: " + ", ".join(DEEP_GROOVE_CONSTANTS),
-            "give the constants R1, R2, S1, S2 (command line: --skf-constants)",
+            "give the constants R1, R2, S1, S2 (constants)",
         )
     return DEEP_GROOVE_CONSTANTS[series]
 
@@ -376,7 +376,7 @@ def deep_groove_load_variables(
             "static_load_rating",
             None,
             "the basic static load rating C_0 [N] when F_a > 0",
-            "SKF's alpha_F = 24.6 (F_a/C_0)^0.24 needs it (command line: --static-load-rating-kn)",
+            "SKF's alpha_F = 24.6 (F_a/C_0)^0.24 needs it (static_load_rating)",
         )
     sin_a = math.sin(float(deep_groove_load_angle(fa, static_load_rating)))
     g_rr = c.r1 * dm**1.96 * (fr + c.r2 / sin_a * fa) ** 0.54

@@ -126,9 +126,10 @@ class Imperfections:
         return out
 
     def surface_profile(self, race: str, angle, z):
-        """Random-surface heights of one raceway along z at each angle [m]: (..., n) for
-        angle (...) and z (n,) (what :func:`ball_axial_shift` samples; waviness, constant
-        across the groove, does not move the contacts axially)."""
+        """Random-surface heights [m] of one raceway (``race``: "inner" or "outer") along
+        ``z`` [m] at each ``angle`` [rad]: (..., n) for angle (...) and z (n,) (what
+        :func:`ball_axial_shift` samples; waviness, constant across the groove, does not
+        move the contacts axially)."""
         angle = np.asarray(angle, float)[..., None]
         out = np.zeros(angle.shape[:-1] + np.shape(z))
         for s in self.surfaces:
@@ -138,7 +139,7 @@ class Imperfections:
 
     def ball_deviation(self, spin_angle, ball_count: int):
         """Radius deviation of each ball at spin angle phi (the point facing the outer
-        race) [m]; the last axis of ``spin_angle`` (broadcast to ball_count) is the ball."""
+        race) [m]; the last axis of ``spin_angle`` (broadcast to ``ball_count``) is the ball."""
         phi = np.broadcast_to(
             np.asarray(spin_angle, float), np.broadcast_shapes(np.shape(spin_angle), (ball_count,))
         )
@@ -155,8 +156,9 @@ class Imperfections:
 
     def diameter_errors_at_rest(self, bearing, radial_load_angle: float) -> np.ndarray:
         """The form errors as effective ball-diameter errors for a quasi-static solve: the
-        approach changes a_i + a_o of every ball at shaft angle 0, ball 0 under the load
-        (:meth:`approach_change`) [m], one per ball."""
+        approach changes a_i + a_o of every ball of ``bearing`` at shaft angle 0, ball 0
+        under the load, which acts at ``radial_load_angle`` [rad] (:meth:`approach_change`)
+        [m], one per ball."""
         z = bearing.ball_count
         psi = radial_load_angle + 2.0 * np.pi * np.arange(z) / z
         return self.approach_change(bearing, psi).total

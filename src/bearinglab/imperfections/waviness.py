@@ -126,7 +126,7 @@ class Waviness:
         return self.amplitude * np.cos(self.order * np.asarray(angle, float) + self.phase)
 
     def check(self, bearing) -> None:
-        """Refuse a ball index beyond the bearing's ball count."""
+        """Refuse a ball index beyond the ball count of ``bearing``."""
         if self.ball is not None and self.ball >= bearing.ball_count:
             raise InputError("ball", self.ball, f"a ball index in [0, {bearing.ball_count - 1}]")
 
@@ -217,7 +217,8 @@ class BallSizeErrors:
         return cls(rng.uniform(low, high, z))
 
     def check(self, bearing) -> None:
-        """Refuse a count that differs from the bearing's Z or errors beyond +-5 % D_w."""
+        """Refuse a count that differs from the Z of ``bearing`` or errors beyond
+        +-5 % D_w."""
         if self.errors.shape != (bearing.ball_count,):
             raise InputError(
                 "errors", self.errors.tolist(), f"{bearing.ball_count} values (one per ball)"

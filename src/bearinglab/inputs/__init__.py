@@ -59,7 +59,8 @@ _CONDITION = (
 
 
 def speed_from(values: dict, *, positive: bool = True) -> float:
-    """The shaft speed [rad/s] of ``speed_rpm`` (> 0 rpm, or >= 0 unless ``positive``)."""
+    """The shaft speed [rad/s] of ``speed_rpm`` in the request ``values`` (> 0 rpm, or
+    >= 0 unless ``positive``)."""
     rpm = values.get("speed_rpm")
     if rpm is None:
         raise InputError("speed_rpm", None, "a speed in rpm")
@@ -70,7 +71,8 @@ def speed_from(values: dict, *, positive: bool = True) -> float:
 
 
 def condition_from(values: dict, *, positive_speed: bool = False, unloaded: str = ""):
-    """The OperatingCondition of ``speed_rpm``, ``radial_load_n``, ``axial_load_n``,
+    """The OperatingCondition of the request ``values``: ``speed_rpm`` (> 0 with
+    ``positive_speed``), ``radial_load_n``, ``axial_load_n``,
     ``radial_load_angle_deg`` and ``misalignment_mrad`` (a tilt about the radial-plane axis
     across the load); absent inputs take the table's defaults (speed 0). With
     ``unloaded`` (why a load is needed) a load of zero is refused."""
@@ -107,7 +109,8 @@ DEFAULT_LUBRICANT = "iso-vg68"
 
 
 def lubricant_from(values: dict):
-    """(Lubricant, temperature [K] or None, warnings) of ``lubricant`` and
+    """(Lubricant, temperature [K] or None, warnings) of the request ``values``:
+    ``lubricant`` and
     ``temperature_c`` for the EHL ``film``: (None, None, warnings) without the film, the
     warnings naming the lubricant inputs that then have no effect."""
     from ..lubrication import LUBRICANTS, ZERO_CELSIUS

@@ -177,7 +177,8 @@ class _Given:
 
 
 def read_geometry_file(path) -> dict:
-    """Read a geometry TOML file: input name -> (key as written, checked value)."""
+    """Read the geometry TOML file at ``path``: input name -> (key as written, checked
+    value)."""
     name = "geometry"
     try:
         text = Path(path).read_bytes().decode("utf-8")
@@ -298,7 +299,8 @@ def bearing_from(values: dict):
 
 
 def bearing_warnings(bearing, decoded=None) -> list[str]:
-    """Caveats about the bearing used: a designation that also reads in the other system
+    """Caveats about the ``bearing`` used: a designation (``decoded``, the Designation
+    read, or None) that also reads in the other system
     (GOST 3189-89 / ISO: the reading used is said), an estimated ball count of an
     angular-contact bearing (a lower bound), balls of a thrust bearing reaching past its
     outside diameter."""
@@ -329,7 +331,8 @@ def bearing_warnings(bearing, decoded=None) -> list[str]:
 
 
 def geometry_line(bearing, contact_angle: float | None = None) -> str:
-    """One line: where the geometry comes from and its main values."""
+    """One line: where the geometry of ``bearing`` comes from and its main values (the
+    ``contact_angle`` given [rad], else the nominal one)."""
     alpha = bearing.contact_angle if contact_angle is None else contact_angle
     return (
         f"geometry ({bearing.geometry_source}): Z = {bearing.ball_count}, "

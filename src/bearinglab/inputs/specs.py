@@ -171,7 +171,7 @@ def parse_spec(
 
 
 def parse_defect(text: str):
-    """A :class:`~bearinglab.dynamics.Defect` (SI) from a defect specification.
+    """A :class:`~bearinglab.dynamics.Defect` (SI) from a defect specification ``text``.
 
     ``outer:width_mm=1.2,depth_mm=0.25[,angle_deg=270]``, ``inner:...`` or
     ``ball:width_mm=1.2[,ball=0]``; widths and depths in mm, angles in degrees (for the
@@ -221,7 +221,8 @@ def defect_text(d) -> str:
 
 
 def check_defects(specs: list[str], defects: list, bearing) -> None:
-    """Each defect (as typed, and as parse_defect read it) checked against the bearing
+    """Each defect of ``specs`` (as typed) and ``defects`` (as parse_defect read them)
+    checked against the ``bearing``
     (Defect.check): one that does not fit is a one-line error in the spec's units."""
     for text, defect in zip(specs, defects, strict=True):
         try:
@@ -327,7 +328,8 @@ class FormErrors:
         return bool(self.waviness or self.surfaces or self.band is not None)
 
     def build(self, bearing, seed: int | None = None):
-        """The Imperfections on ``bearing`` (None when none were given); errors name the
+        """The Imperfections on ``bearing``, random ones drawn with ``seed`` (None: 0;
+        None when none were given); errors name the
         input and the specification."""
         from ..imperfections import BallSizeErrors, Imperfections, RandomSurface
 

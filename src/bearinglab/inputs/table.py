@@ -53,7 +53,7 @@ class Input:
         return replace(self, **changes)
 
     def allowed(self, unit: str = "") -> str:
-        """The allowed range (or choices) in words, in the input's unit."""
+        """The allowed range (or choices) in words, in the input's ``unit`` (its symbol)."""
         if self.choices:
             return "one of " + ", ".join(map(str, self.choices))
         if self.low is None and self.high is None:
@@ -298,8 +298,8 @@ FORMS = ("waviness", "ball_size_error_um", "surface3d", "seed")
 
 
 def check(values: dict, names=None) -> dict:
-    """Check each given value of ``values`` (name -> value in its unit) against its
-    input's range; returns ``values``."""
+    """Check each given value of ``values`` (name -> value in its unit; only ``names``
+    when given) against its input's range; returns ``values``."""
     for name in values if names is None else names:
         spec = INPUTS.get(name)
         if spec is not None:

@@ -1,15 +1,17 @@
 """Load ratings and rating life of ball bearings (ISO 281:2007, ISO 76:2006, ISO/TS 16281).
 
 * :func:`load_ratings` -- basic dynamic rating C, static rating C_0 and fatigue load
-  limit C_u from the internal geometry, or as given (:mod:`.ratings`).
+  limit C_u from the internal geometry, or as given (:mod:`bearinglab.ratings.basic`).
 * :func:`equivalent_dynamic_load`, :func:`equivalent_static_load` -- P (ISO 281 Table 3)
-  and P_0 (ISO 76) (:mod:`.equivalent`).
+  and P_0 (ISO 76) (:mod:`bearinglab.ratings.equivalent`).
 * :func:`rating_life` -- L10 = (C/P)^3, a_1, kappa, a_ISO and the modified life, or the
   ISO/TS 16281 reference life from the internal load distribution (:mod:`.life`,
   :mod:`.iso16281`), as a :class:`LifeResult` (:mod:`.result`). C and C_0 may be given
   (the maker's) instead of computed; the result says which.
 
-Core API in SI units; coefficient tables and where each came from: :mod:`.tables`;
+Core API in SI units; coefficient tables and where each came from:
+:mod:`bearinglab.ratings.tables`. The ratings and equivalent loads (layers 1-2, which the
+quasi-static solver uses too) live in :mod:`bearinglab.ratings` and are re-exported here;
 assumptions and checks: docs/capabilities/life.md.
 
 >>> from bearinglab.catalog import bearing_from_designation
@@ -22,7 +24,16 @@ assumptions and checks: docs/capabilities/life.md.
 (14027, 345, 5.03)
 """
 
-from .equivalent import (
+from ..ratings.basic import (
+    LoadRatings,
+    dynamic_load_rating,
+    f0_factor,
+    fatigue_load_limit,
+    fc_factor,
+    load_ratings,
+    static_load_rating,
+)
+from ..ratings.equivalent import (
     LoadFactors,
     equivalent_dynamic_load,
     equivalent_static_load,
@@ -46,15 +57,6 @@ from .life import (
     rated_viscosity,
     rating_life,
     reliability_factor,
-)
-from .ratings import (
-    LoadRatings,
-    dynamic_load_rating,
-    f0_factor,
-    fatigue_load_limit,
-    fc_factor,
-    load_ratings,
-    static_load_rating,
 )
 
 __all__ = [

@@ -19,7 +19,7 @@ L10r = (C/F_r)^3 again (0.407 = Z J_r/J_1, 0.389 = Z J_r/J_2 at epsilon = 0.5); 
 discrete ball set reproduces this within a few per cent (tests/unit/test_life.py).
 
 Sources: two versions of a Python ISO/TS 16281 implementation and the bb_core Rust solver
-(ISO 16281:2025 section 5.2), see :mod:`bearinglab.life.tables`.
+(ISO 16281:2025 section 5.2), see :mod:`bearinglab.ratings.tables`.
 """
 
 from __future__ import annotations
@@ -31,7 +31,7 @@ import numpy as np
 from ..errors import InputError
 from ..geometry import BallBearing
 from ..operating import OperatingCondition
-from . import tables as T
+from ..ratings import tables as T
 
 
 def conformity_ratio(gamma: float, inner_groove_factor: float, outer_groove_factor: float) -> float:

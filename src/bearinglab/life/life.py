@@ -11,7 +11,7 @@ a_ISO = 0.1 [1 - (2.5671 - c / kappa^p)^0.83 (e_C C_u / P)^(1/3)]^-9.3, capped a
 (c, p) = (2.2649, 0.054381) for 0.1 <= kappa < 0.4, (1.9987, 0.19087) for 0.4 <= kappa < 1
 and (1.9987, 0.071739) for 1 <= kappa <= 4; kappa = nu / nu_1 above 4 counts as 4, below
 0.1 the standard gives no value. nu_1 = 45000 n^-0.83 D_pw^-0.5 (n < 1000 r/min) or
-4500 n^-0.5 D_pw^-0.5 [mm^2/s, r/min, mm]. Sources: :mod:`bearinglab.life.tables`.
+4500 n^-0.5 D_pw^-0.5 [mm^2/s, r/min, mm]. Sources: :mod:`bearinglab.ratings.tables`.
 """
 
 from __future__ import annotations
@@ -23,10 +23,10 @@ import numpy as np
 from ..errors import InputError, positive_number
 from ..geometry import BallBearing
 from ..operating import OperatingCondition
+from ..ratings import tables as T
+from ..ratings.basic import load_ratings
+from ..ratings.equivalent import equivalent_dynamic_load, equivalent_static_load
 from ..units import rad_s_to_rpm, rpm_to_rad_s  # noqa: F401 - rpm_to_rad_s: doctests
-from . import tables as T
-from .equivalent import equivalent_dynamic_load, equivalent_static_load
-from .ratings import load_ratings
 from .result import LifeResult
 
 METHODS = ("iso281", "iso16281")

@@ -10,9 +10,9 @@ import numpy as np
 
 from ..geometry import BallBearing
 from ..operating import OperatingCondition
+from ..ratings.basic import LoadRatings
+from ..ratings.equivalent import LoadFactors
 from ..units import rad_s_to_hz, rad_s_to_rpm, unit_of
-from .equivalent import LoadFactors
-from .ratings import LoadRatings
 
 
 def hours(million_rev: float, shaft_speed: float) -> float:
@@ -201,7 +201,8 @@ class LifeResult:
 
     def plot(self, ax=None):
         """Basic rating life against the equivalent load (log-log), with the operating
-        point and, when known, the modified life; returns (fig, ax)."""
+        point and, when known, the modified life, on ``ax`` (a matplotlib Axes; a new
+        figure by default); returns (fig, ax)."""
         from ..plotting import figure_axes
 
         fig, ax = figure_axes(ax, figsize=(7, 4.5))

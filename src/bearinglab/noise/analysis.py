@@ -147,7 +147,8 @@ class NoiseAnalysis:
     def plot(self, fig=None):
         """Pressure and SPL(t) against time (left), the pressure spectrum with the BPFO /
         BPFI harmonics and the labelled lines, and the directivity at the point's distance
-        (right); returns (fig, axes), never shows."""
+        (right), on ``fig`` (a matplotlib Figure; a new one by default); returns
+        (fig, axes), never shows."""
         from ..plotting import _pyplot, draw_spectrum
 
         if fig is None:

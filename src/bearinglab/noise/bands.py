@@ -101,7 +101,8 @@ class BearingVelocityBands:
         )
 
     def plot(self, ax=None):
-        """Bar chart of the three bands [um/s]; returns (fig, ax), never shows."""
+        """Bar chart of the three bands [um/s] on ``ax`` (a matplotlib Axes; a new figure
+        by default); returns (fig, ax), never shows."""
         from ..plotting import figure_axes
 
         fig, ax = figure_axes(ax, figsize=(6.5, 3.2))

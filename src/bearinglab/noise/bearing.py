@@ -61,7 +61,8 @@ class BearingNoise:
         return out
 
     def plot(self, axes=None):
-        """Pressure and SPL against time (:meth:`.SoundPressure.plot`)."""
+        """Pressure and SPL against time on ``axes`` (as for
+        :meth:`.SoundPressure.plot`)."""
         return self.sound.plot(axes)
 
 

@@ -95,7 +95,7 @@ def outer_radius(bearing) -> tuple[float, str]:
 
 def default_field_point(bearing, angle: float | None = None) -> tuple[FieldPoint, str]:
     """The field point used when none is given: :data:`FIELD_POINT_GAP` (10 mm) outside
-    the bearing's outside radius (:func:`outer_radius`), in the direction ``angle`` [rad]
+    the outside radius of ``bearing`` (:func:`outer_radius`), in the direction ``angle`` [rad]
     from +x towards +y (default straight up, +y: above the bearing, against a downward
     load), and the rule in words.
 
@@ -123,16 +123,16 @@ def default_field_point(bearing, angle: float | None = None) -> tuple[FieldPoint
 
 
 def least_field_distance(bearing) -> float:
-    """Least distance of a field point from the bearing centre [m]: (d_m + D_w) / 2, just
-    outside the balls' path. Inside it the point would lie in the inner-ring cylinder, in
+    """Least distance of a field point from the centre of ``bearing`` [m]: (d_m + D_w) / 2,
+    just outside the balls' path. Inside it the point would lie in the inner-ring cylinder, in
     a ball's path (the sources of seed 003's eqs. 19 and 23) or in the thin gap between
     them, inside the bearing."""
     return 0.5 * (bearing.pitch_diameter + bearing.ball_diameter)
 
 
 def check_field_point(bearing, point: FieldPoint) -> list[str]:
-    """Refuse a point inside the balls' path (:func:`least_field_distance`); warn when it
-    lies inside the bearing's outside radius.
+    """Refuse a ``point`` inside the balls' path of ``bearing``
+    (:func:`least_field_distance`); warn when it lies inside the bearing's outside radius.
 
     Raises
     ------

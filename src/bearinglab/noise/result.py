@@ -48,7 +48,8 @@ class Directivity:
         }
 
     def plot(self, ax=None):
-        """Polar plot of the levels [dB]; returns (fig, ax)."""
+        """Polar plot of the levels [dB] on ``ax`` (a polar matplotlib Axes; a new figure
+        by default); returns (fig, ax)."""
         from ..plotting import figure_axes
 
         fig, ax = figure_axes(ax, subplot_kw={"projection": "polar"}, figsize=(5.5, 5.5))
@@ -109,11 +110,13 @@ class SoundPressure:
         return self.parts[part]
 
     def effective_pressure(self, part: str = "total") -> float:
-        """p_e = sqrt(1/T int p^2 dt) (seed 003, after eq. 27) [Pa]."""
+        """p_e = sqrt(1/T int p^2 dt) (seed 003, after eq. 27) of ``part`` ("ring",
+        "balls" or "total") [Pa]."""
         return effective_pressure(self.pressure(part))
 
     def spl(self, part: str = "total") -> float:
-        """SPL = 20 lg(p_e / p_ref) over the whole record (eq. 27) [dB]; -inf if silent."""
+        """SPL = 20 lg(p_e / p_ref) of ``part`` ("ring", "balls" or "total") over the
+        whole record (eq. 27) [dB]; -inf if silent."""
         return sound_pressure_level(self.effective_pressure(part))
 
     def spl_time(self, part: str = "total", window: float | None = None) -> np.ndarray:
@@ -150,8 +153,9 @@ class SoundPressure:
         return sound_pressure_level(np.sqrt(mean_square))
 
     def spectrum(self, part: str = "total", window="hann", segment_length=None):
-        """Single-sided amplitude spectrum of the pressure [Pa]
-        (:func:`bearinglab.signal.amplitude_spectrum`)."""
+        """Single-sided amplitude spectrum of the pressure of ``part`` ("ring", "balls"
+        or "total") [Pa] (:func:`bearinglab.signal.amplitude_spectrum`, with its
+        ``window`` and ``segment_length``)."""
         from ..signal import amplitude_spectrum
 
         return amplitude_spectrum(
@@ -230,7 +234,8 @@ class SoundPressure:
 
     def plot(self, axes=None):
         """Pressure against time (ring, balls, total) and SPL(t), labelled with its time
-        mean and the L_eq of each part; returns (fig, axes)."""
+        mean and the L_eq of each part, on ``axes`` (two matplotlib Axes; a new figure
+        by default); returns (fig, axes)."""
         from ..plotting import figure_axes
 
         fig, axes = figure_axes(axes, 2, 1, figsize=(8, 6), sharex=True)

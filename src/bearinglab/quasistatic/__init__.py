@@ -50,7 +50,8 @@ MAX_SPEED_FACTOR = 3.0e6
 
 
 def speed_limit(bearing: BallBearing) -> float:
-    """Highest shaft speed this model answers for, n d_m = MAX_SPEED_FACTOR [rad/s]."""
+    """Highest shaft speed this model answers for ``bearing``, n d_m = MAX_SPEED_FACTOR
+    [rad/s]."""
     return MAX_SPEED_FACTOR / (bearing.pitch_diameter * 1e3) * math.pi / 30.0
 
 
@@ -277,10 +278,9 @@ def _in_user_terms(
     exc: ConvergenceError, bearing: BallBearing, condition: OperatingCondition
 ) -> ConvergenceError:
     """A solver failure for a load beyond the static rating, told as that load against C0
-    (ISO 76, life/ratings.py); other failures keep the solver's words."""
+    (ISO 76, ratings/basic.py); other failures keep the solver's words."""
     try:
-        from ..life.equivalent import equivalent_static_load
-        from ..life.ratings import load_ratings
+        from ..ratings import equivalent_static_load, load_ratings
 
         c0 = load_ratings(bearing).static
         p0 = equivalent_static_load(bearing, condition.radial_load, abs(condition.axial_load))

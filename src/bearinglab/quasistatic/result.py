@@ -269,45 +269,9 @@ class LoadDistribution:
 
         return pd.DataFrame(self.stiffness_matrix, index=list(DOF_NAMES), columns=list(DOF_NAMES))
 
-    def to_ross(
-        self,
-        n: int,
-        damping: float | None = None,
-        tag: str | None = None,
-        *,
-        damping_factor: float | None = None,
-    ):
-        """A ``ross.BearingElement`` with this operating point's stiffness (one speed).
-
-        See :func:`bearinglab.rotordynamics.ross_element` (ROSS, the optional
-        ``ross-rotordynamics`` package): kxx, kxy, kyx, kyy and kzz from the tangent
-        stiffness matrix at this shaft speed, damping ``damping`` [N s/m] or by default
-        Kramer's rule c = beta k; for coefficients at several speeds use
-        :func:`bearinglab.rotordynamics.bearing_element`.
-
-        Parameters
-        ----------
-        n : int
-            Shaft node of the bearing [-].
-        damping : float, optional
-            Direct damping cxx = cyy [N s/m].
-        tag : str, optional
-            Element name; by default the bearing's name and the node [-].
-        damping_factor : float, optional
-            beta of Kramer's rule [s] (default rotordynamics.KRAMER_FACTOR).
-        """
-        from ..rotordynamics import KRAMER_FACTOR, ross_element
-
-        return ross_element(
-            self,
-            n,
-            tag=tag,
-            damping=damping,
-            damping_factor=KRAMER_FACTOR if damping_factor is None else damping_factor,
-        )
-
     def plot(self, axes=None):
-        """Polar load distribution and contact angles; returns (fig, axes)."""
+        """Polar load distribution and contact angles on ``axes`` (a polar and a plain
+        matplotlib Axes; a new figure by default); returns (fig, axes)."""
         from ..plotting import load_distribution_figure
 
         return load_distribution_figure(self, axes)

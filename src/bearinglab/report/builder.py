@@ -39,10 +39,10 @@ _TOP_BAND_HZ = 10e3
 
 
 def default_sample_rate(shaft_speed: float) -> float:
-    """Sample rate for the simulated envelope record [Hz]: at least 25.6 kHz, and 2.56 times
-    the top ISO 15242 band edge at this speed (10 kHz at 1800 rpm, scaled), so that at high
-    speed the defect lines, their harmonics and the resonances they excite stay below the
-    Nyquist frequency.
+    """Sample rate for the simulated envelope record at ``shaft_speed`` [rad/s] [Hz]: at
+    least 25.6 kHz, and 2.56 times the top ISO 15242 band edge at this speed (10 kHz at
+    1800 rpm, scaled), so that at high speed the defect lines, their harmonics and the
+    resonances they excite stay below the Nyquist frequency.
 
     >>> default_sample_rate(1800 * math.pi / 30)
     25600.0

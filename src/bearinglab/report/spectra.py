@@ -138,7 +138,7 @@ def envelope(ctx: Context):
     if not ctx.defects_given:
         said.insert(
             0,
-            "No defect was given (--defect): this is an example outer-race "
+            "No defect was given (defects): this is an example outer-race "
             "defect, to show what such a fault looks like on this bearing.",
         )
     rows = [

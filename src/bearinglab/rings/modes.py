@@ -151,7 +151,8 @@ class RingModes:
         return pd.DataFrame(rows)
 
     def plot(self, ax=None):
-        """Frequencies by mode number (free, approximate, refined, measured); (fig, ax)."""
+        """Frequencies by mode number (free, approximate, refined, measured) on ``ax`` (a
+        matplotlib Axes; a new figure by default); (fig, ax)."""
         from ..plotting import figure_axes
 
         fig, ax = figure_axes(ax, figsize=(8, 4.5))

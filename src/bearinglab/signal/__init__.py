@@ -11,7 +11,7 @@ and 2007 (spectral kurtosis, kurtogram), Antoni, Xin & Hamzaoui 2017 and Maurici
 from .bands import ISO15242_BANDS, VelocityBands, iso15242_bands, velocity_bands
 from .coherence import Coherence, coherence
 from .io import SUFFIXES, read_signal, write_signal
-from .peaks import find_peaks, match_peaks
+from .peaks import find_peaks, match_peaks, peak_label
 from .record import Signal
 from .spectra import (
     EnvelopeSpectrum,
@@ -40,6 +40,7 @@ __all__ = [
     "find_peaks",
     "iso15242_bands",
     "match_peaks",
+    "peak_label",
     "read_signal",
     "spectral_kurtosis",
     "spectral_kurtosis_band",

@@ -356,6 +356,23 @@ def match_peaks(
     return out
 
 
+def peak_label(p: dict) -> str:
+    """Short label of a labelled line ``p`` (a dict of :func:`match_peaks`): "2x bpfo",
+    "1x bpfi -1 shaft", "10x shaft" or "-".
+
+    >>> peak_label({"matched": "bpfo", "harmonic": 2})
+    '2x bpfo'
+    """
+    if p.get("matched"):
+        return f"{p['harmonic']}x {p['matched']}"
+    if p.get("sideband_of"):
+        return (
+            f"{p['sideband_harmonic']}x {p['sideband_of']} {p['sideband_order']:+d} "
+            f"{p['modulation']}"
+        )
+    return "-"
+
+
 def _well_matched(p: dict, tolerance: float, slack: float) -> bool:
     """Whether a labelled peak lies within +-max(tolerance n f, slack) of its harmonic
     n f: inside the match window without the slip allowance."""

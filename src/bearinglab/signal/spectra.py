@@ -409,7 +409,8 @@ def envelope_spectrum(
 
 
 def spectral_kurtosis(x, sample_rate, window_length: int) -> Spectrum:
-    """Spectral kurtosis SK(f) of ``x`` from its STFT (Antoni 2006, eq. 8 estimator).
+    """Spectral kurtosis SK(f) of ``x``, sampled at ``sample_rate`` [Hz], from its STFT
+    (Antoni 2006, eq. 8 estimator).
 
     SK(f) = <|X(t, f)|^4> / <|X(t, f)|^2>^2 - 2, the average over the STFT frames of a
     Hann window of ``window_length`` samples with 75 % overlap (``scipy.signal.stft``,

@@ -4,7 +4,8 @@ probability that stays raised, the diagnosis at and after it, and ISO 20816 seve
 
 Layer 3 (see docs/architecture.md). :func:`trend_records` reads a folder (PRONOSTIA
 snapshots as published, or the records ``analyze`` reads with their times) and returns a
-:class:`TrendResult` (``to_dict``, ``to_pandas``, ``plot``, ``write_html``).
+:class:`TrendResult` (``to_dict``, ``to_pandas``, ``plot``; its HTML page is
+:func:`bearinglab.report.trend.write_trend_page`).
 
 Modules, one sub-problem each:
 

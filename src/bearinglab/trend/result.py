@@ -6,7 +6,6 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 from datetime import UTC, datetime
-from pathlib import Path
 
 import numpy as np
 
@@ -146,6 +145,7 @@ class TrendResult:
         return None
 
     def test_name(self, j: int) -> str:
+        """The name of test ``j`` (an index of ``tests``): "indicator:channel"."""
         name, c = self.tests[j]
         return f"{name}:{self.channels[c]}"
 
@@ -307,90 +307,8 @@ class TrendResult:
     # ------------------------------------------------------------------ figure
     def plot(self, ax=None):
         """The indicators over time, the baseline, the limits and the alarm
-        (:func:`.figure.trend_figure`); returns (figure, axes)."""
+        (:func:`.figure.trend_figure`), on ``ax`` (six matplotlib Axes; a new figure by
+        default); returns (figure, axes)."""
         from .figure import trend_figure
 
         return trend_figure(self, ax)
-
-    # ------------------------------------------------------------------ page
-    def to_html(self) -> str:
-        """A self-contained page: the summary, the rule, the figure, the tests and the
-        records around the alarm (report/document.py helpers)."""
-        from ..report.document import figure, key_figures, notes, page, paragraph, table
-
-        d = self.to_dict()
-        alarm = d["alarm"]
-        cards = [
-            ("records", f"{len(self.files)}"),
-            ("span", f"{self.times[-1] / 3600:.3g} h"),
-            ("baseline", f"{self.baseline_records} records"),
-            ("alarm", "none" if alarm is None else f"{alarm['time_s']:.6g} s"),
-        ]
-        if alarm is not None:
-            cards.append(("raised by", f"{alarm['indicator']} ({alarm['channel']})"))
-            cards.append(("before the last record", f"{alarm['time_to_last_record_s']:.6g} s"))
-            if alarm["verdict"] is not None:
-                cards.append(("diagnosis at the alarm", alarm["verdict"]))
-        rows = [
-            [
-                t["indicator"],
-                t["channel"],
-                t["baseline_median"],
-                t["limit"],
-                "-" if t["first_alarm_s"] is None else t["first_alarm_s"],
-            ]
-            for t in d["tests"]
-        ]
-        body = [
-            key_figures(cards),
-            paragraph(d["rule"]["description"]),
-            figure(
-                self.plot()[0],
-                "Indicators over time: baseline (grey), limits (dashed), alarm (red)",
-            ),
-            table(
-                ["indicator", "channel", "baseline median", "limit", "first alarm [s]"],
-                rows,
-                "Tests",
-                numeric=(2, 3, 4),
-            ),
-        ]
-        if self.diagnosis is not None and alarm is not None:
-            after = d["diagnosis"]["after_alarm"] or {}
-            body.append(
-                paragraph(
-                    f"Diagnosis ({self.diagnosis.block_records} consecutive records joined, "
-                    f"channel {self.diagnosis.channel}): at the alarm "
-                    f"{alarm['verdict'] or 'not computed'}; after it "
-                    + (", ".join(f"{k}: {v} blocks" for k, v in after.items()) or "no block")
-                    + "."
-                )
-            )
-        if alarm is not None:
-            lo, hi = max(0, alarm["record"] - 5), min(len(self.files), alarm["record"] + 6)
-            near = [
-                [
-                    r["time_s"],
-                    r["file"],
-                    ", ".join(r["above_limit"]) or "-",
-                    r["verdict"] or "-",
-                ]
-                for r in d["records"][lo:hi]
-            ]
-            body.append(
-                table(
-                    ["time [s]", "file", "above limit", "diagnosis"],
-                    near,
-                    "Records near the alarm",
-                    numeric=(0,),
-                )
-            )
-        body.append(notes(d["warnings"], "Warnings"))
-        return page("bearinglab trend", [self.folder], "".join(body))
-
-    def write_html(self, path) -> Path:
-        """Write :meth:`to_html` atomically to ``path``."""
-        from ..files import write_atomically
-
-        text = self.to_html()
-        return write_atomically(path, lambda tmp: Path(tmp).write_text(text, encoding="utf-8"))

@@ -32,7 +32,7 @@ from __future__ import annotations
 from functools import cache
 
 from ..catalog import bearing_from_designation
-from ..life import load_ratings
+from ..ratings import load_ratings
 from .case import Case
 
 SKF_2018 = "SKF Bearings and mounted products 2018 (Explorer)"

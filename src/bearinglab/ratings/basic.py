@@ -14,7 +14,7 @@ Equations (lengths of the standard in mm, forces in N; the functions take metres
 - C_0r = f_0 i Z D_w^2 cos a, C_0a = f_0 Z D_w^2 (a = 90 deg), f_0 from ISO 76 Table 1;
 - C_u = C_0 / 22, times (100 / D_pw)^0.5 for D_pw > 100 mm.
 
-Sources and checks of every coefficient: :mod:`bearinglab.life.tables` and
+Sources and checks of every coefficient: :mod:`bearinglab.ratings.tables` and
 docs/capabilities/life.md.
 """
 
@@ -144,7 +144,7 @@ def dynamic_load_rating(
 
     Radial and angular-contact bearings (contact angle below 90 deg) get the radial rating
     C_r (Table 2); a contact angle of exactly 90 deg gives the thrust rating C_a of a thrust
-    ball bearing (Table 4, single stored copy -- see :mod:`bearinglab.life.tables`).
+    ball bearing (Table 4, single stored copy -- see :mod:`bearinglab.ratings.tables`).
 
     Parameters
     ----------

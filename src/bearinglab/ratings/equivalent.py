@@ -9,7 +9,7 @@ block, then across the angle. Outside the tabulated loads the end values are use
 the result says so). The values are those for a normal radial internal clearance
 (group N); ISO 281 gives none for other groups.
 
-Sources: :mod:`bearinglab.life.tables`.
+Sources: :mod:`bearinglab.ratings.tables`.
 """
 
 from __future__ import annotations
