@@ -1,6 +1,7 @@
 """One JSON contract (issue 12, docs/json.md): every key of every command's ``--json``
 carries its unit as a suffix of :data:`bearinglab.units.UNITS`, or is one of the
-dimensionless keys of :data:`bearinglab.units.DIMENSIONLESS`; docs/json.md lists both."""
+dimensionless keys of :data:`bearinglab.units.DIMENSIONLESS`, inside maps' members too
+(issue 22); docs/json.md lists both."""
 
 import json
 from pathlib import Path
@@ -49,6 +50,24 @@ COMMANDS = {
         "-o",
         "tmp/sim.npz",
     ],
+    "simulate-slip": [
+        "simulate",
+        "6205",
+        "--model",
+        "slip",
+        "--speed-rpm",
+        "1800",
+        "--radial-load-n",
+        "500",
+        "--defect",
+        "outer:width_mm=1",
+        "--duration-s",
+        "0.3",
+        "--sample-rate-hz",
+        "10000",
+        "-o",
+        "tmp/slip.npz",
+    ],
     "noise": [
         "noise",
         "608",
@@ -91,20 +110,44 @@ REAL = Path(__file__).resolve().parents[3] / "shared" / "data" / "real"
 
 
 def _offending(obj, path: str = "") -> list[str]:
-    """Keys that break the contract, with their path."""
+    """Keys that break the contract, with their path. The data-named levels of a map
+    (units.MAPS) are not checked, but the keys inside its members are."""
     bad = []
     if isinstance(obj, dict):
         for key, value in obj.items():
             where = f"{path}.{key}"
-            known = unit_of(key) is not None or key in DIMENSIONLESS
-            if not known:
+            if unit_of(key) is not None:
+                continue  # its members carry its unit (velocity_bands_um_s.low)
+            if key not in DIMENSIONLESS:
                 bad.append(where)
-            if key not in MAPS and unit_of(key) is None:
+            if key in MAPS:
+                bad += _members(value, MAPS[key], where)
+            else:
                 bad += _offending(value, where)
     elif isinstance(obj, list):
         for item in obj:
             bad += _offending(item, f"{path}[]")
     return bad
+
+
+def _members(obj, levels: int, path: str) -> list[str]:
+    """The offending keys inside a map's members, below its ``levels`` data-named levels."""
+    if levels == 0 or not isinstance(obj, dict):
+        return _offending(obj, path)
+    bad = []
+    for name, value in obj.items():
+        bad += _members(value, levels - 1, f"{path}.{name}")
+    return bad
+
+
+def test_the_walk_enters_maps():
+    """A key without a unit inside a map's member is found; the member's name is not."""
+    sample = {"families": {"outer_race": {"slip": 0.0, "width": 1.0}}, "scores": {"x y": 1}}
+    assert _offending(sample) == [".families.outer_race.width"]
+    assert _offending({"confusion": {"raw": {"ball": {"no fault detected": 0}}}}) == []
+    assert _offending({"confusion": {"raw": {"ball": {"c": {"width": 1}}}}}) == [
+        ".confusion.raw.ball.c.width"
+    ]
 
 
 @pytest.fixture(scope="module")
