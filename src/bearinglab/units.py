@@ -231,8 +231,7 @@ DIMENSIONLESS: dict[str, str] = {
     "support_significance": "significance of a family's series without its strongest line",
     "harmonic_significance": "significance of a family's harmonics (with their sidebands up "
     "to the gate order) alone",
-    "slip": "f'/f_kin - 1: relative deviation of the best fundamental from the kinematic "
-    "frequency",
+    "slip": "f'/f_kin - 1: relative deviation of the best fundamental from the kinematic frequency",
     "tolerance_below": "largest relative deviation searched below the kinematic frequency",
     "tolerance_above": "largest relative deviation searched above the kinematic frequency",
     "below": "largest relative deviation below the kinematic frequency (a fraction)",
