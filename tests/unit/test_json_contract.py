@@ -10,7 +10,15 @@ import pytest
 from conftest import README_REPORT, README_STATIC, write_pronostia
 
 from bearinglab.cli import main
-from bearinglab.units import DIMENSIONLESS, MAPS, contract_markdown, unit_of
+from bearinglab.units import (
+    DIMENSIONLESS,
+    JSON_EXCEPTIONS,
+    JSON_SUFFIXES,
+    MAPS,
+    UNITS,
+    contract_markdown,
+    unit_of,
+)
 
 DOC = Path(__file__).resolve().parents[2] / "docs" / "json.md"
 
@@ -218,6 +226,44 @@ def test_every_key_carries_its_unit_or_is_dimensionless(outputs, name):
     if name not in outputs:
         pytest.skip("the shared recordings are not here")
     assert _offending(outputs[name]) == []
+
+
+def _off_rule(obj, path: str = "") -> list[str]:
+    """Keys whose unit is one the rules keep out of JSON (docs/json.md: N·m, N/m, m, Pa,
+    ...) and that are not a declared exception."""
+    bad = []
+    if isinstance(obj, dict):
+        for key, value in obj.items():
+            unit = unit_of(key)
+            if unit is not None and unit.suffix not in JSON_SUFFIXES:
+                if key not in JSON_EXCEPTIONS:
+                    bad.append(f"{path}.{key} [{unit.symbol}]")
+            elif unit is None:
+                bad += _off_rule(value, f"{path}.{key}")
+    elif isinstance(obj, list):
+        for item in obj:
+            bad += _off_rule(item, f"{path}[]")
+    return bad
+
+
+@pytest.mark.parametrize("name", [*COMMANDS, "analyze", "benchmark", "trend"])
+def test_every_unit_is_one_the_rules_allow_in_json(outputs, name):
+    if name not in outputs:
+        pytest.skip("the shared recordings are not here")
+    assert _off_rule(outputs[name]) == []
+
+
+def test_the_json_units_rule():
+    """The suffixes kept out of JSON are those of SI where the rules ask for an engineering
+    unit; every exception gives its reason; the check finds a key in N·m."""
+    assert set(JSON_SUFFIXES) <= set(UNITS)
+    for suffix in ("m", "n_m", "n_per_m", "pa", "kn", "nm", "rad_s", "kg_m"):
+        assert suffix not in JSON_SUFFIXES, suffix
+    assert all(reason.strip() for reason in JSON_EXCEPTIONS.values())
+    assert _off_rule({"balls": [{"gyroscopic_moment_n_m": 0.0}], "tilt_mrad": [0.0]}) == [
+        ".balls[].gyroscopic_moment_n_m [N·m]"
+    ]
+    assert _off_rule({"velocity_bands_um_s": {"low": 1.0}, "torque_n_mm": 1.0}) == []
 
 
 def _families_named(obj) -> set:

@@ -209,21 +209,31 @@ class SlipParameters:
             )
 
     def to_dict(self) -> dict:
-        """JSON-ready values (SI, units in the keys where they have one)."""
+        """JSON-ready values (engineering units of docs/json.md, in the keys where they
+        have one)."""
+        from ..units import UNITS
+
         units = {
-            "oil_shear_modulus": "_pa",
-            "regularisation_speed": "_m_s",
-            "cage_stiffness": "_n_per_m",
-            "cage_damping": "_n_s_per_m",
-            "pocket_clearance": "_m",
-            "housing_stiffness": "_n_per_m",
-            "housing_damping": "_n_s_per_m",
-            "inner_mass": "_kg",
-            "outer_mass": "_kg",
-            "unbalance": "_kg_m",
-            "damping_onset": "_m",
+            "oil_shear_modulus": "gpa",
+            "regularisation_speed": "m_s",
+            "cage_stiffness": "n_per_um",
+            "cage_damping": "n_s_per_m",
+            "pocket_clearance": "um",
+            "housing_stiffness": "n_per_um",
+            "housing_damping": "n_s_per_m",
+            "inner_mass": "kg",
+            "outer_mass": "kg",
+            "unbalance": "g_mm",
+            "damping_onset": "um",
         }
-        return {k + units.get(k, ""): v for k, v in asdict(self).items()}
+        out = {}
+        for k, v in asdict(self).items():
+            if k in units:
+                u = units[k]
+                out[f"{k}_{u}"] = None if v is None else UNITS[u].from_si(v)
+            else:
+                out[k] = v
+        return out
 
 
 def _ring_mass(bearing, which: str, given):

@@ -138,7 +138,7 @@ def _frequencies(case: dict, seed: int) -> dict:
 _MODES = (2, 3, 4, 5, 6)
 _RING_OUT = {
     "rigid_body_frequency_hz": "f",
-    "radial_stiffness_n_per_m": "f",
+    "radial_stiffness_n_per_um": "f",
     "ring_mass_kg": "f",
     "ball_mass_ratio": "f",
     "contact_stiffness_ratio": "f",

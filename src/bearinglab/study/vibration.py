@@ -23,8 +23,8 @@ _NOISE_OUT = {
     "spl_time_max_db": "f",
     "spl_leq_inner_ring_db": "f",
     "spl_leq_balls_db": "f",
-    "effective_pressure_pa": "f",
-    "peak_pressure_pa": "f",
+    "effective_pressure_upa": "f",
+    "peak_pressure_upa": "f",
     "orbit_peak_to_peak_um": "f",
 }
 
