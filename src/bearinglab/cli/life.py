@@ -95,8 +95,9 @@ def life_command(
         typer.Option(
             "--contamination",
             help="Contamination factor e_C: a number in [0, 1] or a level "
-            "of ISO 281 Table 13 (extreme, high, normal, slight, typical, severe, "
-            "very-severe); default normal with a viscosity.",
+            "of ISO 281 Table 13 (extreme-cleanliness, high-cleanliness, normal-cleanliness, "
+            "slight, typical, severe, very-severe); default normal-cleanliness with a "
+            "viscosity.",
         ),
     ] = None,
     method: Annotated[
