@@ -66,6 +66,7 @@ from ..errors import InputError, positive_number
 from ..lubrication import LUBRICANTS, Lubricant
 from ..lubrication.ehl import entrainment_speed, hamrock_dowson_film
 from ..materials import effective_modulus
+from ..operating import speed_error
 from . import _slip_kernels as sk
 
 Traction = Literal["seed004", "bair_winer"]
@@ -274,11 +275,8 @@ def pack(
             "0 deg (the slip model is planar: deep-groove bearings, radial load)",
         )
     if condition.shaft_speed <= 0:
-        raise InputError(
-            "shaft_speed",
-            condition.shaft_speed,
-            "a speed > 0 [rad/s]",
-            "the slip model needs the inner ring turning",
+        raise speed_error(
+            condition.shaft_speed, "a speed > 0 rpm", "the slip model needs the inner ring turning"
         )
     z = bearing.ball_count
     dw = bearing.ball_diameter

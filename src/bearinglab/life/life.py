@@ -22,7 +22,7 @@ import numpy as np
 
 from ..errors import InputError, positive_number
 from ..geometry import BallBearing
-from ..operating import OperatingCondition
+from ..operating import OperatingCondition, speed_error
 from ..units import rad_s_to_rpm, rpm_to_rad_s  # noqa: F401 - rpm_to_rad_s: doctests
 from . import tables as T
 from .equivalent import equivalent_dynamic_load, equivalent_static_load
@@ -236,10 +236,9 @@ def _check_condition(condition: OperatingCondition, method: str) -> None:
     if not isinstance(condition, OperatingCondition):
         raise InputError("condition", condition, "an OperatingCondition")
     if not condition.shaft_speed > 0:
-        raise InputError(
-            "shaft_speed",
+        raise speed_error(
             condition.shaft_speed,
-            "a speed > 0 [rad/s]",
+            "a speed > 0 rpm",
             "life in hours and the rated viscosity need it",
         )
     if method == "iso281" and (
