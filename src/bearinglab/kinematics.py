@@ -27,6 +27,7 @@ import numpy as np
 
 from .errors import InputError
 from .geometry import BallBearing
+from .operating import speed_error
 
 #: Names of the frequencies, in the order reports list them.
 FREQUENCY_NAMES = ("ftf", "bpfo", "bpfi", "bsf", "ball_defect")
@@ -226,7 +227,7 @@ def defect_frequencies(
         and math.isfinite(shaft_speed)
         and shaft_speed >= 0
     ):
-        raise InputError("shaft_speed", shaft_speed, "a speed >= 0 [rad/s]")
+        raise speed_error(shaft_speed, "a finite speed >= 0 rpm")
     alpha = bearing.contact_angle if contact_angle is None else float(contact_angle)
     if not 0.0 <= alpha <= 0.5 * math.pi:
         raise InputError("contact_angle", contact_angle, "an angle in [0, 90] degrees")

@@ -24,6 +24,21 @@ def _finite(name: str, value: float, allowed: str = "a finite value") -> float:
     return float(value)
 
 
+def speed_error(shaft_speed, allowed: str, hint: str = "") -> InputError:
+    """An error on a shaft speed [rad/s], its value and range in rpm: the unit users give a
+    speed in (``speed_rpm``, ``--speed-rpm``), so an rpm input is never reported in rad/s.
+    Named ``shaft_speed``, as the check of :func:`bearinglab.quasistatic.check_speed`.
+
+    >>> str(speed_error(-math.pi, "a speed >= 0 rpm"))
+    "shaft_speed = '-30 rpm' is not allowed: expected a speed >= 0 rpm"
+    """
+    try:
+        value = f"{float(shaft_speed) * 30.0 / math.pi:.6g} rpm"
+    except (TypeError, ValueError):
+        value = shaft_speed
+    return InputError("shaft_speed", value, allowed, hint)
+
+
 @dataclass(frozen=True)
 class OperatingCondition:
     """Loads, speed and imposed misalignments.
@@ -63,8 +78,13 @@ class OperatingCondition:
             raise InputError("radial_load", self.radial_load, "a load >= 0 [N]")
         _finite("radial_load_angle", self.radial_load_angle)
         _finite("axial_load", self.axial_load, "a finite load [N]")
-        if _finite("shaft_speed", self.shaft_speed, "a speed >= 0 [rad/s]") < 0:
-            raise InputError("shaft_speed", self.shaft_speed, "a speed >= 0 [rad/s]")
+        if not isinstance(self.shaft_speed, bool) and isinstance(
+            self.shaft_speed, (int, float, np.floating, np.integer)
+        ):
+            if not (math.isfinite(self.shaft_speed) and self.shaft_speed >= 0):
+                raise speed_error(self.shaft_speed, "a finite speed >= 0 rpm")
+        else:
+            _finite("shaft_speed", self.shaft_speed, "a finite speed >= 0 (rad/s)")
         for name in ("misalignment", "outer_misalignment") + (
             ("moment",) if self.moment is not None else ()
         ):
@@ -104,10 +124,9 @@ class OperatingCondition:
             raise InputError(
                 "shaft_speed", loads["shaft_speed"], "not given with speed_rpm (one speed, in rpm)"
             )
-        return cls(
-            shaft_speed=_finite("speed_rpm", speed_rpm, "a speed >= 0 [rpm]") * math.pi / 30.0,
-            **loads,
-        )
+        if _finite("speed_rpm", speed_rpm, "a speed >= 0 [rpm]") < 0:
+            raise InputError("speed_rpm", speed_rpm, "a speed >= 0 [rpm]")
+        return cls(shaft_speed=speed_rpm * math.pi / 30.0, **loads)
 
     @property
     def speed_rpm(self) -> float:

@@ -81,14 +81,17 @@ UNITS: dict[str, Unit] = _units(
     ("n_per_m", "N/m", 1.0, "stiffness"),
     ("n_m_per_rad", "N·m/rad", 1.0, "tilt stiffness"),
     ("n_per_m1_5", "N/m^1.5", 1.0, "Hertz load-deflection constant"),
+    ("n_per_um1_5", "N/µm^1.5", 1e9, "Hertz load-deflection constant"),
     ("n_s_per_m", "N·s/m", 1.0, "damping"),
     ("pa", "Pa", 1.0, "pressure, stress"),
+    ("upa", "µPa", 1e-6, "sound pressure"),
     ("mpa", "MPa", 1e6, "pressure, stress"),
     ("gpa", "GPa", 1e9, "pressure, stress, modulus"),
     ("kg", "kg", 1.0, "mass"),
     ("g", "g", 1e-3, "mass"),
     ("kg_m3", "kg/m³", 1.0, "density"),
     ("kg_m", "kg·m", 1.0, "unbalance"),
+    ("g_mm", "g·mm", 1e-6, "unbalance"),
     ("s", "s", 1.0, "time"),
     ("ms", "ms", 1e-3, "time"),
     ("hours", "h", 3600.0, "time (life)"),
@@ -110,6 +113,48 @@ UNITS: dict[str, Unit] = _units(
     ("percent", "%", 0.01, "percentage"),
     ("si", "SI", 1.0, "a matrix in SI units, its rows' units under <key>_units"),
 )
+
+#: The units a ``--json`` key may end in (docs/json.md, "One unit per quantity"): suffix ->
+#: what it is used for. The others of :data:`UNITS` (``m``, ``n_m``, ``n_per_m``, ``pa``,
+#: ``kn``, ...) are for command-line options and SI matrices only; a JSON key in one of them
+#: must be in :data:`JSON_EXCEPTIONS`.
+JSON_SUFFIXES: dict[str, str] = {
+    "hz": "frequencies",
+    "rpm": "speeds of rotation",
+    "n": "loads and forces",
+    "mm": "dimensions",
+    "um": "clearances, displacements, film thickness, form errors",
+    "mm2": "cross-section areas",
+    "mm4": "second moments of area",
+    "deg": "angles",
+    "mrad": "small tilts and misalignments",
+    "n_per_um": "stiffness",
+    "n_per_um1_5": "Hertz load-deflection constants (Q [N] = K delta[µm]^1.5)",
+    "n_s_per_m": "damping",
+    "n_mm": "moments and torques",
+    "gpa": "contact pressures, stresses and moduli",
+    "upa": "sound pressures (levels in dB re 20 µPa)",
+    "db": "sound pressure levels re 20 µPa",
+    "s": "times",
+    "hours": "lives in hours",
+    "million_rev": "lives in revolutions",
+    "per_s": "rates",
+    "g": "masses of balls and rings",
+    "kg": "masses of the machine in a simulation (rotor, housing) and of a ring",
+    "kg_m3": "densities",
+    "g_mm": "unbalance (ISO 21940)",
+    "m_s": "sliding and sound speeds",
+    "mm_s": "vibration velocity of a machine (ISO 20816)",
+    "um_s": "vibration velocity of a bearing (ISO 15242 bands)",
+    "m_s2": "accelerations",
+    "mm2_s": "kinematic viscosity",
+    "c": "temperatures",
+    "w": "power",
+    "percent": "percentages",
+    "si": "matrices in mixed SI units, with their rows' units beside them",
+}
+#: JSON keys allowed a unit outside :data:`JSON_SUFFIXES`: key -> the reason.
+JSON_EXCEPTIONS: dict[str, str] = {}
 
 #: JSON keys that carry no unit: names, labels, counts, ratios, flags, and containers whose
 #: members carry their own. key -> what it holds.
@@ -228,6 +273,17 @@ DIMENSIONLESS: dict[str, str] = {
     "significance": "-log10 of a p-value",
     "z": "line level over the local noise floor of the envelope spectrum",
     "p_value": "chance that noise alone shows what was found",
+    "support_significance": "significance of a family's series without its strongest line",
+    "harmonic_significance": "significance of a family's harmonics (with their sidebands up "
+    "to the gate order) alone",
+    "slip": "f'/f_kin - 1: relative deviation of the best fundamental from the kinematic frequency",
+    "tolerance_below": "largest relative deviation searched below the kinematic frequency",
+    "tolerance_above": "largest relative deviation searched above the kinematic frequency",
+    "below": "largest relative deviation below the kinematic frequency (a fraction)",
+    "above": "largest relative deviation above the kinematic frequency (a fraction)",
+    "lines": "the lines of a family's series that the test counted",
+    "n": "harmonic number of a line of a family's series",
+    "k": "sideband order of a line (0: the harmonic itself)",
     "methods": "the diagnosis methods run (raw, cpw, drs-sk, ies)",
     "method_shown": "the method whose spectrum is shown",
     "cage_modulation_of": "faults whose FTF lines were counted as cage modulation",
@@ -239,7 +295,7 @@ DIMENSIONLESS: dict[str, str] = {
     "confirmed": "true when the signal's shaft series confirms the speed (null: not checked)",
     "defects": "the simulated defects",
     "location": "outer, inner or ball",
-    "stats": "integrator statistics",
+    "stats": "integrator statistics (their keys carry units or are counts)",
     "steps": "accepted steps",
     "channels": "the channels of a record",
     "diagnosis": "the envelope diagnosis",
@@ -416,23 +472,22 @@ DIMENSIONLESS: dict[str, str] = {
     "machine": "the machine group of the ISO 20816 zones",
 }
 
-#: Keys whose members are named by data, not by the contract (e.g. ``sources``), so the
-#: members' keys are not checked.
-MAPS = frozenset(
-    {
-        "sources",
-        "geometry_sources",
-        "scores",
-        "stats",
-        "families",
-        "tolerances",
-        "confusion",
-        "recall",
-        "significance",
-        "indicators",
-        "after_alarm",
-    }
-)
+#: Maps: keys whose members are named by data, not by the contract (``scores`` is keyed by
+#: fault family, ``sources`` by the value described), with the number of data-named levels
+#: below the key (``confusion``: column -> label -> verdict -> count is 3). The names at those
+#: levels are not checked; the keys inside the members, below them, keep the contract.
+MAPS: dict[str, int] = {
+    "sources": 1,
+    "geometry_sources": 1,
+    "scores": 1,
+    "families": 1,
+    "tolerances": 1,
+    "confusion": 3,
+    "recall": 2,
+    "significance": 1,
+    "indicators": 1,
+    "after_alarm": 1,
+}
 
 
 def unit_of(key: str) -> Unit | None:
@@ -471,10 +526,16 @@ module: `python -m bearinglab.units > docs/json.md`.
   further down (names, counts, ratios, flags, labels). Suffixes are matched longest first:
   `_n_per_um` is a stiffness, `_n_m` a moment in newton metres and `_nm` nanometres.
 - **One unit per quantity across commands.** Frequencies are in Hz (`_hz`), speeds in rpm,
-  loads in N, lengths in mm (dimensions) or µm (clearances, displacements, film), stiffness in
-  N/µm, torques in N·mm, stresses in GPa, times in s, levels in dB re 20 µPa.
+  loads in N, lengths in mm (dimensions) or µm (clearances, displacements, film, form
+  errors), stiffness in N/µm (Hertz constants in N/µm^1.5), moments and torques in N·mm,
+  pressures and stresses in GPa, sound pressures in µPa and their levels in dB re 20 µPa,
+  times in s. The units table says which suffixes a JSON key may end in (column "JSON");
+  the others (`_m`, `_n_m`, `_n_per_m`, `_pa`, `_kn`, ...) are for command-line options
+  only, and a JSON key in one of them is listed under "Exceptions" with its reason.
 - **Members of a unit-suffixed container** carry that unit: `velocity_bands_um_s.low`.
-  Members of a map (`geometry_sources`, `scores`, `sources`, `stats`) are named by data.
+  Members of a map (`geometry_sources`, `scores`, `sources`, `families`, `confusion`, ...)
+  are named by data (a fault family, a channel, a label), but the keys inside a member keep
+  the contract: `families.outer_race.tolerance_below`.
 - A matrix in mixed SI units ends in `_si` and has a sibling `<key>_units` that gives the
   unit of each row (e.g. `stiffness_matrix_si`, `stiffness_matrix_units`).
 - Numbers are finite: a command never prints NaN or infinity (it fails with one line instead);
@@ -492,11 +553,15 @@ def contract_markdown() -> str:
         "",
         "## Units",
         "",
-        "| suffix | symbol | SI value of one unit | quantity |",
-        "|---|---|---|---|",
+        "| suffix | symbol | SI value of one unit | quantity | JSON |",
+        "|---|---|---|---|---|",
     ]
     for u in sorted(UNITS.values(), key=lambda u: (u.quantity, u.suffix)):
-        lines.append(f"| `_{u.suffix}` | {u.symbol} | {u.factor:g} | {u.quantity} |")
+        use = JSON_SUFFIXES.get(u.suffix, "no (options only)")
+        lines.append(f"| `_{u.suffix}` | {u.symbol} | {u.factor:g} | {u.quantity} | {use} |")
+    if JSON_EXCEPTIONS:
+        lines += ["", "## Exceptions", "", "| key | why its unit is not the rule's |", "|---|---|"]
+        lines += [f"| `{k}` | {JSON_EXCEPTIONS[k]} |" for k in sorted(JSON_EXCEPTIONS)]
     lines += ["", "## Dimensionless keys", "", "| key | what it holds |", "|---|---|"]
     lines += [f"| `{k}` | {DIMENSIONLESS[k]} |" for k in sorted(DIMENSIONLESS)]
     return "\n".join(lines) + "\n"

@@ -221,7 +221,7 @@ def test_ring_modes_axial_load_with_a_given_f1_only_sets_the_reported_stiffness(
     f1 = ("ring-modes", "6205", "--rigid-body-frequency-hz", "800")
     low, high = (run_json(capsys, *f1, "--axial-load-n", a) for a in ("300", "5000"))
     assert low["modes"] == high["modes"]
-    assert low["radial_stiffness_n_per_m"] != high["radial_stiffness_n_per_m"]
+    assert low["radial_stiffness_n_per_um"] != high["radial_stiffness_n_per_um"]
     assert _no_effect(high["warnings"]) == [
         "--axial-load-n: no effect on the frequencies with --rigid-body-frequency-hz "
         "(only on the K_x reported)"

@@ -191,7 +191,7 @@ def test_ring_modes_with_the_load_distribution_stiffness(capsys):
     solved = run_json(capsys, *args, "--stiffness-from", "load-distribution")
     assert solved["sources"]["radial_stiffness"].startswith("load distribution")
     # both are the radial stiffness of the same axially loaded bearing: close, not equal
-    ratio = solved["radial_stiffness_n_per_m"] / closed["radial_stiffness_n_per_m"]
+    ratio = solved["radial_stiffness_n_per_um"] / closed["radial_stiffness_n_per_um"]
     assert 0.7 < ratio < 1.3 and ratio != 1.0
 
 

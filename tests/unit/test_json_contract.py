@@ -1,6 +1,7 @@
 """One JSON contract (issue 12, docs/json.md): every key of every command's ``--json``
 carries its unit as a suffix of :data:`bearinglab.units.UNITS`, or is one of the
-dimensionless keys of :data:`bearinglab.units.DIMENSIONLESS`; docs/json.md lists both."""
+dimensionless keys of :data:`bearinglab.units.DIMENSIONLESS`, inside maps' members too
+(issue 22); docs/json.md lists both."""
 
 import json
 from pathlib import Path
@@ -9,7 +10,15 @@ import pytest
 from conftest import README_REPORT, README_STATIC, write_pronostia
 
 from bearinglab.cli import main
-from bearinglab.units import DIMENSIONLESS, MAPS, contract_markdown, unit_of
+from bearinglab.units import (
+    DIMENSIONLESS,
+    JSON_EXCEPTIONS,
+    JSON_SUFFIXES,
+    MAPS,
+    UNITS,
+    contract_markdown,
+    unit_of,
+)
 
 DOC = Path(__file__).resolve().parents[2] / "docs" / "json.md"
 
@@ -48,6 +57,24 @@ COMMANDS = {
         "10000",
         "-o",
         "tmp/sim.npz",
+    ],
+    "simulate-slip": [
+        "simulate",
+        "6205",
+        "--model",
+        "slip",
+        "--speed-rpm",
+        "1800",
+        "--radial-load-n",
+        "500",
+        "--defect",
+        "outer:width_mm=1",
+        "--duration-s",
+        "0.3",
+        "--sample-rate-hz",
+        "10000",
+        "-o",
+        "tmp/slip.npz",
     ],
     "noise": [
         "noise",
@@ -91,20 +118,44 @@ REAL = Path(__file__).resolve().parents[3] / "shared" / "data" / "real"
 
 
 def _offending(obj, path: str = "") -> list[str]:
-    """Keys that break the contract, with their path."""
+    """Keys that break the contract, with their path. The data-named levels of a map
+    (units.MAPS) are not checked, but the keys inside its members are."""
     bad = []
     if isinstance(obj, dict):
         for key, value in obj.items():
             where = f"{path}.{key}"
-            known = unit_of(key) is not None or key in DIMENSIONLESS
-            if not known:
+            if unit_of(key) is not None:
+                continue  # its members carry its unit (velocity_bands_um_s.low)
+            if key not in DIMENSIONLESS:
                 bad.append(where)
-            if key not in MAPS and unit_of(key) is None:
+            if key in MAPS:
+                bad += _members(value, MAPS[key], where)
+            else:
                 bad += _offending(value, where)
     elif isinstance(obj, list):
         for item in obj:
             bad += _offending(item, f"{path}[]")
     return bad
+
+
+def _members(obj, levels: int, path: str) -> list[str]:
+    """The offending keys inside a map's members, below its ``levels`` data-named levels."""
+    if levels == 0 or not isinstance(obj, dict):
+        return _offending(obj, path)
+    bad = []
+    for name, value in obj.items():
+        bad += _members(value, levels - 1, f"{path}.{name}")
+    return bad
+
+
+def test_the_walk_enters_maps():
+    """A key without a unit inside a map's member is found; the member's name is not."""
+    sample = {"families": {"outer_race": {"slip": 0.0, "width": 1.0}}, "scores": {"x y": 1}}
+    assert _offending(sample) == [".families.outer_race.width"]
+    assert _offending({"confusion": {"raw": {"ball": {"no fault detected": 0}}}}) == []
+    assert _offending({"confusion": {"raw": {"ball": {"c": {"width": 1}}}}}) == [
+        ".confusion.raw.ball.c.width"
+    ]
 
 
 @pytest.fixture(scope="module")
@@ -175,6 +226,44 @@ def test_every_key_carries_its_unit_or_is_dimensionless(outputs, name):
     if name not in outputs:
         pytest.skip("the shared recordings are not here")
     assert _offending(outputs[name]) == []
+
+
+def _off_rule(obj, path: str = "") -> list[str]:
+    """Keys whose unit is one the rules keep out of JSON (docs/json.md: N·m, N/m, m, Pa,
+    ...) and that are not a declared exception."""
+    bad = []
+    if isinstance(obj, dict):
+        for key, value in obj.items():
+            unit = unit_of(key)
+            if unit is not None and unit.suffix not in JSON_SUFFIXES:
+                if key not in JSON_EXCEPTIONS:
+                    bad.append(f"{path}.{key} [{unit.symbol}]")
+            elif unit is None:
+                bad += _off_rule(value, f"{path}.{key}")
+    elif isinstance(obj, list):
+        for item in obj:
+            bad += _off_rule(item, f"{path}[]")
+    return bad
+
+
+@pytest.mark.parametrize("name", [*COMMANDS, "analyze", "benchmark", "trend"])
+def test_every_unit_is_one_the_rules_allow_in_json(outputs, name):
+    if name not in outputs:
+        pytest.skip("the shared recordings are not here")
+    assert _off_rule(outputs[name]) == []
+
+
+def test_the_json_units_rule():
+    """The suffixes kept out of JSON are those of SI where the rules ask for an engineering
+    unit; every exception gives its reason; the check finds a key in N·m."""
+    assert set(JSON_SUFFIXES) <= set(UNITS)
+    for suffix in ("m", "n_m", "n_per_m", "pa", "kn", "nm", "rad_s", "kg_m"):
+        assert suffix not in JSON_SUFFIXES, suffix
+    assert all(reason.strip() for reason in JSON_EXCEPTIONS.values())
+    assert _off_rule({"balls": [{"gyroscopic_moment_n_m": 0.0}], "tilt_mrad": [0.0]}) == [
+        ".balls[].gyroscopic_moment_n_m [N·m]"
+    ]
+    assert _off_rule({"velocity_bands_um_s": {"low": 1.0}, "torque_n_mm": 1.0}) == []
 
 
 def _families_named(obj) -> set:

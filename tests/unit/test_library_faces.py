@@ -42,3 +42,38 @@ def test_speed_in_rpm_by_keyword():
     condition = bl.OperatingCondition.at_rpm(1797, radial_load=500.0)
     assert condition.speed_rpm == pytest.approx(1797)
     assert bl.rad_s_to_rpm(bl.rpm_to_rad_s(1797)) == pytest.approx(1797)
+
+
+def test_speed_errors_are_in_rpm():
+    """Issue 22: a speed given in rpm was reported back in rad/s (the command line then
+    printed `--speed-rpm = -5 ... expected a speed >= 0 [rad/s]`)."""
+    from bearinglab.analyses import in_request_terms
+    from bearinglab.cli._inputs import worded
+    from bearinglab.noise import noise_analysis
+    from bearinglab.operating import OperatingCondition
+
+    with pytest.raises(InputError) as info:
+        OperatingCondition.at_rpm(-5.0, radial_load=100.0)
+    assert (info.value.parameter, info.value.value) == ("speed_rpm", -5.0)
+    assert "rpm" in info.value.allowed and "rad/s" not in str(info.value)
+    bearing, _ = bl.bearing_from_designation("6205")
+    stopped = OperatingCondition(radial_load=1000.0)
+    checks = [
+        lambda: OperatingCondition(shaft_speed=-3 * math.pi),
+        lambda: bl.defect_frequencies(bearing, -math.pi),
+        lambda: bl.rating_life(bearing, stopped),
+        lambda: noise_analysis(bearing, stopped),
+    ]
+    for check in checks:
+        with pytest.raises(InputError) as info:
+            check()
+        err = info.value
+        assert err.parameter == "shaft_speed" and "rad/s" not in str(err), str(err)
+        assert str(err.value).endswith(" rpm") and err.allowed.endswith("rpm")
+    # what the command line makes of the first: the option and the range, both in rpm
+    with pytest.raises(InputError) as info:
+        OperatingCondition(shaft_speed=-3 * math.pi)
+    told = str(
+        worded(in_request_terms(info.value, {"speed_rpm": -90.0}), {"speed_rpm": "--speed-rpm"})
+    )
+    assert told == "--speed-rpm = -90 is not allowed: expected a finite speed >= 0 rpm"

@@ -315,7 +315,7 @@ def test_rated_viscosity_branches():
 
 
 def test_contamination_levels():
-    assert contamination_factor("high", 0.05)[0] == pytest.approx(0.7)
+    assert contamination_factor("high-cleanliness", 0.05)[0] == pytest.approx(0.7)
     assert contamination_factor("Normal cleanliness", 0.12)[0] == pytest.approx(0.7)
     assert contamination_factor("very-severe", 0.05)[0] == 0.0
     assert contamination_factor(1, 0.05) == (1.0, "given")
@@ -364,6 +364,30 @@ def test_life_falls_with_load_as_c_over_p_cubed(load, scale):
     assert life[0] == pytest.approx((c / load) ** 3, rel=1e-12)
 
 
+@pytest.mark.parametrize(
+    ("old", "new"),
+    [
+        ("extreme", "extreme-cleanliness"),
+        ("High", "high-cleanliness"),
+        ("normal", "normal-cleanliness"),
+    ],
+)
+def test_contamination_cleanliness_words_alone_are_refused_with_the_new_name(old, new):
+    """Issue 22: "extreme" was extreme cleanliness (e_C = 1), read as extreme dirt."""
+    with pytest.raises(InputError) as info:
+        contamination_factor(old, 0.039)
+    err = info.value
+    assert err.parameter == "contamination" and err.value == old
+    assert err.hint == f"'{old.lower()}' now reads '{new}'"
+    assert all(level in err.allowed for level in T.CONTAMINATION_LEVELS)
+    assert contamination_factor(new, 0.039)[1].startswith(f"ISO 281 Table 13 '{new}'")
+    # the contamination levels keep their short names: they cannot be misread
+    assert contamination_factor("severe", 0.039) == contamination_factor(
+        "severe-contamination", 0.039
+    )
+    assert contamination_factor("extreme-cleanliness", 0.039)[0] == 1.0
+
+
 # ------------------------------------------------------------------ rating life, ISO 281
 def test_rating_life_iso281_numbers():
     b, _ = bearing_from_designation("6205")
@@ -372,7 +396,7 @@ def test_rating_life_iso281_numbers():
         OperatingCondition(radial_load=2000.0, axial_load=300.0, shaft_speed=1500 * RPM),
         reliability_percent=99.0,
         viscosity=30e-6,
-        contamination="high",
+        contamination="high-cleanliness",
     )
     assert r.equivalent_load == 2000.0  # F_a/F_r = 0.15 < e
     assert r.l10 == pytest.approx((r.ratings.dynamic / 2000.0) ** 3)
@@ -565,7 +589,7 @@ def test_cli_life_json(capsys):
         "--viscosity-mm2-s",
         "30",
         "--contamination",
-        "high",
+        "high-cleanliness",
     )
     assert KEYS <= d.keys()
     assert d["dynamic_rating_n"] == pytest.approx(14027, rel=1e-4)
@@ -751,8 +775,15 @@ def test_cli_life_given_ratings(capsys):
         ),
         (
             ["--contamination", "mud"],
-            "--contamination = 'mud' is not allowed: expected a number in [0, 1] or one of extreme",
+            "--contamination = 'mud' is not allowed: expected a number in [0, 1] or one of "
+            "extreme-cleanliness, high-cleanliness, normal-cleanliness, slight-contamination",
         ),
+        (
+            ["--contamination", "extreme"],
+            "--contamination = 'extreme' is not allowed: expected a number in [0, 1] or one of "
+            "extreme-cleanliness, high-cleanliness",
+        ),
+        (["--contamination", "extreme"], "('extreme' now reads 'extreme-cleanliness')"),
         (["--contamination", "1.5"], "--contamination = '1.5' is not allowed"),
     ],
 )

@@ -244,7 +244,7 @@ def test_result_summary_plot_and_table():
         "spl_leq_balls_db",
         "spl_leq_inner_ring_x_db",
         "spl_leq_balls_y_db",
-        "effective_pressure_pa",
+        "effective_pressure_upa",
     ):
         assert math.isfinite(out[key]), key
     assert out["spl_time_max_db"] >= out["spl_time_mean_db"]
@@ -491,7 +491,7 @@ def test_noise_analysis_result_table_and_figure():
     assert d["peaks"] and d["peaks_resolution_hz"] == pytest.approx(r.spectrum.resolution)
     table = r.to_pandas()
     assert list(table.columns) == ["quantity", "key", "value", "unit"]
-    assert set(table["unit"]) == {"dB", "Pa", "µm/s"}
+    assert set(table["unit"]) == {"dB", "µPa", "µm/s"}
     fig, axes = r.plot()
     assert len(axes) == 4
     plt.close(fig)

@@ -289,6 +289,6 @@ def test_hybrid_control_follows_jones_criterion():
     assert {
         "orbital_speed_rpm",
         "centrifugal_force_n",
-        "gyroscopic_moment_n_m",
+        "gyroscopic_moment_n_mm",
         "outer_raceway_control",
     } <= set(d["balls"][0])

@@ -261,7 +261,7 @@ def test_to_dict_to_pandas_plot():
     assert m4["epsilon"][1] is None and m4["measured_hz"] == [9200.0, 10000.0]
     assert set(d) >= {
         "ring_mass_kg",
-        "radial_stiffness_n_per_m",
+        "radial_stiffness_n_per_um",
         "ball_mass_ratio",
         "modes",
         "contact_stiffness_ratio",

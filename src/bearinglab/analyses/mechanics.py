@@ -563,7 +563,7 @@ def _ring_columns(r: RingModesResult) -> dict:
 
 _RING_OUT = {
     "rigid_body_frequency_hz": "f",
-    "radial_stiffness_n_per_m": "f",
+    "radial_stiffness_n_per_um": "f",
     "ring_mass_kg": "f",
     "ball_mass_ratio": "f",
     "contact_stiffness_ratio": "f",

@@ -169,8 +169,9 @@ LIFE = Analysis(
         "contamination": Input(
             "text",
             None,
-            "Contamination factor e_C: a number in [0, 1] or a level of ISO 281 Table 13; "
-            "default the normal cleanliness with a viscosity.",
+            "Contamination factor e_C: a number in [0, 1] or a level of ISO 281 Table 13 "
+            "(extreme-cleanliness, high-cleanliness, normal-cleanliness, slight, typical, "
+            "severe, very-severe); default normal-cleanliness with a viscosity.",
         ),
         "method": Input(
             "text",

@@ -306,6 +306,6 @@ def contact(values, json_output: JsonOpt = False, plot: PlotOpt = None):
     console.print(escape(geometry_line(bearing, result.contact_angle)))
     console.print(
         f"ball between both races: total approach {d['total_approach_um']:.4g} um, "
-        f"K_n = {d['ball_load_deflection_constant_n_per_m1_5']:.4g} N/m^1.5"
+        f"K_n = {d['ball_load_deflection_constant_n_per_um1_5']:.4g} N/µm^1.5"
     )
     _print_warnings(d["warnings"])

@@ -57,8 +57,8 @@ def _print(d: dict, bearing, axial_load_n: float) -> None:
     mass = "-" if d["ring_mass_kg"] is None else f"{d['ring_mass_kg']:.4g} kg"
     k_x = (
         "-"
-        if d["radial_stiffness_n_per_m"] is None
-        else f"{d['radial_stiffness_n_per_m'] / 1e6:.4g} N/µm"
+        if d["radial_stiffness_n_per_um"] is None
+        else f"{d['radial_stiffness_n_per_um']:.4g} N/µm"
     )
     console.print(
         f"ring mass {mass}, K_x {k_x}, f_1 {d['rigid_body_frequency_hz'] / 1e3:.4g} "

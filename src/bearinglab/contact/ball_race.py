@@ -107,7 +107,7 @@ class BallContacts:
                 "approach_um": _num(c.approach * 1e6),
                 "ellipticity": _num(c.ellipticity),
                 "stiffness_n_per_um": _num(c.stiffness * 1e-6),
-                "load_deflection_constant_n_per_m1_5": float(constant),
+                "load_deflection_constant_n_per_um1_5": float(constant) * 1e-9,
             }
 
         b = self.bearing
@@ -122,7 +122,7 @@ class BallContacts:
             "inner": one(self.inner, self.inner_constant),
             "outer": one(self.outer, self.outer_constant),
             "total_approach_um": _num(self.total_approach * 1e6),
-            "ball_load_deflection_constant_n_per_m1_5": float(self.ball_constant),
+            "ball_load_deflection_constant_n_per_um1_5": float(self.ball_constant) * 1e-9,
             "warnings": self.warnings,
         }
 

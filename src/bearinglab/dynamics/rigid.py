@@ -79,16 +79,16 @@ class RigidParameters:
             positive_number(name, value, allowed, zero=not positive)
 
     def to_dict(self) -> dict:
-        """JSON-ready values (SI, with units in the keys)."""
+        """JSON-ready values (engineering units of docs/json.md, in the keys)."""
         return {
             "shaft_mass_kg": self.shaft_mass,
             "pedestal_mass_kg": self.pedestal_mass,
-            "shaft_stiffness_n_per_m": self.shaft_stiffness,
+            "shaft_stiffness_n_per_um": self.shaft_stiffness * 1e-6,
             "shaft_damping_n_s_per_m": self.shaft_damping,
-            "pedestal_stiffness_n_per_m": self.pedestal_stiffness,
+            "pedestal_stiffness_n_per_um": self.pedestal_stiffness * 1e-6,
             "pedestal_damping_n_s_per_m": self.pedestal_damping,
             "bearing_damping_n_s_per_m": self.bearing_damping,
-            "unbalance_kg_m": self.unbalance,
+            "unbalance_g_mm": self.unbalance * 1e6,
         }
 
 

@@ -19,6 +19,7 @@ import numpy as np
 
 from ..errors import ConvergenceError, InputError, positive_number
 from ..kinematics import DefectFrequencies, defect_frequencies
+from ..operating import speed_error
 from ..signal import Signal
 from . import _integrate, _kernels, _rosenbrock, _slip_kernels, rigid, slip
 from .defects import Defect, pack_defects
@@ -225,7 +226,7 @@ def simulate(
         raise InputError("duration", duration, "at most 5e7 samples in one record")
     noise = positive_number("noise", noise, "an RMS >= 0 [m/s^2]", zero=True)
     if condition.shaft_speed <= 0:
-        raise InputError("shaft_speed", condition.shaft_speed, "a speed > 0 [rad/s]")
+        raise speed_error(condition.shaft_speed, "a speed > 0 rpm")
     defects = tuple(defects)
     table = pack_defects(defects, bearing, imperfections)
     kin = defect_frequencies(bearing, condition.shaft_speed)

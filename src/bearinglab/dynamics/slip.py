@@ -66,6 +66,7 @@ from ..errors import InputError, positive_number
 from ..lubrication import LUBRICANTS, Lubricant
 from ..lubrication.ehl import entrainment_speed, hamrock_dowson_film
 from ..materials import effective_modulus
+from ..operating import speed_error
 from . import _slip_kernels as sk
 
 Traction = Literal["seed004", "bair_winer"]
@@ -209,21 +210,31 @@ class SlipParameters:
             )
 
     def to_dict(self) -> dict:
-        """JSON-ready values (SI, units in the keys where they have one)."""
+        """JSON-ready values (engineering units of docs/json.md, in the keys where they
+        have one)."""
+        from ..units import UNITS
+
         units = {
-            "oil_shear_modulus": "_pa",
-            "regularisation_speed": "_m_s",
-            "cage_stiffness": "_n_per_m",
-            "cage_damping": "_n_s_per_m",
-            "pocket_clearance": "_m",
-            "housing_stiffness": "_n_per_m",
-            "housing_damping": "_n_s_per_m",
-            "inner_mass": "_kg",
-            "outer_mass": "_kg",
-            "unbalance": "_kg_m",
-            "damping_onset": "_m",
+            "oil_shear_modulus": "gpa",
+            "regularisation_speed": "m_s",
+            "cage_stiffness": "n_per_um",
+            "cage_damping": "n_s_per_m",
+            "pocket_clearance": "um",
+            "housing_stiffness": "n_per_um",
+            "housing_damping": "n_s_per_m",
+            "inner_mass": "kg",
+            "outer_mass": "kg",
+            "unbalance": "g_mm",
+            "damping_onset": "um",
         }
-        return {k + units.get(k, ""): v for k, v in asdict(self).items()}
+        out = {}
+        for k, v in asdict(self).items():
+            if k in units:
+                u = units[k]
+                out[f"{k}_{u}"] = None if v is None else UNITS[u].from_si(v)
+            else:
+                out[k] = v
+        return out
 
 
 def _ring_mass(bearing, which: str, given):
@@ -264,11 +275,8 @@ def pack(
             "0 deg (the slip model is planar: deep-groove bearings, radial load)",
         )
     if condition.shaft_speed <= 0:
-        raise InputError(
-            "shaft_speed",
-            condition.shaft_speed,
-            "a speed > 0 [rad/s]",
-            "the slip model needs the inner ring turning",
+        raise speed_error(
+            condition.shaft_speed, "a speed > 0 rpm", "the slip model needs the inner ring turning"
         )
     z = bearing.ball_count
     dw = bearing.ball_diameter

@@ -19,7 +19,7 @@ assumptions and checks: docs/capabilities/life.md.
 >>> from bearinglab.units import rpm_to_rad_s
 >>> b, _ = bearing_from_designation("6205")
 >>> r = rating_life(b, OperatingCondition(radial_load=2000.0, shaft_speed=rpm_to_rad_s(1500)),
-...                 viscosity=30e-6, contamination="high")
+...                 viscosity=30e-6, contamination="high-cleanliness")
 >>> round(r.ratings.dynamic), round(r.l10), round(r.a_iso, 2)
 (14027, 345, 5.03)
 """

@@ -22,7 +22,7 @@ import numpy as np
 
 from ..errors import InputError, positive_number
 from ..geometry import BallBearing
-from ..operating import OperatingCondition
+from ..operating import OperatingCondition, speed_error
 from ..ratings import tables as T
 from ..ratings.basic import load_ratings
 from ..ratings.equivalent import equivalent_dynamic_load, equivalent_static_load
@@ -32,7 +32,7 @@ from .result import LifeResult
 METHODS = ("iso281", "iso16281")
 _MM = 1e-3
 _CONTAMINATION_ALLOWED = "a number in [0, 1] or one of " + ", ".join(
-    [*T.CONTAMINATION_ALIASES, *T.CONTAMINATION_LEVELS]
+    [*T.CONTAMINATION_LEVELS, *T.CONTAMINATION_ALIASES]
 )
 
 
@@ -107,9 +107,11 @@ def rated_viscosity(shaft_speed: float, pitch_diameter: float) -> float:
 def contamination_factor(contamination, pitch_diameter: float) -> tuple[float, str]:
     """Contamination factor e_C: a number in [0, 1], or a level of ISO 281:2007 Table 13
     (extreme-cleanliness, high-cleanliness, normal-cleanliness, slight-contamination,
-    typical-contamination, severe-contamination, very-severe-contamination, or the first
-    word alone), which gives the middle of the table's range for the bearing size
-    (D_pw below or from 100 mm).
+    typical-contamination, severe-contamination, very-severe-contamination; the
+    contamination levels also by their first word: slight, typical, severe, very-severe),
+    which gives the middle of the table's range for the bearing size (D_pw below or from
+    100 mm). The cleanliness levels need their whole name: "extreme", "high" and "normal"
+    alone are refused (extreme cleanliness is e_C = 1, not extreme contamination).
 
     Parameters
     ----------
@@ -123,11 +125,22 @@ def contamination_factor(contamination, pitch_diameter: float) -> tuple[float, s
     tuple
         (e_C [-], description of where it came from).
 
-    >>> contamination_factor("normal", 0.039)[0], contamination_factor(0.3, 0.039)[0]
+    >>> contamination_factor("normal-cleanliness", 0.039)[0], contamination_factor(0.3, 0.039)[0]
     (0.55, 0.3)
+
+    Raises
+    ------
+    InputError
+        Named ``contamination``, for anything else; for "extreme", "high" or "normal" the
+        hint names the level's new name ("'extreme' now reads 'extreme-cleanliness'").
     """
     if isinstance(contamination, str):
         key = contamination.strip().lower().replace("_", "-").replace(" ", "-")
+        if key in T.CONTAMINATION_RETIRED:
+            new = T.CONTAMINATION_RETIRED[key]
+            raise InputError(
+                "contamination", contamination, _CONTAMINATION_ALLOWED, f"'{key}' now reads '{new}'"
+            )
         key = T.CONTAMINATION_ALIASES.get(key, key)
         if key not in T.CONTAMINATION_LEVELS:
             raise InputError("contamination", contamination, _CONTAMINATION_ALLOWED)
@@ -223,10 +236,9 @@ def _check_condition(condition: OperatingCondition, method: str) -> None:
     if not isinstance(condition, OperatingCondition):
         raise InputError("condition", condition, "an OperatingCondition")
     if not condition.shaft_speed > 0:
-        raise InputError(
-            "shaft_speed",
+        raise speed_error(
             condition.shaft_speed,
-            "a speed > 0 [rad/s]",
+            "a speed > 0 rpm",
             "life in hours and the rated viscosity need it",
         )
     if method == "iso281" and (

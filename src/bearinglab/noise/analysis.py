@@ -40,7 +40,7 @@ LEVEL_ROWS = (
     ("SPL(t), maximum", "spl_time_max_db"),
     ("L_eq, inner ring alone", "spl_leq_inner_ring_db"),
     ("L_eq, balls alone", "spl_leq_balls_db"),
-    ("effective pressure p_e (RMS)", "effective_pressure_pa"),
+    ("effective pressure p_e (RMS)", "effective_pressure_upa"),
 )
 
 

@@ -35,6 +35,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
+from ..operating import speed_error
 from ..signal.bands import MIN_PERIODS, VelocityBands, iso15242_bands, velocity_bands
 from ..units import rad_s_to_rpm
 from .radiation import velocity_from_positions
@@ -168,7 +169,7 @@ def bearing_velocity_bands(
         raise InputError("bands_from", source, f"one of {BAND_SOURCES}")
     speed_rpm = rad_s_to_rpm(condition.shaft_speed)
     if not speed_rpm > 0:
-        raise InputError("shaft_speed", condition.shaft_speed, "a speed > 0 [rad/s]")
+        raise speed_error(condition.shaft_speed, "a speed > 0 rpm")
     edges = iso15242_bands(speed_rpm)
     top = max(hi for _, hi in edges.values())
     need_rate = 2.0 * top

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ..errors import InputError
+from ..operating import speed_error
 from ..units import rad_s_to_rpm
 from .model import FieldPoint, default_field_point
 from .radiation import sound_pressure
@@ -129,7 +130,7 @@ def bearing_noise(
     if ball_model not in BALL_MODELS:
         raise InputError("ball_model", ball_model, f"one of {tuple(BALL_MODELS)}")
     if condition.shaft_speed <= 0:
-        raise InputError("shaft_speed", condition.shaft_speed, "a speed > 0 [rad/s]")
+        raise speed_error(condition.shaft_speed, "a speed > 0 rpm")
     length = record_length(
         bearing, condition, revolutions, duration, orbit_options.get("contact_angle")
     )

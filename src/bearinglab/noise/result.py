@@ -207,8 +207,8 @@ class SoundPressure:
                 out[f"spl_leq_{name}_db"] = _finite_or_none(self.spl(name))
         out.update(
             {
-                "effective_pressure_pa": self.effective_pressure("total"),
-                "peak_pressure_pa": float(np.max(np.abs(self.parts["total"]))),
+                "effective_pressure_upa": self.effective_pressure("total") * 1e6,
+                "peak_pressure_upa": float(np.max(np.abs(self.parts["total"]))) * 1e6,
                 "distance_mm": self.point.distance * 1e3,
                 "angle_deg": math.degrees(self.point.angle),
                 "sample_rate_hz": self.sample_rate,

@@ -37,7 +37,7 @@ import numpy as np
 
 from ..errors import InputError, positive_number
 from ..geometry import BallBearing
-from ..operating import OperatingCondition
+from ..operating import OperatingCondition, speed_error
 
 
 @dataclass(frozen=True)
@@ -294,9 +294,7 @@ def inner_ring_orbit(
     if surface_contact not in ("solved", "axial_shift"):
         raise InputError("surface_contact", surface_contact, "'solved' or 'axial_shift'")
     if condition.shaft_speed <= 0:
-        raise InputError(
-            "shaft_speed", condition.shaft_speed, "a speed > 0 [rad/s] for a time sweep"
-        )
+        raise speed_error(condition.shaft_speed, "a speed > 0 rpm for a time sweep")
     imperfections.check(bearing)
     extra = None
     if ball_diameter_errors is not None:

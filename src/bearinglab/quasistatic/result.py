@@ -218,7 +218,7 @@ class LoadDistribution:
             if self.orbital_speed is not None:
                 row["orbital_speed_rpm"] = float(self.orbital_speed[j]) * 30 / math.pi
                 row["centrifugal_force_n"] = float(self.ball_centrifugal_force[j])
-                row["gyroscopic_moment_n_m"] = float(self.gyroscopic_moment[j])
+                row["gyroscopic_moment_n_mm"] = float(self.gyroscopic_moment[j]) * 1e3
                 row["outer_raceway_control"] = bool(self.outer_controlled[j])
             row["contact_points"] = int(self.contact_points[j])
             row["truncated"] = bool(np.any(self.truncated[j]))
@@ -245,7 +245,7 @@ class LoadDistribution:
             "stiffness_matrix_units": STIFFNESS_UNITS,
             "radial_stiffness_n_per_um": self.radial_stiffness * 1e-6,
             "axial_stiffness_n_per_um": self.axial_stiffness * 1e-6,
-            "reaction_moment_n_m": self.reaction[3:].tolist(),
+            "reaction_moment_n_mm": (self.reaction[3:] * 1e3).tolist(),
             "equilibrium_residual_n": float(np.linalg.norm(residual[solved])),
             "speed_rpm": self.condition.shaft_speed * 30 / math.pi,
             "cage_speed_rpm": self.cage_speed * 30 / math.pi,

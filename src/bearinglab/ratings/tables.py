@@ -336,15 +336,20 @@ CONTAMINATION_LEVELS = {
     "severe-contamination": ((0.0, 0.1), (0.0, 0.1)),
     "very-severe-contamination": ((0.0, 0.0), (0.0, 0.0)),
 }
-#: Short names accepted for the levels (command line).
+#: Short names accepted for the levels (command line): the first word alone where it can
+#: only mean that level.
 CONTAMINATION_ALIASES = {
-    "extreme": "extreme-cleanliness",
-    "high": "high-cleanliness",
-    "normal": "normal-cleanliness",
     "slight": "slight-contamination",
     "typical": "typical-contamination",
     "severe": "severe-contamination",
     "very-severe": "very-severe-contamination",
+}
+#: Short names refused since issue 22: "extreme" read as extreme contamination when it is
+#: extreme cleanliness (e_C = 1). Old word -> the level's name, given in the error's hint.
+CONTAMINATION_RETIRED = {
+    "extreme": "extreme-cleanliness",
+    "high": "high-cleanliness",
+    "normal": "normal-cleanliness",
 }
 CONTAMINATION_SIZE_MM = 100.0
 

@@ -9,7 +9,7 @@ from collections.abc import Callable
 from ..errors import InputError
 from ..geometry import BallBearing
 from ..kinematics import defect_frequencies
-from ..operating import OperatingCondition
+from ..operating import OperatingCondition, speed_error
 from ..plausibility import (
     LOCATION_FAMILY,
     check_record_length,
@@ -114,7 +114,7 @@ def build_report(
     if not isinstance(bearing, BallBearing):
         raise InputError("bearing", bearing, "a BallBearing")
     if not condition.shaft_speed > 0:
-        raise InputError("shaft_speed", condition.shaft_speed, "a speed > 0 [rad/s]")
+        raise speed_error(condition.shaft_speed, "a speed > 0 rpm")
     for name, value, zero in (
         ("duration", duration, False),
         ("slip_duration", slip_duration, True),

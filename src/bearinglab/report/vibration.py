@@ -76,11 +76,12 @@ def bands(ctx: Context):
 def noise(ctx: Context):
     """Sound pressure level of the running bearing (seed 003 part 4 chain)."""
     from ..noise import LEVEL_ROWS
+    from ..units import unit_of
 
     result = _noise(ctx)
     d = result.to_dict()
     rows = [
-        [what, d.get(key), "dB re 20 uPa" if key.endswith("_db") else "Pa"]
+        [what, d.get(key), "dB re 20 uPa" if key.endswith("_db") else unit_of(key).symbol]
         for what, key in LEVEL_ROWS
     ]
     body = [

@@ -119,7 +119,9 @@ class RingModes:
             "axial_load_n": self.axial_load,
             "contact_angle_deg": None if angle is None else math.degrees(angle),
             "ring_mass_kg": self.ring_mass,
-            "radial_stiffness_n_per_m": self.radial_stiffness,
+            "radial_stiffness_n_per_um": (
+                None if self.radial_stiffness is None else self.radial_stiffness * 1e-6
+            ),
             "rigid_body_frequency_hz": self.rigid_body_frequency,
             "ball_mass_ratio": self.ball_mass_ratio,
             "contact_stiffness_ratio": self.contact_stiffness_ratio,

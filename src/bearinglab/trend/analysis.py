@@ -17,6 +17,7 @@ from collections.abc import Callable
 import numpy as np
 
 from ..errors import InputError
+from ..operating import speed_error
 from .alarm import (
     FALSE_ALARM,
     MAX_PERSISTENCE_RECORDS,
@@ -205,7 +206,7 @@ def _frequencies(bearing, shaft_speed):
     except (TypeError, ValueError):
         speed = math.nan
     if not (math.isfinite(speed) and speed > 0):
-        raise InputError("shaft_speed", shaft_speed, "a speed > 0 rad/s")
+        raise speed_error(shaft_speed, "a speed > 0 rpm")
     return defect_frequencies(bearing, speed)
 
 
