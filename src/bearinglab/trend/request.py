@@ -1,0 +1,153 @@
+"""The ``trend`` request: its inputs (entries of :data:`bearinglab.inputs.INPUTS` and the
+trend's own) and :func:`trend_from`, which builds the bearing from them and calls
+:func:`~bearinglab.trend.analysis.trend_records` once; its errors name the input."""
+
+from __future__ import annotations
+
+from dataclasses import replace
+
+from ..errors import InputError
+from ..inputs import BEARING, INPUTS, Input, bearing_from, bearing_warnings, speed_from
+from .alarm import FALSE_ALARM, PERSISTENCE
+from .analysis import BASELINE, SETTLE
+
+#: The trend's inputs besides the bearing, in the order the command line lists them.
+TREND_INPUTS: dict[str, Input] = {
+    "folder": Input(
+        "path",
+        ...,
+        "Folder of recordings: PRONOSTIA snapshots acc_NNNNN.csv as published, or records "
+        "analyze reads (.npz, .csv, .wav, .mat) with an index.csv (file, time_s) or a time_s "
+        "in their metadata.",
+    ),
+    "channel": Input(
+        "texts",
+        None,
+        "Channel to trend (repeatable; PRONOSTIA: horizontal, vertical); default all. The "
+        "diagnosis uses the first.",
+    ),
+    "sample_rate_hz": Input(
+        "number",
+        None,
+        "Sample rate [Hz] where the files do not store it (PRONOSTIA: 25600).",
+        low=0.0,
+        low_open=True,
+        what="a sample rate",
+    ),
+    "settle_s": Input(
+        "number",
+        None,
+        f"Running-in left out of the baseline: the records of the first SETTLE seconds [s] "
+        f"(default {SETTLE:g} s).",
+    ),
+    "settle_records": Input("integer", None, "Running-in as a number of records instead."),
+    "baseline_s": Input(
+        "number",
+        None,
+        f"Baseline after the running-in [s] (default {BASELINE:g} s); at least 30 records "
+        "(extended when the records are sparse).",
+    ),
+    "baseline_records": Input("integer", None, "Baseline as a number of records instead (>= 10)."),
+    "false_alarm": Input(
+        "number",
+        FALSE_ALARM,
+        "Probability of a false alarm at a given record, all indicators and channels "
+        "together (the rule's tail model).",
+    ),
+    "persistence_s": Input(
+        "number",
+        None,
+        f"How long records above a limit must last to raise the alarm [s] (default "
+        f"{PERSISTENCE:g} s): the records spanning it at the series' cadence, at least 2.",
+    ),
+    "persistence_records": Input(
+        "integer", None, "Persistence as a number of consecutive records instead."
+    ),
+    "unit": Input(
+        "text",
+        None,
+        "The channels' unit, g or m/s2: adds the r.m.s. velocity over 10-1000 Hz (PRONOSTIA: g).",
+    ),
+    "machine": Input(
+        "text",
+        None,
+        "Machine group for the ISO 20816 zones: group1-rigid, group1-flexible, group2-rigid, "
+        "group2-flexible (ISO 20816-3), class1..class4 (ISO 10816-1); needs unit.",
+    ),
+    "speed_rpm": INPUTS["speed_rpm"].with_(help="Shaft speed [rpm], for the diagnosis."),
+    **{name: INPUTS[name] for name in BEARING},
+}
+TREND_INPUTS["designation"] = TREND_INPUTS["designation"].with_(
+    help="Bearing designation, or give the geometry: with speed_rpm, each fault family's "
+    "significance by the diagnosis."
+)
+
+#: Library parameter -> the input to blame.
+_NAMES = {
+    "path": "folder",
+    "index.csv": "folder",
+    "time_s": "folder",
+    "time": "folder",
+    "channels": "channel",
+    "sample_rate": "sample_rate_hz",
+    "settle": "settle_s",
+    "baseline": "baseline_s",
+    "persistence": "persistence_s",
+    "shaft_speed": "speed_rpm",
+    "bearing": "designation",
+    "workers": "jobs",
+}
+#: Inputs the library's error names by the file or channel at fault, not the value given.
+_AT_FAULT = ("folder", "channel")
+
+
+def trend_from(values: dict, *, jobs: int = 1, scheduler=None, progress=None):
+    """The TrendResult of a request (``values``: name -> value in its unit), on ``jobs``
+    processes or the dask ``scheduler``; its warnings include the bearing's.
+    ``progress(done, total)`` is called as records are read."""
+    from .analysis import trend_records
+
+    for name, spec in TREND_INPUTS.items():
+        spec.check(name, values.get(name))
+    for seconds in ("settle", "baseline", "persistence"):
+        if values.get(f"{seconds}_s") is not None and values.get(f"{seconds}_records") is not None:
+            raise InputError(
+                f"{seconds}_records",
+                values[f"{seconds}_records"],
+                f"one of `{seconds}_s` and `{seconds}_records`",
+            )
+    bearing = decoded = None
+    if any(values.get(name) is not None for name in BEARING):
+        bearing, decoded = bearing_from(values)
+    shaft_speed = None if values.get("speed_rpm") is None else speed_from(values)
+    try:
+        result = trend_records(
+            values["folder"],
+            channels=values.get("channel") or None,
+            sample_rate=values.get("sample_rate_hz"),
+            settle=SETTLE if values.get("settle_s") is None else values["settle_s"],
+            settle_records=values.get("settle_records"),
+            baseline=BASELINE if values.get("baseline_s") is None else values["baseline_s"],
+            baseline_records=values.get("baseline_records"),
+            false_alarm=values.get("false_alarm", FALSE_ALARM),
+            persistence=PERSISTENCE
+            if values.get("persistence_s") is None
+            else values["persistence_s"],
+            persistence_records=values.get("persistence_records"),
+            unit=values.get("unit"),
+            machine=values.get("machine"),
+            bearing=bearing,
+            shaft_speed=shaft_speed,
+            jobs=jobs,
+            scheduler=scheduler,
+            progress=progress,
+        )
+    except InputError as exc:
+        name = _NAMES.get(exc.parameter, exc.parameter)
+        if name not in TREND_INPUTS:
+            raise
+        value = exc.value if name in _AT_FAULT else values.get(name, exc.value)
+        raise InputError(name, value, exc.allowed, exc.hint) from None
+    if bearing is None:
+        return result
+    return replace(result, warnings=(*result.warnings, *bearing_warnings(bearing, decoded)))
