@@ -5,6 +5,7 @@ The geometry options and the bearing they describe are in :mod:`._geometry`."""
 import functools
 import inspect
 import math
+import os
 import re
 from contextlib import contextmanager
 from pathlib import Path
@@ -277,3 +278,5 @@ def check_path(name: str, path: Path | None, suffixes: tuple[str, ...] = ()) -> 
         raise error(name, str(path), f"a file name ending in {', '.join(suffixes)}")
     if not path.parent.is_dir():
         raise error(name, str(path), "a path in an existing directory")
+    if not os.access(path.parent, os.W_OK) or (path.exists() and not os.access(path, os.W_OK)):
+        raise error(name, str(path), "a writable file", "permission denied")

@@ -125,7 +125,7 @@ def _print_designation(d) -> None:
     if equivalents:
         console.print("Equivalent: " + escape(", ".join(equivalents)))
     for note in d.notes:
-        console.print(f"[yellow]note:[/yellow] {escape(note)}")
+        console.print(f"[yellow]note:[/yellow] {escape(in_flags(note))}")
 
 
 def _print_bearing(b: BallBearing) -> None:

@@ -98,7 +98,8 @@ def parse(text: str, system: str | None = None) -> Designation:
         same = iso.bearing_type == gost.bearing_type and gost.iso_equivalent == iso.iso_equivalent
         if not same:
             notes += (
-                (f"also reads as GOST 3189-89: {gost.description}; force it with system='gost'"),
+                f"also reads as GOST 3189-89: {gost.description}; the ISO reading is used "
+                "(`system` gost forces the GOST one)",
             )
         return replace(iso, alternatives=(gost,), notes=notes)
     if iso is not None:
