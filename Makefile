@@ -7,10 +7,12 @@ CODE := src tests benchmarks examples
 
 .PHONY: setup demo test test-fast lint format clean
 
+# pip shows its progress: the first install takes a few minutes (numba, scipy, dask, ...)
 $(STAMP): pyproject.toml
+	@echo "installing bearinglab and its dependencies into $(VENV) (a few minutes the first time)..."
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet -e ".[test]"
+	$(BIN)/python -m pip install --progress-bar on -e ".[test]"
 	touch $(STAMP)
 
 setup: $(STAMP)

@@ -111,7 +111,7 @@ def test_a_record_that_cannot_show_its_label_is_refused():
     a cage revolution was written and labelled "inner" (an audit); now it is a failed
     record with the reason, before any simulating."""
     slow = DatasetSpec(records=1, faults=("inner",), sample_rate_hz=300.0, resonances=())
-    with pytest.raises(InputError, match=r"sample_rate = 300.*BPFI.*Nyquist"):
+    with pytest.raises(InputError, match=r"sample_rate_hz = 300.*BPFI.*Nyquist"):
         make_record(slow, 0, 0)
     short = DatasetSpec(records=1, faults=("inner",), duration_s=0.01, resonances=())
     with pytest.raises(InputError, match="duration_s = 0.01 .* one cage revolution"):

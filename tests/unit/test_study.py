@@ -261,7 +261,7 @@ def test_limits_unreachable_scheduler_and_a_different_study(tmp_path):
     with pytest.raises(InputError, match="analysis"):
         run_study("stifness", GRID, output=tmp_path / "x")
     start = time.monotonic()
-    with pytest.raises(InputError, match="no answer within 1 s"):
+    with pytest.raises(InputError, match="connection refused: nothing listens there"):
         run_study(
             "stiffness",
             GRID,

@@ -119,7 +119,7 @@ def test_dataset_command_reads_back(tmp_path, capsys):
         ),
         (
             ["study", "stiffness", "--set", "designation=6205", "--scheduler", "tcp://127.0.0.1:9"],
-            "no answer within",
+            "connection refused: nothing listens there",
         ),
         (["study", "stifness", "--set", "designation=6205"], "one of stiffness"),
         (["study", "stiffness"], "--set"),

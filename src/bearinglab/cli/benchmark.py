@@ -6,12 +6,54 @@ from typing import Annotated
 
 import typer
 
-from ..errors import InputError
+from ..errors import BearinglabError, InputError
 from ._app import command_app, console
-from ._inputs import JsonOpt, OptionError, check_path
+from ._inputs import JsonOpt, OptionError
 from ._output import _emit_json, _table, escape, progress_bar
+from ._preflight import output_file
 
 app = command_app()
+
+
+def _check_files(folder: Path) -> None:
+    """Every recording labels.csv names must be there, before any record is diagnosed: a
+    benchmark that silently scores fewer records than its labels list misleads. One line
+    naming labels.csv, its line and the missing file."""
+    from ..diagnosis.benchmark import read_labels
+
+    try:
+        rows = read_labels(folder)
+    except InputError as exc:
+        if exc.parameter != "folder":
+            raise
+        raise OptionError("FOLDER", str(folder), exc.allowed, exc.hint) from None
+    for line, row in enumerate(rows, start=2):
+        path = folder / row["file"]
+        if not path.is_file():
+            raise OptionError(
+                f"{folder / 'labels.csv'} line {line}: file",
+                row["file"],
+                "a recording in the folder",
+                f"there is no {path}",
+            )
+
+
+def _check_read(out: dict) -> None:
+    """A benchmark none of whose records could be diagnosed is an error (exit 2) with the
+    first record's reason, not a table of errors."""
+    errors = [r for r in out["records"] if r["error"]]
+    if errors and len(errors) == len(out["records"]):
+        first = errors[0]
+        n = len(errors)
+        where = out["folder"]
+        raise BearinglabError(
+            (
+                f"none of the {n} records of {where} could be diagnosed; the first, "
+                if n > 1
+                else f"the one record of {where} could not be diagnosed: "
+            )
+            + f"{first['file']}: {' '.join(str(first['error']).split())}"
+        )
 
 
 @app.command("benchmark")
@@ -42,7 +84,8 @@ def benchmark_command(
     json_output: JsonOpt = False,
 ):
     """Run the diagnosis over a folder of labelled recordings."""
-    check_path("--html", html, (".html", ".htm"))
+    output_file("--html", html, (".html", ".htm"))
+    _check_files(folder)
     from ..diagnosis import run_benchmark
 
     with progress_bar("diagnosing records", enabled=not json_output) as update:
@@ -65,11 +108,12 @@ def benchmark_command(
             raise OptionError(
                 flag, exc.value if flag != "FOLDER" else str(folder), exc.allowed, exc.hint
             ) from None
+    out = result.to_dict()
+    _check_read(out)
     if html is not None:
         from ..report.benchmark import write_benchmark_page
 
         write_benchmark_page(result, html)
-    out = result.to_dict()
     if json_output:
         _emit_json(out)
         return

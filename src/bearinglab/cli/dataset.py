@@ -19,6 +19,7 @@ from ._inputs import (
     typed,
 )
 from ._output import _emit_json, _table
+from ._preflight import scheduler as preflight_scheduler
 from .study import run_rows, runner_warnings
 
 app = command_app()
@@ -40,6 +41,7 @@ _FLAGS = {
     "resonances": "--resonance",
     "resonance frequency": "--resonance",
     "damping ratio": "--resonance",
+    "waviness_amplitude_um": "--waviness-um",
 }
 
 
@@ -88,6 +90,22 @@ def _warnings(spec, given: set) -> list[str]:
         [("--waviness-orders", not spec.has_waviness and "waviness_orders" in given)],
         "at --waviness-um 0 (no waviness)",
     )
+
+
+def _failures(result) -> list[str]:
+    """A warning counting the records that failed (left out, listed in failed.csv)."""
+    if not result.failed:
+        return []
+    import csv
+
+    listed = result.path / "_bearinglab" / "failed.csv"
+    with open(listed, newline="", encoding="utf-8") as f:
+        first = next(csv.DictReader(f), None)
+    reason = f"; the first, {first['recording_id']}: {first['error']}" if first else ""
+    return [
+        f"{result.failed} of {result.records} records failed and were left out (listed in "
+        f"{listed}){reason}"
+    ]
 
 
 def _flag(name: str) -> str:
@@ -189,6 +207,7 @@ def dataset(
     }
     if paths is not None:
         ranges["resonances"] = paths
+    preflight_scheduler(scheduler)
     try:
         result = make_dataset(
             output,
@@ -198,12 +217,13 @@ def dataset(
             scheduler=scheduler,
             workers=workers,
             max_records=None if yes else CONFIRM_RECORDS,
-            progress=True,
+            progress=not json_output,
             **ranges,
         )
     except InputError as exc:
         raise _remap(exc) from None
-    warnings = _warnings(result.spec, typed(ctx)) + runner_warnings(scheduler, workers)
+    warnings = _failures(result) + _warnings(result.spec, typed(ctx))
+    warnings += runner_warnings(scheduler, workers)
     d = {**result.to_dict(), "warnings": warnings}
     if json_output:
         _emit_json(d)

@@ -7,7 +7,7 @@ from typing import Annotated
 import typer
 from rich.markup import escape
 
-from ..errors import InputError
+from ..errors import BearinglabError, InputError
 from ._app import command_app, console
 from ._inputs import (
     JsonOpt,
@@ -15,12 +15,13 @@ from ._inputs import (
     SchedulerOpt,
     WorkersOpt,
     _print_warnings,
-    check_path,
     no_effect,
     save_plot_figure,
     typed,
 )
 from ._output import _emit_json, _table
+from ._preflight import output_file
+from ._preflight import scheduler as preflight_scheduler
 
 app = command_app()
 
@@ -195,18 +196,23 @@ def study(
     Example: bearinglab study stiffness --set designation=6205 --set radial_load_n=0:2000:21
     --set speed_rpm=0,6000 -o stiffness-6205
     """
-    from ..study import describe_options, read_study, run_study
+    from ..study import read_study, run_study
 
     grid = _grid(set_ or [])
     if cases is None and not grid:
         raise OptionError("--set", None, "at least one --set NAME=VALUES, or --cases FILE")
     if cases is not None and grid:
         raise OptionError("--cases", str(cases), "either --cases or --set, not both")
-    check_path("--plot", plot, (".png", ".svg", ".pdf"))
+    # the whole request is checked before any case runs: the figure's file and columns,
+    # the output folder (run_study), the scheduler
+    output_file("--plot", plot, (".png", ".svg", ".pdf"), figure=True)
     if plot_of is not None and plot is None:
         raise OptionError("--plot-of", plot_of, "use with --plot FILE")
+    names = _plot_names(analysis, grid, cases, repeats, plot, plot_of)
+    preflight_scheduler(scheduler)
+    existed = output.exists()
+    fresh = not existed or (output.is_dir() and not any(output.iterdir()))
     try:
-        describe_options(analysis)
         result = run_study(
             analysis,
             grid or None,
@@ -218,39 +224,89 @@ def study(
             scheduler=scheduler,
             workers=workers,
             max_cases=None if yes else CONFIRM_CASES,
-            progress=True,
+            progress=not json_output,
         )
     except InputError as exc:
         raise _remap(exc) from None
-    warnings = _warnings(result, typed(ctx), analysis, cases, repeats)
+    table = read_study(result.path)
+    warnings = _failures(result, table, output if fresh else None, existed)
+    warnings += _warnings(result, typed(ctx), analysis, cases, repeats)
     warnings += runner_warnings(scheduler, workers)
     if plot is not None:
-        _plot(result, plot, plot_of)
+        try:
+            fig, _ = result.plot(*names)
+        except InputError as exc:
+            raise OptionError("--plot-of", plot_of or ",".join(names), exc.allowed) from None
+        save_plot_figure(fig, plot)
     if json_output:
         _emit_json({**result.to_dict(), "warnings": warnings})
         return
-    _print(result, read_study(result.path))
+    _print(result, table)
     _print_warnings(warnings)
 
 
-def _plot(result, path: Path, plot_of: str | None) -> None:
-    table = result.to_pandas()
+def _failures(result, table, made: Path | None, existed: bool) -> list[str]:
+    """A warning counting the failed cases; when every case failed, a one-line error with
+    the first reason, and what this run wrote in ``made`` (a new or empty folder) removed:
+    it holds no result and would refuse the corrected study."""
+    failed = table[table["error"].notna()]
+    if failed.empty:
+        return []
+    first = failed.iloc[0]
+    reason = f"case {first['case']}: {first['error']}"
+    if len(failed) < len(table):
+        return [
+            f"{len(failed)} of {len(table)} cases failed (their reasons are in the table's "
+            f"column 'error'); the first, {reason}"
+        ]
+    if made is not None:
+        import shutil
+
+        if existed:
+            for item in made.iterdir():
+                shutil.rmtree(item) if item.is_dir() else item.unlink()
+        else:
+            shutil.rmtree(made)
+    many = len(table) > 1
+    raise BearinglabError(
+        (f"all {len(table)} cases of the study failed" if many else "the study's one case failed")
+        + (", so nothing was kept" if made is not None else "")
+        + ("; the first, " if many else ": ")
+        + reason
+    )
+
+
+def _plot_names(analysis, grid, cases, repeats, plot, plot_of) -> list[str] | None:
+    """OUTPUT, X, Y of --plot, checked against the columns the study will have (before it
+    runs): --plot-of's names, or the first output over the first two inputs that vary."""
+    if plot is None:
+        return None
+    from ..study.runner import study_columns
+
+    try:
+        columns = study_columns(analysis, grid or None, cases=cases, repeats=repeats)
+    except InputError as exc:
+        raise _remap(exc) from None
     if plot_of is None:
-        varying = [c for c in result.inputs if table[c].nunique() > 1]
+        varying = columns["varying"]
         if len(varying) < 2:
             raise OptionError(
-                "--plot", str(path), "a study with two inputs that vary (or --plot-of OUTPUT,X,Y)"
+                "--plot", str(plot), "a study with two inputs that vary (or --plot-of OUTPUT,X,Y)"
             )
-        names = [result.outputs[0], varying[0], varying[1]]
-    else:
-        names = [n.strip() for n in plot_of.split(",")]
-        if len(names) != 3:
-            raise OptionError("--plot-of", plot_of, "OUTPUT,X,Y (three column names)")
-    try:
-        fig, _ = result.plot(*names)
-    except InputError as exc:
-        raise OptionError("--plot-of", plot_of or ",".join(names), exc.allowed) from None
-    save_plot_figure(fig, path)
+        return [columns["outputs"][0], varying[0], varying[1]]
+    names = [n.strip() for n in plot_of.split(",")]
+    if len(names) != 3:
+        raise OptionError("--plot-of", plot_of, "OUTPUT,X,Y (three column names)")
+    known = ["case", *columns["inputs"], *columns["outputs"]]
+    for name in names:
+        if name not in known:
+            raise OptionError(
+                "--plot-of",
+                plot_of,
+                "OUTPUT,X,Y among the study's columns: " + ", ".join(known),
+                f"{name!r} is not one of them",
+            )
+    return names
 
 
 def _natural_width(table) -> int:

@@ -18,13 +18,14 @@ from ._inputs import (
     OptionError,
     SchedulerOpt,
     _print_warnings,
-    check_path,
     plot_option,
     save_plot_figure,
     speed_rad_s,
     typed,
 )
 from ._output import _emit_json, _table, escape, progress_bar
+from ._preflight import output_file
+from ._preflight import scheduler as preflight_scheduler
 
 app = command_app()
 PlotOpt = plot_option("the indicators over time, with the baseline, the limits and the alarm")
@@ -171,8 +172,8 @@ def trend_command(
     geometry,
 ):
     """Trend health indicators over a series of recordings and raise an alarm."""
-    check_path("--plot", plot, (".png", ".svg", ".pdf"))
-    check_path("--html", html, (".html", ".htm"))
+    output_file("--plot", plot, (".png", ".svg", ".pdf"), figure=True)
+    output_file("--html", html, (".html", ".htm"))
     given = typed(ctx)
     for seconds, records in (
         ("settle_s", "settle_records"),
@@ -188,6 +189,7 @@ def trend_command(
     if designation is not None or any(v is not None for v in geometry.values()):
         bearing, _ = resolve_bearing(designation, geometry)
     shaft_speed = None if speed_rpm is None else speed_rad_s(speed_rpm)
+    preflight_scheduler(scheduler, environment=False)
     from ..trend.analysis import trend_records
 
     with progress_bar("reading records", enabled=not json_output) as update:

@@ -25,6 +25,7 @@ from ..files import write_atomically
 from ..study import execute
 from ..study.cases import (
     canonical,
+    check_writable,
     held_description,
     partition_size_for,
     partitions,
@@ -41,6 +42,43 @@ MAX_RECORDS = 10**7
 LARGEST_PARTITION = 20
 
 
+#: A model's parameter -> (the data set's input that sets it, the factor from SI to that
+#: input's unit, the unit's symbol in the model's words).
+_RECORD_INPUTS = {
+    "width": ("defect_width_mm", 1e3, "[m]", "[mm]"),
+    "depth": ("defect_depth_mm", 1e3, "[m]", "[mm]"),
+    "amplitude": ("waviness_amplitude_um", 1e6, "[m]", "[um]"),
+    "order": ("waviness_orders", 1.0, "", ""),
+    "sample_rate": ("sample_rate_hz", 1.0, "", ""),
+    "duration": ("duration_s", 1.0, "", ""),
+    "shaft_speed": ("speed_rpm", 30.0 / math.pi, "[rad/s]", "[rpm]"),
+    "radial_load": ("radial_load_n", 1.0, "", ""),
+    "designation": ("bearings", None, "", ""),
+}
+
+
+def _record_error(exc: InputError, r: dict, bearing=None) -> InputError:
+    """A model's error about a record in the data set's terms: the input that drew the
+    value (``defect_width_mm``, not ``width``) and the value in that input's unit (mm, as
+    typed, not m)."""
+    if exc.parameter in ("errors", "band"):  # ball-size errors: the band drawn
+        limit = (
+            f"at most {0.1 * bearing.ball_diameter * 1e6:.4g} um (each ball within +-5 % of "
+            f"the ball diameter, {bearing.ball_diameter * 1e3:g} mm)"
+            if bearing is not None
+            else exc.allowed.replace("[m]", "[um]")
+        )
+        return InputError("ball_size_error_um", r["ball_size_error_um"], f"a band {limit}")
+    name, factor, si, unit = _RECORD_INPUTS.get(exc.parameter, (None, None, "", ""))
+    if name is None:
+        return exc
+    value = exc.value
+    if factor is not None and isinstance(value, (int, float)) and not isinstance(value, bool):
+        value = float(f"{value * factor:.10g}")
+    allowed = exc.allowed.replace(si, unit) if si else exc.allowed
+    return InputError(name, value, allowed, exc.hint)
+
+
 def make_record(
     spec: DatasetSpec, seed: int, index: int, check: bool = True
 ) -> tuple[np.ndarray, dict, dict]:
@@ -49,17 +87,27 @@ def make_record(
     With ``check``, a record that cannot show what its label says is refused (an
     InputError, which the set records as a failed record): a fault whose defect frequency
     is above the Nyquist frequency, or less than one cage revolution (not every ball has
-    passed the load zone)."""
+    passed the load zone). Its errors name the data set's inputs, in their units."""
+    from ..study._inputs import bearing_of
+
+    r = draw_record(spec, seed, index)
+    bearing = None
+    try:
+        bearing = bearing_of(r["bearing"])
+        return _make_record(r, bearing, check)
+    except InputError as exc:
+        raise _record_error(exc, r, bearing) from None
+
+
+def _make_record(r: dict, bearing, check: bool) -> tuple[np.ndarray, dict, dict]:
+    """:func:`make_record` of the drawn inputs ``r`` (errors in the model's terms)."""
     from ..dynamics import Defect, simulate
     from ..imperfections import BallSizeErrors, Imperfections, Waviness
     from ..kinematics import defect_frequencies
     from ..operating import OperatingCondition
     from ..plausibility import LOCATION_FAMILY, sampling_warnings
-    from ..study._inputs import bearing_of
     from .path import TransferPath
 
-    r = draw_record(spec, seed, index)
-    bearing = bearing_of(r["bearing"])
     z = bearing.ball_count
     defects = [
         Defect(
@@ -134,7 +182,13 @@ def _partition(task):
         except Exception as exc:  # noqa: BLE001 - a failed record never stops the set
             from ..study.analyses import error_text
 
-            rows.append({"recording_id": recording, "error": error_text(exc)})
+            rows.append(
+                {
+                    "recording_id": recording,
+                    "error": error_text(exc),
+                    "error_input": exc.parameter if isinstance(exc, InputError) else None,
+                }
+            )
             continue
         row = layout.metadata_row(name, recording, r, bearing, kin, x.size, r["sample_rate_hz"])
         row.update(
@@ -144,6 +198,7 @@ def _partition(task):
                 "signal_row": len(ids),
                 "sha256": layout.digest(x),
                 "error": None,
+                "error_input": None,
             }
         )
         ids.append(row["signal_id"])
@@ -255,7 +310,7 @@ def make_dataset(
     workers: int | None = None,
     max_records: int | None = None,
     progress: bool = False,
-    connect_timeout: float = execute.CONNECT_TIMEOUT,
+    connect_timeout: float | None = None,
     **ranges,
 ) -> DatasetResult:
     """Make ``records`` labelled synthetic vibration records in the bearing-datasets layout.
@@ -305,6 +360,7 @@ def make_dataset(
         "name": name,
     }
     _check_folder(folder, identity)
+    check_writable("output", folder)
     spans = partitions(records, partition_size)
     width = max(6, len(str(records - 1)))
     pwidth = max(5, len(str(len(spans) - 1)))
@@ -340,30 +396,31 @@ def make_dataset(
         frame = pd.DataFrame(rows)
         write_atomically(metas[i], lambda tmp: frame.to_parquet(tmp, index=False))
 
-    seconds, memory, cpu, info = 0.0, {}, {}, ("-", 0, None)
-    if tasks:
-        # connect first: an unreachable scheduler leaves no folder behind
-        with execute.open_runner(scheduler, workers, connect_timeout) as runner:
-            (folder / "signals").mkdir(parents=True, exist_ok=True)
-            own.mkdir(exist_ok=True)
-            write_atomically(
-                own / MARKER, lambda tmp: Path(tmp).write_text(marker, encoding="utf-8")
-            )
-            info = (runner.scheduler, runner.workers, runner.dashboard)
-            seconds, cpu, memory = execute.measured_run(
-                runner,
-                ("bearinglab.dynamics",),
-                (_warm, (spec, seed)),
-                _partition,
-                tasks,
-                units,
-                write,
-                progress=progress,
-                label="records",
-                total=records,
-                done=records - sum(units),
-            )
-    written, failed = _finish(folder, name, metas, seed, records)
+    existed = folder.exists()
+    fresh = not existed or not any(folder.iterdir())
+    try:
+        seconds, memory, cpu, info = _run(
+            folder,
+            own,
+            marker,
+            spec,
+            seed,
+            tasks,
+            units,
+            write,
+            records,
+            scheduler,
+            workers,
+            connect_timeout,
+            progress,
+        )
+        written, failed = _finish(folder, name, metas, seed, records, spec)
+    except InputError:
+        # a set no record of which can be made (the same on every rerun): nothing is kept
+        # of what this run wrote; an interrupted run keeps its partitions (a rerun resumes)
+        if fresh and folder.exists():
+            _remove(folder, keep_folder=existed)
+        raise
     return DatasetResult(
         folder,
         name,
@@ -383,6 +440,62 @@ def make_dataset(
     )
 
 
+def _run(
+    folder,
+    own,
+    marker,
+    spec,
+    seed,
+    tasks,
+    units,
+    write,
+    records,
+    scheduler,
+    workers,
+    connect_timeout,
+    progress,
+):
+    """Make the partitions ``tasks`` (none: nothing to do); (wall time, peak memory and
+    CPU time per worker, (scheduler, workers, dashboard))."""
+    if not tasks:
+        return 0.0, {}, {}, ("-", 0, None)
+    # connect first: an unreachable scheduler leaves no folder behind
+    with execute.open_runner(scheduler, workers, connect_timeout) as runner:
+        (folder / "signals").mkdir(parents=True, exist_ok=True)
+        own.mkdir(exist_ok=True)
+        write_atomically(own / MARKER, lambda tmp: Path(tmp).write_text(marker, encoding="utf-8"))
+        info = (runner.scheduler, runner.workers, runner.dashboard)
+        seconds, cpu, memory = execute.measured_run(
+            runner,
+            ("bearinglab.dynamics",),
+            (_warm, (spec, seed)),
+            _partition,
+            tasks,
+            units,
+            write,
+            progress=progress,
+            label="records",
+            total=records,
+            done=records - sum(units),
+        )
+    return seconds, memory, cpu, info
+
+
+def _remove(folder: Path, keep_folder: bool) -> None:
+    """Remove what a run wrote in ``folder`` (and the folder itself unless ``keep_folder``:
+    it was there, empty, before)."""
+    import shutil
+
+    if not keep_folder:
+        shutil.rmtree(folder, ignore_errors=True)
+        return
+    for item in folder.iterdir():
+        if item.is_dir():
+            shutil.rmtree(item, ignore_errors=True)
+        else:
+            item.unlink(missing_ok=True)
+
+
 def _warm(args) -> None:
     """A short first record on each worker: loads the compiled model."""
     spec, seed = args
@@ -396,23 +509,29 @@ def _warm(args) -> None:
     )
 
 
-def _finish(folder: Path, name: str, metas: list[Path], seed: int, records: int):
+def _finish(folder: Path, name: str, metas: list[Path], seed: int, records: int, spec=None):
     """metadata.parquet and manifest.json from the partitions' metadata."""
     import pandas as pd
     import pyarrow as pa
     import pyarrow.parquet as pq
 
     frame = pd.concat([pd.read_parquet(m) for m in metas], ignore_index=True)
+    if "error_input" not in frame.columns:  # partitions written before it was kept
+        frame["error_input"] = None
     bad = frame[frame["error"].notna()]
-    good = frame[frame["error"].isna()].drop(columns=["error"])
+    good = frame[frame["error"].isna()].drop(columns=["error", "error_input"])
     if len(bad):
         bad[["recording_id", "error"]].to_csv(folder / OWN / "failed.csv", index=False)
     if good.empty:
+        first = bad.iloc[0]
+        name = first["error_input"] if isinstance(first["error_input"], str) else "records"
+        value = records if name == "records" else getattr(spec, name, None)
         raise InputError(
-            "records",
-            records,
+            name,
+            value,
             "settings with which at least one record can be made",
-            f"every record failed, e.g. {bad['error'].iloc[0]}",
+            (f"all {len(bad)} records failed" if len(bad) > 1 else "the one record failed")
+            + f"; the first, {first['recording_id']}: {first['error']}",
         )
     digests = dict(zip(good["signal_id"], good.pop("sha256"), strict=True))
     good = layout.order_columns(good.reset_index(drop=True))

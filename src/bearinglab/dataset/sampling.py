@@ -108,6 +108,20 @@ def _bearing_options(b) -> dict:
     raise InputError("bearings", b, "designations or dicts of geometry options")
 
 
+def _check_bearing(given, options: dict) -> None:
+    """Refuse a bearing that cannot be made (a designation not read, a geometry out of
+    range) before any record is: every record drawing it would fail the same way."""
+    from ..errors import BearinglabError
+    from ..study._inputs import bearing_of
+
+    try:
+        bearing_of(options)
+    except BearinglabError as exc:
+        allowed = exc.allowed if isinstance(exc, InputError) else "bearings bearinglab can make"
+        hint = exc.hint if isinstance(exc, InputError) else " ".join(str(exc).split())
+        raise InputError("bearings", given, allowed, hint) from None
+
+
 @dataclass(frozen=True)
 class DatasetSpec:
     """The ranges a data set draws from (SI-free: the units are in the names).
@@ -143,6 +157,8 @@ class DatasetSpec:
         if not bearings:
             raise InputError("bearings", self.bearings, "at least one bearing")
         p = {"bearings": [_bearing_options(b) for b in bearings]}
+        for b, options in zip(bearings, p["bearings"], strict=True):
+            _check_bearing(b, options)
         faults = parse_range(
             "faults",
             list(self.faults) if isinstance(self.faults, tuple) else self.faults,

@@ -388,3 +388,31 @@ def held_description(marker: Path) -> dict | None:
 def canonical(obj) -> str:
     """Stable JSON text of a study's identity (sorted keys)."""
     return json.dumps(obj, sort_keys=True, default=str)
+
+
+def check_writable(parameter: str, path, what: str = "a folder") -> Path:
+    """Refuse a folder where no file can be written, before any work starts: a probe file
+    is created (and removed) in ``path``, or, when ``path`` does not exist yet, in the
+    nearest folder above it that does (where ``path`` would be made). The InputError
+    names ``parameter``, ``path`` and the folder that refused. Returns that folder."""
+    import os
+    import tempfile
+
+    path = Path(path)
+    where = path.absolute()
+    while not where.exists() and where != where.parent:
+        where = where.parent
+    if not where.is_dir():
+        raise InputError(parameter, str(path), what, f"{where} is a file, not a folder")
+    try:
+        fd, probe = tempfile.mkstemp(dir=where, prefix=".bearinglab-probe-")
+        os.close(fd)
+        os.unlink(probe)
+    except OSError as exc:
+        raise InputError(
+            parameter,
+            str(path),
+            f"{what} where files can be written",
+            f"{where}: {exc.strerror or type(exc).__name__}",
+        ) from None
+    return where

@@ -67,6 +67,119 @@ def _check_address(address: str) -> str:
     return address
 
 
+#: Largest first message a dask scheduler sends (its handshake: a few hundred bytes).
+_HANDSHAKE_BYTES = 1 << 20
+
+
+def _unreachable(address: str, why: str) -> InputError:
+    return InputError("scheduler", address, "the address of a running dask scheduler", why)
+
+
+def _why(exc: BaseException, timeout: float) -> str:
+    """Why connecting failed, in a few words."""
+    if isinstance(exc, TimeoutError) or "Timed out" in str(exc):
+        return f"no answer within {timeout:g} s"
+    if isinstance(exc, ConnectionRefusedError):
+        return "connection refused: nothing listens there"
+    text = " ".join(str(exc).split())[:120]
+    return f"{type(exc).__name__}: {text}" if text else type(exc).__name__
+
+
+def _receive(sock, n: int, deadline: float) -> bytes:
+    """``n`` bytes from ``sock`` before ``deadline`` (time.monotonic()); fewer when the
+    peer closes the connection; TimeoutError when the time runs out."""
+    data = b""
+    while len(data) < n:
+        left = deadline - time.monotonic()
+        if left <= 0:
+            raise TimeoutError
+        sock.settimeout(left)
+        chunk = sock.recv(min(n - len(data), 65536))
+        if not chunk:
+            break
+        data += chunk
+    return data
+
+
+def _handshake() -> bytes:
+    """The first message dask's client sends (``Comm.handshake_info``), framed as on TCP."""
+    import pickle
+    import struct
+    import sys
+
+    from distributed.protocol.core import dumps
+    from distributed.protocol.utils import pack_frames
+
+    info = {
+        "compression": None,
+        "python": tuple(sys.version_info)[:3],
+        "pickle-protocol": pickle.HIGHEST_PROTOCOL,
+    }
+    body = pack_frames(dumps(info))
+    return struct.pack("<Q", len(body)) + body
+
+
+def _probe_tcp(address: str, timeout: float) -> None:
+    """Connect to a tcp:// address, send dask's handshake and read the scheduler's, all
+    within ``timeout`` seconds. A port where nothing listens, a server that never answers
+    and one that answers in another protocol (HTTP, ...) are refused here; dask's own
+    client would wait for ever on the second, and read the third's first bytes as a
+    message length (and ask for exbibytes of memory)."""
+    import socket
+    import struct
+
+    host, _, port = address.partition("://")[2].rpartition(":")
+    host = host.strip("[]")
+    message = _handshake()  # imports distributed's protocol first: not on the clock
+    deadline = time.monotonic() + timeout
+    try:
+        sock = socket.create_connection((host, int(port)), timeout=timeout)
+    except socket.gaierror:
+        raise _unreachable(address, f"unknown host {host!r}") from None
+    except OSError as exc:
+        raise _unreachable(address, _why(exc, timeout)) from None
+    with sock:
+        try:
+            sock.sendall(message)
+            head = _receive(sock, 8, deadline)
+            (size,) = struct.unpack("<Q", head) if len(head) == 8 else (0,)
+            body = _receive(sock, size, deadline) if 8 <= size <= _HANDSHAKE_BYTES else b""
+        except TimeoutError:
+            raise _unreachable(
+                address,
+                f"it accepted the connection but sent no dask handshake within {timeout:g} s",
+            ) from None
+        except OSError as exc:
+            raise _unreachable(address, _why(exc, timeout)) from None
+    if not head:
+        raise _unreachable(address, "it closed the connection without a dask handshake")
+    try:
+        from distributed.protocol.core import loads
+        from distributed.protocol.utils import unpack_frames
+
+        if len(body) != size:
+            raise ValueError(size)
+        handshake = loads(unpack_frames(body, partial=True)[0], deserialize=False)
+        if not isinstance(handshake, dict):
+            raise ValueError(handshake)
+    except Exception:  # noqa: BLE001 - anything that is not dask's handshake
+        shown = "".join(c if c.isprintable() else "." for c in head.decode("latin-1"))
+        raise _unreachable(
+            address, f"it answers in another protocol (its first bytes: {shown!r})"
+        ) from None
+
+
+def check_scheduler(address: str, timeout: float | None = None) -> str:
+    """``address`` if a dask scheduler answers there within ``timeout`` seconds, else an
+    InputError saying what answered (a malformed address, nothing, something else);
+    tcp:// addresses are probed with a plain socket first (:func:`_probe_tcp`)."""
+    address = _check_address(address)
+    timeout = CONNECT_TIMEOUT if timeout is None else timeout
+    if address.startswith("tcp://"):
+        _probe_tcp(address, timeout)
+    return address
+
+
 def scheduler_of(scheduler: str | None) -> str:
     """The scheduler :func:`open_runner` uses: ``scheduler``, else $DASK_SCHEDULER_ADDRESS,
     else "local" (only a LocalCluster has a number of workers to choose)."""
@@ -78,7 +191,7 @@ def scheduler_of(scheduler: str | None) -> str:
 def open_runner(
     scheduler: str | None = None,
     workers: int | None = None,
-    connect_timeout: float = CONNECT_TIMEOUT,
+    connect_timeout: float | None = None,
 ) -> Runner:
     """Connect to (or start) the cluster that runs a study's partitions.
 
@@ -89,9 +202,11 @@ def open_runner(
         "serial": this process; "tcp://HOST:PORT": a running scheduler.
     workers : int, optional
         Worker processes of the LocalCluster (default: the machine's cores).
-    connect_timeout : float
-        Seconds to wait for a scheduler [s].
+    connect_timeout : float, optional
+        Seconds to wait for a scheduler [s] (default :data:`CONNECT_TIMEOUT`).
     """
+    if connect_timeout is None:
+        connect_timeout = CONNECT_TIMEOUT
     from ..machine import most_processes
 
     most = most_processes()
@@ -121,21 +236,11 @@ def open_runner(
         return Runner(
             client, cluster, f"LocalCluster ({n} worker processes)", n, client.dashboard_link
         )
-    address = _check_address(str(scheduler))
+    address = check_scheduler(str(scheduler), connect_timeout)
     try:
         client = Client(address, timeout=f"{connect_timeout}s")
-    except (OSError, TimeoutError) as exc:
-        why = (
-            "no answer"
-            if isinstance(exc, TimeoutError) or "Timed out" in str(exc)
-            else " ".join(str(exc).split())[:120]
-        )
-        raise InputError(
-            "scheduler",
-            address,
-            "the address of a running dask scheduler",
-            f"{why} within {connect_timeout:g} s",
-        ) from None
+    except Exception as exc:  # noqa: BLE001 - whatever answered, it is no scheduler we can use
+        raise _unreachable(address, _why(exc, connect_timeout)) from None
     n = len(client.nthreads())
     return Runner(client, None, address, n, client.dashboard_link)
 
@@ -301,6 +406,7 @@ def _progress(label: str):
         TimeRemainingColumn,
     )
 
+    console = Console(stderr=True)
     return Progress(
         TextColumn("[progress.description]{task.description}"),
         BarColumn(),
@@ -308,6 +414,8 @@ def _progress(label: str):
         TimeElapsedColumn(),
         TextColumn("left"),
         TimeRemainingColumn(),
-        console=Console(stderr=True),
+        console=console,
         transient=False,
+        # off a terminal (a pipe, a log file, a test) nothing of the bar is printed
+        disable=not console.is_terminal,
     )

@@ -27,6 +27,7 @@ from .cases import (
     Grid,
     Uniform,
     canonical,
+    check_writable,
     held_description,
     parse_values,
     partition_size_for,
@@ -227,7 +228,7 @@ def run_study(
     workers: int | None = None,
     max_cases: int | None = None,
     progress: bool = False,
-    connect_timeout: float = execute.CONNECT_TIMEOUT,
+    connect_timeout: float | None = None,
 ) -> StudyResult:
     """Evaluate ``analysis`` over a grid of inputs or a table of cases, on dask.
 
@@ -277,6 +278,7 @@ def run_study(
     }
     folder = Path(output)
     _check_folder(folder, identity)
+    check_writable("output", folder)
     spans = partitions(count, partition_size)
     width = max(5, len(str(len(spans) - 1)))
     names = [f"part-{i:0{width}d}.parquet" for i in range(len(spans))]
@@ -369,6 +371,19 @@ def _failed(folder: Path, names: list[str]) -> int:
         column = pq.read_table(folder / n, columns=["error"]).column("error")
         total += len(column) - int(pc.sum(pc.is_null(column)).as_py() or 0)
     return total
+
+
+def study_columns(analysis: str, grid: dict | None = None, *, cases=None, repeats: int = 1) -> dict:
+    """The columns a study's table will have, known before it runs (the grid or the
+    cases file checked as :func:`run_study` checks them): ``inputs`` (the inputs given),
+    ``outputs``, and ``varying`` (the inputs that take more than one value)."""
+    a = get_analysis(analysis)
+    source = _source(a, grid, cases, 0, repeats)
+    if isinstance(source, Grid):
+        varying = [k for k, v in source.values.items() if isinstance(v, Uniform) or len(set(v)) > 1]
+    else:
+        varying = [c for c in source.columns if len({repr(r.get(c)) for r in source.records}) > 1]
+    return {"inputs": list(source.columns), "outputs": list(a.outputs), "varying": varying}
 
 
 def describe_options(analysis: str) -> list[dict]:
