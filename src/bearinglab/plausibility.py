@@ -8,6 +8,13 @@ models stop describing the bearing, an :class:`~bearinglab.errors.InputError`):
   most heavily loaded ball passes the 4200 MPa at which ISO 76 puts a permanent
   deformation of 1e-4 D_w; a warning. Below 1/8 (P0 > 8 C0, a Hertz pressure twice that
   of C0, p ~ P^(1/3)) the elastic contact models no longer describe the bearing; an error.
+- **contact pressure of the form errors** (ISO 76:2006): waviness, ball-size errors and
+  random surfaces press some balls harder than the external load does, and the load
+  check above sees only the external load. :func:`contact_warnings` reads the largest
+  Hertz pressure of the solved contacts (the load distribution, or every instant of an
+  orbit) and, when the external load alone passes the static rating check, warns past
+  the 4200 MPa behind C0 and raises past 8.4 GPa, the pressure of 8 C0, naming the
+  form-error inputs (``static``, its orbit, ``noise`` and the report).
 - **speed**: the speed factor n d_m against 1e6 mm/min, above which standard ball bearings
   pass the limiting speeds their makers list (a rule of thumb from makers' speed factors,
   not a standard: no ISO standard sets limiting speeds, which are makers' ratings; ISO
@@ -24,7 +31,8 @@ models stop describing the bearing, an :class:`~bearinglab.errors.InputError`):
   sidebands (a warning).
 
 Each check returns the warnings as sentences and raises for the errors; the commands
-(``static``, ``simulate``, ``noise``, ``report``) show the same sentences.
+(``static``, ``simulate``, ``noise``, ``report``) show the same sentences. Inputs are named
+in backquotes by their public names (`waviness`); the command line words them as flags.
 """
 
 from __future__ import annotations
@@ -38,6 +46,12 @@ from .units import rad_s_to_rpm
 MIN_STATIC_SAFETY = 1.0
 #: s0 below which the elastic contact models no longer apply [-].
 MIN_ELASTIC_SAFETY = 1.0 / 8.0
+#: Maximum Hertz pressure behind the static rating C0 of ball bearings (ISO 76:2006):
+#: a permanent deformation of 1e-4 D_w [Pa].
+STATIC_RATING_PRESSURE = 4.2e9
+#: The pressure of a load 1 / MIN_ELASTIC_SAFETY = 8 times C0 (p ~ Q^(1/3): 8.4 GPa),
+#: past which the elastic contact models no longer apply [Pa].
+ELASTIC_LIMIT_PRESSURE = STATIC_RATING_PRESSURE * (1.0 / MIN_ELASTIC_SAFETY) ** (1.0 / 3.0)
 #: Speed factor above which standard ball bearings pass their makers' limiting speeds
 #: [mm/min] (a rule of thumb; see the module docstring).
 HIGH_SPEED_FACTOR = 1.0e6
@@ -111,6 +125,97 @@ def load_warnings(bearing, radial_load: float, axial_load: float = 0.0) -> list[
         f"P0 = {p0:.4g} N is above the static rating C0 = {c0:.4g} N (ISO 76): the "
         "raceways deform permanently by more than 1e-4 D_w; results assume elastic "
         "contacts"
+    ]
+
+
+#: part of :class:`~bearinglab.imperfections.Imperfections` -> the input that gives it
+FORM_ERROR_INPUTS = {
+    "waviness": "waviness",
+    "ball_size_errors": "ball_size_error_um",
+    "surfaces": "surface3d",
+}
+
+
+def form_error_inputs(imperfections) -> dict:
+    """The inputs (:data:`FORM_ERROR_INPUTS`) that hold the parts of ``imperfections``
+    given, each with its description (``to_dict()``); empty for None or no form error."""
+    if imperfections is None:
+        return {}
+    d = imperfections.to_dict()
+    return {name: d[part] for part, name in FORM_ERROR_INPUTS.items() if d.get(part)}
+
+
+def contact_warnings(bearing, result, *, cause) -> list[str]:
+    """The contact pressure the form errors cause, against the static rating (ISO 76:2006).
+
+    ISO 76:2006 sets the basic static load rating C0 of a ball bearing at the load whose
+    most heavily loaded contact reaches a Hertz pressure of 4200 MPa, at which the
+    permanent deformation of ball and raceway together is about 1e-4 D_w.
+    :func:`load_warnings` checks the external load against C0 (P0 / C0); this checks the
+    pressures actually solved with the form errors, which press the balls they enlarge
+    harder than the external load does. The thresholds are those of
+    :func:`load_warnings` in pressure: a warning past 4200 MPa (s0 = 1) and an error past
+    :data:`ELASTIC_LIMIT_PRESSURE` = 8.4 GPa, the pressure of 8 C0 (p ~ Q^(1/3), so
+    8^(1/3) = 2 times 4200 MPa): there the contacts would flow plastically, relieving
+    the interference the elastic solution assumes, so its loads, orbit and sound are no
+    longer those of the bearing. The check speaks only when the form errors cause the
+    pressure: when the external load alone has s0 < 1, :func:`load_warnings` already
+    warns (or raises); under a radial load with s0 >= 1 the solved pressure of a perfect
+    deep-groove bearing stays under 4200 MPa (3.86 GPa for a 608, a 6205 and a 6308 at
+    F_r = C0: C0 rests on Stribeck's Q_max = 5 F_r / (Z cos alpha), more than the solver
+    finds at the catalogue clearances), so what passes it comes from the form errors.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing.
+    result : LoadDistribution or Orbit
+        The solved contacts with the form errors: ``max_pressure`` [Pa] and
+        ``max_ball_load`` [N] (an orbit's per instant; the worst instant is reported with
+        its time), ``condition`` the operating condition.
+    cause : mapping
+        The inputs that gave the form errors in ``result`` (their public names:
+        ``waviness``, ``ball_size_error_um``, ``surface3d``) -> the value as given
+        (:func:`form_error_inputs` of an Imperfections); empty: no check.
+
+    Raises
+    ------
+    InputError
+        Named after the first input of ``cause``, past :data:`ELASTIC_LIMIT_PRESSURE`.
+    """
+    import numpy as np
+
+    pressure = getattr(result, "max_pressure", None)
+    if not cause or pressure is None:
+        return []
+    pressure = np.atleast_1d(np.asarray(pressure, float))
+    k = int(np.argmax(pressure))
+    p = float(pressure[k])
+    if not p > STATIC_RATING_PRESSURE:
+        return []
+    condition = result.condition
+    s0 = static_safety(bearing, condition.radial_load, condition.axial_load)
+    if s0 is not None and s0 < MIN_STATIC_SAFETY:
+        return []  # the external load is past C0 by itself: load_warnings says so
+    load = float(np.atleast_1d(np.asarray(result.max_ball_load, float))[k])
+    time = getattr(result, "time", None)
+    when = "" if time is None else f" at t = {time[k] * 1e3:.4g} ms of the orbit"
+    names = ", ".join(f"`{name}`" for name in cause)
+    what = f"the form errors ({names}) put {load:.4g} N and {p / 1e9:.3g} GPa on a ball{when}"
+    limit = STATIC_RATING_PRESSURE / 1e9
+    if p > ELASTIC_LIMIT_PRESSURE:
+        name = next(iter(cause))
+        raise InputError(
+            name,
+            cause[name],
+            f"form errors that keep the contact pressure below "
+            f"{ELASTIC_LIMIT_PRESSURE / 1e9:.3g} GPa, that of 8 C0 (ISO 76)",
+            f"{what}: the contacts would flow plastically and no elastic model applies",
+        )
+    return [
+        f"{what}, past the {limit:g} GPa of ISO 76 (the static rating C0): the contacts "
+        "would deform permanently by more than 1e-4 D_w and the results assume elastic "
+        "contacts; check the amplitudes"
     ]
 
 

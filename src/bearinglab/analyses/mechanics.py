@@ -27,6 +27,8 @@ from ..inputs import (
 from .base import BEARING_INPUTS, Analysis, in_request_terms, inputs
 
 _LOADS = inputs("radial_load_n", "axial_load_n")
+#: the form-error inputs, by the names the contact check gives them
+_FORM_INPUTS = ("waviness", "ball_size_error_um", "surface3d")
 _SPEED0 = {"speed_rpm": Input("number", 0.0, "Inner-ring speed [rpm].", low=0.0, high=1e6)}
 
 
@@ -73,7 +75,7 @@ class StaticResult:
 def static(values: dict) -> StaticResult:
     """The ``static`` request: load distribution, stiffness matrix and, with ``orbit``
     (or form errors and ``orbit``), the inner-ring orbit."""
-    from ..plausibility import operating_warnings
+    from ..plausibility import contact_warnings, operating_warnings
     from ..quasistatic import solve_load_distribution
     from ..quasistatic.orbit import inner_ring_orbit
 
@@ -112,6 +114,9 @@ def static(values: dict) -> StaticResult:
         else imperfections.diameter_errors_at_rest(bearing, condition.radial_load_angle)
     )
     result = solve_load_distribution(bearing, condition, ball_diameter_errors=errors, **options)
+    # the contact pressures the form errors cause (ISO 76), at rest and over the orbit
+    cause = {n: values[n] for n in _FORM_INPUTS if values.get(n)} if forms.given else {}
+    pressure = contact_warnings(bearing, result, cause=cause)
     path = None
     if orbit:
         path = inner_ring_orbit(
@@ -121,7 +126,15 @@ def static(values: dict) -> StaticResult:
             points=values.get("orbit_points"),
             **options,
         )
-    warnings = bearing_warnings(bearing, decoded) + plausibility + unused + list(result.warnings)
+        if imperfections is not None:  # the worst instant, t = 0 among them
+            pressure = contact_warnings(bearing, path, cause=cause)
+    warnings = (
+        bearing_warnings(bearing, decoded)
+        + plausibility
+        + unused
+        + list(result.warnings)
+        + pressure
+    )
     return StaticResult(
         bearing,
         result,

@@ -148,8 +148,13 @@ def worded(exc: InputError, shown: dict) -> InputError:
     head, space, rest = exc.parameter.partition(" ")
     if head not in shown:
         return exc
-    # a specification's keys (width_mm=...) are not the inputs of the same name
-    words = (lambda text: text) if head in _SPECIFICATIONS else (lambda t: in_flags(t, shown))
+    # a specification's keys (width_mm=...) are not the inputs of the same name: only
+    # the names in backquotes are inputs there
+    words = (
+        (lambda t: re.sub(r"`(\w+)`", lambda m: shown.get(m.group(1), m.group(1)), t))
+        if head in _SPECIFICATIONS
+        else (lambda t: in_flags(t, shown))
+    )
     return OptionError(shown[head] + space + rest, exc.value, words(exc.allowed), words(exc.hint))
 
 

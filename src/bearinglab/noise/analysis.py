@@ -225,12 +225,20 @@ def noise_analysis(
     ------
     InputError
         ``point`` inside the balls' path; a load or speed past the models' limits
-        (:func:`bearinglab.plausibility.operating_warnings`); bad record options.
+        (:func:`bearinglab.plausibility.operating_warnings`); form errors whose contact
+        pressure passes 8.4 GPa at an instant of the orbit (named ``waviness``,
+        ``ball_size_error_um`` or ``surface3d``,
+        :func:`bearinglab.plausibility.contact_warnings`); bad record options.
     """
     from ..dynamics import needs_compiling
     from ..errors import InputError
     from ..kinematics import defect_frequencies
-    from ..plausibility import operating_warnings, sampling_warnings
+    from ..plausibility import (
+        contact_warnings,
+        form_error_inputs,
+        operating_warnings,
+        sampling_warnings,
+    )
     from ..signal.lines import spectrum_lines
 
     def stage(fraction: float, text: str) -> None:
@@ -267,6 +275,8 @@ def noise_analysis(
         point=point,
         **noise_options,
     )
+    # the contact pressure of the form errors at the orbit's worst instant (ISO 76)
+    warnings += contact_warnings(bearing, noise.orbit, cause=form_error_inputs(imperfections))
     stage(
         0.6,
         "velocity bands"

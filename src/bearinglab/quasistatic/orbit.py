@@ -69,6 +69,9 @@ class Orbit:
         were computed at (time sweeps).
     imperfections : Imperfections or None
         The form errors of a time sweep.
+    max_pressure : array (N,) or None
+        Largest maximum Hertz pressure of any contact [Pa] (the ISO 76 check of
+        :func:`bearinglab.plausibility.contact_warnings`).
     """
 
     bearing: BallBearing
@@ -85,6 +88,7 @@ class Orbit:
     effective_diameter_error: np.ndarray | None = None
     frequencies: dict | None = None
     imperfections: object = None
+    max_pressure: np.ndarray | None = None
 
     @property
     def peak_to_peak(self) -> float:
@@ -330,7 +334,7 @@ def _ball_set_sweep(bearing, condition, ball_diameter_errors, points, span, opti
     phases = condition.radial_load_angle + spacing * np.arange(count + 1) / points
     from . import solve_load_distribution
 
-    u, disp, balls = None, [], []
+    u, disp, balls, pressure = None, [], [], []
     for phase in phases:
         r = solve_load_distribution(
             bearing,
@@ -341,6 +345,7 @@ def _ball_set_sweep(bearing, condition, ball_diameter_errors, points, span, opti
             **options,
         )
         u = r.displacement
+        pressure.append(r.max_pressure)
         disp.append(u[:3].copy())
         balls.append(_ball_state(r, bearing)[:2] + (r.ball_angle,))
     disp = np.array(disp)
@@ -358,6 +363,7 @@ def _ball_set_sweep(bearing, condition, ball_diameter_errors, points, span, opti
         ball_centre=centre,
         ball_load=load,
         effective_diameter_error=eff,
+        max_pressure=np.array(pressure),
     )
 
 
@@ -416,6 +422,7 @@ def _time_sweep(
     centres = np.empty((points, z_count, 2))
     loads = np.empty((points, z_count))
     errors = np.empty((points, z_count))
+    pressure = np.empty(points)
     for k in range(points):
         z_i = z_o = 0.0
         if imperfections.surfaces and surface_contact == "solved":
@@ -450,7 +457,7 @@ def _time_sweep(
         move = 0.5 * (dev.inner - dev.outer)  # unequal split of the approach change
         centres[k, :, 0] = centre[:, 0] + move * np.cos(beta_o)
         centres[k, :, 1] = centre[:, 1] + move * np.sin(beta_o)
-        disp[k], loads[k], errors[k] = u[:3], load, e
+        disp[k], loads[k], errors[k], pressure[k] = u[:3], load, e, r.max_pressure
     frequencies = {
         "shaft_hz": f_shaft,
         "cage_hz": f_cage,
@@ -472,4 +479,5 @@ def _time_sweep(
         effective_diameter_error=errors,
         frequencies=frequencies,
         imperfections=imperfections,
+        max_pressure=pressure,
     )

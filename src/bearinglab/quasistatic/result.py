@@ -124,6 +124,23 @@ class LoadDistribution:
         """Number of loaded contacts of each ball (0-4) [-]."""
         return np.count_nonzero(self.load > 0, axis=1)
 
+    @property
+    def max_ball_load(self) -> float:
+        """Largest load of one ball on one race, arch halves summed (``max_ball_load_n``
+        of :meth:`to_dict`) [N]."""
+        return max(
+            float(np.max(self.load[:, self.ring == race].sum(axis=1), initial=0.0))
+            for race in (0, 1)
+        )
+
+    @property
+    def max_pressure(self) -> float:
+        """Largest maximum Hertz pressure p_0 of any contact [Pa] (the ISO 76 check,
+        :func:`bearinglab.plausibility.contact_warnings`)."""
+        return max(
+            float(np.max(self._race_contacts(race).max_pressure, initial=0.0)) for race in (0, 1)
+        )
+
     @cached_property
     def warnings(self) -> tuple[str, ...]:
         """What the user must know: contacts running over the shoulder, preload."""
