@@ -144,9 +144,10 @@ def trend_from(values: dict, *, jobs: int = 1, scheduler=None, progress=None):
         )
     except InputError as exc:
         name = _NAMES.get(exc.parameter, exc.parameter)
-        if name not in TREND_INPUTS:
+        given = {**values, "jobs": jobs, "scheduler": scheduler}
+        if name not in TREND_INPUTS and name not in ("jobs", "scheduler"):
             raise
-        value = exc.value if name in _AT_FAULT else values.get(name, exc.value)
+        value = exc.value if name in _AT_FAULT else given.get(name, exc.value)
         raise InputError(name, value, exc.allowed, exc.hint) from None
     if bearing is None:
         return result
