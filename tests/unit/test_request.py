@@ -153,3 +153,13 @@ def test_an_ambiguous_designation_is_said_in_every_command(capsys, args):
     assert main([*args, "--json"]) == 0
     warnings = json.loads(capsys.readouterr().out)["warnings"]
     assert any(w.startswith("also reads as GOST 3189-89") for w in warnings), warnings
+
+
+def test_ball_size_errors_without_an_equilibrium_are_one_line_not_a_crash(capsys):
+    # 300 um on a 608's 3.97 mm balls: within the 5 % input limit, but no ring equilibrium
+    # exists (the compiled kernel divided by zero where its NumPy twin finds no solution)
+    from bearinglab.cli import main
+
+    argv = ["static", "608", "--radial-load-n", "50", "--ball-size-error-um", "300"]
+    assert main(argv) == 2
+    assert capsys.readouterr().err.startswith("error: ring equilibrium did not converge")

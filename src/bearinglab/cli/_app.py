@@ -199,7 +199,9 @@ def main(argv: list[str] | None = None) -> int:
         sys.stderr.write("aborted\n")
         return 1
     except BearinglabError as exc:
-        sys.stderr.write(f"error: {exc}\n")
+        from ._inputs import in_flags  # an input the library names in `backquotes`: a flag
+
+        sys.stderr.write(f"error: {in_flags(str(exc))}\n")
         return 2
     except typer.TyperException as exc:  # usage errors: unknown option, bad type, missing
         text = exc.format_message() if hasattr(exc, "format_message") else str(exc)

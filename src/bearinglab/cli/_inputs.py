@@ -170,7 +170,7 @@ def in_flags(text: str, shown: dict | None = None) -> str:
     """``text`` with the inputs it names as the command's flags: a name in backquotes
     (`balls`), or a snake_case name of one of the command's parameters."""
     shown = _SHOWN if shown is None else shown
-    text = re.sub(r"`(\w+)`", lambda m: shown.get(m.group(1), m.group(1)), text)
+    text = re.sub(r"`(\w+)`", lambda m: shown.get(m.group(1), flag(m.group(1))), text)
     names = [n for n in shown if "_" in n and n in text]
     if not names:
         return text

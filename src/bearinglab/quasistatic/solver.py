@@ -240,9 +240,12 @@ class _Problem:
         tol = max(tol, 2.0 * CENTRIFUGAL_FLOOR)
         c_rho, c_z = self.centres(u)
         kernel = _kernels.solve_balls_numpy if compiled is False else _solve_balls_compiled()
-        b, q, n_rho, n_z, delta, speed, force, stiffness, worst, ok = kernel(
-            np.ascontiguousarray(b, dtype=float), c_rho, c_z, self.ball_set(), tol
-        )
+        try:
+            b, q, n_rho, n_z, delta, speed, force, stiffness, worst, ok = kernel(
+                np.ascontiguousarray(b, dtype=float), c_rho, c_z, self.ball_set(), tol
+            )
+        except ZeroDivisionError:  # the compiled kernel's inf (a ball that touches nothing)
+            b, worst, ok = b, math.inf, False
         if not ok:
             raise ConvergenceError(
                 f"ball equilibrium did not converge: residual {worst:.3e} N "
@@ -457,18 +460,22 @@ def _ring(problem: _Problem, tolerance: float, max_iterations: int, initial):
     from . import _ring as compiled
 
     u, b, ball_tol, target, max_step = _setup(problem, tolerance, initial)
-    u, b, q, n_rho, n_z, delta, speed, force, stiff, status, residual = compiled.ring_newton(
-        u,
-        b,
-        problem.free_dofs,
-        problem.load,
-        problem.scale,
-        max_step,
-        problem.ball_set(),
-        ball_tol,
-        target,
-        max_iterations,
-    )
+    try:
+        out = compiled.ring_newton(
+            u,
+            b,
+            problem.free_dofs,
+            problem.load,
+            problem.scale,
+            max_step,
+            problem.ball_set(),
+            ball_tol,
+            target,
+            max_iterations,
+        )
+    except ZeroDivisionError:  # numba's error where the NumPy twin has inf: no equilibrium
+        raise _not_converged(problem, math.inf, target, max_iterations) from None
+    u, b, q, n_rho, n_z, delta, speed, force, stiff, status, residual = out
     if status == 3:
         raise ConvergenceError(
             f"ball equilibrium did not converge at ring displacement {u.tolist()}"
