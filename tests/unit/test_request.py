@@ -163,3 +163,32 @@ def test_ball_size_errors_without_an_equilibrium_are_one_line_not_a_crash(capsys
     argv = ["static", "608", "--radial-load-n", "50", "--ball-size-error-um", "300"]
     assert main(argv) == 2
     assert capsys.readouterr().err.startswith("error: ring equilibrium did not converge")
+
+
+def test_a_study_case_takes_several_specifications_of_its_command(tmp_path, capsys):
+    # one case, two waviness specifications with ';' between them: the same load
+    # distribution as the command given both
+    import json
+
+    from bearinglab.cli import main
+    from bearinglab.study import run_study
+
+    waves = ["outer:order=8,amplitude_um=0.5", "inner:order=7,amplitude_um=0.2"]
+    study = run_study(
+        "static",
+        {
+            "designation": "608",
+            "radial_load_n": 50.0,
+            "speed_rpm": 720.0,
+            "waviness": "; ".join(waves),
+        },
+        output=tmp_path / "st",
+        scheduler="serial",
+    ).to_pandas()
+    argv = ["static", "608", "--radial-load-n", "50", "--speed-rpm", "720", "--json"]
+    for w in waves:
+        argv += ["--waviness", w]
+    assert main(argv) == 0
+    command = json.loads(capsys.readouterr().out)
+    assert study["error"].isna().all()
+    assert study["max_ball_load_n"][0] == pytest.approx(command["max_ball_load_n"], rel=1e-12)

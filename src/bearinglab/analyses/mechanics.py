@@ -24,7 +24,7 @@ from ..inputs import (
     no_effect,
     speed_from,
 )
-from .base import BEARING_INPUTS, Analysis, in_request_terms, inputs
+from .base import BEARING_INPUTS, Analysis, in_request_terms, inputs, specs
 
 _LOADS = inputs("radial_load_n", "axial_load_n")
 #: the form-error inputs, by the names the contact check gives them
@@ -85,7 +85,9 @@ def static(values: dict) -> StaticResult:
         given = [(n, bool(values.get(n))) for n in ("gyroscopic", "ring_expansion", "film")]
         unused += no_effect(given, "at `speed_rpm` 0 (no rolling speed)")
     forms = FormErrors(
-        values.get("waviness"), values.get("ball_size_error_um"), values.get("surface3d")
+        specs(values.get("waviness")),
+        values.get("ball_size_error_um"),
+        specs(values.get("surface3d")),
     )
     orbit = bool(values.get("orbit"))
     if orbit and forms.given and condition.shaft_speed <= 0:
