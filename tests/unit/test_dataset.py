@@ -80,7 +80,7 @@ def test_resume_and_refusals(tmp_path):
         )
     with pytest.raises(InputError, match="empty"):
         make_dataset(tmp_path / "e", 2, speed_rpm=(1800, 1700))
-    with pytest.raises(InputError, match="--yes"):
+    with pytest.raises(InputError, match="`yes`"):
         make_dataset(tmp_path / "many", 2000, max_records=1000)
     assert not (tmp_path / "cage").exists() and not (tmp_path / "many").exists()
 

@@ -256,7 +256,7 @@ def test_limits_unreachable_scheduler_and_a_different_study(tmp_path):
     with pytest.raises(InputError, match=rf"\[1, {most_processes()}\] \(4 per core\)"):
         run_study("stiffness", GRID, output=tmp_path / "w", workers=most_processes() + 1)
     assert not (tmp_path / "w").exists()
-    with pytest.raises(InputError, match="--yes"):
+    with pytest.raises(InputError, match="`yes`"):
         run_study("stiffness", GRID, output=tmp_path / "x", max_cases=10, scheduler="serial")
     with pytest.raises(InputError, match="analysis"):
         run_study("stifness", GRID, output=tmp_path / "x")

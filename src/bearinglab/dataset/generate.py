@@ -82,7 +82,8 @@ def _record_error(exc: InputError, r: dict, bearing=None) -> InputError:
 def make_record(
     spec: DatasetSpec, seed: int, index: int, check: bool = True
 ) -> tuple[np.ndarray, dict, dict]:
-    """(samples float32, record inputs, kinematic frequencies object) of record ``index``.
+    """(samples float32, record inputs, kinematic frequencies object) of record ``index``
+    of the data set ``spec`` seeded ``seed`` (inputs from :func:`.sampling.draw_record`).
 
     With ``check``, a record that cannot show what its label says is refused (an
     InputError, which the set records as a failed record): a fault whose defect frequency
@@ -264,7 +265,9 @@ class DatasetResult:
         }
 
     def plot(self, ax=None):
-        """Records per fault type against speed (a scatter of the set's coverage)."""
+        """Records per fault type, radial load [N] against speed [rpm] (a scatter of the
+        set's coverage), on ``ax`` (a matplotlib Axes; a new figure by default); returns
+        (figure, axes)."""
         from ..plotting import figure_axes
 
         meta = self.to_pandas()

@@ -61,7 +61,7 @@ class TransferPath:
         object.__setattr__(self, "resonances", tuple(checked))
 
     def check(self, sample_rate: float) -> None:
-        """Refuse a resonance at or above MAX_FRACTION of the sample rate."""
+        """Refuse a resonance above MAX_FRACTION of ``sample_rate`` [Hz]."""
         for f, _ in self.resonances:
             if f > MAX_FRACTION * sample_rate:
                 raise InputError(
@@ -85,8 +85,9 @@ class TransferPath:
         return np.vstack(sections) if sections else np.zeros((0, 6))
 
     def apply(self, x, sample_rate: float) -> np.ndarray:
-        """The sensor's signal for the pedestal acceleration ``x`` [same unit]; the filter
-        starts in the steady state of the first sample (no start-up transient)."""
+        """The sensor's signal for the pedestal acceleration ``x`` [same unit], sampled at
+        ``sample_rate`` [Hz]; the filter starts in the steady state of the first sample
+        (no start-up transient)."""
         from scipy.signal import sosfilt, sosfilt_zi
 
         x = np.asarray(x, float)

@@ -27,6 +27,21 @@ def parse_range(
     """("fixed", v) / ("uniform", low, high) / ("choice", [values]) from a value, a pair,
     a list or the command line's text ("V", "LOW:HIGH", "A,B,C").
 
+    Parameters
+    ----------
+    name : str
+        The input's name, which the errors name.
+    value
+        A value, a pair (low, high), a list of values, or the text "V", "LOW:HIGH" or
+        "A,B,C" (numbers in the unit of the input).
+    text : bool
+        The values are names, not numbers: a pair or "LOW:HIGH" is no range (a pair is a
+        list of names).
+    positive : bool
+        The numbers must be > 0.
+    signed : bool
+        The numbers may be negative (otherwise they must be >= 0); ``positive`` prevails.
+
     >>> parse_range("speed_rpm", "1700:1800")
     ('uniform', 1700.0, 1800.0)
     >>> parse_range("model", "rigid,slip", text=True)
@@ -273,8 +288,10 @@ def _check_path(path, rates, blame_rate: bool = False) -> None:
 
 
 def draw_record(spec: DatasetSpec, seed: int, index: int) -> dict:
-    """Inputs of record ``index``: bearing, operating point, defects, form errors, noise,
-    path, sampling (engineering units; defects as dicts)."""
+    """Inputs of record ``index`` of the data set ``spec``, drawn from the data set
+    ``seed`` and ``index`` alone (:func:`bearinglab.study.case_rng`): bearing, operating
+    point, defects, form errors, noise, path, sampling (engineering units; defects as
+    dicts)."""
     p = spec.parsed
     rng = case_rng(seed, index)
     bearing = p["bearings"][int(rng.integers(len(p["bearings"])))]

@@ -67,9 +67,10 @@ class Uniform:
 
 
 def case_rng(seed: int, case: int, stream: int = 0) -> np.random.Generator:
-    """The random generator of one case: from (study seed, case index, stream) only.
+    """The random generator of one case: from the study ``seed``, the ``case`` index and
+    the ``stream`` only (a data set passes its seed and the record index).
 
-    Stream 0 draws the random options, stream 1 seeds the analysis' own random inputs
+    ``stream`` 0 draws the random options, 1 seeds the analysis' own random inputs
     (ball-size errors, measurement noise), so adding a random option never changes them.
 
     >>> float(case_rng(1, 7).random()) == float(case_rng(1, 7).random())
@@ -79,7 +80,8 @@ def case_rng(seed: int, case: int, stream: int = 0) -> np.random.Generator:
 
 
 def case_seed(seed: int, case: int) -> int:
-    """An integer seed for the analysis' random inputs of one case (stream 1)."""
+    """An integer seed for the analysis' random inputs of case index ``case`` of a study
+    seeded ``seed`` (stream 1 of :func:`case_rng`)."""
     return int(np.random.SeedSequence([int(seed), int(case), 1]).generate_state(1)[0])
 
 
@@ -145,6 +147,10 @@ def _count(name: str, text: str, whole: str) -> int:
 
 def parse_values(name: str, value, option: Option) -> list | Uniform:
     """The value list (or random range) of one option from a Python value or its text.
+
+    ``value`` is a value, a list of them, a :class:`Uniform` (returned as it is) or one of
+    the text forms of this module; each value is checked against ``option`` (its kind and
+    choices); ``name`` is the option's name, which the errors name.
 
     >>> parse_values("speed_rpm", "1000:3000:3", Option("number", None, ""))
     [1000.0, 2000.0, 3000.0]

@@ -391,7 +391,7 @@ def check_count(name: str, count: int, most: int, confirm: int | None, verb: str
             name,
             count,
             f"at most {confirm} {name} without confirmation",
-            f"confirm with --yes (or raise max_{name}) to {verb} them all",
+            f"confirm with `yes` (or raise max_{name}) to {verb} them all",
         )
 
 

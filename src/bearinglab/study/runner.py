@@ -146,14 +146,19 @@ class StudyResult:
         }
 
     def plot(self, output: str, x: str, y: str, path=None, ax=None):
-        """One output against two inputs (:func:`bearinglab.study.plots.plot_study`)."""
+        """Map of the column ``output`` over the input columns ``x`` and ``y`` of this
+        study's table, on ``ax`` (a matplotlib Axes; a new figure by default); with
+        ``path``, also saved there (.png, .svg, .pdf; the figure is then closed); returns
+        (figure, axes)
+        (:func:`bearinglab.study.plots.plot_study`)."""
         from .plots import plot_study
 
         return plot_study(self.to_pandas(), output, x, y, path=path, ax=ax)
 
 
 def read_study(path) -> object:
-    """The table of a study folder as a pandas DataFrame, in case order."""
+    """The table of the study folder ``path`` (its part-*.parquet files) as a pandas
+    DataFrame, in case order."""
     import pandas as pd
     import pyarrow.parquet as pq
 
@@ -387,7 +392,8 @@ def study_columns(analysis: str, grid: dict | None = None, *, cases=None, repeat
 
 
 def describe_options(analysis: str) -> list[dict]:
-    """The options of an analysis: name, kind, default, help (for --help and docs)."""
+    """The options of ``analysis`` (a name of :data:`bearinglab.study.ANALYSES` or an
+    alias): name, kind, default, help and choices of each (for --help and docs)."""
     a = get_analysis(analysis)
     return [
         {
