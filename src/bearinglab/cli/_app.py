@@ -199,7 +199,7 @@ def main(argv: list[str] | None = None) -> int:
         sys.stderr.write("aborted\n")
         return 1
     except BearinglabError as exc:
-        from ._inputs import in_flags  # an input the library names in `backquotes`: a flag
+        from ._words import in_flags  # an input the library names in `backquotes`: a flag
 
         sys.stderr.write(f"error: {in_flags(str(exc))}\n")
         return 2

@@ -16,6 +16,7 @@ from rich.markup import escape
 
 from ..errors import BearinglabError, CatalogError, InputError
 from ._app import console
+from ._words import _SHOWN, flag, in_flags
 
 JsonOpt = Annotated[bool, typer.Option("--json", help="Print one JSON object instead of tables.")]
 SchedulerOpt = Annotated[
@@ -55,11 +56,6 @@ _TYPES = {
     "bool": bool,
     "path": Path | None,
 }
-
-
-def flag(name: str) -> str:
-    """The command-line flag of input ``name``: ``radial_load_n`` -> ``--radial-load-n``."""
-    return "--" + name.replace("_", "-")
 
 
 def _parameter(name: str, spec, *, argument: bool, default, help_: str) -> inspect.Parameter:
@@ -160,23 +156,6 @@ def worded(exc: InputError, shown: dict) -> InputError:
 
 #: Inputs written as KEY=VALUE specifications.
 _SPECIFICATIONS = ("defect", "waviness", "surface3d", "ball_size_error_um")
-
-
-#: The flags of the command running (parameter name -> flag), for its warnings.
-_SHOWN: dict[str, str] = {}
-
-
-def in_flags(text: str, shown: dict | None = None) -> str:
-    """``text`` with the inputs it names as the command's flags: a name in backquotes
-    (`balls`), or a snake_case name of one of the command's parameters."""
-    shown = _SHOWN if shown is None else shown
-    text = re.sub(r"`(\w+)`", lambda m: shown.get(m.group(1), flag(m.group(1))), text)
-    names = [n for n in shown if "_" in n and n in text]
-    if not names:
-        return text
-    # not a key of a specification: width_mm=1.2, outer:width_mm
-    pattern = r"(?<![\w:,=])(" + "|".join(sorted(names, key=len, reverse=True)) + r")(?![\w=])"
-    return re.sub(pattern, lambda m: shown[m.group(1)], text)
 
 
 def speed_rad_s(speed_rpm: float, *, zero: bool = False) -> float:

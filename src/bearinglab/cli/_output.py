@@ -45,7 +45,7 @@ def _check_finite(value, path: str = "") -> None:
 
 def _emit_json(obj: dict) -> None:
     """Print ``obj`` as JSON; its warnings name the inputs as this command's flags."""
-    from ._inputs import in_flags
+    from ._words import in_flags
 
     _check_finite(obj)
     if isinstance(obj.get("warnings"), list):
