@@ -4,15 +4,15 @@ import math
 
 from rich.markup import escape
 
+from ..analyses.mechanics import FREQUENCIES
 from ..catalog import boundary_dimensions, published_geometry
 from ..designation import parse
 from ..errors import CatalogError, DesignationError
 from ..geometry import BallBearing
-from ..inputs import BEARING, Input, bearing_from, bearing_warnings, geometry_line, given_fields
-from ..kinematics import FREQUENCY_NAMES, LONG_NAMES, defect_frequencies, geometry_inputs
-from ..plausibility import speed_factor_warnings
+from ..inputs import BEARING, Input, bearing_from, bearing_warnings, geometry_line
+from ..kinematics import FREQUENCY_NAMES, LONG_NAMES, defect_frequencies
 from ._app import command_app, console
-from ._inputs import JsonOpt, PlotOpt, _print_warnings, in_flags, no_effect, speed_rad_s, takes
+from ._inputs import JsonOpt, PlotOpt, _print_warnings, in_flags, takes
 from ._output import _check_finite, _emit_json, _plot_and_emit, _References, _table
 
 app = command_app()
@@ -207,25 +207,14 @@ def _print_bearing(b: BallBearing) -> None:
 
 
 @app.command()
-@takes(*BEARING, "speed_rpm", "outer_rotating", argument="designation", defaults={"speed_rpm": ...})
+@takes(argument="designation", defaults={"speed_rpm": ...}, **FREQUENCIES.command_options)
 def frequencies(values, json_output: JsonOpt = False, plot: PlotOpt = None):
     """Kinematic defect frequencies (pure rolling) in Hz and as orders."""
-    designation, speed_rpm, outer_rotating = (
-        values[k] for k in ("designation", "speed_rpm", "outer_rotating")
-    )
-    shaft_speed = speed_rad_s(speed_rpm, zero=True)
-    bearing, decoded = bearing_from(values)
-    f = defect_frequencies(bearing, shaft_speed, outer_rotating=outer_rotating)
-    used = geometry_inputs(bearing)
-    unused = [(name, field not in used) for name, field in given_fields(values).items()]
-    warnings = (
-        bearing_warnings(bearing, decoded)
-        + speed_factor_warnings(bearing, shaft_speed)
-        + no_effect(unused, "on the defect frequencies (pure rolling: Z, D_w, d_m, contact angle)")
-    )
-    out = {"designation": designation, **f.to_dict(), "warnings": warnings}
+    r = FREQUENCIES.run(values)
+    f, out, warnings = r.frequencies, r.to_dict(), list(r.warnings)
     if _plot_and_emit(out, json_output, f, plot):
         return
+    bearing, speed_rpm, outer_rotating = f.bearing, values["speed_rpm"], values["outer_rotating"]
     ring = "outer" if outer_rotating else "inner"
     console.print(
         _table(
