@@ -122,7 +122,7 @@ def noise(values: dict, progress=None) -> NoiseOutcome:
     bearing, decoded = bearing_from(values)
     seed = values.get("seed")
     imperfections = forms.build(bearing, seed)
-    angle = math.radians(values.get("angle_deg", 90.0) or 0.0)
+    angle = math.radians(90.0 if values.get("angle_deg") is None else values["angle_deg"])
     distance = values.get("distance_mm")
     point = None if distance is None else FieldPoint(distance * 1e-3, angle)
     try:
