@@ -65,7 +65,8 @@ def _parameter(name: str, spec, *, argument: bool, default, help_: str) -> inspe
     else:
         flags = [flag(n) for n in (name, *spec.aliases)]
         shown = default is not None and spec.kind != "bool"
-        info = typer.Option(*flags, help=help_, show_default=shown)
+        choices = "[" + "|".join(spec.choices) + "]" if spec.choices else None
+        info = typer.Option(*flags, help=help_, show_default=shown, metavar=choices)
     if spec.kind == "bool":
         default = bool(default)
     return inspect.Parameter(
@@ -92,20 +93,21 @@ def takes(*names: str, argument: str | None = None, defaults=None, helps=None, *
             for p in sig.parameters.values()
             if p.name != "values"
         ]
+        every = [*names, *(p.name for p in own)]
+        shown = {n: n.upper() if n == argument else flag(n) for n in every}
+        shown["json_output"] = "--json"
         made = {
             name: _parameter(
                 name,
                 table[name],
                 argument=name == argument,
                 default=defaults.get(name, table[name].default),
-                help_=helps.get(name, table[name].help),
+                help_=in_flags(helps.get(name, table[name].help), shown),
             )
             for name in names
         }
         first = [made[n] for n in names if n not in BEARING or n == argument]
         params = first + own + [made[n] for n in names if n in BEARING and n != argument]
-        shown = {p.name: p.name.upper() if p.name == argument else flag(p.name) for p in params}
-        shown["json_output"] = "--json"
 
         @functools.wraps(func)
         def wrapper(**kwargs):
