@@ -341,7 +341,7 @@ def test_ambiguous_text_returns_iso_with_gost_alternative(
     alt = d.alternatives[0]
     assert (alt.system, alt.bearing_type) == ("gost", gost_type)
     note = [n for n in d.notes if n.startswith("also reads as GOST 3189-89")]
-    assert len(note) == 1 and alt.description in note[0] and "system='gost'" in note[0]
+    assert len(note) == 1 and alt.description in note[0] and "`system` gost" in note[0]
 
 
 def test_same_bearing_in_both_systems_has_no_ambiguity_note() -> None:
