@@ -500,11 +500,12 @@ def test_cli_table(capsys):
         (["6205", "--speed-rpm", "-1"], "--speed-rpm"),
         (["6205", "--speed-rpm", "10", "--radial-load-n", "nan"], "--radial-load-n"),
         ([*BORE_AND_OD, "--axial-load-n", "10"], "--axial-load-n"),
-        # the library names its parameter (equivalent_load); the CLI passes its hint through
-        (["NU205", "--speed-rpm", "10", "--axial-load-n", "10"], "give P (equivalent_load)"),
+        # the library names its parameter (equivalent_load), the request its input, the
+        # command line its flag
+        (["NU205", "--speed-rpm", "10", "--axial-load-n", "10"], "give P (--equivalent-load-n)"),
         (["1205", "--speed-rpm", "10"], "--friction-type"),
         (["6205", "--speed-rpm", "10", "--type", "plain"], "--friction-type"),
-        (["NU205", "--speed-rpm", "10", "--model", "skf"], "use model='constant'"),
+        (["NU205", "--speed-rpm", "10", "--model", "skf"], "use --model constant"),
         (["7206", "--speed-rpm", "10", "--model", "skf"], "--skf-constants"),
         ([*SKF_SLOW, "--skf-constants", "1,2"], "--skf-constants"),
         (

@@ -102,8 +102,22 @@ def in_request_terms(exc, values: dict, names: dict | None = None):
         allowed, hint = exc.allowed, exc.hint
         if name.endswith("_mm"):
             allowed, hint = _in_units(allowed, name), _in_units(hint, name)
-        return InputError(name, value, allowed, hint)
+        words = {**(names or {}), exc.parameter: name}
+        return InputError(name, value, _as_inputs(allowed, words), _as_inputs(hint, words))
     return exc
+
+
+def _as_inputs(text: str, names: dict) -> str:
+    """``text`` with the model parameters it names (``names``: parameter -> input) as the
+    request's inputs, in backquotes: "give P (equivalent_load)" -> "give P
+    (`equivalent_load_n`)", "use model='constant'" -> "use `model` constant"."""
+    import re
+
+    for parameter, name in names.items():
+        text = re.sub(rf"(?<![`\w]){parameter}='([^']*)'", rf"`{name}` \1", text)
+        if "_" in parameter:  # a plain word ("model", "seals") is prose as often as a name
+            text = re.sub(rf"(?<![`\w=]){parameter}(?![\w`=])", f"`{name}`", text)
+    return text
 
 
 def specs(value) -> list[str]:

@@ -229,6 +229,7 @@ LIFE = Analysis(
 #: The lubricant when neither lubricant nor viscosity_mm2_s is given (SKF model).
 DEFAULT_LUBRICANT = "iso-vg68"
 _FRICTION_NAMES = {
+    "model": "model",
     "shaft_speed": "speed_rpm",
     "radial_load": "radial_load_n",
     "axial_load": "axial_load_n",
