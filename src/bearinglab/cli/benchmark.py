@@ -6,9 +6,11 @@ from typing import Annotated
 
 import typer
 
+from ..analyses.diagnosis import DIAGNOSIS_INPUTS
 from ..errors import BearinglabError, InputError
+from ..inputs import Input
 from ._app import command_app, console
-from ._inputs import JsonOpt, OptionError
+from ._inputs import JsonOpt, OptionError, takes
 from ._output import _emit_json, _table, escape, progress_bar
 from ._preflight import output_file
 
@@ -57,22 +59,21 @@ def _check_read(out: dict) -> None:
 
 
 @app.command("benchmark")
+@takes(
+    argument="folder",
+    folder=Input(
+        "path",
+        ...,
+        "Folder with a labels.csv (file, channel, sample_rate_hz, speed_rpm, the bearing, "
+        "fault) and the recordings it names.",
+    ),
+    method=DIAGNOSIS_INPUTS["method"].with_(
+        help="raw, cpw, drs-sk, all (the three) or ies (repeatable or comma-separated); each "
+        "is also run on its own; default cpw."
+    ),
+)
 def benchmark_command(
-    folder: Annotated[
-        Path,
-        typer.Argument(
-            help="Folder with a labels.csv (file, channel, sample_rate_hz, speed_rpm, the "
-            "bearing, fault) and the recordings it names.",
-        ),
-    ],
-    method: Annotated[
-        list[str] | None,
-        typer.Option(
-            "--method",
-            help="raw, cpw, drs-sk, all (the three) or ies (repeatable or "
-            "comma-separated); each is also run on its own; default cpw.",
-        ),
-    ] = None,
+    values,
     jobs: Annotated[int, typer.Option("--jobs", help="Records diagnosed at once (processes).")] = 1,
     html: Annotated[
         Path | None,
@@ -84,6 +85,7 @@ def benchmark_command(
     json_output: JsonOpt = False,
 ):
     """Run the diagnosis over a folder of labelled recordings."""
+    folder, method = values["folder"], values["method"]
     output_file("--html", html, (".html", ".htm"))
     _check_files(folder)
     from ..diagnosis import run_benchmark
