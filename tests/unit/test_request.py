@@ -192,3 +192,11 @@ def test_a_study_case_takes_several_specifications_of_its_command(tmp_path, caps
     command = json.loads(capsys.readouterr().out)
     assert study["error"].isna().all()
     assert study["max_ball_load_n"][0] == pytest.approx(command["max_ball_load_n"], rel=1e-12)
+
+
+def test_a_study_case_is_checked_against_the_ranges_its_command_checks():
+    # orbit_points is static's own input (2..100000): the study refuses 1 as the command does
+    with pytest.raises(InputError, match=r"^orbit_points = 1 is not allowed: expected an integer"):
+        ANALYSES["static"].evaluate(
+            {"designation": "6205", "radial_load_n": 100.0, "orbit": True, "orbit_points": 1}, 0
+        )

@@ -59,6 +59,8 @@ class Analysis:
         values = {**case}
         if "seed" in self.options and values.get("seed") is None:
             values["seed"] = seed
+        for name, spec in self.options.items():  # the ranges the command checks, too
+            spec.check(name, values.get(name))
         result = self.run(values)
         d = self.columns(result) if self.columns is not None else result.to_dict()
         return pick(d, self.outputs)
