@@ -12,7 +12,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
-from ..inputs import BEARING, INPUTS, Input
+from ..inputs import BEARING, INPUTS, Input, check
 
 
 def inputs(*names: str, **own: Input) -> dict[str, Input]:
@@ -59,11 +59,31 @@ class Analysis:
         values = {**case}
         if "seed" in self.options and values.get("seed") is None:
             values["seed"] = seed
-        for name, spec in self.options.items():  # the ranges the command checks, too
-            spec.check(name, values.get(name))
+        check(values, self.options)  # the ranges the command checks, too
         result = self.run(values)
         d = self.columns(result) if self.columns is not None else result.to_dict()
         return pick(d, self.outputs)
+
+
+@dataclass(frozen=True)
+class Outcome:
+    """A library result in a request's terms: the result, the request's designation and
+    every warning (the bearing's, the result's, the inputs without effect)."""
+
+    result: object
+    designation: str | None = None
+    warnings: tuple = field(default_factory=tuple)
+    bearing: object = None
+
+    def to_dict(self) -> dict:
+        d = self.result.to_dict()
+        return {"designation": self.designation, **d, "warnings": list(self.warnings)}
+
+    def to_pandas(self):
+        return self.result.to_pandas()
+
+    def plot(self, *args, **kwargs):
+        return self.result.plot(*args, **kwargs)
 
 
 def pick(d: dict, outputs: dict) -> dict:

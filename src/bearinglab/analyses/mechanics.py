@@ -24,7 +24,7 @@ from ..inputs import (
     no_effect,
     speed_from,
 )
-from .base import BEARING_INPUTS, Analysis, in_request_terms, inputs, specs
+from .base import BEARING_INPUTS, Analysis, Outcome, in_request_terms, inputs, specs
 
 _LOADS = inputs("radial_load_n", "axial_load_n")
 #: the form-error inputs, by the names the contact check gives them
@@ -309,29 +309,7 @@ STIFFNESS = Analysis(
 
 
 # ------------------------------------------------------------------ kinematics
-@dataclass(frozen=True)
-class FrequenciesResult:
-    """The defect frequencies of a request, with the warnings about it."""
-
-    frequencies: object
-    designation: str | None = None
-    warnings: tuple = field(default_factory=tuple)
-
-    def to_dict(self) -> dict:
-        return {
-            "designation": self.designation,
-            **self.frequencies.to_dict(),
-            "warnings": list(self.warnings),
-        }
-
-    def to_pandas(self):
-        return self.frequencies.to_pandas()
-
-    def plot(self, **kwargs):
-        return self.frequencies.plot(**kwargs)
-
-
-def frequencies(values: dict) -> FrequenciesResult:
+def frequencies(values: dict) -> Outcome:
     """The ``frequencies`` request: kinematic defect frequencies (pure rolling)."""
     from ..inputs import given_fields
     from ..kinematics import defect_frequencies, geometry_inputs
@@ -347,7 +325,7 @@ def frequencies(values: dict) -> FrequenciesResult:
         + speed_factor_warnings(bearing, shaft_speed)
         + no_effect(unused, "on the defect frequencies (pure rolling: Z, D_w, d_m, contact angle)")
     )
-    return FrequenciesResult(f, values.get("designation"), tuple(warnings))
+    return Outcome(f, values.get("designation"), tuple(warnings), bearing)
 
 
 _FREQ_OUT = {
@@ -467,26 +445,6 @@ def _free_frequencies(text, flexural: list[int]):
     return dict(zip(flexural, free, strict=True))
 
 
-@dataclass(frozen=True)
-class RingModesResult:
-    """The outer-ring modes of a request (:func:`bearinglab.rings.ring_modes`)."""
-
-    modes: object
-    bearing: object = None
-    designation: str | None = None
-    warnings: tuple = field(default_factory=tuple)
-
-    def to_dict(self) -> dict:
-        d = self.modes.to_dict()
-        return {"designation": self.designation, **d, "warnings": list(self.warnings)}
-
-    def to_pandas(self):
-        return self.modes.to_pandas()
-
-    def plot(self, **kwargs):
-        return self.modes.plot(**kwargs)
-
-
 def _solve_modes(values: dict, bearing, ms, free, ball_count):
     from ..rings import ring_modes as solve
 
@@ -507,7 +465,7 @@ def _solve_modes(values: dict, bearing, ms, free, ball_count):
     )
 
 
-def ring_modes(values: dict) -> RingModesResult:
+def ring_modes(values: dict) -> Outcome:
     """The ``ring-modes`` request: from a bearing, or from the paper's ring-level inputs
     alone (balls, ring_mass_kg with radial_stiffness_n_per_m or rigid_body_frequency_hz,
     free_frequencies_hz, ball_mass_ratio)."""
@@ -553,13 +511,13 @@ def ring_modes(values: dict) -> RingModesResult:
         r.warnings
     )
     warnings += no_effect(given, why or "")
-    return RingModesResult(r, bearing, values.get("designation"), tuple(warnings))
+    return Outcome(r, values.get("designation"), tuple(warnings), bearing)
 
 
 _MODES = (2, 3, 4, 5, 6)
 
 
-def _ring_columns(r: RingModesResult) -> dict:
+def _ring_columns(r: Outcome) -> dict:
     d = r.to_dict()
     for m in d["modes"]:
         k = m["m"]

@@ -5,11 +5,9 @@ once and names the library's parameters in the request's terms."""
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-
 from ..errors import BearinglabError, CatalogError, InputError
 from ..inputs import Input, bearing_from, bearing_warnings, condition_from, no_effect, speed_from
-from .base import BEARING_INPUTS, Analysis, in_request_terms, inputs
+from .base import BEARING_INPUTS, Analysis, Outcome, in_request_terms, inputs
 
 _RATINGS = {
     "dynamic_load_rating_kn": Input(
@@ -36,27 +34,6 @@ _SPEED = {
         "number", None, "Speed of the rotating ring [rpm].", low=0.0, high=1e6, what="a speed"
     )
 }
-
-
-@dataclass(frozen=True)
-class Outcome:
-    """A library result in a request's terms: the result, the request's designation and
-    every warning (the bearing's, the result's, the inputs without effect)."""
-
-    result: object
-    designation: str | None = None
-    warnings: tuple = field(default_factory=tuple)
-    bearing: object = None
-
-    def to_dict(self) -> dict:
-        d = self.result.to_dict()
-        return {"designation": self.designation, **d, "warnings": list(self.warnings)}
-
-    def to_pandas(self):
-        return self.result.to_pandas()
-
-    def plot(self, *args, **kwargs):
-        return self.result.plot(*args, **kwargs)
 
 
 # ------------------------------------------------------------------ life

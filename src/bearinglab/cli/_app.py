@@ -201,7 +201,7 @@ def main(argv: list[str] | None = None) -> int:
     except BearinglabError as exc:
         from ._words import in_flags  # an input the library names in `backquotes`: a flag
 
-        sys.stderr.write(f"error: {in_flags(str(exc), {})}\n")
+        sys.stderr.write(f"error: {in_flags(str(exc), {}, bare=False)}\n")
         return 2
     except typer.TyperException as exc:  # usage errors: unknown option, bad type, missing
         text = exc.format_message() if hasattr(exc, "format_message") else str(exc)

@@ -6,7 +6,6 @@ import functools
 import inspect
 import math
 import os
-import re
 from contextlib import contextmanager
 from pathlib import Path
 from typing import Annotated
@@ -80,7 +79,7 @@ def takes(*names: str, argument: str | None = None, defaults=None, helps=None, *
     (``argument``: the one given as a positional argument; ``defaults`` and ``helps``: this
     command's own). The command receives them as ``values`` (name -> value as typed); a
     library error naming one of the command's parameters is worded as its flag."""
-    from ..inputs import BEARING, INPUTS
+    from ..inputs import BEARING, INPUTS, check
 
     defaults, helps = defaults or {}, helps or {}
     names = tuple(dict.fromkeys((*names, *specs)))
@@ -115,8 +114,7 @@ def takes(*names: str, argument: str | None = None, defaults=None, helps=None, *
             _SHOWN.clear()
             _SHOWN.update(shown)
             try:
-                for name, value in values.items():  # ranges in the inputs' units
-                    table[name].check(name, value)
+                check(values, {name: table[name] for name in names})  # in their units
                 return (
                     func(values=values, **kwargs)
                     if "values" in sig.parameters
@@ -148,12 +146,13 @@ def worded(exc: InputError, shown: dict) -> InputError:
         return exc
     # a specification's keys (width_mm=...) are not the inputs of the same name: only
     # the names in backquotes are inputs there
-    words = (
-        (lambda t: re.sub(r"`(\w+)`", lambda m: shown.get(m.group(1), m.group(1)), t))
-        if head in _SPECIFICATIONS
-        else (lambda t: in_flags(t, shown))
+    bare = head not in _SPECIFICATIONS
+    return OptionError(
+        shown[head] + space + rest,
+        exc.value,
+        in_flags(exc.allowed, shown, bare=bare),
+        in_flags(exc.hint, shown, bare=bare),
     )
-    return OptionError(shown[head] + space + rest, exc.value, words(exc.allowed), words(exc.hint))
 
 
 #: Inputs written as KEY=VALUE specifications.
@@ -180,13 +179,6 @@ def load_n(flag: str, value: float | None, signed: bool = False) -> float | None
     except InputError as exc:
         raise OptionError(flag, value, exc.allowed) from None
     return value
-
-
-def no_effect(flags, why: str) -> list[str]:
-    """A warning naming the options given (``flags``: (flag, given) pairs) that have no
-    effect ``why``; none when none was given."""
-    given = [flag for flag, on in flags if on]
-    return [f"{' and '.join(given)}: no effect {why}"] if given else []
 
 
 def typed(ctx: typer.Context) -> set[str]:

@@ -14,12 +14,12 @@ def flag(name: str) -> str:
 _SHOWN: dict[str, str] = {}
 
 
-def in_flags(text: str, shown: dict | None = None) -> str:
+def in_flags(text: str, shown: dict | None = None, *, bare: bool = True) -> str:
     """``text`` with the inputs it names as the command's flags: a name in backquotes
-    (`balls`), or a snake_case name of one of the command's parameters."""
+    (`balls`), or (with ``bare``) a snake_case name of one of the command's parameters."""
     shown = _SHOWN if shown is None else shown
     text = re.sub(r"`(\w+)`", lambda m: shown.get(m.group(1), flag(m.group(1))), text)
-    names = [n for n in shown if "_" in n and n in text]
+    names = [n for n in shown if "_" in n and n in text] if bare else []
     if not names:
         return text
     # not a key of a specification: width_mm=1.2, outer:width_mm

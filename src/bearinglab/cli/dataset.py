@@ -8,6 +8,7 @@ import typer
 from rich.markup import escape
 
 from ..errors import InputError
+from ..inputs import no_effect
 from ._app import command_app, console
 from ._inputs import (
     JsonOpt,
@@ -15,7 +16,6 @@ from ._inputs import (
     SchedulerOpt,
     WorkersOpt,
     _print_warnings,
-    no_effect,
     typed,
 )
 from ._output import _emit_json, _table

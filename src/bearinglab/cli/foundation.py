@@ -211,7 +211,7 @@ def _print_bearing(b: BallBearing) -> None:
 def frequencies(values, json_output: JsonOpt = False, plot: PlotOpt = None):
     """Kinematic defect frequencies (pure rolling) in Hz and as orders."""
     r = FREQUENCIES.run(values)
-    f, out, warnings = r.frequencies, r.to_dict(), list(r.warnings)
+    f, out, warnings = r.result, r.to_dict(), list(r.warnings)
     if _plot_and_emit(out, json_output, f, plot):
         return
     bearing, speed_rpm, outer_rotating = f.bearing, values["speed_rpm"], values["outer_rotating"]

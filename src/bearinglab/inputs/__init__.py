@@ -115,7 +115,7 @@ def lubricant_from(values: dict):
     warnings naming the lubricant inputs that then have no effect."""
     from ..lubrication import LUBRICANTS, ZERO_CELSIUS
 
-    check(values, ("lubricant", "temperature_c"))
+    check(values, {name: INPUTS[name] for name in ("lubricant", "temperature_c")})
     name = values.get("lubricant") or DEFAULT_LUBRICANT
     temperature = values.get("temperature_c")
     if not values.get("film"):

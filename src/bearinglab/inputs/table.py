@@ -297,11 +297,12 @@ GEOMETRY_NEEDED = ("balls", "ball_diameter_mm", "pitch_diameter_mm")
 FORMS = ("waviness", "ball_size_error_um", "surface3d", "seed")
 
 
-def check(values: dict, names=None) -> dict:
-    """Check each given value of ``values`` (name -> value in its unit; only ``names``
-    when given) against its input's range; returns ``values``."""
-    for name in values if names is None else names:
-        spec = INPUTS.get(name)
-        if spec is not None:
-            spec.check(name, values.get(name))
+def check(values: dict, specs: dict | None = None) -> dict:
+    """Check each value of ``values`` (name -> value in its unit; None: not given) against
+    its input's range: the inputs ``specs`` (name -> Input), by default the table's
+    entries of the names given; returns ``values``."""
+    if specs is None:
+        specs = {name: INPUTS[name] for name in values if name in INPUTS}
+    for name, spec in specs.items():
+        spec.check(name, values.get(name))
     return values

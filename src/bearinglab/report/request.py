@@ -5,7 +5,7 @@
 from __future__ import annotations
 
 from ..errors import InputError
-from ..inputs import BEARING, INPUTS, Input, bearing_from, check_defects, condition_from
+from ..inputs import BEARING, INPUTS, Input, bearing_from, check, check_defects, condition_from
 from ..inputs.specs import parse_defect
 
 #: The report's inputs, in the order the command line lists them.
@@ -64,8 +64,7 @@ def report_from(values: dict, progress=None):
     from ..analyses.base import in_request_terms
     from .builder import build_report
 
-    for name, spec in REPORT_INPUTS.items():
-        spec.check(name, values.get(name))
+    check(values, REPORT_INPUTS)
     condition = condition_from(
         {k: values.get(k) for k in ("speed_rpm", "radial_load_n", "axial_load_n")},
         positive_speed=True,

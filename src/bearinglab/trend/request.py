@@ -7,7 +7,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from ..errors import InputError
-from ..inputs import BEARING, INPUTS, Input, bearing_from, bearing_warnings, speed_from
+from ..inputs import BEARING, INPUTS, Input, bearing_from, bearing_warnings, check, speed_from
 from .alarm import FALSE_ALARM, PERSISTENCE
 from .analysis import BASELINE, SETTLE
 
@@ -107,8 +107,7 @@ def trend_from(values: dict, *, jobs: int = 1, scheduler=None, progress=None):
     ``progress(done, total)`` is called as records are read."""
     from .analysis import trend_records
 
-    for name, spec in TREND_INPUTS.items():
-        spec.check(name, values.get(name))
+    check(values, TREND_INPUTS)
     for seconds in ("settle", "baseline", "persistence"):
         if values.get(f"{seconds}_s") is not None and values.get(f"{seconds}_records") is not None:
             raise InputError(
