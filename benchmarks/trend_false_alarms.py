@@ -29,7 +29,7 @@ import numpy as np
 from bearinglab.geometry import BallBearing
 from bearinglab.operating import OperatingCondition
 from bearinglab.trend import plain_rule, trend_records
-from bearinglab.trend.alarm import FALSE_ALARM, STATISTICS, baseline_limits
+from bearinglab.trend.alarm import FALSE_ALARM_PER_HOUR, STATISTICS, baseline_limits
 
 ROOT = Path(__file__).resolve().parents[1]
 RUNS = ROOT.parent / "shared" / "data" / "run-to-failure"
@@ -114,8 +114,9 @@ def simulated(series: int, records: int) -> None:
             g = gaussian(stats, base, len(result.files))
             gauss = [gauss[0] + g[0], gauss[1] + g[1]]
     print(
-        f"healthy simulated series: {series} x {records} records; default rule ({FALSE_ALARM:g} "
-        f"per record): {default_alarms} alarms over {monitored} monitored records"
+        f"healthy simulated series: {series} x {records} records; default rule "
+        f"({FALSE_ALARM_PER_HOUR:g} per hour): {default_alarms} alarms over {monitored} "
+        "monitored records"
     )
     _report("healthy simulated series", tallies, gauss)
 
@@ -163,8 +164,8 @@ def real() -> None:
 #: Settings tried by --sensitivity, one change from the defaults at a time.
 VARIANTS = {
     "defaults": {},
-    "false_alarm 1e-5": {"false_alarm": 1e-5},
-    "false_alarm 1e-7": {"false_alarm": 1e-7},
+    "false_alarm_per_hour 3.6e-3": {"false_alarm_per_hour": 3.6e-3},
+    "false_alarm_per_hour 3.6e-5": {"false_alarm_per_hour": 3.6e-5},
     "persistence 3 records": {"persistence_records": 3},
     "persistence 4 records": {"persistence_records": 4},
     "no settling": {"settle": 0.0},
@@ -175,16 +176,18 @@ VARIANTS = {
 
 def sensitivity() -> None:
     print("\nalarm time and lead before the last snapshot [s], one setting changed at a time")
+    runs = sorted(p.name for p in RUNS.glob("Bearing*") if p.is_dir())
     for name, kwargs in VARIANTS.items():
         cells = []
-        for run in HEALTHY:
+        for run in runs:
             r = trend_records(RUNS / run, **kwargs)
             a = r.alarm
             if a is None:
                 cells.append(f"{run} -")
                 continue
             t = r.times[a.record]
-            cells.append(f"{run} {t:.0f} ({r.times[-1] - t:.0f}, {a.indicator})")
+            half = "" if t >= r.times[-1] / 2 else " FIRST HALF"
+            cells.append(f"{run} {t:.0f} ({r.times[-1] - t:.0f}, {a.indicator}{half})")
         print(f"{name:24s} " + "; ".join(cells))
 
 

@@ -98,6 +98,7 @@ UNITS: dict[str, Unit] = _units(
     ("million_rev", "10⁶ rev", 1e6, "life in revolutions"),
     ("hz", "Hz", 1.0, "frequency"),
     ("per_s", "1/s", 1.0, "rate (items per second)"),
+    ("per_hour", "1/h", 1.0 / 3600.0, "rate (events per hour)"),
     ("khz", "kHz", 1e3, "frequency"),
     ("rpm", "rpm", RPM, "speed (to rad/s)"),
     ("rad_s", "rad/s", 1.0, "angular speed"),
@@ -139,6 +140,7 @@ JSON_SUFFIXES: dict[str, str] = {
     "hours": "lives in hours",
     "million_rev": "lives in revolutions",
     "per_s": "rates",
+    "per_hour": "rates of events per hour of monitoring (false alarms)",
     "g": "masses of balls and rings",
     "kg": "masses of the machine in a simulation (rotor, housing) and of a ring",
     "kg_m3": "densities",
@@ -455,7 +457,8 @@ DIMENSIONLESS: dict[str, str] = {
     "persistence": "consecutive records above a limit that raise the alarm",
     "tests": "the tests (indicator x channel), or how many",
     "false_alarm_per_record": "largest chance that the rule raises a false alarm at a "
-    "given record (its model: independent records, exponential tail)",
+    "given record: the rate per hour times the records' spacing over 3600 s (its model: "
+    "independent records, exponential tail)",
     "false_alarm_per_run": "bound on the chance of a false alarm over the records monitored",
     "monitored_records": "records after the baseline, tested against it",
     "indicator": "a health indicator: rms, peak, crest_factor, kurtosis, spectral_kurtosis",

@@ -8,9 +8,14 @@ on every row of bearings.csv (the folder may grow).
 
 What is asserted on each run, with the default rule: the readers read every snapshot as
 published (2 channels of 2560 samples at 25.6 kHz, the clock's sample spacing agreeing);
-the alarm is raised after the baseline and before the last snapshot (the 20 g stop), and
-no later than the reference rule of the issue (RMS of the horizontal channel above the
-mean + 6 sigma of the first 10 % of the run, three snapshots in a row).
+the alarm is raised after the baseline and before the last snapshot (the 20 g stop), not
+in the first half of the run's life (issue 27: the first halves are counted as healthy
+operation, and an alarm there as a false one), and no later than the reference rule of
+issue 23 (RMS of the horizontal channel above the mean + 6 sigma of the first 10 % of the
+run, three snapshots in a row) where that rule's own alarm is not a false one by the same
+count. Bearing2_2 is the case: its vibration rises threefold from 0.5 h to 1.2 h and falls
+back (a running-in of the 4200 N condition, above the 6 - 10 kHz band nothing changes) and
+fails at 2.1 h; the reference rule alarms at 0.8 h, in that rise.
 """
 
 import csv
@@ -70,6 +75,7 @@ def test_the_alarm_comes_after_the_baseline_and_before_the_stop(row, trends):
     assert len(r.files) == len(list_records(RUNS / row["bearing"]).files)
     assert r.alarm is not None
     assert r.baseline_stop <= r.alarm.record < len(r.files) - 1
+    assert r.times[r.alarm.record] >= r.times[-1] / 2, "an alarm in the first half of the life"
     assert np.all(np.diff(r.times) > 0)
 
 
@@ -77,7 +83,7 @@ def test_the_alarm_comes_after_the_baseline_and_before_the_stop(row, trends):
 def test_the_alarm_comes_no_later_than_the_reference_rule(row, trends):
     r = trends[row["bearing"]]
     reference = plain_rule(r.values["rms"][:, 0])
-    if reference is not None:
+    if reference is not None and r.times[reference] >= r.times[-1] / 2:
         assert r.alarm.record <= reference, (r.times[r.alarm.record], r.times[reference])
 
 

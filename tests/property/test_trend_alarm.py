@@ -74,9 +74,11 @@ def test_healthy_simulated_series_alarm_at_no_more_than_the_stated_rate(tmp_path
             tmp_path / f"healthy{seed}", BEARING, CONDITION, records=100, seed=seed
         )
         counts = {"settle_records": 0, "baseline_records": 40}
-        assert trend_records(folder, **counts).alarm is None  # the default 1e-6 per record
-        # a level whose firings can be counted: 2 % per record, 2 records in a row
-        result = trend_records(folder, false_alarm=0.02, persistence_records=2, **counts)
+        assert trend_records(folder, **counts).alarm is None  # 1e-6 per record at 10 s
+        # a level whose firings can be counted: 2 % per record (7.2 per hour at a record
+        # every 10 s), 2 records in a row
+        result = trend_records(folder, false_alarm_per_hour=7.2, persistence_records=2, **counts)
+        assert result.false_alarm == pytest.approx(0.02)
         f, w = _fired(result)
         fired, windows = fired + f, windows + w
     # no more than the stated rate: not significantly more (99.9 %) than 2 % of the windows

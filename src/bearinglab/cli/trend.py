@@ -85,7 +85,8 @@ def _print(out: dict) -> None:
         [
             "rule",
             f"{rule['tests']} tests, {rule['persistence']} records in a row above a limit; "
-            f"false alarm <= {rule['false_alarm_per_record']:.3g} per record, <= "
+            f"false alarm <= {rule['false_alarm_per_hour']:.3g} per hour of monitoring "
+            f"({rule['false_alarm_per_record']:.3g} per record), <= "
             f"{rule['false_alarm_per_run']:.3g} over the {rule['monitored_records']} records "
             "monitored",
         ],

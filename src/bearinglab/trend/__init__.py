@@ -21,7 +21,7 @@ Modules, one sub-problem each:
 Sources are cited in each module; docs/capabilities/trend.md says what was measured.
 """
 
-from .alarm import FALSE_ALARM, PERSISTENCE, plain_rule
+from .alarm import FALSE_ALARM_PER_HOUR, PERSISTENCE, plain_rule
 from .analysis import BASELINE, SETTLE, trend_records
 from .indicators import INDICATORS
 from .result import Alarm, TrendResult
@@ -29,7 +29,7 @@ from .severity import MACHINES
 
 __all__ = [
     "BASELINE",
-    "FALSE_ALARM",
+    "FALSE_ALARM_PER_HOUR",
     "INDICATORS",
     "MACHINES",
     "PERSISTENCE",

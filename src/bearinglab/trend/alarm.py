@@ -42,6 +42,13 @@ exceeds the scale of its upper tail (:func:`rising_baselines`).
 raises a false alarm at a given record is at most alpha, and over a run of N monitored
 records at most (N - r + 1) alpha. The alarm is latched: once raised it stays.
 
+**Rate in time.** The user states the false-alarm rate per hour of monitoring, lambda:
+the cost of a false alarm is counted in time, not in records, and a series recorded
+sparsely (PRONOSTIA's every 10th snapshot, 100 s apart) must not be held to a stricter
+rule per hour than the same machine recorded every 10 s. At a cadence of one record
+every Delta t seconds the level per record is alpha = lambda Delta t / 3600 (the union
+bound over the 3600 / Delta t records of an hour).
+
 The statement rests on independent records and the exponential tail; slow drifts and
 correlated records make real rates higher (docs/capabilities/trend.md measures them on
 healthy simulated series and on the healthy stretches of real runs).
@@ -64,10 +71,13 @@ STATISTICS = {
     "kurtosis": np.log,
     "spectral_kurtosis": lambda v: np.log(np.asarray(v) + 2.0),
 }
-#: Default probability of a false alarm at a given record, all tests together [-]: low,
-#: because real indicators drift and the rule fires on healthy stretches of real runs
-#: tens of times more often than its model says (docs/capabilities/trend.md).
-FALSE_ALARM = 1e-6
+#: Default false-alarm rate of the rule, all tests together, per hour of monitoring
+#: [1/h]: 1e-6 per record at PRONOSTIA's cadence of a record every 10 s, the level per
+#: record set low because real indicators drift and the rule fires on healthy stretches
+#: of real runs tens of times more often than its model says (docs/capabilities/trend.md).
+FALSE_ALARM_PER_HOUR = 3.6e-4
+#: Largest level per record the tail model is used at [-].
+MAX_LEVEL_PER_RECORD = 0.1
 #: Default persistence: how long the records above a limit must last to raise the alarm [s].
 PERSISTENCE = 30.0
 #: Fewest consecutive records a persistence given as a duration asks for.
@@ -154,15 +164,42 @@ def first_run(exceed, persistence: int) -> int | None:
     return int(hits[0]) + persistence - 1 if hits.size else None
 
 
-def check_false_alarm(false_alarm) -> float:
-    """The rule's probability per record, in (0, 0.1], else InputError."""
+def check_false_alarm_per_hour(rate) -> float:
+    """The rule's false-alarm rate per hour of monitoring, > 0 and finite, else InputError
+    (its level per record is checked by :func:`level_per_record`)."""
     try:
-        p = float(false_alarm)
+        p = float(rate)
     except (TypeError, ValueError):
         p = math.nan
-    if isinstance(false_alarm, bool) or not (0.0 < p <= 0.1):
-        raise InputError("false_alarm", false_alarm, "a probability per record in (0, 0.1]")
+    if isinstance(rate, bool) or not (math.isfinite(p) and p > 0.0):
+        raise InputError("false_alarm_per_hour", rate, "a rate > 0 per hour of monitoring")
     return p
+
+
+def level_per_record(rate_per_hour: float, spacing: float) -> float:
+    """The rule's level per record for ``rate_per_hour`` [1/h] at a record every
+    ``spacing`` [s] (module docstring); InputError when the records are not spaced in
+    time or the level exceeds MAX_LEVEL_PER_RECORD.
+
+    >>> [float(f"{level_per_record(3.6e-4, s):.3g}") for s in (10.0, 100.0)]
+    [1e-06, 1e-05]
+    """
+    if not (math.isfinite(spacing) and spacing > 0):
+        raise InputError(
+            "folder",
+            spacing,
+            "records at distinct times (a median spacing > 0 s)",
+            hint="most records share their time with another: duplicated time stamps?",
+        )
+    alpha = rate_per_hour * spacing / 3600.0
+    if alpha > MAX_LEVEL_PER_RECORD:
+        raise InputError(
+            "false_alarm_per_hour",
+            rate_per_hour,
+            f"at most {MAX_LEVEL_PER_RECORD * 3600.0 / spacing:.3g} per hour at a record every "
+            f"{spacing:.3g} s ({MAX_LEVEL_PER_RECORD:g} per record)",
+        )
+    return alpha
 
 
 def persistence_count(duration: float, spacing: float) -> int:

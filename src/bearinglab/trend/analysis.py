@@ -19,14 +19,15 @@ import numpy as np
 from ..errors import InputError
 from ..operating import speed_error
 from .alarm import (
-    FALSE_ALARM,
+    FALSE_ALARM_PER_HOUR,
     MAX_PERSISTENCE_RECORDS,
     MIN_BASELINE_RECORDS,
     PERSISTENCE,
     STATISTICS,
     baseline_limits,
-    check_false_alarm,
+    check_false_alarm_per_hour,
     first_alarms,
+    level_per_record,
     persistence_count,
     rising_baselines,
 )
@@ -144,10 +145,10 @@ def _baseline(times, settle, settle_n, baseline, baseline_n) -> tuple[int, int]:
     return first, stop
 
 
-def _rule(false_alarm, persistence, persistence_n, settle, settle_n, baseline, baseline_n) -> dict:
-    """The rule's settings, checked: false_alarm, persistence (s or records), settle and
-    baseline (s or records)."""
-    p = check_false_alarm(false_alarm)
+def _rule(rate, persistence, persistence_n, settle, settle_n, baseline, baseline_n) -> dict:
+    """The rule's settings, checked: the false-alarm rate per hour, persistence (s or
+    records), settle and baseline (s or records)."""
+    p = check_false_alarm_per_hour(rate)
     persist_s, persist_n = _length("persistence", persistence, persistence_n)
     if persist_n is not None and not 1 <= persist_n <= MAX_PERSISTENCE_RECORDS:
         raise InputError(
@@ -162,7 +163,7 @@ def _rule(false_alarm, persistence, persistence_n, settle, settle_n, baseline, b
     if base_count is not None and base_count < MIN_BASELINE_RECORDS:
         raise InputError("baseline_records", base_count, f"at least {MIN_BASELINE_RECORDS} records")
     return {
-        "false_alarm": p,
+        "false_alarm_per_hour": p,
         "persistence": persist_s,
         "persistence_n": persist_n,
         "settle": settle_s,
@@ -212,14 +213,16 @@ def _frequencies(bearing, shaft_speed):
 
 def _evaluate(times, values, channels, first, stop, rule, warnings) -> dict:
     """The tests, their limits from the baseline records first..stop-1, their first
-    alarms and the alarm (with the record spacing and the persistence it gives)."""
+    alarms and the alarm (with the record spacing, the level per record and the
+    persistence they give)."""
     spacing = float(np.median(np.diff(times))) if times.size > 1 else 0.0
+    level = level_per_record(rule["false_alarm_per_hour"], spacing)
     r = rule["persistence_n"]
     if r is None:
         r = persistence_count(rule["persistence"], spacing)
     tests = tuple((name, c) for name in INDICATORS for c in range(len(channels)))
     stats = np.column_stack([STATISTICS[name](values[name][:, c]) for name, c in tests])
-    limits = baseline_limits(stats, slice(first, stop), rule["false_alarm"] / len(tests), r)
+    limits = baseline_limits(stats, slice(first, stop), level / len(tests), r)
     alarms = first_alarms(stats, limits, stop, r)
     for j, p, rise in rising_baselines(times, stats, slice(first, stop), limits):
         name, c = tests[j]
@@ -235,6 +238,7 @@ def _evaluate(times, values, channels, first, stop, rule, warnings) -> dict:
         name, c = tests[j]
         alarm = Alarm(index, name, channels[c], float(values[name][index, c]))
     return {
+        "false_alarm": level,
         "persistence": r,
         "record_spacing": spacing,
         "tests": tests,
@@ -253,7 +257,7 @@ def trend_records(
     settle_records: int | None = None,
     baseline: float | None = BASELINE,
     baseline_records: int | None = None,
-    false_alarm: float = FALSE_ALARM,
+    false_alarm_per_hour: float = FALSE_ALARM_PER_HOUR,
     persistence: float | None = PERSISTENCE,
     persistence_records: int | None = None,
     unit: str | None = None,
@@ -283,9 +287,10 @@ def trend_records(
         The baseline after the settling: a duration [s] (holding at least 30 records:
         it is extended when the records are sparse), or a count of records (at least
         10). A count wins.
-    false_alarm : float
-        Probability that the rule raises a false alarm at a given record, all tests
-        together, in (0, 0.1] (:mod:`.alarm`).
+    false_alarm_per_hour : float
+        Rate of false alarms of the rule per hour of monitoring, all tests together, in
+        (0, 1] [1/h]: the level per record is this times the records' spacing over 3600 s
+        (:mod:`.alarm`).
     persistence, persistence_records : float or int
         How long records above a limit must last to raise the alarm: a duration [s]
         (the records spanning it at the series' cadence, at least 2), or a count of
@@ -313,7 +318,7 @@ def trend_records(
     from .tasks import read_chunk
 
     rule = _rule(
-        false_alarm,
+        false_alarm_per_hour,
         persistence,
         persistence_records,
         settle,
@@ -398,7 +403,7 @@ def trend_records(
         zones=zones,
         settle_records=first,
         baseline_stop=stop,
-        false_alarm=rule["false_alarm"],
+        false_alarm_per_hour=rule["false_alarm_per_hour"],
         diagnosis=diagnosis,
         **evaluation,
         warnings=tuple(warnings),

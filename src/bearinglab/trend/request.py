@@ -8,7 +8,7 @@ from dataclasses import replace
 
 from ..errors import InputError
 from ..inputs import BEARING, INPUTS, Input, bearing_from, bearing_warnings, check, speed_from
-from .alarm import FALSE_ALARM, PERSISTENCE
+from .alarm import FALSE_ALARM_PER_HOUR, PERSISTENCE
 from .analysis import BASELINE, SETTLE
 
 #: The trend's inputs besides the bearing, in the order the command line lists them.
@@ -48,11 +48,15 @@ TREND_INPUTS: dict[str, Input] = {
         "(extended when the records are sparse).",
     ),
     "baseline_records": Input("integer", None, "Baseline as a number of records instead (>= 10)."),
-    "false_alarm": Input(
+    "false_alarm_per_hour": Input(
         "number",
-        FALSE_ALARM,
-        "Probability of a false alarm at a given record, all indicators and channels "
-        "together (the rule's tail model).",
+        FALSE_ALARM_PER_HOUR,
+        "Rate of false alarms per hour of monitoring, all indicators and channels together "
+        "(the rule's tail model); the level per record is this times the records' spacing "
+        "over 3600 s (at most 0.1).",
+        low=0.0,
+        low_open=True,
+        what="a rate per hour",
     ),
     "persistence_s": Input(
         "number",
@@ -128,7 +132,7 @@ def trend_from(values: dict, *, jobs: int = 1, scheduler=None, progress=None):
             settle_records=values.get("settle_records"),
             baseline=BASELINE if values.get("baseline_s") is None else values["baseline_s"],
             baseline_records=values.get("baseline_records"),
-            false_alarm=values.get("false_alarm", FALSE_ALARM),
+            false_alarm_per_hour=values.get("false_alarm_per_hour", FALSE_ALARM_PER_HOUR),
             persistence=PERSISTENCE
             if values.get("persistence_s") is None
             else values["persistence_s"],

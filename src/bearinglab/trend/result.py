@@ -47,10 +47,11 @@ class TrendResult:
     ``files``, ``times`` [s from the first record], ``values`` (indicator -> records x
     channels, in the channels' unit for rms and peak), ``velocity`` (records x channels
     [m/s], or None), ``zones`` (the machine's ISO boundaries, or None); the baseline is
-    records ``settle_records`` to ``baseline_stop`` - 1; ``tests`` (indicator, channel
-    index), their ``limits`` (:class:`~.alarm.TailLimit`, statistic units) and
-    ``first_alarms`` (record or None); ``alarm``; ``diagnosis``
-    (:class:`BlockDiagnosis` or None); ``warnings``.
+    records ``settle_records`` to ``baseline_stop`` - 1; the rule's false-alarm rate per
+    hour (``false_alarm_per_hour``) and the level per record it gives at the records'
+    spacing (``false_alarm``); ``tests`` (indicator, channel index), their ``limits``
+    (:class:`~.alarm.TailLimit`, statistic units) and ``first_alarms`` (record or None);
+    ``alarm``; ``diagnosis`` (:class:`BlockDiagnosis` or None); ``warnings``.
     """
 
     folder: str
@@ -67,6 +68,7 @@ class TrendResult:
     zones: object | None
     settle_records: int
     baseline_stop: int
+    false_alarm_per_hour: float
     false_alarm: float
     persistence: int
     record_spacing: float
@@ -162,9 +164,11 @@ class TrendResult:
             f"{self.record_spacing:.3g} s, the cadence), at a level of "
             f"{self.test_level:.3g} per record (Bonferroni). The alarm is raised by the first "
             f"test to alarm and stays raised. False-alarm probability: at most "
-            f"{self.false_alarm:.3g} per record, at most {self.false_alarm_per_run:.3g} over "
-            f"the {self.monitored_records} records monitored (independent records, "
-            f"exponential tail; measured rates: docs/capabilities/trend.md)."
+            f"{self.false_alarm_per_hour:.3g} per hour of monitoring, so "
+            f"{self.false_alarm:.3g} per record at a record every {self.record_spacing:.3g} s, "
+            f"and at most {self.false_alarm_per_run:.3g} over the {self.monitored_records} "
+            f"records monitored (independent records, exponential tail; measured rates: "
+            f"docs/capabilities/trend.md)."
         )
 
     # ------------------------------------------------------------------ outputs
@@ -268,6 +272,7 @@ class TrendResult:
                 "persistence": self.persistence,
                 "tests": len(self.tests),
                 "test_level": self.test_level,
+                "false_alarm_per_hour": self.false_alarm_per_hour,
                 "false_alarm_per_record": self.false_alarm,
                 "monitored_records": self.monitored_records,
                 "false_alarm_per_run": self.false_alarm_per_run,
