@@ -12,33 +12,151 @@ from numbers import Real
 
 
 class BearinglabError(Exception):
-    """Base class of all bearinglab errors."""
+    """Base class of all bearinglab errors.
+
+    They pickle with their fields (a worker process raises them, the client shows them):
+    an exception whose constructor takes other arguments than its message does not
+    otherwise survive the trip.
+
+    >>> import pickle
+    >>> e = pickle.loads(pickle.dumps(InputError("ball_count", 2, "an integer >= 3")))
+    >>> e.parameter, str(e)
+    ('ball_count', 'ball_count = 2 is not allowed: expected an integer >= 3')
+    """
+
+    def __reduce__(self):
+        return _restore, (type(self), self.args, self.__dict__)
+
+
+def _restore(cls, args, state):
+    """An error of class ``cls`` with its ``args`` and attributes ``state`` (unpickling)."""
+    error = cls.__new__(cls)
+    error.args = args
+    error.__dict__.update(state)
+    return error
 
 
 class InputError(BearinglabError, ValueError):
-    """A parameter is outside what the model allows.
+    """A parameter is outside what the model allows: an error as data.
 
-    A missing value (None) reads "is not given" rather than "= None".
+    It carries the ``parameter`` (a model parameter, or the public name of an input once
+    the request has restated it), the ``value`` given, what is ``allowed`` and a ``hint``.
+    Numbers inside ``allowed`` and ``hint`` may be fields, ``{name}``, whose values
+    (``numbers``) are in ``unit``, so that the request can restate the error in the unit of
+    the input the user gave (:meth:`restated`) without rewording its text. Names of other
+    inputs are written in backquotes (`` `balls` ``): a front end renders them as it names
+    inputs (the command line as flags). A missing value (None) reads "is not given"
+    rather than "= None".
 
     >>> str(InputError("ball_count", 2, "an integer >= 3"))
     'ball_count = 2 is not allowed: expected an integer >= 3'
     >>> str(InputError("viscosity", None, "the operating viscosity [m^2/s]"))
     'viscosity is not given: expected the operating viscosity [m^2/s]'
+    >>> e = InputError("pitch_diameter", 0.005, "more than {d}", unit="m", numbers={"d": 0.00794})
+    >>> e.allowed, e.restated("pitch_diameter_mm", 5.0, 1e-3, "mm").allowed
+    ('more than 0.00794 m', 'more than 7.94 mm')
     """
 
-    def __init__(self, parameter: str, value: object, allowed: str, hint: str = "") -> None:
+    def __init__(
+        self,
+        parameter: str,
+        value: object,
+        allowed: str,
+        hint: str = "",
+        *,
+        unit: str = "",
+        numbers: dict | None = None,
+    ) -> None:
         self.parameter = parameter
         self.value = value
-        self.allowed = allowed
-        self.hint = hint
-        message = (
-            f"{parameter} is not given: expected {allowed}"
-            if value is None
-            else f"{parameter} = {value!r} is not allowed: expected {allowed}"
+        self.template = (allowed, hint)
+        self.unit = unit
+        self.numbers = dict(numbers or {})
+        super().__init__(self.message)
+
+    @staticmethod
+    def _filled(text: str, numbers: dict, scale: float, unit: str) -> str:
+        for key, number in numbers.items():
+            shown = f"{number / scale:.6g}" + (f" {unit}" if unit else "")
+            text = text.replace("{" + key + "}", shown)
+        return text
+
+    @property
+    def allowed(self) -> str:
+        """What is allowed, its numbers filled in."""
+        return self._filled(self.template[0], self.numbers, 1.0, self.unit)
+
+    @property
+    def hint(self) -> str:
+        """The hint, its numbers filled in ('' for none)."""
+        return self._filled(self.template[1], self.numbers, 1.0, self.unit)
+
+    @property
+    def message(self) -> str:
+        """The error in one line, naming the parameter as it is called here."""
+        return self.worded(self.parameter)
+
+    def worded(self, name: str, names=None) -> str:
+        """The message with the parameter called ``name`` and each backquoted name of the
+        texts replaced by ``names(name)`` (default: kept in backquotes)."""
+        allowed, hint = (markup(t, names) for t in (self.allowed, self.hint))
+        text = (
+            f"{name} is not given: expected {allowed}"
+            if self.value is None
+            else f"{name} = {self.value!r} is not allowed: expected {allowed}"
         )
-        if hint:
-            message += f" ({hint})"
-        super().__init__(message)
+        return text + (f" ({hint})" if hint else "")
+
+    def restated(
+        self,
+        parameter: str,
+        value: object,
+        scale: float = 1.0,
+        unit: str | None = None,
+        names=None,
+    ) -> InputError:
+        """This error about ``parameter`` with ``value``, its numbers in ``unit`` (one of
+        which is ``scale`` in this error's unit; by default this error's), its backquoted
+        names renamed by ``names(name)``."""
+        allowed, hint = (markup(t, names) for t in self.template)
+        numbers = {k: v / scale for k, v in self.numbers.items()}
+        unit = self.unit if unit is None else unit
+        return InputError(parameter, value, allowed, hint, unit=unit, numbers=numbers)
+
+    def to_dict(self) -> dict:
+        """The error as JSON-ready fields: input, value (as given; text when it is not a
+        number, a text or null), allowed, hint, unit and the message."""
+        value = self.value
+        if not (value is None or isinstance(value, (bool, int, float, str))):
+            value = str(value)
+        elif isinstance(value, float) and not math.isfinite(value):
+            value = repr(value)
+        return {
+            "input": self.parameter,
+            "value": value,
+            "allowed": self.allowed,
+            "hint": self.hint or None,
+            "unit": self.unit or None,
+            "message": self.message,
+        }
+
+
+def markup(text: str, names=None) -> str:
+    """``text`` with each name written in backquotes replaced by ``names(name)`` (kept as
+    it is without ``names``): the one way messages name inputs.
+
+    >>> markup("give `balls` and `ball_diameter_mm`", lambda n: "--" + n.replace("_", "-"))
+    'give --balls and --ball-diameter-mm'
+    """
+    if names is None or "`" not in text:
+        return text
+    parts = text.split("`")
+    if len(parts) % 2 == 0:  # an unpaired backquote: not markup
+        return text
+    return "".join(
+        names(part) if i % 2 and part.isidentifier() else (f"`{part}`" if i % 2 else part)
+        for i, part in enumerate(parts)
+    )
 
 
 class DesignationError(BearinglabError, ValueError):

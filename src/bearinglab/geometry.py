@@ -187,7 +187,9 @@ class BallBearing:
             raise InputError(
                 "pitch_diameter",
                 self.pitch_diameter,
-                f"more than the ball diameter {self.ball_diameter:.6g} m",
+                "more than the ball diameter {D_w}",
+                unit="m",
+                numbers={"D_w": self.ball_diameter},
             )
         zmax = math.floor(math.pi / math.asin(self.ball_diameter / self.pitch_diameter))
         if z > zmax:
@@ -217,15 +219,19 @@ class BallBearing:
             raise InputError(
                 "diametral_clearance",
                 pd,
-                f"a value in [{-0.05 * self.ball_diameter:.3g}, {2 * a:.3g}] m",
+                "a value in [{low}, {high}]",
                 "beyond 2 A the balls are loose even at 90 degrees",
+                unit="m",
+                numbers={"low": -0.05 * self.ball_diameter, "high": 2 * a},
             )
         for name in ("bore", "outside_diameter", "width"):
             if getattr(self, name) is not None:
                 _positive(name, getattr(self, name))
         d, big_d = self.bore, self.outside_diameter
         if d is not None and big_d is not None and d >= big_d:
-            raise InputError("bore", d, f"less than the outside diameter {big_d:.6g} m")
+            raise InputError(
+                "bore", d, "less than the outside diameter {D}", unit="m", numbers={"D": big_d}
+            )
         if self.is_thrust:
             self._check_thrust_washers()
             return
@@ -254,14 +260,18 @@ class BallBearing:
             raise InputError(
                 "pitch_diameter",
                 self.pitch_diameter,
-                f"more than the bore plus the ball diameter {d + self.ball_diameter:.6g} m",
+                "more than the bore plus the ball diameter {limit}",
                 "the balls of a thrust bearing must clear the shaft",
+                unit="m",
+                numbers={"limit": d + self.ball_diameter},
             )
         if big_d is not None and self.pitch_diameter >= big_d:
             raise InputError(
                 "pitch_diameter",
                 self.pitch_diameter,
-                f"less than the outside diameter {big_d:.6g} m",
+                "less than the outside diameter {D}",
+                unit="m",
+                numbers={"D": big_d},
             )
 
     @property

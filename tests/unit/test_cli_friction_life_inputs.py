@@ -107,7 +107,11 @@ def test_r3_s3_of_a_deep_groove_bearing_are_named_as_without_effect(capsys):
 def test_unused_inputs_are_named_by_their_options(capsys):
     moot = ("--viscosity-mm2-s", "20", "--skf-constants", C62)
     constant = run_json(capsys, *SKF_6205, *moot)["warnings"]
-    assert "--viscosity-mm2-s and --skf-constants: no effect with --model constant" in constant
+    # --model (the option's old name, still accepted) is worded as its name, --friction-model
+    assert (
+        "--viscosity-mm2-s and --skf-constants: no effect with --friction-model constant"
+        in constant
+    )
     skf = run_json(
         capsys,
         *SKF_6205,

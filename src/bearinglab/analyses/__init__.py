@@ -13,9 +13,9 @@ from __future__ import annotations
 
 from ..errors import InputError
 from . import mechanics, operation, vibration
-from .base import Analysis, in_request_terms, inputs, pick
+from .base import Analysis, inputs, pick
 
-__all__ = ["ALIASES", "ANALYSES", "Analysis", "analysis", "in_request_terms", "inputs", "pick"]
+__all__ = ["ALIASES", "ANALYSES", "Analysis", "analysis", "inputs", "pick"]
 
 #: The registry, in the order the command line lists the analyses.
 ANALYSES: dict[str, Analysis] = {

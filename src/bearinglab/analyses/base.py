@@ -12,7 +12,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
-from ..inputs import BEARING, INPUTS, Input, check
+from ..inputs import BEARING, INPUTS, Input, closed
 
 
 def inputs(*names: str, **own: Input) -> dict[str, Input]:
@@ -26,20 +26,24 @@ BEARING_INPUTS = inputs(*BEARING)
 
 @dataclass(frozen=True)
 class Analysis:
-    """One analysis: ``options`` (name -> Input, what a request holds), ``outputs``
-    (study column -> "f" float, "i" integer, "s" text), ``run(values) -> result``,
+    """One entry of the registry: a command's request and what it gives.
+
+    ``options`` (name -> Input, what a request holds; an input whose default is ``...``
+    must be given), ``run(values) -> result`` (with ``to_dict()``) and, for an analysis a
+    study sweeps, ``outputs`` (study column -> "f" float, "i" integer, "s" text),
     ``columns(result) -> dict`` (the study's columns of a result; default its
-    ``to_dict()``), and for studies: ``largest`` cases per partition, an optional
-    ``batch(cases, seed) -> list`` of (outputs or exception) for a whole partition, the
-    modules a worker imports first (``warm``), ``probe``: inputs that make the warm-up
-    case short, and ``extra``: the inputs only a study takes."""
+    ``to_dict()``), ``largest`` cases per partition, an optional ``batch(cases, seed) ->
+    list`` of (outputs or exception) for a whole partition, the modules a worker imports
+    first (``warm``), ``probe``: inputs that make the warm-up case short, and ``extra``:
+    the inputs only a study takes. Calling the entry with a request runs it closed:
+    :meth:`__call__`."""
 
     name: str
     help: str
     options: dict
-    outputs: dict
     run: Callable
-    largest: int
+    outputs: dict = field(default_factory=dict)
+    largest: int = 0
     columns: Callable | None = None
     batch: Callable | None = None
     warm: tuple = field(default_factory=tuple)
@@ -47,20 +51,34 @@ class Analysis:
     #: inputs a study may give that the command does not take (sweepable numbers that a
     #: command gives as one specification, e.g. a fault's width)
     extra: tuple = ()
+    #: the files the command writes besides printing the result: name -> Input (a path)
+    files: dict = field(default_factory=dict)
 
     @property
     def command_options(self) -> dict:
         """The inputs of the analysis' command: every option less the study's extras."""
         return {k: v for k, v in self.options.items() if k not in self.extra}
 
+    @property
+    def sweepable(self) -> bool:
+        """Whether a study can sweep it (it names the columns it gives)."""
+        return bool(self.outputs)
+
+    def __call__(self, values: dict, **keywords):
+        """Run one request ``values`` (name -> value in its unit; None: not given), closed:
+        a key that is not one of the options is refused, naming the closest option; an
+        option that must be given and is not, and a value out of its range, are refused;
+        ``keywords`` go to ``run`` (a progress callback)."""
+        closed(values, self.options, self.name)
+        return self.run(values, **keywords)
+
     def evaluate(self, case: dict, seed: int) -> dict:
         """A study ``case``'s output columns; ``seed`` (the case's) draws its random inputs
         unless the case gives a ``seed``."""
-        values = {**case}
+        values = {k: v for k, v in case.items() if k != "case"}
         if "seed" in self.options and values.get("seed") is None:
             values["seed"] = seed
-        check(values, self.options)  # the ranges the command checks, too
-        result = self.run(values)
+        result = self(values)  # the ranges the command checks, too
         d = self.columns(result) if self.columns is not None else result.to_dict()
         return pick(d, self.outputs)
 
@@ -86,6 +104,24 @@ class Outcome:
         return self.result.plot(*args, **kwargs)
 
 
+#: The files a command may write besides printing its result, declared once; a command's
+#: reading of one says what it holds.
+FILES = {
+    "plot": Input("path", None, "Also draw the result to this .png, .svg or .pdf file."),
+    "html": Input("path", None, "Also write the result as one self-contained HTML page."),
+    "output": Input("path", None, "Write the result to this file.", aliases=("o",)),
+}
+
+
+def plot_file(what: str = "the result") -> dict:
+    """The ``plot`` file of a command that draws ``what``."""
+    return {"plot": FILES["plot"].with_(help=f"Also draw {what} to this .png, .svg or .pdf file.")}
+
+
+#: The ``html`` page a command writes.
+HTML_FILE = {"html": FILES["html"]}
+
+
 def pick(d: dict, outputs: dict) -> dict:
     """The ``outputs`` columns of a result's dict ``d`` (lists joined for text columns)."""
     out = {}
@@ -95,51 +131,6 @@ def pick(d: dict, outputs: dict) -> dict:
             v = "; ".join(map(str, v)) if kind == "s" else None
         out[k] = v
     return out
-
-
-#: model parameter -> the input that holds it, where the two are not the same quantity name
-_PARAMETERS = {"shaft_speed": "speed_rpm", "noise": "noise_ms2"}
-
-
-def in_request_terms(exc, values: dict, names: dict | None = None):
-    """A library error ``exc`` about a model parameter as the input of the request
-    ``values`` that holds it: the input named in
-    ``names`` (parameter -> input), else the input whose name less its unit suffix is the
-    parameter (``duration`` -> ``duration_s``), with the value as given (or the error's SI
-    value in the input's unit) and lengths in the message in the input's unit. Errors
-    of other parameters are returned as they are."""
-    from ..errors import InputError
-    from ..inputs.bearing import _in_units
-    from ..units import unit_of
-
-    parameter = (names or {}).get(exc.parameter) or _PARAMETERS.get(exc.parameter, exc.parameter)
-    for name in values:
-        unit = unit_of(name)
-        base = name[: -len(unit.suffix) - 1] if unit is not None else name
-        if parameter not in (name, base):
-            continue
-        value = values.get(name)
-        if value is None and isinstance(exc.value, (int, float)) and unit is not None:
-            value = unit.from_si(exc.value)
-        allowed, hint = exc.allowed, exc.hint
-        if name.endswith("_mm"):
-            allowed, hint = _in_units(allowed, name), _in_units(hint, name)
-        words = {**(names or {}), exc.parameter: name}
-        return InputError(name, value, _as_inputs(allowed, words), _as_inputs(hint, words))
-    return exc
-
-
-def _as_inputs(text: str, names: dict) -> str:
-    """``text`` with the model parameters it names (``names``: parameter -> input) as the
-    request's inputs, in backquotes: "give P (equivalent_load)" -> "give P
-    (`equivalent_load_n`)", "use model='constant'" -> "use `model` constant"."""
-    import re
-
-    for parameter, name in names.items():
-        text = re.sub(rf"(?<![`\w]){parameter}='([^']*)'", rf"`{name}` \1", text)
-        if "_" in parameter:  # a plain word ("model", "seals") is prose as often as a name
-            text = re.sub(rf"(?<![`\w=]){parameter}(?![\w`=])", f"`{name}`", text)
-    return text
 
 
 def specs(value) -> list[str]:

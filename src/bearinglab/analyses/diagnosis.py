@@ -9,41 +9,26 @@ from dataclasses import replace
 
 from ..errors import InputError
 from ..inputs import BEARING, INPUTS, Input, bearing_from, bearing_warnings
+from .base import Analysis, plot_file
 
 #: The diagnosis' inputs besides the bearing.
 DIAGNOSIS_INPUTS: dict[str, Input] = {
-    "signal_file": Input(
-        "path",
-        ...,
-        "Vibration record: .npz, .csv (with a time column), .wav or .mat (CWRU variables, "
-        "MATLAB structs such as MFPT's bearing.gs, v7.3).",
-    ),
-    "channel": Input(
-        "text",
-        None,
-        "Channel or struct field path (e.g. DE, acc_y, bearing.gs or gs); default acc_y, DE "
-        "or gs if present, else the first.",
-    ),
+    "signal_file": INPUTS["signal_file"],
+    "channel": INPUTS["channel"],
     "record": Input(
         "text",
         None,
         "CWRU record of a .mat file holding several (e.g. X099); default the one named like "
         "the file.",
     ),
-    "sample_rate_hz": Input(
-        "number",
-        None,
-        "Sample rate [Hz], when the file does not say (CWRU .mat: 12000 or 48000) or to "
-        "override it.",
-        low=0.0,
-        low_open=True,
-        what="a sample rate",
+    "sample_rate_hz": INPUTS["sample_rate_hz"].with_(
+        help="Sample rate [Hz], when the file does not say (CWRU .mat: 12000 or 48000) or to "
+        "override it."
     ),
-    "speed_rpm": Input(
-        "text",
-        None,
-        "Shaft speed [rpm], or auto (the speed the signal shows); default the speed the file "
-        "records.",
+    "speed_rpm": INPUTS["speed_rpm"].with_(
+        kind="text",
+        help="Shaft speed [rpm], or auto (the speed the signal shows); default the speed the "
+        "file records.",
     ),
     "speed_range_rpm": Input(
         "text",
@@ -92,7 +77,14 @@ DIAGNOSIS_INPUTS: dict[str, Input] = {
     ),
 }
 #: The inputs of ``analyze``: the record's, then the bearing's.
-ANALYZE_INPUTS = {**DIAGNOSIS_INPUTS, **{name: INPUTS[name] for name in BEARING}}
+ANALYZE_INPUTS = {
+    **DIAGNOSIS_INPUTS,
+    **{name: INPUTS[name] for name in BEARING},
+    "designation": INPUTS["designation"].with_(
+        help="Bearing designation or catalogue name (e.g. ER-16K, 6205); optional with "
+        "explicit geometry."
+    ),
+}
 
 #: Library parameter -> the input to blame.
 _NAMES = {
@@ -229,4 +221,12 @@ def diagnose(values: dict):
     return replace(diag, warnings=(*diag.warnings, *bearing_warnings(bearing, decoded)))
 
 
-__all__ = ["ANALYZE_INPUTS", "DIAGNOSIS_INPUTS", "diagnose"]
+ANALYZE = Analysis(
+    "analyze",
+    "The diagnosis of a recorded vibration signal (analyze_file).",
+    ANALYZE_INPUTS,
+    run=diagnose,
+    files=plot_file("the squared envelope spectrum"),
+)
+
+__all__ = ["ANALYZE", "ANALYZE_INPUTS", "DIAGNOSIS_INPUTS", "diagnose"]

@@ -15,6 +15,7 @@ import numpy as np
 
 from ..errors import InputError
 from ..inputs import (
+    INPUTS,
     FormErrors,
     Input,
     bearing_from,
@@ -22,14 +23,15 @@ from ..inputs import (
     condition_from,
     lubricant_from,
     no_effect,
+    restate,
     speed_from,
 )
-from .base import BEARING_INPUTS, Analysis, Outcome, in_request_terms, inputs, specs
+from .base import BEARING_INPUTS, FILES, Analysis, Outcome, inputs, plot_file, specs
 
 _LOADS = inputs("radial_load_n", "axial_load_n")
 #: the form-error inputs, by the names the contact check gives them
 _FORM_INPUTS = ("waviness", "ball_size_error_um", "surface3d")
-_SPEED0 = {"speed_rpm": Input("number", 0.0, "Inner-ring speed [rpm].", low=0.0, high=1e6)}
+_SPEED0 = {"speed_rpm": INPUTS["speed_rpm"].with_(default=0.0, help="Inner-ring speed [rpm].")}
 
 
 # ------------------------------------------------------------------ quasi-static
@@ -100,7 +102,7 @@ def static(values: dict) -> StaticResult:
     try:
         plausibility = operating_warnings(bearing, condition)
     except InputError as exc:
-        raise in_request_terms(exc, values) from None
+        raise restate(exc, values, STATIC.options) from None
     seed = values.get("seed")
     imperfections = forms.build(bearing, seed)
     options = {
@@ -189,7 +191,8 @@ STATIC = Analysis(
         ),
         **inputs("waviness", "ball_size_error_um", "surface3d", "seed"),
     },
-    {
+    run=static,
+    outputs={
         "radial_displacement_um": "f",
         "axial_displacement_um": "f",
         "tilt_x_mrad": "f",
@@ -202,10 +205,21 @@ STATIC = Analysis(
         "orbit_peak_to_peak_um": "f",
         "warnings": "s",
     },
-    static,
-    500,
-    _static_columns,
+    largest=500,
+    columns=_static_columns,
     warm=("bearinglab.quasistatic",),
+    files={
+        **plot_file("the load distribution and the contact angles"),
+        "orbit_plot": Input(
+            "path",
+            None,
+            "Draw the orbit, the displacements and the ball centres to this .png, .svg or "
+            ".pdf file (implies `orbit`).",
+        ),
+        "stiffness_csv": Input(
+            "path", None, "Write the 5x5 stiffness matrix (SI) to this CSV file."
+        ),
+    },
 )
 
 
@@ -300,11 +314,175 @@ STIFFNESS = Analysis(
         **_SPEED0,
         **inputs("radial_load_angle_deg", "gyroscopic", "race_control"),
     },
-    _STIFFNESS_OUT,
-    _stiffness,
-    2000,
+    run=_stiffness,
+    outputs=_STIFFNESS_OUT,
+    largest=2000,
     batch=_stiffness_batch,
     warm=("bearinglab.quasistatic.study",),
+)
+
+
+# ------------------------------------------------------------------ stiffness map
+#: Most cases of one stiffness map.
+MAX_MAP_CASES = 1_000_000
+#: The forms a grid of values is given in.
+_GRID = "START:STOP:COUNT (COUNT 1..10000), a list A,B,C or one value"
+
+
+def grid(name: str, text) -> np.ndarray:
+    """The values of input ``name`` given as a grid ``text`` ('a:b:n': n values from a to
+    b, 'a,b,c' or one value), each checked against the input's range in the table.
+
+    >>> grid("speed_rpm", "0:3000:4").tolist()
+    [0.0, 1000.0, 2000.0, 3000.0]
+    """
+    text = str(text)
+    try:
+        if ":" in text:
+            a, b, n = text.split(":")
+            if not 1 <= int(n) <= 10000:
+                raise ValueError
+            values = np.linspace(float(a), float(b), int(n))
+        else:
+            values = np.array([float(v) for v in text.split(",")])
+    except ValueError:
+        raise InputError(name, text, _GRID) from None
+    for v in values:
+        INPUTS[name].check(name, float(v))
+    return values
+
+
+@dataclass(frozen=True)
+class StiffnessMap:
+    """Stiffness and displacements over a grid of loads and speeds
+    (:func:`bearinglab.quasistatic.study.stiffness_map`): the ``table`` (one row per case,
+    ``status`` "ok", "no load" or why not), the ``bearing``, the request's
+    ``designation`` and the ``warnings``."""
+
+    table: object
+    bearing: object
+    designation: str | None = None
+    warnings: tuple = field(default_factory=tuple)
+
+    @property
+    def solved(self):
+        """The rows that solved."""
+        return self.table[self.table["status"] == "ok"]
+
+    def to_dict(self) -> dict:
+        """The cases, how many solved, every row (non-finite values as null), warnings."""
+        rows = [
+            {
+                k: (None if isinstance(v, float) and not math.isfinite(v) else v)
+                for k, v in r.items()
+            }
+            for r in self.table.to_dict(orient="records")
+        ]
+        return {
+            "designation": self.designation,
+            "cases": len(rows),
+            "solved": len(self.solved),
+            "rows": rows,
+            "warnings": list(self.warnings),
+        }
+
+    def to_pandas(self):
+        """The table, one row per case."""
+        return self.table
+
+    def plot(self, ax=None):
+        """C_r and C_a over the radial load, one line per (axial load, speed); (fig, axes)."""
+        from ..plotting import stiffness_map_figure
+
+        if not len(self.solved):
+            raise InputError(
+                "radial_load_n",
+                None,
+                "a map with at least one solved case to draw",
+                "no case of the map solved, status: "
+                + ", ".join(sorted(set(self.table["status"]))),
+            )
+        return stiffness_map_figure(self.solved, ax)
+
+
+def stiffness_map_request(values: dict, progress=None) -> StiffnessMap:
+    """The ``stiffness-map`` request: the stiffness over the grids ``radial_load_n``,
+    ``axial_load_n`` and ``speed_rpm``, every value checked before any work;
+    ``progress(done, total)`` in cases."""
+    from ..quasistatic.study import stiffness_map
+
+    radial, axial, speeds = (
+        grid(n, values.get(n) if values.get(n) is not None else STIFFNESS_MAP.options[n].default)
+        for n in ("radial_load_n", "axial_load_n", "speed_rpm")
+    )
+    total = len(radial) * len(axial) * len(speeds)
+    if total > MAX_MAP_CASES:
+        raise InputError(
+            "radial_load_n",
+            values.get("radial_load_n"),
+            f"a grid of at most {MAX_MAP_CASES:g} cases in all (radial x axial x speed counts)",
+        )
+    workers = values.get("workers") or 0
+    bearing, decoded = bearing_from(values)
+    from ..quasistatic import check_speed
+
+    try:  # every speed of the grid, before any work
+        check_speed(bearing, float(np.max(speeds)) * math.pi / 30.0)
+    except InputError as exc:
+        raise restate(exc, values, STIFFNESS_MAP.options) from None
+    done = [0]
+
+    def advance(n: int) -> None:
+        done[0] += n
+        if progress is not None:
+            progress(done[0], total)
+
+    table = stiffness_map(
+        bearing,
+        radial,
+        axial,
+        speeds,
+        workers=workers or None,
+        progress=advance,
+        gyroscopic=bool(values.get("gyroscopic")),
+        race_control=values.get("race_control") or "outer",
+    )
+    return StiffnessMap(
+        table, bearing, values.get("designation"), tuple(bearing_warnings(bearing, decoded))
+    )
+
+
+STIFFNESS_MAP = Analysis(
+    "stiffness-map",
+    "Radial and axial stiffness over a grid of loads and speeds (stiffness_map).",
+    {
+        **BEARING_INPUTS,
+        "radial_load_n": INPUTS["radial_load_n"].with_(
+            kind="text",
+            default="0:2000:21",
+            help="Radial loads: START:STOP:COUNT, A,B,C or one value [N].",
+        ),
+        "axial_load_n": INPUTS["axial_load_n"].with_(
+            kind="text", default="0", help="Axial loads [N], same forms."
+        ),
+        "speed_rpm": INPUTS["speed_rpm"].with_(
+            kind="text", default="0", help="Speeds [rpm], same forms."
+        ),
+        **inputs("gyroscopic", "race_control"),
+        "workers": Input(
+            "integer",
+            0,
+            "Worker processes (default 0: all cores).",
+            low=0,
+            high=64,
+            what="a number of workers",
+        ),
+    },
+    run=stiffness_map_request,
+    files={
+        "output": FILES["output"].with_(help="Write the table to this CSV file."),
+        **plot_file("the radial and axial stiffness over the radial load"),
+    },
 )
 
 
@@ -338,25 +516,23 @@ FREQUENCIES = Analysis(
     "Kinematic defect frequencies (defect_frequencies).",
     {
         **BEARING_INPUTS,
-        "speed_rpm": Input("number", None, "Speed of the rotating ring [rpm].", low=0.0, high=1e6),
+        "speed_rpm": INPUTS["speed_rpm"].with_(default=...),
         **inputs("outer_rotating"),
     },
-    _FREQ_OUT,
-    frequencies,
-    20000,
+    run=frequencies,
+    outputs=_FREQ_OUT,
+    largest=20000,
+    files=plot_file("the defect frequencies"),
 )
 
 
 # ------------------------------------------------------------------ ring modes
 _RING_INPUTS = {
-    "axial_load_n": Input(
-        "number",
-        None,
-        "Axial load A [N], for K_x from the bearing (default 200 N).",
+    "axial_load_n": INPUTS["axial_load_n"].with_(
+        default=None,
+        help="Axial load A [N], for K_x from the bearing (default 200 N).",
         low=0.0,
-        high=1e7,
         low_open=True,
-        what="a load",
     ),
     "modes": Input("text", "2:6", "Modes FIRST:LAST or m1,m2,...; m = 1 is the rigid-body mode."),
     "ring_mass_kg": Input(
@@ -490,7 +666,7 @@ def ring_modes(values: dict) -> Outcome:
     try:
         r = _solve_modes(values, bearing, ms, free, ball_count)
     except InputError as exc:
-        raise in_request_terms(exc, {**dict.fromkeys(_RING_INPUTS), **values}) from None
+        raise restate(exc, values, RING_MODES.options) from None
     # the axial load gives K_x, from a bearing, when K_x is not given; given f1, K_x is
     # only reported (f1 fixes the contact stiffness)
     if r.to_dict()["axial_load_n"] is None:
@@ -549,10 +725,11 @@ RING_MODES = Analysis(
     "ring-modes",
     "Outer-ring natural frequencies (ring_modes, seed 000).",
     {**BEARING_INPUTS, **_RING_INPUTS},
-    _RING_OUT,
-    ring_modes,
-    2000,
-    _ring_columns,
+    run=ring_modes,
+    outputs=_RING_OUT,
+    largest=2000,
+    columns=_ring_columns,
     warm=("bearinglab.rings",),
     probe={"modes": "2:6"},
+    files=plot_file("the frequencies"),
 )

@@ -6,8 +6,18 @@ once and names the library's parameters in the request's terms."""
 from __future__ import annotations
 
 from ..errors import BearinglabError, CatalogError, InputError
-from ..inputs import Input, bearing_from, bearing_warnings, condition_from, no_effect, speed_from
-from .base import BEARING_INPUTS, Analysis, Outcome, in_request_terms, inputs
+from ..inputs import (
+    INPUTS,
+    Input,
+    bearing_from,
+    bearing_warnings,
+    condition_from,
+    input_for,
+    no_effect,
+    restate,
+    speed_from,
+)
+from .base import BEARING_INPUTS, Analysis, Outcome, inputs, plot_file
 
 _RATINGS = {
     "dynamic_load_rating_kn": Input(
@@ -29,24 +39,10 @@ _RATINGS = {
         what="a rating",
     ),
 }
-_SPEED = {
-    "speed_rpm": Input(
-        "number", None, "Speed of the rotating ring [rpm].", low=0.0, high=1e6, what="a speed"
-    )
-}
+_SPEED = {"speed_rpm": INPUTS["speed_rpm"].with_(default=...)}
 
 
 # ------------------------------------------------------------------ life
-_LIFE_NAMES = {
-    "shaft_speed": "speed_rpm",
-    "radial_load": "radial_load_n",
-    "axial_load": "axial_load_n",
-    "reliability_percent": "reliability_percent",
-    "viscosity": "viscosity_mm2_s",
-    "contamination": "contamination",
-    "dynamic_load_rating": "dynamic_load_rating_kn",
-    "static_load_rating": "static_load_rating_kn",
-}
 
 
 def _contamination(text):
@@ -73,14 +69,14 @@ def life(values: dict) -> Outcome:
         positive_speed=True,
         unloaded="an unloaded bearing has no rating life",
     )
-    method = values.get("method") or "iso281"
+    method = values.get("life_method") or "iso281"
     tilt = values.get("misalignment_mrad") or 0.0
     if tilt and method != "iso16281":
         raise InputError(
             "misalignment_mrad",
             tilt,
-            "0 with `method` iso281",
-            "ISO 281 has no misalignment; use `method` iso16281",
+            "0 with `life_method` iso281",
+            "ISO 281 has no misalignment; use `life_method` iso16281",
         )
     bearing, decoded = bearing_from(values)
     kn = UNITS["kn"]
@@ -115,7 +111,7 @@ def life(values: dict) -> Outcome:
             exc.hint,
         ) from None
     except InputError as exc:
-        raise in_request_terms(exc, values, _LIFE_NAMES) from None
+        raise restate(exc, values, LIFE.options) from None
     unused = no_effect(
         [("outer_rotating", "rotating" in result.unused)],
         "with `method` iso281 (only iso16281 tells which ring turns)",
@@ -150,32 +146,28 @@ LIFE = Analysis(
             "(extreme-cleanliness, high-cleanliness, normal-cleanliness, slight, typical, "
             "severe, very-severe); default normal-cleanliness with a viscosity.",
         ),
-        "method": Input(
+        "life_method": Input(
             "text",
             "iso281",
             "iso281: L10 = (C/P)^3; iso16281: reference life from the solved load "
             "distribution (clearance, misalignment).",
             choices=("iso281", "iso16281"),
+            aliases=("method",),
+            sets="method",
         ),
-        "misalignment_mrad": Input(
-            "number",
-            0.0,
-            "Imposed tilt of the inner ring across the radial load [mrad] (iso16281 only).",
-            low=-20.0,
-            high=20.0,
-            what="a tilt",
+        "misalignment_mrad": INPUTS["misalignment_mrad"].with_(
+            help="Imposed tilt of the inner ring across the radial load [mrad] (iso16281 only)."
         ),
-        "outer_rotating": Input(
-            "bool",
-            False,
-            "The outer ring turns (iso16281: which ring's equivalent load uses exponent 3).",
+        "outer_rotating": INPUTS["outer_rotating"].with_(
+            help="The outer ring turns (iso16281: which ring's equivalent load uses exponent 3).",
         ),
         "ep_additives": Input(
             "bool", False, "The lubricant has proven EP additives (ISO 281 rule for kappa < 1)."
         ),
         **_RATINGS,
     },
-    {
+    run=life,
+    outputs={
         **{
             k: "f"
             for k in (
@@ -196,38 +188,15 @@ LIFE = Analysis(
         },
         "warnings": "s",
     },
-    life,
-    5000,
+    largest=5000,
     warm=("bearinglab.life",),
+    files=plot_file("life against load"),
 )
 
 
 # ------------------------------------------------------------------ friction
 #: The lubricant when neither lubricant nor viscosity_mm2_s is given (SKF model).
 DEFAULT_LUBRICANT = "iso-vg68"
-_FRICTION_NAMES = {
-    "model": "model",
-    "shaft_speed": "speed_rpm",
-    "radial_load": "radial_load_n",
-    "axial_load": "axial_load_n",
-    "equivalent_load": "equivalent_load_n",
-    "static_load_rating": "static_load_rating_kn",
-    "viscosity": "viscosity_mm2_s",
-    "temperature": "temperature_c",
-    "lubricant": "lubricant",
-    "lubrication": "lubrication",
-    "lubricant_kind": "oil",
-    "friction_type": "friction_type",
-    "bearing_type": "designation",
-    "series": "designation",
-    "constants": "skf_constants",
-    "seals": "seals",
-    "seal_constants": "seal_constants",
-    "seal_diameter": "seal_diameter_mm",
-    "bore": "bore_mm",
-    "outside_diameter": "outside_diameter_mm",
-    "pitch_diameter": "pitch_diameter_mm",
-}
 
 
 def _numbers(name: str, text, allowed: str, counts: tuple) -> list[float] | None:
@@ -302,7 +271,7 @@ def friction(values: dict) -> Outcome:
 
     omega = speed_from(values, positive=False)
     condition_from({k: values.get(k) for k in ("radial_load_n", "axial_load_n")})
-    model = values.get("model") or "constant"
+    model = values.get("friction_model") or "constant"
     c = _numbers(
         "skf_constants",
         values.get("skf_constants"),
@@ -346,14 +315,17 @@ def friction(values: dict) -> Outcome:
             seal_diameter=None if ds is None else UNITS["mm"].to_si(ds),
         )
     except InputError as exc:
-        raise in_request_terms(exc, values, _FRICTION_NAMES) from None
+        raise restate(exc, values, FRICTION.options) from None
     unused = result.unused
     seal = model == "skf" and "seal_diameter" in unused
     rest = [n for n in unused if n not in ("r3", "s3") and not (seal and n == "seal_diameter")]
     warnings = (
         warnings
         + list(result.warnings)
-        + no_effect([(_FRICTION_NAMES[n], True) for n in rest], f"with `model` {model}")
+        + no_effect(
+            [(input_for(n, FRICTION.options) or n, True) for n in rest],
+            f"with `friction_model` {model}",
+        )
         + no_effect([("seal_diameter_mm", seal)], "without seal_constants")
         + no_effect(
             [("R3,S3 of skf_constants", "r3" in unused or "s3" in unused)],
@@ -368,14 +340,21 @@ FRICTION = Analysis(
     "Friction torque and power loss (bearing_friction).",
     {
         **BEARING_INPUTS,
+        "designation": INPUTS["designation"].with_(
+            help="Bearing designation or catalogue name; optional with `bore_mm` and "
+            "`outside_diameter_mm`.",
+            sets=("bearing_type", "series"),
+        ),
         **_SPEED,
         **inputs("radial_load_n", "axial_load_n"),
-        "model": Input(
+        "friction_model": Input(
             "text",
             "constant",
             "constant: seed 003's M = mu P d_m / 2; skf: SKF's rolling + sliding + seal "
             "(+ drag) model.",
             choices=("constant", "skf"),
+            aliases=("model",),
+            sets="model",
         ),
         "friction_type": Input(
             "text",
@@ -399,10 +378,8 @@ FRICTION = Analysis(
             help="Basic static load rating C_0 [kN] for the SKF model with an axial load on "
             "a deep-groove bearing (default: ISO 76 from the geometry)."
         ),
-        "lubricant": Input(
-            "text",
-            None,
-            "Lubricant (built-in: iso-vg68, seed004-grease) for the viscosity at "
+        "lubricant": INPUTS["lubricant"].with_(
+            help="Lubricant (built-in: iso-vg68, seed004-grease) for the viscosity at "
             "temperature_c, and grease or oil for the lubrication default (SKF model; default "
             "iso-vg68 unless viscosity_mm2_s is given).",
         ),
@@ -419,12 +396,14 @@ FRICTION = Analysis(
             "mineral",
             "Kind of oil, sets mu_EHL.",
             choices=("mineral", "synthetic", "transmission-fluid"),
+            sets="lubricant_kind",
         ),
         "skf_constants": Input(
             "text",
             None,
             "SKF geometry constants R1,R2,S1,S2 (deep groove) or R1,R2,S1,S2,R3,S3 (angular "
             "contact).",
+            sets="constants",
         ),
         "seals": Input(
             "text",
@@ -447,7 +426,8 @@ FRICTION = Analysis(
             what="a diameter",
         ),
     },
-    {
+    run=friction,
+    outputs={
         "friction_torque_n_mm": "f",
         "power_loss_w": "f",
         "friction_coefficient": "f",
@@ -457,7 +437,6 @@ FRICTION = Analysis(
         "drag_torque_n_mm": "f",
         "warnings": "s",
     },
-    friction,
-    5000,
+    largest=5000,
     warm=("bearinglab.friction",),
 )

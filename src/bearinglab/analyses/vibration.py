@@ -14,6 +14,7 @@ import numpy as np
 
 from ..errors import BearinglabError, InputError
 from ..inputs import (
+    INPUTS,
     FormErrors,
     Input,
     bearing_from,
@@ -21,15 +22,12 @@ from ..inputs import (
     check_defects,
     condition_from,
     parse_defect,
+    restate,
     speed_from,
 )
-from .base import BEARING_INPUTS, Analysis, in_request_terms, inputs, specs
+from .base import BEARING_INPUTS, FILES, Analysis, inputs, plot_file, specs
 
-_SHAFT = {
-    "speed_rpm": Input(
-        "number", None, "Shaft (inner-ring) speed [rpm].", low=0.0, high=1e6, what="a speed"
-    )
-}
+_SHAFT = {"speed_rpm": INPUTS["speed_rpm"].with_(help="Shaft (inner-ring) speed [rpm].")}
 _FORMS = inputs("waviness", "ball_size_error_um", "surface3d")
 
 #: Study-only inputs: the waviness of each race as sweepable numbers.
@@ -147,7 +145,7 @@ def noise(values: dict, progress=None) -> NoiseOutcome:
                 "inner ring and the balls' path)",
                 f"the bearing's outside radius {how} is {radius * 1e3:.4g} mm",
             ) from None
-        raise in_request_terms(exc, values) from None
+        raise restate(exc, values, NOISE.options) from None
     warnings = bearing_warnings(bearing, decoded) + result.to_dict()["warnings"]
     return NoiseOutcome(
         result, bearing, imperfections, values.get("designation"), seed or 0, tuple(warnings)
@@ -159,15 +157,9 @@ NOISE = Analysis(
     "Sound pressure of a bearing with form errors (noise_analysis).",
     {
         **BEARING_INPUTS,
-        **_SHAFT,
-        "radial_load_n": Input(
-            "number",
-            None,
-            "Radial load F_r on the shaft, downwards [N] (> 0).",
-            low=0.0,
-            high=1e7,
-            low_open=True,
-            what="a load",
+        "speed_rpm": _SHAFT["speed_rpm"].with_(default=...),
+        "radial_load_n": INPUTS["radial_load_n"].with_(
+            default=..., help="Radial load F_r on the shaft, downwards [N] (> 0).", low_open=True
         ),
         **_FORMS,
         **inputs("seed"),
@@ -186,14 +178,9 @@ NOISE = Analysis(
             "Direction of the field point in the radial plane, from +x towards +y [deg] "
             "(90 = straight up, against the load).",
         ),
-        "duration_s": Input(
-            "number",
-            None,
-            "Length of the orbit record [s] (default: one cage revolution, so each ball "
+        "duration_s": INPUTS["duration_s"].with_(
+            help="Length of the orbit record [s] (default: one cage revolution, so each ball "
             "carries its size error round once).",
-            low=0.0,
-            low_open=True,
-            what="a duration",
         ),
         "points": Input(
             "integer",
@@ -214,7 +201,8 @@ NOISE = Analysis(
         ),
         **_WAVES,
     },
-    {
+    run=noise,
+    outputs={
         "spl_leq_db": "f",
         "spl_time_mean_db": "f",
         "spl_time_max_db": "f",
@@ -225,11 +213,16 @@ NOISE = Analysis(
         "orbit_peak_to_peak_um": "f",
         "warnings": "s",
     },
-    noise,
-    50,
+    largest=50,
     warm=("bearinglab.noise",),
     probe={"duration_s": 0.005, "bands_from": "orbit"},
     extra=tuple(_WAVES),
+    files={
+        "plot": FILES["plot"].with_(
+            help="Draw the pressure and SPL over time, the pressure spectrum and the "
+            "directivity to this .png, .svg or .pdf file."
+        )
+    },
 )
 
 
@@ -304,7 +297,7 @@ def simulate(values: dict, progress=None) -> SimulateOutcome:
     condition = condition_from(
         {k: values.get(k) for k in ("speed_rpm", "radial_load_n", "axial_load_n")}
     )
-    model = values.get("model") or "rigid"
+    model = values.get("dynamic_model") or "rigid"
     defects = defects_of(values)
     forms = forms_of(values)
     bearing, decoded = bearing_from(values)
@@ -318,10 +311,12 @@ def simulate(values: dict, progress=None) -> SimulateOutcome:
         try:
             parameters = SlipParameters(**{k: v for k, v in slip.items() if v is not None})
         except InputError as exc:
-            raise in_request_terms(exc, values) from None
+            raise restate(exc, values, SIMULATE.options) from None
     elif any(v is not None for v in slip.values()):
         name = next(k for k, v in slip.items() if v is not None)
-        raise InputError(name, slip[name], "no value with `model` rigid (a slip-model parameter)")
+        raise InputError(
+            name, slip[name], "no value with `dynamic_model` rigid (a slip-model parameter)"
+        )
     try:
         record = simulate_record(
             bearing,
@@ -342,17 +337,17 @@ def simulate(values: dict, progress=None) -> SimulateOutcome:
         name = bearing.name or "the bearing"
         if exc.parameter in ("inner_mass", "outer_mass") and exc.value is None:
             raise BearinglabError(
-                "`model` slip needs the ring masses, which follow from the boundary dimensions "
-                f"{name} lacks: give bore_mm, outside_diameter_mm and width_mm"
+                "`dynamic_model` slip needs the ring masses, which follow from the boundary "
+                f"dimensions {name} lacks: give `bore_mm`, `outside_diameter_mm` and `width_mm`"
             ) from None
         if exc.parameter == "contact_angle":
             raise InputError(
-                "model",
+                "dynamic_model",
                 "slip",
                 "rigid for this bearing (the slip model is planar: contact angle 0; "
                 f"{name} has {exc.value:g} deg)",
             ) from None
-        raise in_request_terms(exc, values) from None
+        raise restate(exc, values, SIMULATE.options) from None
     warnings = bearing_warnings(bearing, decoded) + list(record.warnings)
     return SimulateOutcome(
         record,
@@ -418,36 +413,25 @@ SIMULATE = Analysis(
     "Simulated vibration (simulate_record) and its envelope diagnosis on acc_y.",
     {
         **BEARING_INPUTS,
-        **_SHAFT,
-        "radial_load_n": inputs("radial_load_n")["radial_load_n"].with_(default=None),
+        "speed_rpm": _SHAFT["speed_rpm"].with_(default=...),
+        "radial_load_n": INPUTS["radial_load_n"].with_(default=...),
         "axial_load_n": inputs("axial_load_n")["axial_load_n"].with_(
             help="Axial load [N] (the models are planar: not used)."
         ),
         **inputs("defect"),
-        "model": Input(
+        "dynamic_model": Input(
             "text",
             "rigid",
             "rigid: seed 003's 4-DOF rigid-ring model (no slip); slip: seed 004's model with "
             "ball slip and a cage.",
             choices=("rigid", "slip"),
+            aliases=("model",),
         ),
-        "duration_s": Input(
-            "number",
-            1.0,
-            "Length of the recorded signal [s].",
-            low=0.0,
-            high=3600.0,
-            low_open=True,
-            what="a duration",
+        "duration_s": INPUTS["duration_s"].with_(
+            default=1.0, help="Length of the recorded signal [s]."
         ),
-        "sample_rate_hz": Input(
-            "number",
-            50000.0,
-            "Sample rate of the signal [Hz].",
-            low=0.0,
-            high=1e6,
-            low_open=True,
-            what="a sample rate",
+        "sample_rate_hz": INPUTS["sample_rate_hz"].with_(
+            default=50000.0, help="Sample rate of the signal [Hz].", high=1e6
         ),
         "settle_s": Input(
             "number",
@@ -485,6 +469,7 @@ SIMULATE = Analysis(
             high=1e6,
             what="an RMS acceleration",
             seeded=True,
+            sets="noise",
         ),
         **_FORMS,
         "seed": inputs("seed")["seed"].with_(
@@ -502,7 +487,8 @@ SIMULATE = Analysis(
         **_FAULTS,
         **_WAVES,
     },
-    {
+    run=simulate,
+    outputs={
         "rms_m_s2": "f",
         "peak_m_s2": "f",
         "kurtosis": "f",
@@ -527,10 +513,15 @@ SIMULATE = Analysis(
         "ball_defect_frequency_hz": "f",
         "warnings": "s",
     },
-    simulate,
-    20,
-    _simulate_columns,
+    largest=20,
+    columns=_simulate_columns,
     warm=("bearinglab.dynamics", "bearinglab.diagnosis"),
     probe={"duration_s": 0.02, "sample_rate_hz": 20000.0},
     extra=(*_FAULTS, *_WAVES),
+    files={
+        "output": FILES["output"].with_(
+            help="Write the signal to this .npz, .csv, .wav or .mat file."
+        ),
+        **plot_file("the envelope spectrum (acc_y) and the plain spectrum (`spectrum_channel`)"),
+    },
 )

@@ -62,7 +62,10 @@ def _parameter(name: str, spec, *, argument: bool, default, help_: str) -> inspe
     if argument:
         info = typer.Argument(help=help_, show_default=False)
     else:
-        flags = [flag(n) for n in (name, *spec.aliases)]
+        # a one-letter alias is a short flag (-o); a boolean has its negation (--no-film)
+        flags = [flag(n) if len(n) > 1 else f"-{n}" for n in (name, *spec.aliases)]
+        if spec.kind == "bool":
+            flags = [f"{f}/--no-{f[2:]}" if f.startswith("--") else f for f in flags]
         shown = default is not None and spec.kind != "bool"
         choices = "[" + "|".join(spec.choices) + "]" if spec.choices else None
         info = typer.Option(*flags, help=help_, show_default=shown, metavar=choices)
@@ -73,15 +76,23 @@ def _parameter(name: str, spec, *, argument: bool, default, help_: str) -> inspe
     )
 
 
-def takes(*names: str, argument: str | None = None, defaults=None, helps=None, **specs):
+def takes(
+    *names: str,
+    argument: str | None = None,
+    defaults=None,
+    helps=None,
+    files: dict | None = None,
+    **specs,
+):
     """Give a command the inputs ``names`` of :data:`bearinglab.inputs.INPUTS` (and
     ``specs``: name -> Input, the command's own reading of a name) as options
     (``argument``: the one given as a positional argument; ``defaults`` and ``helps``: this
-    command's own). The command receives them as ``values`` (name -> value as typed); a
-    library error naming one of the command's parameters is worded as its flag."""
+    command's own), and the ``files`` it writes (name -> Input, a path). The command
+    receives the inputs as ``values`` (name -> value as typed) and each file as a keyword;
+    a library error naming one of the command's parameters is worded as its flag."""
     from ..inputs import BEARING, INPUTS, check
 
-    defaults, helps = defaults or {}, helps or {}
+    defaults, helps, files = defaults or {}, helps or {}, files or {}
     names = tuple(dict.fromkeys((*names, *specs)))
     table = {**INPUTS, **specs}
 
@@ -90,9 +101,9 @@ def takes(*names: str, argument: str | None = None, defaults=None, helps=None, *
         own = [
             p.replace(kind=inspect.Parameter.KEYWORD_ONLY)
             for p in sig.parameters.values()
-            if p.name != "values"
+            if p.name != "values" and p.name not in files
         ]
-        every = [*names, *(p.name for p in own)]
+        every = [*names, *files, *(p.name for p in own)]
         shown = {n: n.upper() if n == argument else flag(n) for n in every}
         shown["json_output"] = "--json"
         made = {
@@ -105,8 +116,12 @@ def takes(*names: str, argument: str | None = None, defaults=None, helps=None, *
             )
             for name in names
         }
+        written = [
+            _parameter(n, spec, argument=False, default=None, help_=in_flags(spec.help, shown))
+            for n, spec in files.items()
+        ]
         first = [made[n] for n in names if n not in BEARING or n == argument]
-        params = first + own + [made[n] for n in names if n in BEARING and n != argument]
+        params = first + written + own + [made[n] for n in names if n in BEARING and n != argument]
 
         @functools.wraps(func)
         def wrapper(**kwargs):

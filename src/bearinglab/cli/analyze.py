@@ -3,7 +3,7 @@
 harmonic series above the noise floor of the squared envelope spectrum, by Smith &
 Randall's methods; docs/capabilities/diagnosis.md)."""
 
-from ..analyses.diagnosis import ANALYZE_INPUTS, diagnose
+from ..analyses.diagnosis import ANALYZE
 from ._app import command_app
 from ._inputs import JsonOpt, _print_warnings, check_path, plot_option, save_plot_figure, takes
 from ._output import _emit_json, print_verdict
@@ -13,18 +13,11 @@ PlotOpt = plot_option("the squared envelope spectrum")
 
 
 @app.command("analyze")
-@takes(
-    argument="signal_file",
-    helps={
-        "designation": "Bearing designation or catalogue name (e.g. ER-16K, 6205); "
-        "optional with explicit geometry."
-    },
-    **ANALYZE_INPUTS,
-)
-def analyze_command(values, json_output: JsonOpt = False, plot: PlotOpt = None):
+@takes(argument="signal_file", files=ANALYZE.files, **ANALYZE.command_options)
+def analyze_command(values, json_output: JsonOpt = False, plot=None):
     """Diagnose a vibration record by envelope analysis."""
     check_path("plot", plot, (".png", ".svg", ".pdf"))
-    diag = diagnose(values)
+    diag = ANALYZE(values)
     if plot is not None:
         save_plot_figure(diag.plot()[0], plot)
     out = {"file": str(values["signal_file"]), "designation": values["designation"]}

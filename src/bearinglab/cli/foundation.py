@@ -4,56 +4,33 @@ import math
 
 from rich.markup import escape
 
+from ..analyses.foundation import CONTACT, INFO
 from ..analyses.mechanics import FREQUENCIES
-from ..catalog import boundary_dimensions, published_geometry
-from ..designation import parse
-from ..errors import CatalogError, DesignationError
 from ..geometry import BallBearing
-from ..inputs import BEARING, Input, bearing_from, bearing_warnings, geometry_line
+from ..inputs import geometry_line
 from ..kinematics import FREQUENCY_NAMES, LONG_NAMES, defect_frequencies
 from ._app import command_app, console
-from ._inputs import JsonOpt, PlotOpt, _print_warnings, in_flags, takes
+from ._inputs import JsonOpt, _print_warnings, in_flags, takes
 from ._output import _check_finite, _emit_json, _plot_and_emit, _References, _table
 
 app = command_app()
 
 
 @app.command()
-@takes(*BEARING, argument="designation")
+@takes(argument="designation", **INFO.command_options)
 def info(values, json_output: JsonOpt = False):
     """Decode a designation; show dimensions, internal geometry (with sources) and
     frequency factors."""
-    designation = values["designation"]
-    decoded = None
-    try:
-        bearing, from_catalog = bearing_from(values)
-    except CatalogError as exc:  # roller bearings, sizes not in the catalogue...
-        bearing, from_catalog, why_no_geometry = None, None, in_flags(str(exc))
-    else:
-        why_no_geometry = None
-    if designation:
-        try:
-            decoded = from_catalog or parse(designation, system=values["system"])
-        except DesignationError:
-            if published_geometry(designation) is None:  # not a catalogue name either
-                raise
-    if bearing is None and decoded is None:
-        raise CatalogError(why_no_geometry)
-    dims = why_no_dims = None
-    if bearing is None:
-        try:
-            dims = boundary_dimensions(decoded)
-        except CatalogError as exc:
-            why_no_dims = str(exc)
-    warnings = [] if bearing is None else bearing_warnings(bearing)
-    out = _info_dict(designation, decoded, bearing, dims, why_no_geometry, why_no_dims, warnings)
+    r = INFO(values)
+    out = r.to_dict()
     if json_output:
         _emit_json(out)
         return
     _check_finite(out)
-    if decoded is not None:
-        _print_designation(decoded)
-    if bearing is None:
+    if r.decoded is not None:
+        _print_designation(r.decoded)
+    if r.bearing is None:
+        dims = r.dimensions
         if dims is not None:
             console.print(
                 _table(
@@ -67,48 +44,14 @@ def info(values, json_output: JsonOpt = False):
                 )
             )
         else:
-            console.print(f"bore d = {decoded.bore_mm:g} mm (from the designation)")
-            console.print(f"[yellow]no boundary dimensions:[/yellow] {escape(why_no_dims)}")
-        console.print(f"[yellow]no internal geometry:[/yellow] {escape(why_no_geometry)}")
-        return
-    _print_bearing(bearing)
-    _print_warnings(warnings)
-
-
-def _info_dict(text, decoded, bearing, dims, why_no_geometry, why_no_dims, warnings) -> dict:
-    out = {
-        "designation": text,
-        "system": decoded.system if decoded else None,
-        "bearing_type": (decoded.bearing_type if decoded else bearing.bearing_type),
-    }
-    if bearing is not None:
-        out.update(bearing.to_dict())
-        out["designation"] = text
-        f = defect_frequencies(bearing, 2 * math.pi)
-        out["frequency_factors"] = {f"{n}_order": f.orders[n] for n in FREQUENCY_NAMES}
-    else:
-        out.update(
-            {
-                "bore_mm": decoded.bore_mm,
-                "outside_diameter_mm": None if dims is None else dims.outside_diameter * 1e3,
-                "width_mm": None if dims is None else dims.width * 1e3,
-                "ball_count": None,
-                "ball_diameter_mm": None,
-                "pitch_diameter_mm": None,
-                "contact_angle_deg": decoded.contact_angle_deg,
-                "geometry_source": None,
-                "dimensions": None if dims is None else dims.to_dict(),
-                "dimensions_standard": None if dims is None else dims.standard,
-                "no_dimensions_reason": why_no_dims,
-                "no_geometry_reason": why_no_geometry,
-            }
+            console.print(f"bore d = {r.decoded.bore_mm:g} mm (from the designation)")
+            console.print(f"[yellow]no boundary dimensions:[/yellow] {escape(r.why_no_dimensions)}")
+        console.print(
+            f"[yellow]no internal geometry:[/yellow] {escape(in_flags(r.why_no_geometry))}"
         )
-        if dims is not None:
-            out["bore_mm"] = dims.bore * 1e3
-    out["warnings"] = warnings
-    if decoded is not None:
-        out["decoded"] = decoded.to_dict()
-    return out
+        return
+    _print_bearing(r.bearing)
+    _print_warnings(out["warnings"])
 
 
 def _print_designation(d) -> None:
@@ -207,10 +150,10 @@ def _print_bearing(b: BallBearing) -> None:
 
 
 @app.command()
-@takes(argument="designation", defaults={"speed_rpm": ...}, **FREQUENCIES.command_options)
-def frequencies(values, json_output: JsonOpt = False, plot: PlotOpt = None):
+@takes(argument="designation", files=FREQUENCIES.files, **FREQUENCIES.command_options)
+def frequencies(values, json_output: JsonOpt = False, plot=None):
     """Kinematic defect frequencies (pure rolling) in Hz and as orders."""
-    r = FREQUENCIES.run(values)
+    r = FREQUENCIES(values)
     f, out, warnings = r.result, r.to_dict(), list(r.warnings)
     if _plot_and_emit(out, json_output, f, plot):
         return
@@ -242,36 +185,13 @@ def frequencies(values, json_output: JsonOpt = False, plot: PlotOpt = None):
 
 
 @app.command()
-@takes(
-    *BEARING,
-    argument="designation",
-    ball_load_n=Input(
-        "number",
-        ...,
-        "Normal load on one ball [N].",
-        low=0.0,
-        high=1e7,
-        low_open=True,
-        what="a load",
-    ),
-    method=Input(
-        "text",
-        "exact",
-        "Ellipticity and elliptic integrals: exact or Hamrock-Brewe.",
-        choices=("exact", "hamrock-brewe"),
-    ),
-)
-def contact(values, json_output: JsonOpt = False, plot: PlotOpt = None):
+@takes(argument="designation", files=CONTACT.files, **CONTACT.command_options)
+def contact(values, json_output: JsonOpt = False, plot=None):
     """Hertz contact of one ball with the inner and outer raceway."""
-    designation, ball_load_n, method = (values[k] for k in ("designation", "ball_load_n", "method"))
-    bearing, decoded = bearing_from(values)
-    from ..contact.ball_race import ball_contacts  # scipy.special: only this command
-
-    result = ball_contacts(bearing, ball_load_n, method=method.replace("-", "_"))
-    d = result.to_dict()
-    d["warnings"] = bearing_warnings(bearing, decoded) + d["warnings"]
-    out = {"designation": designation, **d}
-    if _plot_and_emit(out, json_output, result, plot):
+    r = CONTACT(values)
+    result, bearing, d = r.result, r.bearing, r.to_dict()
+    ball_load_n, method = values["ball_load_n"], values["hertz_method"]
+    if _plot_and_emit(d, json_output, result, plot):
         return
     rows = []
     for key, label, unit in (

@@ -15,18 +15,10 @@ app = command_app()
 
 
 @app.command("friction")
-@takes(
-    argument="designation",
-    defaults={"speed_rpm": ...},
-    helps={
-        "designation": "Bearing designation or catalogue name; optional with --bore-mm and "
-        "--outside-diameter-mm."
-    },
-    **FRICTION.command_options,
-)
+@takes(argument="designation", **FRICTION.command_options)
 def friction_command(values, json_output: JsonOpt = False):
     """Friction torque and power loss: seed 003's constant coefficient or the SKF model."""
-    r = FRICTION.run(values)
+    r = FRICTION(values)
     out = r.to_dict()
     if json_output:
         _emit_json(out)

@@ -17,11 +17,11 @@ PlotOpt = plot_option("life against load")
 
 
 @app.command("life")
-@takes(argument="designation", defaults={"speed_rpm": ...}, **LIFE.command_options)
-def life_command(values, json_output: JsonOpt = False, plot: PlotOpt = None):
+@takes(argument="designation", files=LIFE.files, **LIFE.command_options)
+def life_command(values, json_output: JsonOpt = False, plot=None):
     """Load ratings C, C0, Cu, equivalent loads, basic and modified rating life."""
     check_path("plot", plot)
-    r = LIFE.run(values)
+    r = LIFE(values)
     out = r.to_dict()
     if _plot_and_emit(out, json_output, r.result, plot):
         return

@@ -7,10 +7,6 @@ same data otherwise, ``plot()`` for ``--plot`` (docs/capabilities/noise.md, "The
 command").
 """
 
-from pathlib import Path
-from typing import Annotated
-
-import typer
 from rich.markup import escape
 
 from ..analyses.vibration import NOISE
@@ -25,29 +21,14 @@ app = command_app()
 
 
 @app.command("noise")
-@takes(
-    argument="designation",
-    defaults={"speed_rpm": ..., "radial_load_n": ...},
-    **NOISE.command_options,
-)
-def noise_command(
-    values,
-    json_output: JsonOpt = False,
-    plot: Annotated[
-        Path | None,
-        typer.Option(
-            "--plot",
-            help="Draw the pressure and SPL over time, the pressure spectrum and "
-            "the directivity to this .png, .svg or .pdf file.",
-        ),
-    ] = None,
-):
+@takes(argument="designation", files=NOISE.files, **NOISE.command_options)
+def noise_command(values, json_output: JsonOpt = False, plot=None):
     """Noise of a running ball bearing with waviness, ball-size errors and random
     surfaces (seed 003 part 4, seed 002): SPL at a point, pressure spectrum lines, and the
     ISO 15242 vibration velocity bands."""
     check_path("plot", plot, (".png", ".svg", ".pdf"))
     with progress_bar("orbit and sound pressure", enabled=not json_output) as update:
-        r = NOISE.run(values, progress=lambda f, stage: update(f, stage))
+        r = NOISE(values, progress=lambda f, stage: update(f, stage))
         if plot is not None:
             update(None, "plot (directivity)")
             save_plot_figure(r.plot()[0], plot)

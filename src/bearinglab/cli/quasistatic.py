@@ -1,30 +1,22 @@
 """Commands of the load-distribution issue: static, stiffness-map, ring-modes."""
 
-import math
 from pathlib import Path
-from typing import Annotated
 
 import numpy as np
-import typer
 from rich.markup import escape
 
-from ..analyses.mechanics import STATIC
+from ..analyses.mechanics import STATIC, STIFFNESS_MAP
 from ..files import write_atomically
-from ..inputs import BEARING, Input, bearing_from, bearing_warnings, geometry_line
+from ..inputs import geometry_line
 from ..inputs.specs import form_errors_text
-from ..plotting import stiffness_map_figure
-from ..quasistatic.study import stiffness_map as stiffness_map_study
 from ..units import label
 from ._app import command_app, console
 from ._inputs import (
     JsonOpt,
     OptionError,
-    PlotOpt,
     _print_warnings,
     check_path,
-    load_n,
     save_plot_figure,
-    speed_rad_s,
     takes,
     writing,
 )
@@ -32,47 +24,10 @@ from ._output import _emit_json, _table, progress_bar
 
 app = command_app()
 
-MAX_CASES = 1_000_000
-
-
-def _grid(flag: str, text: str, signed: bool = False, speed: bool = False) -> np.ndarray:
-    """'a:b:n' (n values from a to b), 'a,b,c' or a single value."""
-    try:
-        if ":" in text:
-            a, b, n = text.split(":")
-            values = np.linspace(float(a), float(b), int(n))
-            if int(n) < 1 or int(n) > 10000:
-                raise ValueError
-        else:
-            values = np.array([float(v) for v in text.split(",")])
-    except ValueError:
-        raise OptionError(
-            flag, text, "START:STOP:COUNT (COUNT 1..10000), a list A,B,C or one value"
-        ) from None
-    for v in values:
-        speed_rad_s(v, zero=True) if speed else load_n(flag, v, signed)
-    return values
-
 
 @app.command()
-@takes(argument="designation", **STATIC.command_options)
-def static(
-    values,
-    orbit_plot: Annotated[
-        Path | None,
-        typer.Option(
-            "--orbit-plot",
-            help="Draw the orbit, the displacements and the ball centres "
-            "to this .png, .svg or .pdf file (implies --orbit).",
-        ),
-    ] = None,
-    stiffness_csv: Annotated[
-        Path | None,
-        typer.Option("--stiffness-csv", help="Write the 5x5 stiffness matrix (SI) to this CSV."),
-    ] = None,
-    json_output: JsonOpt = False,
-    plot: PlotOpt = None,
-):
+@takes(argument="designation", files=STATIC.files, **STATIC.command_options)
+def static(values, json_output: JsonOpt = False, plot=None, orbit_plot=None, stiffness_csv=None):
     """Quasi-static load distribution: per-ball loads and contact angles, ring
     displacements and the 5x5 stiffness matrix; with form errors (waviness, ball-size
     errors, 3-D surfaces) at the instant the shaft angle is 0, and with --orbit the
@@ -81,7 +36,7 @@ def static(
         check_path(name, path, (".png", ".svg", ".pdf"))
     check_path("stiffness_csv", stiffness_csv, (".csv",))
     values["orbit"] = values["orbit"] or orbit_plot is not None
-    r = STATIC.run(values)
+    r = STATIC(values)
     result, o, d = r.distribution, r.orbit, r.to_dict()
     if plot is not None:
         save_plot_figure(r.plot()[0], plot)
@@ -191,106 +146,27 @@ def _plot_orbit(o, path: Path) -> None:
     save_plot_figure(fig, path, "--orbit-plot")
 
 
-def _grid_input(default: str, help_: str) -> Input:
-    return Input("text", default, help_)
-
-
 @app.command("stiffness-map")
-@takes(
-    *BEARING,
-    "gyroscopic",
-    "race_control",
-    argument="designation",
-    radial_load_n=_grid_input(
-        "0:2000:21", "Radial loads: START:STOP:COUNT, A,B,C or one value [N]."
-    ),
-    axial_load_n=_grid_input("0", "Axial loads [N], same forms."),
-    speed_rpm=_grid_input("0", "Speeds [rpm], same forms."),
-)
-def stiffness_map(
-    values,
-    workers: Annotated[
-        int,
-        typer.Option(
-            "--workers", help="Worker processes (default: all cores).", show_default=False
-        ),
-    ] = 0,
-    output: Annotated[
-        Path | None,
-        typer.Option("-o", "--output", help="Write the table to this CSV file."),
-    ] = None,
-    json_output: JsonOpt = False,
-    plot: PlotOpt = None,
-):
+@takes(argument="designation", files=STIFFNESS_MAP.files, **STIFFNESS_MAP.command_options)
+def stiffness_map(values, json_output: JsonOpt = False, output=None, plot=None):
     """Radial and axial stiffness (and displacements) over a grid of loads and speeds."""
-    designation = values["designation"]
-    radial_load_n, axial_load_n, speed_rpm = (
-        values[k] for k in ("radial_load_n", "axial_load_n", "speed_rpm")
-    )
-    gyroscopic, race_control = values["gyroscopic"], values["race_control"]
-    radial = _grid("--radial-load-n", radial_load_n)
-    axial = _grid("--axial-load-n", axial_load_n, signed=True)
-    speeds = _grid("--speed-rpm", speed_rpm, speed=True)
-    if not 0 <= workers <= 64:
-        raise OptionError("--workers", workers, "0 (all cores) to 64")
-    if len(radial) * len(axial) * len(speeds) > MAX_CASES:
-        raise OptionError(
-            "--radial-load-n",
-            radial_load_n,
-            f"a grid of at most {MAX_CASES:g} cases in all (radial x axial x speed counts)",
-        )
     check_path("plot", plot, (".png", ".svg", ".pdf"))
     check_path("output", output)
-    bearing, decoded = bearing_from(values)
-    total = len(radial) * len(axial) * len(speeds)
-    done = [0]
-
-    def advance(n: int) -> None:
-        done[0] += n
-        update(done[0] / total, f"solving {done[0]} of {total} cases")
-
-    with progress_bar(f"solving {total} cases", enabled=not json_output) as update:
-        table = stiffness_map_study(
-            bearing,
-            radial,
-            axial,
-            speeds,
-            workers=workers or None,
-            progress=advance,
-            gyroscopic=gyroscopic,
-            race_control=race_control,
+    with progress_bar("solving cases", enabled=not json_output) as update:
+        r = STIFFNESS_MAP(
+            values, progress=lambda done, total: update(done / total, f"solving {done} of {total}")
         )
-    rows = table.to_dict(orient="records")
-    solved = table[table["status"] == "ok"]
-    warnings = bearing_warnings(bearing, decoded)
-    if plot is not None and not len(solved):  # before anything is written
-        raise OptionError(
-            "--plot",
-            str(plot),
-            "a map with at least one solved case to draw",
-            "no case of the map solved, status: " + ", ".join(sorted(set(table["status"]))),
-        )
+    table, solved = r.table, r.solved
+    total = len(table)
+    figure = None if plot is None else r.plot()[0]  # before anything is written
     if output is not None:
         _write_csv(table, output)
-    if plot is not None:
-        save_plot_figure(stiffness_map_figure(solved)[0], plot)
+    if figure is not None:
+        save_plot_figure(figure, plot)
     if json_output:
-        _emit_json(
-            {
-                "designation": designation,
-                "cases": total,
-                "solved": len(solved),
-                "rows": [
-                    {
-                        k: (None if isinstance(v, float) and not math.isfinite(v) else v)
-                        for k, v in row.items()
-                    }
-                    for row in rows
-                ],
-                "warnings": warnings,
-            }
-        )
+        _emit_json(r.to_dict())
         return
+    bearing, warnings = r.bearing, list(r.warnings)
     headers = {
         "radial_load_n": label("F_r", "n"),
         "axial_load_n": label("F_a", "n"),

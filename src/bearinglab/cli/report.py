@@ -1,14 +1,11 @@
 """The ``report`` command: one self-contained HTML page about a bearing at an operating
 point (:func:`bearinglab.report.build_report`)."""
 
-from pathlib import Path
-from typing import Annotated
-
 import typer
 from rich.console import Console
 from rich.markup import escape
 
-from ..report.request import REPORT_INPUTS
+from ..report.request import REPORT
 from ._app import command_app, console
 from ._inputs import JsonOpt, _print_warnings, check_path, takes, writing
 from ._output import _emit_json, progress_bar
@@ -17,26 +14,16 @@ app = command_app()
 
 
 @app.command("report")
-@takes(
-    argument="designation",
-    defaults={"speed_rpm": ..., "radial_load_n": ...},
-    **REPORT_INPUTS,
-)
-def report_command(
-    values,
-    output: Annotated[Path, typer.Option("-o", "--output", help="The HTML file to write.")] = ...,
-    json_output: JsonOpt = False,
-):
+@takes(argument="designation", files=REPORT.files, **REPORT.command_options)
+def report_command(values, json_output: JsonOpt = False, output=None):
     """Write an engineer's report of a bearing at an operating point to one self-contained
     HTML page: geometry and sources, load distribution, contact, stiffness, ring
     resonances, defect frequencies, simulated envelope spectrum, vibration bands, sound,
     friction and life. A section whose analysis fails shows its error in the page and is
     listed on stderr; the report is still written, and the exit code is 1."""
-    from ..report.request import report_from
-
     check_path("output", output, (".html", ".htm"))
     with progress_bar("report", enabled=not json_output) as update:
-        report = report_from(
+        report = REPORT(
             values, progress=lambda title, done, total: update(done / total, f"report: {title}")
         )
     with writing("--output", output):

@@ -13,15 +13,15 @@ PlotOpt = plot_option("the frequencies")
 
 
 @app.command("ring-modes")
-@takes(argument="designation", **RING_MODES.command_options)
-def ring_modes_command(values, json_output: JsonOpt = False, plot: PlotOpt = None):
+@takes(argument="designation", files=RING_MODES.files, **RING_MODES.command_options)
+def ring_modes_command(values, json_output: JsonOpt = False, plot=None):
     """Natural frequencies of the outer ring in the loaded bearing (seed 000).
 
     Give a bearing (designation or geometry), or the paper's ring-level inputs alone:
     --balls, --ring-mass-kg with --radial-stiffness-n-per-m (or --rigid-body-frequency-hz),
     --free-frequencies-hz and --ball-mass-ratio."""
     check_path("plot", plot, (".png", ".svg", ".pdf"))
-    r = RING_MODES.run(values)
+    r = RING_MODES(values)
     if plot is not None:
         save_plot_figure(r.plot()[0], plot)
     d = r.to_dict()

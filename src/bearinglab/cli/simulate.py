@@ -2,11 +2,6 @@
 (:func:`bearinglab.dynamics.simulate`), the envelope diagnosis of the simulated acceleration
 (:func:`bearinglab.diagnosis.analyze_signal`) and the lines of its plain spectrum."""
 
-from pathlib import Path
-from typing import Annotated
-
-import typer
-
 from ..analyses.vibration import SIMULATE
 from ..inputs.specs import defect_text, form_errors_text
 from ..signal import SUFFIXES, write_signal
@@ -28,24 +23,8 @@ PlotOpt = plot_option("the envelope spectrum (acc_y) and the plain spectrum (--s
 
 
 @app.command("simulate")
-@takes(
-    argument="designation",
-    defaults={"speed_rpm": ..., "radial_load_n": ...},
-    **SIMULATE.command_options,
-)
-def simulate_command(
-    values,
-    output: Annotated[
-        Path | None,
-        typer.Option(
-            "-o",
-            "--output",
-            help="Write the signal to this .npz, .csv, .wav or .mat file.",
-        ),
-    ] = None,
-    json_output: JsonOpt = False,
-    plot: PlotOpt = None,
-):
+@takes(argument="designation", files=SIMULATE.files, **SIMULATE.command_options)
+def simulate_command(values, json_output: JsonOpt = False, output=None, plot=None):
     """Simulate the vibration of a bearing with defects and form errors (seed 003 rigid
     model or seed 004 slip model), diagnose it by envelope analysis and list the lines of
     its plain spectrum."""
@@ -54,10 +33,10 @@ def simulate_command(
     rate = values["sample_rate_hz"]
     if output is not None and output.suffix.lower() == ".wav" and rate != round(rate):
         raise OptionError("--sample-rate-hz", rate, "a whole number of Hz for .wav")
-    model = values["model"]
+    model = values["dynamic_model"]
     running = f"simulating ({model} model)"
     with progress_bar(simulation_stage(model), enabled=not json_output) as update:
-        r = SIMULATE.run(values, progress=lambda f: update(f, running))
+        r = SIMULATE(values, progress=lambda f: update(f, running))
     record = r.record
     if output is not None:
         with writing("--output", output):

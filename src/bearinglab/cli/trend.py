@@ -3,12 +3,11 @@ baseline, an alarm at a stated false-alarm probability, the diagnosis at and aft
 and the ISO 20816 severity (:func:`bearinglab.trend.trend_records`;
 docs/capabilities/trend.md)."""
 
-from pathlib import Path
 from typing import Annotated
 
 import typer
 
-from ..trend.request import TREND_INPUTS, trend_from
+from ..trend.request import TREND
 from ._app import command_app, console
 from ._inputs import JsonOpt, SchedulerOpt, _print_warnings, plot_option, save_plot_figure, takes
 from ._output import _emit_json, _table, escape, progress_bar
@@ -20,7 +19,7 @@ PlotOpt = plot_option("the indicators over time, with the baseline, the limits a
 
 
 @app.command("trend")
-@takes(argument="folder", **TREND_INPUTS)
+@takes(argument="folder", files=TREND.files, **TREND.command_options)
 def trend_command(
     values,
     jobs: Annotated[
@@ -28,19 +27,16 @@ def trend_command(
         typer.Option("--jobs", help="Worker processes (a dask LocalCluster); 1: this process."),
     ] = 1,
     scheduler: SchedulerOpt = None,
-    html: Annotated[
-        Path | None,
-        typer.Option("--html", help="Also write a page with the figure, the rule and the tests."),
-    ] = None,
     json_output: JsonOpt = False,
-    plot: PlotOpt = None,
+    html=None,
+    plot=None,
 ):
     """Trend health indicators over a series of recordings and raise an alarm."""
     output_file("--plot", plot, (".png", ".svg", ".pdf"), figure=True)
     output_file("--html", html, (".html", ".htm"))
     preflight_scheduler(scheduler, environment=False)
     with progress_bar("reading records", enabled=not json_output) as update:
-        result = trend_from(
+        result = TREND(
             values,
             jobs=jobs,
             scheduler=scheduler,

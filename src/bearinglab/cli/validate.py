@@ -4,14 +4,14 @@ source, published and computed value, error and verdict."""
 
 import datetime
 from pathlib import Path
-from typing import Annotated
 
 import typer
 from rich.markup import escape
 from rich.table import Table
 
+from ..analyses.base import HTML_FILE
 from ._app import command_app, console
-from ._inputs import JsonOpt, check_path, writing
+from ._inputs import JsonOpt, check_path, takes, writing
 from ._output import _emit_json, progress_bar
 
 app = command_app()
@@ -82,30 +82,23 @@ def _print(results: list[dict], summary: dict) -> None:
 
 
 @app.command("validate")
-def validate_command(
-    json_output: JsonOpt = False,
-    html: Annotated[
-        Path | None,
-        typer.Option(
-            "--html",
-            help="Also write the table as one self-contained HTML page.",
-        ),
-    ] = None,
-):
+@takes(files=HTML_FILE)
+def validate_command(values, json_output: JsonOpt = False, html=None):
     """Run every published case bearinglab reproduces (seed papers, data-set frequency
     factors, textbook examples, catalogue ratings) and show published and computed
     values, error and verdict: pass, fail, or known failure (a documented
     non-reproduction, with its reason). Exit code 0 when every case passes or fails as
     documented; 1 when a case that should pass fails (or raises), or a known failure
     unexpectedly passes. Some cases run simulations: expect a minute or two."""
-    from ..validation.run import run_validation
+    from ..registry import entry
 
     check_path("--html", html, (".html", ".htm"))
     with progress_bar("validate", enabled=not json_output) as update:
-        result = run_validation(
+        result = entry("validate")(
+            {},
             progress=lambda done, total, label: update(
                 done / total, escape(f"validate {done + 1}/{total}: {label}"[:70])
-            )
+            ),
         )
     results, summary = list(result.results), result.summary
     if html is not None:

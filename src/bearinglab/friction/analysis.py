@@ -406,14 +406,14 @@ def bearing_friction(
             "bearing_type",
             kind,
             what,
-            f"this bearing is {kind}; use model='constant', which covers every type",
+            f"this bearing is {kind}; use `model` constant, which covers every type",
         )
     if b.bore is None or b.outside_diameter is None:
         raise InputError(
             "bore",
             None,
             "the bore and outside diameter (the SKF model uses d_m = 0.5 (d + D))",
-            "give the bearing's bore and outside_diameter",
+            "give the bearing's `bore` and `outside_diameter`",
         )
     if nu is None:
         raise InputError(
@@ -429,7 +429,7 @@ def bearing_friction(
                 None,
                 "SKF geometry constants R1, R2, S1, S2, R3, S3 "
                 f"for {kind} (SKF's table is not shipped)",
-                "give them (constants)",
+                "give them (`constants`)",
             )
         constants = deep_groove_constants(series or b.series)
     notes = list(skf_options.pop("notes", ()))
@@ -443,14 +443,14 @@ def bearing_friction(
                 "the basic static load rating C_0 "
                 "[N] when there is an axial load (SKF: alpha_F = 24.6 "
                 "(F_a/C_0)^0.24)",
-                "give it (static_load_rating)",
+                "give it (`static_load_rating`)",
             )
         from ..ratings import load_ratings
 
         c0, c0_how = load_ratings(ball).static, _ISO76_C0
         notes.append(
             f"C_0 = {c0:.5g} N from ISO 76 and the internal geometry "
-            "(bearinglab.ratings); give the maker's (static_load_rating)"
+            "(bearinglab.ratings); give the maker's (`static_load_rating`)"
         )
     if c0 is not None and fa > c0:
         raise InputError("axial_load", fa, f"at most C_0 = {c0:g} N")

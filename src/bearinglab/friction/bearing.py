@@ -35,7 +35,7 @@ def _length(name: str, value, *, optional: bool = False) -> float | None:
     if value is None and optional:
         return None
     if positive_number(name, value, "a length in (0, 100] m") > 100.0:
-        raise InputError(name, value, "a length in (0, 100] m")
+        raise InputError(name, value, "a length in (0, {most}]", unit="m", numbers={"most": 100.0})
     return float(value)
 
 
@@ -92,12 +92,16 @@ class FrictionBearing:
         dm = _length("pitch_diameter", self.pitch_diameter)
         if d is not None and big_d is not None:
             if big_d <= d:
-                raise InputError("outside_diameter", big_d, f"more than the bore {d:.6g} m")
+                raise InputError(
+                    "outside_diameter", big_d, "more than the bore {d}", unit="m", numbers={"d": d}
+                )
             if not d < dm < big_d:
                 raise InputError(
                     "pitch_diameter",
                     dm,
-                    f"between the bore {d:.6g} m and the outside diameter {big_d:.6g} m",
+                    "between the bore {d} and the outside diameter {D}",
+                    unit="m",
+                    numbers={"d": d, "D": big_d},
                 )
 
     @classmethod
@@ -219,8 +223,16 @@ class FrictionBearing:
         value that was given rather than one from the table."""
         if outside <= bore:
             if "outside_diameter" in given or "bore" not in given:
-                raise InputError("outside_diameter", outside, f"more than the bore {bore:.6g} m")
-            raise InputError("bore", bore, f"less than the outside diameter {outside:.6g} m")
+                raise InputError(
+                    "outside_diameter",
+                    outside,
+                    "more than the bore {d}",
+                    unit="m",
+                    numbers={"d": bore},
+                )
+            raise InputError(
+                "bore", bore, "less than the outside diameter {D}", unit="m", numbers={"D": outside}
+            )
         if pitch is None:
             return cls(
                 name, kind, bore, outside, 0.5 * (bore + outside), MEAN_DIAMETER_ESTIMATE, **kwargs
@@ -230,7 +242,9 @@ class FrictionBearing:
             raise InputError(
                 "pitch_diameter",
                 pitch,
-                f"between the bore {bore:.6g} m and the outside diameter {outside:.6g} m",
+                "between the bore {d} and the outside diameter {D}",
+                unit="m",
+                numbers={"d": bore, "D": outside},
             )
         return cls(name, kind, bore, outside, pitch, "given", **kwargs)
 

@@ -113,7 +113,7 @@ def friction_type_of(bearing_type: str, design_variant: str | None = None) -> st
         "bearing_type",
         bearing_type,
         "a type that seed 003's Table III names: " + ", ".join(SEED003_COEFFICIENTS),
-        "give the friction type explicitly (friction_type)",
+        "give the friction type explicitly (`friction_type`)",
     )
 
 

@@ -130,7 +130,7 @@ def equivalent_load_of(
         fa,
         "0, or the equivalent load P given",
         f"no equivalent-load rule is built in for {kind} under an axial load "
-        "here; give P (equivalent_load)",
+        "here; give P (`equivalent_load`)",
     )
 
 

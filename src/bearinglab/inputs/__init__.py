@@ -26,7 +26,7 @@ from .bearing import (
     read_geometry_file,
 )
 from .specs import FormErrors, check_defects, parse_defect
-from .table import BEARING, FORMS, GEOMETRY_NEEDED, INPUTS, Input, check
+from .table import BEARING, FORMS, GEOMETRY_NEEDED, INPUTS, Input, check, closed, input_for, restate
 
 __all__ = [
     "BEARING",
@@ -39,13 +39,16 @@ __all__ = [
     "bearing_warnings",
     "check",
     "check_defects",
+    "closed",
     "condition_from",
     "geometry_line",
     "given_fields",
+    "input_for",
     "lubricant_from",
     "no_effect",
     "parse_defect",
     "read_geometry_file",
+    "restate",
     "speed_from",
 ]
 

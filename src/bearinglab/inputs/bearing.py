@@ -7,7 +7,6 @@ they gave), with its value in its unit."""
 from __future__ import annotations
 
 import math
-import re
 import tomllib
 from dataclasses import replace
 from pathlib import Path
@@ -15,28 +14,13 @@ from pathlib import Path
 from ..errors import CatalogError, InputError
 from .table import BEARING, GEOMETRY_NEEDED, INPUTS
 
-#: input -> (BallBearing keyword, SI value of one unit of the input)
-_KEYWORDS = {
-    "balls": ("ball_count", 1),
-    "ball_diameter_mm": ("ball_diameter", 1e-3),
-    "pitch_diameter_mm": ("pitch_diameter", 1e-3),
-    "contact_angle_deg": ("contact_angle", math.pi / 180),
-    "inner_groove_factor": ("inner_groove_factor", 1),
-    "outer_groove_factor": ("outer_groove_factor", 1),
-    "clearance_um": ("diametral_clearance", 1e-6),
-    "inner_arch_angle_deg": ("inner_arch_angle", math.pi / 180),
-    "outer_arch_angle_deg": ("outer_arch_angle", math.pi / 180),
-    "bore_mm": ("bore", 1e-3),
-    "outside_diameter_mm": ("outside_diameter", 1e-3),
-    "width_mm": ("width", 1e-3),
-}
-#: BallBearing / Material keyword -> input, to put errors in the user's terms.
-_KEYWORD_INPUT = {keyword: name for name, (keyword, _) in _KEYWORDS.items()}
-_KEYWORD_INPUT.update(
-    elastic_modulus="elastic_modulus_gpa", density="density_kg_m3", poisson_ratio="poisson_ratio"
+#: The geometry inputs that set a BallBearing field (its name: the input's ``sets``; the
+#: conversion: the input's unit), in the table's order.
+_GEOMETRY = tuple(
+    name
+    for name in BEARING
+    if INPUTS[name].fields and not str(INPUTS[name].sets).startswith("Material.")
 )
-_FACTORS = {name: factor for name, (_, factor) in _KEYWORDS.items()}
-_FACTORS.update(elastic_modulus_gpa=1e9, density_kg_m3=1, poisson_ratio=1)
 #: Checks that involve other values: if the user did not give the value a check names,
 #: the error names the first of these the user did give.
 _PARTNERS = {
@@ -59,32 +43,26 @@ _PARTNERS = {
         "diametral_clearance",
     ),
 }
-_SYMBOLS = {"_mm": "mm", "_um": "um", "_deg": "deg", "_gpa": "GPa", "_kg_m3": "kg/m^3"}
 
 
-def _unit(name: str) -> str:
-    return next((u for suffix, u in _SYMBOLS.items() if name.endswith(suffix)), "")
+def _field(name: str) -> str:
+    """The model field input ``name`` sets (BallBearing's or Material's)."""
+    return INPUTS[name].fields[0]
 
 
-def _in_units(text: str, name: str) -> str:
-    """The model's lengths in metres ("[-0.000397, 0.000635] m", "0.00794 m", "[m]") in
-    the unit of input ``name`` (mm or um)."""
-    unit = _unit(name)
-    factor = _FACTORS.get(name)
-    if unit not in ("mm", "um") or not factor:
-        return text
-    number = r"-?\d+(?:\.\d*)?(?:[eE][-+]?\d+)?"
+def _symbol(name: str) -> str:
+    from ..units import unit_of
 
-    def one(m) -> str:
-        return f"{float(m.group(1)) / factor:.6g}"
+    unit = unit_of(name)
+    return unit.symbol if unit is not None else ""
 
-    text = re.sub(
-        rf"\[({number}), ({number})\] m\b",
-        lambda m: f"[{one(m)}, {float(m.group(2)) / factor:.6g}] {unit}",
-        text,
-    )
-    text = re.sub(rf"({number}) m\b", lambda m: f"{one(m)} {unit}", text)
-    return text.replace("[m]", f"[{unit}]")
+
+def _si(name: str, value: float) -> float:
+    """A value of input ``name`` in SI (its unit's factor)."""
+    from ..units import unit_of
+
+    unit = unit_of(name)
+    return value if unit is None else unit.to_si(value)
 
 
 class _Given:
@@ -115,10 +93,11 @@ class _Given:
 
     def _overrides(self) -> dict:
         overrides: dict = {}
-        for name, (keyword, factor) in _KEYWORDS.items():
+        for name in _GEOMETRY:
             value = self.values.get(name)
             if value is not None:
-                overrides[keyword] = int(value) if keyword == "ball_count" else value * factor
+                keyword = _field(name)
+                overrides[keyword] = int(value) if keyword == "ball_count" else _si(name, value)
         material = _material(self.values)
         if material is not None:
             overrides["ring_material"] = overrides["ball_material"] = material
@@ -129,49 +108,44 @@ class _Given:
     def remap(self, exc: InputError) -> InputError:
         """The model's error in the user's terms: the input they gave (or, for a check
         between two values, the one of them they gave) with its value in its unit."""
-        name = _KEYWORD_INPUT.get(exc.parameter)
-        if name is None:
+        from .table import input_for, restate
+
+        name = input_for(exc.parameter, INPUTS)
+        if name is None or name not in BEARING:
             return exc
         if name in self.values:
-            return InputError(
+            return restate(exc, self.values, INPUTS).restated(
                 self.origin(name),
                 self.values[name],
-                _in_units(exc.allowed, name),
-                _in_units(exc.hint, name),
+                names=lambda p: f"`{p}`",
             )
         for partner in _PARTNERS.get(exc.parameter, ()):
-            other = _KEYWORD_INPUT[partner]
+            other = input_for(partner, INPUTS)
             if other not in self.values:
                 continue
-            unit = _unit(name)
-            factor = _FACTORS[name]
-            own = (
-                f"{exc.value / factor:.6g}"
-                if isinstance(exc.value, (int, float)) and factor
-                else repr(exc.value)
-            )
+            own = restate(exc, {}, INPUTS)  # the model's value in the input's unit
+            unit = _symbol(name)
+            shown = f"{own.value:.6g}" if isinstance(own.value, (int, float)) else repr(own.value)
+            shown += f" {unit}" if unit else ""
             label = exc.parameter.replace("_", " ")
             given = self.origin(other), self.values[other]
-            if (
-                exc.parameter == "pitch_diameter"
-                and partner == "ball_diameter"
-                and exc.allowed.startswith("more than the ball diameter")
-            ):
-                return InputError(
-                    *given,
-                    f"less than the pitch diameter {own} {unit} (not given: "
-                    "a catalogue or derived value)",
-                )
+            if exc.parameter == "pitch_diameter" and partner == "ball_diameter":
+                if exc.template[0].startswith("more than the ball diameter"):
+                    return InputError(
+                        *given,
+                        f"less than the pitch diameter {shown} (not given: a catalogue or "
+                        "derived value)",
+                    )
             if exc.parameter == "bore" and partner == "outside_diameter":
                 return InputError(
                     *given,
-                    f"more than the bore {own} {unit} (not given: a catalogue or derived value)",
+                    f"more than the bore {shown} (not given: a catalogue or derived value)",
                 )
             return InputError(
                 *given,
-                f"a value with which the {label} {own}{' ' + unit if unit else ''} (not given: "
-                f"a catalogue or derived value) passes its check: {_in_units(exc.allowed, name)}",
-                _in_units(exc.hint, name),
+                f"a value with which the {label} {shown} (not given: a catalogue or derived "
+                f"value) passes its check: {own.allowed}",
+                own.hint,
             )
         return exc
 
@@ -224,7 +198,7 @@ def read_geometry_file(path) -> dict:
             if type(value) is not int:
                 raise InputError(where, value, "an integer number of balls (e.g. balls = 9)")
         elif isinstance(value, bool) or not isinstance(value, (int, float)):
-            unit = _unit(key)
+            unit = _symbol(key)
             raise InputError(
                 where, value, f"a number{' in ' + unit if unit else ''} (TOML integer or float)"
             )
@@ -238,7 +212,9 @@ def read_geometry_file(path) -> dict:
 
 def _catalog_message(exc) -> str:
     """A catalogue error in the user's terms: the inputs to give instead of keywords."""
-    names = [f"`{_KEYWORD_INPUT[k]}`" for k in exc.needed if k in _KEYWORD_INPUT]
+    from .table import input_for
+
+    names = [f"`{input_for(k, INPUTS)}`" for k in exc.needed if input_for(k, INPUTS) in BEARING]
     if not names:
         return str(exc)
     listed = names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
@@ -281,7 +257,7 @@ def bearing_from(values: dict):
     try:
         if designation:
             return bearing_from_designation(designation, system=given.system, overrides=overrides)
-        missing = [n for n in GEOMETRY_NEEDED if _KEYWORDS[n][0] not in overrides]
+        missing = [n for n in GEOMETRY_NEEDED if _field(n) not in overrides]
         if missing:
             raise InputError(
                 "designation",
@@ -345,7 +321,7 @@ def given_fields(values: dict) -> dict[str, str]:
     """The geometry inputs given in ``values`` (a geometry file counts as the whole
     bearing, ``system`` reads the designation): input -> the BallBearing field it sets."""
     return {
-        name: _KEYWORDS.get(name, (name,))[0]
+        name: _field(name) if INPUTS[name].fields else name
         for name in BEARING
         if values.get(name) is not None and name not in ("designation", "system", "geometry")
     }

@@ -44,13 +44,20 @@ class Input:
     high: float | None = None
     low_open: bool = False
     high_open: bool = False
-    sets: str = ""
+    sets: str | tuple = ""
     what: str = ""
     aliases: tuple = ()
 
     def with_(self, **changes) -> Input:
         """This input with another default or help (one analysis' reading of it)."""
         return replace(self, **changes)
+
+    @property
+    def fields(self) -> tuple[str, ...]:
+        """The model parameters this input sets (``sets``: "Model.field" or "field", one or
+        several), by their names: a model error about one of them is about this input."""
+        sets = (self.sets,) if isinstance(self.sets, str) else self.sets
+        return tuple(s.rpartition(".")[2] for s in sets if s)
 
     def allowed(self, unit: str = "") -> str:
         """The allowed range (or choices) in words, in the input's ``unit`` (its symbol)."""
@@ -249,6 +256,43 @@ INPUTS: dict[str, Input] = {
     "ring_expansion": Input(
         "bool", False, "Reduce the clearance by the inner ring's centrifugal expansion."
     ),
+    # ---------------------------------------------------------------- records
+    "folder": Input(
+        "path",
+        ...,
+        "Folder of recordings: files analyze reads (.npz, .csv, .wav, .mat), PRONOSTIA "
+        "snapshots acc_NNNNN.csv as published.",
+    ),
+    "signal_file": Input(
+        "path",
+        ...,
+        "Vibration record: .npz, .csv (with a time column), .wav or .mat (CWRU variables, "
+        "MATLAB structs such as MFPT's bearing.gs, v7.3).",
+    ),
+    "channel": Input(
+        "text",
+        None,
+        "Channel or struct field path (e.g. DE, acc_y, bearing.gs or gs); default acc_y, DE "
+        "or gs if present, else the first.",
+    ),
+    "sample_rate_hz": _n(
+        None,
+        "Sample rate of the record [Hz]: of a recording, where its file does not store it "
+        "(a rate given that differs from the file's is used, with a warning); of a simulated "
+        "record, the rate it is made at.",
+        0.0,
+        1e9,
+        low_open=True,
+        what="a sample rate",
+    ),
+    "duration_s": _n(
+        None,
+        "Length of the simulated record [s].",
+        0.0,
+        3600.0,
+        low_open=True,
+        what="a duration",
+    ),
     # ---------------------------------------------------------------- form errors, defects
     "waviness": Input(
         "texts",
@@ -295,6 +339,109 @@ BEARING = tuple(INPUTS)[: tuple(INPUTS).index("geometry") + 1]
 GEOMETRY_NEEDED = ("balls", "ball_diameter_mm", "pitch_diameter_mm")
 #: The form errors.
 FORMS = ("waviness", "ball_size_error_um", "surface3d", "seed")
+
+
+def input_for(parameter: str, specs: dict) -> str | None:
+    """The input of ``specs`` (name -> Input) that ``parameter`` is: the input of that name,
+    else the first whose model parameters (:attr:`Input.fields`) include it, else the
+    first whose name less its unit suffix is it (``duration`` -> ``duration_s``); None if
+    none.
+
+    >>> input_for("shaft_speed", INPUTS), input_for("ball_count", INPUTS)
+    ('speed_rpm', 'balls')
+    >>> input_for("duration", INPUTS)
+    'duration_s'
+    """
+    from ..units import unit_of
+
+    if parameter in specs:
+        return parameter
+    for name, spec in specs.items():
+        if parameter in spec.fields:
+            return name
+    for name in specs:
+        unit = unit_of(name)
+        if unit is not None and name[: -len(unit.suffix) - 1] == parameter:
+            return name
+    return None
+
+
+def restate(exc: InputError, values: dict, specs: dict) -> InputError:
+    """A model's error ``exc`` in the terms of the request ``values`` whose inputs are
+    ``specs``: about the input that sets the parameter it names (:func:`input_for`), with
+    the value as given (or the model's value in the input's unit), the numbers of its text
+    in that unit, and the model parameters it names in backquotes as the inputs that set
+    them. An error about no input of the request is returned as it is.
+
+    >>> e = InputError("ball_diameter", 0.05, "less than {d}", unit="m", numbers={"d": 0.04})
+    >>> str(restate(e, {"ball_diameter_mm": 50.0}, INPUTS))
+    'ball_diameter_mm = 50.0 is not allowed: expected less than 40 mm'
+    """
+    from ..units import unit_of
+
+    name = input_for(exc.parameter, specs)
+    rename = lambda p: f"`{input_for(p, specs) or p}`"  # noqa: E731
+    if name is None:
+        return exc.restated(exc.parameter, exc.value, names=rename)
+    unit = unit_of(name)
+    value = values.get(name)
+    si = unit is not None and exc.unit not in ("", unit.symbol)
+    if value is None:
+        value = exc.value
+        if si and isinstance(value, (int, float)) and not isinstance(value, bool):
+            value = unit.from_si(value)
+    if si:
+        return exc.restated(name, value, unit.factor, unit.symbol, names=rename)
+    return exc.restated(name, value, names=rename)
+
+
+def closed(values: dict, specs: dict, what: str = "") -> dict:
+    """Check a request against its inputs: a key that is not an input is refused naming
+    the closest one (a misspelt key must not be ignored silently), an input whose default
+    is ``...`` must be given, and every value must lie in its range.
+
+    Parameters
+    ----------
+    values : dict
+        The request: input name -> value in its unit (None: not given).
+    specs : dict
+        Its inputs: name -> :class:`Input`.
+    what : str
+        What the request is for (an analysis' name), for the error.
+
+    Returns
+    -------
+    dict
+        ``values``.
+
+    >>> try:
+    ...     closed({"reliabilty_percent": 99}, {"reliability_percent": INPUTS["seed"]}, "life")
+    ... except InputError as exc:
+    ...     print(exc.hint)
+    did you mean `reliability_percent`?
+    """
+    import difflib
+
+    for key in values:
+        if key not in specs:
+            close = difflib.get_close_matches(str(key), list(specs), n=1, cutoff=0.6)
+            hint = (
+                f"did you mean `{close[0]}`?"
+                if close
+                else "its inputs: " + ", ".join(f"`{n}`" for n in specs)
+            )
+            raise InputError(str(key), values[key], f"an input of {what or 'the request'}", hint)
+    for name, spec in specs.items():
+        if spec.default is ... and values.get(name) is None:
+            raise InputError(name, None, spec.allowed(_symbol(name)))
+    return check(values, specs)
+
+
+def _symbol(name: str) -> str:
+    from ..units import unit_of
+
+    unit = unit_of(name)
+    return unit.symbol if unit is not None else ""
 
 
 def check(values: dict, specs: dict | None = None) -> dict:

@@ -65,14 +65,15 @@ def check_speed(
     ``shaft_speed``, the limit in rpm); ``hint`` says why."""
     limit = speed_limit(bearing)
     if abs(shaft_speed) > limit * (1 + 1e-12):
-        rpm, top = abs(shaft_speed) * 30 / math.pi, limit * 30 / math.pi
         raise InputError(
             "shaft_speed",
-            f"{rpm:.6g} rpm",
-            f"at most {top:.6g} rpm for this bearing (n d_m <= "
+            abs(shaft_speed),
+            "at most {limit} for this bearing (n d_m <= "
             f"{MAX_SPEED_FACTOR:.0e} mm/min with d_m = "
             f"{bearing.pitch_diameter * 1e3:.4g} mm)",
             hint,
+            unit="rad/s",
+            numbers={"limit": limit},
         )
 
 

@@ -4,15 +4,25 @@
 
 from __future__ import annotations
 
+from ..analyses.base import FILES, Analysis
 from ..errors import InputError
-from ..inputs import BEARING, INPUTS, Input, bearing_from, check, check_defects, condition_from
+from ..inputs import (
+    BEARING,
+    INPUTS,
+    Input,
+    bearing_from,
+    check,
+    check_defects,
+    condition_from,
+    restate,
+)
 from ..inputs.specs import parse_defect
 
 #: The report's inputs, in the order the command line lists them.
 REPORT_INPUTS: dict[str, Input] = {
     **{name: INPUTS[name] for name in BEARING},
-    "speed_rpm": INPUTS["speed_rpm"].with_(help="Shaft (inner-ring) speed [rpm]."),
-    "radial_load_n": INPUTS["radial_load_n"].with_(default=None),
+    "speed_rpm": INPUTS["speed_rpm"].with_(default=..., help="Shaft (inner-ring) speed [rpm]."),
+    "radial_load_n": INPUTS["radial_load_n"].with_(default=...),
     "axial_load_n": INPUTS["axial_load_n"],
     "lubricant": INPUTS["lubricant"].with_(
         default="iso-vg68",
@@ -27,14 +37,8 @@ REPORT_INPUTS: dict[str, Input] = {
         "outer:width_mm=1.2,depth_mm=0.25[,angle_deg=270], inner:..., ball:width_mm=1.2[,ball=0]. "
         "Default: an example outer-race defect (said so in the report)."
     ),
-    "duration_s": Input(
-        "number",
-        1.0,
-        "Length of the simulated vibration record (rigid model) [s].",
-        low=0.0,
-        high=60.0,
-        low_open=True,
-        what="a duration",
+    "duration_s": INPUTS["duration_s"].with_(
+        default=1.0, help="Length of the simulated vibration record (rigid model) [s].", high=60.0
     ),
     "slip_duration_s": Input(
         "number",
@@ -45,15 +49,10 @@ REPORT_INPUTS: dict[str, Input] = {
         high=10.0,
         what="a duration",
     ),
-    "sample_rate_hz": Input(
-        "number",
-        None,
-        "Sample rate of the simulated record [Hz] (default: 25.6 kHz, more at high speed so "
-        "the ISO 15242 bands are resolved).",
-        low=0.0,
+    "sample_rate_hz": INPUTS["sample_rate_hz"].with_(
+        help="Sample rate of the simulated record [Hz] (default: 25.6 kHz, more at high speed "
+        "so the ISO 15242 bands are resolved).",
         high=1e7,
-        low_open=True,
-        what="a rate",
     ),
 }
 
@@ -61,7 +60,6 @@ REPORT_INPUTS: dict[str, Input] = {
 def report_from(values: dict, progress=None):
     """The Report of a request (:func:`~bearinglab.report.builder.build_report`);
     ``progress(title, done, total)`` is called per section."""
-    from ..analyses.base import in_request_terms
     from .builder import build_report
 
     check(values, REPORT_INPUTS)
@@ -90,4 +88,13 @@ def report_from(values: dict, progress=None):
             progress=progress,
         )
     except InputError as exc:
-        raise in_request_terms(exc, values) from None
+        raise restate(exc, values, REPORT_INPUTS) from None
+
+
+REPORT = Analysis(
+    "report",
+    "An engineer's report of a bearing at an operating point (build_report), one HTML page.",
+    REPORT_INPUTS,
+    run=report_from,
+    files={"output": FILES["output"].with_(default=..., help="The HTML file to write.")},
+)

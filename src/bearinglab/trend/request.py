@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from dataclasses import replace
 
+from ..analyses.base import FILES, Analysis, plot_file
 from ..errors import InputError
 from ..inputs import BEARING, INPUTS, Input, bearing_from, bearing_warnings, check, speed_from
 from .alarm import FALSE_ALARM_PER_HOUR, PERSISTENCE
@@ -13,26 +14,18 @@ from .analysis import BASELINE, SETTLE
 
 #: The trend's inputs besides the bearing, in the order the command line lists them.
 TREND_INPUTS: dict[str, Input] = {
-    "folder": Input(
-        "path",
-        ...,
-        "Folder of recordings: PRONOSTIA snapshots acc_NNNNN.csv as published, or records "
+    "folder": INPUTS["folder"].with_(
+        help="Folder of recordings: PRONOSTIA snapshots acc_NNNNN.csv as published, or records "
         "analyze reads (.npz, .csv, .wav, .mat) with an index.csv (file, time_s) or a time_s "
         "in their metadata.",
     ),
-    "channel": Input(
-        "texts",
-        None,
-        "Channel to trend (repeatable; PRONOSTIA: horizontal, vertical); default all. The "
+    "channel": INPUTS["channel"].with_(
+        kind="texts",
+        help="Channel to trend (repeatable; PRONOSTIA: horizontal, vertical); default all. The "
         "diagnosis uses the first.",
     ),
-    "sample_rate_hz": Input(
-        "number",
-        None,
-        "Sample rate [Hz] where the files do not store it (PRONOSTIA: 25600).",
-        low=0.0,
-        low_open=True,
-        what="a sample rate",
+    "sample_rate_hz": INPUTS["sample_rate_hz"].with_(
+        help="Sample rate [Hz] where the files do not store it (PRONOSTIA: 25600)."
     ),
     "settle_s": Input(
         "number",
@@ -155,3 +148,17 @@ def trend_from(values: dict, *, jobs: int = 1, scheduler=None, progress=None):
     if bearing is None:
         return result
     return replace(result, warnings=(*result.warnings, *bearing_warnings(bearing, decoded)))
+
+
+TREND = Analysis(
+    "trend",
+    "The trend of a machine over a series of recordings (trend_records).",
+    TREND_INPUTS,
+    run=trend_from,
+    files={
+        "html": FILES["html"].with_(
+            help="Also write a page with the figure, the rule and the tests."
+        ),
+        **plot_file("the indicators over time, with the baseline, the limits and the alarm"),
+    },
+)

@@ -146,3 +146,19 @@ def run_validation(
             progress(i, len(cases), f"{case.source}: {case.quantity}")
         results.append(run_case(case))
     return Validation(tuple(results), summarize(results, time.perf_counter() - start))
+
+
+def _validate(values: dict, progress: Callable[[int, int, str], None] | None = None):
+    return run_validation(progress=progress)
+
+
+def _entry():
+    from ..analyses.base import HTML_FILE, Analysis
+
+    return Analysis(
+        "validate",
+        "Every published case bearinglab reproduces, with its verdict (run_validation).",
+        {},
+        run=_validate,
+        files=HTML_FILE,
+    )

@@ -1,0 +1,152 @@
+"""The foundation's requests: what a designation or a geometry is (``info``) and the
+Hertz contact of one rolling element with both raceways (``contact``). Each builds the
+models from the request (:mod:`bearinglab.inputs`), calls the library once and keeps the
+result."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+from ..errors import CatalogError, DesignationError
+from ..inputs import Input, bearing_from, bearing_warnings
+from .base import BEARING_INPUTS, Analysis, Outcome, plot_file
+
+
+@dataclass(frozen=True)
+class InfoResult:
+    """What a request names: the designation as typed (``text``), its reading
+    (``decoded``, a :class:`~bearinglab.designation.Designation` or None), the bearing
+    (a :class:`~bearinglab.geometry.BallBearing`, or None when there is no internal
+    geometry model for it, ``why_no_geometry`` saying why), its boundary dimensions
+    (``dimensions``, when the bearing is None; ``why_no_dimensions`` otherwise) and the
+    ``warnings``."""
+
+    text: str | None
+    decoded: object = None
+    bearing: object = None
+    dimensions: object = None
+    why_no_geometry: str | None = None
+    why_no_dimensions: str | None = None
+    warnings: tuple = field(default_factory=tuple)
+
+    def to_dict(self) -> dict:
+        """The designation read, the geometry with its sources and the frequency factors
+        (per shaft revolution), or the boundary dimensions and why there is no geometry."""
+        from ..kinematics import FREQUENCY_NAMES, defect_frequencies
+
+        decoded, bearing, dims = self.decoded, self.bearing, self.dimensions
+        out = {
+            "designation": self.text,
+            "system": decoded.system if decoded else None,
+            "bearing_type": (decoded.bearing_type if decoded else bearing.bearing_type),
+        }
+        if bearing is not None:
+            out.update(bearing.to_dict())
+            out["designation"] = self.text
+            f = defect_frequencies(bearing, 2 * math.pi)
+            out["frequency_factors"] = {f"{n}_order": f.orders[n] for n in FREQUENCY_NAMES}
+        else:
+            out.update(
+                {
+                    "bore_mm": decoded.bore_mm if dims is None else dims.bore * 1e3,
+                    "outside_diameter_mm": None if dims is None else dims.outside_diameter * 1e3,
+                    "width_mm": None if dims is None else dims.width * 1e3,
+                    "ball_count": None,
+                    "ball_diameter_mm": None,
+                    "pitch_diameter_mm": None,
+                    "contact_angle_deg": decoded.contact_angle_deg,
+                    "geometry_source": None,
+                    "dimensions": None if dims is None else dims.to_dict(),
+                    "dimensions_standard": None if dims is None else dims.standard,
+                    "no_dimensions_reason": self.why_no_dimensions,
+                    "no_geometry_reason": self.why_no_geometry,
+                }
+            )
+        out["warnings"] = list(self.warnings)
+        if decoded is not None:
+            out["decoded"] = decoded.to_dict()
+        return out
+
+
+def info(values: dict) -> InfoResult:
+    """The ``info`` request: the designation decoded and the bearing's geometry with its
+    sources; for a designation without an internal-geometry model (a roller bearing, a
+    size not in the catalogue), its boundary dimensions and why there is no geometry."""
+    from ..catalog import boundary_dimensions, published_geometry
+    from ..designation import parse
+
+    designation = values.get("designation")
+    decoded = None
+    try:
+        bearing, from_catalog = bearing_from(values)
+    except CatalogError as exc:  # roller bearings, sizes not in the catalogue...
+        bearing, from_catalog, why_no_geometry = None, None, str(exc)
+    else:
+        why_no_geometry = None
+    if designation:
+        try:
+            decoded = from_catalog or parse(designation, system=values.get("system"))
+        except DesignationError:
+            if published_geometry(designation) is None:  # not a catalogue name either
+                raise
+    if bearing is None and decoded is None:
+        raise CatalogError(why_no_geometry)
+    dims = why_no_dims = None
+    if bearing is None:
+        try:
+            dims = boundary_dimensions(decoded)
+        except CatalogError as exc:
+            why_no_dims = str(exc)
+    warnings = () if bearing is None else tuple(bearing_warnings(bearing))
+    return InfoResult(designation, decoded, bearing, dims, why_no_geometry, why_no_dims, warnings)
+
+
+INFO = Analysis(
+    "info",
+    "The designation decoded, boundary dimensions and internal geometry with their sources.",
+    BEARING_INPUTS,
+    run=info,
+)
+
+
+def contact(values: dict) -> Outcome:
+    """The ``contact`` request: the Hertz contact of one ball with the inner and outer
+    raceway under ``ball_load_n`` (:func:`bearinglab.contact.ball_race.ball_contacts`)."""
+    from ..contact.ball_race import ball_contacts  # scipy.special: only this request
+
+    bearing, decoded = bearing_from(values)
+    method = (values.get("hertz_method") or "exact").replace("-", "_")
+    result = ball_contacts(bearing, values["ball_load_n"], method=method)
+    warnings = bearing_warnings(bearing, decoded) + list(result.to_dict()["warnings"])
+    return Outcome(result, values.get("designation"), tuple(warnings), bearing)
+
+
+CONTACT = Analysis(
+    "contact",
+    "Hertz contact of one ball with both raceways (ball_contacts).",
+    {
+        **BEARING_INPUTS,
+        "ball_load_n": Input(
+            "number",
+            ...,
+            "Normal load on one ball [N].",
+            low=0.0,
+            high=1e7,
+            low_open=True,
+            what="a load",
+        ),
+        "hertz_method": Input(
+            "text",
+            "exact",
+            "Ellipticity and elliptic integrals: exact or Hamrock-Brewe.",
+            choices=("exact", "hamrock-brewe"),
+            aliases=("method",),
+            sets="method",
+        ),
+    },
+    run=contact,
+    files=plot_file("the contact ellipses and pressures"),
+)
+
+__all__ = ["CONTACT", "INFO", "InfoResult", "contact", "info"]
