@@ -122,7 +122,9 @@ class OperatingCondition:
         """
         if "shaft_speed" in loads:
             raise InputError(
-                "shaft_speed", loads["shaft_speed"], "not given with speed_rpm (one speed, in rpm)"
+                "shaft_speed",
+                loads["shaft_speed"],
+                "not given with `speed_rpm` (one speed, in rpm)",
             )
         if _finite("speed_rpm", speed_rpm, "a speed >= 0 [rpm]") < 0:
             raise InputError("speed_rpm", speed_rpm, "a speed >= 0 [rpm]")

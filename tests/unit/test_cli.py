@@ -228,11 +228,17 @@ def test_info_catalogue_name_and_dimension_only_bearings(capsys):
 
 
 def one_error_line(capsys, args, code=2):
+    """The one error line; with --json, stdout holds the error's fields, nothing else."""
     assert main(args) == code
     captured = capsys.readouterr()
     lines = captured.err.strip().splitlines()
     assert len(lines) == 1, captured.err
-    assert "Traceback" not in captured.err and captured.out == ""
+    assert "Traceback" not in captured.err
+    if "--json" in args and code == 2:
+        error = json.loads(captured.out)["error"]
+        assert lines[0] == "error: " + error["message"] and error["input"]
+    else:
+        assert captured.out == ""
     return lines[0]
 
 
@@ -260,7 +266,7 @@ GEOMETRY_FILE_ERRORS = [
     ('geometry = "other.toml"', "--geometry key 'geometry'", "one of"),
     ("[bearing]\nballs = 9", "--geometry key 'bearing'", "one of"),
     ("balls = 9\nball_count = 9", "--geometry key 'ball_count'", "once"),
-    ("clearance_um = -1000", "--geometry clearance_um = -1000", "[-397, 635] um"),
+    ("clearance_um = -1000", "--geometry clearance_um = -1000", "[-397.002 µm, 635.203 µm]"),
 ]
 
 
@@ -432,7 +438,7 @@ def test_info_json_of_every_seed_003_example(capsys, text, bearing_type, bore_mm
         ),
         (
             ["info", "6205", "--clearance-um", "-1000"],
-            "--clearance-um = -1000 is not allowed: expected a value in [-397, 635] um",
+            "--clearance-um = -1000 is not allowed: expected a value in [-397.002 µm, 635.203 µm]",
         ),
         (["info", ""], "DESIGNATION = '' is not allowed"),
         (

@@ -122,7 +122,7 @@ def test_unused_inputs_are_named_by_their_options(capsys):
         "--seal-diameter-mm",
         "30",
     )["warnings"]
-    assert "--equivalent-load-n: no effect with --model skf" in skf
+    assert "--equivalent-load-n: no effect with --friction-model skf" in skf
     assert "--seal-diameter-mm: no effect without --seal-constants" in skf
     # the library's own note, in parameter names, is not shown beside them
     for library_words in ("does not use", "equivalent_load", "seal_diameter"):
@@ -134,7 +134,7 @@ def test_unused_inputs_are_named_by_their_options(capsys):
 @pytest.mark.parametrize(
     "options, said",
     [
-        (["--outer-rotating"], "--outer-rotating: no effect with --method iso281"),
+        (["--outer-rotating"], "--outer-rotating: no effect with --life-method iso281"),
         (["--ep-additives"], "--ep-additives: no effect without --viscosity-mm2-s"),
     ],
 )

@@ -505,7 +505,7 @@ def test_cli_table(capsys):
         (["NU205", "--speed-rpm", "10", "--axial-load-n", "10"], "give P (--equivalent-load-n)"),
         (["1205", "--speed-rpm", "10"], "--friction-type"),
         (["6205", "--speed-rpm", "10", "--type", "plain"], "--friction-type"),
-        (["NU205", "--speed-rpm", "10", "--model", "skf"], "use --model constant"),
+        (["NU205", "--speed-rpm", "10", "--model", "skf"], "use --friction-model constant"),
         (["7206", "--speed-rpm", "10", "--model", "skf"], "--skf-constants"),
         ([*SKF_SLOW, "--skf-constants", "1,2"], "--skf-constants"),
         (
@@ -677,7 +677,7 @@ def test_cli_and_report_give_the_same_torques(capsys, designation, cli, report):
         ),
         (
             ["6205", "--speed-rpm", "10", "--lubricant", "honey"],
-            "--lubricant = 'honey' is not allowed: expected one of seed004-grease, iso-vg68",
+            "--lubricant = 'honey' is not allowed: expected one of iso-vg68, seed004-grease",
         ),
         (
             ["NU205", "--speed-rpm", "10", "--pitch-diameter-mm", "60"],
@@ -713,10 +713,10 @@ def test_inputs_the_model_does_not_use_are_checked_and_named(capsys):
         "grease",
     )
     # the command names the options as typed; the library's own note is not repeated
-    unused = "--viscosity-mm2-s and --lubrication: no effect with --model constant"
+    unused = "--viscosity-mm2-s and --lubrication: no effect with --friction-model constant"
     assert unused in d["warnings"] and not any("does not use" in w for w in d["warnings"])
     t = run_json(capsys, "6205", "--speed-rpm", "10", "--temperature-c", "50")
-    assert "--temperature-c: no effect with --model constant" in t["warnings"]
+    assert "--temperature-c: no effect with --friction-model constant" in t["warnings"]
     b, _ = bearing_from_designation("6205")
     with pytest.raises(InputError, match="viscosity"):
         bearing_friction(b, 100.0, 1000.0, viscosity=-5e-6)

@@ -33,7 +33,7 @@ DIAGNOSIS_INPUTS: dict[str, Input] = {
     "speed_range_rpm": Input(
         "text",
         None,
-        "LO,HI [rpm]: where speed_rpm auto searches (default +-5 % of the recorded speed).",
+        "LO,HI [rpm]: where `speed_rpm` auto searches (default +-5 % of the recorded speed).",
     ),
     "method": Input(
         "texts",

@@ -179,7 +179,7 @@ STATIC = Analysis(
             False,
             "Also the inner-ring centre orbit: over one ball spacing (uniform balls), or, "
             "with form errors, in time over one cage revolution (seed 003 eqs. 14-18; needs "
-            "speed_rpm > 0).",
+            "`speed_rpm` > 0).",
         ),
         "orbit_points": Input(
             "integer",
@@ -658,8 +658,8 @@ def ring_modes(values: dict) -> Outcome:
                 "designation",
                 None,
                 "a designation, explicit geometry, or the ring-level inputs `balls`, "
-                "ring_mass_kg with radial_stiffness_n_per_m (or rigid_body_frequency_hz), "
-                "free_frequencies_hz and ball_mass_ratio",
+                "`ring_mass_kg` with `radial_stiffness_n_per_m` (or `rigid_body_frequency_hz`), "
+                "`free_frequencies_hz` and `ball_mass_ratio`",
             )
     else:
         bearing, decoded = bearing_from(values)
@@ -671,12 +671,12 @@ def ring_modes(values: dict) -> Outcome:
     # only reported (f1 fixes the contact stiffness)
     if r.to_dict()["axial_load_n"] is None:
         why = (
-            "with radial_stiffness_n_per_m (K_x is given)"
+            "with `radial_stiffness_n_per_m` (K_x is given)"
             if values.get("radial_stiffness_n_per_m") is not None
             else "without a bearing (K_x from the axial load needs the bearing's contacts)"
         )
     elif values.get("rigid_body_frequency_hz") is not None:
-        why = "on the frequencies with rigid_body_frequency_hz (only on the K_x reported)"
+        why = "on the frequencies with `rigid_body_frequency_hz` (only on the K_x reported)"
     else:
         why = None
     given = [

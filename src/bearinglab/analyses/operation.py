@@ -114,10 +114,10 @@ def life(values: dict) -> Outcome:
         raise restate(exc, values, LIFE.options) from None
     unused = no_effect(
         [("outer_rotating", "rotating" in result.unused)],
-        "with `method` iso281 (only iso16281 tells which ring turns)",
+        "with `life_method` iso281 (only iso16281 tells which ring turns)",
     ) + no_effect(
         [("ep_additives", "ep_additives" in result.unused)],
-        "without viscosity_mm2_s (the EP rule acts on a_ISO, which needs the viscosity)",
+        "without `viscosity_mm2_s` (the EP rule acts on a_ISO, which needs the viscosity)",
     )
     warnings = bearing_warnings(bearing, decoded) + list(result.warnings) + unused
     return Outcome(result, values.get("designation"), tuple(warnings), bearing)
@@ -229,7 +229,7 @@ def _friction_bearing(values: dict):
             raise InputError(
                 "designation",
                 None,
-                "a designation, or bore_mm and outside_diameter_mm (with friction_type)",
+                "a designation, or `bore_mm` and `outside_diameter_mm` (with `friction_type`)",
             )
         try:
             bearing = FrictionBearing.from_dimensions(
@@ -308,7 +308,7 @@ def friction(values: dict) -> Outcome:
             constants=None
             if c is None
             else SkfGeometryConstants(
-                *c[:4], *(c[4:] or (None, None)), source="user (skf_constants)"
+                *c[:4], *(c[4:] or (None, None)), source="user (`skf_constants`)"
             ),
             seals=values.get("seals"),
             seal_constants=ks,
@@ -326,9 +326,9 @@ def friction(values: dict) -> Outcome:
             [(input_for(n, FRICTION.options) or n, True) for n in rest],
             f"with `friction_model` {model}",
         )
-        + no_effect([("seal_diameter_mm", seal)], "without seal_constants")
+        + no_effect([("seal_diameter_mm", seal)], "without `seal_constants`")
         + no_effect(
-            [("R3,S3 of skf_constants", "r3" in unused or "s3" in unused)],
+            [("R3,S3 of `skf_constants`", "r3" in unused or "s3" in unused)],
             "for a deep-groove ball bearing (its SKF model has no centrifugal-load terms)",
         )
     )
@@ -380,8 +380,8 @@ FRICTION = Analysis(
         ),
         "lubricant": INPUTS["lubricant"].with_(
             help="Lubricant (built-in: iso-vg68, seed004-grease) for the viscosity at "
-            "temperature_c, and grease or oil for the lubrication default (SKF model; default "
-            "iso-vg68 unless viscosity_mm2_s is given).",
+            "`temperature_c`, and grease or oil for the lubrication default (SKF model; default "
+            "iso-vg68 unless `viscosity_mm2_s` is given).",
         ),
         **inputs("viscosity_mm2_s", "temperature_c"),
         "lubrication": Input(

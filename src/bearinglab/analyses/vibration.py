@@ -474,7 +474,7 @@ SIMULATE = Analysis(
         **_FORMS,
         "seed": inputs("seed")["seed"].with_(
             help="Seed of the noise (default: fresh noise) and of the random form errors "
-            "(ball_size_error_um, surface3d; default 0 for those)."
+            "(`ball_size_error_um`, `surface3d`; default 0 for those)."
         ),
         "spectrum_channel": Input(
             "text",

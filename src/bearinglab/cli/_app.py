@@ -201,7 +201,15 @@ def main(argv: list[str] | None = None) -> int:
     except BearinglabError as exc:
         from ._words import in_flags  # an input the library names in `backquotes`: a flag
 
-        sys.stderr.write(f"error: {in_flags(str(exc), {}, bare=False)}\n")
+        text = in_flags(str(exc), {})
+        if "--json" in args:  # machines get the error's fields on stdout as well
+            import json
+
+            fields = exc.to_dict() if hasattr(exc, "to_dict") else {}
+            kind = next(k for k in type(exc).__mro__ if k.__module__ == "bearinglab.errors")
+            fields = {**fields, "message": text, "kind": kind.__name__}
+            print(json.dumps({"error": fields}))
+        sys.stderr.write(f"error: {text}\n")
         return 2
     except typer.TyperException as exc:  # usage errors: unknown option, bad type, missing
         text = exc.format_message() if hasattr(exc, "format_message") else str(exc)

@@ -13,7 +13,7 @@ from typing import Annotated
 import typer
 from rich.markup import escape
 
-from ..errors import BearinglabError, CatalogError, InputError
+from ..errors import BearinglabError, CatalogError, InputError, markup
 from ._app import console
 from ._words import _SHOWN, flag, in_flags
 
@@ -151,27 +151,18 @@ def takes(
 
 
 def worded(exc: InputError, shown: dict) -> InputError:
-    """A library error in the command line's terms: an input named first in its
-    parameter (``radial_load_n``, ``geometry ball_diameter_mm``) as the command's flag,
-    its value as typed."""
+    """A library error in the command line's terms, in one place: the input it names first
+    (``radial_load_n``, ``geometry ball_diameter_mm``) as the command's flag, its value as
+    typed, and the inputs its texts name (in backquotes) as flags; the input's public
+    name stays in the error's fields (``--json``)."""
     if isinstance(exc, OptionError):
         return exc
     head, space, rest = exc.parameter.partition(" ")
-    if head not in shown:
-        return exc
-    # a specification's keys (width_mm=...) are not the inputs of the same name: only
-    # the names in backquotes are inputs there
-    bare = head not in _SPECIFICATIONS
-    return OptionError(
-        shown[head] + space + rest,
-        exc.value,
-        in_flags(exc.allowed, shown, bare=bare),
-        in_flags(exc.hint, shown, bare=bare),
-    )
-
-
-#: Inputs written as KEY=VALUE specifications.
-_SPECIFICATIONS = ("defect", "waviness", "surface3d", "ball_size_error_um")
+    option = shown[head] + space + rest if head in shown else exc.parameter
+    names = lambda name: shown.get(name, flag(name))  # noqa: E731
+    error = OptionError(option, exc.value, markup(exc.allowed, names), markup(exc.hint, names))
+    error.input, error.unit = exc.parameter, exc.unit
+    return error
 
 
 def speed_rad_s(speed_rpm: float, *, zero: bool = False) -> float:
@@ -220,16 +211,26 @@ def _show(value) -> str:
 
 class OptionError(InputError):
     """An :class:`InputError` worded for the command line: the option as typed, its value
-    in the option's units."""
+    in the option's units; ``input`` is the input's public name (the option's, if it is
+    not an input)."""
 
     def __init__(self, parameter: str, value, allowed: str, hint: str = "") -> None:
         super().__init__(parameter, value, allowed, hint)
+        self.input = parameter.lstrip("-").replace("-", "_").partition(" ")[0]
         message = (
             f"{parameter} is not given: expected {allowed}"
             if value is None
             else f"{parameter} = {_show(value)} is not allowed: expected {allowed}"
         )
         self.args = (message + (f" ({hint})" if hint else ""),)
+
+    @property
+    def message(self) -> str:
+        return self.args[0] if self.args else super().message
+
+    def to_dict(self) -> dict:
+        """The error's fields: the input's public name, the option as typed, and the rest."""
+        return {**super().to_dict(), "input": self.input, "option": self.parameter}
 
 
 def _print_warnings(warnings: list[str]) -> None:

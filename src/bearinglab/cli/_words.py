@@ -1,8 +1,8 @@
-"""The command line's words for the library's: an input's flag, and a text's input names
-(in backquotes, or snake_case names of the running command's parameters) as flags. Imports
-nothing of the cli, so that every part of it can use it."""
+"""The command line's words for the library's: an input's flag, and the inputs a text
+names (in backquotes, the library's markup) as flags. Imports nothing of the cli, so that
+every part of it can use it."""
 
-import re
+from ..errors import markup
 
 
 def flag(name: str) -> str:
@@ -14,14 +14,11 @@ def flag(name: str) -> str:
 _SHOWN: dict[str, str] = {}
 
 
-def in_flags(text: str, shown: dict | None = None, *, bare: bool = True) -> str:
-    """``text`` with the inputs it names as the command's flags: a name in backquotes
-    (`balls`), or (with ``bare``) a snake_case name of one of the command's parameters."""
+def in_flags(text: str, shown: dict | None = None) -> str:
+    """``text`` with the inputs it names in backquotes (`balls`) as the command's flags.
+
+    >>> in_flags("give `balls` and `ball_diameter_mm`", {})
+    'give --balls and --ball-diameter-mm'
+    """
     shown = _SHOWN if shown is None else shown
-    text = re.sub(r"`(\w+)`", lambda m: shown.get(m.group(1), flag(m.group(1))), text)
-    names = [n for n in shown if "_" in n and n in text] if bare else []
-    if not names:
-        return text
-    # not a key of a specification: width_mm=1.2, outer:width_mm
-    pattern = r"(?<![\w:,=])(" + "|".join(sorted(names, key=len, reverse=True)) + r")(?![\w=])"
-    return re.sub(pattern, lambda m: shown[m.group(1)], text)
+    return markup(text, lambda name: shown.get(name, flag(name)))

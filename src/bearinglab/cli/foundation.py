@@ -23,6 +23,8 @@ def info(values, json_output: JsonOpt = False):
     frequency factors."""
     r = INFO(values)
     out = r.to_dict()
+    if out.get("no_geometry_reason"):  # the inputs it names, as this command's flags
+        out["no_geometry_reason"] = in_flags(out["no_geometry_reason"])
     if json_output:
         _emit_json(out)
         return

@@ -205,7 +205,7 @@ class SlipParameters:
             raise InputError(
                 "oil_fraction",
                 0,
-                "a fraction > 0 when spin_drag is on",
+                "a fraction > 0 when `spin_drag` is on",
                 "the spin drag acts in the oil-air mixture",
             )
 

@@ -86,7 +86,7 @@ def condition_from(values: dict, *, positive_speed: bool = False, unloaded: str 
     check(v)
     if unloaded and not v["radial_load_n"] and not v["axial_load_n"]:
         raise InputError(
-            "radial_load_n", v["radial_load_n"], "a load > 0 N (or an axial_load_n)", unloaded
+            "radial_load_n", v["radial_load_n"], "a load > 0 N (or an `axial_load_n`)", unloaded
         )
     angle = math.radians(v["radial_load_angle_deg"])
     tilt = v["misalignment_mrad"] * 1e-3

@@ -300,8 +300,8 @@ def bearing_warnings(bearing, decoded=None) -> list[str]:
         if reach > big_d:
             out.append(
                 f"the balls reach to a diameter of {reach * 1e3:.4g} mm, beyond the "
-                f"outside diameter {big_d * 1e3:.4g} mm: check pitch_diameter_mm and "
-                "ball_diameter_mm"
+                f"outside diameter {big_d * 1e3:.4g} mm: check `pitch_diameter_mm` and "
+                "`ball_diameter_mm`"
             )
     return out
 

@@ -95,14 +95,15 @@ class Input:
         symbol = unit.symbol if unit is not None else ""
         if not math.isfinite(value):
             ranged = self.low is not None or self.high is not None
-            raise InputError(name, value, self.allowed(symbol) if ranged else "a finite number")
+            allowed = self.allowed(symbol) if ranged else "a finite number"
+            raise InputError(name, value, allowed, unit=symbol)
         bad = False
         if self.low is not None:
             bad = value <= self.low if self.low_open else value < self.low
         if not bad and self.high is not None:
             bad = value >= self.high if self.high_open else value > self.high
         if bad:
-            raise InputError(name, value, self.allowed(symbol))
+            raise InputError(name, value, self.allowed(symbol), unit=symbol)
         return value
 
 
@@ -243,7 +244,7 @@ INPUTS: dict[str, Input] = {
         "bool",
         False,
         "Include the balls' gyroscopic moments, held by friction at the controlling raceway "
-        "(race_control).",
+        "(`race_control`).",
     ),
     "race_control": Input(
         "text",

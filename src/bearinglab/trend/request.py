@@ -75,7 +75,7 @@ TREND_INPUTS: dict[str, Input] = {
     **{name: INPUTS[name] for name in BEARING},
 }
 TREND_INPUTS["designation"] = TREND_INPUTS["designation"].with_(
-    help="Bearing designation, or give the geometry: with speed_rpm, each fault family's "
+    help="Bearing designation, or give the geometry: with `speed_rpm`, each fault family's "
     "significance by the diagnosis."
 )
 
