@@ -673,7 +673,10 @@ def test_cli_life_table_and_plot(capsys, tmp_path):
             ["6205", "--speed-rpm", "100", "--radial-load-n", "10", "--misalignment-mrad", "1"],
             "--misalignment-mrad",
         ),
-        (["6205", "--speed-rpm", "100", "--radial-load-n", "10", "--method", "lp"], "--life-method"),
+        (
+            ["6205", "--speed-rpm", "100", "--radial-load-n", "10", "--method", "lp"],
+            "--life-method",
+        ),
         (["QJ205", "--speed-rpm", "100", "--radial-load-n", "10"], "bearing_type"),
     ],
 )
