@@ -478,7 +478,8 @@ def series_test(
         harmonic = min(0.0, raw_harmonic + log_m + math.log(n_gates)) if n_gates else 0.0
     else:
         log_p, support, harmonic = (
-            decoy_logp(v, d) for v, d in zip((raw_log_p, raw_support, raw_harmonic), fitted, strict=True)
+            decoy_logp(v, d)
+            for v, d in zip((raw_log_p, raw_support, raw_harmonic), fitted, strict=True)
         )
     row = use[best]
     freq = grid[best] * n_arr + k_arr * (modulation or 0.0)
