@@ -101,7 +101,7 @@ def _positive(name: str, value, allowed: str, optional: bool = True) -> float | 
     return v
 
 
-def _speed(frequencies, shaft_speed, speed_range, x, fs, warnings):
+def _speed(frequencies, shaft_speed, speed_range, x, fs, warnings, supply=None):
     """(DefectFrequencies at the speed used, the speed record, the shaft rate the signal
     shows [Hz], the doubt on the speed given or None): the inputs checked here, the speed
     by :func:`.speed.speed_used`."""
@@ -126,7 +126,7 @@ def _speed(frequencies, shaft_speed, speed_range, x, fs, warnings):
         raise InputError("shaft_speed", nominal, 'a speed > 0 rad/s or "auto"')
     if nominal is None and not auto:
         raise InputError("shaft_speed", None, 'a speed > 0 rad/s or "auto" with a BallBearing')
-    used, record, measured, doubt = speed_used(x, fs, nominal, speed_range, auto, warnings)
+    used, record, measured, doubt = speed_used(x, fs, nominal, speed_range, auto, warnings, supply)
     kin = defect_frequencies(bearing, used, outer_rotating=outer, contact_angle=alpha)
     return kin, record, kin.shaft_hz if measured is None else measured, doubt
 
@@ -294,7 +294,9 @@ def analyze_signal(
             f"the file stores a sample rate of {stored:g} Hz and {fs:g} Hz was given: every "
             f"frequency of the record reads {fs / stored:.4g} times what the file says"
         )
-    kin, speed, shaft_hz, doubt = _speed(frequencies, shaft_speed, speed_range, x, fs, warnings)
+    kin, speed, shaft_hz, doubt = _speed(
+        frequencies, shaft_speed, speed_range, x, fs, warnings, supply
+    )
     nyquist = fs / 2
     freqs = {name: kin.hz(name) for name in ("shaft", "ftf", "bpfo", "bpfi", "ball_defect")}
     largest = max(freqs.values())
@@ -365,7 +367,14 @@ def analyze_signal(
             "masked with them"
         )
     decision = decide(
-        spectra, fams, valid, max_frequency, harmonics, pfa, (rates["shaft"], rates["ftf"])
+        spectra,
+        fams,
+        valid,
+        max_frequency,
+        harmonics,
+        pfa,
+        (rates["shaft"], rates["ftf"]),
+        (shaft_hz, supply, mesh, compliance),
     )
     faults = withdrawn = tuple(decision["faults"])
     if doubt is not None:
@@ -383,7 +392,7 @@ def analyze_signal(
         else (faults[0] if len(faults) == 1 else "compound: " + " + ".join(faults))
     )
     if not faults and speed["confirmed"] is not False:
-        warnings += stray_warning(spectra, fams, valid, max_frequency, pfa, freqs, shaft_hz)
+        warnings += stray_warning(spectra, fams, valid, max_frequency, pfa, freqs, shaft_hz, supply)
     table = {}
     for fam in fams:
         method, test = decision["tests"][fam.name]

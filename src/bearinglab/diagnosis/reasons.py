@@ -85,13 +85,14 @@ def doubt_reason(withdrawn, table) -> str:
     )
 
 
-def stray_warning(spectra, fams, valid, max_frequency, pfa, freqs, shaft) -> list[str]:
+def stray_warning(spectra, fams, valid, max_frequency, pfa, freqs, shaft, supply=None) -> list[str]:
     """A warning for the strongest harmonic series that no family explains (the bearing
     or the speed given may be wrong), at the verdict's false-alarm probability."""
+    level = pfa / len(spectra)
     found = [
         (s, hit)
         for s in spectra
-        if (hit := stray_series(s, fams, valid[s.method], max_frequency, pfa / len(spectra), shaft))
+        if (hit := stray_series(s, fams, valid[s.method], max_frequency, level, shaft, supply))
     ]
     if not found:
         return []

@@ -140,8 +140,17 @@ def shaft_frequency(
     # these bins' largest floor: the same but for records with exact zeros)
     power = power[: int(top / resolution) + FLOOR_BINS + 8]
     z = normalised(power, 2.0)
+    # the shaft's lines read by their rank (the speed check's levels are set on it)
     test = series_test(
-        z, resolution, 2.0, centre, 1.0 - low / centre, high / centre - 1.0, harmonics, top
+        z,
+        resolution,
+        2.0,
+        centre,
+        1.0 - low / centre,
+        high / centre - 1.0,
+        harmonics,
+        top,
+        tail=False,
     )
     found = [ln for ln in test.lines if ln.p_value < SPEED_ALPHA]
     if test.p_value >= SPEED_ALPHA or not found:
@@ -156,13 +165,15 @@ def shaft_frequency(
         own[max(i - 2, 0) : i + 3] = False
     for k in (4, 3, 2):
         sub = test.fundamental_hz / k
-        lower = series_test(z, resolution, 2.0, sub, 0.01, 0.01, harmonics, top, valid=own)
+        lower = series_test(
+            z, resolution, 2.0, sub, 0.01, 0.01, harmonics, top, valid=own, tail=False
+        )
         if lower.p_value >= SPEED_ALPHA or sub < 0.5:
             continue
         if sub < low:  # the series found is the k-th harmonic of one below the range
             below = below or k
             continue
-        test = series_test(z, resolution, 2.0, sub, 0.01, 0.01, harmonics, top)
+        test = series_test(z, resolution, 2.0, sub, 0.01, 0.01, harmonics, top, tail=False)
         found = [ln for ln in test.lines if ln.p_value < SPEED_ALPHA]
         break
     # refine each line by a parabola through its bin and the neighbours (log power)
@@ -181,10 +192,43 @@ def shaft_frequency(
     return ShaftEstimate(estimate, low, high, test.p_value, len(found), below, resolution)
 
 
-def shaft_multiple(x: np.ndarray, sample_rate: float, nominal: float):
+#: Supply frequencies [Hz] whose harmonics are never read as a shaft at a multiple of the
+#: speed given (the mains of most of the world; `supply_hz` adds the one given).
+SUPPLY_HZ = (50.0, 60.0)
+#: Supply harmonics so checked [-].
+SUPPLY_HARMONICS = 4
+
+
+def supply_line(frequency: float, supply=None, expected=None) -> bool:
+    """Whether ``frequency`` [Hz] lies within SPEED_WARNING of a harmonic (1 ..
+    SUPPLY_HARMONICS) of 50 Hz, 60 Hz or the ``supply`` frequency given [Hz], and closer
+    to it than to the ``expected`` frequency [Hz] (where the speed given puts a line).
+
+    >>> supply_line(119.97), supply_line(118.0), supply_line(75.5, supply=25.0)
+    (True, False, True)
+    >>> supply_line(119.97, expected=118.1), supply_line(119.8, expected=119.8)
+    (True, False)
+    """
+    bases = SUPPLY_HZ + ((float(supply),) if supply else ())
+    return any(
+        abs(frequency / (m * b) - 1.0) <= SPEED_WARNING
+        and (expected is None or abs(frequency - m * b) < abs(frequency - expected))
+        for b in bases
+        for m in range(1, SUPPLY_HARMONICS + 1)
+    )
+
+
+def shaft_multiple(x: np.ndarray, sample_rate: float, nominal: float, supply=None):
     """(k, frequency [Hz]) of an unambiguous shaft series at k times ``nominal`` [Hz]
     (k in MULTIPLES, the smallest first), or None: asked when no shaft line stands near
-    the nominal speed, where a sample rate given k times too high puts the real one."""
+    the nominal speed, where a sample rate given k times too high puts the real one.
+
+    A series on the supply's harmonics (:func:`supply_line`: 120 Hz mains read as a shaft
+    at 4 x 1772 rpm on CWRU 3006) is the supply's, not a shaft's; and a series at k x f
+    whose lines between its own - at f, 2 f, ... - show too (:func:`fundamental_shows`) is
+    the harmonics of a shaft at f, near the speed given, whose first line was too weak
+    for the search near it (a healthy record of the second laboratory: shaft at 15.23 Hz,
+    given 900 rpm, its second harmonic the strongest): neither is a speed error."""
     for k in MULTIPLES:
         low, high = (k * nominal * (1 + s) for s in (-SEARCH, SEARCH))
         if high * UNAMBIGUOUS_HARMONICS >= 0.5 * sample_rate:
@@ -195,12 +239,39 @@ def shaft_multiple(x: np.ndarray, sample_rate: float, nominal: float):
             found.unambiguous
             and found.resolves(found.frequency, RESOLVED)
             and found.p_value < SPEED_ALPHA / len(MULTIPLES)
+            and not supply_line(found.frequency, supply, k * nominal)
+            and not fundamental_shows(x, sample_rate, found.frequency, k)
         ):
             return k, found.frequency
     return None
 
 
-def speed_used(x, sample_rate, nominal, speed_range, auto: bool, warnings: list):
+def fundamental_shows(x: np.ndarray, sample_rate: float, frequency: float, k: int) -> bool:
+    """Whether the lines of a shaft at ``frequency`` / k [Hz] that are not harmonics of
+    ``frequency`` (j f / k, j = 1 .. SHAFT_HARMONICS, j not a multiple of k) make a
+    series at SPEED_ALPHA in the record ``x``: then ``frequency`` is the k-th harmonic of
+    that shaft, whose series was found."""
+    from .methods import segment_length
+    from .statistics import FLOOR_BINS, normalised, series_test
+
+    n = segment_length(x.size, sample_rate, sample_rate / x.size)
+    y = x[:n] - np.mean(x[:n])
+    power = np.abs(np.fft.rfft(y * np.hanning(n + 1)[:-1])) ** 2
+    resolution = sample_rate / n
+    top = min(0.5 * sample_rate, (SHAFT_HARMONICS + 0.5) * frequency / k * 1.01)
+    power = power[: int(top / resolution) + FLOOR_BINS + 8]
+    z = normalised(power, 2.0)
+    own = np.ones(z.size, bool)
+    for m in range(1, int(top / frequency) + 2):
+        i = int(round(m * frequency / resolution))
+        own[max(i - 2, 0) : i + 3] = False
+    sub = series_test(
+        z, resolution, 2.0, frequency / k, 0.01, 0.01, SHAFT_HARMONICS, top, valid=own, tail=False
+    )
+    return bool(sub.lines) and sub.p_value < SPEED_ALPHA
+
+
+def speed_used(x, sample_rate, nominal, speed_range, auto: bool, warnings: list, supply=None):
     """The speed a diagnosis runs at, and what the record's shaft series says of it.
 
     The shaft series is searched in ``speed_range`` ((low, high) [rad/s]; default
@@ -209,7 +280,8 @@ def speed_used(x, sample_rate, nominal, speed_range, auto: bool, warnings: list)
     unambiguous and PRECISE (then the signal's, and a warning says so); a series at a
     sub-multiple of it, or none near it but one at k x it (:func:`shaft_multiple`), is a
     doubt that the verdict settles (a sample rate or speed given k times wrong).
-    Warnings are appended to ``warnings``.
+    Warnings are appended to ``warnings``; ``supply`` [Hz] is the supply frequency given
+    (its harmonics, and 50 and 60 Hz's, are never a shaft at a multiple of the speed).
 
     Returns
     -------
@@ -263,7 +335,7 @@ def speed_used(x, sample_rate, nominal, speed_range, auto: bool, warnings: list)
                 if speed_range is None
                 else f"between {60 * low:.6g} and {60 * high:.6g} rpm"
             )
-            above = shaft_multiple(x, sample_rate, nominal / (2 * math.pi))
+            above = shaft_multiple(x, sample_rate, nominal / (2 * math.pi), supply)
             if above is None:
                 warnings.append(f"no shaft line found {where}: the speed is not checked")
             else:
