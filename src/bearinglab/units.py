@@ -254,7 +254,8 @@ DIMENSIONLESS: dict[str, str] = {
     "spectrum_channel": "the channel of the plain spectrum",
     "peaks": "labelled spectrum lines",
     "spectrum_peaks": "labelled lines of the plain spectrum",
-    "amplitude": "line amplitude, in the unit of the analysed channel",
+    "amplitude": "line amplitude: of a plain spectrum in the channel's unit (a pressure "
+    "spectrum's in Pa), of a squared-envelope spectrum in the square of the channel's unit",
     "matched": "the frequency family a line was matched to (or null)",
     "harmonic": "harmonic number of the matched family",
     "deviation": "relative deviation of a line from its kinematic frequency",

@@ -63,6 +63,19 @@ def test_content_of_the_sections(built):
     assert "basic rating life L10" in page and "RMS velocity [um/s]" in page
 
 
+def test_no_library_markup_leaks_onto_the_page(built):
+    """Issue 30: backquoted input names (`system`) and library parameter names leaked
+    into the page; the squared envelope's lines were labelled m/s2."""
+    import html as html_module
+    import re
+
+    _, page = built
+    text = html_module.unescape(re.sub(r"<[^>]+>", " ", re.sub(r"data:[^\"]+", "", page)))
+    assert "`" not in text
+    assert "<code>--system</code>" in page
+    assert "amplitude [(m/s²)²]" in page and "amplitude [m/s2]" not in page
+
+
 def test_images_are_embedded_png(built):
     _, page = built
     images = re.findall(r'<img src="([^"]*)"', page)

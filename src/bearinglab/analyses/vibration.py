@@ -169,6 +169,7 @@ NOISE = Analysis(
             "Distance of the field point from the bearing centre [mm] (default: 10 mm outside "
             "the outside diameter; seed 003's point A is 10 mm from the centre).",
             low=0.0,
+            high=1e5,
             low_open=True,
             what="a distance",
         ),
@@ -414,7 +415,8 @@ SIMULATE = Analysis(
     {
         **BEARING_INPUTS,
         "speed_rpm": _SHAFT["speed_rpm"].with_(default=...),
-        "radial_load_n": INPUTS["radial_load_n"].with_(default=...),
+        # unloaded, the rings of the planar models do not move: there is nothing to record
+        "radial_load_n": INPUTS["radial_load_n"].with_(default=..., low_open=True),
         "axial_load_n": inputs("axial_load_n")["axial_load_n"].with_(
             help="Axial load [N] (the models are planar: not used)."
         ),

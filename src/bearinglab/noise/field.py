@@ -39,6 +39,10 @@ def _retarded(spectrum: np.ndarray, n: int, sample_rate: float, delay: np.ndarra
     rounding of the alternating sum below ~1e-11 of the signal)."""
     f = np.arange(spectrum.size) * sample_rate / n
     jw = 2j * np.pi * f
+    # the m-th derivative is scaled by omega_max^m (and its coefficient by omega_max^-m):
+    # (j omega)^m alone overflows at high sample rates (m ~ 60 terms of 2 pi 60 kHz)
+    w_max = 2.0 * np.pi * f[-1]
+    unit = jw / w_max if w_max > 0 else jw
     lo, hi = float(np.min(delay)), float(np.max(delay))
     width = 2.0 * TAYLOR_LIMIT / (2.0 * np.pi * f[-1])
     bins = max(1, math.ceil((hi - lo) / width))
@@ -61,8 +65,8 @@ def _retarded(spectrum: np.ndarray, n: int, sample_rate: float, delay: np.ndarra
         bound, m = 1.0, 0
         while x > 0.0 and (m < x or bound > 1e-16):
             m += 1
-            derivative = derivative * jw
-            coefficient = coefficient * (-d) / m
+            derivative = derivative * unit
+            coefficient = coefficient * (-d * w_max) / m
             bound *= x / m
             value += coefficient * np.fft.irfft(derivative, n)[mask]
         out[mask] = value

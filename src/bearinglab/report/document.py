@@ -26,6 +26,26 @@ def esc(value) -> str:
     return html.escape(str(value), quote=True)
 
 
+def prose(text) -> str:
+    """HTML of a library text: escaped, the inputs it names in backquotes as the command
+    line's options (``code``), other backquoted words as code.
+
+    >>> prose("use `system` gost, or `bearinglab noise`")
+    'use <code>--system</code> gost, or <code>bearinglab noise</code>'
+    """
+    parts = str(text).split("`")
+    if len(parts) % 2 == 0:  # an unpaired backquote: not markup
+        return esc(text)
+    out = []
+    for i, part in enumerate(parts):
+        if i % 2 == 0:
+            out.append(esc(part))
+        else:
+            shown = "--" + part.replace("_", "-") if part.isidentifier() else part
+            out.append(f"<code>{esc(shown)}</code>")
+    return "".join(out)
+
+
 def fmt(value, digits: int = 4) -> str:
     """A table cell: floats to ``digits`` significant figures, None or NaN as a dash [-].
 
@@ -96,15 +116,15 @@ class Raw:
 
 
 def paragraph(text: str, css: str = "") -> str:
-    """A paragraph of plain text (escaped)."""
-    return f'<p class="{css}">{esc(text)}</p>'
+    """A paragraph of a library text (:func:`prose`)."""
+    return f'<p class="{css}">{prose(text)}</p>'
 
 
 def notes(items: list[str], title: str = "Notes") -> str:
     """A titled list of plain-text notes (assumptions, warnings); empty when no items."""
     if not items:
         return ""
-    lis = "".join(f"<li>{esc(t)}</li>" for t in items)
+    lis = "".join(f"<li>{prose(t)}</li>" for t in items)
     return f'<div class="notes"><h4>{esc(title)}</h4><ul>{lis}</ul></div>'
 
 
@@ -153,7 +173,7 @@ class Section:
         badge = '<span class="badge fail">failed</span>' if self.failed else ""
         content = (
             f'<div class="error"><strong>This analysis failed</strong> (the rest of the '
-            f"report is unaffected):<pre>{esc(self.error)}</pre></div>"
+            f"report is unaffected):<pre>{prose(self.error)}</pre></div>"
             if self.failed
             else self.body
         )
@@ -202,7 +222,7 @@ class Report:
             if failed
             else ""
         )
-        status += "".join(f'<p class="status warn">{esc(w)}</p>' for w in self.warnings)
+        status += "".join(f'<p class="status warn">{prose(w)}</p>' for w in self.warnings)
         return PAGE.format(
             title=esc(self.title),
             heading=esc(self.title),

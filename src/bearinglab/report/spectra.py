@@ -138,7 +138,7 @@ def envelope(ctx: Context):
     if not ctx.defects_given:
         said.insert(
             0,
-            "No defect was given (defects): this is an example outer-race "
+            "No defect was given (`defect`): this is an example outer-race "
             "defect, to show what such a fault looks like on this bearing.",
         )
     rows = [
@@ -180,7 +180,7 @@ def envelope(ctx: Context):
             "the defect frequencies and harmonics marked",
         ),
         table(
-            ["frequency [Hz]", "amplitude [m/s2]", "matched line", "deviation [%]"],
+            ["frequency [Hz]", "amplitude [(m/s²)²]", "matched line", "deviation [%]"],
             rows,
             f"Strongest envelope lines (band {band}, resolution {diag.resolution:.3g} Hz)",
             numeric=(0, 1, 3),

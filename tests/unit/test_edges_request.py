@@ -1,0 +1,58 @@
+"""Edges a new user found in the commands (issue 30, point 9), each failing on the code
+before the fix: one line naming the option, no internal error, no raw warning."""
+
+import pickle
+
+import pytest
+
+from bearinglab.cli import main
+from bearinglab.errors import InputError
+
+
+def _error_line(capsys, args) -> str:
+    assert main(args) == 2
+    captured = capsys.readouterr()
+    lines = captured.err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("error: "), captured.err
+    assert "internal error" not in lines[0] and "Warning" not in captured.err
+    return lines[0]
+
+
+def test_a_stiffness_map_speed_past_the_model_is_refused_before_work(capsys):
+    """It was an internal error (BrokenProcessPool: a worker's error did not unpickle),
+    and with one bad value the error named the internal `shaft_speed`."""
+    line = _error_line(
+        capsys, ["stiffness-map", "6205", "--radial-load-n", "100", "--speed-rpm", "0,1e6"]
+    )
+    assert line.startswith("error: --speed-rpm = '0,1e6' is not allowed")
+    assert "at most 76844.7 rpm" in line
+
+
+def test_errors_survive_a_trip_to_a_worker_process():
+    e = InputError("pitch_diameter", 0.005, "more than {d}", unit="m", numbers={"d": 0.00794})
+    back = pickle.loads(pickle.dumps(e))
+    assert str(back) == str(e) and back.numbers == {"d": 0.00794} and back.unit == "m"
+
+
+def test_a_simulation_without_load_is_refused_in_its_terms(capsys):
+    """It was blamed on "a dead or disconnected sensor" (the diagnosis of a flat record)."""
+    line = _error_line(capsys, ["simulate", "6205", "--speed-rpm", "1000", "--radial-load-n", "0"])
+    assert line.startswith("error: --radial-load-n = 0 is not allowed: expected a load in (0")
+
+
+def test_a_field_point_past_any_room_is_refused(capsys):
+    """1e300 mm was an internal error (a NaN turned into an integer)."""
+    line = _error_line(
+        capsys,
+        ["noise", "608", "--speed-rpm", "720", "--radial-load-n", "50", "--distance-mm", "1e300"],
+    )
+    assert line.startswith("error: --distance-mm = 1e+300 is not allowed")
+
+
+@pytest.mark.slow
+def test_noise_at_a_high_speed_is_computed_without_raw_warnings(capsys):
+    """At 70 000 rpm the retarded-time series overflowed ((j omega)^m at 60 kHz): raw
+    RuntimeWarnings, then "x = 'an array with NaN or inf'"."""
+    code = main(["noise", "6205", "--speed-rpm", "70000", "--radial-load-n", "1000", "--json"])
+    captured = capsys.readouterr()
+    assert code == 0 and "RuntimeWarning" not in captured.err
