@@ -56,3 +56,42 @@ def test_noise_at_a_high_speed_is_computed_without_raw_warnings(capsys):
     code = main(["noise", "6205", "--speed-rpm", "70000", "--radial-load-n", "1000", "--json"])
     captured = capsys.readouterr()
     assert code == 0 and "RuntimeWarning" not in captured.err
+
+
+def test_validate_reads_at_80_columns(monkeypatch):
+    """At 80 columns the seven-column table folded the quantity into 7-letter scraps."""
+    import io
+
+    from rich.console import Console
+
+    from bearinglab.cli import _app
+    from bearinglab.cli.validate import _print
+
+    out = io.StringIO()
+    monkeypatch.setattr(_app._LazyConsole, "_console", Console(width=80, file=out))
+    case = {
+        "source": "seed 000 (Balmont & Varlamov 1986, bearing 106)",
+        "quantity": "m=2 approx, text 7.31",
+        "published": 7.31,
+        "computed": 7.306,
+        "unit": "kHz",
+        "error_percent": -0.0545,
+        "tolerance_percent": 0.177,
+        "verdict": "pass",
+        "known_failure": None,
+        "error": None,
+    }
+    summary = {
+        "total": 1,
+        "passed": 1,
+        "known_failures": 0,
+        "failed": 0,
+        "unexpected_passes": 0,
+        "errors": 0,
+        "duration_s": 0.1,
+        "ok": True,
+    }
+    _print([case], summary)
+    lines = out.getvalue().splitlines()
+    assert max(len(line) for line in lines) <= 80
+    assert any("m=2 approx, text 7.31: 7.31 -> 7.306" in line for line in lines)

@@ -17,6 +17,10 @@ from ._output import _emit_json, progress_bar
 app = command_app()
 
 
+#: Terminal width below which the table is three columns [characters].
+NARROW = 120
+
+
 def _cell(value, digits: int = 5) -> str:
     return "-" if value is None else f"{value:.{digits}g}"
 
@@ -34,11 +38,16 @@ def _print(results: list[dict], summary: dict) -> None:
     sources: dict[str, list[dict]] = {}
     for r in results:
         sources.setdefault(r["source"], []).append(r)
-    for source, group in sources.items():
-        table = Table(
-            title=escape(source), title_justify="left", title_style="bold", header_style="bold"
+    # a narrow terminal gets three columns, so the quantity keeps most of the width
+    narrow = console.width < NARROW
+    columns = (
+        (
+            ("verdict", "left"),
+            ("error / tol. %", "right"),
+            ("quantity: published -> computed", "left"),
         )
-        for name, justify in (
+        if narrow
+        else (
             ("quantity", "left"),
             ("published", "right"),
             ("computed", "right"),
@@ -46,12 +55,18 @@ def _print(results: list[dict], summary: dict) -> None:
             ("error %", "right"),
             ("tol. %", "right"),
             ("verdict", "left"),
-        ):
+        )
+    )
+    for source, group in sources.items():
+        table = Table(
+            title=escape(source), title_justify="left", title_style="bold", header_style="bold"
+        )
+        for name, justify in columns:
             table.add_column(
                 name,
                 justify=justify,
                 overflow="fold",
-                no_wrap=name in ("verdict", "published", "computed"),
+                no_wrap=name in ("verdict", "published", "computed", "error / tol. %"),
             )
         for r in group:
             note = r["known_failure"] if r["verdict"] == "known failure" else r["error"]
@@ -60,15 +75,23 @@ def _print(results: list[dict], summary: dict) -> None:
                 if note not in reasons:
                     reasons.append(note)
                 text += f" [{reasons.index(note) + 1}]"
-            table.add_row(
-                escape(r["quantity"]),
-                _cell(r["published"]),
-                _cell(r["computed"]),
-                escape(r["unit"]),
-                _cell(r["error_percent"], 3),
-                _cell(r["tolerance_percent"], 3),
-                f"[{styles[r['verdict']]}]{escape(text)}[/]",
-            )
+            verdict = f"[{styles[r['verdict']]}]{escape(text)}[/]"
+            error, tolerance = _cell(r["error_percent"], 3), _cell(r["tolerance_percent"], 3)
+            if narrow:
+                values = f"{_cell(r['published'])} -> {_cell(r['computed'])} {r['unit']}"
+                table.add_row(
+                    verdict, f"{error} / {tolerance}", escape(f"{r['quantity']}: {values}")
+                )
+            else:
+                table.add_row(
+                    escape(r["quantity"]),
+                    _cell(r["published"]),
+                    _cell(r["computed"]),
+                    escape(r["unit"]),
+                    error,
+                    tolerance,
+                    verdict,
+                )
         console.print(table)
     for i, text in enumerate(reasons, start=1):
         console.print(f"[dim]\\[{i}] {escape(text)}[/dim]")
