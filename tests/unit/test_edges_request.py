@@ -95,3 +95,24 @@ def test_validate_reads_at_80_columns(monkeypatch):
     lines = out.getvalue().splitlines()
     assert max(len(line) for line in lines) <= 80
     assert any("m=2 approx, text 7.31: 7.31 -> 7.306" in line for line in lines)
+
+
+def test_a_replaced_option_is_refused_naming_its_replacement(capsys):
+    line = _error_line(capsys, ["trend", "some-folder", "--false-alarm", "1e-6"])
+    assert "--false-alarm-per-hour" in line and "per record" in line
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ["static", "6205", "--radial-load-n", "100", "--no-film", "--no-gyroscopic"],
+        ["life", "6205", "--speed-rpm", "1000", "--radial-load-n", "100", "--method", "iso281"],
+        ["contact", "6205", "--ball-load-n", "100", "--method", "exact"],
+        ["friction", "6205", "--speed-rpm", "1000", "--model", "constant", "--type", "radial_ball"],
+    ],
+)
+def test_negations_and_the_old_names_still_work(capsys, args):
+    """`static --no-film` failed with "No such option"; the renamed inputs keep their
+    old flags as aliases."""
+    assert main([*args, "--json"]) == 0
+    capsys.readouterr()

@@ -90,6 +90,25 @@ COMMANDS: dict[str, tuple[str, str]] = {
 }
 
 
+#: Options that were removed or whose meaning changed: (command, old flag) -> the line
+#: that says what replaces it (renamed options whose meaning stayed are aliases instead).
+REPLACED: dict[tuple[str, str], str] = {
+    ("trend", "--false-alarm"): "use --false-alarm-per-hour, a rate per hour of monitoring "
+    "(--false-alarm was a probability per record; 1e-6 per record at a record every 10 s is "
+    "3.6e-4 per hour)",
+}
+
+
+def replaced(args: list[str]) -> str | None:
+    """The line refusing a replaced option of ``args``' command, or None."""
+    command = next((a for a in args if not a.startswith("-")), None)
+    for arg in args:
+        line = REPLACED.get((command, arg.split("=")[0]))
+        if line is not None:
+            return f"error: {arg.split('=')[0]} is no longer an option of {command}: {line}"
+    return None
+
+
 def command_app() -> typer.Typer:
     """The typer app a command module registers its command(s) on."""
     return typer.Typer(add_completion=False, pretty_exceptions_enable=False, rich_markup_mode=None)
@@ -191,6 +210,10 @@ def main(argv: list[str] | None = None) -> int:
     args = list(sys.argv[1:] if argv is None else argv)
     if not args:
         args = ["--help"]
+    refused = replaced(args)
+    if refused is not None:
+        sys.stderr.write(refused + "\n")
+        return 2
     try:
         result = app(args=args, standalone_mode=False)
     except typer.Exit as exc:
