@@ -15,6 +15,7 @@ from ..inputs import (
     input_for,
     no_effect,
     restate,
+    si,
     speed_from,
 )
 from .base import BEARING_INPUTS, Analysis, Outcome, inputs, plot_file
@@ -79,28 +80,26 @@ def life(values: dict) -> Outcome:
             "ISO 281 has no misalignment; use `life_method` iso16281",
         )
     bearing, decoded = bearing_from(values)
-    kn = UNITS["kn"]
-    c, c0 = values.get("dynamic_load_rating_kn"), values.get("static_load_rating_kn")
     nu = values.get("viscosity_mm2_s")
     try:
         # the tilt turns the inner ring about the axis across the (downward) radial load
         condition = OperatingCondition(
             radial_load=condition.radial_load,
             axial_load=condition.axial_load,
-            misalignment=(UNITS["mrad"].to_si(tilt), 0.0),
+            misalignment=(si(values, "misalignment_mrad", 0.0), 0.0),
             shaft_speed=condition.shaft_speed,
         )
         result = rating_life(
             bearing,
             condition,
             reliability_percent=values.get("reliability_percent") or 90.0,
-            viscosity=None if nu is None else UNITS["mm2_s"].to_si(nu),
+            viscosity=si(values, "viscosity_mm2_s"),
             contamination=_contamination(values.get("contamination")),
             method=method,
             rotating="outer" if values.get("outer_rotating") else "inner",
             ep_additives=bool(values.get("ep_additives")),
-            dynamic_load_rating=None if c is None else kn.to_si(c),
-            static_load_rating=None if c0 is None else kn.to_si(c0),
+            dynamic_load_rating=si(values, "dynamic_load_rating_kn"),
+            static_load_rating=si(values, "static_load_rating_kn"),
         )
     except ViscosityTooLow as exc:
         raise InputError(
@@ -219,10 +218,7 @@ def _friction_bearing(values: dict):
     from ..friction import FrictionBearing
 
     designation = values.get("designation")
-    sizes = {
-        k: None if values.get(f"{k}_mm") is None else values[f"{k}_mm"] * 1e-3
-        for k in ("bore", "outside_diameter", "pitch_diameter")
-    }
+    sizes = {k: si(values, f"{k}_mm") for k in ("bore", "outside_diameter", "pitch_diameter")}
     ball_given = any(values.get(k) is not None for k in ("balls", "ball_diameter_mm", "geometry"))
     if designation is None and not ball_given:
         if sizes["bore"] is None or sizes["outside_diameter"] is None:
@@ -267,7 +263,6 @@ def friction(values: dict) -> Outcome:
     (:func:`bearinglab.friction.bearing_friction`)."""
     from ..friction import SkfGeometryConstants, bearing_friction
     from ..lubrication.lubricant import ZERO_CELSIUS
-    from ..units import UNITS
 
     omega = speed_from(values, positive=False)
     condition_from({k: values.get(k) for k in ("radial_load_n", "axial_load_n")})
@@ -285,8 +280,7 @@ def friction(values: dict) -> Outcome:
         "K_S1,K_S2,BETA, numbers >= 0 in SKF units",
         (3,),
     )
-    c0, nu = values.get("static_load_rating_kn"), values.get("viscosity_mm2_s")
-    t, ds = values.get("temperature_c"), values.get("seal_diameter_mm")
+    nu, t = values.get("viscosity_mm2_s"), values.get("temperature_c")
     try:
         bearing, decoded, warnings = _friction_bearing(values)
         result = bearing_friction(
@@ -298,8 +292,8 @@ def friction(values: dict) -> Outcome:
             designation=decoded,
             friction_type=values.get("friction_type"),
             equivalent_load=values.get("equivalent_load_n"),
-            static_load_rating=None if c0 is None else UNITS["kn"].to_si(c0),
-            viscosity=None if nu is None else UNITS["mm2_s"].to_si(nu),
+            static_load_rating=si(values, "static_load_rating_kn"),
+            viscosity=si(values, "viscosity_mm2_s"),
             lubricant=values.get("lubricant")
             or (DEFAULT_LUBRICANT if nu is None and model == "skf" else None),
             temperature=None if t is None else t + ZERO_CELSIUS,
@@ -312,7 +306,7 @@ def friction(values: dict) -> Outcome:
             ),
             seals=values.get("seals"),
             seal_constants=ks,
-            seal_diameter=None if ds is None else UNITS["mm"].to_si(ds),
+            seal_diameter=si(values, "seal_diameter_mm"),
         )
     except InputError as exc:
         raise restate(exc, values, FRICTION.options) from None

@@ -23,6 +23,7 @@ from ..inputs import (
     condition_from,
     parse_defect,
     restate,
+    si,
     speed_from,
 )
 from .base import BEARING_INPUTS, FILES, Analysis, inputs, plot_file, specs
@@ -120,9 +121,9 @@ def noise(values: dict, progress=None) -> NoiseOutcome:
     bearing, decoded = bearing_from(values)
     seed = values.get("seed")
     imperfections = forms.build(bearing, seed)
-    angle = math.radians(90.0 if values.get("angle_deg") is None else values["angle_deg"])
+    angle = si(values, "angle_deg", math.pi / 2)
     distance = values.get("distance_mm")
-    point = None if distance is None else FieldPoint(distance * 1e-3, angle)
+    point = None if distance is None else FieldPoint(si(values, "distance_mm"), angle)
     try:
         result = noise_analysis(
             bearing,

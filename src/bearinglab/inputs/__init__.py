@@ -26,7 +26,18 @@ from .bearing import (
     read_geometry_file,
 )
 from .specs import FormErrors, check_defects, parse_defect
-from .table import BEARING, FORMS, GEOMETRY_NEEDED, INPUTS, Input, check, closed, input_for, restate
+from .table import (
+    BEARING,
+    FORMS,
+    GEOMETRY_NEEDED,
+    INPUTS,
+    Input,
+    check,
+    closed,
+    input_for,
+    restate,
+    si,
+)
 
 __all__ = [
     "BEARING",
@@ -49,6 +60,7 @@ __all__ = [
     "parse_defect",
     "read_geometry_file",
     "restate",
+    "si",
     "speed_from",
 ]
 
@@ -70,7 +82,7 @@ def speed_from(values: dict, *, positive: bool = True) -> float:
     INPUTS["speed_rpm"].check("speed_rpm", rpm)
     if positive and rpm <= 0:
         raise InputError("speed_rpm", rpm, "a speed > 0 rpm")
-    return rpm * math.pi / 30.0
+    return si({"speed_rpm": rpm}, "speed_rpm")
 
 
 def condition_from(values: dict, *, positive_speed: bool = False, unloaded: str = ""):
@@ -88,8 +100,8 @@ def condition_from(values: dict, *, positive_speed: bool = False, unloaded: str 
         raise InputError(
             "radial_load_n", v["radial_load_n"], "a load > 0 N (or an `axial_load_n`)", unloaded
         )
-    angle = math.radians(v["radial_load_angle_deg"])
-    tilt = v["misalignment_mrad"] * 1e-3
+    angle = si(v, "radial_load_angle_deg")
+    tilt = si(v, "misalignment_mrad")
     speed = 0.0 if v["speed_rpm"] is None else speed_from(v, positive=positive_speed)
     return OperatingCondition(
         radial_load=float(v["radial_load_n"]),

@@ -342,6 +342,22 @@ GEOMETRY_NEEDED = ("balls", "ball_diameter_mm", "pitch_diameter_mm")
 FORMS = ("waviness", "ball_size_error_um", "surface3d", "seed")
 
 
+def si(values: dict, name: str, default=None):
+    """The value of input ``name`` in the request ``values`` in SI, by the unit its name
+    carries (:func:`bearinglab.units.unit_of`); ``default`` (already SI) when not given.
+
+    >>> si({"ball_diameter_mm": 7.5}, "ball_diameter_mm"), si({}, "speed_rpm", 0.0)
+    (0.0075, 0.0)
+    """
+    from ..units import unit_of
+
+    value = values.get(name)
+    if value is None:
+        return default
+    unit = unit_of(name)
+    return float(value) if unit is None else unit.to_si(float(value))
+
+
 def input_for(parameter: str, specs: dict) -> str | None:
     """The input of ``specs`` (name -> Input) that ``parameter`` is: the input of that name,
     else the first whose model parameters (:attr:`Input.fields`) include it, else the

@@ -15,6 +15,7 @@ from ..inputs import (
     check_defects,
     condition_from,
     restate,
+    si,
 )
 from ..inputs.specs import parse_defect
 
@@ -81,7 +82,7 @@ def report_from(values: dict, progress=None):
             designation=decoded,
             defects=defects,
             lubricant=None if viscosity is not None else lubricant,
-            viscosity=None if viscosity is None else viscosity * 1e-6,
+            viscosity=si(values, "viscosity_mm2_s"),
             duration=values.get("duration_s") or 1.0,
             sample_rate=values.get("sample_rate_hz"),
             slip_duration=values.get("slip_duration_s", 0.1),
