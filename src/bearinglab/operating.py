@@ -29,14 +29,15 @@ def speed_error(shaft_speed, allowed: str, hint: str = "") -> InputError:
     speed in (``speed_rpm``, ``--speed-rpm``), so an rpm input is never reported in rad/s.
     Named ``shaft_speed``, as the check of :func:`bearinglab.quasistatic.check_speed`.
 
-    >>> str(speed_error(-math.pi, "a speed >= 0 rpm"))
-    "shaft_speed = '-30 rpm' is not allowed: expected a speed >= 0 rpm"
+    >>> e = speed_error(-math.pi, "a speed >= 0 rpm")
+    >>> str(e), e.unit
+    ('shaft_speed = -30.0 is not allowed: expected a speed >= 0 rpm', 'rpm')
     """
     try:
-        value = f"{float(shaft_speed) * 30.0 / math.pi:.6g} rpm"
+        value = float(f"{float(shaft_speed) * 30.0 / math.pi:.6g}")
     except (TypeError, ValueError):
-        value = shaft_speed
-    return InputError("shaft_speed", value, allowed, hint)
+        return InputError("shaft_speed", shaft_speed, allowed, hint)
+    return InputError("shaft_speed", value, allowed, hint, unit="rpm")
 
 
 @dataclass(frozen=True)

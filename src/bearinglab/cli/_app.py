@@ -101,6 +101,7 @@ REPLACED: dict[tuple[str, str], str] = {
 
 def replaced(args: list[str]) -> str | None:
     """The line refusing a replaced option of ``args``' command, or None."""
+    args = [str(a) for a in args]
     command = next((a for a in args if not a.startswith("-")), None)
     for arg in args:
         line = REPLACED.get((command, arg.split("=")[0]))

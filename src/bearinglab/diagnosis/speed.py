@@ -204,7 +204,7 @@ def supply_line(frequency: float, supply=None, expected=None) -> bool:
     SUPPLY_HARMONICS) of 50 Hz, 60 Hz or the ``supply`` frequency given [Hz], and closer
     to it than to the ``expected`` frequency [Hz] (where the speed given puts a line).
 
-    >>> supply_line(119.97), supply_line(118.0), supply_line(75.5, supply=25.0)
+    >>> supply_line(119.97), supply_line(115.0), supply_line(75.5, supply=25.0)
     (True, False, True)
     >>> supply_line(119.97, expected=118.1), supply_line(119.8, expected=119.8)
     (True, False)

@@ -65,15 +65,16 @@ def check_speed(
     ``shaft_speed``, the limit in rpm); ``hint`` says why."""
     limit = speed_limit(bearing)
     if abs(shaft_speed) > limit * (1 + 1e-12):
+        # in rpm, the unit a speed limit is read in (n d_m); the request restates it
         raise InputError(
             "shaft_speed",
-            abs(shaft_speed),
+            float(f"{abs(shaft_speed) * 30 / math.pi:.6g}"),
             "at most {limit} for this bearing (n d_m <= "
             f"{MAX_SPEED_FACTOR:.0e} mm/min with d_m = "
             f"{bearing.pitch_diameter * 1e3:.4g} mm)",
             hint,
-            unit="rad/s",
-            numbers={"limit": limit},
+            unit="rpm",
+            numbers={"limit": limit * 30 / math.pi},
         )
 
 
