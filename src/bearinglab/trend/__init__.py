@@ -24,6 +24,7 @@ Sources are cited in each module; docs/capabilities/trend.md says what was measu
 from .alarm import FALSE_ALARM_PER_HOUR, PERSISTENCE, plain_rule
 from .analysis import BASELINE, SETTLE, trend_records
 from .indicators import INDICATORS
+from .learning import LearnedRuns, learn_runs
 from .result import Alarm, TrendResult
 from .severity import MACHINES
 
@@ -31,11 +32,13 @@ __all__ = [
     "BASELINE",
     "FALSE_ALARM_PER_HOUR",
     "INDICATORS",
+    "LearnedRuns",
     "MACHINES",
     "PERSISTENCE",
     "SETTLE",
     "Alarm",
     "TrendResult",
+    "learn_runs",
     "plain_rule",
     "trend_records",
 ]
