@@ -410,6 +410,86 @@ def test_outputs_table_figure_page_and_velocity(failing, tmp_path):
     assert "bearinglab trend" in page and "data:image/png;base64" in page
 
 
+# ------------------------------------------------------------------ inputs that lie (issue 27)
+def test_duplicated_time_stamps_are_refused_naming_the_files(tmp_path):
+    # the old code took the spacing as 0 s, made the persistence 50 records and raised no
+    # alarm, without a word
+    times = np.repeat(np.arange(30) * 60.0, 2)  # every time twice
+    with pytest.raises(InputError) as info:
+        trend_records(_records(tmp_path / "r", 60, times=times), **COUNTS)
+    assert info.value.parameter == "folder" and "share their time" in info.value.hint
+    assert "r000.npz" in info.value.hint and "r001.npz" in info.value.hint
+    # (PRONOSTIA snapshots are ordered by their numbers: a clock repeated is out of that
+    # order and is timed by its number, with a warning naming it)
+
+
+def test_a_sample_rate_that_contradicts_the_files_is_warned_about(tmp_path):
+    folder = _records(tmp_path / "r", 50)  # .npz files that store 25.6 kHz
+    r = trend_records(folder, sample_rate=12800.0, **COUNTS)
+    assert any("25600 Hz" in w and "12800 Hz" in w for w in r.warnings), r.warnings
+    assert r.sample_rate == 12800.0
+    p = write_pronostia(tmp_path / "p", short(seed=9))  # PRONOSTIA: 25.6 kHz, not stored
+    r = trend_records(p, sample_rate=12800.0, **COUNTS)
+    assert any("PRONOSTIA" in w and "12800 Hz" in w for w in r.warnings), r.warnings
+    assert not any("sample rate" in w for w in trend_records(p, **COUNTS).warnings)
+
+
+def test_records_of_absurd_magnitude_are_refused_in_one_line(capsys, tmp_path):
+    # the old code gave raw RuntimeWarnings (errors under this suite) and an OverflowError
+    folder = write_pronostia(tmp_path / "p", np.full((40, 2, 1024), 1e300) * short(40)[:, :, :])
+    with pytest.raises(InputError) as info:
+        trend_records(folder, **COUNTS)
+    assert info.value.parameter == "folder" and "magnitudes below 1e+60" in str(info.value)
+    err = run_error(capsys, "trend", str(folder))
+    assert err.startswith("error: FOLDER") and "\n" not in err.strip()
+
+
+def test_a_record_of_absurd_magnitude_among_good_ones_is_skipped_naming_it(tmp_path):
+    x = short(seed=10)
+    x[45] *= 1e300
+    r = trend_records(write_pronostia(tmp_path, x), **COUNTS)
+    assert "acc_00046.csv" not in r.files
+    assert any("acc_00046.csv" in w and "skipped" in w for w in r.warnings)
+
+
+def test_a_short_series_gets_a_shortened_baseline_with_a_warning(tmp_path):
+    # 40 records (390 s) are shorter than the default settling and baseline (600 + 1200 s)
+    r = trend_records(write_pronostia(tmp_path, short(40, seed=11)))
+    assert r.baseline_records >= 10 and r.baseline_stop < 40
+    assert any("shortened" in w for w in r.warnings)
+    # a count asked for that does not fit is still refused
+    with pytest.raises(InputError):
+        trend_records(write_pronostia(tmp_path / "b", short(40, seed=11)), baseline_records=40)
+
+
+def test_the_json_states_and_measures_the_rate_and_points_to_installed_docs(healthy):
+    import importlib
+
+    d = trend_records(healthy, **COUNTS).to_dict()
+    rule = d["rule"]
+    assert rule["false_alarm_per_hour"] == pytest.approx(3.6e-4)
+    assert rule["false_alarm_per_record"] == pytest.approx(3.6e-4 * 10.0 / 3600.0)
+    m = rule["measured_false_alarm"]
+    assert {"per_record", "per_hour", "measured_on"} <= set(m)
+    assert m["per_hour"] is not None and m["per_record"] is not None
+    assert "learning runs" in m["measured_on"]  # 15 min of records: not measurable here
+    assert m["per_record"] == pytest.approx(m["per_hour"] * 100.0 / 3600.0)  # their spacing
+    # the documentation it names exists after a plain install: modules with docstrings
+    assert "docs/capabilities" not in rule["documentation"].split(";")[0]
+    for module in ("bearinglab.trend.alarm", "bearinglab.trend.calibration"):
+        assert module in rule["documentation"]
+        assert "false-alarm" in importlib.import_module(module).__doc__
+
+
+def test_the_rate_is_measured_on_the_series_itself_when_it_is_long_enough(tmp_path):
+    x = noise(500, seed=12, n=1024)  # 83 min of healthy records, 10 s apart
+    r = trend_records(write_pronostia(tmp_path, x), **COUNTS)
+    m = r.to_dict()["rule"]["measured_false_alarm"]
+    assert "this series" in m["measured_on"] and m["monitored_hours"] >= 1.0
+    assert m["firings"] == 0 and m["per_hour"] == 0.0
+    assert m["upper_per_hour"] == pytest.approx(-math.log(0.05) / m["monitored_hours"])
+
+
 # ------------------------------------------------------------------ the command line
 def test_cli_json(capsys, failing):
     counts = ["--settle-records", "5", "--baseline-records", "30"]

@@ -250,11 +250,18 @@ def learn_runs(folder, *, source: str | None = None, conditions=None, **rule_set
     -------
     LearnedRuns
     """
-    from .life import learn_life
-
     folders = run_folders(folder)
     runs = {p.name: read_run(p, **rule_settings) for p in folders}
     what = source or f"{len(runs)} runs to failure in {Path(folder).name}"
+    return learn_from_runs(runs, what, conditions, _settings(rule_settings))
+
+
+def learn_from_runs(runs: dict, source: str, conditions=None, settings=None) -> LearnedRuns:
+    """:func:`learn_runs` from runs already read: ``runs`` (name -> :class:`RunSeries`),
+    described by ``source``, with their ``conditions`` and the rule's ``settings``."""
+    from .life import learn_life
+
+    what = source
     stretches = [s for r in runs.values() for s in healthy_stretches(r)]
     calibration = fit_calibration(stretches, source=f"the healthy first halves of {what}")
     measured = leave_one_out_false_alarms(runs, calibration.source)
@@ -263,7 +270,7 @@ def learn_runs(folder, *, source: str | None = None, conditions=None, **rule_set
         d = {"run": name, "life_s": float(r.times[-1]), "record_spacing_s": r.record_spacing}
         d.update((conditions or {}).get(name, {}))
         rows.append(d)
-    learned = LearnedRuns(calibration, tuple(rows), measured, _settings(rule_settings), what)
+    learned = LearnedRuns(calibration, tuple(rows), measured, settings or _settings({}), what)
     return learn_life(learned, runs)
 
 
@@ -298,7 +305,10 @@ def leave_one_out_false_alarms(results: dict, source: str) -> dict:
         mine = healthy_stretches(r)
         if not mine or not others:
             continue
-        cal = fit_calibration(others)
+        try:
+            cal = fit_calibration(others)
+        except InputError:
+            continue  # too few excursions without this run to calibrate on
         x = cal.limit(r.false_alarm_per_hour / len(r.tests))
         above = np.column_stack([np.nan_to_num(z, nan=-np.inf) > x for z, _ in mine])
         from .alarm import crossing_runs

@@ -184,11 +184,12 @@ class TrendResult:
             f"({n} records, {self.times[self.settle_records]:.6g} s to "
             f"{self.times[self.baseline_stop - 1]:.6g} s). Each of {len(self.tests)} tests "
             f"({len(INDICATORS)} indicators over 0-{self.max_frequency:.6g} Hz x "
-            f"{len(self.channels)} channels) takes the {STATISTIC_TEXT}; its level is the "
-            f"median of the last {self.persistence} records ({self.persistence_seconds:.3g} s "
-            f"at the cadence of {self.record_spacing:.3g} s), and the alarm is raised when "
+            f"{len(self.channels)} channels) takes the log of its indicator (log(SK + 2) for "
+            f"the spectral kurtosis); its level is the median of the last {self.persistence} "
+            f"records ({self.persistence_seconds:.3g} s at the cadence of "
+            f"{self.record_spacing:.3g} s), and the alarm is raised when "
             f"some test's level exceeds the baseline median by {self.limit_excess:.3g} robust "
-            "scales, and stays raised. That limit is where healthy operation carries a level "
+            "scales (1.4826 median absolute deviations of the baseline), and stays raised. That limit is where healthy operation carries a level "
             f"at {self.false_alarm_per_hour / len(self.tests):.3g} per hour and test "
             f"(Bonferroni over the tests: {self.false_alarm_per_hour:.3g} false alarms per "
             f"hour of monitoring, {self.false_alarm:.3g} per record)"
@@ -425,3 +426,14 @@ class TrendResult:
         from .figure import trend_figure
 
         return trend_figure(self, ax)
+
+    def plot_life(self, ax=None):
+        """The remaining life estimated over the series with its 80 % interval
+        (:func:`.figure.life_figure`), on ``ax`` (a new figure by default); returns (figure,
+        axes). InputError without an estimate."""
+        from ..errors import InputError
+        from .figure import life_figure
+
+        if self.remaining_life is None:
+            raise InputError("remaining_life", None, "a trend with a remaining-life estimate")
+        return life_figure(self, ax)

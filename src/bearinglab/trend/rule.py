@@ -133,6 +133,8 @@ def baseline_span(times, rule: dict, window: int, warnings: list[str]) -> tuple[
             "running-in may still be in it"
         )
         return short_first, short_stop
+    if stop < n:
+        return first, stop
     asked = (
         f"{first} records of settling and {stop - first} of baseline; the series has {n} "
         f"records over {times[-1]:.6g} s"
