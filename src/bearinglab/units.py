@@ -464,8 +464,7 @@ DIMENSIONLESS: dict[str, str] = {
     "firings": "times the rule fired (a test's level rose above its limit) where counted",
     "measured_on": "where a measured rate was measured, in words",
     "calibration": "the excursion rates of healthy operation that set the limits",
-    "excursion_threshold": "deviation above which healthy excursions are counted [robust "
-    "scales]",
+    "excursion_threshold": "deviation above which healthy excursions are counted [robust scales]",
     "excursions": "healthy excursions above the threshold that were counted",
     "mean_excess": "mean excess of the excursions' maxima over the threshold [robust scales]",
     "documentation": "where the method is documented in the installed package",

@@ -126,7 +126,13 @@ class Calibration:
 
     @classmethod
     def from_dict(cls, d: dict) -> Calibration:
-        """The inverse of :meth:`to_dict`."""
+        """The inverse of :meth:`to_dict`.
+
+        Parameters
+        ----------
+        d : dict
+            What :meth:`to_dict` gave (as read from JSON).
+        """
         return cls(
             float(d["threshold"]),
             int(d["excursions"]),

@@ -17,7 +17,7 @@ the issue that set the rule's goals counts an alarm there as a false one.
 from __future__ import annotations
 
 import json
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 
 import numpy as np
@@ -57,6 +57,13 @@ class LearnedRuns:
 
     @classmethod
     def from_dict(cls, d: dict) -> LearnedRuns:
+        """The inverse of :meth:`to_dict`.
+
+        Parameters
+        ----------
+        d : dict
+            What :meth:`to_dict` gave (as read from JSON).
+        """
         return cls(
             Calibration.from_dict(d["calibration"]),
             tuple(d.get("runs", ())),
@@ -263,8 +270,18 @@ def learn_from_runs(runs: dict, source: str, conditions=None, settings=None) -> 
 
     what = source
     stretches = [s for r in runs.values() for s in healthy_stretches(r)]
-    calibration = fit_calibration(stretches, source=f"the healthy first halves of {what}")
-    measured = leave_one_out_false_alarms(runs, calibration.source)
+    try:
+        calibration = fit_calibration(stretches, source=f"the healthy first halves of {what}")
+        measured = leave_one_out_false_alarms(runs, calibration.source)
+    except InputError as exc:
+        # too quiet (or too short) to learn limits from: the packaged ones are kept
+        default = packaged_learned()
+        calibration = replace(
+            default.calibration,
+            source=f"{default.calibration.source} (the runs given hold {exc.value}: too few "
+            "to learn limits from)",
+        )
+        measured = default.measured
     rows = []
     for name, r in runs.items():
         d = {"run": name, "life_s": float(r.times[-1]), "record_spacing_s": r.record_spacing}

@@ -60,7 +60,7 @@ def phm2012_accuracy(actual, estimate) -> np.ndarray:
     challenge's score is their mean over the runs.
 
     >>> [round(float(a), 4) for a in phm2012_accuracy(100.0, [100.0, 80.0, 120.0])]
-    [1.0, 0.7071, 0.0625]
+    [1.0, 0.5, 0.0625]
     """
     actual = np.asarray(actual, dtype=float)
     er = 100.0 * (actual - np.asarray(estimate, dtype=float)) / actual
@@ -94,7 +94,7 @@ class Predictive:
     docstring).
 
     >>> p = Predictive.of([100.0, 200.0, 400.0])
-    >>> round(p.quantiles(0.0, [0.5])[0], 6)                # the geometric mean
+    >>> round(float(p.quantiles(0.0, [0.5])[0]), 6)         # the geometric mean
     200.0
     >>> bool(p.quantiles(150.0, [0.5])[0] < p.quantiles(0.0, [0.5])[0])
     True
