@@ -413,13 +413,14 @@ def test_outputs_table_figure_page_and_velocity(failing, tmp_path):
 
 # ------------------------------------------------------------------ inputs that lie (issue 27)
 def test_duplicated_time_stamps_are_refused_naming_the_files(tmp_path):
-    # the old code took the spacing as 0 s, made the persistence 50 records and raised no
-    # alarm, without a word
-    times = np.repeat(np.arange(30) * 60.0, 2)  # every time twice
+    # issue 27: duplicated times made the spacing 0 s and the alarm impossible without a
+    # word; when fewer than half are duplicated the old code ran on, silently
+    times = np.arange(60) * 60.0
+    times[41:51] = times[40:50]  # ten records share the time of the one before
     with pytest.raises(InputError) as info:
         trend_records(_records(tmp_path / "r", 60, times=times), **COUNTS)
     assert info.value.parameter == "folder" and "share their time" in info.value.hint
-    assert "r000.npz" in info.value.hint and "r001.npz" in info.value.hint
+    assert "r040.npz" in info.value.hint and "r041.npz" in info.value.hint
     # (PRONOSTIA snapshots are ordered by their numbers: a clock repeated is out of that
     # order and is timed by its number, with a warning naming it)
 

@@ -10,7 +10,7 @@ moment. A test is one indicator of one channel.
 
 **Baseline.** After a settling time (a new bearing runs in), the baseline records give each
 test a robust location and scale: the median m and 1.4826 median absolute deviations s
-(the standard deviation for Gaussian data, [Huber1981] sec. 5.1; [RousseeuwCroux1993]),
+(the standard deviation for Gaussian data, [RousseeuwCroux1993]),
 which a burst of impacts inside the baseline moves little. The baseline stays the initial
 learning window; nothing after it enters it.
 

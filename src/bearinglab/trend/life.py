@@ -12,9 +12,9 @@ baselines); otherwise the alarm itself is the degradation seen, and the estimate
 the times from the alarm to the failure learned on the runs, given the time since the
 alarm.
 
-**Distributions.** Lives and alarm-to-failure times are modelled as lognormal, the usual
-law of fatigue lives next to the Weibull ([Lieblein1956] found both fit the rolling-contact
-fatigue lives they examined), with the predictive distribution of a new run: the log of a
+**Distributions.** Lives and alarm-to-failure times are modelled as lognormal, a usual law
+of fatigue lives beside the Weibull (both are fitted to ball-bearing lives in [Lawless2003]),
+with the predictive distribution of a new run: the log of a
 new time is a Student t with n - 1 degrees of freedom about the mean of the n learned logs,
 scaled by their standard deviation times sqrt(1 + 1/n), so that the interval is as wide as
 n runs make it ([Geisser1993] ch. 2). Conditioning on survival to t_0 truncates it there:
@@ -45,8 +45,10 @@ QUANTILES = np.linspace(0.005, 0.995, 200)
 LATE_HALVING, EARLY_HALVING = 5.0, 20.0
 #: Significance of the Mann-Kendall test that the level rises since the alarm.
 TREND_LEVEL = 0.05
-#: Fewest levels after the alarm a trend is fitted to.
+#: Fewest levels after the alarm a trend is fitted to, and most (evenly spaced over the
+#: time since the alarm: the pairwise tests cost the square of their number).
 TREND_RECORDS = 5
+TREND_MAX_RECORDS = 100
 #: Points of the history of estimates drawn (evenly spaced records, the last one included).
 HISTORY = 60
 #: Floor of the times learned [s] (an alarm at the last record has a lead of 0 s).
@@ -201,6 +203,9 @@ def _trend(times, hi, alarm: int, i: int):
     t, h = np.asarray(times[alarm : i + 1]), np.asarray(hi[alarm : i + 1])
     keep = np.isfinite(h)
     t, h = t[keep], h[keep]
+    if t.size > TREND_MAX_RECORDS:
+        pick = np.unique(np.linspace(0, t.size - 1, TREND_MAX_RECORDS).round().astype(int))
+        t, h = t[pick], h[pick]
     if t.size < TREND_RECORDS or mann_kendall(t, h) >= TREND_LEVEL:
         return None
     slope = theil_sen(t, h)
