@@ -99,7 +99,8 @@ def main() -> None:
 
 
 def life_share(series: dict, runs: int) -> None:
-    """In this process: the trend's time without its remaining-life estimate, the estimate's, and their ratio (medians)."""
+    """In this process: the trend's time without its remaining-life estimate, the
+    estimate's, and their ratio (medians)."""
     import time
 
     from bearinglab.trend import trend_records
