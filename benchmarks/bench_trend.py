@@ -5,7 +5,8 @@ every 10th of the published 2803), and a 2800-snapshot series in PRONOSTIA's pub
 layout, a full run's length: Bearing1_1's snapshots, each written about ten times onto a
 10 s clock, in a temporary folder (``--folder`` keeps it between calls). Each command
 runs ``--runs`` times after one warm-up; the median is quoted, with the median of
-``python -c "import numpy"`` from the same loop for scale.
+``python -c "import numpy"`` from the same loop for scale. Then, in this process, the share
+of the trend's time that its remaining-life estimate takes (issue 29: at most 10 %).
 
     .venv/bin/python benchmarks/bench_trend.py [--runs 3] [--folder /tmp/run2800]
 """
@@ -94,6 +95,30 @@ def main() -> None:
             print(f"{name:40s} {statistics.median(times):10.2f}  {runs}")
         numpy = 'python -c "import numpy"'
         print(f"{numpy:40s} {statistics.median(base):10.2f}")
+        life_share({"Bearing1_1 (282)": RUN, "2800 snapshots": big}, args.runs)
+
+
+def life_share(series: dict, runs: int) -> None:
+    """In this process: the trend's time without its remaining-life estimate, the
+    estimate's, and their ratio (medians)."""
+    import time
+
+    from bearinglab.trend import trend_records
+    from bearinglab.trend.life import remaining_life
+
+    print(f"\n{'in process':40s} {'trend [s]':>10s} {'life [s]':>9s} {'share':>6s}")
+    for name, folder in series.items():
+        trend_records(folder)  # warm-up
+        spent, life = [], []
+        for _ in range(runs):
+            tic = time.perf_counter()
+            result = trend_records(folder)
+            spent.append(time.perf_counter() - tic)
+            tic = time.perf_counter()
+            remaining_life(result)
+            life.append(time.perf_counter() - tic)
+        t, lf = statistics.median(spent), statistics.median(life)
+        print(f"{name:40s} {t - lf:10.3f} {lf:9.3f} {lf / (t - lf):6.1%}")
 
 
 if __name__ == "__main__":

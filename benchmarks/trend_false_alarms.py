@@ -1,21 +1,21 @@
-"""False alarms of the trend's rule, nominal against measured (issue 23).
+"""False alarms and alarm times of the trend's rule, stated against measured (issue 27).
 
 Prints the figures of docs/capabilities/trend.md:
 
-1. Healthy simulated series (:func:`bearinglab.trend.simulated.simulate_series`:
-   PRONOSTIA's bearing at 1800 rpm and 4000 N, 0.5 % speed scatter, 1 m/s² measurement
-   noise, a record every 10 s), the default baseline: how often each test's limit is
-   exceeded by a single record, and how often the whole rule fires, against the levels
-   the rule states.
-2. The healthy stretches of the development runs (chosen from the plots before any rule
-   was run: Bearing1_1 up to 10 000 s, a third of its life, its horizontal rms starting to
-   rise near 12 000 s; Bearing3_1 up to 4 800 s, its failure starting at 4 900 s), with
-   the baseline slid across the stretch to pool more records: the same figures, and those
-   of the Gaussian limit mean + 6 sigma of the baseline for comparison.
-3. The reference rule and ours on each development run: alarm time and lead, and how
-   they move with the rule's settings (``--sensitivity``).
+1. **Calibration, leave one run out**: for each of the six PRONOSTIA learning runs, the
+   excursion rates learned from the other five give the limit at a rate per test-hour;
+   the excursions of the held-out run's healthy first half above it are counted, against
+   the rate stated, at rates that can be counted (1 to 0.03 per test-hour).
+2. **The rule on each run**: its alarm (time, share of the life, lead to the last
+   snapshot, the test) with the limits learned from all six runs (the package's
+   defaults) and from the other five (leave one run out), at several rates per hour,
+   persistence windows, bands and baselines (``--sensitivity``).
+3. **Healthy simulated series** (:func:`bearinglab.trend.simulated.simulate_series`:
+   PRONOSTIA's bearing at 1800 rpm and 4000 N, 0.5 % speed scatter, 1 m/s² noise, a
+   record every 10 s): the rule's firings per hour at the default rate and at a rate that
+   can be counted (``--simulated N``).
 
-    .venv/bin/python benchmarks/trend_false_alarms.py [--series 5] [--records 600]
+    .venv/bin/python benchmarks/trend_false_alarms.py [--sensitivity] [--simulated 5]
 """
 
 from __future__ import annotations
@@ -26,182 +26,136 @@ from pathlib import Path
 
 import numpy as np
 
-from bearinglab.geometry import BallBearing
-from bearinglab.operating import OperatingCondition
-from bearinglab.trend import plain_rule, trend_records
-from bearinglab.trend.alarm import FALSE_ALARM_PER_HOUR, STATISTICS, baseline_limits
+from bearinglab.errors import InputError
+from bearinglab.trend.alarm import FALSE_ALARM_PER_HOUR, crossing_runs, deviations
+from bearinglab.trend.calibration import fit_calibration
+from bearinglab.trend.learning import healthy_stretches, read_run
+from bearinglab.trend.rule import statistics
 
 ROOT = Path(__file__).resolve().parents[1]
 RUNS = ROOT.parent / "shared" / "data" / "run-to-failure"
-BEARING = BallBearing(ball_count=13, ball_diameter=3.5e-3, pitch_diameter=25.6e-3)
-#: The healthy stretch of each development run [s] (see the module docstring).
-HEALTHY = {"Bearing1_1": 10000.0, "Bearing3_1": 4800.0}
-#: Levels per test and record at which the exceedances are counted (1e-7: the default
-#: 1e-6 per record over 10 tests).
-LEVELS = (1e-1, 1e-2, 1e-3, 1e-6, 1e-7)
+NAMES = ("Bearing1_1", "Bearing1_2", "Bearing2_1", "Bearing2_2", "Bearing3_1", "Bearing3_2")
 
 
-def statistics(result) -> np.ndarray:
-    """records x tests: the test statistics of a trend."""
-    return np.column_stack(
-        [STATISTICS[name](result.values[name][:, c]) for name, c in result.tests]
-    )
+def read_all(**settings) -> dict:
+    return {name: read_run(RUNS / name, **settings) for name in NAMES if (RUNS / name).is_dir()}
 
 
-def counts(stats, base: slice, stop: int, level: float, r: int) -> tuple[int, int, int, int]:
-    """(records above a limit, record-tests, windows where some test fires, windows) of
-    the records base.stop..stop-1 against limits of ``level`` for runs of ``r``."""
-    limits = baseline_limits(stats, base, level, r)
-    above = np.column_stack(
-        [stats[base.stop : stop, j] > lim.limit for j, lim in enumerate(limits)]
-    )
-    if above.shape[0] < r:
-        return int(above.sum()), above.size, 0, 0
-    kernel = np.ones(r, dtype=int)
-    runs = np.column_stack(
-        [
-            np.convolve(above[:, j].astype(int), kernel, mode="valid") >= r
-            for j in range(above.shape[1])
-        ]
-    )
-    return int(above.sum()), above.size, int(runs.any(axis=1).sum()), runs.shape[0]
+def calibration_check(runs: dict) -> None:
+    print("\n1. calibration, leave one run out: excursions of held-out healthy halves")
+    print(f"{'rate stated [1/test-h]':>24s} {'counted':>8s} {'expected':>9s} {'test-hours':>11s}")
+    for target in (0.3, 0.1, 0.03, 0.01):
+        counted = expected = hours = 0.0
+        for name, run in runs.items():
+            others = [s for k, o in runs.items() if k != name for s in healthy_stretches(o)]
+            x = fit_calibration(others).limit(target)
+            for z, h in healthy_stretches(run):
+                counted += crossing_runs(np.nan_to_num(z, nan=-np.inf) > x).__len__()
+                hours += h
+        expected = target * hours
+        print(f"{target:24g} {counted:8.0f} {expected:9.1f} {hours:11.1f}")
 
 
-def gaussian(stats, base: slice, stop: int, sigmas: float = 6.0) -> tuple[int, int]:
-    """(record-tests above mean + ``sigmas`` sd of the baseline, record-tests)."""
-    b = stats[base]
-    limit = b.mean(axis=0) + sigmas * b.std(axis=0, ddof=1)
-    above = stats[base.stop : stop] > limit
-    return int(above.sum()), above.size
+def alarm_of(run, excess: float):
+    """(record, test) of the rule's alarm on ``run`` with the limit ``excess``, or None."""
+    stats = statistics(run.values, run.tests)
+    _, z = deviations(stats, slice(run.settle_records, run.baseline_stop), run.persistence)
+    above = np.nan_to_num(z, nan=-np.inf) > excess
+    hit = np.flatnonzero(above.any(axis=1))
+    if not hit.size:
+        return None
+    i = int(hit[0])
+    return i, run.tests[int(np.flatnonzero(above[i])[0])]
 
 
-def _report(title: str, tallies: dict, gauss=None) -> None:
+def cell(run, hit) -> str:
+    if hit is None:
+        return "none"
+    i, (name, c) = hit
+    t, life = run.times[i], run.times[-1]
+    half = " FIRST HALF" if t < life / 2 else ""
+    return f"{t:.0f} s ({t / life:.2f}, lead {life - t:.0f} s, {name} {run.channels[c]}){half}"
+
+
+def alarms(runs: dict, rate: float, title: str) -> None:
     print(f"\n{title}")
-    head = ("level per test", "r", "single record: measured", "rule: nominal", "rule: measured")
-    print(f"{head[0]:>15s} {head[1]:>2s} {head[2]:>24s} {head[3]:>14s} {head[4]:>22s}")
-    for (level, r), (a, n, f, w) in tallies.items():
-        single = "" if r != 1 else f"{a / n:.2e} ({a}/{n})"
-        rule = f"{f / max(w, 1):.2e} ({f}/{w})"
-        print(f"{level:15.0e} {r:2d} {single:>24s} {level * 10:14.0e} {rule:>22s}")
-    if gauss is not None:
-        rate = gauss[0] / gauss[1]
-        print(f"Gaussian mean + 6 sd of the baseline: {rate:.2e} ({gauss[0]}/{gauss[1]})")
-
-
-def simulated(series: int, records: int) -> None:
-    from bearinglab.trend.simulated import simulate_series
-
-    condition = OperatingCondition.at_rpm(1800.0, radial_load=4000.0)
-    tallies: dict = {}
-    default_alarms = monitored = 0
-    gauss = [0, 0]
-    with tempfile.TemporaryDirectory() as tmp:
-        for seed in range(series):
-            folder = simulate_series(
-                Path(tmp) / f"s{seed}", BEARING, condition, records=records, seed=seed
+    stretches = {k: healthy_stretches(r) for k, r in runs.items()}
+    every = fit_calibration([s for v in stretches.values() for s in v])
+    for name, run in runs.items():
+        per_test = rate / len(run.tests)
+        x_all = every.limit(per_test)
+        try:
+            loo = fit_calibration([s for k, v in stretches.items() if k != name for s in v])
+        except InputError as exc:
+            print(
+                f"  {name}: all six x = {x_all:.1f}: {cell(run, alarm_of(run, x_all))}; "
+                f"leave-one-out: {exc.value}"
             )
-            result = trend_records(folder)
-            default_alarms += result.alarm is not None
-            monitored += result.monitored_records
-            stats = statistics(result)
-            base = slice(result.settle_records, result.baseline_stop)
-            for level in LEVELS:
-                for r in (1, 2, 3):
-                    got = counts(stats, base, len(result.files), level, r)
-                    tallies[(level, r)] = tuple(
-                        a + b for a, b in zip(tallies.get((level, r), (0,) * 4), got, strict=True)
-                    )
-            g = gaussian(stats, base, len(result.files))
-            gauss = [gauss[0] + g[0], gauss[1] + g[1]]
-    print(
-        f"healthy simulated series: {series} x {records} records; default rule "
-        f"({FALSE_ALARM_PER_HOUR:g} per hour): {default_alarms} alarms over {monitored} "
-        "monitored records"
-    )
-    _report("healthy simulated series", tallies, gauss)
-
-
-def real() -> None:
-    for run, end in HEALTHY.items():
-        folder = RUNS / run
-        if not folder.is_dir():
             continue
-        result = trend_records(folder)
-        stats = statistics(result)
-        stop = int(np.searchsorted(result.times, end, side="right"))
-        n = result.baseline_records
-        tallies: dict = {}
-        gauss = [0, 0]
-        for start in range(result.settle_records, stop - n - 10):
-            base = slice(start, start + n)
-            for level in LEVELS:
-                for r in (1, 2, 3):
-                    got = counts(stats, base, stop, level, r)
-                    tallies[(level, r)] = tuple(
-                        a + b for a, b in zip(tallies.get((level, r), (0,) * 4), got, strict=True)
-                    )
-            g = gaussian(stats, base, stop)
-            gauss = [gauss[0] + g[0], gauss[1] + g[1]]
-        _report(
-            f"{run}: healthy stretch to {end:g} s, baselines of {n} records slid over it",
-            tallies,
-            gauss,
-        )
-        ref = plain_rule(result.values["rms"][:, 0])
-        last = result.times[-1]
-        a = result.alarm
+        x_loo = loo.limit(per_test)
         print(
-            f"{run}: ours {result.times[a.record]:.0f} s ({a.indicator}, {a.channel}), lead "
-            f"{last - result.times[a.record]:.0f} s; reference rule "
-            + (
-                "none"
-                if ref is None
-                else f"{result.times[ref]:.0f} s, lead {last - result.times[ref]:.0f} s"
-            )
+            f"  {name}: all six x = {x_all:.1f}: {cell(run, alarm_of(run, x_all))}; "
+            f"leave-one-out x = {x_loo:.1f}: {cell(run, alarm_of(run, x_loo))}"
         )
-
-
-#: Settings tried by --sensitivity, one change from the defaults at a time.
-VARIANTS = {
-    "defaults": {},
-    "false_alarm_per_hour 3.6e-3": {"false_alarm_per_hour": 3.6e-3},
-    "false_alarm_per_hour 3.6e-5": {"false_alarm_per_hour": 3.6e-5},
-    "persistence 3 records": {"persistence_records": 3},
-    "persistence 4 records": {"persistence_records": 4},
-    "no settling": {"settle": 0.0},
-    "settling 1800 s": {"settle": 1800.0},
-    "baseline 60 records": {"baseline_records": 60},
-}
 
 
 def sensitivity() -> None:
-    print("\nalarm time and lead before the last snapshot [s], one setting changed at a time")
-    runs = sorted(p.name for p in RUNS.glob("Bearing*") if p.is_dir())
-    for name, kwargs in VARIANTS.items():
-        cells = []
-        for run in runs:
-            r = trend_records(RUNS / run, **kwargs)
-            a = r.alarm
-            if a is None:
-                cells.append(f"{run} -")
-                continue
-            t = r.times[a.record]
-            half = "" if t >= r.times[-1] / 2 else " FIRST HALF"
-            cells.append(f"{run} {t:.0f} ({r.times[-1] - t:.0f}, {a.indicator}{half})")
-        print(f"{name:24s} " + "; ".join(cells))
+    variants = {
+        "defaults": {},
+        "persistence 300 s": {"persistence": 300.0},
+        "persistence 600 s": {"persistence": 600.0},
+        "band to 10 kHz (fs / 2.56)": {"max_frequency": 10000.0},
+        "band to 12.8 kHz (all)": {"max_frequency": 12800.0},
+        "baseline 12 records (600-1800 s)": {"baseline_n": 12, "baseline": None},
+    }
+    for title, settings in variants.items():
+        runs = read_all(**settings)
+        for rate in (3.6e-4, 3.6e-3, 3.6e-2):
+            alarms(runs, rate, f"2. {title}, {rate:g} false alarms per hour")
+
+
+def simulated(series: int, records: int) -> None:
+    from bearinglab.geometry import BallBearing
+    from bearinglab.operating import OperatingCondition
+    from bearinglab.trend import trend_records
+    from bearinglab.trend.simulated import simulate_series
+
+    bearing = BallBearing(ball_count=13, ball_diameter=3.5e-3, pitch_diameter=25.6e-3)
+    condition = OperatingCondition.at_rpm(1800.0, radial_load=4000.0)
+    tallies: dict = {}
+    with tempfile.TemporaryDirectory() as tmp:
+        for seed in range(series):
+            folder = simulate_series(
+                Path(tmp) / f"s{seed}", bearing, condition, records=records, seed=seed
+            )
+            for rate in (FALSE_ALARM_PER_HOUR, 0.36, 6.0):
+                r = trend_records(folder, false_alarm_per_hour=rate)
+                fired = len(crossing_runs(r.runs().any(axis=1)))
+                hours = r.monitored_records * r.record_spacing / 3600.0
+                t = tallies.setdefault(rate, [0, 0.0, r.limit_excess])
+                t[0] += fired
+                t[1] += hours
+    print(f"\n3. healthy simulated series: {series} x {records} records, a record every 10 s")
+    for rate, (fired, hours, x) in tallies.items():
+        print(
+            f"  stated {rate:g} per hour (limit {x:.2f} robust scales): {fired} firings in "
+            f"{hours:.2f} h = {fired / hours:.3g} per hour"
+        )
 
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--series", type=int, default=5)
+    parser.add_argument("--sensitivity", action="store_true")
+    parser.add_argument("--simulated", type=int, default=0, help="healthy simulated series")
     parser.add_argument("--records", type=int, default=600)
-    parser.add_argument("--sensitivity", action="store_true", help="only the settings' table")
     args = parser.parse_args()
+    runs = read_all()
+    calibration_check(runs)
+    alarms(runs, FALSE_ALARM_PER_HOUR, f"2. defaults, {FALSE_ALARM_PER_HOUR:g} per hour")
     if args.sensitivity:
         sensitivity()
-        return
-    real()
-    simulated(args.series, args.records)
+    if args.simulated:
+        simulated(args.simulated, args.records)
 
 
 if __name__ == "__main__":

@@ -455,7 +455,27 @@ DIMENSIONLESS: dict[str, str] = {
     "rule": "the alarm rule and its false-alarm probabilities",
     "statistic": "what each test compares with its limit",
     "tail_model": "the model of the baseline's upper tail",
-    "persistence": "consecutive records above a limit that raise the alarm",
+    "persistence": "records in the persistence window whose median is a test's level",
+    "limit_excess": "how far a test's level may rise above the baseline median, in robust "
+    "scales of the baseline (1.4826 median absolute deviations)",
+    "measured_false_alarm": "the rule's false alarms measured on held-out healthy stretches "
+    "of the series (or, named as such, of the learning runs)",
+    "per_record": "measured false alarms per record monitored",
+    "per_hour": "measured false alarms per hour of monitoring",
+    "firings": "times the rule fired (a test's level rose above its limit) where counted",
+    "measured_on": "where a measured rate was measured, in words",
+    "calibration": "the excursion rates of healthy operation that set the limits",
+    "excursion_threshold": "deviation above which healthy excursions are counted [robust scales]",
+    "excursions": "healthy excursions above the threshold that were counted",
+    "mean_excess": "mean excess of the excursions' maxima over the threshold [robust scales]",
+    "documentation": "where the method is documented in the installed package",
+    "short_crossings": "runs of records above a limit, before the alarm, that did not carry "
+    "the level over it",
+    "remaining_life": "the remaining useful life at the latest record, with its 80 % "
+    "interval (or null)",
+    "learned_from": "the runs to failure an estimate was learned from, in words",
+    "basis": "survival (lives learned, given survival so far) or degradation (the trend "
+    "seen since the alarm)",
     "tests": "the tests (indicator x channel), or how many",
     "false_alarm_per_record": "largest chance that the rule raises a false alarm at a "
     "given record: the rate per hour times the records' spacing over 3600 s (its model: "

@@ -1,13 +1,14 @@
-"""The trend's alarm against what it states (issue 23).
+"""The trend's alarm against what it states (issues 23 and 27).
 
-- The false-alarm probability of a test is exact where its model holds (independent
-  records whose statistic has an exponential upper tail above the median) and an upper
-  bound for a Gaussian tail where the limit lies beyond about 1.4 standard deviations
-  (a record exceeds it less than 8 % of the time; the Gaussian is the heavier of the two
-  nearer the median): checked over many seeded series against the level.
+- The limits come from the rate of excursions of healthy deviations (excursions counted
+  once each, their maxima's excess exponential): learned on one sample of a process whose
+  excursions have that law, the limit at a stated rate is crossed at that rate on another,
+  also when consecutive records depend on each other (counted over seeds).
 - Healthy simulated series (bearinglab's dynamic model, random speed scatter and
-  measurement noise) fire at no more than the stated rate, over seeds; a growing defect
-  raises the alarm after it appears, and the diagnosis names its family.
+  measurement noise) raise no alarm, and fire at no more than the stated rate at the
+  largest rate the rule allows; a growing defect raises the alarm after it appears, and the
+  diagnosis names its family - an outer-race defect too, which the blocks of joined
+  snapshots missed before they were tapered (issue 27).
 """
 
 import math
@@ -19,7 +20,8 @@ from bearinglab.dynamics import Defect
 from bearinglab.geometry import BallBearing
 from bearinglab.operating import OperatingCondition
 from bearinglab.trend import trend_records
-from bearinglab.trend.alarm import baseline_limits, first_run
+from bearinglab.trend.alarm import crossing_runs
+from bearinglab.trend.calibration import excursion_maxima, fit_calibration
 from bearinglab.trend.simulated import simulate_series
 
 #: PRONOSTIA's bearing (13 balls of 3.5 mm on a 25.6 mm pitch) at its first condition.
@@ -27,64 +29,48 @@ BEARING = BallBearing(ball_count=13, ball_diameter=3.5e-3, pitch_diameter=25.6e-
 CONDITION = OperatingCondition.at_rpm(1800.0, radial_load=4000.0)
 
 
-def window_rate(draw, n: int, monitored: int, r: int, level: float, series: int, seed: int):
-    """Share of the windows of ``r`` consecutive monitored records, over ``series`` seeded
-    series of ``n`` baseline and ``monitored`` records drawn by ``draw``, in which every
-    record exceeds the limit of level ``level``."""
-    rng = np.random.default_rng(seed)
-    hits = windows = 0
-    for _ in range(series):
-        x = draw(rng, n + monitored)[:, None]
-        limit = baseline_limits(x, slice(0, n), level, r)[0].limit
-        above = (x[n:, 0] > limit).astype(int)
-        hits += int(np.sum(np.convolve(above, np.ones(r, dtype=int), mode="valid") >= r))
-        windows += monitored - r + 1
-    return hits / windows
+def _ar1(rng, tests: int, records: int, rho: float) -> np.ndarray:
+    """``tests`` series of ``records`` of an AR(1) process with Laplace innovations: each
+    record leans on the one before, so that exceedances come in clusters."""
+    e = rng.laplace(size=(tests, records))
+    x = np.empty_like(e)
+    x[:, 0] = e[:, 0]
+    for k in range(1, records):
+        x[:, k] = rho * x[:, k - 1] + e[:, k]
+    return x
 
 
-@pytest.mark.parametrize("n, r, level", [(30, 2, 1e-2), (60, 3, 1e-2), (20, 1, 2e-2)])
-def test_the_stated_probability_is_exact_for_an_exponential_tail(n, r, level):
-    rate = window_rate(lambda g, m: g.laplace(size=m), n, 40, r, level, 4000, seed=n + r)
-    assert rate == pytest.approx(level, rel=0.2), rate
+@pytest.mark.parametrize("rho", [0.0, 0.6])
+@pytest.mark.parametrize("rate", [0.3, 0.05])
+def test_a_limit_learned_on_one_sample_is_crossed_at_its_rate_on_another(rho, rate):
+    # 300 "test-hours" of 60 records each to learn from, as many to count on
+    rng = np.random.default_rng(int(100 * rho) + int(1000 * rate))
+    learn = fit_calibration([(row, 1.0) for row in _ar1(rng, 300, 60, rho)])
+    limit = learn.limit(rate)
+    counted = sum(excursion_maxima(row, limit).size for row in _ar1(rng, 300, 60, rho))
+    from scipy.stats import poisson
 
-
-@pytest.mark.parametrize("n, r, level", [(30, 1, 1e-2), (60, 2, 1e-3), (60, 3, 1e-4)])
-def test_the_stated_probability_bounds_a_gaussian_tail(n, r, level):
-    rate = window_rate(lambda g, m: g.standard_normal(m), n, 40, r, level, 4000, seed=n)
-    assert rate <= level, rate
-
-
-def test_the_first_window_is_the_alarm():
-    x = np.array([0, 1, 1, 0, 1, 1, 1, 0, 1, 1, 1])
-    assert first_run(x, 3) == 6
-
-
-def _fired(result) -> tuple[int, int]:
-    """(windows where the rule fires, windows) of a result, all tests together."""
-    runs = result.runs().any(axis=1)
-    windows = result.monitored_records - result.persistence + 1
-    return int(runs.sum()), windows
+    expected = rate * 300
+    assert poisson.ppf(0.0005, expected) <= counted <= poisson.ppf(0.9995, expected), counted
 
 
 @pytest.mark.slow
-def test_healthy_simulated_series_alarm_at_no_more_than_the_stated_rate(tmp_path):
-    fired = windows = 0
+def test_healthy_simulated_series_raise_no_alarm_and_fire_no_more_than_stated(tmp_path):
+    fired = 0
+    hours = 0.0
     for seed in range(3):
         folder = simulate_series(
             tmp_path / f"healthy{seed}", BEARING, CONDITION, records=100, seed=seed
         )
         counts = {"settle_records": 0, "baseline_records": 40}
-        assert trend_records(folder, **counts).alarm is None  # 1e-6 per record at 10 s
-        # a level whose firings can be counted: 2 % per record (7.2 per hour at a record
-        # every 10 s), 2 records in a row
-        result = trend_records(folder, false_alarm_per_hour=7.2, persistence_records=2, **counts)
-        assert result.false_alarm == pytest.approx(0.02)
-        f, w = _fired(result)
-        fired, windows = fired + f, windows + w
-    # no more than the stated rate: not significantly more (99.9 %) than 2 % of the windows
+        assert trend_records(folder, **counts).alarm is None  # 3.6e-4 per hour
+        # the largest rate the rule allows (its limit at the learned threshold)
+        r = trend_records(folder, false_alarm_per_hour=5.0, **counts)
+        fired += len(crossing_runs(r.runs().any(axis=1)))
+        hours += r.monitored_records * r.record_spacing / 3600.0
     from scipy.stats import poisson
 
-    assert fired <= poisson.ppf(0.999, 0.02 * windows), (fired, windows)
+    assert fired <= poisson.ppf(0.999, 5.0 * hours), (fired, hours)
 
 
 @pytest.mark.slow
@@ -100,12 +86,38 @@ def test_a_growing_defect_raises_the_alarm_and_is_named(tmp_path, location, fami
         folder,
         settle_records=0,
         baseline_records=40,
+        persistence=30.0,
         bearing=BEARING,
         shaft_speed=CONDITION.shaft_speed,
     )
     assert result.alarm is not None
-    assert start + result.persistence - 1 <= result.alarm.record <= start + 20
+    assert start + result.persistence // 2 <= result.alarm.record <= start + 20
     after = result.diagnosis.after(result.alarm.record)
     seen = {result.diagnosis.alarm["verdict"]} | set(after)
     assert family in seen, (result.diagnosis.alarm, after)
     assert math.isfinite(result.diagnosis.alarm["significance"][family])
+
+
+@pytest.mark.slow
+def test_an_outer_race_defect_is_named_in_most_blocks_of_joined_snapshots(tmp_path):
+    # issue 27: the blocks of snapshots joined as they were said "no fault detected" after
+    # the alarm; the jumps at the joins made a comb of lines 10 Hz apart, one 2 Hz from the
+    # BPFO (168 Hz). Joined with a taper, 11 of 12 blocks name the outer race (6 before).
+    folder = simulate_series(
+        tmp_path / "outer",
+        BEARING,
+        CONDITION,
+        records=36,
+        steps=[(0, Defect("outer", width=0.2e-3, depth=5e-6))],
+    )
+    result = trend_records(
+        folder,
+        settle_records=0,
+        baseline_records=10,
+        persistence=30.0,
+        bearing=BEARING,
+        shaft_speed=CONDITION.shaft_speed,
+    )
+    verdicts = result.diagnosis.block_verdicts
+    assert len(verdicts) == 12
+    assert sum("outer_race" in str(v) for v in verdicts) >= 10, verdicts

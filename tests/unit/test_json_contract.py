@@ -188,6 +188,8 @@ def outputs(tmp_path_factory):
         "0",
         "--baseline-records",
         "30",
+        "--persistence-s",
+        "30",
         "--unit",
         "g",
         "--machine",

@@ -1,5 +1,6 @@
-"""The trend of a series of recordings (issue 23): readers, indicators, the alarm rule's
-arithmetic, trend_records on synthetic series, and the command line's one-line errors."""
+"""The trend of a series of recordings (issues 23 and 27): readers, indicators, the alarm
+rule's arithmetic, trend_records on synthetic series, inputs that lie, and the command
+line's one-line errors."""
 
 import json
 import math
@@ -12,14 +13,15 @@ from bearinglab.errors import InputError
 from bearinglab.signal import Signal, write_signal
 from bearinglab.trend import trend_records
 from bearinglab.trend.alarm import (
-    first_run,
-    persistence_count,
-    tail_constant,
-    tail_limit,
-    window_probability,
+    crossing_runs,
+    robust_location_scale,
+    window_count,
+    window_levels,
 )
+from bearinglab.trend.calibration import Calibration, excursion_maxima, fit_calibration
 from bearinglab.trend.indicators import (
     acceleration_unit,
+    band_limited,
     record_indicators,
     scalar_indicators,
     velocity_rms,
@@ -60,7 +62,8 @@ def short(records: int = 60, seed: int = 0) -> np.ndarray:
     return noise(records, seed=seed, n=1024)
 
 
-COUNTS = {"settle_records": 5, "baseline_records": 30}
+#: Small series: 5 records to settle, 30 of baseline, a 30 s persistence window (3 records).
+COUNTS = {"settle_records": 5, "baseline_records": 30, "persistence": 30.0}
 
 
 # ------------------------------------------------------------------ readers
@@ -192,9 +195,11 @@ def test_a_folder_without_recordings_is_an_input_error(tmp_path, make, why):
 # ------------------------------------------------------------------ indicators
 def test_indicators_of_gaussian_noise_and_of_a_sine():
     x = np.random.default_rng(0).standard_normal((50, 8192))
-    d = record_indicators(x, FS)
+    d = record_indicators(x, FS, max_frequency=FS / 2)
     assert np.median(d["kurtosis"]) == pytest.approx(3.0, abs=0.1)
     assert np.median(d["rms"]) == pytest.approx(1.0, abs=0.02)
+    # the default band holds half of white noise's power
+    assert np.median(record_indicators(x, FS)["rms"]) == pytest.approx(np.sqrt(0.5), abs=0.02)
     assert np.all(d["crest_factor"] == d["peak"] / d["rms"])
     assert np.all(np.abs(d["spectral_kurtosis"]) < 1.0)
     t = np.arange(4096) / FS
@@ -209,6 +214,23 @@ def test_impacts_raise_the_kurtosis_and_the_spectral_kurtosis():
     d = record_indicators(x, FS)
     assert d["kurtosis"][1] > 2 * d["kurtosis"][0]
     assert d["spectral_kurtosis"][1] > d["spectral_kurtosis"][0] + 2
+
+
+def test_the_indicators_band_leaves_out_the_top_half_of_the_spectrum():
+    # a 10 kHz tone (the top half of 25.6 kHz) on noise: in the full band it sets the rms,
+    # in the default band (to 6.4 kHz) it is left out (issue 27: running-in and bursts of a
+    # healthy bearing lie there)
+    t = np.arange(2560) / FS
+    noise_ = 0.1 * np.random.default_rng(0).standard_normal(2560)
+    x = noise_ + 3.0 * np.sin(2 * np.pi * 10000.0 * t)
+    full = record_indicators(x, FS, max_frequency=FS / 2)["rms"]
+    default = record_indicators(x, FS)["rms"]
+    assert float(full) > 2.0 and float(default) < 0.1
+    y = band_limited(np.sin(2 * np.pi * 1000.0 * t), FS, 6400.0)
+    np.testing.assert_allclose(y, np.sin(2 * np.pi * 1000.0 * t), atol=1e-9)
+    with pytest.raises(InputError) as info:
+        record_indicators(x, FS, max_frequency=20000.0)
+    assert info.value.parameter == "max_frequency"
 
 
 def test_velocity_in_g_is_9_81_times_that_in_m_s2():
@@ -232,29 +254,57 @@ def test_zones_and_machines():
 
 
 # ------------------------------------------------------------------ the rule's arithmetic
-@pytest.mark.parametrize(
-    "n, r, level", [(10, 1, 1e-2), (30, 3, 1e-7), (200, 2, 1e-5), (60, 5, 1e-3)]
-)
-def test_the_tail_constant_gives_the_level(n, r, level):
-    k = n // 2
-    c = tail_constant(n, k, r, level)
-    assert c > 0 and window_probability(n, k, r, c) == pytest.approx(level, rel=1e-9)
-    assert window_probability(n, k, r, 2 * c) < level
+def test_a_level_is_above_a_value_exactly_when_most_of_its_window_is():
+    rng = np.random.default_rng(3)
+    x = rng.standard_normal((200, 2))
+    for m in (1, 3, 4, 30):
+        levels = window_levels(x, m)
+        q = m // 2 + 1
+        for i in range(m - 1, 200):
+            for v in (-0.5, 0.0, 0.7):
+                assert (levels[i, 0] > v) == (np.sum(x[i - m + 1 : i + 1, 0] > v) >= q)
+        assert np.all(np.isnan(levels[: m - 1]))
+    # a level never reaches back before the start it is given
+    late = window_levels(x, 3, start=50)
+    assert np.isnan(late[51, 0]) and np.isfinite(late[52, 0])
 
 
-def test_a_lower_level_and_a_shorter_run_raise_the_limit():
-    x = np.random.default_rng(1).laplace(size=40)
-    assert tail_limit(x, 1e-6, 3).limit > tail_limit(x, 1e-3, 3).limit
-    assert tail_limit(x, 1e-6, 2).limit > tail_limit(x, 1e-6, 3).limit
+def test_a_burst_in_the_baseline_barely_moves_its_robust_scale():
+    x = np.random.default_rng(4).standard_normal(30)
+    m, s = robust_location_scale(x)
+    burst = x.copy()
+    burst[10:13] += 50.0
+    m2, s2 = robust_location_scale(burst)
+    assert abs(m2 - m) < 0.3 and s2 < 1.5 * s
     with pytest.raises(InputError):
-        tail_limit(x[:9], 1e-3, 3)
+        robust_location_scale(x[:9])
 
 
-def test_runs_and_persistence():
-    assert first_run([1, 1, 0, 1, 1, 1], 3) == 5
-    assert first_run([1, 1, 0, 1, 1], 3) is None
-    assert persistence_count(30.0, 10.0) == 3
-    assert persistence_count(30.0, 50.0) == 2 and persistence_count(1e6, 1.0) == 50
+def test_the_window_is_a_duration_in_records():
+    assert window_count(300.0, 10.0) == 30 and window_count(300.0, 100.0) == 3
+    assert window_count(30.0, 10.0) == 3 and window_count(1e9, 1.0) == 360
+    assert crossing_runs([1, 1, 0, 1]) == [(0, 1), (3, 3)]
+
+
+def test_the_calibration_gives_the_rate_it_is_asked_for():
+    c = Calibration(2.0, 25, 1.6, 0.56, 44.0, ((0.0, 3.1), (1.0, 2.0), (2.0, 0.56)))
+    for rate in (1e-6, 3.6e-5, 1e-2, 0.5, 0.56):
+        assert c.rate_above(c.limit(rate)) == pytest.approx(rate, rel=1e-9)
+    assert c.limit(1e-6) > c.limit(1e-3) > c.limit(0.5) > c.limit(0.56) == 2.0
+    with pytest.raises(InputError):  # a limit in the bulk of the healthy scatter
+        c.limit(0.6)
+    # excursions are counted once each, however many records they last
+    assert excursion_maxima([0, 3, 3, 3, 0, 2.5, 0], 2.0).tolist() == [3.0, 2.5]
+
+
+def test_fitted_on_exponential_excursions_the_calibration_holds_out_of_sample():
+    # independent Laplace records: their excursions above 2 have exponential excesses
+    rng = np.random.default_rng(5)
+    learn = fit_calibration([(row, 1.0) for row in rng.laplace(size=(400, 200))])
+    limit = learn.limit(0.5)  # per test-hour
+    held = rng.laplace(size=(400, 200))
+    counted = sum(excursion_maxima(row, limit).size for row in held)
+    assert counted == pytest.approx(0.5 * 400, rel=0.25), counted
 
 
 # ------------------------------------------------------------------ trend_records
@@ -263,14 +313,17 @@ def test_a_healthy_series_raises_no_alarm(healthy):
     assert r.alarm is None and r.baseline_records == 30 and r.persistence == 3
     d = r.to_dict()
     assert d["alarm"] is None and d["baseline_records"] == 30 and len(d["records"]) == 90
-    assert d["rule"]["tests"] == 10 and d["rule"]["test_level"] == pytest.approx(1e-7)
+    assert d["rule"]["tests"] == 10 and d["rule"]["test_level"] == pytest.approx(1e-6)
+    assert d["rule"]["false_alarm_per_record"] == pytest.approx(1e-5)  # 3.6e-3 / h, 10 s
+    assert d["rule"]["false_alarm_per_hour"] == pytest.approx(3.6e-3)
+    assert d["rule"]["band_hz"] == [0.0, 6400.0]
     json.dumps(d, allow_nan=False)
 
 
 def test_impacts_after_the_baseline_raise_the_alarm_and_it_stays(failing):
     r = trend_records(failing, **COUNTS)
     assert r.alarm is not None
-    assert 70 + r.persistence - 1 <= r.alarm.record <= 75
+    assert 70 + r.persistence // 2 <= r.alarm.record <= 75
     assert r.alarm.channel == "horizontal"
     assert r.alarm.indicator in ("kurtosis", "spectral_kurtosis", "crest_factor", "peak", "rms")
     d = r.to_dict()
@@ -286,14 +339,21 @@ def test_the_alarm_is_never_inside_the_baseline(tmp_path):
     assert r.alarm is None or r.alarm.record >= r.baseline_stop
 
 
-def test_a_burst_shorter_than_the_persistence_does_not_alarm(tmp_path):
-    x = short(seed=4)
-    x[50:52, 0] += impacts(1024)
+def test_a_burst_shorter_than_half_the_window_does_not_alarm_and_is_listed(tmp_path):
+    x = noise(90, seed=4, n=1024)
+    x[50:54, 0] += impacts(1024, depth=6.0)  # 40 s of strong impacts
     folder = write_pronostia(tmp_path, x)
-    r = trend_records(folder, **COUNTS)
-    assert r.persistence == 3 and r.alarm is None
-    r = trend_records(folder, persistence_records=2, **COUNTS)
-    assert r.alarm is not None and r.alarm.record == 51
+    counts = {**COUNTS, "persistence": None, "persistence_records": 10}  # 100 s
+    r = trend_records(folder, **counts)
+    assert r.persistence == 10 and r.alarm is None
+    crossings = r.to_dict()["short_crossings"]
+    assert crossings and {c["channel"] for c in crossings} == {"horizontal"}
+    assert all(500.0 <= c["time_s"] <= c["end_s"] <= 530.0 for c in crossings)
+    assert r.to_dict()["records"][51]["above_limit"]  # each record's flags stay
+    # the same burst held for 60 s of a 100 s window raises it
+    x[54:56, 0] += impacts(1024, depth=6.0)
+    r = trend_records(write_pronostia(tmp_path / "longer", x), **counts)
+    assert r.alarm is not None and r.alarm.record == 55 and not r.short_crossings
 
 
 def test_the_baseline_as_a_duration_holds_at_least_30_records(healthy):
@@ -319,7 +379,11 @@ def test_a_rising_baseline_is_reported(tmp_path):
         ({"machine": "class1"}, "unit"),
         ({"false_alarm_per_hour": 0.0}, "false_alarm_per_hour"),
         ({"false_alarm_per_hour": 3600.0}, "false_alarm_per_hour"),
+        ({"false_alarm_per_hour": 30.0}, "false_alarm_per_hour"),
         ({"persistence_records": 0}, "persistence_records"),
+        ({"persistence_records": 361}, "persistence_records"),
+        ({"max_frequency": 13000.0}, "max_frequency"),
+        ({"learn_from": "no/such/folder"}, "learn_from"),
         ({"shaft_speed": 100.0}, "bearing"),
         ({"jobs": 0}, "jobs"),
     ],
@@ -345,6 +409,87 @@ def test_outputs_table_figure_page_and_velocity(failing, tmp_path):
 
     page = write_trend_page(r, tmp_path / "trend.html").read_text()
     assert "bearinglab trend" in page and "data:image/png;base64" in page
+
+
+# ------------------------------------------------------------------ inputs that lie (issue 27)
+def test_duplicated_time_stamps_are_refused_naming_the_files(tmp_path):
+    # issue 27: duplicated times made the spacing 0 s and the alarm impossible without a
+    # word; when fewer than half are duplicated the old code ran on, silently
+    times = np.arange(60) * 60.0
+    times[41:51] = times[40:50]  # ten records share the time of the one before
+    with pytest.raises(InputError) as info:
+        trend_records(_records(tmp_path / "r", 60, times=times), **COUNTS)
+    assert info.value.parameter == "folder" and "share their time" in info.value.hint
+    assert "r040.npz" in info.value.hint and "r041.npz" in info.value.hint
+    # (PRONOSTIA snapshots are ordered by their numbers: a clock repeated is out of that
+    # order and is timed by its number, with a warning naming it)
+
+
+def test_a_sample_rate_that_contradicts_the_files_is_warned_about(tmp_path):
+    folder = _records(tmp_path / "r", 50)  # .npz files that store 25.6 kHz
+    r = trend_records(folder, sample_rate=12800.0, **COUNTS)
+    assert any("25600 Hz" in w and "12800 Hz" in w for w in r.warnings), r.warnings
+    assert r.sample_rate == 12800.0
+    p = write_pronostia(tmp_path / "p", short(seed=9))  # PRONOSTIA: 25.6 kHz, not stored
+    r = trend_records(p, sample_rate=12800.0, **COUNTS)
+    assert any("PRONOSTIA" in w and "12800 Hz" in w for w in r.warnings), r.warnings
+    assert not any("sample rate" in w for w in trend_records(p, **COUNTS).warnings)
+
+
+def test_records_of_absurd_magnitude_are_refused_in_one_line(capsys, tmp_path):
+    # the old code gave raw RuntimeWarnings (errors under this suite) and an OverflowError
+    folder = write_pronostia(tmp_path / "p", 1e300 * noise(12, seed=13, n=256))
+    with pytest.raises(InputError) as info:
+        trend_records(folder, **COUNTS)
+    assert info.value.parameter == "folder" and "magnitudes below 1e+60" in str(info.value)
+    err = run_error(capsys, "trend", str(folder))
+    assert err.startswith("error: FOLDER") and "\n" not in err.strip()
+
+
+def test_a_record_of_absurd_magnitude_among_good_ones_is_skipped_naming_it(tmp_path):
+    x = short(seed=10)
+    x[45] *= 1e300
+    r = trend_records(write_pronostia(tmp_path, x), **COUNTS)
+    assert "acc_00046.csv" not in r.files
+    assert any("acc_00046.csv" in w and "skipped" in w for w in r.warnings)
+
+
+def test_a_short_series_gets_a_shortened_baseline_with_a_warning(tmp_path):
+    # 40 records (390 s) are shorter than the default settling and baseline (600 + 1200 s)
+    r = trend_records(write_pronostia(tmp_path, short(40, seed=11)))
+    assert r.baseline_records >= 10 and r.baseline_stop < 40
+    assert any("shortened" in w for w in r.warnings)
+    # a count asked for that does not fit is still refused
+    with pytest.raises(InputError):
+        trend_records(write_pronostia(tmp_path / "b", short(40, seed=11)), baseline_records=40)
+
+
+def test_the_json_states_and_measures_the_rate_and_points_to_installed_docs(healthy):
+    import importlib
+
+    d = trend_records(healthy, **COUNTS).to_dict()
+    rule = d["rule"]
+    assert rule["false_alarm_per_hour"] == pytest.approx(3.6e-3)
+    assert rule["false_alarm_per_record"] == pytest.approx(3.6e-3 * 10.0 / 3600.0)
+    m = rule["measured_false_alarm"]
+    assert {"per_record", "per_hour", "measured_on"} <= set(m)
+    assert m["per_hour"] is not None and m["per_record"] is not None
+    assert "learning runs" in m["measured_on"]  # 15 min of records: not measurable here
+    assert m["per_record"] == pytest.approx(m["per_hour"] * 100.0 / 3600.0)  # their spacing
+    # the documentation it names exists after a plain install: modules with docstrings
+    assert "docs/capabilities" not in rule["documentation"].split(";")[0]
+    for module in ("bearinglab.trend.alarm", "bearinglab.trend.calibration"):
+        assert module in rule["documentation"]
+        assert "false-alarm" in importlib.import_module(module).__doc__
+
+
+def test_the_rate_is_measured_on_the_series_itself_when_it_is_long_enough(tmp_path):
+    x = noise(420, seed=12, n=256)  # 70 min of healthy records, 10 s apart
+    r = trend_records(write_pronostia(tmp_path, x), **COUNTS)
+    m = r.to_dict()["rule"]["measured_false_alarm"]
+    assert "this series" in m["measured_on"] and m["monitored_hours"] >= 1.0
+    assert m["firings"] == 0 and m["per_hour"] == 0.0
+    assert m["upper_per_hour"] == pytest.approx(-math.log(0.05) / m["monitored_hours"])
 
 
 # ------------------------------------------------------------------ the command line

@@ -65,6 +65,26 @@ def _seconds(value: float | None) -> str:
     return f"{value:.6g} s" + (f" ({value / 3600:.3g} h)" if value >= 3600 else "")
 
 
+def _measured(m: dict) -> str:
+    """The measured false-alarm rate in words."""
+    if m["per_hour"] is None:
+        return m["measured_on"]
+    upper = "" if m["upper_per_hour"] is None else f" (< {m['upper_per_hour']:.3g} at 95 %)"
+    return (
+        f"{m['firings']} in {m['monitored_hours']:.3g} h: {m['per_hour']:.3g} per hour{upper}, "
+        f"{m['per_record']:.3g} per record, on {m['measured_on']}"
+    )
+
+
+def _life(life: dict) -> str:
+    """The remaining-life estimate in words."""
+    return (
+        f"{_seconds(life['estimate_s'])} (80 %: {_seconds(life['low_s'])} to "
+        f"{_seconds(life['high_s'])}) at {_seconds(life['at_time_s'])}, from "
+        f"{life['basis']} ({life['method']})"
+    )
+
+
 def _print(out: dict) -> None:
     """The summary and the tests as tables (the same data as ``--json``)."""
     rule = out["rule"]
@@ -80,12 +100,13 @@ def _print(out: dict) -> None:
         ],
         [
             "rule",
-            f"{rule['tests']} tests, {rule['persistence']} records in a row above a limit; "
-            f"false alarm <= {rule['false_alarm_per_hour']:.3g} per hour of monitoring "
-            f"({rule['false_alarm_per_record']:.3g} per record), <= "
-            f"{rule['false_alarm_per_run']:.3g} over the {rule['monitored_records']} records "
-            "monitored",
+            f"{rule['tests']} tests over 0-{rule['band_hz'][1]:.6g} Hz, each level the median "
+            f"of {rule['persistence']} records ({_seconds(rule['persistence_s'])}), limit "
+            f"{rule['limit_excess']:.3g} robust scales above the baseline; false alarms "
+            f"stated {rule['false_alarm_per_hour']:.3g} per hour of monitoring "
+            f"({rule['false_alarm_per_record']:.3g} per record)",
         ],
+        ["false alarms measured", _measured(rule["measured_false_alarm"])],
     ]
     alarm = out["alarm"]
     if alarm is None:
@@ -110,6 +131,19 @@ def _print(out: dict) -> None:
                 ", ".join(f"{k} in {v} blocks" for k, v in after.items()) or "-",
             ]
         )
+    if out["short_crossings"]:
+        first = out["short_crossings"][0]
+        rows.append(
+            [
+                "short crossings",
+                f"{len(out['short_crossings'])} run(s) of records above a limit that did not "
+                f"persist, the first at {_seconds(first['time_s'])} ({first['indicator']}, "
+                f"{first['channel']})",
+            ]
+        )
+    life = out.get("remaining_life")
+    if life is not None:
+        rows.append(["remaining life", _life(life)])
     severity = out["severity"]
     if severity is not None:
         first = severity["first_zone_s"]

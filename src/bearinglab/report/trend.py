@@ -8,7 +8,16 @@ from __future__ import annotations
 from pathlib import Path
 
 from ..files import write_atomically
-from .document import figure, key_figures, notes, page, paragraph, table
+from .document import figure, key_figures, notes, number, page, paragraph, table
+
+#: What the ISO 20816 zones can and cannot say about a bearing (issue 27).
+ISO_NOTE = (
+    "The zones judge the broadband r.m.s. velocity over 10-1000 Hz (ISO 20816-1 and -3), "
+    "the measure of a machine's overall vibration. That band misses most of the energy of "
+    "a bearing defect, whose impacts ring the structure at kilohertz frequencies (here the "
+    "indicators' band reaches {top} Hz): a failing bearing can stay in zone A until late, "
+    "and the alarm above does not use the zones."
+)
 
 
 def trend_page(result) -> str:
@@ -21,12 +30,18 @@ def trend_page(result) -> str:
     """
     d = result.to_dict()
     alarm = d["alarm"]
+    measured = d["rule"]["measured_false_alarm"]
     cards = [
         ("records", f"{len(result.files)}"),
         ("span", f"{result.times[-1] / 3600:.3g} h"),
         ("baseline", f"{result.baseline_records} records"),
         ("alarm", "none" if alarm is None else f"{alarm['time_s']:.6g} s"),
+        ("false alarms stated", f"{number(d['rule']['false_alarm_per_hour'], 3)} per hour"),
+        ("false alarms measured", _measured_card(measured)),
     ]
+    life = d.get("remaining_life")
+    if life is not None:
+        cards.append(("remaining life", _hours(life["estimate_s"])))
     if alarm is not None:
         cards.append(("raised by", f"{alarm['indicator']} ({alarm['channel']})"))
         cards.append(("before the last record", f"{alarm['time_to_last_record_s']:.6g} s"))
@@ -45,6 +60,23 @@ def trend_page(result) -> str:
     body = [
         key_figures(cards),
         paragraph(d["rule"]["description"]),
+        paragraph(
+            "False alarms measured: "
+            + (
+                measured["measured_on"]
+                if measured["per_hour"] is None
+                else f"{measured['firings']} in {number(measured['monitored_hours'], 3)} h of "
+                f"monitoring, {number(measured['per_hour'], 3)} per hour"
+                + (
+                    ""
+                    if measured["upper_per_hour"] is None
+                    else f" (at most {number(measured['upper_per_hour'], 3)} per hour at 95 %)"
+                )
+                + f", {number(measured['per_record'], 3)} per record; measured on "
+                f"{measured['measured_on']}."
+            )
+            + f" Documentation: {d['rule']['documentation']}."
+        ),
         figure(
             result.plot()[0],
             "Indicators over time: baseline (grey), limits (dashed), alarm (red)",
@@ -86,8 +118,70 @@ def trend_page(result) -> str:
                 numeric=(0,),
             )
         )
+    if d["short_crossings"]:
+        shown = d["short_crossings"][:20]
+        body.append(
+            table(
+                ["from [s]", "to [s]", "indicator", "channel"],
+                [[c["time_s"], c["end_s"], c["indicator"], c["channel"]] for c in shown],
+                f"Short crossings: records above a limit that did not persist "
+                f"({len(d['short_crossings'])}, the first {len(shown)} shown)",
+                numeric=(0, 1),
+            )
+        )
+    if d["severity"] is not None:
+        body.append(_zones(d["severity"], result.max_frequency))
+    if life is not None:
+        body.append(_life(result, life))
     body.append(notes(d["warnings"], "Warnings"))
     return page("bearinglab trend", [result.folder], "".join(body))
+
+
+def _hours(seconds: float) -> str:
+    return f"{seconds:.4g} s" if seconds < 3600 else f"{seconds / 3600:.3g} h"
+
+
+def _measured_card(m: dict) -> str:
+    if m["per_hour"] is None:
+        return "not measured"
+    if m["upper_per_hour"] is not None:
+        return f"0 in {number(m['monitored_hours'], 3)} h (< {number(m['upper_per_hour'], 2)}/h)"
+    return f"{number(m['per_hour'], 3)} per hour"
+
+
+def _zones(severity: dict, top: float) -> str:
+    """The ISO 20816 zones: the machine's boundaries, when each zone was first reached, and
+    what the velocity band cannot see."""
+    b = severity["boundaries_mm_s"]
+    first = severity["first_zone_s"]
+    rows = [
+        ["A/B", b["a_b"], first.get("B")],
+        ["B/C", b["b_c"], first.get("C")],
+        ["C/D", b["c_d"], first.get("D")],
+    ]
+    return table(
+        ["boundary", "velocity r.m.s. [mm/s]", "first reached [s]"],
+        rows,
+        f"ISO 20816 zones of {severity['machine']} ({severity['source']})",
+        numeric=(1, 2),
+    ) + paragraph(ISO_NOTE.format(top=number(top, 4)))
+
+
+def _life(result, life: dict) -> str:
+    """The remaining-life estimate, its basis and its figure over time."""
+    text = (
+        f"Remaining useful life at {number(life['at_time_s'], 6)} s: {_hours(life['estimate_s'])}"
+        f" (80 % interval {_hours(life['low_s'])} to {_hours(life['high_s'])}), from "
+        f"{life['basis']}: {life['method']}. Learned from {life['learned_from']}."
+    )
+    out = paragraph(text)
+    history = getattr(result.remaining_life, "history", None)
+    if history is not None and len(history[0]):
+        out += figure(
+            result.plot_life()[0],
+            "Remaining useful life estimated at each record, with its 80 % interval",
+        )
+    return out
 
 
 def write_trend_page(result, path) -> Path:

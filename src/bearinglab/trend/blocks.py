@@ -4,8 +4,9 @@ The diagnosis (:func:`bearinglab.diagnosis.analyze_signal`, its public function)
 record shorter than three cage revolutions (``MIN_CAGE_REVOLUTIONS`` of
 :mod:`bearinglab.diagnosis.analysis`): a 0.1 s PRONOSTIA snapshot of its bearing at 1800
 rpm holds 1.3. A family's significance is therefore computed over a block of the fewest
-consecutive records that hold three cage revolutions, joined end to end, and every record
-of a block carries the block's result; at the alarm, the block is the records ending at
+consecutive records that hold three cage revolutions, joined end to end (each tapered at
+its ends, :func:`.tasks.join_records`), and every record of a block carries the block's
+result; at the alarm, the block is the records ending at
 the alarm record. Snapshots taken seconds apart are independent segments: the joined
 record's envelope spectrum is close to the average of the snapshots' spectra, each line
 widened by a snapshot's 1/T, with small steps at the joins. Growing inner-race and ball

@@ -99,3 +99,34 @@ def trend_figure(result, ax=None):
     axes[0].set_title(title)
     fig.tight_layout()
     return fig, axes
+
+
+def life_figure(result, ax=None):
+    """The remaining useful life estimated at records over the series, with its 80 %
+    interval (shaded), the alarm (red) and the basis of each estimate; returns (figure,
+    axes)."""
+    from ..plotting import figure_axes
+
+    life = result.remaining_life
+    fig, ax_ = figure_axes(ax, figsize=(10, 3.2))
+    # (estimates of 0 s, at a failure, are drawn at 10 s on the log scale)
+    times = np.asarray(life.history[0], dtype=float)
+    est, low, high = (np.maximum(np.asarray(v, dtype=float), 10.0) for v in life.history[1:])
+    t, label, scale = time_axis(result.times)
+    x = times / scale
+    ax_.fill_between(
+        x, low / 3600.0, high / 3600.0, color="tab:blue", alpha=0.2, lw=0, label="80 % interval"
+    )
+    ax_.plot(x, est / 3600.0, color="tab:blue", lw=1.2, marker=".", ms=3, label="estimate")
+    if result.alarm is not None:
+        ax_.axvline(t[result.alarm.record], color="red", lw=1.2, label="alarm")
+    ax_.set_yscale("log")
+    ax_.set_xlabel(label)
+    ax_.set_ylabel("remaining life [h]")
+    ax_.set_title(
+        f"remaining life at the last record: {life.estimate / 3600.0:.3g} h "
+        f"({life.low / 3600.0:.3g} to {life.high / 3600.0:.3g} h), from {life.basis}"
+    )
+    ax_.legend(fontsize=7, loc="upper right")
+    fig.tight_layout()
+    return fig, ax_

@@ -9,7 +9,7 @@ from dataclasses import replace
 from ..analyses.base import FILES, Analysis, plot_file
 from ..errors import InputError
 from ..inputs import BEARING, INPUTS, Input, bearing_from, bearing_warnings, check, speed_from
-from .alarm import FALSE_ALARM_PER_HOUR, PERSISTENCE
+from .alarm import FALSE_ALARM_PER_HOUR, MAX_WINDOW_RECORDS, PERSISTENCE
 from .analysis import BASELINE, SETTLE
 
 #: The trend's inputs besides the bearing, in the order the command line lists them.
@@ -44,9 +44,10 @@ TREND_INPUTS: dict[str, Input] = {
     "false_alarm_per_hour": Input(
         "number",
         FALSE_ALARM_PER_HOUR,
-        "Rate of false alarms per hour of monitoring, all indicators and channels together "
-        "(the rule's tail model); the level per record is this times the records' spacing "
-        "over 3600 s (at most 0.1).",
+        "Rate of false alarms per hour of monitoring, all indicators and channels together: "
+        "the limits are where healthy operation of the learning runs crosses them at this "
+        "rate; the level per record is this times the records' spacing over 3600 s (at "
+        "most 0.1).",
         low=0.0,
         low_open=True,
         what="a rate per hour",
@@ -54,11 +55,30 @@ TREND_INPUTS: dict[str, Input] = {
     "persistence_s": Input(
         "number",
         None,
-        f"How long records above a limit must last to raise the alarm [s] (default "
-        f"{PERSISTENCE:g} s): the records spanning it at the series' cadence, at least 2.",
+        f"Persistence window [s] (default {PERSISTENCE:g} s): each indicator's level is its "
+        "median over the records of the last window (at least 3), so that a burst shorter "
+        "than half of it raises no alarm.",
     ),
     "persistence_records": Input(
-        "integer", None, "Persistence as a number of consecutive records instead."
+        "integer",
+        None,
+        f"Persistence window as a number of records instead (1 to {MAX_WINDOW_RECORDS}).",
+    ),
+    "max_frequency_hz": Input(
+        "number",
+        None,
+        "Top of the indicators' band [Hz] (default a quarter of the sample rate: above it "
+        "lie the anti-aliasing roll-off and the surface transients of a healthy bearing).",
+        low=0.0,
+        low_open=True,
+        what="a frequency",
+    ),
+    "learn_from": Input(
+        "path",
+        None,
+        "Runs to failure to learn the alarm's limits and the lives from: a folder with one "
+        "sub-folder of recordings per run (each from new to failure), or a file written by "
+        "LearnedRuns.write; default the six PRONOSTIA learning runs shipped with bearinglab.",
     ),
     "unit": Input(
         "text",
@@ -90,12 +110,13 @@ _NAMES = {
     "settle": "settle_s",
     "baseline": "baseline_s",
     "persistence": "persistence_s",
+    "max_frequency": "max_frequency_hz",
     "shaft_speed": "speed_rpm",
     "bearing": "designation",
     "workers": "jobs",
 }
 #: Inputs the library's error names by the file or channel at fault, not the value given.
-_AT_FAULT = ("folder", "channel")
+_AT_FAULT = ("folder", "channel", "learn_from")
 
 
 def trend_from(values: dict, *, jobs: int = 1, scheduler=None, progress=None):
@@ -130,6 +151,8 @@ def trend_from(values: dict, *, jobs: int = 1, scheduler=None, progress=None):
             if values.get("persistence_s") is None
             else values["persistence_s"],
             persistence_records=values.get("persistence_records"),
+            max_frequency=values.get("max_frequency_hz"),
+            learn_from=values.get("learn_from"),
             unit=values.get("unit"),
             machine=values.get("machine"),
             bearing=bearing,

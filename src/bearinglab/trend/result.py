@@ -9,30 +9,31 @@ from datetime import UTC, datetime
 
 import numpy as np
 
+from .alarm import Alarm
 from .blocks import BlockDiagnosis
 from .indicators import INDICATORS
+from .rule import MAX_SHORT_CROSSINGS
 
 #: What the test statistic of each indicator is, in words.
-STATISTIC_TEXT = "log of the indicator (log(SK + 2) for the spectral kurtosis)"
+STATISTIC_TEXT = (
+    "log of the indicator (log(SK + 2) for the spectral kurtosis); a test's level is its "
+    "median over the persistence window, compared with the baseline median in robust "
+    "scales of the baseline (1.4826 median absolute deviations)"
+)
 #: The tail model, in words.
 TAIL_TEXT = (
-    "exponential upper tail above the baseline median, its scale the mean excess of the "
-    "upper half (estimation accounted for)"
+    "limits from the rate at which healthy operation carries a level above them: excursions "
+    "above the baseline counted once each, their maxima's excess exponential (estimation "
+    "accounted for), learned on real runs (calibration.source)"
+)
+#: Where the rule is documented in an installed package (its module's docstring).
+DOCUMENTATION = (
+    "python -m pydoc bearinglab.trend.alarm (the rule), bearinglab.trend.calibration (its "
+    "limits) and bearinglab.trend.life (the remaining life); measured rates: "
+    "docs/capabilities/trend.md of the source"
 )
 #: Clocks larger than this are read as seconds since 1970 (an ISO 8601 date-time given).
 EPOCH_CLOCK = 1e8
-
-
-@dataclass(frozen=True)
-class Alarm:
-    """The alarm: the ``record`` (index in time order) that completed the first run of
-    exceedances, the ``indicator`` and ``channel`` whose test raised it, and its ``value``
-    there (in the indicator's unit)."""
-
-    record: int
-    indicator: str
-    channel: str
-    value: float
 
 
 def _indicator_value(name: str, statistic: float) -> float:
@@ -45,13 +46,19 @@ class TrendResult:
     """The trend of a machine over a series of records (time order).
 
     ``files``, ``times`` [s from the first record], ``values`` (indicator -> records x
-    channels, in the channels' unit for rms and peak), ``velocity`` (records x channels
-    [m/s], or None), ``zones`` (the machine's ISO boundaries, or None); the baseline is
-    records ``settle_records`` to ``baseline_stop`` - 1; the rule's false-alarm rate per
-    hour (``false_alarm_per_hour``) and the level per record it gives at the records'
-    spacing (``false_alarm``); ``tests`` (indicator, channel index), their ``limits``
-    (:class:`~.alarm.TailLimit`, statistic units) and ``first_alarms`` (record or None);
-    ``alarm``; ``diagnosis`` (:class:`BlockDiagnosis` or None); ``warnings``.
+    channels, over the band 0 to ``max_frequency`` [Hz], in the channels' unit for rms
+    and peak), ``velocity`` (records x channels [m/s], or None), ``zones`` (the machine's
+    ISO boundaries, or None); the baseline is records ``settle_records`` to
+    ``baseline_stop`` - 1; the rule's false-alarm rate per hour (``false_alarm_per_hour``)
+    and the level per record it gives at the records' spacing (``false_alarm``); the
+    ``persistence`` window (records); ``tests`` (indicator, channel index), their
+    ``limits`` (:class:`~.alarm.Reference`, statistic units) and ``first_alarms`` (the
+    record where each test's level first crossed its limit, or None); ``alarm``;
+    ``short_crossings`` ((first record, last record, test), before the alarm);
+    ``learned`` (:class:`~.learning.LearnedRuns`: the calibration and lives used);
+    ``measured`` (the rule's firings on held-out healthy stretches of this series, or
+    None); ``diagnosis`` (:class:`BlockDiagnosis` or None); ``remaining_life``
+    (:class:`~.life.RemainingLife` or None); ``warnings``.
     """
 
     folder: str
@@ -76,7 +83,12 @@ class TrendResult:
     limits: tuple
     first_alarms: tuple
     alarm: Alarm | None
+    max_frequency: float = math.inf
+    short_crossings: tuple = ()
+    learned: object | None = None
+    measured: dict | None = None
     diagnosis: BlockDiagnosis | None = None
+    remaining_life: object | None = None
     warnings: tuple = field(default=())
 
     # ------------------------------------------------------------------ derived
@@ -98,8 +110,17 @@ class TrendResult:
     @property
     def false_alarm_per_run(self) -> float:
         """Bound on the chance of a false alarm over the monitored records [-]."""
-        windows = max(self.monitored_records - self.persistence + 1, 0)
-        return min(1.0, windows * self.false_alarm)
+        return min(1.0, self.monitored_records * self.false_alarm)
+
+    @property
+    def persistence_seconds(self) -> float:
+        """The persistence window's span at the records' spacing [s]."""
+        return self.persistence * self.record_spacing
+
+    @property
+    def limit_excess(self) -> float:
+        """How far above the baseline median a level may go, in robust scales."""
+        return self.limits[0].excess if self.limits else math.inf
 
     def limit(self, j: int) -> float:
         """Test ``j``'s limit in the indicator's unit."""
@@ -113,18 +134,20 @@ class TrendResult:
         out[: self.baseline_stop] = False
         return out
 
+    def deviations(self) -> np.ndarray:
+        """records x tests: each test's level (the median over the persistence window)
+        above the baseline median, in robust scales (NaN where the window reaches into the
+        baseline)."""
+        from .alarm import deviations
+        from .rule import statistics
+
+        base = slice(self.settle_records, self.baseline_stop)
+        return deviations(statistics(self.values, self.tests), base, self.persistence)[1]
+
     def runs(self) -> np.ndarray:
-        """records x tests: True where a run of ``persistence`` monitored records above the
-        test's limit ends (each such record is a window where the rule fires; the first
-        one, over all tests, is the alarm)."""
-        above = self.above().astype(int)
-        r = self.persistence
-        out = np.zeros_like(above, dtype=bool)
-        if above.shape[0] >= r:
-            kernel = np.ones(r, dtype=int)
-            for j in range(above.shape[1]):
-                out[r - 1 :, j] = np.convolve(above[:, j], kernel, mode="valid") >= r
-        return out
+        """records x tests: True where the test's level is above its limit (the first such
+        record, over all tests, is the alarm; each run of them is a firing)."""
+        return np.nan_to_num(self.deviations(), nan=-np.inf) > self.limit_excess
 
     @property
     def velocity_zones(self) -> np.ndarray | None:
@@ -152,24 +175,79 @@ class TrendResult:
         return f"{name}:{self.channels[c]}"
 
     def rule_text(self) -> str:
-        """The rule in one paragraph, with its nominal false-alarm probabilities."""
+        """The rule in one paragraph, with its false-alarm rates: stated and measured."""
         n = self.baseline_records
+        cal = None if self.learned is None else self.learned.calibration
+        measured = self.measured_false_alarm()
         return (
             f"Baseline: records {self.settle_records} to {self.baseline_stop - 1} "
             f"({n} records, {self.times[self.settle_records]:.6g} s to "
             f"{self.times[self.baseline_stop - 1]:.6g} s). Each of {len(self.tests)} tests "
-            f"({len(INDICATORS)} indicators x {len(self.channels)} channels) compares the "
-            f"{STATISTIC_TEXT} with a limit from the baseline ({TAIL_TEXT}); it alarms when "
-            f"{self.persistence} consecutive records exceed it ({self.persistence} x "
-            f"{self.record_spacing:.3g} s, the cadence), at a level of "
-            f"{self.test_level:.3g} per record (Bonferroni). The alarm is raised by the first "
-            f"test to alarm and stays raised. False-alarm probability: at most "
-            f"{self.false_alarm_per_hour:.3g} per hour of monitoring, so "
-            f"{self.false_alarm:.3g} per record at a record every {self.record_spacing:.3g} s, "
-            f"and at most {self.false_alarm_per_run:.3g} over the {self.monitored_records} "
-            f"records monitored (independent records, exponential tail; measured rates: "
-            f"docs/capabilities/trend.md)."
+            f"({len(INDICATORS)} indicators over 0-{self.max_frequency:.6g} Hz x "
+            f"{len(self.channels)} channels) takes the log of its indicator (log(SK + 2) for "
+            f"the spectral kurtosis); its level is the median of the last {self.persistence} "
+            f"records ({self.persistence_seconds:.3g} s at the cadence of "
+            f"{self.record_spacing:.3g} s), and the alarm is raised when "
+            f"some test's level exceeds the baseline median by {self.limit_excess:.3g} robust "
+            "scales (1.4826 median absolute deviations of the baseline), and stays raised. "
+            "That limit is where healthy operation carries a level "
+            f"at {self.false_alarm_per_hour / len(self.tests):.3g} per hour and test "
+            f"(Bonferroni over the tests: {self.false_alarm_per_hour:.3g} false alarms per "
+            f"hour of monitoring, {self.false_alarm:.3g} per record)"
+            + ("" if cal is None else f", learned on {cal.source}")
+            + f". Measured: {measured['text']}."
         )
+
+    def measured_false_alarm(self) -> dict:
+        """The rule's false alarms measured on held-out healthy stretches of this series
+        when it holds enough of them, else the figure measured on the learning runs:
+        ``per_record``, ``per_hour``, ``upper_per_hour`` (95 %), ``firings``,
+        ``monitored_hours``, ``measured_on`` and a sentence (``text``)."""
+        from .rule import UPPER_95
+
+        own = self.measured
+        if own is not None:
+            fired, hours = own["firings"], own["hours"]
+            spacing = self.record_spacing
+            on = (
+                f"this series: {own['baselines']} baseline(s) of {self.baseline_records} "
+                f"records slid over its first {own['end']:.6g} s"
+                + ("" if self.alarm is None else " (up to an hour before the alarm)")
+                + ", each followed by the rest of that stretch"
+            )
+        else:
+            learned = {} if self.learned is None else self.learned.measured
+            if not learned:
+                return {
+                    "per_record": None,
+                    "per_hour": None,
+                    "upper_per_hour": None,
+                    "firings": None,
+                    "monitored_hours": None,
+                    "measured_on": "nothing: too short a healthy stretch and no learning runs",
+                    "text": "not measured",
+                }
+            fired, hours = learned["firings"], learned["hours"]
+            spacing = learned["record_spacing_s"]
+            on = (
+                "the learning runs, not this series (it holds less than an hour of healthy "
+                f"monitoring): {learned['measured_on']}"
+            )
+        per_hour = fired / hours
+        upper = max(fired, UPPER_95) / hours if fired == 0 else None
+        text = (
+            f"{fired} firing(s) in {hours:.3g} h of monitoring on {on}: {per_hour:.3g} per hour"
+            + ("" if upper is None else f" (at most {upper:.3g} per hour at 95 %)")
+        )
+        return {
+            "per_record": per_hour * spacing / 3600.0,
+            "per_hour": per_hour,
+            "upper_per_hour": upper,
+            "firings": fired,
+            "monitored_hours": hours,
+            "measured_on": on,
+            "text": text,
+        }
 
     # ------------------------------------------------------------------ outputs
     def _record(self, i: int, above: np.ndarray, zones) -> dict:
@@ -266,24 +344,56 @@ class TrendResult:
                 "start_s": float(self.times[self.settle_records]),
                 "end_s": float(self.times[self.baseline_stop - 1]),
             },
-            "rule": {
-                "statistic": STATISTIC_TEXT,
-                "tail_model": TAIL_TEXT,
-                "persistence": self.persistence,
-                "tests": len(self.tests),
-                "test_level": self.test_level,
-                "false_alarm_per_hour": self.false_alarm_per_hour,
-                "false_alarm_per_record": self.false_alarm,
-                "monitored_records": self.monitored_records,
-                "false_alarm_per_run": self.false_alarm_per_run,
-                "description": self.rule_text(),
-            },
+            "rule": self._rule_dict(),
             "tests": tests,
             "alarm": alarm,
+            "short_crossings": [
+                {
+                    "time_s": float(self.times[a]),
+                    "end_s": float(self.times[b]),
+                    "indicator": self.tests[j][0],
+                    "channel": self.channels[self.tests[j][1]],
+                }
+                for a, b, j in self.short_crossings[:MAX_SHORT_CROSSINGS]
+            ],
+            "remaining_life": None
+            if self.remaining_life is None
+            else self.remaining_life.to_dict(),
             "diagnosis": diagnosis,
             "severity": severity,
             "warnings": list(self.warnings)
             + list(self.diagnosis.warnings if self.diagnosis else ()),
+        }
+
+    def _rule_dict(self) -> dict:
+        measured = self.measured_false_alarm()
+        cal = None if self.learned is None else self.learned.calibration
+        return {
+            "statistic": STATISTIC_TEXT,
+            "tail_model": TAIL_TEXT,
+            "band_hz": [0.0, self.max_frequency],
+            "persistence": self.persistence,
+            "persistence_s": self.persistence_seconds,
+            "tests": len(self.tests),
+            "test_level": self.test_level,
+            "limit_excess": self.limit_excess,
+            "false_alarm_per_hour": self.false_alarm_per_hour,
+            "false_alarm_per_record": self.false_alarm,
+            "monitored_records": self.monitored_records,
+            "false_alarm_per_run": self.false_alarm_per_run,
+            "measured_false_alarm": {k: v for k, v in measured.items() if k != "text"},
+            "calibration": None
+            if cal is None
+            else {
+                "source": cal.source,
+                "excursion_threshold": cal.threshold,
+                "excursions": cal.excursions,
+                "mean_excess": cal.mean_excess,
+                "excursion_rate_per_hour": cal.rate,
+                "test_hours": cal.test_hours,
+            },
+            "documentation": DOCUMENTATION,
+            "description": self.rule_text(),
         }
 
     def to_pandas(self):
@@ -317,3 +427,14 @@ class TrendResult:
         from .figure import trend_figure
 
         return trend_figure(self, ax)
+
+    def plot_life(self, ax=None):
+        """The remaining life estimated over the series with its 80 % interval
+        (:func:`.figure.life_figure`), on ``ax`` (a new figure by default); returns (figure,
+        axes). InputError without an estimate."""
+        from ..errors import InputError
+        from .figure import life_figure
+
+        if self.remaining_life is None:
+            raise InputError("remaining_life", None, "a trend with a remaining-life estimate")
+        return life_figure(self, ax)

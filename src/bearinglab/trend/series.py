@@ -77,13 +77,15 @@ class Listing:
 class Record:
     """One recording read: its ``file``, ``time`` [s] (time of day for PRONOSTIA, else the
     index's or the file's own clock), ``sample_rate`` [Hz], ``channels`` (names) and
-    ``samples`` (channels x samples, in the sensor's unit)."""
+    ``samples`` (channels x samples, in the sensor's unit); the rate the file stores when
+    another was given (``stored_sample_rate``, else None)."""
 
     file: str
     time: float
     sample_rate: float
     channels: tuple[str, ...]
     samples: np.ndarray
+    stored_sample_rate: float | None = None
 
 
 def list_records(folder) -> Listing:
@@ -315,7 +317,8 @@ def _read_one(listing: Listing, index: int, channels, sample_rate) -> Record:
             "path", file, f"a record of at least {MIN_RECORD_SAMPLES} samples", hint="too short"
         )
     x = np.stack([signal.channel(c) for c in signal.names])
-    return Record(file, float(clock), signal.sample_rate, signal.names, x)
+    stored = signal.metadata.get("stored_sample_rate_hz")
+    return Record(file, float(clock), signal.sample_rate, signal.names, x, stored)
 
 
 def read_records(
