@@ -39,13 +39,8 @@ def trend_command(
     output_file("--plot", plot, (".png", ".svg", ".pdf"), figure=True)
     output_file("--html", html, (".html", ".htm"))
     preflight_scheduler(scheduler, environment=False)
-    with progress_bar("reading records", enabled=not json_output) as update:
-        result = trend_from(
-            values,
-            jobs=jobs,
-            scheduler=scheduler,
-            progress=lambda done, total: update(done / total),
-        )
+    with progress_bar("records", enabled=not json_output, unit="records") as progress:
+        result = trend_from(values, jobs=jobs, scheduler=scheduler, progress=progress)
     if plot is not None:
         save_plot_figure(result.plot()[0], plot)
     if html is not None:

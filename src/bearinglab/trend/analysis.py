@@ -65,20 +65,6 @@ def _length(name: str, seconds, records) -> tuple[float | None, int | None]:
     return s, None
 
 
-def _runner(jobs, scheduler):
-    """Where the work runs: this process, a LocalCluster of ``jobs`` workers, or a
-    scheduler (:func:`bearinglab.study.execute.open_runner`)."""
-    from ..machine import most_processes
-    from ..study.execute import open_runner
-
-    most = most_processes()
-    if isinstance(jobs, bool) or not isinstance(jobs, (int, np.integer)) or not 1 <= jobs <= most:
-        raise InputError("jobs", jobs, f"an integer in [1, {most}] (4 per core)")
-    if scheduler is None:
-        return open_runner("serial" if jobs == 1 else "local", workers=int(jobs))
-    return open_runner(scheduler, workers=int(jobs) if scheduler == "local" else None)
-
-
 def _probe(listing: Listing, channels, sample_rate) -> tuple[tuple[str, ...], Record]:
     """The channels to trend (the user's, checked against the first readable record, or
     all of its channels) and that record."""
@@ -308,13 +294,14 @@ def trend_records(
     scheduler : str, optional
         A dask scheduler address (or "local", "serial") instead.
     progress : callable, optional
-        Called with (work done, work in all), counted in records read, as it goes.
+        ``progress(done, total)``, counted in records read (and, with the diagnosis, in
+        records diagnosed), as it goes (:mod:`bearinglab.engine`).
 
     Returns
     -------
     TrendResult
     """
-    from ..study.execute import run_partitions
+    from ..engine import check_progress, open_jobs, run_partitions
     from .tasks import read_chunk
 
     rule = _rule(
@@ -339,23 +326,19 @@ def trend_records(
             f"{len(listing.unlisted)} record file(s) of the folder are not in index.csv and "
             f"were left out (e.g. {listing.unlisted[0]})"
         )
-    done = [0]
-
-    def advance(n: int) -> None:
-        done[0] += n
-        if progress:
-            progress(min(done[0], work), work)
-
+    progress = check_progress(progress)
     rows: list[dict] = []
     parts = [range(s, min(s + CHUNK, total)) for s in range(0, total, CHUNK)]
     tasks = [(listing.subset(p), channels, sample_rate, unit, p.start) for p in parts]
-    with _runner(jobs, scheduler) as runner:
+    with open_jobs(jobs, scheduler) as runner:
         run_partitions(
             runner,
             read_chunk,
             tasks,
             [len(p) for p in parts],
-            lambda task, result: (rows.extend(result), advance(len(task[0].files))),
+            lambda task, result: rows.extend(result),
+            progress=progress,
+            total=work,
         )
         good = _good_rows(listing, rows, warnings, folder)
         clock = _clock(listing, good, warnings)
@@ -380,7 +363,7 @@ def trend_records(
             )
             alarm = evaluation["alarm"]
             diagnosis = diagnose_blocks(
-                runner, files, channels[0], sample_rate, kin, size, alarm, advance
+                runner, files, channels[0], sample_rate, kin, size, alarm, (progress, total, work)
             )
             if diagnosis is None:
                 warnings.append(
