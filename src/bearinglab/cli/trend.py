@@ -25,7 +25,7 @@ def trend_command(
     values,
     jobs: Annotated[
         int,
-        typer.Option("--jobs", help="Worker processes (a dask LocalCluster); 1: this process."),
+        typer.Option("--jobs", help="Worker processes (a pool of processes); 1: this process."),
     ] = 1,
     scheduler: SchedulerOpt = None,
     html: Annotated[

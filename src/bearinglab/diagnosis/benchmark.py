@@ -6,7 +6,7 @@ The folder holds a ``labels.csv`` like the one of ``shared/data/real`` (one row 
 label ``fault``: normal, inner, outer, ball, cage; optional ``smith_randall_2015``). Each
 record is diagnosed by each method asked for on its own and by the methods together (the
 verdict users get); records run in parallel on the engine (:mod:`bearinglab.engine`: a
-dask LocalCluster of one process per job). :class:`BenchmarkResult` holds the per-record
+pool of one process per job). :class:`BenchmarkResult` holds the per-record
 table, the confusion matrix and the per-class recall; its HTML page (the envelope
 spectrum of each record and the lines it matched) is
 :func:`bearinglab.report.benchmark.write_benchmark_page`.
@@ -371,8 +371,8 @@ def run_benchmark(
         Methods (default: :data:`bearinglab.diagnosis.DEFAULT_METHODS`); each is also run
         on its own.
     jobs : int
-        Records diagnosed at once (worker processes of a dask LocalCluster,
-        :mod:`bearinglab.engine`); 1: in this process.
+        Records diagnosed at once (a pool of processes,
+        :func:`bearinglab.engine.open_jobs`); 1: in this process.
     progress : callable, optional
         ``progress(done, total)``, counted in records, before the first record and after
         each one.

@@ -8,6 +8,7 @@ bearinglab but :mod:`bearinglab.errors` (and dask only when a cluster is asked f
 
 - :mod:`.scheduler`: the scheduler's address, probed before any work;
 - :mod:`.runner`: :func:`open_runner` (this process, a LocalCluster, a running cluster),
+  :func:`open_jobs` (a number of processes: this one, or a pool of forked ones),
   :func:`run_partitions` (``on_done`` as each partition finishes, ``progress(done, total)``
   in the caller's units), :func:`measured_run` (warm-up, CPU time and memory per worker);
 - :mod:`.machine`: how many worker processes this machine takes, how much one run may ask;

@@ -5,7 +5,9 @@ per core; ``scheduler="tcp://HOST:PORT"`` (or the environment variable
 ``DASK_SCHEDULER_ADDRESS``) uses a running cluster, whose workers must be able to import
 bearinglab; ``scheduler="serial"`` runs the partitions one after the other in this process
 (tests, debugging, tiny runs). An address that does not answer fails within
-``connect_timeout`` seconds (:mod:`.scheduler`). Finished partitions come back through
+``connect_timeout`` seconds (:mod:`.scheduler`). A command that takes a number of
+processes (``jobs``) runs on a pool of processes forked from this one (:func:`open_jobs`),
+which start at once. Finished partitions come back through
 :func:`distributed.as_completed`, are handed to ``on_done`` (which writes or keeps them) and
 are released at once, so the client never holds more than a few partitions.
 
@@ -49,15 +51,17 @@ Progress = Callable[[int, int], None]
 
 @dataclass
 class Runner:
-    """Where partitions run: ``client`` (None for serial), the LocalCluster we started (if
-    any), a description of the ``scheduler``, the number of ``workers`` and the
-    ``dashboard`` address (or None)."""
+    """Where partitions run: ``client`` (a dask client; None for serial), the LocalCluster
+    we started (if any), a description of the ``scheduler``, the number of ``workers``,
+    the ``dashboard`` address (or None), and ``pool``: the process pool of
+    :func:`open_jobs` (None on dask or serial)."""
 
     client: object | None
     cluster: object | None
     scheduler: str
     workers: int
     dashboard: str | None
+    pool: object | None = None
 
     def close(self, quietly: bool = False) -> None:
         """Close the client, and the cluster if we started it.
@@ -70,6 +74,9 @@ class Runner:
             writes), nothing of the closing is logged and a failure to close is not
             raised.
         """
+        if self.pool is not None:
+            _close_pool(self.pool, quietly)
+            self.pool = None
         if self.client is None and self.cluster is None:
             return
         with deferred_interrupts(), quiet() if quietly else nullcontext():
@@ -90,6 +97,24 @@ class Runner:
 
     def __exit__(self, kind, exc, traceback) -> None:
         self.close(quietly=exc is not None)
+
+
+def _close_pool(pool, quietly: bool) -> None:
+    """Shut the process pool down; ``quietly``: at once, its processes terminated (a task
+    they were computing is dropped)."""
+    with deferred_interrupts():
+        if not quietly:
+            pool.shutdown(wait=True)
+            return
+        processes = list(getattr(pool, "_processes", {}).values())
+        pool.shutdown(wait=False, cancel_futures=True)
+        for process in processes:
+            try:
+                process.terminate()
+            except (OSError, ValueError):  # already gone
+                pass
+        for process in processes:
+            process.join(CLOSE_TIMEOUT)
 
 
 def _stop_workers(cluster) -> None:
@@ -190,7 +215,12 @@ def _local(n: int) -> Runner:
 
 def open_jobs(jobs: int, scheduler: str | None = None, name: str = "jobs") -> Runner:
     """The runner of a command that takes a number of processes: this process for 1, a
-    LocalCluster of ``jobs`` workers for more, or ``scheduler`` when one is given.
+    pool of ``jobs`` worker processes for more, or ``scheduler`` when one is given.
+
+    The pool's processes are forked from this one (they start in a fraction of a second
+    with what this process has imported; a LocalCluster's start and imports took 2-10 s
+    on this machine, longer than many a benchmark) with SIGINT blocked: a Ctrl-C is this
+    process's to handle, and it stops them.
 
     Parameters
     ----------
@@ -202,9 +232,15 @@ def open_jobs(jobs: int, scheduler: str | None = None, name: str = "jobs") -> Ru
         The input that holds ``jobs``, for its error.
     """
     jobs = check_workers(name, jobs)
-    if scheduler is None:
-        return open_runner("serial" if jobs == 1 else "local", workers=jobs)
-    return open_runner(scheduler, workers=jobs if scheduler == "local" else None)
+    if scheduler is not None:
+        return open_runner(scheduler, workers=jobs if scheduler == "local" else None)
+    if jobs == 1:
+        return open_runner("serial")
+    from concurrent.futures import ProcessPoolExecutor
+
+    return Runner(
+        None, None, f"process pool ({jobs} worker processes)", jobs, None, ProcessPoolExecutor(jobs)
+    )
 
 
 def check_progress(progress) -> Progress | None:
@@ -250,6 +286,8 @@ def warm(runner: Runner, modules: Sequence[str], probe=None) -> None:
     probe : tuple, optional
         (function, argument): a small piece of the work; its errors are left to the run.
     """
+    if runner.pool is not None:
+        return  # each forked process has what this one imported
     if runner.client is None:
         _import_modules(modules, probe)
     else:
@@ -265,6 +303,8 @@ def cpu_seconds(runner: Runner) -> dict:
     runner : Runner
         Where the partitions run.
     """
+    if runner.pool is not None:
+        return {}  # a pool's processes cannot be asked one by one
     if runner.client is None:
         return {"serial": cpu_time()}
     return runner.client.run(cpu_time)
@@ -278,6 +318,8 @@ def peak_memory(runner: Runner) -> dict:
     runner : Runner
         Where the partitions run.
     """
+    if runner.pool is not None:
+        return {}
     if runner.client is None:
         return {"serial": peak_rss()}
     return runner.client.run(peak_rss)
@@ -339,7 +381,9 @@ def run_partitions(
         log.info("dashboard: %s (%s)", runner.dashboard, runner.scheduler)
     try:
         advance(0)
-        if runner.client is None:
+        if runner.pool is not None:
+            _on_pool(runner.pool, func, tasks, units, on_done, advance)
+        elif runner.client is None:
             for task, n in zip(tasks, units, strict=True):
                 on_done(task, func(task))
                 advance(n)
@@ -350,6 +394,17 @@ def run_partitions(
             raise
         raise Interrupted(min(count[0], total), total) from None
     return time.perf_counter() - start
+
+
+def _on_pool(pool, func, tasks, units, on_done, advance) -> None:
+    from concurrent.futures import as_completed
+
+    with deferred_interrupts():  # the processes fork here: SIGINT stays blocked in them
+        futures = {pool.submit(func, task): i for i, task in enumerate(tasks)}
+    for future in as_completed(futures):
+        i = futures.pop(future)
+        on_done(tasks[i], future.result())
+        advance(units[i])
 
 
 def _on_cluster(runner: Runner, func, tasks, units, on_done, advance) -> None:

@@ -290,7 +290,7 @@ def trend_records(
     shaft_speed : float, optional
         Shaft speed [rad/s].
     jobs : int
-        Worker processes (a dask LocalCluster); 1: this process.
+        Worker processes (a pool, :func:`bearinglab.engine.open_jobs`); 1: this process.
     scheduler : str, optional
         A dask scheduler address (or "local", "serial") instead.
     progress : callable, optional
