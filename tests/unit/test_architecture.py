@@ -19,6 +19,7 @@ The source is read with ``ast``; nothing here imports an analysis to find its im
 from __future__ import annotations
 
 import ast
+import functools
 import importlib
 import inspect
 import pkgutil
@@ -71,6 +72,7 @@ def _targets(module: str, is_package: bool, node: ast.Import | ast.ImportFrom) -
     ]
 
 
+@functools.lru_cache(maxsize=1)
 def import_graph() -> dict[str, dict[str, int]]:
     """module -> {module it imports: line of the first such import}.
 

@@ -109,6 +109,18 @@ def test_an_interrupt_is_told_from_a_failure():
     reraise_interrupt(ValueError("a failed case"))  # a failure is left to the caller
 
 
+def test_a_file_interrupted_as_it_is_written_is_not_there(tmp_path):
+    from bearinglab.files import write_atomically
+
+    def write(tmp):
+        Path(tmp).write_text("half")
+        raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        write_atomically(tmp_path / "page.html", write)
+    assert list(tmp_path.iterdir()) == []
+
+
 def _stop_at_two(task):
     if task == 2:
         raise SystemError("returned a result with an exception set") from KeyboardInterrupt()

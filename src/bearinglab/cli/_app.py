@@ -9,6 +9,7 @@ that the table agrees with the commands' docstrings).
 """
 
 import importlib
+import logging
 import os
 import sys
 from collections.abc import Mapping
@@ -211,8 +212,6 @@ def main(argv: list[str] | None = None) -> int:
     args = list(sys.argv[1:] if argv is None else argv)
     if not args:
         args = ["--help"]
-    import logging
-
     _told[0] = False
     level = logging.root.manager.disable
     with catch_interrupts():
@@ -233,8 +232,6 @@ _told = [False]
 
 def _interrupted(exc: BaseException | None) -> int:
     """One line for a Ctrl-C; nothing is logged after it (a cluster being torn down)."""
-    import logging
-
     from ..engine.interrupt import EXIT_CODE
 
     if not _told[0]:

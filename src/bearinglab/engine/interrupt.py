@@ -126,10 +126,9 @@ def _in_callback(frame) -> bool:
 
 def _remember(signum, frame) -> None:
     _seen[0] = True
-    if _in_callback(frame):  # raised once the callback has returned
-        import _thread
-
-        threading.Timer(_RETRY, _thread.interrupt_main, (signum,)).start()
+    if _in_callback(frame):  # sent again until the callback has returned
+        main = threading.main_thread().ident
+        threading.Timer(_RETRY, signal.pthread_kill, (main, signum)).start()
         return
     raise KeyboardInterrupt
 
