@@ -72,7 +72,7 @@ def synthetic(out: Path, records: int, seed: int) -> pd.DataFrame:
         out,
         records,
         seed=seed,
-        progress=True,
+        progress=None,
         bearings=["6205-2RS"],
         speed_rpm=(1720.0, 1800.0),
         radial_load_n=(100.0, 1500.0),

@@ -11,7 +11,8 @@ from pathlib import Path
 def write_atomically(path: str | Path, write: Callable[[str], None]) -> Path:
     """Call ``write(tmp)`` on a temporary file beside ``path``, then rename it to ``path``.
 
-    A failure (in ``write`` or the rename) leaves no file behind and re-raises.
+    A failure (in ``write`` or the rename) or a Ctrl-C leaves no file behind (neither
+    ``path`` half written nor the temporary file) and re-raises.
 
     Parameters
     ----------
@@ -21,16 +22,17 @@ def write_atomically(path: str | Path, write: Callable[[str], None]) -> Path:
         Writes the content to the file name it is given.
     """
     path = Path(path)
-    fd, tmp = tempfile.mkstemp(suffix=path.suffix, dir=path.parent, prefix=f".{path.stem}-")
-    os.close(fd)
+    tmp = None
     try:
+        fd, tmp = tempfile.mkstemp(suffix=path.suffix, dir=path.parent, prefix=f".{path.stem}-")
+        os.close(fd)
         write(tmp)
         # mkstemp makes the file private (0600); give it the mode an ordinary file gets
         umask = os.umask(0)
         os.umask(umask)
         os.chmod(tmp, 0o666 & ~umask)
         os.replace(tmp, path)
-    finally:
-        if os.path.exists(tmp):
+    finally:  # a failure or a Ctrl-C (KeyboardInterrupt) in write: no file left behind
+        if tmp is not None and os.path.exists(tmp):
             os.unlink(tmp)
     return path

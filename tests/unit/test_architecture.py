@@ -3,6 +3,9 @@
 - no import cycle among bearinglab's modules, counting every import (inside functions
   too) and the package ``__init__`` that Python runs to reach a submodule; nothing in the
   library imports ``bearinglab.cli``;
+- no package imports a private module (``_name``) of another package; the parallel engine
+  (``bearinglab.engine``) is on the ground floor, and work fans out to other processes
+  only through it (issue 30);
 - library messages name an input by its public name (``speed_rpm``), never by a
   command-line flag (``--speed-rpm``): the CLI words them its own way;
 - the docstrings of the public functions and methods document every parameter of their
@@ -16,6 +19,7 @@ The source is read with ``ast``; nothing here imports an analysis to find its im
 from __future__ import annotations
 
 import ast
+import functools
 import importlib
 import inspect
 import pkgutil
@@ -68,6 +72,7 @@ def _targets(module: str, is_package: bool, node: ast.Import | ast.ImportFrom) -
     ]
 
 
+@functools.lru_cache(maxsize=1)
 def import_graph() -> dict[str, dict[str, int]]:
     """module -> {module it imports: line of the first such import}.
 
@@ -178,6 +183,86 @@ def test_the_library_never_imports_the_command_line():
         if target == "bearinglab.cli" or target.startswith("bearinglab.cli.")
     ]
     assert not wrong, "\n".join(wrong)
+
+
+def private_imports(graph: dict[str, dict[str, int]]) -> list[str]:
+    """``file:line imports module`` for each import of a private module (a ``_name`` in
+    its dotted path) from outside the package that holds it."""
+    wrong = []
+    for module, edges in graph.items():
+        for target, line in edges.items():
+            parts = target.split(".")
+            private = next((i for i, p in enumerate(parts) if p.startswith("_")), None)
+            if private is None:
+                continue
+            owner = ".".join(parts[:private])
+            if module != owner and not module.startswith(f"{owner}."):
+                wrong.append(f"{_where(module)}:{line} imports {target}")
+    return wrong
+
+
+def test_no_package_imports_a_private_module_of_another():
+    """A ``_module`` is its package's own business (dataset imported ``study._inputs``)."""
+    wrong = private_imports(import_graph())
+    assert not wrong, "make the module public or move what is shared:\n" + "\n".join(wrong)
+
+
+def test_the_private_import_rule_finds_one():
+    graph = {
+        "bearinglab.dataset.generate": {"bearinglab.study._inputs": 92},
+        "bearinglab.study.runner": {"bearinglab.study._inputs": 1},
+        "bearinglab.catalog.lookup": {"bearinglab.catalog._data": 21},
+    }
+    assert private_imports(graph) == [
+        "bearinglab/dataset/generate.py:92 imports bearinglab.study._inputs"
+    ]
+
+
+#: What the engine may import of bearinglab: the ground floor.
+ENGINE_IMPORTS = {"bearinglab.errors", "bearinglab.files"}
+#: Modules that start processes of their own, and why they still do (the issue that ends
+#: it): every other fan-out runs on bearinglab.engine.
+OWN_PROCESSES = {
+    # stiffness_map's worker processes: the map moves onto STIFFNESS and the study runner
+    # (issue 30, item 1); its workers are started with SIGINT held back meanwhile
+    "bearinglab.quasistatic.study": "concurrent",
+}
+PARALLEL = ("distributed", "dask", "concurrent", "multiprocessing")
+
+
+def test_the_engine_is_on_the_ground_floor():
+    graph = import_graph()
+    engine = [m for m in MODULES if m == "bearinglab.engine" or m.startswith("bearinglab.engine.")]
+    assert len(engine) >= 4
+    wrong = [
+        f"{_where(module)}:{line} imports {target}"
+        for module in engine
+        for target, line in graph[module].items()
+        if target not in ENGINE_IMPORTS and target not in engine
+    ]
+    assert not wrong, "the engine imports only errors and files:\n" + "\n".join(wrong)
+
+
+def test_work_fans_out_only_on_the_engine():
+    """study, dataset, benchmark and trend run on bearinglab.engine: no module but the
+    engine's starts processes or talks to dask (the trend imported the study's runner, the
+    benchmark had a process pool of its own)."""
+    wrong = []
+    for module, (path, _) in MODULES.items():
+        if module.startswith("bearinglab.engine"):
+            continue
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"), str(path))):
+            if isinstance(node, ast.Import):
+                names = [a.name for a in node.names]
+            elif isinstance(node, ast.ImportFrom) and not node.level:
+                names = [node.module or ""]
+            else:
+                continue
+            for name in names:
+                top = name.split(".")[0]
+                if top in PARALLEL and OWN_PROCESSES.get(module) != top:
+                    wrong.append(f"{_where(module)}:{node.lineno} imports {name}")
+    assert not wrong, "run it on bearinglab.engine:\n" + "\n".join(wrong)
 
 
 # ------------------------------------------------------------------ no flags in messages

@@ -196,9 +196,9 @@ def test_a_scheduler_address_that_is_no_dask_scheduler(
 ):
     """A port where nothing listens, an HTTP server (it gave "MemoryError: 3.07 EiB") and
     a server that never answers (it hung): one line within seconds, nothing written."""
-    from bearinglab.study import execute
+    from bearinglab.engine import scheduler
 
-    monkeypatch.setattr(execute, "CONNECT_TIMEOUT", 1.0)
+    monkeypatch.setattr(scheduler, "CONNECT_TIMEOUT", 1.0)
     out = tmp_path / "out"
     answers = {"nothing": None, "http": HTTP, "http-eager": HTTP, "silent": None}
     with contextlib.ExitStack() as stack:

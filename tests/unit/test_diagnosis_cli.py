@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from bearinglab.cli import main
-from bearinglab.machine import most_processes
+from bearinglab.engine import most_processes
 from bearinglab.signal import Signal, write_signal
 
 FS = 20000.0

@@ -251,7 +251,7 @@ def test_bad_grids_are_one_clear_error(tmp_path, grid, match):
 
 
 def test_limits_unreachable_scheduler_and_a_different_study(tmp_path):
-    from bearinglab.machine import most_processes
+    from bearinglab.engine import most_processes
 
     with pytest.raises(InputError, match=rf"\[1, {most_processes()}\] \(4 per core\)"):
         run_study("stiffness", GRID, output=tmp_path / "w", workers=most_processes() + 1)

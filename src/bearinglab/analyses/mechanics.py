@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from ..engine import reraise_interrupt
 from ..errors import InputError
 from ..inputs import (
     INPUTS,
@@ -293,12 +294,14 @@ def _stiffness_batch(cases: list[dict], seed: int) -> list:
         first = cases[members[0]]
         try:
             results = _stiffness_line(first, [cases[i].get("radial_load_n", 0.0) for i in members])
-        except Exception:  # noqa: BLE001 - retried case by case below
+        except Exception as exc:  # noqa: BLE001 - retried case by case below
+            reraise_interrupt(exc)  # a Ctrl-C is no failed line
             results = []
             for i in members:
                 try:
                     results.append(_stiffness(cases[i]).row)
                 except Exception as exc:  # noqa: BLE001 - a failed case never stops a study
+                    reraise_interrupt(exc)
                     results.append(exc)
         for i, r in zip(members, results, strict=True):
             out[i] = r

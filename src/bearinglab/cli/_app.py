@@ -1,5 +1,5 @@
 """The typer application, its lazily loaded commands and the entry point (one line per
-user error).
+user error, one line and exit code 130 on Ctrl-C).
 
 Start-up matters: ``bearinglab --help`` must not import the analyses. Each command lives
 in a module of its own with its own ``app = command_app()``; :data:`COMMANDS` names the
@@ -9,6 +9,7 @@ that the table agrees with the commands' docstrings).
 """
 
 import importlib
+import logging
 import os
 import sys
 from collections.abc import Mapping
@@ -150,6 +151,22 @@ class LazyGroup(TyperGroup):
         with formatter.section("Commands"):
             formatter.write_dl([(name, help_) for name, (_, help_) in COMMANDS.items()])
 
+    def invoke(self, ctx):
+        # typer turns a KeyboardInterrupt into a silent exit code 130 and drops it: carry it
+        # past typer, with what the command says about resuming
+        try:
+            return super().invoke(ctx)
+        except KeyboardInterrupt as exc:
+            raise _Interruption(exc) from None
+
+
+class _Interruption(Exception):
+    """A Ctrl-C on its way through typer (``interrupt``: the KeyboardInterrupt)."""
+
+    def __init__(self, interrupt: BaseException) -> None:
+        super().__init__()
+        self.interrupt = interrupt
+
 
 app = typer.Typer(
     cls=LazyGroup,
@@ -207,22 +224,66 @@ def main(argv: list[str] | None = None) -> int:
     """Entry point: run the app; user errors become one line on stderr and exit code 2.
 
     With no arguments it prints the help (stdout, exit code 0).  An unexpected failure is
-    one line on stderr and exit code 1 (``BEARINGLAB_DEBUG=1`` shows the traceback)."""
+    one line on stderr and exit code 1 (``BEARINGLAB_DEBUG=1`` shows the traceback). A
+    Ctrl-C is one line (``interrupted``, and how to resume a run that can) and exit code
+    130, whatever it interrupted (:mod:`bearinglab.engine.interrupt`)."""
+    from ..engine.interrupt import EXIT_CODE, catch_interrupts, interrupted
+
     args = list(sys.argv[1:] if argv is None else argv)
     if not args:
         args = ["--help"]
+    _told[0] = False
+    level = logging.root.manager.disable
+    with catch_interrupts():
+        try:
+            code = _run(args)
+        except KeyboardInterrupt as exc:
+            code = _interrupted(exc)
+        # typer's own exit code 130 (a Ctrl-C while parsing), or a Ctrl-C that a library
+        # swallowed and went on
+        if (code == EXIT_CODE or interrupted()) and not _told[0]:
+            code = _interrupted(None)
+    logging.disable(level)
+    return code
+
+
+_told = [False]
+
+
+def _interrupted(exc: BaseException | None) -> int:
+    """One line for a Ctrl-C; nothing is logged after it (a cluster being torn down)."""
+    from ..engine.interrupt import EXIT_CODE
+
+    if not _told[0]:
+        resume = getattr(exc, "resume", None)
+        sys.stderr.write("interrupted" + (f": {resume}" if resume else "") + "\n")
+        sys.stderr.flush()
+        _told[0] = True
+    logging.disable(logging.CRITICAL)
+    return EXIT_CODE
+
+
+def _run(args: list[str]) -> int:
+    from ..engine.interrupt import interrupted
+
     refused = replaced(args)
     if refused is not None:
         sys.stderr.write(refused + "\n")
         return 2
     try:
         result = app(args=args, standalone_mode=False)
+    except _Interruption as exc:
+        return _interrupted(exc.interrupt)
     except typer.Exit as exc:
         return exc.exit_code
-    except typer.Abort:
+    except typer.Abort as exc:
+        if interrupted(exc):
+            return _interrupted(exc)
         sys.stderr.write("aborted\n")
         return 1
     except BearinglabError as exc:
+        if interrupted(exc):
+            return _interrupted(exc)
         from ._words import in_flags  # an input the library names in `backquotes`: a flag
 
         text = in_flags(str(exc), {})
@@ -240,6 +301,8 @@ def main(argv: list[str] | None = None) -> int:
         sys.stderr.write("error: " + " ".join(text.split()) + "\n")
         return 2
     except Exception as exc:  # a bug: say so in one line rather than a traceback
+        if interrupted(exc):  # numba's SystemError around a KeyboardInterrupt, ...
+            return _interrupted(exc)
         if os.environ.get("BEARINGLAB_DEBUG"):
             raise
         text = " ".join(str(exc).split())

@@ -166,29 +166,73 @@ def peak_rows(peaks) -> list[list]:
 
 # ------------------------------------------------------------------ progress
 @contextmanager
-def progress_bar(description: str, *, enabled: bool = True):
-    """A transient progress bar on stderr (shown only on a terminal and when ``enabled``).
+def progress_bar(description: str, *, enabled: bool = True, unit: str | None = None):
+    """The progress bar of a long command, on stderr (drawn only on a terminal and when
+    ``enabled``).
 
-    Yields ``update(fraction=None, description=None)``; either may be left out."""
+    With ``unit`` (``cases``, ``records``: what the engine counts) it yields the engine's
+    ``progress(done, total)`` (:mod:`bearinglab.engine`), shows done/total, the time spent
+    and the time left, stays on screen at the end, and prints the engine's notes (the
+    dashboard of a long run) above itself. Without, it yields
+    ``update(fraction=None, description=None)`` (either may be left out) and disappears at
+    the end."""
+    import logging
+
     from rich.console import Console
-    from rich.progress import BarColumn, Progress, TextColumn, TimeElapsedColumn
+    from rich.progress import (
+        BarColumn,
+        MofNCompleteColumn,
+        Progress,
+        TextColumn,
+        TimeElapsedColumn,
+        TimeRemainingColumn,
+    )
 
     err = Console(stderr=True)
+    columns = (
+        (MofNCompleteColumn(), TimeElapsedColumn(), TextColumn("left"), TimeRemainingColumn())
+        if unit
+        else (TextColumn("{task.percentage:>3.0f}%"), TimeElapsedColumn())
+    )
     with Progress(
         TextColumn("{task.description}"),
         BarColumn(),
-        TextColumn("{task.percentage:>3.0f}%"),
-        TimeElapsedColumn(),
+        *columns,
         console=err,
-        transient=True,
+        transient=unit is None,
         disable=not enabled or not err.is_terminal,
-    ) as progress:
-        task = progress.add_task(description, total=1.0)
+    ) as bar:
+        task = bar.add_task(description, total=None if unit else 1.0)
+        if unit is None:
 
-        def update(fraction: float | None = None, description: str | None = None) -> None:
-            progress.update(task, completed=fraction, description=description)
+            def update(fraction: float | None = None, description: str | None = None) -> None:
+                bar.update(task, completed=fraction, description=description)
 
-        yield update
+            yield update
+            return
+
+        def progress(done: int, total: int) -> None:
+            bar.update(task, completed=done, total=total)
+
+        class Notes(logging.Handler):
+            def emit(self, record: logging.LogRecord) -> None:
+                err.print(escape(record.getMessage()))
+
+        if not enabled:  # --json: only the JSON is printed
+            yield progress
+            return
+        engine = logging.getLogger("bearinglab.engine")
+        saved = engine.level, engine.propagate
+        notes = Notes(logging.INFO)
+        engine.addHandler(notes)
+        engine.setLevel(logging.INFO)
+        engine.propagate = False
+        try:
+            yield progress
+        finally:
+            engine.removeHandler(notes)
+            engine.setLevel(saved[0])
+            engine.propagate = saved[1]
 
 
 def simulation_stage(model: str) -> str:

@@ -44,9 +44,9 @@ def output_folder(flag: str, folder: Path, shown: Path | None = None) -> None:
 
 def scheduler(value: str | None, *, environment: bool = True) -> None:
     """Refuse a scheduler address where no dask scheduler answers (within
-    :data:`bearinglab.study.execute.CONNECT_TIMEOUT` seconds), before any work: the
+    :data:`bearinglab.engine.CONNECT_TIMEOUT` seconds), before any work: the
     address given, else (``environment``) $DASK_SCHEDULER_ADDRESS."""
-    from ..study.execute import ENV_ADDRESS, check_scheduler, scheduler_of
+    from ..engine import ENV_ADDRESS, check_scheduler, scheduler_of
 
     where = scheduler_of(value) if environment else value
     if where is None or where in ("serial", "local"):

@@ -90,13 +90,13 @@ def benchmark_command(
     _check_files(folder)
     from ..diagnosis import run_benchmark
 
-    with progress_bar("diagnosing records", enabled=not json_output) as update:
+    with progress_bar("records", enabled=not json_output, unit="records") as progress:
         try:
             result = run_benchmark(
                 folder,
                 methods=method or None,
                 jobs=jobs,
-                progress=lambda done, total: update(done / total),
+                progress=progress,
                 keep_spectra=html is not None,
             )
         except InputError as exc:

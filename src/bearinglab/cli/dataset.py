@@ -18,9 +18,9 @@ from ._inputs import (
     _print_warnings,
     typed,
 )
-from ._output import _emit_json, _table
+from ._output import _emit_json, _table, progress_bar
 from ._preflight import scheduler as preflight_scheduler
-from .study import run_rows, runner_warnings
+from .study import resume_line, run_rows, runner_warnings
 
 app = command_app()
 
@@ -208,20 +208,26 @@ def dataset(
     if paths is not None:
         ranges["resonances"] = paths
     preflight_scheduler(scheduler)
+    from ..engine import Interrupted
+
     try:
-        result = make_dataset(
-            output,
-            records,
-            seed=seed,
-            partition_size=partition_size,
-            scheduler=scheduler,
-            workers=workers,
-            max_records=None if yes else CONFIRM_RECORDS,
-            progress=not json_output,
-            **ranges,
-        )
+        with progress_bar("records", enabled=not json_output, unit="records") as progress:
+            result = make_dataset(
+                output,
+                records,
+                seed=seed,
+                partition_size=partition_size,
+                scheduler=scheduler,
+                workers=workers,
+                max_records=None if yes else CONFIRM_RECORDS,
+                progress=progress,
+                **ranges,
+            )
     except InputError as exc:
         raise _remap(exc) from None
+    except Interrupted as exc:
+        exc.resume = resume_line(exc, "records", output, "make")
+        raise
     warnings = _failures(result) + _warnings(result.spec, typed(ctx))
     warnings += runner_warnings(scheduler, workers)
     d = {**result.to_dict(), "warnings": warnings}

@@ -19,7 +19,7 @@ from ._inputs import (
     save_plot_figure,
     typed,
 )
-from ._output import _emit_json, _table
+from ._output import _emit_json, _table, progress_bar
 from ._preflight import output_file
 from ._preflight import scheduler as preflight_scheduler
 
@@ -81,9 +81,21 @@ def _label(name: str) -> str:
     return label(name)
 
 
+def resume_line(exc, unit: str, output: Path, verb: str) -> str | None:
+    """What an interrupted study or data set kept and how to finish it (None when the
+    run had not begun)."""
+    if exc.total is None:
+        return None
+    left = exc.total - exc.done
+    return (
+        f"{exc.done} of {exc.total} {unit} are kept in {output}; run the same command "
+        f"again to {verb} the other {left}"
+    )
+
+
 def runner_warnings(scheduler: str | None, workers: int | None) -> list[str]:
     """--workers sizes a LocalCluster: without effect on any other scheduler."""
-    from ..study.execute import scheduler_of
+    from ..engine import scheduler_of
 
     where = scheduler_of(scheduler)
     return no_effect(
@@ -212,22 +224,28 @@ def study(
     preflight_scheduler(scheduler)
     existed = output.exists()
     fresh = not existed or (output.is_dir() and not any(output.iterdir()))
+    from ..engine import Interrupted
+
     try:
-        result = run_study(
-            analysis,
-            grid or None,
-            cases=cases,
-            output=output,
-            seed=seed,
-            repeats=repeats,
-            partition_size=partition_size,
-            scheduler=scheduler,
-            workers=workers,
-            max_cases=None if yes else CONFIRM_CASES,
-            progress=not json_output,
-        )
+        with progress_bar(analysis, enabled=not json_output, unit="cases") as progress:
+            result = run_study(
+                analysis,
+                grid or None,
+                cases=cases,
+                output=output,
+                seed=seed,
+                repeats=repeats,
+                partition_size=partition_size,
+                scheduler=scheduler,
+                workers=workers,
+                max_cases=None if yes else CONFIRM_CASES,
+                progress=progress,
+            )
     except InputError as exc:
         raise _remap(exc) from None
+    except Interrupted as exc:
+        exc.resume = resume_line(exc, "cases", output, "compute")
+        raise
     table = read_study(result.path)
     warnings = _failures(result, table, output if fresh else None, existed)
     warnings += _warnings(result, typed(ctx), analysis, cases, repeats)

@@ -24,7 +24,7 @@ def trend_command(
     values,
     jobs: Annotated[
         int,
-        typer.Option("--jobs", help="Worker processes (a dask LocalCluster); 1: this process."),
+        typer.Option("--jobs", help="Worker processes (a pool of processes); 1: this process."),
     ] = 1,
     scheduler: SchedulerOpt = None,
     json_output: JsonOpt = False,
@@ -35,13 +35,8 @@ def trend_command(
     output_file("--plot", plot, (".png", ".svg", ".pdf"), figure=True)
     output_file("--html", html, (".html", ".htm"))
     preflight_scheduler(scheduler, environment=False)
-    with progress_bar("reading records", enabled=not json_output) as update:
-        result = TREND(
-            values,
-            jobs=jobs,
-            scheduler=scheduler,
-            progress=lambda done, total: update(done / total),
-        )
+    with progress_bar("records", enabled=not json_output, unit="records") as progress:
+        result = TREND(values, jobs=jobs, scheduler=scheduler, progress=progress)
     if plot is not None:
         save_plot_figure(result.plot()[0], plot)
     if html is not None:

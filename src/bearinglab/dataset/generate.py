@@ -20,9 +20,16 @@ from pathlib import Path
 import numpy as np
 
 from .. import __version__
+from ..engine import (
+    Progress,
+    check_count,
+    check_progress,
+    measured_run,
+    open_runner,
+    reraise_interrupt,
+)
 from ..errors import InputError
 from ..files import write_atomically
-from ..study import execute
 from ..study.cases import (
     canonical,
     check_writable,
@@ -89,7 +96,7 @@ def make_record(
     InputError, which the set records as a failed record): a fault whose defect frequency
     is above the Nyquist frequency, or less than one cage revolution (not every ball has
     passed the load zone). Its errors name the data set's inputs, in their units."""
-    from ..study._inputs import bearing_of
+    from ..study.bearings import bearing_of
 
     r = draw_record(spec, seed, index)
     bearing = None
@@ -181,6 +188,7 @@ def _partition(task):
         try:
             x, r, (bearing, kin) = make_record(spec, seed, i)
         except Exception as exc:  # noqa: BLE001 - a failed record never stops the set
+            reraise_interrupt(exc)  # a Ctrl-C is no failed record: the record is made again
             from ..study.analyses import error_text
 
             rows.append(
@@ -312,7 +320,7 @@ def make_dataset(
     scheduler: str | None = None,
     workers: int | None = None,
     max_records: int | None = None,
-    progress: bool = False,
+    progress: Progress | None = None,
     connect_timeout: float | None = None,
     **ranges,
 ) -> DatasetResult:
@@ -327,8 +335,11 @@ def make_dataset(
         Number of records.
     seed : int
         Record i's inputs come from (seed, i) only.
-    partition_size, scheduler, workers, connect_timeout, progress
+    partition_size, scheduler, workers, connect_timeout
         As for :func:`bearinglab.study.run_study`.
+    progress : callable, optional
+        ``progress(done, total)``, counted in records (those already in the folder
+        included), before the first partition and after each one.
     max_records : int, optional
         Refuse more records than this (the command line's confirmation limit).
     **ranges
@@ -347,10 +358,17 @@ def make_dataset(
     Returns
     -------
     DatasetResult
+
+    Raises
+    ------
+    bearinglab.engine.Interrupted
+        On Ctrl-C, with the records done; the partitions written are kept, and making
+        the same set again makes only the others.
     """
     whole_number("seed", seed, 0)
+    progress = check_progress(progress)
     spec = DatasetSpec(records, **ranges)
-    execute.check_count("records", records, MAX_RECORDS, max_records, "make")
+    check_count("records", records, MAX_RECORDS, max_records, "make")
     partition_size = partition_size_for(partition_size, records, LARGEST_PARTITION)
     folder = Path(output)
     name = folder.resolve().name
@@ -463,12 +481,12 @@ def _run(
     if not tasks:
         return 0.0, {}, {}, ("-", 0, None)
     # connect first: an unreachable scheduler leaves no folder behind
-    with execute.open_runner(scheduler, workers, connect_timeout) as runner:
+    with open_runner(scheduler, workers, connect_timeout) as runner:
         (folder / "signals").mkdir(parents=True, exist_ok=True)
         own.mkdir(exist_ok=True)
         write_atomically(own / MARKER, lambda tmp: Path(tmp).write_text(marker, encoding="utf-8"))
         info = (runner.scheduler, runner.workers, runner.dashboard)
-        seconds, cpu, memory = execute.measured_run(
+        seconds, cpu, memory = measured_run(
             runner,
             ("bearinglab.dynamics",),
             (_warm, (spec, seed)),
@@ -477,7 +495,6 @@ def _run(
             units,
             write,
             progress=progress,
-            label="records",
             total=records,
             done=records - sum(units),
         )
@@ -524,7 +541,8 @@ def _finish(folder: Path, name: str, metas: list[Path], seed: int, records: int,
     bad = frame[frame["error"].notna()]
     good = frame[frame["error"].isna()].drop(columns=["error", "error_input"])
     if len(bad):
-        bad[["recording_id", "error"]].to_csv(folder / OWN / "failed.csv", index=False)
+        failed = bad[["recording_id", "error"]]
+        write_atomically(folder / OWN / "failed.csv", lambda tmp: failed.to_csv(tmp, index=False))
     if good.empty:
         first = bad.iloc[0]
         name = first["error_input"] if isinstance(first["error_input"], str) else "records"

@@ -109,7 +109,7 @@ def draw(spec: tuple, rng):
 
 def _bearing_options(b) -> dict:
     """A bearing entry: a designation or a dict of the study's bearing options."""
-    from ..study._inputs import BEARING_OPTIONS
+    from ..study.bearings import BEARING_OPTIONS
 
     if isinstance(b, str):
         if not b.strip():
@@ -127,7 +127,7 @@ def _check_bearing(given, options: dict) -> None:
     """Refuse a bearing that cannot be made (a designation not read, a geometry out of
     range) before any record is: every record drawing it would fail the same way."""
     from ..errors import BearinglabError
-    from ..study._inputs import bearing_of
+    from ..study.bearings import bearing_of
 
     try:
         bearing_of(options)

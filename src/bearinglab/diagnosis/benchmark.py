@@ -5,10 +5,11 @@ The folder holds a ``labels.csv`` like the one of ``shared/data/real`` (one row 
 ``balls``, ``ball_diameter_mm``, ``pitch_diameter_mm``, ``contact_angle_deg``, and the
 label ``fault``: normal, inner, outer, ball, cage; optional ``smith_randall_2015``). Each
 record is diagnosed by each method asked for on its own and by the methods together (the
-verdict users get); records run in parallel (``concurrent.futures``, one process per
-job). :class:`BenchmarkResult` holds the per-record table, the confusion matrix and the
-per-class recall; its HTML page (the envelope spectrum of each record and the lines it
-matched) is :func:`bearinglab.report.benchmark.write_benchmark_page`.
+verdict users get); records run in parallel on the engine (:mod:`bearinglab.engine`: a
+pool of one process per job). :class:`BenchmarkResult` holds the per-record
+table, the confusion matrix and the per-class recall; its HTML page (the envelope
+spectrum of each record and the lines it matched) is
+:func:`bearinglab.report.benchmark.write_benchmark_page`.
 """
 
 from __future__ import annotations
@@ -20,6 +21,7 @@ import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from ..engine import reraise_interrupt
 from ..errors import InputError
 from .methods import parse_methods
 
@@ -236,6 +238,7 @@ def run_record(folder: str, row: dict, methods: tuple, keep_spectra: bool = True
                 if keep_spectra:
                     out["diagnosis"] = d
     except Exception as exc:  # noqa: BLE001 - one bad record must not stop the benchmark
+        reraise_interrupt(exc)  # a Ctrl-C is no failed record
         out["error"] = f"{type(exc).__name__}: {exc}"
         out["verdict"] = "error"
     out["right"] = out.get("verdict") == out["expected"]
@@ -368,9 +371,11 @@ def run_benchmark(
         Methods (default: :data:`bearinglab.diagnosis.DEFAULT_METHODS`); each is also run
         on its own.
     jobs : int
-        Records diagnosed at once (processes, ``concurrent.futures``); 1: in this process.
+        Records diagnosed at once (a pool of processes,
+        :func:`bearinglab.engine.open_jobs`); 1: in this process.
     progress : callable, optional
-        Called with (records done, records in all) after each record.
+        ``progress(done, total)``, counted in records, before the first record and after
+        each one.
     keep_spectra : bool
         Keep each record's Diagnosis (for the HTML page's spectra).
 
@@ -378,33 +383,25 @@ def run_benchmark(
     -------
     BenchmarkResult
     """
+    from ..engine import check_progress, check_workers, open_jobs, run_partitions
     from .analysis import DEFAULT_METHODS
 
     rows = read_labels(folder)
     names = parse_methods(DEFAULT_METHODS if methods is None else methods)
-    from ..machine import most_processes
-
-    most = most_processes()
-    if isinstance(jobs, bool) or not isinstance(jobs, int) or not 1 <= jobs <= most:
-        raise InputError("jobs", jobs, f"an integer in [1, {most}] (4 per core)")
-    jobs = min(jobs, len(rows))  # no idle processes
+    jobs = min(check_workers("jobs", jobs), len(rows))  # no idle processes
+    progress = check_progress(progress)
     results: list[dict | None] = [None] * len(rows)
-    if jobs <= 1:
-        for i, row in enumerate(rows):
-            results[i] = run_record(str(folder), row, names, keep_spectra)
-            if progress:
-                progress(i + 1, len(rows))
-    else:
-        import concurrent.futures
 
-        with concurrent.futures.ProcessPoolExecutor(max_workers=jobs) as pool:
-            futures = {
-                pool.submit(run_record, str(folder), row, names, keep_spectra): i
-                for i, row in enumerate(rows)
-            }
-            for done, future in enumerate(concurrent.futures.as_completed(futures), 1):
-                results[futures[future]] = future.result()
-                if progress:
-                    progress(done, len(rows))
+    def keep(task, result) -> None:
+        results[task[0]] = result
+
+    tasks = [(i, str(folder), row, names, keep_spectra) for i, row in enumerate(rows)]
+    with open_jobs(max(jobs, 1)) as runner:
+        run_partitions(runner, _run_task, tasks, [1] * len(tasks), keep, progress=progress)
     diagnoses = {r["file"]: r.pop("diagnosis") for r in results if "diagnosis" in r}
     return BenchmarkResult(str(folder), names, tuple(results), diagnoses)
+
+
+def _run_task(task: tuple) -> dict:
+    """:func:`run_record` of ``task`` = (index, folder, row, methods, keep_spectra)."""
+    return run_record(*task[1:])

@@ -180,8 +180,12 @@ def stiffness_map(
             if progress:
                 progress(len(radial))
     else:
+        from ..engine import deferred_interrupts
+
         with ProcessPoolExecutor(max_workers=workers) as pool:
-            for line in pool.map(_line, tasks):
+            with deferred_interrupts():  # the workers never see a Ctrl-C: this process stops
+                lines = pool.map(_line, tasks)
+            for line in lines:
                 rows.extend(line)
                 if progress:
                     progress(len(radial))

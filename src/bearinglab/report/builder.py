@@ -6,6 +6,7 @@ import datetime
 import math
 from collections.abc import Callable
 
+from ..engine import reraise_interrupt
 from ..errors import InputError
 from ..geometry import BallBearing
 from ..kinematics import defect_frequencies
@@ -158,6 +159,7 @@ def build_report(
             body, highlights = build(ctx)
             sections.append(Section(key, title, body, highlights=list(highlights)))
         except Exception as exc:  # noqa: BLE001 - one failed analysis must not sink the report
+            reraise_interrupt(exc)  # a Ctrl-C is no failed section
             sections.append(Section(key, title, error=f"{type(exc).__name__}: {exc}"))
     if progress is not None:
         progress("done", len(SECTIONS), len(SECTIONS))

@@ -3,6 +3,7 @@ Each function takes the :class:`.Context` and returns ``(body_html, highlights)`
 
 from __future__ import annotations
 
+from ..engine import reraise_interrupt
 from ..friction import bearing_friction
 from ..life import rating_life
 from ..plausibility import operating_warnings
@@ -48,6 +49,7 @@ def friction(ctx: Context):
         try:
             skf = bearing_friction(b, c.shaft_speed, c.radial_load, fa, model="skf", **inputs)
         except Exception as exc:  # noqa: BLE001 - e.g. no SKF constants for this type: keep the other
+            reraise_interrupt(exc)
             said.append(f"SKF model not run: {type(exc).__name__}: {exc}")
     body = [
         paragraph(

@@ -9,6 +9,7 @@ import math
 from ..diagnosis import peak_label
 from ..dynamics import Defect, simulate
 from ..dynamics.record import simulate_record
+from ..engine import reraise_interrupt
 from ..kinematics import FREQUENCY_NAMES, LONG_NAMES, defect_frequencies
 from .context import Context
 from .document import figure, notes, number, paragraph, table
@@ -65,6 +66,7 @@ def frequencies(ctx: Context):
                 "speed."
             )
         except Exception as exc:  # noqa: BLE001 - the kinematic table stands without it
+            reraise_interrupt(exc)
             slip_note = f"The slip model could not be run here: {type(exc).__name__}: {exc}"
     else:
         slip_note = "The slip model was not run (slip duration 0)."

@@ -9,12 +9,12 @@
 (a LocalCluster of the machine's cores by default) and returns a :class:`StudyResult`;
 ``.to_pandas()`` reads the table, ``.plot(output, x, y)`` maps one output over two inputs.
 See :mod:`.runner` for the folder layout, :mod:`.cases` for the value forms and
-:mod:`.execute` for where the partitions run.
+:mod:`bearinglab.engine` for where the partitions run.
 """
 
+from ..engine import open_runner
 from .analyses import ANALYSES, Analysis, analysis
 from .cases import Option, Uniform, case_rng, case_seed, parse_values
-from .execute import open_runner
 from .plots import plot_study
 from .runner import StudyResult, describe_options, read_study, run_study
 

@@ -11,6 +11,7 @@ import math
 import numpy as np
 
 from ..analyses import ALIASES, ANALYSES, Analysis, analysis
+from ..engine import reraise_interrupt
 from ..errors import InputError
 
 __all__ = ["ALIASES", "ANALYSES", "Analysis", "analysis", "error_text", "run_cases", "warm_up"]
@@ -52,10 +53,12 @@ def run_cases(a: Analysis, cases: list[dict], seed: int) -> list[dict]:
             try:
                 results.append(a.evaluate(c, s))
             except Exception as exc:  # noqa: BLE001 - a failed case never stops a study
+                reraise_interrupt(exc)  # a Ctrl-C is no failed case
                 results.append(exc)
     rows = []
     for r in results:
         if isinstance(r, BaseException):
+            reraise_interrupt(r)
             rows.append({**dict.fromkeys(a.outputs), "error": error_text(r)})
         else:
             rows.append({**{k: _clean(r.get(k)) for k in a.outputs}, "error": None})

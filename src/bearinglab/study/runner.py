@@ -16,12 +16,12 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from .. import __version__
+from ..engine import Progress, check_count, check_progress, measured_run, open_runner
 from ..errors import InputError
 from ..files import write_atomically
-from . import execute
-from ._inputs import check_bearing_given
 from .analyses import Analysis, run_cases, warm_up
 from .analyses import analysis as get_analysis
+from .bearings import check_bearing_given
 from .cases import (
     CaseTable,
     Grid,
@@ -232,7 +232,7 @@ def run_study(
     scheduler: str | None = None,
     workers: int | None = None,
     max_cases: int | None = None,
-    progress: bool = False,
+    progress: Progress | None = None,
     connect_timeout: float | None = None,
 ) -> StudyResult:
     """Evaluate ``analysis`` over a grid of inputs or a table of cases, on dask.
@@ -257,22 +257,30 @@ def run_study(
     partition_size : int, optional
         Cases per partition (default: from the analysis and the case count).
     scheduler, workers, connect_timeout
-        Where to run (:func:`.execute.open_runner`).
+        Where to run (:func:`bearinglab.engine.open_runner`).
     max_cases : int, optional
         Refuse a study of more cases than this (the command line's confirmation limit).
-    progress : bool
-        Show a progress bar over cases (stderr).
+    progress : callable, optional
+        ``progress(done, total)``, counted in cases (those already in the folder
+        included), before the first partition and after each one.
 
     Returns
     -------
     StudyResult
+
+    Raises
+    ------
+    bearinglab.engine.Interrupted
+        On Ctrl-C, with the cases done; the partitions written are kept, and running the
+        same study again computes only the others.
     """
     a = get_analysis(analysis)
     whole_number("seed", seed, 0)
+    progress = check_progress(progress)
     source = _source(a, grid, cases, seed, repeats)
     check_bearing_given(set(source.columns))
     count = source.count
-    execute.check_count("cases", count, MAX_CASES, max_cases, "run")
+    check_count("cases", count, MAX_CASES, max_cases, "run")
     partition_size = partition_size_for(partition_size, count, a.largest)
     random = sorted(k for k, v in getattr(source, "values", {}).items() if isinstance(v, Uniform))
     identity = {
@@ -325,7 +333,7 @@ def run_study(
     runner_info = ("-", 0, None)
     if tasks:
         # connect first: an unreachable scheduler leaves no folder behind
-        with execute.open_runner(scheduler, workers, connect_timeout) as runner:
+        with open_runner(scheduler, workers, connect_timeout) as runner:
             folder.mkdir(parents=True, exist_ok=True)
             write_atomically(
                 folder / MARKER, lambda tmp: Path(tmp).write_text(marker, encoding="utf-8")
@@ -333,7 +341,7 @@ def run_study(
             runner_info = (runner.scheduler, runner.workers, runner.dashboard)
             # a few first cases (the very first may fail, e.g. an unloaded stiffness case)
             first = source.rows(0, min(count, 3))
-            seconds, cpu, memory = execute.measured_run(
+            seconds, cpu, memory = measured_run(
                 runner,
                 a.warm,
                 (warm_up, (a.name, first)),
@@ -342,7 +350,6 @@ def run_study(
                 units,
                 write,
                 progress=progress,
-                label=a.name,
                 total=count,
                 done=count - sum(units),
             )

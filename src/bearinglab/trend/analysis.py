@@ -26,20 +26,6 @@ from .rule import BASELINE, SETTLE, baseline_span, evaluate, settings
 from .series import list_records
 
 
-def _runner(jobs, scheduler):
-    """Where the work runs: this process, a LocalCluster of ``jobs`` workers, or a
-    scheduler (:func:`bearinglab.study.execute.open_runner`)."""
-    from ..machine import most_processes
-    from ..study.execute import open_runner
-
-    most = most_processes()
-    if isinstance(jobs, bool) or not isinstance(jobs, (int, np.integer)) or not 1 <= jobs <= most:
-        raise InputError("jobs", jobs, f"an integer in [1, {most}] (4 per core)")
-    if scheduler is None:
-        return open_runner("serial" if jobs == 1 else "local", workers=int(jobs))
-    return open_runner(scheduler, workers=int(jobs) if scheduler == "local" else None)
-
-
 def _severity(unit, machine):
     """(the channels' unit, the machine's ISO zones or None), checked together."""
     unit = acceleration_unit(unit)
@@ -147,16 +133,18 @@ def trend_records(
         :class:`~.learning.LearnedRuns`; default the six PRONOSTIA learning runs
         (package data, :mod:`.learning`).
     jobs : int
-        Worker processes (a dask LocalCluster); 1: this process.
+        Worker processes (a pool, :func:`bearinglab.engine.open_jobs`); 1: this process.
     scheduler : str, optional
         A dask scheduler address (or "local", "serial") instead.
     progress : callable, optional
-        Called with (work done, work in all), counted in records read, as it goes.
+        ``progress(done, total)``, counted in records read (and, with the diagnosis, in
+        records diagnosed), as it goes (:mod:`bearinglab.engine`).
 
     Returns
     -------
     TrendResult
     """
+    from ..engine import check_progress, open_jobs
     from .learning import learned_from
     from .reading import probe, read_series
     from .rule import measured_false_alarm, statistics
@@ -179,15 +167,9 @@ def trend_records(
     size = None if kin is None else block_size(first_record, kin)
     total = len(listing.files)
     work = total + (0 if size is None else total + size)
-    done = [0]
-
-    def advance(n: int) -> None:
-        done[0] += n
-        if progress:
-            progress(min(done[0], work), work)
-
-    with _runner(jobs, scheduler) as runner:
-        series = read_series(listing, channels, sample_rate, unit, top, runner, advance)
+    progress = check_progress(progress)
+    with open_jobs(jobs, scheduler) as runner:
+        series = read_series(listing, channels, sample_rate, unit, top, runner, (progress, work))
         warnings = list(series.warnings)
         times, values = series.times, series.values
         window = _window(rule, times)
@@ -208,7 +190,14 @@ def trend_records(
         diagnosis = None
         if kin is not None:
             diagnosis = diagnose_blocks(
-                runner, series.listing, channels[0], sample_rate, kin, size, alarm, advance
+                runner,
+                series.listing,
+                channels[0],
+                sample_rate,
+                kin,
+                size,
+                alarm,
+                (progress, total, work),
             )
             if diagnosis is None:
                 warnings.append(

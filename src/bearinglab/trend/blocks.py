@@ -119,10 +119,12 @@ def block_size(record: Record, frequencies) -> int:
     return max(1, math.ceil(MIN_CAGE_REVOLUTIONS / (duration * frequencies.hz("ftf")) - 1e-9))
 
 
-def diagnose_blocks(runner, files: Listing, channel, sample_rate, kin, size, alarm, advance):
+def diagnose_blocks(runner, files: Listing, channel, sample_rate, kin, size, alarm, told):
     """The diagnosis over blocks of ``size`` consecutive records of ``files`` (time order)
-    and over the block ending at the alarm; None when the series is shorter than a block."""
-    from ..study.execute import run_partitions
+    and over the block ending at the alarm, on ``runner`` (:mod:`bearinglab.engine`); None
+    when the series is shorter than a block. ``told`` = (progress, done, total): the
+    progress of the trend and where it stands."""
+    from ..engine import run_partitions
     from .tasks import diagnose_block
 
     count = len(files.files)
@@ -137,9 +139,12 @@ def diagnose_blocks(runner, files: Listing, channel, sample_rate, kin, size, ala
 
     def collect(task, result):
         outcome[id(task)] = result
-        advance(len(task[0].files))
 
-    run_partitions(runner, diagnose_block, tasks, [size] * len(tasks), collect)
+    progress, done, total = told
+    units = [size] * len(tasks)
+    run_partitions(
+        runner, diagnose_block, tasks, units, collect, progress=progress, total=total, done=done
+    )
     results = [outcome[id(t)] for t in tasks]
     if all("error" in r for r in results):
         raise InputError(*results[0]["error"])

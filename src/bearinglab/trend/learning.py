@@ -192,7 +192,7 @@ def read_run(path, *, max_frequency=None, **rule_settings) -> RunSeries:
     """A run to failure read as the trend reads a series (all channels, the files'
     sample rate), with the rule's settings (keyword arguments of
     :func:`~.rule.settings`; defaults otherwise)."""
-    from ..study.execute import open_runner
+    from ..engine import open_runner
     from .alarm import FALSE_ALARM_PER_HOUR, PERSISTENCE, window_count
     from .indicators import INDICATORS, band_top
     from .reading import probe, read_series
@@ -214,7 +214,7 @@ def read_run(path, *, max_frequency=None, **rule_settings) -> RunSeries:
     channels, first_record = probe(listing, None, None)
     top = band_top(first_record.sample_rate, max_frequency)
     with open_runner("serial") as runner:
-        series = read_series(listing, channels, None, None, top, runner, lambda n: None)
+        series = read_series(listing, channels, None, None, top, runner, (None, None))
     times = series.times
     spacing = spacing_of(times)
     window = rule["persistence_n"] or window_count(rule["persistence"], spacing)

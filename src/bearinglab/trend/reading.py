@@ -46,11 +46,12 @@ class Series:
         return self.listing.files
 
 
-def read_series(listing: Listing, channels, sample_rate, unit, top, runner, advance) -> Series:
+def read_series(listing: Listing, channels, sample_rate, unit, top, runner, told) -> Series:
     """The records of ``listing`` (channels ``channels``, checked by :func:`probe`) read
-    on ``runner`` into their indicators over 0-``top`` Hz (and the velocity in ``unit``),
-    in time order; ``advance(n)`` is called as records are read."""
-    from ..study.execute import run_partitions
+    on ``runner`` (:mod:`bearinglab.engine`) into their indicators over 0-``top`` Hz (and
+    the velocity in ``unit``), in time order; ``told`` = (progress, total): the trend's
+    ``progress(done, total)`` and its total work, called as records are read."""
+    from ..engine import run_partitions
     from .tasks import read_chunk
 
     total = len(listing.files)
@@ -63,12 +64,15 @@ def read_series(listing: Listing, channels, sample_rate, unit, top, runner, adva
     rows: list[dict] = []
     parts = [range(s, min(s + CHUNK, total)) for s in range(0, total, CHUNK)]
     tasks = [(listing.subset(p), channels, sample_rate, unit, p.start, top) for p in parts]
+    progress, work = told
     run_partitions(
         runner,
         read_chunk,
         tasks,
         [len(p) for p in parts],
-        lambda task, result: (rows.extend(result), advance(len(task[0].files))),
+        lambda task, result: rows.extend(result),
+        progress=progress,
+        total=work,
     )
     good = _good_rows(listing, rows, warnings, listing.folder)
     warnings += _rate_warnings(listing, good, sample_rate)

@@ -8,6 +8,8 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass
 
+from ..engine import reraise_interrupt
+
 #: Verdicts that leave ``validate``'s exit code at 0.
 GOOD_VERDICTS = ("pass", "known failure")
 VERDICTS = ("pass", "known failure", "fail", "unexpected pass", "error")
@@ -49,6 +51,7 @@ def run_case(case) -> dict:
     try:
         result = case.run()
     except Exception as exc:  # noqa: BLE001 - a broken case is reported, the others still run
+        reraise_interrupt(exc)  # a Ctrl-C is no broken case
         out["error"] = f"{type(exc).__name__}: {exc}"
         out["verdict"] = verdict(None, case.known_failure)
         return out
