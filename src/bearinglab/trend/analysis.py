@@ -14,8 +14,6 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 
-import numpy as np
-
 from ..errors import InputError
 from ..operating import speed_error
 from .alarm import FALSE_ALARM_PER_HOUR, PERSISTENCE
