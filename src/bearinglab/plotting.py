@@ -267,10 +267,10 @@ def draw_spectrum(
     ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
 
 
-def draw_aligned_events(axes, lag, waveform, envelope, entry_lag, title: str) -> None:
+def draw_aligned_events(axes, lag, waveform, envelope, entry_lag, title: str, speed=None) -> None:
     """An event-aligned average: the averaged record (``axes[0]``) and its event envelope
     over its floor on a log scale (``axes[1]``) against the time from the exit [ms], the
-    exit (at 0) and the entry (``entry_lag`` [s], None: no entry) marked.
+    exit (at 0) and the entry (``entry_lag`` [s], None: no entry) marked, around them.
 
     Parameters
     ----------
@@ -284,6 +284,9 @@ def draw_aligned_events(axes, lag, waveform, envelope, entry_lag, title: str) ->
         The entry's time from the exit [s].
     title : str
         The title of the upper plot.
+    speed : float, optional
+        The contact point's speed over the race [m/s]: the distance it travels is shown
+        on a second axis [mm].
     """
     ms = np.asarray(lag, dtype=float) * 1e3
     top, bottom = axes
@@ -291,9 +294,12 @@ def draw_aligned_events(axes, lag, waveform, envelope, entry_lag, title: str) ->
         top.text(0.5, 0.5, "no passages to average", ha="center", transform=top.transAxes)
         top.set_title(title)
         return
-    top.plot(ms, waveform, color="0.3", lw=0.7)
+    spacing = 0.0 if entry_lag is None else -entry_lag * 1e3
+    margin = max(spacing, 1.0)
+    shown = (ms >= -spacing - margin) & (ms <= margin)
+    top.plot(ms[shown], np.asarray(waveform)[shown], color="0.3", lw=0.7)
     top.set_ylabel("averaged record")
-    bottom.semilogy(ms, np.maximum(envelope, 1e-3), color="0.3", lw=0.8)
+    bottom.semilogy(ms[shown], np.maximum(np.asarray(envelope)[shown], 1e-3), color="0.3", lw=0.8)
     bottom.set_ylabel("event envelope / floor")
     bottom.set_xlabel("time from the exit [ms]" if entry_lag is not None else "time [ms]")
     marks = [(0.0, "exit" if entry_lag is not None else "burst", "C3")]
@@ -303,4 +309,9 @@ def draw_aligned_events(axes, lag, waveform, envelope, entry_lag, title: str) ->
         for at, label, colour in marks:
             ax.axvline(at, color=colour, ls="--", lw=1.0, label=label)
     bottom.legend(fontsize=8, loc="upper right")
+    if speed:
+        v = float(speed)
+        top.secondary_xaxis("top", functions=(lambda t: t * v, lambda x: x / v)).set_xlabel(
+            "distance the contact point travels over the race [mm]"
+        )
     top.set_title(title)

@@ -90,6 +90,13 @@ DIAGNOSIS_INPUTS: dict[str, Input] = {
         low_open=True,
         what="a frequency",
     ),
+    "radial_load_n": INPUTS["radial_load_n"].with_(
+        default=None,
+        help="Radial load on the bearing [N], for the width of a race defect found (what "
+        "the ball bridges at the edges); default 0.032 x its dynamic rating C, the interval "
+        "then spanning 0.01-0.1 C.",
+        low_open=True,
+    ),
 }
 #: The inputs of ``analyze``: the record's, then the bearing's.
 ANALYZE_INPUTS = {**DIAGNOSIS_INPUTS, **{name: INPUTS[name] for name in BEARING}}
@@ -106,6 +113,7 @@ _NAMES = {
     "tolerances": "tolerance",
     "supply_frequency": "supply_hz",
     "mesh_frequency": "mesh_hz",
+    "radial_load": "radial_load_n",
 }
 
 
@@ -195,6 +203,7 @@ def diagnose(values: dict):
         "false_alarm": values.get("false_alarm", 0.01),
         "supply_frequency": values.get("supply_hz"),
         "mesh_frequency": values.get("mesh_hz"),
+        "radial_load": values.get("radial_load_n"),
     }
     bearing, decoded = bearing_from(values)
     try:

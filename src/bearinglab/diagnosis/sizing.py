@@ -655,6 +655,7 @@ class DefectSize:
             f"{self.race.replace('_', ' ')}: {self.status}"
             + (f", {self.width * 1e3:.2f} mm" if self.sized else "")
             + f" ({self.passages} passages)",
+            speed=self.speed,
         )
         fig.tight_layout()
         if path is not None:
@@ -805,10 +806,11 @@ def size_defect(
             status="too small to size",
             reason=f"no entry event separate from the exit bursts ({t.size} passages, "
             f"{height:.3g} times the envelope's floor): the defect is too short for the "
-            f"ball to drop into it - under {bridged * 1e3:.2g} mm the ball bridges it under "
-            f"{load:.4g} N{'' if given else ' (assumed)'}, and an entry within "
-            f"{burst / fs * 1e3:.2g} ms ({v * burst / fs * 1e3:.2g} mm) of the exit merges "
-            "with its burst",
+            f"ball to drop into it, or its entry lies within the exit's burst - the ball "
+            f"bridges {bridged * 1e3:.2g} mm of it under {load:.4g} N"
+            f"{'' if given else ' (assumed)'}, and the bursts ring for {burst / fs * 1e3:.2g} "
+            f"ms ({v * burst / fs * 1e3:.2g} mm at this speed), so a defect under about "
+            f"{(bridged + v * burst / fs) * 1e3:.2g} mm shows no two separate events here",
             passages=int(t.size),
             bridged=bridged,
             **plot,
