@@ -92,17 +92,18 @@ def event_envelope(x, order: int) -> np.ndarray:
     order : int
         p, the predictor's length [samples].
     """
-    from ..signal.spectra import analytic, fast_length
+    from ..signal.spectra import analytic
 
     x = np.asarray(x, dtype=float)
     x = x - x.mean()
-    m = fast_length(2 * x.size)
-    spectrum = np.fft.rfft(x, m)
-    r = np.fft.irfft(np.abs(spectrum) ** 2, m)[: order + 1] / x.size
+    n = x.size
+    order = min(int(order), n - 1)
+    # the biased autocorrelation r_0 .. r_p (positive definite), and the prediction error
+    # e[i] = sum_k a_k x[i - k], causal: direct sums, p being short
+    r = np.array([np.dot(x[: n - k], x[k:]) for k in range(order + 1)]) / n
     if not r[0] > 0.0:
-        return np.zeros(x.size)
-    a = levinson(r, order)
-    error = np.fft.irfft(spectrum * np.fft.rfft(a, m), m)[: x.size]
+        return np.zeros(n)
+    error = np.convolve(x, levinson(r, order))[:n]
     return np.abs(analytic(error)) ** 2
 
 
@@ -131,11 +132,11 @@ def track_passages(envelope, period: float, tolerance: float = ALIGN_TOLERANCE):
     """(sample of the largest value of ``envelope`` in each fault period, whether it is
     clear) [-].
 
-    The first passage is at the phase where ``envelope`` folded at ``period`` is largest;
-    each next one is its largest sample within +-``tolerance`` x ``period`` of one period
-    after the last clear one (a weak passage - the defect out of the load zone - does not
-    move the tracking). A passage is clear when that sample reaches TRACK_LEVEL times the
-    envelope's median.
+    The passages are followed from the largest value of the first three periods, forwards
+    and backwards: each next one is the largest sample within +-``tolerance`` x ``period``
+    of one period from the last clear one (a weak passage - the defect out of the load
+    zone - does not move the tracking). A passage is clear when that sample reaches
+    TRACK_LEVEL times the envelope's median.
 
     Parameters
     ----------
@@ -147,33 +148,27 @@ def track_passages(envelope, period: float, tolerance: float = ALIGN_TOLERANCE):
         Largest change of the period followed from one passage to the next [-].
     """
     e = np.asarray(envelope, dtype=float)
-    n = e.size
-    cycles = int(n // period)
-    if cycles < 1:
+    if e.size < period:
         return np.zeros(0, dtype=int), np.zeros(0, dtype=bool)
     level = TRACK_LEVEL * float(np.median(e))
-    bins = max(int(period), 1)
-    phase = ((np.arange(int(cycles * period)) % period) / period * bins).astype(int)
-    folded = np.bincount(phase, weights=e[: phase.size], minlength=bins)
-    start = float(np.argmax(folded)) * period / bins
+    anchor = int(np.argmax(e[: int(min(3 * period, e.size))]))
     half = max(tolerance * period, 1.0)
-    times, clear = [], []
-    last, gap = start, 0
-    while True:
-        centre = last + (gap + (1 if times else 0)) * period
-        lo, hi = int(round(centre - half)), int(round(centre + half)) + 1
-        if hi > n:
-            break
-        lo = max(lo, 0)
-        i = lo + int(np.argmax(e[lo:hi]))
-        good = bool(e[i] >= level)
-        times.append(i)
-        clear.append(good)
-        if good:
-            last, gap = float(i), 0
-        else:
-            gap += 1
-    return np.array(times, dtype=int), np.array(clear, dtype=bool)
+    found = {anchor: bool(e[anchor] >= level)}
+    for step in (period, -period):
+        last, gap = float(anchor), 0
+        while True:
+            centre = last + (gap + 1) * step
+            lo, hi = int(round(centre - half)), int(round(centre + half)) + 1
+            if hi > e.size or lo < 0:
+                break
+            i = lo + int(np.argmax(e[lo:hi]))
+            found[i] = bool(e[i] >= level)
+            if found[i]:
+                last, gap = float(i), 0
+            else:
+                gap += 1
+    times = np.array(sorted(found), dtype=int)
+    return times, np.array([found[i] for i in times], dtype=bool)
 
 
 def align_passages(envelope, times, margin: int, reach: int, iterations: int = 2):
