@@ -299,9 +299,9 @@ def test_the_benchmark_scores_the_width_against_the_label(tmp_path):
 
     rows = ["file,channel,sample_rate_hz,speed_rpm,designation,fault,defect_width_mm"]
     for name, x, width in (
-        ("pair.npz", passages(1e-3), "2.4"),
-        ("single.npz", passages(1e-3, entry=0.0), "0.5"),
-        ("wrong.npz", passages(1e-3), "2 mm"),
+        ("pair.npz", passages(1e-3, seconds=1.0), "2.4"),
+        ("single.npz", passages(1e-3, entry=0.0, seconds=1.0), "0.5"),
+        ("wrong.npz", passages(1e-3, seconds=1.0), "2 mm"),
     ):
         write_signal(tmp_path / name, Signal({"acc": x}, FS))
         rows.append(f"{name},acc,{FS},1797,6205,outer,{width}")

@@ -104,6 +104,7 @@ def event_envelope(x, order: int) -> np.ndarray:
     if not r[0] > 0.0:
         return np.zeros(n)
     error = np.convolve(x, levinson(r, order))[:n]
+    error[:order] = 0.0  # the filter's start, predicted from samples before the record
     return np.abs(analytic(error)) ** 2
 
 

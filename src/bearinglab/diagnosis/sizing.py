@@ -48,9 +48,9 @@ MEASURABLE floors high, so that a separate entry would have shown; otherwise "no
 with the reason.
 
 The ball's load is the radial load given, or, when none is, ASSUMED_LOAD x the bearing's
-dynamic rating C (the middle, on a log scale, of the loads a ball bearing runs at: from
-SKF's minimum load 0.01 C to the top of its "normal" loads 0.1 C); the interval then
-spans LOAD_RANGE as well as the spread over passages.
+dynamic rating C (the middle, on a log scale, of 0.01-0.1 C, the loads a ball bearing runs
+at in ordinary service); the interval then spans LOAD_RANGE as well as the spread over
+passages.
 
 Layer 3 (:func:`size_defect`, :class:`DefectSize`) on the functions of :mod:`.spall` (the
 geometry, SI; ASSUMED_LOAD, LOAD_RANGE) and :mod:`.events` (the signal processing;

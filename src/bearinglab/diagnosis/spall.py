@@ -16,10 +16,10 @@ Bearing Technology*, 5th ed., 2007, ch. 7), as :func:`bearinglab.dynamics.rigid.
 solves it for the rigid model's start.
 
 When the load is not known, ASSUMED_LOAD x the bearing's dynamic rating C stands in for
-it (:func:`assumed_loads`): the middle, on a log scale, of the loads a ball bearing runs at,
-from SKF's minimum load of about 0.01 C (SKF rolling bearings catalogue, "Minimum load") to
-the top of its normal loads, 0.1 C (its load classes: light P <= 0.05 C, normal
-0.05 C < P <= 0.1 C, heavy P > 0.1 C).
+it (:func:`assumed_loads`): the middle, on a log scale, of LOAD_RANGE, 0.01 C to 0.1 C, the
+loads a ball bearing runs at in ordinary service - bearing makers' catalogues put the
+least load a ball bearing needs to roll without skidding near 0.01 C and call loads above
+about 0.1 C heavy (the project's reading, not checked against one edition).
 """
 
 from __future__ import annotations
@@ -31,8 +31,7 @@ import numpy as np
 from ..errors import InputError
 
 #: Radial load assumed when none is given, and the range the interval then spans, as
-#: fractions of the dynamic load rating C (SKF rolling bearings catalogue: minimum load
-#: of a ball bearing about 0.01 C; light loads P <= 0.05 C, normal 0.05 C < P <= 0.1 C).
+#: fractions of the dynamic load rating C (the module docstring says why).
 ASSUMED_LOAD = math.sqrt(0.01 * 0.1)
 LOAD_RANGE = (0.01, 0.1)
 
