@@ -299,6 +299,7 @@ def draw_aligned_events(axes, lag, waveform, envelope, entry_lag, title: str, sp
     shown = (ms >= -spacing - margin) & (ms <= margin)
     top.plot(ms[shown], np.asarray(waveform)[shown], color="0.3", lw=0.7)
     top.set_ylabel("averaged record")
+    top.tick_params(labelbottom=False)
     bottom.semilogy(ms[shown], np.maximum(np.asarray(envelope)[shown], 1e-3), color="0.3", lw=0.8)
     bottom.set_ylabel("event envelope / floor")
     bottom.set_xlabel("time from the exit [ms]" if entry_lag is not None else "time [ms]")

@@ -318,7 +318,9 @@ def test_the_benchmark_scores_the_width_against_the_label(tmp_path):
     assert summary["labelled"] == 2 and summary["sized"] == 1
     assert summary["max_abs_error_percent"] == pytest.approx(abs(pair["sizing_error_percent"]))
     page = benchmark_page(result)
-    assert "Defect width" in page and page.count("<figure") == 1 + 2 + 2
+    assert "Defect width" in page and page.count("<figure") == 1 + 2  # wrong.npz: none
+    fig, ax = result.diagnoses["pair.npz"].plot()
+    assert len(fig.axes) == 3  # the spectrum, the averaged record and event envelope
 
 
 # ------------------------------------------------------------------- the rigid model

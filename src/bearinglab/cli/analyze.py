@@ -9,7 +9,9 @@ from ._inputs import JsonOpt, _print_warnings, check_path, plot_option, save_plo
 from ._output import _emit_json, escape, print_verdict
 
 app = command_app()
-PlotOpt = plot_option("the squared envelope spectrum")
+PlotOpt = plot_option(
+    "the squared envelope spectrum (and a race defect's passages averaged, entry and exit marked)"
+)
 
 
 @app.command("analyze")

@@ -215,7 +215,9 @@ class Diagnosis:
         return pd.DataFrame(rows)
 
     def plot(self, path=None, ax=None):
-        """Squared envelope spectrum with the kinematic lines and the lines found.
+        """Squared envelope spectrum with the kinematic lines and the lines found; on a new
+        figure, below it, the event-aligned average of each race defect's passages with
+        its entry and exit marked (:meth:`.sizing.DefectSize.plot`).
 
         Parameters
         ----------
@@ -223,17 +225,24 @@ class Diagnosis:
             Also save the figure there (.png, .svg or .pdf; atomically; the figure is
             closed).
         ax : matplotlib Axes, optional
-            Where to draw; a new figure otherwise.
+            Where to draw the spectrum alone; a new figure otherwise.
 
         Returns
         -------
         (figure, axes)
+            The spectrum's axes (the averages' are ``figure.axes[1:]``).
         """
         from ..plotting import _pyplot, draw_spectrum, save_figure
 
         plt = _pyplot()
+        sizes = []
         if ax is None:
-            fig, ax = plt.subplots(figsize=(11, 4.5))
+            sizes = [s for s in self.defect_sizes if s.lag.size]
+            fig = plt.figure(figsize=(11, 4.5 + 5.0 * len(sizes)))
+            grid = fig.add_gridspec(
+                1 + 2 * len(sizes), 1, height_ratios=[4.5] + [2.5] * 2 * len(sizes)
+            )
+            ax = fig.add_subplot(grid[0])
         else:
             fig = ax.figure
         method = self.to_dict()["method_shown"]
@@ -255,6 +264,9 @@ class Diagnosis:
             # shaft harmonics are not a bearing fault: only fault lines and sidebands in colour
             highlight=lambda p: p.get("matched") in FREQUENCY.values() or p.get("sideband_of"),
         )
+        for i, size in enumerate(sizes):
+            top = fig.add_subplot(grid[1 + 2 * i])
+            size.plot(ax=(top, fig.add_subplot(grid[2 + 2 * i], sharex=top)))
         fig.tight_layout()
         if path is not None:
             try:

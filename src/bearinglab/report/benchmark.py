@@ -58,12 +58,14 @@ def benchmark_page(result) -> str:
         body.append(f"<h3>{r['file']}: {r['verdict']} (label {r['fault']})</h3>")
         body.append(paragraph(r.get("reason") or r.get("error") or ""))
         if diag is not None:
-            body.append(figure(diag.plot()[0], f"{r['file']}: squared envelope spectrum"))
             for size in diag.defect_sizes:
                 body.append(paragraph(f"Defect width ({size.status}): {size.reason}"))
-                if size.lag.size:
-                    caption = f"{r['file']}: the passages averaged, aligned on the exit"
-                    body.append(figure(size.plot()[0], caption, 80))
+            caption = f"{r['file']}: squared envelope spectrum" + (
+                "; below, the passages of the race defect averaged, aligned on the exit"
+                if any(size.lag.size for size in diag.defect_sizes)
+                else ""
+            )
+            body.append(figure(diag.plot()[0], caption))
     return page("bearinglab benchmark", [f"{result.folder}"], "".join(body))
 
 
