@@ -364,3 +364,14 @@ def test_the_rigid_models_defect_below_the_drop_needed_is_too_small():
     b, s = _simulated("outer", 0.4)
     assert spall.bridged_width(b, "outer", 200.0) > 0.4e-3
     assert s.status == "too small to size"
+
+
+def test_without_a_load_or_a_rating_to_assume_one_from_it_is_not_sized(monkeypatch):
+    from bearinglab.diagnosis import sizing
+
+    def no_rating(bearing):
+        raise InputError("ball_count", 2, "a bearing with a rating")
+
+    monkeypatch.setattr(sizing, "assumed_loads", no_rating)
+    s = size_defect(passages(1e-3, seconds=0.5), FS, BEARING, "outer_race", BPFO)
+    assert s.status == "not sized" and "give the radial load" in s.reason

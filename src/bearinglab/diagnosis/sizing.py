@@ -306,7 +306,17 @@ def size_defect(
     radius = raceway_radius(bearing, race)
     v = float(contact_speed(f, bearing.ball_count, radius))
     if radial_load is None:
-        load, light, heavy = assumed_loads(bearing)
+        try:
+            load, light, heavy = assumed_loads(bearing)
+        except (InputError, ValueError, ArithmeticError) as exc:
+            return DefectSize(
+                race=fault,
+                status="not sized",
+                reason="no radial load given, and the bearing's dynamic load rating, to "
+                f"assume one from, could not be computed ({exc}): give the radial load",
+                fault_frequency=f,
+                speed=v,
+            )
         given = False
     else:
         load = light = heavy = _number("radial_load", radial_load, "a radial load > 0 N")
