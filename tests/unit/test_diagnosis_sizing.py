@@ -254,6 +254,9 @@ def test_bad_inputs_name_the_parameter(args, name):
     with pytest.raises(InputError) as info:
         size_defect(np.zeros(1000), FS, BEARING, "outer_race", BPFO, radial_load=0.0)
     assert info.value.parameter == "radial_load"
+    with pytest.raises(InputError) as info:
+        size_defect(np.full(1000, np.nan), FS, BEARING, "outer_race", BPFO)
+    assert info.value.parameter == "x"
 
 
 def test_the_json_object_plot_and_table():

@@ -302,7 +302,9 @@ def size_defect(
     race = RACES[fault]
     fs = _number("sample_rate", sample_rate, "a sample rate > 0 Hz")
     f = _number("fault_frequency", fault_frequency, "a frequency > 0 Hz")
-    x = np.asarray(x, dtype=float)
+    from ..signal.spectra import samples
+
+    x = samples(x, "x")
     radius = raceway_radius(bearing, race)
     v = float(contact_speed(f, bearing.ball_count, radius))
     if radial_load is None:
