@@ -48,6 +48,7 @@ _EXPORTS = {
     "analyze_signal": "diagnosis",
     "analyze_file": "diagnosis",
     "run_benchmark": "diagnosis",
+    "size_defect": "diagnosis",
     "read_signal": "signal",
     "Waviness": "imperfections",
     "BallSizeErrors": "imperfections",

@@ -265,3 +265,54 @@ def draw_spectrum(
     ax.set_xlim(0, max_frequency)
     ax.set_ylim(0, 1.25 * top)
     ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+
+
+def draw_aligned_events(axes, lag, waveform, envelope, entry_lag, title: str, speed=None) -> None:
+    """An event-aligned average: the averaged record (``axes[0]``) and its event envelope
+    over its floor on a log scale (``axes[1]``) against the time from the exit [ms], the
+    exit (at 0) and the entry (``entry_lag`` [s], None: no entry) marked, around them.
+
+    Parameters
+    ----------
+    axes : sequence of two matplotlib Axes
+        Where to draw.
+    lag : array_like
+        Time of each sample from the exit (or from the burst tracked) [s].
+    waveform, envelope : array_like
+        The averaged record [its unit] and event envelope over its floor [-].
+    entry_lag : float or None
+        The entry's time from the exit [s].
+    title : str
+        The title of the upper plot.
+    speed : float, optional
+        The contact point's speed over the race [m/s]: the distance it travels is shown
+        on a second axis [mm].
+    """
+    ms = np.asarray(lag, dtype=float) * 1e3
+    top, bottom = axes
+    if ms.size == 0:
+        top.text(0.5, 0.5, "no passages to average", ha="center", transform=top.transAxes)
+        top.set_title(title)
+        return
+    spacing = 0.0 if entry_lag is None else -entry_lag * 1e3
+    margin = max(spacing, 1.0)
+    shown = (ms >= -spacing - margin) & (ms <= margin)
+    top.plot(ms[shown], np.asarray(waveform)[shown], color="0.3", lw=0.7)
+    top.set_ylabel("averaged record")
+    top.tick_params(labelbottom=False)
+    bottom.semilogy(ms[shown], np.maximum(np.asarray(envelope)[shown], 1e-3), color="0.3", lw=0.8)
+    bottom.set_ylabel("event envelope / floor")
+    bottom.set_xlabel("time from the exit [ms]" if entry_lag is not None else "time [ms]")
+    marks = [(0.0, "exit" if entry_lag is not None else "burst", "C3")]
+    if entry_lag is not None:
+        marks.append((entry_lag * 1e3, "entry", "C0"))
+    for ax in axes:
+        for at, label, colour in marks:
+            ax.axvline(at, color=colour, ls="--", lw=1.0, label=label)
+    bottom.legend(fontsize=8, loc="upper right")
+    if speed:
+        v = float(speed)
+        top.secondary_xaxis("top", functions=(lambda t: t * v, lambda x: x / v)).set_xlabel(
+            "distance the contact point travels over the race [mm]"
+        )
+    top.set_title(title)

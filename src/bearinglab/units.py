@@ -238,7 +238,7 @@ DIMENSIONLESS: dict[str, str] = {
     "cases": "list of cases (or their count)",
     "rows": "list of table rows",
     "solved": "number of cases solved",
-    "status": "ok or the error text",
+    "status": "ok or the error text; a defect's width: sized, too small to size or not sized",
     # rings
     "modes": "list of ring modes",
     "m": "mode number (waves round the ring)",
@@ -429,6 +429,14 @@ DIMENSIONLESS: dict[str, str] = {
     "outcome": "right, wrong (a fault not the label's), missed (no fault on a faulty "
     "record) or error",
     "smith_randall_2015": "Smith & Randall's diagnosability category of the record",
+    # the width of a race defect (diagnosis.sizing)
+    "defect_size": "the width of the verdict's first race fault (null without one)",
+    "defect_sizes": "the width of every race fault found",
+    "passages": "passages of the defect averaged",
+    "sizing": "the widths read against the labels' (benchmark)",
+    "labelled": "records whose label gives a defect width",
+    "sized": "records sized (of those labelled)",
+    "sized_without_label": "records sized whose label gives no width",
     "threshold": "the significance a family must reach (-log10 of the false-alarm "
     "probability, corrected)",
     "raw": "the verdict of the envelope of the raw signal",

@@ -8,12 +8,12 @@ import math
 from dataclasses import replace
 
 from ..errors import InputError
-from ..inputs import BEARING, INPUTS, Input, bearing_from, bearing_warnings
+from ..inputs import BEARING, INPUTS, Input, bearing_from, bearing_warnings, input_for
 from .base import Analysis, plot_file
 
 #: The diagnosis' inputs besides the bearing.
 DIAGNOSIS_INPUTS: dict[str, Input] = {
-    "signal_file": INPUTS["signal_file"],
+    "signal_file": INPUTS["signal_file"].with_(sets=("path", "signal_or_array")),
     "channel": INPUTS["channel"],
     "record": Input(
         "text",
@@ -41,6 +41,7 @@ DIAGNOSIS_INPUTS: dict[str, Input] = {
         "raw, cpw, drs-sk or all (repeatable or comma-separated): Smith & Randall's Methods "
         "1-3; ies: the improved envelope spectrum (spectral coherence), optional; default cpw "
         "(raw for bearinglab simulations).",
+        sets="methods",
     ),
     "band_hz": Input(
         "text",
@@ -53,6 +54,7 @@ DIAGNOSIS_INPUTS: dict[str, Input] = {
         None,
         "Family tolerance FAMILY=FRACTION or FAMILY=BELOW,ABOVE (families outer, inner, ball, "
         "cage; defaults 0.02, 0.02, 0.07/0.02, 0.02); repeatable.",
+        sets="tolerances",
     ),
     "false_alarm": Input(
         "number",
@@ -66,6 +68,7 @@ DIAGNOSIS_INPUTS: dict[str, Input] = {
         low=0.0,
         low_open=True,
         what="a frequency",
+        sets="supply_frequency",
     ),
     "mesh_hz": Input(
         "number",
@@ -74,6 +77,14 @@ DIAGNOSIS_INPUTS: dict[str, Input] = {
         low=0.0,
         low_open=True,
         what="a frequency",
+        sets="mesh_frequency",
+    ),
+    "radial_load_n": INPUTS["radial_load_n"].with_(
+        default=None,
+        help="Radial load on the bearing [N], for the width of a race defect found (what "
+        "the ball bridges at the edges); default 0.032 x its dynamic rating C, the interval "
+        "then spanning 0.01-0.1 C.",
+        low_open=True,
     ),
 }
 #: The inputs of ``analyze``: the record's, then the bearing's.
@@ -84,20 +95,6 @@ ANALYZE_INPUTS = {
         help="Bearing designation or catalogue name (e.g. ER-16K, 6205); optional with "
         "explicit geometry."
     ),
-}
-
-#: Library parameter -> the input to blame.
-_NAMES = {
-    "path": "signal_file",
-    "signal_or_array": "signal_file",
-    "sample_rate": "sample_rate_hz",
-    "shaft_speed": "speed_rpm",
-    "speed_range": "speed_range_rpm",
-    "methods": "method",
-    "band": "band_hz",
-    "tolerances": "tolerance",
-    "supply_frequency": "supply_hz",
-    "mesh_frequency": "mesh_hz",
 }
 
 
@@ -187,13 +184,14 @@ def diagnose(values: dict):
         "false_alarm": values.get("false_alarm", 0.01),
         "supply_frequency": values.get("supply_hz"),
         "mesh_frequency": values.get("mesh_hz"),
+        "radial_load": values.get("radial_load_n"),
     }
     bearing, decoded = bearing_from(values)
     try:
         diag = analyze_file(values["signal_file"], bearing, **options)
     except InputError as exc:
-        name = _NAMES.get(exc.parameter.split("[")[0], exc.parameter.split("[")[0])
-        if name not in DIAGNOSIS_INPUTS:
+        name = input_for(exc.parameter.split("[")[0], DIAGNOSIS_INPUTS)
+        if name is None:
             raise
         given = values.get(name)
         if name == "speed_rpm" and given is None:
@@ -226,7 +224,10 @@ ANALYZE = Analysis(
     "The diagnosis of a recorded vibration signal (analyze_file).",
     ANALYZE_INPUTS,
     run=diagnose,
-    files=plot_file("the squared envelope spectrum"),
+    files=plot_file(
+        "the squared envelope spectrum (and a race defect's passages averaged, entry and exit "
+        "marked)"
+    ),
 )
 
 __all__ = ["ANALYZE", "ANALYZE_INPUTS", "DIAGNOSIS_INPUTS", "diagnose"]

@@ -4,12 +4,11 @@ harmonic series above the noise floor of the squared envelope spectrum, by Smith
 Randall's methods; docs/capabilities/diagnosis.md)."""
 
 from ..analyses.diagnosis import ANALYZE
-from ._app import command_app
-from ._inputs import JsonOpt, _print_warnings, check_path, plot_option, save_plot_figure, takes
-from ._output import _emit_json, print_verdict
+from ._app import command_app, console
+from ._inputs import JsonOpt, _print_warnings, check_path, save_plot_figure, takes
+from ._output import _emit_json, escape, print_verdict
 
 app = command_app()
-PlotOpt = plot_option("the squared envelope spectrum")
 
 
 @app.command("analyze")
@@ -26,4 +25,14 @@ def analyze_command(values, json_output: JsonOpt = False, plot=None):
         _emit_json(out)
         return
     print_verdict(diag, values["signal_file"].name, diag.frequencies.bearing)
+    for size in out["defect_sizes"]:
+        width = (
+            f": {size['width_mm']:.3g} mm ({size['low_mm']:.3g}-{size['high_mm']:.3g}), "
+            f"{size['extent_deg']:.3g} deg"
+            if size["status"] == "sized"
+            else ""
+        )
+        race = size["race"].replace("_", " ")
+        console.print(f"defect width, {race}: [bold]{size['status']}{width}[/bold]")
+        console.print(f"[dim]{escape(size['reason'])}[/dim]")
     _print_warnings(out["warnings"])

@@ -173,6 +173,41 @@ def benchmark_command(
             ],
         )
     )
+    sized = [r for r in out["records"] if r["defect_size"] or r["defect_width_mm"] is not None]
+    if sized:
+        summary = out["sizing"]
+        console.print(
+            _table(
+                f"defect width: {summary['sized']} of {summary['labelled']} labelled widths "
+                "sized"
+                + (
+                    f", error median {summary['median_abs_error_percent']:.3g} %, largest "
+                    f"{summary['max_abs_error_percent']:.3g} %"
+                    if summary["sized"]
+                    else ""
+                ),
+                ["file", "label [mm]", "status", "width [mm]", "interval [mm]", "error [%]"],
+                [
+                    [
+                        r["file"],
+                        "-" if r["defect_width_mm"] is None else f"{r['defect_width_mm']:.3g}",
+                        (r["defect_size"] or {}).get("status", "-"),
+                        "-"
+                        if not (r["defect_size"] or {}).get("width_mm")
+                        else f"{r['defect_size']['width_mm']:.3g}",
+                        "-"
+                        if not (r["defect_size"] or {}).get("width_mm")
+                        else f"{r['defect_size']['low_mm']:.3g}-{r['defect_size']['high_mm']:.3g}",
+                        "-"
+                        if r["sizing_error_percent"] is None
+                        else f"{r['sizing_error_percent']:+.0f}",
+                    ]
+                    for r in sized
+                ],
+                words=True,
+                whole=0,
+            )
+        )
     for r in out["records"]:
         for warning in r.get("warnings") or []:
             console.print(f"[yellow]{escape(r['file'])}: {escape(warning)}[/yellow]")

@@ -17,7 +17,9 @@ Modules, one sub-problem each:
 - :mod:`.speed`: the shaft speed the signal shows;
 - :mod:`.verdict`: masking of discrete lines, the greedy decision, labelled lines;
 - :mod:`.result`: :class:`Diagnosis`; :mod:`.analysis`: :func:`analyze_signal`;
-- :mod:`.benchmark`: :func:`run_benchmark` and :class:`BenchmarkResult`.
+- :mod:`.benchmark`: :func:`run_benchmark` and :class:`BenchmarkResult`;
+- :mod:`.sizing`: :func:`size_defect`, the width of a race defect found, from the entry
+  and exit events of its passages (Sawalhi & Randall, MSSP 25 (2011) 846-870).
 
 Sources: Randall R. B., Antoni J., "Rolling element bearing diagnostics - A tutorial",
 MSSP 25(2) (2011) 485-520; Smith W. A., Randall R. B., "Rolling element bearing diagnostics
@@ -42,6 +44,7 @@ from .families import FAMILIES, TOLERANCES
 from .methods import METHODS
 from .recording import analyze_file
 from .result import Diagnosis, measured_ball_defect_frequency
+from .sizing import DefectSize, size_defect
 from .verdict import NO_FAULT
 
 __all__ = [
@@ -57,10 +60,12 @@ __all__ = [
     "SIMULATED_METHODS",
     "TOLERANCES",
     "BenchmarkResult",
+    "DefectSize",
     "Diagnosis",
     "analyze_file",
     "analyze_signal",
     "measured_ball_defect_frequency",
     "peak_label",
     "run_benchmark",
+    "size_defect",
 ]

@@ -189,6 +189,7 @@ def analyze_signal(
     resolution: float | None = None,
     count: int = COUNT,
     harmonics: int = HARMONICS,
+    radial_load: float | None = None,
 ) -> Diagnosis:
     """Diagnose a vibration record: which fault families stand out of the noise.
 
@@ -241,10 +242,16 @@ def analyze_signal(
         Envelope lines listed in ``peaks``.
     harmonics : int
         Highest harmonic order tested per family.
+    radial_load : float, optional
+        Radial load on the bearing [N], for the width of a race defect found
+        (:attr:`Diagnosis.defect_sizes`, :func:`.sizing.size_defect`); default an assumed
+        load with its range in the interval.
 
     Returns
     -------
     Diagnosis
+        Its ``defect_sizes`` - the width of each race defect found, from the entry and
+        exit events of its passages (:mod:`.sizing`) - are read when first asked for.
 
     Examples
     --------
@@ -284,6 +291,7 @@ def analyze_signal(
     if isinstance(count, bool) or not isinstance(count, (int, np.integer)) or count < 1:
         raise InputError("count", count, "an integer >= 1")
     supply = _positive("supply_frequency", supply_frequency, "a frequency > 0 Hz")
+    load = _positive("radial_load", radial_load, "a radial load > 0 N")
     mesh = _positive("mesh_frequency", mesh_frequency, "a frequency > 0 Hz")
     metadata = getattr(signal_or_array, "metadata", {})
     warnings: list[str] = list(check_channel(x, channel or "the array", "signal_or_array"))
@@ -450,6 +458,7 @@ def analyze_signal(
         warnings=tuple(warnings),
         reason=reason,
         modulation=tuple(decision["modulation"]),
+        record=(x, fs, load),
     )
 
 

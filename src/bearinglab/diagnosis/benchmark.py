@@ -3,7 +3,9 @@
 The folder holds a ``labels.csv`` like the one of ``shared/data/real`` (one row per file:
 ``file``, ``channel``, ``sample_rate_hz``, ``speed_rpm``, the bearing as ``designation`` or
 ``balls``, ``ball_diameter_mm``, ``pitch_diameter_mm``, ``contact_angle_deg``, and the
-label ``fault``: normal, inner, outer, ball, cage; optional ``smith_randall_2015``). Each
+label ``fault``: normal, inner, outer, ball, cage; optional ``smith_randall_2015``, and
+``defect_width_mm``, the defect's width along the rolling direction, against which the
+width read from the record is scored, and ``radial_load_n``, the load it is read under). Each
 record is diagnosed by each method asked for on its own and by the methods together (the
 verdict users get); records run in parallel on the engine (:mod:`bearinglab.engine`: a
 pool of one process per job). :class:`BenchmarkResult` holds the per-record
@@ -18,6 +20,7 @@ import csv
 import io
 import math
 import re
+import statistics
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -195,8 +198,14 @@ def run_record(folder: str, row: dict, methods: tuple, keep_spectra: bool = True
         "smith_randall_2015": row.get("smith_randall_2015") or None,
         "expected": EXPECTED[label_fault(row["fault"])],
         "error": None,
+        "defect_size": None,
+        "defect_sizes": [],
+        "defect_width_mm": None,
+        "sizing_error_percent": None,
     }
     try:
+        out["defect_width_mm"] = _number(row, "defect_width_mm", "the defect's width in mm")
+        load = _number(row, "radial_load_n", "the radial load on the bearing in N")
         fs = _number(row, "sample_rate_hz", "the sample rate in Hz")
         record, channel = row.get("record_variable") or None, row.get("channel") or None
         try:
@@ -225,7 +234,13 @@ def run_record(folder: str, row: dict, methods: tuple, keep_spectra: bool = True
         )
         for name, ms in runs.items():
             d = analyze_signal(
-                signal, None, kin, channel=channel, methods=ms, shaft_speed="auto" if auto else None
+                signal,
+                None,
+                kin,
+                channel=channel,
+                methods=ms,
+                shaft_speed="auto" if auto else None,
+                radial_load=load,
             )
             out[name] = d.verdict
             if ms == methods:
@@ -235,6 +250,11 @@ def run_record(folder: str, row: dict, methods: tuple, keep_spectra: bool = True
                 out["measured_rpm"] = d.speed.get("measured_rpm")
                 out["warnings"] = list(d.warnings)
                 out["reason"] = d.reason
+                out["defect_sizes"] = [size.to_dict() for size in d.defect_sizes]
+                out["defect_size"] = out["defect_sizes"][0] if d.defect_sizes else None
+                width = d.defect_size.width if d.defect_size is not None else None
+                if width is not None and out["defect_width_mm"] is not None:
+                    out["sizing_error_percent"] = 100.0 * (width * 1e3 / out["defect_width_mm"] - 1)
                 if keep_spectra:
                     out["diagnosis"] = d
     except Exception as exc:  # noqa: BLE001 - one bad record must not stop the benchmark
@@ -254,7 +274,9 @@ class BenchmarkResult:
     ``expected``, ``verdict`` with the methods together, one key per method with its own
     verdict, ``right``, ``outcome`` (right, wrong, missed or error: :func:`outcome`),
     ``significance``, ``threshold``, ``measured_rpm``, ``warnings``, ``reason``,
-    ``error``); ``methods``; ``folder``.
+    ``error``, and the width of a race defect found: ``defect_size`` (the verdict's first
+    race fault's, null without one), ``defect_sizes``, the label's ``defect_width_mm`` and
+    ``sizing_error_percent``); ``methods``; ``folder``.
     """
 
     folder: str
@@ -297,8 +319,33 @@ class BenchmarkResult:
         column = column or "+".join(self.methods)
         return sum(r.get(column) == r["expected"] for r in self.records) / len(self.records)
 
+    def sizing(self) -> dict:
+        """The widths read against the labels': ``labelled`` (records whose label gives a
+        width), ``sized`` (of those, sized), ``median_abs_error_percent`` and
+        ``max_abs_error_percent`` (over those sized; null when none), and
+        ``sized_without_label`` (records sized whose label gives no width)."""
+        labelled = [r for r in self.records if r.get("defect_width_mm") is not None]
+        errors = [
+            abs(r["sizing_error_percent"])
+            for r in labelled
+            if r.get("sizing_error_percent") is not None
+        ]
+        unlabelled = [
+            r
+            for r in self.records
+            if r.get("defect_width_mm") is None
+            and (r.get("defect_size") or {}).get("status") == "sized"
+        ]
+        return {
+            "labelled": len(labelled),
+            "sized": len(errors),
+            "median_abs_error_percent": float(statistics.median(errors)) if errors else None,
+            "max_abs_error_percent": max(errors) if errors else None,
+            "sized_without_label": len(unlabelled),
+        }
+
     def to_dict(self) -> dict:
-        """JSON-ready summary and per-record table."""
+        """JSON-ready summary and per-record table (with the :meth:`sizing` summary)."""
         cols = self.columns
         return {
             "folder": self.folder,
@@ -311,6 +358,7 @@ class BenchmarkResult:
             "total": len(self.records),
             "confusion": {c: self.confusion(c) for c in cols},
             "recall": {c: self.recall(c) for c in cols},
+            "sizing": self.sizing(),
         }
 
     def to_pandas(self):

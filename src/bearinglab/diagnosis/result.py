@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cached_property
 
 from ..kinematics import DefectFrequencies
 from ..signal import EnvelopeSpectrum
@@ -48,6 +49,9 @@ class Diagnosis:
         ``given_rpm``, ``used_rpm``, ``source`` ("given" or "signal") and the search.
     sample_rate, channel, max_frequency, resolution, methods, tolerances, warnings
         As their names say (Hz, fractions).
+    record : tuple or None
+        (samples, sample rate [Hz], radial load [N] or None): what the sizing of a race
+        defect reads (:attr:`defect_sizes`).
     """
 
     verdict: str
@@ -69,6 +73,7 @@ class Diagnosis:
     warnings: tuple
     reason: str
     modulation: tuple = ()
+    record: tuple | None = field(default=None, repr=False, compare=False)
 
     # ---------------------------------------------------------- verdict views
     @property
@@ -115,10 +120,33 @@ class Diagnosis:
             return None
         return self.families["ball"]["fundamental_hz"]
 
+    @cached_property
+    def defect_sizes(self) -> tuple:
+        """The width of each race defect found, in the order of :attr:`faults`: a
+        :class:`.sizing.DefectSize` per race fault (:func:`.sizing.size_defect`, read
+        from the record when first asked for); empty without a race fault."""
+        from .sizing import RACES, size_defect
+
+        if self.record is None:
+            return ()
+        x, fs, load = self.record
+        bearing = self.frequencies.bearing
+        return tuple(
+            size_defect(x, fs, bearing, f, self.families[f]["fundamental_hz"], radial_load=load)
+            for f in self.faults
+            if f in RACES
+        )
+
+    @property
+    def defect_size(self):
+        """The :class:`.sizing.DefectSize` of the verdict's first race fault, or None."""
+        return self.defect_sizes[0] if self.defect_sizes else None
+
     # ---------------------------------------------------------- exports
     def to_dict(self) -> dict:
         """JSON-ready dict in engineering units (Hz, rpm; amplitudes in the squared
-        envelope's unit)."""
+        envelope's unit); ``defect_size`` (the verdict's first race fault's width, null
+        without one) and ``defect_sizes`` (every race fault's)."""
         return {
             "verdict": self.verdict,
             "likely_fault": self.likely_fault,
@@ -151,6 +179,8 @@ class Diagnosis:
             "kinematic": self.frequencies.to_dict(),
             "peaks": [dict(p) for p in self.peaks],
             "ball_defect_frequency_hz": self.ball_defect_frequency_hz,
+            "defect_size": None if self.defect_size is None else self.defect_size.to_dict(),
+            "defect_sizes": [s.to_dict() for s in self.defect_sizes],
             "warnings": list(self.warnings),
         }
 
@@ -185,7 +215,9 @@ class Diagnosis:
         return pd.DataFrame(rows)
 
     def plot(self, path=None, ax=None):
-        """Squared envelope spectrum with the kinematic lines and the lines found.
+        """Squared envelope spectrum with the kinematic lines and the lines found; on a new
+        figure, below it, the event-aligned average of each race defect's passages with
+        its entry and exit marked (:meth:`.sizing.DefectSize.plot`).
 
         Parameters
         ----------
@@ -193,17 +225,24 @@ class Diagnosis:
             Also save the figure there (.png, .svg or .pdf; atomically; the figure is
             closed).
         ax : matplotlib Axes, optional
-            Where to draw; a new figure otherwise.
+            Where to draw the spectrum alone; a new figure otherwise.
 
         Returns
         -------
         (figure, axes)
+            The spectrum's axes (the averages' are ``figure.axes[1:]``).
         """
         from ..plotting import _pyplot, draw_spectrum, save_figure
 
         plt = _pyplot()
+        sizes = []
         if ax is None:
-            fig, ax = plt.subplots(figsize=(11, 4.5))
+            sizes = [s for s in self.defect_sizes if s.lag.size]
+            fig = plt.figure(figsize=(11, 4.5 + 5.0 * len(sizes)))
+            grid = fig.add_gridspec(
+                1 + 2 * len(sizes), 1, height_ratios=[4.5] + [2.5] * 2 * len(sizes)
+            )
+            ax = fig.add_subplot(grid[0])
         else:
             fig = ax.figure
         method = self.to_dict()["method_shown"]
@@ -225,6 +264,9 @@ class Diagnosis:
             # shaft harmonics are not a bearing fault: only fault lines and sidebands in colour
             highlight=lambda p: p.get("matched") in FREQUENCY.values() or p.get("sideband_of"),
         )
+        for i, size in enumerate(sizes):
+            top = fig.add_subplot(grid[1 + 2 * i])
+            size.plot(ax=(top, fig.add_subplot(grid[2 + 2 * i], sharex=top)))
         fig.tight_layout()
         if path is not None:
             try:

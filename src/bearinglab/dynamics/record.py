@@ -145,7 +145,9 @@ def simulate_record(
         )
         check_record_length(kin, options.get("duration", 1.0))
     sim = simulate(bearing, condition, defects, progress=progress, **options)
-    diag = analyze_signal(sim.signal, None, sim.kinematic, channel="acc_y")
+    # the simulated load: what the ball bridges at a race defect's edges (its width)
+    load = condition.radial_load if condition.radial_load > 0 else None
+    diag = analyze_signal(sim.signal, None, sim.kinematic, channel="acc_y", radial_load=load)
     spec, lines = spectrum_lines(
         sim.signal.channel(spectrum_channel),
         sim.signal.sample_rate,

@@ -51,14 +51,58 @@ def benchmark_page(result) -> str:
         summary,
         figure(result.plot()[0], "Confusion matrix (methods together)", 60),
         table(["file", "label", "Smith & Randall", *cols, "right"], rows, "Records", numeric=()),
+        _sizing_table(result),
     ]
     for r in result.records:
         diag = result.diagnoses.get(r["file"])
         body.append(f"<h3>{r['file']}: {r['verdict']} (label {r['fault']})</h3>")
         body.append(paragraph(r.get("reason") or r.get("error") or ""))
         if diag is not None:
-            body.append(figure(diag.plot()[0], f"{r['file']}: squared envelope spectrum"))
+            for size in diag.defect_sizes:
+                body.append(paragraph(f"Defect width ({size.status}): {size.reason}"))
+            caption = f"{r['file']}: squared envelope spectrum" + (
+                "; below, the passages of the race defect averaged, aligned on the exit"
+                if any(size.lag.size for size in diag.defect_sizes)
+                else ""
+            )
+            body.append(figure(diag.plot()[0], caption))
     return page("bearinglab benchmark", [f"{result.folder}"], "".join(body))
+
+
+def _sizing_table(result) -> str:
+    """The width read from each record with a race fault or a labelled width (empty when
+    there is none)."""
+    rows = []
+    for r in result.records:
+        size = r.get("defect_size") or {}
+        if not size and r.get("defect_width_mm") is None:
+            continue
+        sized = size.get("width_mm") is not None
+        rows.append(
+            [
+                r["file"],
+                r.get("defect_width_mm"),
+                size.get("status", "-"),
+                size.get("width_mm") if sized else None,
+                f"{size['low_mm']:.3g}-{size['high_mm']:.3g}" if sized else "",
+                r.get("sizing_error_percent"),
+            ]
+        )
+    if not rows:
+        return ""
+    s = result.sizing()
+    caption = f"Defect width: {s['sized']} of {s['labelled']} labelled widths sized" + (
+        f", error median {s['median_abs_error_percent']:.3g} %, largest "
+        f"{s['max_abs_error_percent']:.3g} %"
+        if s["sized"]
+        else ""
+    )
+    return table(
+        ["file", "label [mm]", "status", "width [mm]", "interval [mm]", "error [%]"],
+        rows,
+        caption,
+        numeric=(1, 3, 5),
+    )
 
 
 def write_benchmark_page(result, path) -> Path:
