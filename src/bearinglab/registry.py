@@ -17,10 +17,12 @@ def registry() -> dict:
     """command name -> :class:`~bearinglab.analyses.base.Analysis` (imported on first
     use: the command line's start-up imports none of them)."""
     from .analyses import ANALYSES
-    from .analyses.diagnosis import ANALYZE
+    from .analyses.diagnosis import ANALYZE, BENCHMARK
     from .analyses.foundation import CONTACT, INFO
     from .analyses.mechanics import STIFFNESS_MAP
+    from .dataset.request import DATASET
     from .report.request import REPORT
+    from .study.request import STUDY
     from .trend.request import TREND
     from .validation.run import _entry
 
@@ -33,12 +35,15 @@ def registry() -> dict:
         ANALYSES["ring-modes"],
         ANALYSES["simulate"],
         ANALYZE,
+        BENCHMARK,
         TREND,
         ANALYSES["noise"],
         ANALYSES["friction"],
         ANALYSES["life"],
         _entry(),
         REPORT,
+        STUDY,
+        DATASET,
     ]
     return {entry.name: entry for entry in entries}
 

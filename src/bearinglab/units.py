@@ -459,7 +459,7 @@ DIMENSIONLESS: dict[str, str] = {
     "above_limit": "the tests (indicator:channel) whose limit a record is above",
     "baseline": "the baseline: running-in records left out, its first and last times",
     "baseline_records": "records in the baseline",
-    "settle_records": "running-in records left out of the baseline",
+    "running_in_records": "running-in records left out of the baseline",
     "rule": "the alarm rule and its false-alarm probabilities",
     "statistic": "what each test compares with its limit",
     "tail_model": "the model of the baseline's upper tail",

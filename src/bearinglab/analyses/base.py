@@ -69,8 +69,14 @@ class Analysis:
         a key that is not one of the options is refused, naming the closest option; an
         option that must be given and is not, and a value out of its range, are refused;
         ``keywords`` go to ``run`` (a progress callback)."""
+        from ..errors import InputError
+        from ..inputs import restate
+
         closed(values, self.options, self.name)
-        return self.run(values, **keywords)
+        try:
+            return self.run(values, **keywords)
+        except InputError as exc:  # a model's parameter, as the input that sets it
+            raise restate(exc, values, self.options) from None
 
     def evaluate(self, case: dict, seed: int) -> dict:
         """A study ``case``'s output columns; ``seed`` (the case's) draws its random inputs

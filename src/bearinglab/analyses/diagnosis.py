@@ -9,7 +9,7 @@ from dataclasses import replace
 
 from ..errors import InputError
 from ..inputs import BEARING, INPUTS, Input, bearing_from, bearing_warnings, input_for
-from .base import Analysis, plot_file
+from .base import FILES, Analysis, plot_file
 
 #: The diagnosis' inputs besides the bearing.
 DIAGNOSIS_INPUTS: dict[str, Input] = {
@@ -230,4 +230,78 @@ ANALYZE = Analysis(
     ),
 )
 
-__all__ = ["ANALYZE", "ANALYZE_INPUTS", "DIAGNOSIS_INPUTS", "diagnose"]
+
+def check_labelled_files(folder) -> None:
+    """Every recording labels.csv names must be there, before any record is diagnosed: a
+    benchmark that silently scores fewer records than its labels list misleads. The error
+    names labels.csv, its line and the missing file."""
+    from pathlib import Path
+
+    from ..diagnosis.benchmark import read_labels
+
+    folder = Path(folder)
+    for line, row in enumerate(read_labels(folder), start=2):
+        path = folder / row["file"]
+        if not path.is_file():
+            raise InputError(
+                f"{folder / 'labels.csv'} line {line}: file",
+                row["file"],
+                "a recording in the folder",
+                f"there is no {path}",
+            )
+
+
+def benchmark(values: dict, progress=None, keep_spectra: bool = True):
+    """The ``benchmark`` request: the diagnosis over the labelled recordings of `folder`
+    (:func:`bearinglab.diagnosis.run_benchmark`), every file the labels name checked first;
+    a benchmark none of whose records could be diagnosed is an error with the first
+    record's reason, not a table of errors."""
+    from ..diagnosis import run_benchmark
+    from ..errors import BearinglabError
+
+    check_labelled_files(values["folder"])
+    result = run_benchmark(
+        values["folder"],
+        methods=values.get("method") or None,
+        jobs=values.get("jobs") or 1,
+        progress=progress,
+        keep_spectra=keep_spectra,
+    )
+    records = result.to_dict()["records"]
+    errors = [r for r in records if r["error"]]
+    if errors and len(errors) == len(records):
+        first, n, where = errors[0], len(errors), values["folder"]
+        raise BearinglabError(
+            (
+                f"none of the {n} records of {where} could be diagnosed; the first, "
+                if n > 1
+                else f"the one record of {where} could not be diagnosed: "
+            )
+            + f"{first['file']}: {' '.join(str(first['error']).split())}"
+        )
+    return result
+
+
+BENCHMARK = Analysis(
+    "benchmark",
+    "The diagnosis over a folder of labelled recordings (run_benchmark).",
+    {
+        "folder": INPUTS["folder"].with_(
+            help="Folder with a labels.csv (file, channel, sample_rate_hz, speed_rpm, the "
+            "bearing, fault) and the recordings it names.",
+        ),
+        "method": DIAGNOSIS_INPUTS["method"].with_(
+            help="raw, cpw, drs-sk, all (the three) or ies (repeatable or comma-separated); "
+            "each is also run on its own; default cpw."
+        ),
+        "jobs": INPUTS["jobs"].with_(help="Records diagnosed at once (processes)."),
+    },
+    run=benchmark,
+    files={
+        "html": FILES["html"].with_(
+            help="Also write a page with each record's envelope spectrum and the lines it matched."
+        )
+    },
+)
+
+__all__ = ["ANALYZE", "ANALYZE_INPUTS", "BENCHMARK", "DIAGNOSIS_INPUTS", "benchmark", "diagnose"]

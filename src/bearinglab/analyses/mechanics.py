@@ -472,13 +472,8 @@ STIFFNESS_MAP = Analysis(
             kind="text", default="0", help="Speeds [rpm], same forms."
         ),
         **inputs("gyroscopic", "race_control"),
-        "workers": Input(
-            "integer",
-            0,
-            "Worker processes (default 0: all cores).",
-            low=0,
-            high=64,
-            what="a number of workers",
+        "workers": INPUTS["workers"].with_(
+            default=0, help="Worker processes (default 0: all cores).", low=0, high=64
         ),
     },
     run=stiffness_map_request,

@@ -401,13 +401,13 @@ def _simulate_columns(outcome: SimulateOutcome) -> dict:
 
 _FAULTS = {
     "fault": Input("text", "none", "none, outer, inner, ball or '+'-joined (outer+inner)."),
-    "defect_width_mm": Input(
-        "number", 0.5, "Width of the fault's defects [mm].", low=0.0, low_open=True
+    "defect_width_mm": INPUTS["defect_width_mm"].with_(
+        default=0.5, help="Width of the fault's defects [mm]."
     ),
-    "defect_depth_mm": Input(
-        "number", None, "Depth of the fault's defects [mm].", low=0.0, low_open=True
+    "defect_depth_mm": INPUTS["defect_depth_mm"].with_(help="Depth of the fault's defects [mm]."),
+    "defect_angle_deg": INPUTS["defect_angle_deg"].with_(
+        help="Position of the fault's defects [deg]."
     ),
-    "defect_angle_deg": Input("number", None, "Position of the fault's defects [deg]."),
 }
 
 SIMULATE = Analysis(
@@ -422,14 +422,7 @@ SIMULATE = Analysis(
             help="Axial load [N] (the models are planar: not used)."
         ),
         **inputs("defect"),
-        "dynamic_model": Input(
-            "text",
-            "rigid",
-            "rigid: seed 003's 4-DOF rigid-ring model (no slip); slip: seed 004's model with "
-            "ball slip and a cage.",
-            choices=("rigid", "slip"),
-            aliases=("model",),
-        ),
+        **inputs("dynamic_model"),
         "duration_s": INPUTS["duration_s"].with_(
             default=1.0, help="Length of the recorded signal [s]."
         ),
@@ -464,16 +457,7 @@ SIMULATE = Analysis(
             "Slip model: volume fraction of oil in the oil-air mixture that drags balls and "
             "cage [-], 0-1 (default 0.03; Harris & Kotzalas give 0.01-0.05).",
         ),
-        "noise_ms2": Input(
-            "number",
-            0.0,
-            "RMS white noise added to the accelerations [m/s^2].",
-            low=0.0,
-            high=1e6,
-            what="an RMS acceleration",
-            seeded=True,
-            sets="noise",
-        ),
+        **inputs("noise_ms2"),
         **_FORMS,
         "seed": inputs("seed")["seed"].with_(
             help="Seed of the noise (default: fresh noise) and of the random form errors "

@@ -1,117 +1,24 @@
 """The ``benchmark`` command: the diagnosis over a folder of labelled recordings
-(:func:`bearinglab.diagnosis.run_benchmark`; docs/capabilities/diagnosis.md)."""
+(the registry's ``benchmark``: bearinglab.analyses.diagnosis; docs/capabilities/diagnosis.md)."""
 
-from pathlib import Path
-from typing import Annotated
-
-import typer
-
-from ..analyses.diagnosis import DIAGNOSIS_INPUTS
-from ..errors import BearinglabError, InputError
-from ..inputs import Input
+from ..analyses.diagnosis import BENCHMARK
 from ._app import command_app, console
-from ._inputs import JsonOpt, OptionError, takes
+from ._inputs import JsonOpt, takes
 from ._output import _emit_json, _table, escape, progress_bar
 from ._preflight import output_file
 
 app = command_app()
 
 
-def _check_files(folder: Path) -> None:
-    """Every recording labels.csv names must be there, before any record is diagnosed: a
-    benchmark that silently scores fewer records than its labels list misleads. One line
-    naming labels.csv, its line and the missing file."""
-    from ..diagnosis.benchmark import read_labels
-
-    try:
-        rows = read_labels(folder)
-    except InputError as exc:
-        if exc.parameter != "folder":
-            raise
-        raise OptionError("FOLDER", str(folder), exc.allowed, exc.hint) from None
-    for line, row in enumerate(rows, start=2):
-        path = folder / row["file"]
-        if not path.is_file():
-            raise OptionError(
-                f"{folder / 'labels.csv'} line {line}: file",
-                row["file"],
-                "a recording in the folder",
-                f"there is no {path}",
-            )
-
-
-def _check_read(out: dict) -> None:
-    """A benchmark none of whose records could be diagnosed is an error (exit 2) with the
-    first record's reason, not a table of errors."""
-    errors = [r for r in out["records"] if r["error"]]
-    if errors and len(errors) == len(out["records"]):
-        first = errors[0]
-        n = len(errors)
-        where = out["folder"]
-        raise BearinglabError(
-            (
-                f"none of the {n} records of {where} could be diagnosed; the first, "
-                if n > 1
-                else f"the one record of {where} could not be diagnosed: "
-            )
-            + f"{first['file']}: {' '.join(str(first['error']).split())}"
-        )
-
-
 @app.command("benchmark")
-@takes(
-    argument="folder",
-    folder=Input(
-        "path",
-        ...,
-        "Folder with a labels.csv (file, channel, sample_rate_hz, speed_rpm, the bearing, "
-        "fault) and the recordings it names.",
-    ),
-    method=DIAGNOSIS_INPUTS["method"].with_(
-        help="raw, cpw, drs-sk, all (the three) or ies (repeatable or comma-separated); each "
-        "is also run on its own; default cpw."
-    ),
-)
-def benchmark_command(
-    values,
-    jobs: Annotated[int, typer.Option("--jobs", help="Records diagnosed at once (processes).")] = 1,
-    html: Annotated[
-        Path | None,
-        typer.Option(
-            "--html",
-            help="Also write a page with each record's envelope spectrum and the lines it matched.",
-        ),
-    ] = None,
-    json_output: JsonOpt = False,
-):
+@takes(argument="folder", files=BENCHMARK.files, **BENCHMARK.command_options)
+def benchmark_command(values, json_output: JsonOpt = False, html=None):
     """Run the diagnosis over a folder of labelled recordings."""
-    folder, method = values["folder"], values["method"]
+    folder = values["folder"]
     output_file("--html", html, (".html", ".htm"))
-    _check_files(folder)
-    from ..diagnosis import run_benchmark
-
     with progress_bar("records", enabled=not json_output, unit="records") as progress:
-        try:
-            result = run_benchmark(
-                folder,
-                methods=method or None,
-                jobs=jobs,
-                progress=progress,
-                keep_spectra=html is not None,
-            )
-        except InputError as exc:
-            flag = {
-                "folder": "FOLDER",
-                "methods": "--method",
-                "jobs": "--jobs",
-            }.get(exc.parameter)
-            if flag is None:
-                raise
-            raise OptionError(
-                flag, exc.value if flag != "FOLDER" else str(folder), exc.allowed, exc.hint
-            ) from None
+        result = BENCHMARK(values, progress=progress, keep_spectra=html is not None)
     out = result.to_dict()
-    _check_read(out)
     if html is not None:
         from ..report.benchmark import write_benchmark_page
 

@@ -3,13 +3,9 @@ baseline, an alarm at a stated false-alarm probability, the diagnosis at and aft
 and the ISO 20816 severity (:func:`bearinglab.trend.trend_records`;
 docs/capabilities/trend.md)."""
 
-from typing import Annotated
-
-import typer
-
 from ..trend.request import TREND
 from ._app import command_app, console
-from ._inputs import JsonOpt, SchedulerOpt, _print_warnings, plot_option, save_plot_figure, takes
+from ._inputs import JsonOpt, _print_warnings, plot_option, save_plot_figure, takes
 from ._output import _emit_json, _table, escape, progress_bar
 from ._preflight import output_file
 from ._preflight import scheduler as preflight_scheduler
@@ -20,23 +16,13 @@ PlotOpt = plot_option("the indicators over time, with the baseline, the limits a
 
 @app.command("trend")
 @takes(argument="folder", files=TREND.files, **TREND.command_options)
-def trend_command(
-    values,
-    jobs: Annotated[
-        int,
-        typer.Option("--jobs", help="Worker processes (a pool of processes); 1: this process."),
-    ] = 1,
-    scheduler: SchedulerOpt = None,
-    json_output: JsonOpt = False,
-    html=None,
-    plot=None,
-):
+def trend_command(values, json_output: JsonOpt = False, html=None, plot=None):
     """Trend health indicators over a series of recordings and raise an alarm."""
     output_file("--plot", plot, (".png", ".svg", ".pdf"), figure=True)
     output_file("--html", html, (".html", ".htm"))
-    preflight_scheduler(scheduler, environment=False)
+    preflight_scheduler(values["scheduler"], environment=False)
     with progress_bar("records", enabled=not json_output, unit="records") as progress:
-        result = TREND(values, jobs=jobs, scheduler=scheduler, progress=progress)
+        result = TREND(values, progress=progress)
     if plot is not None:
         save_plot_figure(result.plot()[0], plot)
     if html is not None:
@@ -91,7 +77,7 @@ def _print(out: dict) -> None:
         [
             "baseline",
             f"{out['baseline_records']} records, {_seconds(base['start_s'])} to "
-            f"{_seconds(base['end_s'])} (after {base['settle_records']} running-in records)",
+            f"{_seconds(base['end_s'])} (after {base['running_in_records']} running-in records)",
         ],
         [
             "rule",

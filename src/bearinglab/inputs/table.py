@@ -294,6 +294,63 @@ INPUTS: dict[str, Input] = {
         low_open=True,
         what="a duration",
     ),
+    "dynamic_model": Input(
+        "text",
+        "rigid",
+        "rigid: seed 003's 4-DOF rigid-ring model (no slip); slip: seed 004's model with ball "
+        "slip and a cage.",
+        choices=("rigid", "slip"),
+        aliases=("model",),
+        sets="model",
+    ),
+    "defect_width_mm": _n(None, "Width of a defect along the rolling direction [mm].", **_LENGTH),
+    "defect_depth_mm": _n(None, "Depth of a defect [mm].", **_LENGTH),
+    "defect_angle_deg": _n(
+        None,
+        "Position of an outer-race defect, from +x towards +y [deg] (270 or -90: the bottom, "
+        "the middle of the load zone).",
+        -360.0,
+        360.0,
+        what="an angle",
+    ),
+    "noise_ms2": _n(
+        0.0,
+        "RMS white noise added to the accelerations [m/s^2].",
+        0.0,
+        1e6,
+        what="an RMS acceleration",
+        seeded=True,
+        sets="noise",
+    ),
+    # ---------------------------------------------------------------- where long work runs
+    "jobs": Input(
+        "integer",
+        1,
+        "Worker processes (a pool of processes forked from the command); 1: this process.",
+        low=1,
+        what="a number of processes",
+    ),
+    "scheduler": Input(
+        "text",
+        None,
+        "tcp://HOST:PORT of a running dask scheduler (default: $DASK_SCHEDULER_ADDRESS, else "
+        "a LocalCluster of this machine's cores); 'serial' runs in this process.",
+    ),
+    "workers": Input(
+        "integer",
+        None,
+        "Worker processes of the LocalCluster (default: the cores).",
+        low=1,
+        what="a number of workers",
+    ),
+    "partition_size": Input(
+        "integer",
+        None,
+        "Cases (records) per partition (default: from the analysis and the count).",
+        low=1,
+        what="a number of cases",
+    ),
+    "yes": Input("bool", False, "Run more than the confirmation limit."),
     # ---------------------------------------------------------------- form errors, defects
     "waviness": Input(
         "texts",

@@ -8,7 +8,17 @@ from dataclasses import replace
 
 from ..analyses.base import FILES, Analysis, plot_file
 from ..errors import InputError
-from ..inputs import BEARING, INPUTS, Input, bearing_from, bearing_warnings, check, speed_from
+from ..inputs import (
+    BEARING,
+    INPUTS,
+    Input,
+    bearing_from,
+    bearing_warnings,
+    check,
+    input_for,
+    restate,
+    speed_from,
+)
 from .alarm import FALSE_ALARM_PER_HOUR, MAX_WINDOW_RECORDS, PERSISTENCE
 from .analysis import BASELINE, SETTLE
 
@@ -18,22 +28,32 @@ TREND_INPUTS: dict[str, Input] = {
         help="Folder of recordings: PRONOSTIA snapshots acc_NNNNN.csv as published, or records "
         "analyze reads (.npz, .csv, .wav, .mat) with an index.csv (file, time_s) or a time_s "
         "in their metadata.",
+        sets=("path", "index.csv", "time_s", "time"),
     ),
     "channel": INPUTS["channel"].with_(
         kind="texts",
         help="Channel to trend (repeatable; PRONOSTIA: horizontal, vertical); default all. The "
         "diagnosis uses the first.",
+        sets="channels",
     ),
     "sample_rate_hz": INPUTS["sample_rate_hz"].with_(
         help="Sample rate [Hz] where the files do not store it (PRONOSTIA: 25600)."
     ),
-    "settle_s": Input(
+    "running_in_s": Input(
         "number",
         None,
-        f"Running-in left out of the baseline: the records of the first SETTLE seconds [s] "
+        f"Running-in left out of the baseline: the records of the first seconds [s] "
         f"(default {SETTLE:g} s).",
+        aliases=("settle_s",),
+        sets="settle",
     ),
-    "settle_records": Input("integer", None, "Running-in as a number of records instead."),
+    "running_in_records": Input(
+        "integer",
+        None,
+        "Running-in as a number of records instead.",
+        aliases=("settle_records",),
+        sets="settle_records",
+    ),
     "baseline_s": Input(
         "number",
         None,
@@ -92,41 +112,31 @@ TREND_INPUTS: dict[str, Input] = {
         "group2-flexible (ISO 20816-3), class1..class4 (ISO 10816-1); needs unit.",
     ),
     "speed_rpm": INPUTS["speed_rpm"].with_(help="Shaft speed [rpm], for the diagnosis."),
+    "jobs": INPUTS["jobs"].with_(sets="workers"),
+    "scheduler": INPUTS["scheduler"].with_(
+        help="A dask scheduler address (tcp://HOST:PORT), 'local' or 'serial', instead of `jobs`."
+    ),
     **{name: INPUTS[name] for name in BEARING},
 }
 TREND_INPUTS["designation"] = TREND_INPUTS["designation"].with_(
     help="Bearing designation, or give the geometry: with `speed_rpm`, each fault family's "
-    "significance by the diagnosis."
+    "significance by the diagnosis.",
+    sets="bearing",
 )
 
-#: Library parameter -> the input to blame.
-_NAMES = {
-    "path": "folder",
-    "index.csv": "folder",
-    "time_s": "folder",
-    "time": "folder",
-    "channels": "channel",
-    "sample_rate": "sample_rate_hz",
-    "settle": "settle_s",
-    "baseline": "baseline_s",
-    "persistence": "persistence_s",
-    "max_frequency": "max_frequency_hz",
-    "shaft_speed": "speed_rpm",
-    "bearing": "designation",
-    "workers": "jobs",
-}
-#: Inputs the library's error names by the file or channel at fault, not the value given.
+#: Inputs whose errors name the file or channel at fault: the error's value, not the one
+#: given, is shown.
 _AT_FAULT = ("folder", "channel", "learn_from")
 
 
-def trend_from(values: dict, *, jobs: int = 1, scheduler=None, progress=None):
-    """The TrendResult of a request (``values``: name -> value in its unit), on ``jobs``
-    processes or the dask ``scheduler``; its warnings include the bearing's.
+def trend_from(values: dict, *, progress=None):
+    """The TrendResult of a request (``values``: name -> value in its unit), on `jobs`
+    processes or the dask `scheduler`; its warnings include the bearing's.
     ``progress(done, total)`` is called as records are read."""
     from .analysis import trend_records
 
     check(values, TREND_INPUTS)
-    for seconds in ("settle", "baseline", "persistence"):
+    for seconds in ("running_in", "baseline", "persistence"):
         if values.get(f"{seconds}_s") is not None and values.get(f"{seconds}_records") is not None:
             raise InputError(
                 f"{seconds}_records",
@@ -142,8 +152,8 @@ def trend_from(values: dict, *, jobs: int = 1, scheduler=None, progress=None):
             values["folder"],
             channels=values.get("channel") or None,
             sample_rate=values.get("sample_rate_hz"),
-            settle=SETTLE if values.get("settle_s") is None else values["settle_s"],
-            settle_records=values.get("settle_records"),
+            settle=SETTLE if values.get("running_in_s") is None else values["running_in_s"],
+            settle_records=values.get("running_in_records"),
             baseline=BASELINE if values.get("baseline_s") is None else values["baseline_s"],
             baseline_records=values.get("baseline_records"),
             false_alarm_per_hour=values.get("false_alarm_per_hour", FALSE_ALARM_PER_HOUR),
@@ -157,17 +167,15 @@ def trend_from(values: dict, *, jobs: int = 1, scheduler=None, progress=None):
             machine=values.get("machine"),
             bearing=bearing,
             shaft_speed=shaft_speed,
-            jobs=jobs,
-            scheduler=scheduler,
+            jobs=values.get("jobs") or 1,
+            scheduler=values.get("scheduler"),
             progress=progress,
         )
     except InputError as exc:
-        name = _NAMES.get(exc.parameter, exc.parameter)
-        given = {**values, "jobs": jobs, "scheduler": scheduler}
-        if name not in TREND_INPUTS and name not in ("jobs", "scheduler"):
-            raise
-        value = exc.value if name in _AT_FAULT else given.get(name, exc.value)
-        raise InputError(name, value, exc.allowed, exc.hint) from None
+        name = input_for(exc.parameter, TREND_INPUTS)
+        if name in _AT_FAULT:
+            raise InputError(name, exc.value, exc.allowed, exc.hint) from None
+        raise restate(exc, values, TREND_INPUTS) from None
     if bearing is None:
         return result
     return replace(result, warnings=(*result.warnings, *bearing_warnings(bearing, decoded)))

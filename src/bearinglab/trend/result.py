@@ -340,7 +340,7 @@ class TrendResult:
             "records": [self._record(i, above, zones) for i in range(n)],
             "baseline_records": self.baseline_records,
             "baseline": {
-                "settle_records": self.settle_records,
+                "running_in_records": self.settle_records,
                 "start_s": float(self.times[self.settle_records]),
                 "end_s": float(self.times[self.baseline_stop - 1]),
             },
