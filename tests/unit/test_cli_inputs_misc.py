@@ -73,7 +73,7 @@ def test_study_seed_repeats_and_workers_without_effect_are_named(tmp_path, capsy
         "2",
     )
     seed, repeats, workers = _no_effect(d["warnings"])
-    assert seed.startswith("--seed: no effect without random inputs")
+    assert seed.startswith("--study-seed: no effect without random inputs")
     assert repeats.startswith("--repeats 2: the 2 repeats of each grid point are identical")
     assert workers.startswith("--workers: no effect with the scheduler 'serial'")
     assert d["cases"] == 4
@@ -90,7 +90,7 @@ def test_study_seed_repeats_and_workers_without_effect_are_named(tmp_path, capsy
     # the table shows the warnings too
     assert main([*_study(tmp_path, "table", "--set", "speed_rpm=1000", "--seed", "1")]) == 0
     out = " ".join(capsys.readouterr().out.split())
-    assert "warning: --seed: no effect without random inputs" in out
+    assert "warning: --study-seed: no effect without random inputs" in out
 
 
 def test_study_repeats_with_a_cases_file_are_named(tmp_path, capsys):
@@ -129,12 +129,12 @@ def _dataset(tmp_path, name, *args):
 
 def test_dataset_sample_rate_below_the_path_names_the_sample_rate(tmp_path, capsys):
     err = run_error(capsys, *_dataset(tmp_path, "slow", "--sample-rate-hz", "500"))
-    assert err.startswith("error: --sample-rate-hz = 500 is not allowed")
+    assert err.startswith("error: --sample-rate-hz = '500' is not allowed")
     assert "at least 10000 Hz" in err and "4500 Hz" in err and "--resonance" not in err
     assert not (tmp_path / "slow").exists()
     # a resonance the user chose above the default sample rate still names --resonance
     err = run_error(capsys, *_dataset(tmp_path, "high", "--resonance", "9500@0.05"))
-    assert err.startswith("error: --resonance = 9500") and "9000 Hz" in err
+    assert err.startswith("error: --resonance = '9500@0.05'") and "9000 Hz" in err
     assert not (tmp_path / "high").exists()
     with pytest.raises(InputError) as exc:
         DatasetSpec(records=1, sample_rate_hz=500.0)
@@ -152,14 +152,14 @@ def test_dataset_options_without_effect_are_named(tmp_path, capsys):
     )
     assert _no_effect(healthy["warnings"]) == [
         "--defect-depth-mm: no effect with --faults none (no record has a defect)",
-        "--waviness-orders: no effect at --waviness-um 0 (no waviness)",
+        "--waviness-orders: no effect at --waviness-amplitude-um 0 (no waviness)",
         "--workers: no effect with the scheduler 'serial' (it sizes a LocalCluster only)",
     ]
     inner = run_json(
         capsys, *_dataset(tmp_path, "inner", "--faults", "inner", "--defect-position-deg", "-90")
     )
     (position,) = _no_effect(inner["warnings"])
-    assert position.startswith("--defect-position-deg: no effect without outer or compound")
+    assert position.startswith("--defect-angle-deg: no effect without outer or compound")
     # used: a compound fault can be on the outer race, waviness above 0 has orders
     used = run_json(
         capsys,

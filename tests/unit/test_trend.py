@@ -519,7 +519,7 @@ def test_cli_tables(capsys, failing):
         (["HEALTHY", "--unit", "V"], "--unit"),
         (["HEALTHY", "--machine", "class1"], "--unit"),
         (["HEALTHY", "--speed-rpm", "1800"], "--designation"),
-        (["HEALTHY", "--settle-s", "10", "--settle-records", "3"], "--settle-records"),
+        (["HEALTHY", "--settle-s", "10", "--settle-records", "3"], "--running-in-records"),
     ],
 )
 def test_cli_bad_input_is_one_line_and_writes_nothing(capsys, tmp_path, healthy, args, flag):

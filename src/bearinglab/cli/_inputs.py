@@ -125,6 +125,8 @@ def takes(
 
         @functools.wraps(func)
         def wrapper(**kwargs):
+            _GIVEN.clear()
+            _GIVEN.update(typed(kwargs.pop("ctx")))
             values = {name: kwargs.pop(name) for name in names}
             _SHOWN.clear()
             _SHOWN.update(shown)
@@ -142,6 +144,10 @@ def takes(
                     raise
                 raise type(exc)(in_flags(str(exc), shown)) from None
 
+        # typer hands the click context to a parameter annotated typer.Context: which
+        # options the user typed (given())
+        context = inspect.Parameter("ctx", inspect.Parameter.KEYWORD_ONLY, annotation=typer.Context)
+        params = [context, *params]
         wrapper.__signature__ = sig.replace(parameters=params)
         wrapper.__annotations__ = {p.name: p.annotation for p in params}
         del wrapper.__wrapped__
@@ -185,6 +191,15 @@ def load_n(flag: str, value: float | None, signed: bool = False) -> float | None
     except InputError as exc:
         raise OptionError(flag, value, exc.allowed) from None
     return value
+
+
+#: The inputs the user typed on the command line running (not left at their defaults).
+_GIVEN: set[str] = set()
+
+
+def given() -> set[str]:
+    """The inputs the user typed for the command running (for "no effect" warnings)."""
+    return set(_GIVEN)
 
 
 def typed(ctx: typer.Context) -> set[str]:

@@ -5,7 +5,7 @@ from rich.markup import escape
 
 from ..dataset.request import DATASET
 from ._app import command_app, console
-from ._inputs import JsonOpt, _print_warnings, takes, typed
+from ._inputs import JsonOpt, _print_warnings, given, takes
 from ._output import _emit_json, _table, progress_bar
 from ._preflight import scheduler as preflight_scheduler
 from .study import run_rows
@@ -20,12 +20,10 @@ def dataset(values, json_output: JsonOpt = False):
 
     Example: bearinglab dataset data/synth --records 40 --duration-s 0.25
     """
-    import click
-
     preflight_scheduler(values["scheduler"])
-    given = typed(click.get_current_context())
+    typed_ = given()
     with progress_bar("records", enabled=not json_output, unit="records") as progress:
-        r = DATASET(values, progress=progress, given=given)
+        r = DATASET(values, progress=progress, given=typed_)
     result, warnings = r.result, list(r.warnings)
     d = r.to_dict()
     if json_output:

@@ -5,7 +5,7 @@ from rich.markup import escape
 
 from ..study.request import STUDY
 from ._app import command_app, console
-from ._inputs import JsonOpt, _print_warnings, save_plot_figure, takes, typed
+from ._inputs import JsonOpt, _print_warnings, given, save_plot_figure, takes
 from ._output import _emit_json, _table, progress_bar
 from ._preflight import output_file
 from ._preflight import scheduler as preflight_scheduler
@@ -31,15 +31,13 @@ def study(values, json_output: JsonOpt = False, plot=None):
     Example: bearinglab study stiffness --set designation=6205 --set radial_load_n=0:2000:21
     --set speed_rpm=0,6000 -o stiffness-6205
     """
-    import click
-
     # the whole request is checked before any case runs: the figure's file and columns,
     # the output folder (run_study), the scheduler
     output_file("--plot", plot, (".png", ".svg", ".pdf"), figure=True)
     preflight_scheduler(values["scheduler"])
-    given = typed(click.get_current_context())
+    typed_ = given()
     with progress_bar(values["analysis"], enabled=not json_output, unit="cases") as progress:
-        r = STUDY(values, progress=progress, given=given, plot=plot)
+        r = STUDY(values, progress=progress, given=typed_, plot=plot)
     if plot is not None:
         save_plot_figure(r.plot()[0], plot)
     if json_output:

@@ -19,11 +19,11 @@ _RANGE = "V, LOW:HIGH (uniform) or A,B,C (one of)"
 
 def _ranged(name: str, default: str, help_: str, table: bool = True) -> Input:
     """An input drawn per record: the table's ``name`` read as a range, or the data set's
-    own when it is not in the table."""
+    own when it is not in the table; it sets the data set's parameter of its name."""
     what = f"{help_}: {_RANGE}."
     if table:
-        return INPUTS[name].with_(kind="text", default=default, help=what)
-    return Input("text", default, what)
+        return INPUTS[name].with_(kind="text", default=default, help=what, sets=name)
+    return Input("text", default, what, sets=name)
 
 
 #: The data set's inputs, in the order the command line lists them.
@@ -35,7 +35,9 @@ DATASET_INPUTS: dict[str, Input] = {
         "(bearing_datasets.open(NAME, root=PARENT) reads it).",
     ),
     "records": Input("integer", 100, "Number of records.", low=1, what="a number of records"),
-    "bearings": Input("text", "6205-2RS", "Designations, A,B,C (one drawn per record)."),
+    "bearings": Input(
+        "text", "6205-2RS", "Designations, A,B,C (one drawn per record).", sets="bearings"
+    ),
     "speed_rpm": _ranged("speed_rpm", "1700:1800", "Speed [rpm]"),
     "radial_load_n": _ranged("radial_load_n", "200:2000", "Radial load [N]"),
     "faults": Input(
@@ -43,6 +45,7 @@ DATASET_INPUTS: dict[str, Input] = {
         "none,outer,inner,ball",
         "Fault classes, A,B,C among none, outer, inner, ball, compound (two defects); cage is "
         "refused: the models have no cage defect.",
+        sets="faults",
     ),
     "defect_width_mm": _ranged("defect_width_mm", "0.2:1.5", "Defect width [mm]"),
     "defect_depth_mm": _ranged("defect_depth_mm", "0.1:0.3", "Defect depth [mm]"),
@@ -65,7 +68,7 @@ DATASET_INPUTS: dict[str, Input] = {
         sets=("resonances", "resonance frequency", "damping ratio"),
     ),
     "sample_rate_hz": INPUTS["sample_rate_hz"].with_(
-        kind="text", default="20000", help="Sample rate [Hz]: V or A,B,C."
+        kind="text", default="20000", help="Sample rate [Hz]: V or A,B,C.", sets="sample_rate_hz"
     ),
     "duration_s": _ranged("duration_s", "1", "Record length [s]"),
     "dynamic_model": INPUTS["dynamic_model"].with_(
@@ -204,9 +207,9 @@ def dataset_from(values: dict, *, progress=None, given=None) -> DatasetOutcome:
     from .generate import make_dataset
 
     check_values(values)
-    # by the library's name of each (the input's `sets`, else its own)
+    # by the library's name of each (the parameter the input sets)
     ranges = {
-        (DATASET_INPUTS[name].fields or (name,))[0]: values[name]
+        DATASET_INPUTS[name].fields[0]: values[name]
         for name in _DRAWN
         if values.get(name) is not None
     }

@@ -113,11 +113,16 @@ _RETRY = 0.02
 
 
 def _in_callback(frame) -> bool:
-    """Whether ``frame`` or one of its callers is a callback of :data:`_CALLBACKS`."""
+    """Whether ``frame`` or one of its callers is a callback of :data:`_CALLBACKS`, or one
+    Python itself calls where an exception cannot propagate: a finalizer (``__del__``) or
+    a weak reference's callback (the garbage collector's; a KeyboardInterrupt raised there
+    is printed as "Exception ignored" and lost)."""
     while frame is not None:
         code = frame.f_code
+        path = code.co_filename
+        if code.co_name == "__del__" or path.endswith(("weakref.py", "_weakrefset.py")):
+            return True
         for package, file, name in _CALLBACKS:
-            path = code.co_filename
             if code.co_name == name and path.endswith(file) and package in path:
                 return True
         frame = frame.f_back

@@ -460,6 +460,8 @@ def restate(exc: InputError, values: dict, specs: dict) -> InputError:
     unit = unit_of(name)
     value = values.get(name)
     si = unit is not None and exc.unit not in ("", unit.symbol)
+    if isinstance(value, str) and isinstance(exc.value, str) and exc.value in value:
+        value = exc.value  # the part of the value at fault (one item of a list)
     if value is None:
         value = exc.value
         if si and isinstance(value, (int, float)) and not isinstance(value, bool):
