@@ -48,7 +48,7 @@ KINEMATIC_FIELDS = ("ball_count", "ball_diameter", "pitch_diameter", "contact_an
 ROLLER_KINEMATIC_FIELDS = ("roller_count", "roller_diameter", "pitch_diameter", "contact_angle")
 #: How the rolling-element frequencies are named for rollers: the key in ``orders`` (the
 #: same for both kinds, so diagnosis code reads one family) -> the name in JSON and tables.
-ROLLER_NAMES = {"bsf": "roller_spin", "ball_defect": "roller_defect"}
+ROLLER_NAMES = {"ball_defect": "roller_defect"}
 ROLLER_LONG_NAMES = {
     "bsf": "roller spin (1x, one spin revolution)",
     "ball_defect": "roller defect (2x spin: strikes both races)",
@@ -61,8 +61,8 @@ def _element(bearing) -> str:
 
 def frequency_label(bearing, name: str) -> str:
     """The public name of frequency ``name`` (a key of FREQUENCY_NAMES) for ``bearing``:
-    ``roller_defect`` and ``roller_spin`` stand for ``ball_defect`` and ``bsf`` of a roller
-    bearing; the others are the same for both kinds.
+    ``roller_defect`` stands for ``ball_defect`` of a roller bearing; the others (``bsf``,
+    the rolling element's spin, included) are the same for both kinds.
 
     Parameters
     ----------
@@ -161,8 +161,8 @@ class DefectFrequencies:
         return self.shaft_speed / (2.0 * math.pi)
 
     def hz(self, name: str) -> float:
-        """Frequency ``name`` (one of FREQUENCY_NAMES or "shaft"; ``roller_defect`` and
-        ``roller_spin`` for ``ball_defect`` and ``bsf``) [Hz]."""
+        """Frequency ``name`` (one of FREQUENCY_NAMES or "shaft"; ``roller_defect`` for
+        ``ball_defect``) [Hz]."""
         if name == "shaft":
             return self.shaft_hz
         name = {v: k for k, v in ROLLER_NAMES.items()}.get(name, name)
@@ -174,8 +174,8 @@ class DefectFrequencies:
         """JSON-ready dict: ``<name>_hz`` and ``<name>_order`` for each frequency, and the
         geometry used (``ball_count``, ``ball_diameter_mm``, ``pitch_diameter_mm``,
         ``contact_angle_deg``, ``geometry_source``). A roller bearing's keys read "roller"
-        for "ball" (``roller_count``, ``roller_diameter_mm``, ``roller_defect_hz``) and its
-        spin ``roller_spin_hz``; ``bpfo_hz``, ``bpfi_hz``, ``ftf_hz`` are the same."""
+        for "ball" (``roller_count``, ``roller_diameter_mm``, ``roller_defect_hz``);
+        ``bpfo_hz``, ``bpfi_hz``, ``bsf_hz``, ``ftf_hz`` are the same."""
         b = self.bearing
         element = _element(b)
         out = {

@@ -356,7 +356,10 @@ class RollerBearing:
                 self.arrangement,
                 "single for one row, back_to_back, face_to_face or tandem for two",
             )
-        if self.arrangement in ("back_to_back", "face_to_face") and not self.is_tapered:
+        if self.arrangement in ("back_to_back", "face_to_face") and self.bearing_type not in (
+            "tapered_roller",
+            "spherical_roller",
+        ):
             raise InputError(
                 "arrangement", self.arrangement, "tandem for two rows of cylindrical rollers"
             )
