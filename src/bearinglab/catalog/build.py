@@ -51,7 +51,6 @@ from .estimate import (
     estimate_internal_geometry,
 )
 from .families import FAMILIES
-from .needed import GeometryNeeded
 from .lookup import (
     CLEARANCE_TABLE,
     BoundaryDimensions,
@@ -63,6 +62,7 @@ from .lookup import (
     published_geometries,
     published_geometry,
 )
+from .needed import GeometryNeeded
 
 #: Keywords of BallBearing a caller may override.
 OVERRIDABLE = (
