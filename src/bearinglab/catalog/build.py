@@ -228,17 +228,22 @@ def _table_clearance(des: Any, text: str) -> tuple[float | None, Source]:
 
 
 def bearing_from_designation(
-    text: str, system: str | None = None, overrides: dict | None = None
+    text: str,
+    system: str | None = None,
+    overrides: dict | None = None,
+    *,
+    rollers: bool = False,
 ) -> tuple[BallBearing, Any]:
     """Build a BallBearing (or a RollerBearing) from a designation (ISO or GOST) or a
     catalogue name.
 
-    Cylindrical and tapered roller bearings (NU205, NJ205, NUP205, N205, NN3020, 30205,
-    32205; GOST 2205, 42205, 92205, 7205, 7505 ...) and the published roller rows
-    (``"209 cylindrical (Harris)"``, ``"ZA-2115 (IMS)"``) give a
+    With ``rollers=True``, cylindrical and tapered roller bearings (NU205, NJ205, NUP205,
+    N205, NN3020, 30205, 32205; GOST 2205, 42205, 92205, 7205, 7505 ...) and the published
+    roller rows (``"209 cylindrical (Harris)"``, ``"ZA-2115 (IMS)"``) give a
     :class:`~bearinglab.roller_geometry.RollerBearing`
     (:func:`bearinglab.catalog.build_roller.roller_from_designation`), whose overrides are
-    RollerBearing keywords.
+    RollerBearing keywords. Without it they are refused as before (a CatalogError), which
+    the command line relies on until it is wired for roller bearings (issue 28).
 
     ``text`` may be a catalogue name of a published bearing (``"ER-16K"``,
     ``"6205 (seed 004)"``) or a designation (``"6205-2RS"``, ``"180205"``).  Internal
@@ -261,8 +266,10 @@ def bearing_from_designation(
     system : str or None
         ``"gost"`` or ``"iso"``; None lets the designation reader decide [-].
     overrides : dict or None
-        BallBearing keyword -> value in SI units (m, rad), taking precedence over the
-        catalogue and the estimate [-].
+        BallBearing (or RollerBearing) keyword -> value in SI units (m, rad), taking
+        precedence over the catalogue and the estimate [-].
+    rollers : bool
+        Build roller bearings too (see above) [-].
 
     Returns
     -------
@@ -272,7 +279,8 @@ def bearing_from_designation(
     Raises
     ------
     CatalogError
-        For self-aligning, spherical, needle, thrust roller or double-row ball bearings (no
+        For roller bearings without ``rollers`` (and with it, for spherical, needle and
+        thrust roller bearings), self-aligning or double-row ball bearings (no
         internal-geometry model yet), or when the designation names a clearance group the
         ISO 5753-1 table has no
         value for at that bore (C1; C4 or C5 below 6 mm; bores over 140 mm).
@@ -294,7 +302,7 @@ def bearing_from_designation(
                 f"one of {', '.join(OVERRIDABLE)} (ball bearings) or "
                 f"{', '.join(ROLLER_OVERRIDABLE)} (roller bearings)",
             )
-    roller_row = roller_by_name(text)
+    roller_row = roller_by_name(text) if rollers else None
     if roller_row is not None:
         des = _parse(roller_row.designation, "iso") if roller_row.designation else None
         return roller_from_designation(text, des, roller_row, overrides)
@@ -306,7 +314,7 @@ def bearing_from_designation(
             des = _parse(named.designation, "iso")
     else:
         des = _parse(text, system)
-        if getattr(des, "bearing_type", None) in ROLLER_BUILD_TYPES:
+        if rollers and getattr(des, "bearing_type", None) in ROLLER_BUILD_TYPES:
             return roller_from_designation(text, des, published_roller(des), overrides)
         _check_type(des, overrides)
         row = published_geometry(des)

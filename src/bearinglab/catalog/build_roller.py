@@ -236,6 +236,7 @@ def roller_from_designation(
     if row is not None:
         for name, value in row.values.items():
             put(name, value, Source("catalog", row.source))
+    _check_sizes(values, sources)
     fam = FAMILIES.get(getattr(des, "series", None))
     if fam is not None and fam.rows == 2:
         put("rows", 2, Source("catalog", f"family {fam.key}: two rows"))
@@ -319,6 +320,24 @@ def roller_from_designation(
         sources=sources,
     )
     return bearing, des
+
+
+def _check_sizes(values: dict, sources: dict) -> None:
+    """d < D and d < d_m < D, blaming a value the user gave rather than the catalogue's."""
+    d, big_d = values.get("bore"), values.get("outside_diameter")
+    if d is None or big_d is None:
+        return
+    if d >= big_d:
+        if sources["outside_diameter"].kind == "user" and sources["bore"].kind != "user":
+            raise InputError("outside_diameter", big_d, f"more than the bore {d:.6g} m")
+        raise InputError("bore", d, f"less than the outside diameter {big_d:.6g} m")
+    dm = values.get("pitch_diameter")
+    if dm is not None and not d < dm < big_d:
+        raise InputError(
+            "pitch_diameter",
+            dm,
+            f"between the bore {d:.6g} m and the outside diameter {big_d:.6g} m",
+        )
 
 
 def _needed(reason: str, needed) -> CatalogError:
