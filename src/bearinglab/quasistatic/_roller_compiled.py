@@ -33,7 +33,7 @@ def _energy(v, proj, j, rs):
     for i in range(proj.shape[0]):
         bv = rs.e_rho[j, i] * v[0] + rs.e_z[j, i] * v[1] + rs.roller_arm[j, i] * v[2]
         d = rs.sign[i] * (proj[i] - bv) - rs.gap[j, i]
-        if d > 0.0:
+        if d > rs.delta_floor:
             n = rs.power[i]
             total += rs.k[j, i] * d ** (n + 1.0) / (n + 1.0)
     return total
@@ -89,7 +89,7 @@ def _roller_gh(v, proj, j, rs, g, h):
         bz = rs.e_z[j, i]
         bt = rs.roller_arm[j, i]
         d = rs.sign[i] * (proj[i] - (br * v[0] + bz * v[1] + bt * v[2])) - rs.gap[j, i]
-        if d > 0.0:
+        if d > rs.delta_floor:
             n = rs.power[i]
             q = rs.k[j, i] * d**n
             kp = n * q / d
@@ -204,7 +204,7 @@ def _series_state(u, rs):
             normal[2, 2] += b2 * b2
             rhs[0] += b0 * t
             rhs[2] += b2 * t
-            if total <= 0.0:
+            if total <= 2.0 * rs.delta_floor:
                 continue
             n = rs.power[k]
             qk = rs.k[j, k] * half**n
@@ -264,7 +264,7 @@ def roller_set_state(u, v_all, rs):
             bt = rs.roller_arm[j, i]
             d = rs.sign[i] * (proj[i] - (br * v[0] + bz * v[1] + bt * v[2])) - rs.gap[j, i]
             delta[j, i] = d
-            if d <= 0.0:
+            if d <= rs.delta_floor:
                 continue
             n = rs.power[i]
             qi = rs.k[j, i] * d**n

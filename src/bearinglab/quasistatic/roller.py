@@ -211,6 +211,7 @@ class RollerProblem:
             dof=dof,
             max_step=0.01 * b.roller_diameter,
             tol=roller_tol,
+            delta_floor=1e-12 * b.roller_diameter,
             series=bool(SERIES_SHORTCUT and not tapered and self.centrifugal_force == 0.0),
         )
         free = np.array([True, True, tapered, condition.tilt_free, condition.tilt_free])
