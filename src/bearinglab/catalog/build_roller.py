@@ -60,6 +60,10 @@ ROLLER_OVERRIDABLE = (
     "name",
 )
 USER_SOURCE = Source("user", "command line or caller")
+#: Diameter series of cylindrical roller bearings whose estimate is checked against makers'
+#: ratings (docs/capabilities/roller_bearings.md: NU10 came out 1.6 times, NU4 1.14 times
+#: the catalogue's C, so those are refused rather than estimated).
+CHECKED_DIAMETER_SERIES = ("2", "3")
 _ESTIMATED = ("roller_count", "roller_diameter", "roller_length", "pitch_diameter")
 
 
@@ -275,6 +279,14 @@ def roller_from_designation(
         if dims is None:
             reason = str(dims_error) if dims_error is not None else "no ISO family and bore"
             raise _needed(f"{text!r}: cannot estimate the internal geometry ({reason})", missing)
+        series = dims.dimension_series or ""
+        if btype == "cylindrical_roller" and series[-1:] not in CHECKED_DIAMETER_SERIES:
+            raise _needed(
+                f"{text!r}: the estimate of cylindrical roller bearings is checked for "
+                "diameter series 2 and 3 only (NU2, NU22, NU3, NU23: ISO 281 ratings 0.78-1.03 "
+                f"times the catalogue's); dimension series {series} is not",
+                missing,
+            )
         width = dims.cup_width if btype == "tapered_roller" else dims.width
         if btype == "tapered_roller" and width is None:
             width = dims.width
