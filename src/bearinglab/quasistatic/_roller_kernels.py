@@ -73,9 +73,10 @@ class RollerSet(NamedTuple):
         Roller force tolerance [N].
     delta_floor : float
         Approaches up to this are no contact [m]: the line law's stiffness
-        dq/d(delta) ~ delta^(1/9) is still a tenth of a loaded contact's at 1e-16 m, so
-        round-off in a displacement (a roller 90 deg from the load touching by 1e-17 m)
-        would otherwise show in the tangent stiffness; 1e-12 D_we carries 1e-7 N.
+        dq/d(delta) ~ delta^(1/9) is still a tenth of a loaded contact's at 1e-16 m, so the
+        convergence noise of a displacement (a roller 90 deg from the load touching by
+        1e-14 m) would otherwise show in the tangent stiffness; 1e-10 D_we carries 1e-6 N
+        a slice.
     series : bool
         The rollers need no equilibrium iteration: cylindrical rollers without centrifugal
         force (contacts 0..n_s-1 inner, n_s..2 n_s-1 outer, equal constants and drops),

@@ -57,14 +57,21 @@ from .roller_result import RollerLoadDistribution
 
 #: Default number of slices per line contact (ISO/TS 16281 uses n_s = 30 in its example).
 DEFAULT_SLICES = 30
-#: Outward force that seats an unloaded roller on the outer race [N] (as for balls).
-SEATING_FLOOR = 1e-9
+#: Outward force on every roller besides its centrifugal force [N]. 0: a roller the rings
+#: do not load is free (its position is left where Newton puts it and it carries
+#: nothing); a seating force as for balls would have to exceed what the contact law gives
+#: at the approach floor (RollerSet.delta_floor), and would then load the rib.
+SEATING_FLOOR = 0.0
 #: Run the ring iteration compiled (False: the Python twin, for tests and benchmarks).
 COMPILED = True
 #: Cylindrical rollers at rest as two springs in series per slice pair, without the
 #: rollers' equilibrium iteration (exact there, see RollerSet.series; False: iterate, for
 #: the test that they agree).
 SERIES_SHORTCUT = True
+#: Approaches up to this fraction of D_we count as no contact (RollerSet.delta_floor): far
+#: above the ring iteration's convergence noise (1e-9 of the approach) and round-off,
+#: far below any load that matters (1e-6 N a slice at D_we = 10 mm).
+DELTA_FLOOR = 1e-10
 
 
 def roller_centrifugal_force(bearing: RollerBearing, shaft_speed: float) -> float:
@@ -211,7 +218,7 @@ class RollerProblem:
             dof=dof,
             max_step=0.01 * b.roller_diameter,
             tol=roller_tol,
-            delta_floor=1e-12 * b.roller_diameter,
+            delta_floor=DELTA_FLOOR * b.roller_diameter,
             series=bool(SERIES_SHORTCUT and not tapered and self.centrifugal_force == 0.0),
         )
         free = np.array([True, True, tapered, condition.tilt_free, condition.tilt_free])
