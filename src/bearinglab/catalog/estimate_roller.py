@@ -107,7 +107,7 @@ def tapered_contact_angle(series: str) -> float:
         ISO 355 series, e.g. ``"302"`` [-].
 
     >>> round(math.degrees(tapered_contact_angle("302")), 2)
-    13.87
+    13.86
     """
     if series not in TAPERED_SERIES_E:
         raise InputError(

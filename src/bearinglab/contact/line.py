@@ -95,7 +95,7 @@ def line_contact(load_per_length, reduced_radius, effective_modulus) -> LineCont
 
     >>> c = line_contact(40e3 / 0.02, 0.01, 2 / (2 * (1 - 0.3**2) / 210e9))
     >>> round(float(c.max_pressure) / 1e6, 1), round(float(c.half_width) * 1e3, 4)
-    (2710.1, 0.4698)
+    (2710.3, 0.4698)
     """
     w = np.asarray(load_per_length, dtype=float)
     r = np.asarray(reduced_radius, dtype=float)
@@ -126,7 +126,7 @@ def roller_raceway_radii(roller_diameter, pitch_diameter, contact_angle=0.0):
     contact_angle : float or array
         Raceway angle alpha [rad].
 
-    >>> [round(r * 1e3, 4) for r in roller_raceway_radii(10e-3, 65.01e-3)]
+    >>> [round(float(r) * 1e3, 4) for r in roller_raceway_radii(10e-3, 65.01e-3)]
     [4.2309, 5.7691]
     """
     gamma = np.asarray(roller_diameter, float) * np.cos(contact_angle) / pitch_diameter
@@ -151,7 +151,7 @@ def iso16281_roller_constant(effective_length, effective_modulus=None, steel_mod
         ``effective_modulus``.
 
     >>> round(iso16281_roller_constant(9.6e-3) / 1e9, 4)
-    0.5102
+    0.5783
     """
     length = positive_number("effective_length", effective_length, "a positive length [m]")
     c = ISO16281_ROLLER_CONSTANT_SI * length ** (8.0 / 9.0)
@@ -173,7 +173,7 @@ def iso16281_approach(load, effective_length):
         L_we [m].
 
     >>> round(float(iso16281_approach(1000.0, 10e-3)) * 1e6, 3)
-    8.079
+    6.308
     """
     q = np.asarray(load, float)
     if np.any(~np.isfinite(q)) or np.any(q < 0):
@@ -192,7 +192,7 @@ def palmgren_approach(load, length):
         Contact length l [m].
 
     >>> round(float(palmgren_approach(1000.0, 10e-3)) * 1e6, 3)
-    3.907
+    3.05
     """
     q = np.asarray(load, float)
     if np.any(~np.isfinite(q)) or np.any(q < 0):
@@ -242,7 +242,7 @@ def logarithmic_profile(x, roller_diameter: float, effective_length: float, tape
         The tapered-roller form (0.00045 D_we ...) [-].
 
     >>> round(float(logarithmic_profile(4e-3, 10e-3, 9.6e-3)) * 1e6, 3)
-    4.396
+    4.15
     """
     x = np.abs(np.asarray(x, float))
     d, length = roller_diameter, effective_length
@@ -287,7 +287,7 @@ def edge_stress_factors(slices: int) -> np.ndarray:
     slices : int
         n_s >= 2 [-].
 
-    >>> [round(f, 3) for f in edge_stress_factors(30)[:3]]
+    >>> [round(float(f), 3) for f in edge_stress_factors(30)[:3]]
     [2.328, 1.127, 1.064]
     """
     n = _slices(slices)

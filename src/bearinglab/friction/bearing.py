@@ -142,7 +142,8 @@ class FrictionBearing:
             Its designation (series, design variant, closures) [-].
 
         >>> from bearinglab.catalog import bearing_from_designation
-        >>> FrictionBearing.from_roller_bearing(*bearing_from_designation("NU205")).design_variant
+        >>> b, des = bearing_from_designation("NU205", rollers=True)
+        >>> FrictionBearing.from_roller_bearing(b, des).design_variant
         'NU'
         """
         if designation is None:

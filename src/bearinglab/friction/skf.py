@@ -450,7 +450,7 @@ def cylindrical_roller_load_variables(mean_diameter, radial_load, axial_load, co
     >>> g = cylindrical_roller_load_variables(0.0385, 2000.0, 0.0,
     ...                                       SkfGeometryConstants(1.09e-6, 0.0, 0.16, 0.0015))
     >>> round(g[0], 4), round(g[1], 3)
-    (0.0171, 115.5)
+    (0.0762, 115.5)
     """
     dm = float(_mm("mean_diameter", mean_diameter))
     fr = float(_array("radial_load", radial_load, "N"))
@@ -478,7 +478,7 @@ def tapered_roller_load_variables(mean_diameter, radial_load, axial_load, axial_
     >>> g = tapered_roller_load_variables(0.0385, 2000.0, 500.0, 1.6,
     ...                                   SkfGeometryConstants(1.76e-6, 10.9, 0.017, 2.0))
     >>> round(g[0], 4), round(g[1], 2)
-    (0.0507, 55.39)
+    (0.1855, 1221.32)
     """
     dm = float(_mm("mean_diameter", mean_diameter))
     fr = float(_array("radial_load", radial_load, "N"))

@@ -64,7 +64,7 @@ def roller_contact_ratings(bearing, dynamic_rating: float) -> tuple[float, float
     >>> b = RollerBearing(roller_count=14, roller_diameter=10e-3, roller_length=9.6e-3,
     ...                   pitch_diameter=65.01e-3)
     >>> [round(q) for q in roller_contact_ratings(b, 48446.0)]
-    [12218, 17949]
+    [11457, 17281]
     """
     if not (math.isfinite(dynamic_rating) and dynamic_rating > 0):
         raise InputError("dynamic_rating", dynamic_rating, "a rating > 0 [N]")

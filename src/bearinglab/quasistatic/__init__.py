@@ -21,6 +21,8 @@ from ..errors import ConvergenceError, InputError
 from ..geometry import BallBearing
 from ..operating import OperatingCondition
 from .result import LoadDistribution
+from .roller import roller_centrifugal_force, solve_roller_distribution
+from .roller_result import RollerLoadDistribution
 from .solver import (
     CENTRIFUGAL_FLOOR,
     DOF_NAMES,
@@ -35,9 +37,12 @@ __all__ = [
     "MAX_SPEED_FACTOR",
     "RACE_CONTROLS",
     "LoadDistribution",
+    "RollerLoadDistribution",
     "centrifugal_force",
     "inner_ring_expansion",
+    "roller_centrifugal_force",
     "solve_load_distribution",
+    "solve_roller_distribution",
     "speed_limit",
 ]
 

@@ -90,7 +90,7 @@ def roller_centrifugal_force(bearing: RollerBearing, shaft_speed: float) -> floa
     >>> b = RollerBearing(roller_count=14, roller_diameter=10e-3, roller_length=9.6e-3,
     ...                   pitch_diameter=65.01e-3)
     >>> round(roller_centrifugal_force(b, 10000 * math.pi / 30), 2)
-    43.99
+    37.67
     """
     omega_c = 0.5 * shaft_speed * (1.0 - bearing.gamma)
     return bearing.roller_mass * 0.5 * bearing.pitch_diameter * omega_c**2

@@ -79,8 +79,23 @@ class RollerLoadDistribution:
 
     @classmethod
     def from_solution(cls, problem, u, v, q, delta, force, stiff) -> RollerLoadDistribution:
-        """The result from a solved :class:`~bearinglab.quasistatic.roller.RollerProblem`
-        (u, rollers v, contact loads q and approaches delta (N, C), ring force, stiffness)."""
+        """The result from a solved :class:`~bearinglab.quasistatic.roller.RollerProblem`.
+
+        Parameters
+        ----------
+        problem : RollerProblem
+            The solve's fixed data [-].
+        u : array (5,)
+            Ring displacement [m, rad].
+        v : array (N, 3)
+            Roller states [m].
+        q, delta : arrays (N, C)
+            Contact loads [N] and approaches [m].
+        force : array (5,)
+            Roller forces on the inner ring [N, N m].
+        stiff : array (5, 5)
+            Tangent stiffness [SI].
+        """
         s = problem.slices
         nz = q.shape[0]
         flange = q[:, -1] if problem.bearing.is_tapered else np.zeros(nz)

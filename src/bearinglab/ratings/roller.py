@@ -141,7 +141,7 @@ def roller_dynamic_load_rating(
         b_m [-].
 
     >>> round(roller_dynamic_load_rating(14, 10e-3, 9.6e-3, 65.01e-3))  # Harris's 209
-    48446
+    48445
     """
     gamma = _set(roller_count, roller_diameter, roller_length, pitch_diameter, contact_angle, rows)
     return (
@@ -170,7 +170,7 @@ def roller_static_load_rating(
         As for :func:`roller_dynamic_load_rating`.
 
     >>> round(roller_static_load_rating(14, 10e-3, 9.6e-3, 65.01e-3))  # Harris's 209
-    50042
+    50040
     """
     gamma = _set(roller_count, roller_diameter, roller_length, pitch_diameter, contact_angle, rows)
     return (
@@ -218,7 +218,7 @@ def tapered_factors(contact_angle: float, rows: int = 1) -> tuple[float, float, 
         1, or 2 for a pair or a double-row bearing [-].
 
     >>> [round(v, 3) for v in tapered_factors(math.radians(13.86))]
-    [0.37, 0.4, 1.623, 0.0]
+    [0.37, 0.4, 1.621, 0.0]
     """
     if not 0.0 < contact_angle < 0.5 * math.pi:
         raise InputError("contact_angle", contact_angle, "an angle in (0, 90) degrees")
@@ -249,7 +249,7 @@ def roller_equivalent_dynamic_load(
         (P [N], X, Y, e [-]).
 
     >>> round(roller_equivalent_dynamic_load(math.radians(13.86), 1, 1000.0, 1000.0)[0])
-    2023
+    2021
     """
     radial, axial = float(radial_load), abs(float(axial_load))
     if contact_angle == 0.0:
@@ -275,7 +275,7 @@ def roller_equivalent_static_load(
         F_r, F_a [N].
 
     >>> round(roller_equivalent_static_load(math.radians(13.86), 1, 1000.0, 1000.0))
-    1393
+    1392
     """
     radial, axial = float(radial_load), abs(float(axial_load))
     if contact_angle == 0.0:

@@ -173,8 +173,8 @@ CASES = [
         "N",
         lambda: _harris_qmax(0.041e-3),
         0.02,
-        "depends on the load-deflection constant (ISO/TS 16281's c_l here, Palmgren's in "
-        "Harris: 3.4 % apart in approach); issue 28 asks 2 %",
+        "depends on the roller's load-deflection constant (ISO/TS 16281's c_l here; "
+        "Palmgren's is 3.4 % apart in approach); issue 28 asks 2 %",
     ),
     Case(
         HARRIS,
@@ -201,8 +201,8 @@ CASES = [
         "-",
         lambda: stribeck_ratio(14),
         0.02 / 4.08,
-        "the printed integral value; a discrete set of Z >= 12 rollers lies within 0.02 "
-        "(Z = 13: 4.093, Z = 14: 4.086)",
+        "the printed integral (load exponent 1.1; 4.085 with the model's 10/9); a "
+        "discrete set of Z >= 12 rollers lies within 0.02 (Z = 13: 4.093, Z = 14: 4.086)",
     ),
     Case(
         NSK,
@@ -211,9 +211,10 @@ CASES = [
         "-",
         lambda: induced_axial_ratio(17),
         0.01 / 1.26,
-        "the printed integral value; the discrete set of 17 rollers gives 1.2593 (it "
-        "dips to 1.235 for Z = 12 and 1.246 for Z = 16, where rollers sit at the zone's "
-        "edge: tests/literature/test_roller_load_zone.py)",
+        "the printed integral (load exponent 1.1; 1.258 with the model's 10/9); the "
+        "discrete set of 17 rollers gives 1.2593 (it dips to 1.235 for Z = 12 and 1.246 "
+        "for Z = 16, where rollers sit at the zone's edge: "
+        "tests/literature/test_roller_load_zone_nsk.py)",
     ),
     Case(
         ROSS,
