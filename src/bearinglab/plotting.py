@@ -227,6 +227,29 @@ def roller_distribution_figure(
     return fig, axes
 
 
+def roller_pressure_figure(curves, name="", ax=None):
+    """The pressure along a roller on each raceway.
+
+    Parameters
+    ----------
+    curves : dict
+        Raceway -> (positions [m], pressures [Pa]).
+    name : str
+        Bearing label [-].
+    ax : matplotlib Axes, optional
+        Where to draw.
+    """
+    fig, ax = figure_axes(ax, figsize=(8, 4))
+    for race, (x, p) in curves.items():
+        ax.plot(np.asarray(x) * 1e3, np.asarray(p) / 1e6, "o-", ms=3, label=race)
+    ax.axhline(4000.0, color="0.5", ls="--", lw=0.8, label="ISO 76: 4000 MPa")
+    ax.set_xlabel("position along the roller [mm]")
+    ax.set_ylabel("pressure [MPa]")
+    ax.set_title(f"{name} pressure along the roller".strip(), fontsize=10)
+    ax.legend(fontsize=8)
+    return fig, ax
+
+
 def stiffness_map_figure(table, ax=None):
     """Radial and axial stiffness over the radial load, one line per (axial load, speed).
 
