@@ -241,6 +241,7 @@ DIMENSIONLESS: dict[str, str] = {
     "end_load_ratio": "load of a roller's end slices over its mean slice load",
     "edge_pressure_ratio": "pressure at the end of a roller's contact over the mid-length's",
     "life_exponent": "exponent p of L = (C / P)^p: 3 balls, 10/3 rollers",
+    "edge_stress": "true when ISO/TS 16281's edge-stress factors weight the slice loads",
     "contact_points": "number of ball-race contacts (2, 3 or 4)",
     "truncated": "true when the contact ellipse runs over the shoulder",
     "outer_raceway_control": "true when the ball is under outer-raceway control",

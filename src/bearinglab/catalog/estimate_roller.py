@@ -26,9 +26,9 @@ and checked against what is published (docs/capabilities/roller_bearings.md):
 * the roller profile: ISO/TS 16281's logarithmic profile, the one the standard assumes
   for a profiled roller; no clearance (diametral clearance 0, axial play 0).
 
-Checks (tests/literature/test_roller_designations.py): NU205 C = 29.4 kN against the
-catalogue's 32.5 kN (0.90), 30205 alpha = 13.87 deg against 13.9 deg and C = 31.4 kN
-against 30.8 kN (1.02).
+Checks (tests/literature/test_roller_designations_skf.py): NU205 C = 29.4 kN against the
+catalogue's 32.5 kN (0.90), 30205 alpha = 13.86 deg against 13.9 deg and C = 32.1 kN
+against 30.8 kN (1.04); the other 15 SKF bearings stored (25 and 30 mm bores) 0.78-1.03.
 """
 
 from __future__ import annotations
