@@ -26,6 +26,8 @@ _EXPORTS = {
     "DesignationError": "errors",
     "InputError": "errors",
     "BallBearing": "geometry",
+    "RollerBearing": "roller_geometry",
+    "RollerProfile": "roller_geometry",
     "Source": "geometry",
     "BEARING_STEEL": "materials",
     "SILICON_NITRIDE": "materials",

@@ -275,6 +275,22 @@ class BallBearing:
             )
 
     @property
+    def rolling_element(self) -> str:
+        """``"ball"`` (a :class:`~bearinglab.roller_geometry.RollerBearing` gives
+        ``"roller"``): how analyses tell the kinds apart [-]."""
+        return "ball"
+
+    @property
+    def element_count(self) -> int:
+        """Rolling elements per row, Z = ``ball_count`` [-]."""
+        return int(self.ball_count)
+
+    @property
+    def element_diameter(self) -> float:
+        """Rolling-element diameter D_w = ``ball_diameter`` [m]."""
+        return self.ball_diameter
+
+    @property
     def is_thrust(self) -> bool:
         """True for a thrust ball bearing (balls between two washers, ``bearing_type``
         ``thrust_ball``): its rings are not radial rings, so raceway-versus-bore checks and

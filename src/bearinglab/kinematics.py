@@ -44,15 +44,50 @@ LONG_NAMES = {
 #: The bearing's fields that pure rolling reads (the nominal contact angle: the
 #: frequencies of a loaded bearing at its working angles are :mod:`bearinglab.quasistatic`'s).
 KINEMATIC_FIELDS = ("ball_count", "ball_diameter", "pitch_diameter", "contact_angle")
+#: The same fields of a roller bearing.
+ROLLER_KINEMATIC_FIELDS = ("roller_count", "roller_diameter", "pitch_diameter", "contact_angle")
+#: How the rolling-element frequencies are named for rollers: the key in ``orders`` (the
+#: same for both kinds, so diagnosis code reads one family) -> the name in JSON and tables.
+ROLLER_NAMES = {"ball_defect": "roller_defect"}
+ROLLER_LONG_NAMES = {
+    "bsf": "roller spin (1x, one spin revolution)",
+    "ball_defect": "roller defect (2x spin: strikes both races)",
+}
+
+
+def _element(bearing) -> str:
+    return getattr(bearing, "rolling_element", "ball")
+
+
+def frequency_label(bearing, name: str) -> str:
+    """The public name of frequency ``name`` (a key of FREQUENCY_NAMES) for ``bearing``:
+    ``roller_defect`` stands for ``ball_defect`` of a roller bearing; the others (``bsf``,
+    the rolling element's spin, included) are the same for both kinds.
+
+    Parameters
+    ----------
+    bearing : BallBearing or RollerBearing
+        The bearing [-].
+    name : str
+        One of FREQUENCY_NAMES [-].
+
+    >>> from bearinglab.geometry import BallBearing
+    >>> frequency_label(BallBearing(ball_count=9, ball_diameter=8e-3, pitch_diameter=39e-3),
+    ...                 "ball_defect")
+    'ball_defect'
+    """
+    if _element(bearing) == "roller":
+        return ROLLER_NAMES.get(name, name)
+    return name
 
 
 def geometry_inputs(bearing: BallBearing) -> set[str]:
-    """The fields of ``bearing`` its defect frequencies depend on: KINEMATIC_FIELDS, and the
-    bore and outside diameter when Z, D_w or d_m were estimated from them."""
-    used = set(KINEMATIC_FIELDS)
-    if any(
-        getattr(bearing.sources.get(k), "kind", None) == "estimated" for k in KINEMATIC_FIELDS[:3]
-    ):
+    """The fields of ``bearing`` its defect frequencies depend on: KINEMATIC_FIELDS (or
+    ROLLER_KINEMATIC_FIELDS), and the bore and outside diameter when Z, D_w or d_m were
+    estimated from them."""
+    fields = ROLLER_KINEMATIC_FIELDS if _element(bearing) == "roller" else KINEMATIC_FIELDS
+    used = set(fields)
+    if any(getattr(bearing.sources.get(k), "kind", None) == "estimated" for k in fields[:3]):
         used |= {"bore", "outside_diameter"}
     return used
 
@@ -126,9 +161,11 @@ class DefectFrequencies:
         return self.shaft_speed / (2.0 * math.pi)
 
     def hz(self, name: str) -> float:
-        """Frequency ``name`` (one of FREQUENCY_NAMES or "shaft") [Hz]."""
+        """Frequency ``name`` (one of FREQUENCY_NAMES or "shaft"; ``roller_defect`` for
+        ``ball_defect``) [Hz]."""
         if name == "shaft":
             return self.shaft_hz
+        name = {v: k for k, v in ROLLER_NAMES.items()}.get(name, name)
         if name not in self.orders:
             raise InputError("name", name, f"one of {('shaft',) + FREQUENCY_NAMES}")
         return float(self.orders[name]) * self.shaft_hz
@@ -136,22 +173,25 @@ class DefectFrequencies:
     def to_dict(self) -> dict:
         """JSON-ready dict: ``<name>_hz`` and ``<name>_order`` for each frequency, and the
         geometry used (``ball_count``, ``ball_diameter_mm``, ``pitch_diameter_mm``,
-        ``contact_angle_deg``, ``geometry_source``)."""
+        ``contact_angle_deg``, ``geometry_source``). A roller bearing's keys read "roller"
+        for "ball" (``roller_count``, ``roller_diameter_mm``, ``roller_defect_hz``);
+        ``bpfo_hz``, ``bpfi_hz``, ``bsf_hz``, ``ftf_hz`` are the same."""
         b = self.bearing
+        element = _element(b)
         out = {
             "speed_rpm": self.shaft_hz * 60.0,
             "shaft_hz": self.shaft_hz,
             "outer_rotating": self.outer_rotating,
-            "ball_count": int(b.ball_count),
-            "ball_diameter_mm": b.ball_diameter * 1e3,
+            f"{element}_count": int(b.element_count),
+            f"{element}_diameter_mm": b.element_diameter * 1e3,
             "pitch_diameter_mm": b.pitch_diameter * 1e3,
             "contact_angle_deg": math.degrees(self.contact_angle),
             "geometry_source": b.geometry_source,
         }
         for name in FREQUENCY_NAMES:
-            out[f"{name}_hz"] = self.hz(name)
+            out[f"{frequency_label(b, name)}_hz"] = self.hz(name)
         for name in FREQUENCY_NAMES:
-            out[f"{name}_order"] = float(self.orders[name])
+            out[f"{frequency_label(b, name)}_order"] = float(self.orders[name])
         return out
 
     def plot(self, harmonics: int = 3, ax=None):
@@ -164,11 +204,14 @@ class DefectFrequencies:
         """Table: frequency, long name, order, Hz."""
         import pandas as pd
 
+        roller = _element(self.bearing) == "roller"
         return pd.DataFrame(
             [
                 {
-                    "frequency": n,
-                    "description": LONG_NAMES[n],
+                    "frequency": frequency_label(self.bearing, n),
+                    "description": (ROLLER_LONG_NAMES if roller else LONG_NAMES).get(
+                        n, LONG_NAMES[n]
+                    ),
                     "order": float(self.orders[n]),
                     "hz": self.hz(n),
                 }
@@ -189,8 +232,9 @@ def defect_frequencies(
 
     Parameters
     ----------
-    bearing : BallBearing
-        Geometry (Z, D_w, d_m, nominal contact angle).
+    bearing : BallBearing or RollerBearing
+        Geometry (Z, D_w or D_we, d_m, nominal contact angle; for a tapered roller bearing
+        the mean roller diameter and the cup angle).
     shaft_speed : float
         Speed of the rotating ring [rad/s], >= 0; or give ``speed_rpm`` instead.
     speed_rpm : float, optional
@@ -234,7 +278,11 @@ def defect_frequencies(
     orders = {
         k: float(v)
         for k, v in frequency_orders(
-            bearing.ball_count, bearing.ball_diameter, bearing.pitch_diameter, alpha, outer_rotating
+            bearing.element_count,
+            bearing.element_diameter,
+            bearing.pitch_diameter,
+            alpha,
+            outer_rotating,
         ).items()
     }
     return DefectFrequencies(bearing, float(shaft_speed), outer_rotating, alpha, orders)

@@ -52,6 +52,9 @@ STATIC_RATING_PRESSURE = 4.2e9
 #: The pressure of a load 1 / MIN_ELASTIC_SAFETY = 8 times C0 (p ~ Q^(1/3): 8.4 GPa),
 #: past which the elastic contact models no longer apply [Pa].
 ELASTIC_LIMIT_PRESSURE = STATIC_RATING_PRESSURE * (1.0 / MIN_ELASTIC_SAFETY) ** (1.0 / 3.0)
+#: Maximum Hertz pressure behind the static rating C0 of roller bearings (ISO 76:2006:
+#: 4000 MPa for all roller bearings, a permanent deformation of 1e-4 D_we) [Pa].
+STATIC_RATING_PRESSURE_ROLLER = 4.0e9
 #: Speed factor above which standard ball bearings pass their makers' limiting speeds
 #: [mm/min] (a rule of thumb; see the module docstring).
 HIGH_SPEED_FACTOR = 1.0e6
@@ -219,6 +222,41 @@ def contact_warnings(bearing, result, *, cause) -> list[str]:
     ]
 
 
+def pressure_warnings(bearing, result) -> list[str]:
+    """The largest contact pressure of a solved roller bearing against ISO 76's 4000 MPa.
+
+    ISO 76:2006 sets the static rating C0 of a roller bearing at the load whose most loaded
+    contact reaches 4000 MPa (a permanent deformation of 1e-4 D_we). The slice model's
+    pressures (:attr:`~bearinglab.quasistatic.roller_result.RollerLoadDistribution.max_pressure`)
+    can pass it below C0, when a tilt or a misalignment puts the load on the rollers'
+    ends; this says so in the user's terms. Empty for a ball bearing (whose form-error
+    pressures :func:`contact_warnings` checks) or below the limit.
+
+    Parameters
+    ----------
+    bearing : RollerBearing or BallBearing
+        The bearing.
+    result : RollerLoadDistribution
+        The solved distribution (``max_pressure`` [Pa], ``max_roller_load`` [N]).
+    """
+    if getattr(bearing, "rolling_element", "ball") != "roller":
+        return []
+    p = float(getattr(result, "max_pressure", 0.0))
+    if not p > STATIC_RATING_PRESSURE_ROLLER:
+        return []
+    tilted = any(result.condition.misalignment) or any(result.condition.outer_misalignment)
+    why = (
+        "the tilt between the rings puts the load on the rollers' ends"
+        if tilted or result.condition.moment is not None
+        else "the load is beyond the static rating"
+    )
+    return [
+        f"the largest roller contact pressure is {p / 1e6:.4g} MPa, past the 4000 MPa of "
+        f"ISO 76 (the static rating C0 of roller bearings): {why}; the raceways would "
+        "deform permanently by more than 1e-4 D_we, and the results assume elastic contacts"
+    ]
+
+
 def speed_factor(bearing, shaft_speed: float) -> float:
     """n d_m [mm/min] of the shaft speed [rad/s]."""
     return abs(rad_s_to_rpm(shaft_speed)) * bearing.pitch_diameter * 1e3
@@ -250,6 +288,7 @@ def speed_warnings(
         Named ``shaft_speed``, above :func:`bearinglab.quasistatic.speed_limit`.
     """
     from .quasistatic import centrifugal_force, check_speed
+    from .quasistatic.roller import roller_centrifugal_force
 
     if shaft_speed == 0:
         return []
@@ -260,16 +299,18 @@ def speed_warnings(
         "and no model here is valid",
     )
     out = speed_factor_warnings(bearing, shaft_speed)
-    fc = centrifugal_force(bearing, shaft_speed)
-    z, alpha = bearing.ball_count, bearing.contact_angle
+    roller = getattr(bearing, "rolling_element", "ball") == "roller"
+    fc = (roller_centrifugal_force if roller else centrifugal_force)(bearing, shaft_speed)
+    z, alpha = bearing.element_count, bearing.contact_angle
+    element = "roller" if roller else "ball"
     q_max = max(
         5.0 * radial_load / (z * max(math.cos(alpha), 1e-9)),
         abs(axial_load) / (z * max(math.sin(alpha), 1e-9)) if axial_load else 0.0,
     )
     if fc > q_max and (radial_load or axial_load):
         out.append(
-            f"each ball's centrifugal force F_c = {fc:.4g} N exceeds the heaviest ball "
-            f"load of the external load (about {q_max:.4g} N, Stribeck): the outer "
+            f"each {element}'s centrifugal force F_c = {fc:.4g} N exceeds the heaviest "
+            f"{element} load of the external load (about {q_max:.4g} N, Stribeck): the outer "
             "contacts are set by speed rather than load"
         )
     return out

@@ -184,6 +184,72 @@ def load_distribution_figure(result, axes=None):
     return fig, axes
 
 
+def roller_distribution_figure(
+    angles, inner, outer, positions, inner_slices, outer_slices, name="", axes=None
+):
+    """Roller loads at their azimuths (inner and outer raceway) and the slice loads along
+    the heaviest roller.
+
+    Parameters
+    ----------
+    angles : array (N,)
+        Roller azimuths [rad].
+    inner, outer : arrays (N,)
+        Roller loads on the inner and outer raceway [N].
+    positions : array (n_s,)
+        Slice centres along the roller [m].
+    inner_slices, outer_slices : arrays (n_s,)
+        Slice loads of the heaviest roller [N].
+    name : str
+        Bearing label for the title [-].
+    axes : pair of matplotlib Axes (the first polar), optional
+        Where to draw.
+    """
+    plt = _pyplot()
+    if axes is None:
+        fig = plt.figure(figsize=(11, 4.6))
+        axes = (fig.add_subplot(1, 2, 1, projection="polar"), fig.add_subplot(1, 2, 2))
+    fig = axes[0].figure
+    angles = np.asarray(angles, float)
+    width = 2 * np.pi / max(len(angles), 1) * 0.35
+    axes[0].bar(angles - width / 2, inner, width=width, color="C0", label="inner")
+    axes[0].bar(angles + width / 2, outer, width=width, color="C1", label="outer")
+    axes[0].set_title(f"{name} roller loads [N] at their angles".strip(), fontsize=10)
+    axes[0].legend(loc="lower left", fontsize=8, bbox_to_anchor=(-0.15, -0.12))
+    x = np.asarray(positions, float) * 1e3
+    axes[1].step(x, inner_slices, where="mid", color="C0", label="inner slices")
+    axes[1].step(x, outer_slices, where="mid", color="C1", label="outer slices")
+    axes[1].set_xlabel("position along the roller [mm]")
+    axes[1].set_ylabel("slice load [N]")
+    axes[1].set_title("heaviest roller", fontsize=10)
+    axes[1].legend(fontsize=8)
+    fig.tight_layout()
+    return fig, axes
+
+
+def roller_pressure_figure(curves, name="", ax=None):
+    """The pressure along a roller on each raceway.
+
+    Parameters
+    ----------
+    curves : dict
+        Raceway -> (positions [m], pressures [Pa]).
+    name : str
+        Bearing label [-].
+    ax : matplotlib Axes, optional
+        Where to draw.
+    """
+    fig, ax = figure_axes(ax, figsize=(8, 4))
+    for race, (x, p) in curves.items():
+        ax.plot(np.asarray(x) * 1e3, np.asarray(p) / 1e6, "o-", ms=3, label=race)
+    ax.axhline(4000.0, color="0.5", ls="--", lw=0.8, label="ISO 76: 4000 MPa")
+    ax.set_xlabel("position along the roller [mm]")
+    ax.set_ylabel("pressure [MPa]")
+    ax.set_title(f"{name} pressure along the roller".strip(), fontsize=10)
+    ax.legend(fontsize=8)
+    return fig, ax
+
+
 def stiffness_map_figure(table, ax=None):
     """Radial and axial stiffness over the radial load, one line per (axial load, speed).
 

@@ -77,7 +77,8 @@ def ross_element(
     Parameters
     ----------
     results : LoadDistribution or sequence of them
-        Solutions at increasing shaft speeds (same bearing and node) [-].
+        Solutions at increasing shaft speeds (same bearing and node), ball or roller
+        (:class:`~bearinglab.quasistatic.roller_result.RollerLoadDistribution`) [-].
     n : int
         Shaft node of the bearing in the ROSS rotor [-].
     tag : str, optional
@@ -119,7 +120,10 @@ def ross_element(
     single = len(results) == 1
     kwargs = {name: float(v[0]) if single else v.tolist() for name, v in coefficients.items()}
     kwargs[speed_keyword(ross.BearingElement)] = speeds.tolist()
-    name = results[0].bearing.name or "ball bearing"
+    name = (
+        results[0].bearing.name
+        or f"{getattr(results[0].bearing, 'rolling_element', 'ball')} bearing"
+    )
     return ross.BearingElement(n=n, tag=tag or f"{name} n{n}", **kwargs)
 
 
@@ -142,7 +146,7 @@ def bearing_element(
 
     Parameters
     ----------
-    bearing : BallBearing
+    bearing : BallBearing or RollerBearing
         The bearing.
     n : int
         Shaft node [-].
@@ -208,7 +212,9 @@ def ross_bearing(
     damping_factor : float
         beta of Kramer's rule [s].
     """
-    bearing, _ = bearing_from_designation(designation, system=system, overrides=overrides)
+    bearing, _ = bearing_from_designation(
+        designation, system=system, overrides=overrides, rollers=True
+    )
     return bearing_element(
         bearing,
         n,

@@ -9,7 +9,7 @@ import sys
 import pytest
 
 #: Short runs that reach every compiled kernel: the rigid and slip integrators and their
-#: accelerations, the surface function, the quasi-static ball kernel.
+#: accelerations, the surface function, the quasi-static ball and roller kernels.
 WORKLOAD = """
 import math
 from bearinglab.catalog import bearing_from_designation
@@ -20,6 +20,11 @@ from bearinglab.quasistatic import solve_load_distribution
 bearing, _ = bearing_from_designation("6205")
 condition = OperatingCondition(radial_load=500.0, shaft_speed=1800 * math.pi / 30)
 solve_load_distribution(bearing, condition)
+# the roller kernels: the rollers' equilibrium (tapered) and the series shortcut (at rest)
+taper, _ = bearing_from_designation("30205", rollers=True)
+solve_load_distribution(taper, OperatingCondition(radial_load=500.0, axial_load=800.0))
+cylinder, _ = bearing_from_designation("NU205", rollers=True)
+solve_load_distribution(cylinder, OperatingCondition(radial_load=500.0))
 for model in ("rigid", "slip"):
     simulate(bearing, condition, [Defect("outer", width=1e-3, depth=1e-4)], model=model,
              duration=0.002, sample_rate=40e3, settle=0.0)
@@ -66,6 +71,7 @@ def test_a_new_process_compiles_nothing(second_run):
     used = {name: s for name, s in second_run.items() if s["compiled"]}
     assert any("dopri_chunk_rigid" in name for name in used)
     assert any("rosenbrock_chunk" in name for name in used)
+    assert any("_roller_compiled.ring_newton" in name for name in used)
     assert {name: s["misses"] for name, s in used.items() if s["misses"]} == {}
     assert all(s["hits"] >= s["compiled"] for s in used.values())
 

@@ -31,6 +31,10 @@ TABLES: dict[str, tuple[str, tuple[str, ...]]] = {
         "published internal geometry of specific bearings",
         ("name", "designation", "source", "notes"),
     ),
+    "roller_geometry.csv": (
+        "published internal geometry of specific roller bearings",
+        ("name", "designation", "bearing_type", "profile", "source", "notes"),
+    ),
     "iso5753_radial_clearance.csv": (
         "deep-groove ball bearing radial clearance (ISO 5753-1)",
         ("group",),

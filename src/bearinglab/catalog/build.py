@@ -36,6 +36,13 @@ from typing import Any
 
 from ..errors import CatalogError, InputError
 from ..geometry import BallBearing, Source
+from .build_roller import (
+    ROLLER_BUILD_TYPES,
+    ROLLER_OVERRIDABLE,
+    published_roller,
+    roller_by_name,
+    roller_from_designation,
+)
 from .estimate import (
     BALL_TYPES,
     ESTIMATE_METHOD,
@@ -55,6 +62,7 @@ from .lookup import (
     published_geometries,
     published_geometry,
 )
+from .needed import GeometryNeeded
 
 #: Keywords of BallBearing a caller may override.
 OVERRIDABLE = (
@@ -73,19 +81,6 @@ _INTERNAL = (
     "inner_groove_factor",
     "outer_groove_factor",
 )
-
-
-class GeometryNeeded(CatalogError):
-    """The catalogue cannot give some values; the caller must give them as overrides.
-
-    ``needed`` lists the BallBearing keywords to give (the command line maps them to its
-    options), ``reason`` says why, without the "give ..." clause.
-    """
-
-    def __init__(self, reason: str, needed: tuple[str, ...]) -> None:
-        self.reason = reason
-        self.needed = tuple(needed)
-        super().__init__(f"{reason}; give {', '.join(self.needed)} as overrides")
 
 
 #: What a thrust ball bearing needs from the caller: the catalogue estimates no thrust
@@ -233,9 +228,22 @@ def _table_clearance(des: Any, text: str) -> tuple[float | None, Source]:
 
 
 def bearing_from_designation(
-    text: str, system: str | None = None, overrides: dict | None = None
+    text: str,
+    system: str | None = None,
+    overrides: dict | None = None,
+    *,
+    rollers: bool = False,
 ) -> tuple[BallBearing, Any]:
-    """Build a BallBearing from a designation (ISO or GOST) or a catalogue name.
+    """Build a BallBearing (or a RollerBearing) from a designation (ISO or GOST) or a
+    catalogue name.
+
+    With ``rollers=True``, cylindrical and tapered roller bearings (NU205, NJ205, NUP205,
+    N205, NN3020, 30205, 32205; GOST 2205, 42205, 92205, 7205, 7505 ...) and the published
+    roller rows (``"209 cylindrical (Harris)"``, ``"ZA-2115 (IMS)"``) give a
+    :class:`~bearinglab.roller_geometry.RollerBearing`
+    (:func:`bearinglab.catalog.build_roller.roller_from_designation`), whose overrides are
+    RollerBearing keywords. Without it they are refused as before (a CatalogError), which
+    the command line relies on until it is wired for roller bearings (issue 28).
 
     ``text`` may be a catalogue name of a published bearing (``"ER-16K"``,
     ``"6205 (seed 004)"``) or a designation (``"6205-2RS"``, ``"180205"``).  Internal
@@ -258,8 +266,10 @@ def bearing_from_designation(
     system : str or None
         ``"gost"`` or ``"iso"``; None lets the designation reader decide [-].
     overrides : dict or None
-        BallBearing keyword -> value in SI units (m, rad), taking precedence over the
-        catalogue and the estimate [-].
+        BallBearing (or RollerBearing) keyword -> value in SI units (m, rad), taking
+        precedence over the catalogue and the estimate [-].
+    rollers : bool
+        Build roller bearings too (see above) [-].
 
     Returns
     -------
@@ -269,8 +279,10 @@ def bearing_from_designation(
     Raises
     ------
     CatalogError
-        For roller, self-aligning or double-row bearings (no internal-geometry model
-        yet), or when the designation names a clearance group the ISO 5753-1 table has no
+        For roller bearings without ``rollers`` (and with it, for spherical, needle and
+        thrust roller bearings), self-aligning or double-row ball bearings (no
+        internal-geometry model yet), or when the designation names a clearance group the
+        ISO 5753-1 table has no
         value for at that bore (C1; C4 or C5 below 6 mm; bores over 140 mm).
     GeometryNeeded
         (a CatalogError) When neither the catalogue nor the overrides give enough to
@@ -283,8 +295,17 @@ def bearing_from_designation(
     """
     overrides = dict(overrides or {})
     for key in overrides:
-        if key not in OVERRIDABLE:
-            raise InputError("overrides", key, f"one of {', '.join(OVERRIDABLE)}")
+        if key not in OVERRIDABLE and key not in ROLLER_OVERRIDABLE:
+            raise InputError(
+                "overrides",
+                key,
+                f"one of {', '.join(OVERRIDABLE)} (ball bearings) or "
+                f"{', '.join(ROLLER_OVERRIDABLE)} (roller bearings)",
+            )
+    roller_row = roller_by_name(text) if rollers else None
+    if roller_row is not None:
+        des = _parse(roller_row.designation, "iso") if roller_row.designation else None
+        return roller_from_designation(text, des, roller_row, overrides)
     named = _by_name(text)
     row = named
     des = None
@@ -293,8 +314,18 @@ def bearing_from_designation(
             des = _parse(named.designation, "iso")
     else:
         des = _parse(text, system)
+        if rollers and getattr(des, "bearing_type", None) in ROLLER_BUILD_TYPES:
+            return roller_from_designation(text, des, published_roller(des), overrides)
         _check_type(des, overrides)
         row = published_geometry(des)
+    for key in overrides:
+        if key not in OVERRIDABLE:
+            raise InputError(
+                key,
+                overrides[key],
+                "an input of a ball bearing (" + ", ".join(OVERRIDABLE) + ")",
+                "the designation is a ball bearing",
+            )
 
     values: dict[str, Any] = {}
     sources: dict[str, Source] = {}

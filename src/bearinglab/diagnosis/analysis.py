@@ -16,6 +16,7 @@ import numpy as np
 from ..errors import InputError
 from ..geometry import BallBearing
 from ..kinematics import DefectFrequencies, defect_frequencies
+from ..roller_geometry import RollerBearing
 from ..signal import EnvelopeSpectrum, Signal
 from ..signal.quality import check_channel
 from .families import (
@@ -108,14 +109,14 @@ def _speed(frequencies, shaft_speed, speed_range, x, fs, warnings, supply=None):
     if isinstance(frequencies, DefectFrequencies):
         bearing, nominal = frequencies.bearing, frequencies.shaft_speed
         outer, alpha = frequencies.outer_rotating, frequencies.contact_angle
-    elif isinstance(frequencies, BallBearing):
+    elif isinstance(frequencies, (BallBearing, RollerBearing)):
         bearing, nominal, outer, alpha = frequencies, None, False, None
     else:
         raise InputError(
             "frequencies",
             type(frequencies).__name__,
             "bearinglab.kinematics.DefectFrequencies (defect_frequencies()) or "
-            "a BallBearing with shaft_speed",
+            "a BallBearing or RollerBearing with shaft_speed",
         )
     auto = isinstance(shaft_speed, str)
     if auto and shaft_speed.strip().lower() != "auto":
@@ -125,7 +126,7 @@ def _speed(frequencies, shaft_speed, speed_range, x, fs, warnings, supply=None):
     if nominal is not None and not nominal > 0:
         raise InputError("shaft_speed", nominal, 'a speed > 0 rad/s or "auto"')
     if nominal is None and not auto:
-        raise InputError("shaft_speed", None, 'a speed > 0 rad/s or "auto" with a BallBearing')
+        raise InputError("shaft_speed", None, 'a speed > 0 rad/s or "auto" with a bearing')
     used, record, measured, doubt = speed_used(x, fs, nominal, speed_range, auto, warnings, supply)
     kin = defect_frequencies(bearing, used, outer_rotating=outer, contact_angle=alpha)
     return kin, record, kin.shaft_hz if measured is None else measured, doubt
@@ -202,7 +203,7 @@ def analyze_signal(
         The record; an array is one channel of samples (any unit, e.g. m/s^2 or g).
     sample_rate : float or None
         Sample rate [Hz]; required for an array; None (or the same rate) for a Signal.
-    frequencies : DefectFrequencies or BallBearing
+    frequencies : DefectFrequencies, BallBearing or RollerBearing
         Kinematic frequencies at the nominal speed (:func:`~bearinglab.kinematics.
         defect_frequencies`), or the bearing when ``shaft_speed`` is given.
     channel : str, optional

@@ -40,6 +40,14 @@ Tolerances (fraction of the kinematic value, below and above), each overridable:
   Antoni (2011, sec. 2.1) note that the ball lines are the least certain;
 - cage, +-2 %: FTF = BPFO / Z slips as BPFO does.
 
+The ball window never reaches into a race's window (:func:`families` cuts it at the
+race window's edge): a line within 2 % of BPFO or BPFI is read as that race's, however
+wide the ball's slip. This matters where 2 BSF lies near a race rate - in roller
+bearings, whose rollers fill more of the pitch circle (NU205: 2 x the roller spin
+152.8 Hz against BPFO 145.9 Hz at 1800 rpm, 4.5 % apart, so that the -7 % ball window
+held every BPFO harmonic and a simulated outer-race defect was called "ball"); a 6205's
+2 BSF lies 31 % above its BPFO, 13 % below its BPFI, and keeps its whole window.
+
 The search window is never narrower than the line's own three bins
 (:data:`bearinglab.diagnosis.statistics.LINE_BINS`).
 """
@@ -179,6 +187,32 @@ def tolerances(overrides=None) -> dict[str, tuple[float, float]]:
     return out
 
 
+def separated(frequencies, windows: dict[str, tuple[float, float]]) -> dict:
+    """``windows`` with the ball's cut where it reaches a race's window (the same
+    fractions at every harmonic): the lower edge of the ball's raised to the upper edge
+    of a race window below it, the upper edge lowered to the lower edge of one above.
+
+    >>> w = separated({"bpfo": 145.9, "bpfi": 214.1, "ball_defect": 152.8}, TOLERANCES)
+    >>> round(w["ball"][0], 4), w["ball"][1], w["outer_race"]
+    (0.0261, 0.02, (0.02, 0.02))
+    """
+    ball = float(frequencies[FREQUENCY["ball"]])
+    below, above = windows["ball"]
+    if not ball > 0:
+        return dict(windows)
+    for race in ("outer_race", "inner_race"):
+        f = float(frequencies[FREQUENCY[race]])
+        race_below, race_above = windows[race]
+        top, bottom = f * (1.0 + race_above), f * (1.0 - race_below)
+        if f <= ball and top > ball * (1.0 - below):
+            below = max(0.0, min(below, 1.0 - top / ball))
+        elif f > ball and bottom < ball * (1.0 + above):
+            above = max(0.0, min(above, bottom / ball - 1.0))
+    out = dict(windows)
+    out["ball"] = (below, above)
+    return out
+
+
 def families(
     frequencies, windows: dict[str, tuple[float, float]], modulations=None
 ) -> list[Family]:
@@ -186,6 +220,7 @@ def families(
     are spaced by ``modulations`` (``shaft``, ``ftf`` -> Hz: the rates the signal shows)
     where given, else by ``frequencies``."""
     rates = modulations or frequencies
+    windows = separated(frequencies, windows)
     out = []
     for name in FAMILIES:
         modulation, orders = SIDEBANDS[name]

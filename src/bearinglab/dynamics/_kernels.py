@@ -38,8 +38,9 @@ import numpy as np
     INNER_RADIUS,
     OUTER_RADIUS,
     CAGE_PHASE,
-) = range(20)
-RIGID_PARAMETER_COUNT = 20
+    EXPONENT,
+) = range(21)
+RIGID_PARAMETER_COUNT = 21
 
 
 @numba.njit(cache=True)
@@ -202,7 +203,8 @@ def rigid_rhs(t, y, p, table, dydt):
     """Right-hand side of the 4-DOF rigid-ring model (seed 003 sec. 3); fills ``dydt``.
 
     m_s a_s = F + F_unb(t) - k_s x_s - c_s v_s - f_b,   m_p a_p = f_b - k_p x_p - c_p v_p,
-    f_b = sum_j K [delta_j]_+^1.5 e_j + c_b (v_s - v_p),
+    f_b = sum_j K [delta_j]_+^n e_j + c_b (v_s - v_p) (n = 1.5 for balls, the line law's
+    10/9 or a profiled roller's fitted exponent for rollers),
     delta_j = (x_s - x_p) cos psi_j + (y_s - y_p) sin psi_j - P_d/2 - lambda_j(t),
     psi_j = psi_0 + 2 pi j / Z + omega_c t; lambda_j from :func:`surface_deviation`.
     """
@@ -234,7 +236,10 @@ def rigid_rhs(t, y, p, table, dydt):
         s = math.sin(psi[j])
         delta = rx * c + ry * s - p[HALF_CLEARANCE] - dev_in[j] - dev_out[j]
         if delta > 0.0:
-            q = p[K_HERTZ] * delta * math.sqrt(delta)
+            if p[EXPONENT] == 1.5:  # a ball's Hertz law
+                q = p[K_HERTZ] * delta * math.sqrt(delta)
+            else:  # a roller's line law (10/9, or a profiled roller's fit)
+                q = p[K_HERTZ] * delta ** p[EXPONENT]
             fx += q * c
             fy += q * s
     phase = p[SHAFT_SPEED] * t
@@ -260,7 +265,7 @@ def rigid_rhs_numpy(t, y, p, table):
     rel = y[0:2] - y[2:4]
     e = np.stack([np.cos(psi), np.sin(psi)])
     delta = rel @ e - p[HALF_CLEARANCE] - dev_in - dev_out
-    q = p[K_HERTZ] * np.clip(delta, 0.0, None) ** 1.5
+    q = p[K_HERTZ] * np.clip(delta, 0.0, None) ** p[EXPONENT]
     f = e @ q + p[C_BEARING] * (y[4:6] - y[6:8])
     phase = p[SHAFT_SPEED] * t
     unb = p[UNBALANCE] * p[SHAFT_SPEED] ** 2 * np.array([np.cos(phase), np.sin(phase)])

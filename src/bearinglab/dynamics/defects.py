@@ -122,15 +122,19 @@ class Defect:
             raise InputError("ball", self.ball, "a ball index >= 0")
 
     def check(self, bearing) -> None:
-        """Refuse a defect that does not fit ``bearing`` (width below D_w, ball index < Z)."""
-        if self.width >= bearing.ball_diameter:
+        """Refuse a defect that does not fit ``bearing`` (width below D_w, ball index < Z);
+        for a roller bearing, the rolling element ("ball") is a roller."""
+        element = getattr(bearing, "rolling_element", "ball")
+        if self.width >= bearing.element_diameter:
             raise InputError(
                 "width",
                 self.width,
-                f"less than the ball diameter {bearing.ball_diameter * 1e3:g} mm",
+                f"less than the {element} diameter {bearing.element_diameter * 1e3:g} mm",
             )
-        if self.location == "ball" and self.ball >= bearing.ball_count:
-            raise InputError("ball", self.ball, f"a ball index in [0, {bearing.ball_count - 1}]")
+        if self.location == "ball" and self.ball >= bearing.element_count:
+            raise InputError(
+                "ball", self.ball, f"a {element} index in [0, {bearing.element_count - 1}]"
+            )
 
     def to_dict(self) -> dict:
         """JSON-ready description in engineering units."""

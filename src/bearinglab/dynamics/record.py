@@ -104,7 +104,7 @@ def simulate_record(
 
     Parameters
     ----------
-    bearing : BallBearing
+    bearing : BallBearing or RollerBearing
         The bearing.
     condition : OperatingCondition
         Radial load and shaft speed (> 0) [N, rad/s]; the models are planar.

@@ -14,7 +14,13 @@ them (:mod:`bearinglab.dynamics.defects`). Equations (seed 003 eq. 21, rebuilt):
     delta_j = (x_s - x_p) cos psi_j + (y_s - y_p) sin psi_j - P_d/2 - lambda_j(t)
 
 K is the series constant of the inner and outer Hertz contacts
-(:func:`bearinglab.contact.hertz.series_constant`). Assumptions (seed 003 sec. 2):
+(:func:`bearinglab.contact.hertz.series_constant`). For a roller bearing
+(``rolling_element`` "roller") the balls are rollers and the law is the line contact's,
+Q = c_l [delta_j]_+^(10/9) with ISO/TS 16281's c_l for both contacts
+(:func:`bearinglab.contact.line.iso16281_roller_constant`) when the roller is unprofiled;
+with a profile, the power law K delta^n fitted (least squares in log-log) to the roller's
+slice sum sum_k (c_l/n_s) [delta - 2 P(x_k)]_+^(10/9) between 0.1 and 2 times the
+heaviest roller's load 4.08 F_r/Z (:func:`roller_law`). Assumptions (seed 003 sec. 2):
 Hertz contacts without plastic flow; balls equally spaced; ball inertia and gyroscopic
 moments neglected (moderate speed); defect edges sharp; no slip (the cage turns at the
 kinematic speed; see the slip model for what lubricated bearings really do).
@@ -92,6 +98,37 @@ class RigidParameters:
         }
 
 
+def roller_law(bearing, radial_load: float) -> tuple[float, float]:
+    """(K, n) of a roller between both raceways in the planar model, Q = K delta^n
+    [N/m^n, -]: ISO/TS 16281's (c_l, 10/9) for an unprofiled roller, else the fit to the
+    slice sum over 0.1-2 times the heaviest roller's load (see the module docstring).
+
+    Parameters
+    ----------
+    bearing : RollerBearing
+        The roller bearing (profile, L_we, D_we, materials).
+    radial_load : float
+        F_r [N] (sets the load range of the fit).
+    """
+    from ..contact.line import iso16281_roller_constant, slice_positions
+    from ..contact.roller_race import slice_loads
+    from ..materials import BEARING_STEEL
+
+    e = effective_modulus(bearing.roller_material, bearing.ring_material)
+    c_l = iso16281_roller_constant(
+        bearing.roller_length, e, effective_modulus(BEARING_STEEL, BEARING_STEEL)
+    )
+    if bearing.profile.kind == "flat":
+        return c_l, 10.0 / 9.0
+    x = slice_positions(bearing.roller_length, 30)
+    drop = bearing.profile_drop(x)
+    q_ref = max(4.08 * radial_load / bearing.roller_count, 1.0)
+    loads = q_ref * np.geomspace(0.1, 2.0, 12)
+    deltas = np.array([slice_loads(q, c_l, x, drop)[1] for q in loads])
+    n, log_k = np.polyfit(np.log(deltas), np.log(loads), 1)
+    return float(np.exp(log_k)), float(n)
+
+
 def hertz_constant(bearing) -> float:
     """Series load-deflection constant K of one ball's inner and outer contacts [N/m^1.5]."""
     e = effective_modulus(bearing.ball_material, bearing.ring_material)
@@ -103,7 +140,10 @@ def hertz_constant(bearing) -> float:
 def pack(bearing, condition, params: RigidParameters, table, cage_phase: float = 0.0):
     """The kernel's parameter array for ``bearing`` under ``condition``."""
     orders = frequency_orders(
-        bearing.ball_count, bearing.ball_diameter, bearing.pitch_diameter, bearing.contact_angle
+        bearing.element_count,
+        bearing.element_diameter,
+        bearing.pitch_diameter,
+        bearing.contact_angle,
     )
     w = condition.shaft_speed
     load = condition.load_vector()
@@ -111,28 +151,31 @@ def pack(bearing, condition, params: RigidParameters, table, cage_phase: float =
     p[kern.M_S], p[kern.M_P] = params.shaft_mass, params.pedestal_mass
     p[kern.K_S], p[kern.C_S] = params.shaft_stiffness, params.shaft_damping
     p[kern.K_P], p[kern.C_P] = params.pedestal_stiffness, params.pedestal_damping
-    p[kern.K_HERTZ] = hertz_constant(bearing)
+    if getattr(bearing, "rolling_element", "ball") == "roller":
+        p[kern.K_HERTZ], p[kern.EXPONENT] = roller_law(bearing, condition.radial_load)
+    else:
+        p[kern.K_HERTZ], p[kern.EXPONENT] = hertz_constant(bearing), 1.5
     p[kern.HALF_CLEARANCE] = 0.5 * bearing.diametral_clearance
     p[kern.C_BEARING] = params.bearing_damping
-    p[kern.BALLS] = bearing.ball_count
+    p[kern.BALLS] = bearing.element_count
     p[kern.CAGE_SPEED] = float(orders["ftf"]) * w
     p[kern.SPIN_SPEED] = float(orders["bsf"]) * w  # ball spin relative to the cage
     p[kern.SHAFT_SPEED] = w
     p[kern.F_X], p[kern.F_Y] = load[0], load[1]
     p[kern.UNBALANCE] = params.unbalance
-    p[kern.BALL_RADIUS] = 0.5 * bearing.ball_diameter
+    p[kern.BALL_RADIUS] = 0.5 * bearing.element_diameter
     p[kern.INNER_RADIUS] = 0.5 * bearing.inner_raceway_diameter
     p[kern.OUTER_RADIUS] = 0.5 * bearing.outer_raceway_diameter
     p[kern.CAGE_PHASE] = cage_phase
     return p
 
 
-def static_offset(k, psi, force, half_clearance, theta) -> np.ndarray:
+def static_offset(k, psi, force, half_clearance, theta, exponent=1.5) -> np.ndarray:
     """Displacement of the inner ring relative to the outer at static equilibrium [m].
 
-    Solves F = sum_j K [u cos(psi_j - theta) - P_d/2]_+^1.5 cos(psi_j - theta) for the
+    Solves F = sum_j K [u cos(psi_j - theta) - P_d/2]_+^n cos(psi_j - theta) for the
     approach u along the load direction theta, balls frozen at ``psi`` (the transverse
-    force is small and is left to the settling time).
+    force is small and is left to the settling time); n the ``exponent`` (1.5 balls).
     """
     if force == 0.0:
         return np.zeros(2)
@@ -140,7 +183,7 @@ def static_offset(k, psi, force, half_clearance, theta) -> np.ndarray:
 
     def residual(u):
         d = np.clip(u * cosines - half_clearance, 0.0, None)
-        return float(k * np.sum(d**1.5 * cosines)) - force
+        return float(k * np.sum(d**exponent * cosines)) - force
 
     lo = max(half_clearance, 0.0)
     hi = lo + 1e-6
@@ -167,7 +210,9 @@ def static_state(p) -> np.ndarray:
     psi = p[kern.CAGE_PHASE] + 2 * np.pi * np.arange(z) / z
     k_s, k_p = p[kern.K_S], p[kern.K_P]
     share = 1.0 if k_s == 0.0 else k_p / (k_p + k_s)  # approximate when k_s > 0
-    u = static_offset(p[kern.K_HERTZ], psi, force * share, p[kern.HALF_CLEARANCE], theta)
+    u = static_offset(
+        p[kern.K_HERTZ], psi, force * share, p[kern.HALF_CLEARANCE], theta, p[kern.EXPONENT]
+    )
     x_p = (force * share / k_p if k_p > 0 else 0.0) * np.array([math.cos(theta), math.sin(theta)])
     y[2:4] = x_p
     y[0:2] = x_p + u

@@ -184,7 +184,7 @@ def simulate(
 
     Parameters
     ----------
-    bearing : BallBearing
+    bearing : BallBearing or RollerBearing
         Geometry and materials.
     condition : OperatingCondition
         Radial load (direction included) and shaft speed [rad/s] (inner ring turning).
@@ -228,6 +228,26 @@ def simulate(
     if condition.shaft_speed <= 0:
         raise speed_error(condition.shaft_speed, "a speed > 0 rpm")
     defects = tuple(defects)
+    if getattr(bearing, "rolling_element", "ball") == "roller":
+        if model != "rigid":
+            raise InputError(
+                "model", model, "rigid for a roller bearing", "the slip model is for ball bearings"
+            )
+        if imperfections is not None:
+            raise InputError(
+                "imperfections",
+                imperfections,
+                "None for a roller bearing",
+                "waviness, ball-size errors and random surfaces are modelled for ball "
+                "bearings only",
+            )
+        if not bearing.contact_modelled or bearing.is_tapered or bearing.rows != 1:
+            raise InputError(
+                "bearing",
+                bearing.name or bearing.bearing_type,
+                "a single-row cylindrical or needle roller bearing for the rigid model",
+                "the planar model has no axial load or second row",
+            )
     table = pack_defects(defects, bearing, imperfections)
     kin = defect_frequencies(bearing, condition.shaft_speed)
     if model == "rigid":

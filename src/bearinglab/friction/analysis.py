@@ -42,8 +42,10 @@ from .rules import (
 from .skf import (
     K_RS,
     K_Z,
+    K_Z_UNVERIFIED,
     MU_BL,
     MU_EHL,
+    MU_EHL_ROLLER,
     SKF_BEARING_TYPES,
     SKF_SOURCE,
     SkfGeometryConstants,
@@ -148,13 +150,15 @@ def skf_friction(
     seal: float = 0.0,
     drag: float = 0.0,
     notes: tuple = (),
+    axial_factor: float | None = None,
 ) -> FrictionResult:
     """The SKF model (:func:`~bearinglab.friction.skf.skf_frictional_moment`) as a result.
 
     Parameters
     ----------
     bearing_type : str
-        ``"radial_ball"``, ``"angular_contact_ball"`` or ``"four_point_contact_ball"`` [-].
+        ``"radial_ball"``, ``"angular_contact_ball"``, ``"four_point_contact_ball"``,
+        ``"cylindrical_roller"`` or ``"tapered_roller"`` [-].
     bore, outside_diameter : float
         d, D [m].
     radial_load, axial_load : float
@@ -181,6 +185,8 @@ def skf_friction(
         M_seal and M_drag [N m] (see :func:`~bearinglab.friction.skf.seal_moment`).
     notes : tuple of str
         Caveats of the caller, added to the warnings [-].
+    axial_factor : float or None
+        Y of a tapered roller bearing [-].
 
     >>> from bearinglab.friction import deep_groove_constants
     >>> r = skf_friction("radial_ball", 0.025, 0.052, 1000.0, 0.0, rpm_to_rad_s(3000), 20e-6,
@@ -209,9 +215,10 @@ def skf_friction(
         k_rs=K_RS[lubrication],
         k_z=k_z,
         mu_bl=mu_bl,
-        mu_ehl=MU_EHL[lubricant_kind],
+        mu_ehl=MU_EHL_ROLLER.get(bearing_type, MU_EHL[lubricant_kind]),
         seal=seal,
         drag=drag,
+        axial_factor=axial_factor,
     )
     dm = 0.5 * (float(bore) + float(outside_diameter))
     nu1 = float(viscosity) / viscosity_ratio(viscosity, w, dm) if w > 0 else None
@@ -221,6 +228,16 @@ def skf_friction(
             "SKF geometry constants not checked against the catalogue table ("
             + constants.source
             + ")"
+        )
+    if k_z is None and bearing_type in K_Z_UNVERIFIED:
+        warnings.append(
+            f"K_Z = {K_Z[bearing_type]:g} of a {bearing_type.replace('_', ' ')} bearing is "
+            "SKF's value as recalled, not checked against the catalogue table (give k_z)"
+        )
+    if bearing_type in MU_EHL_ROLLER:
+        warnings.append(
+            f"mu_EHL = {MU_EHL_ROLLER[bearing_type]:g} of a {bearing_type.replace('_', ' ')} "
+            "bearing (SKF catalogue), whatever the lubricant kind"
         )
     if fr == 0.0 and fa == 0.0:
         warnings.append(_NO_LOAD)
@@ -399,7 +416,7 @@ def bearing_friction(
         return replace(result, warnings=plausible + result.warnings, unused=_given(unused))
     kind = friction_type or b.bearing_type
     if kind not in SKF_BEARING_TYPES:
-        what = "for the SKF model a ball bearing: " + ", ".join(SKF_BEARING_TYPES)
+        what = "for the SKF model one of " + ", ".join(SKF_BEARING_TYPES)
         if friction_type is not None:
             raise InputError("friction_type", friction_type, what)
         raise InputError(
@@ -424,11 +441,14 @@ def bearing_friction(
     method, method_how = lubrication_of(lubrication, lub)
     if constants is None:
         if kind != "radial_ball":
+            needed = {
+                "cylindrical_roller": "R1, S1, S2 (R2 = 0)",
+                "tapered_roller": "R1, R2, S1, S2",
+            }.get(kind, "R1, R2, S1, S2, R3, S3")
             raise InputError(
                 "constants",
                 None,
-                "SKF geometry constants R1, R2, S1, S2, R3, S3 "
-                f"for {kind} (SKF's table is not shipped)",
+                f"SKF geometry constants {needed} for {kind} (SKF's table is not shipped)",
                 "give them (`constants`)",
             )
         constants = deep_groove_constants(series or b.series)
@@ -468,6 +488,22 @@ def bearing_friction(
             )
         else:
             seal = seal_moment(*ks, seal_diameter)
+    axial_factor = None
+    if kind == "tapered_roller":
+        roller = b.roller_bearing
+        if roller is None or not getattr(roller, "is_tapered", False):
+            if fa > 0:
+                raise InputError(
+                    "bearing",
+                    b.name,
+                    "a tapered roller bearing with its geometry when there is an axial load",
+                    "SKF's tapered G_rr and G_sl take the axial factor Y = 0.4 cot(alpha)",
+                )
+        else:
+            from ..ratings.roller import tapered_factors
+
+            axial_factor = tapered_factors(roller.contact_angle, int(roller.rows))[2]
+            notes.append(f"Y = {axial_factor:.3g} from the contact angle (ISO 281: 0.4 cot alpha)")
     result = skf_friction(
         kind,
         b.bore,
@@ -483,6 +519,7 @@ def bearing_friction(
         lubricant_kind=lubricant_kind,
         seal=seal,
         notes=tuple(notes),
+        axial_factor=axial_factor,
         **skf_options,
     )
     parameters = {
@@ -520,8 +557,9 @@ def _operating_warnings(bearing, shaft_speed, radial_load, axial_load) -> tuple:
     from ..geometry import BallBearing
     from ..operating import OperatingCondition
     from ..plausibility import operating_warnings
+    from ..roller_geometry import RollerBearing
 
-    if not isinstance(bearing, BallBearing):
+    if not isinstance(bearing, (BallBearing, RollerBearing)):
         return ()
     condition = OperatingCondition(
         radial_load=radial_load, axial_load=axial_load, shaft_speed=shaft_speed

@@ -64,6 +64,8 @@ class FrictionBearing:
         Shields and seals of the designation (:data:`bearinglab.designation.CLOSURES`) [-].
     ball_bearing : BallBearing or None
         The internal geometry, when the bearing is a ball bearing bearinglab models.
+    roller_bearing : RollerBearing or None
+        The internal geometry, when it is a roller bearing bearinglab models.
 
     >>> FrictionBearing.from_dimensions(0.025, 0.052).pitch_diameter
     0.0385
@@ -79,6 +81,7 @@ class FrictionBearing:
     design_variant: str | None = None
     closures: str = "unknown"
     ball_bearing: object = None
+    roller_bearing: object = None
 
     def __post_init__(self) -> None:
         from ..designation import BEARING_TYPES
@@ -128,6 +131,38 @@ class FrictionBearing:
             design_variant=getattr(designation, "design_variant", None),
             closures=getattr(designation, "closures", "unknown"),
             ball_bearing=bearing,
+        )
+
+    @classmethod
+    def from_roller_bearing(cls, bearing, designation=None) -> FrictionBearing:
+        """A ``bearing`` (:class:`~bearinglab.roller_geometry.RollerBearing`; d_m its roller
+        pitch diameter) and, optionally, its decoded ``designation``.
+
+        Parameters
+        ----------
+        bearing : RollerBearing
+            The roller bearing [-].
+        designation : Designation or None
+            Its designation (series, design variant, closures) [-].
+
+        >>> from bearinglab.catalog import bearing_from_designation
+        >>> b, des = bearing_from_designation("NU205", rollers=True)
+        >>> FrictionBearing.from_roller_bearing(b, des).design_variant
+        'NU'
+        """
+        if designation is None:
+            designation = _designation_of(bearing.name)
+        return cls(
+            name=bearing.name or "bearing",
+            bearing_type=bearing.bearing_type,
+            bore=bearing.bore,
+            outside_diameter=bearing.outside_diameter,
+            pitch_diameter=bearing.pitch_diameter,
+            pitch_diameter_source=f"roller pitch diameter ({bearing.geometry_source})",
+            series=getattr(designation, "series", None),
+            design_variant=getattr(designation, "design_variant", None) or bearing.design or None,
+            closures=getattr(designation, "closures", "unknown"),
+            roller_bearing=bearing,
         )
 
     @classmethod
@@ -263,12 +298,17 @@ def _designation_of(name: str | None):
 
 
 def as_friction_bearing(bearing, designation=None) -> FrictionBearing:
-    """A :class:`FrictionBearing` from a BallBearing (with its designation, if known) or
-    a FrictionBearing."""
+    """A :class:`FrictionBearing` from a BallBearing or a RollerBearing (with its
+    designation, if known) or a FrictionBearing."""
     from ..geometry import BallBearing
+    from ..roller_geometry import RollerBearing
 
     if isinstance(bearing, FrictionBearing):
         return bearing
     if isinstance(bearing, BallBearing):
         return FrictionBearing.from_ball_bearing(bearing, designation)
-    raise InputError("bearing", type(bearing).__name__, "a BallBearing or a FrictionBearing")
+    if isinstance(bearing, RollerBearing):
+        return FrictionBearing.from_roller_bearing(bearing, designation)
+    raise InputError(
+        "bearing", type(bearing).__name__, "a BallBearing, a RollerBearing or a FrictionBearing"
+    )

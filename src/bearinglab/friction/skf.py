@@ -73,10 +73,30 @@ MU_EHL = {"mineral": 0.05, "synthetic": 0.04, "transmission-fluid": 0.1}
 #: K_rs by lubrication method: 3e-8 low-level oil bath and oil jet, 6e-8 grease and
 #: oil-air [-] (secondary, see the module docstring).
 K_RS = {"grease": 6e-8, "oil-air": 6e-8, "oil-jet": 3e-8, "low-oil-bath": 3e-8}
-#: K_Z, the bearing-type geometry constant of phi_rs [-] (secondary).
-K_Z = {"radial_ball": 3.1, "angular_contact_ball": 4.4}
+#: K_Z, the bearing-type geometry constant of phi_rs [-] (secondary). The roller values
+#: (single-row cylindrical 5.1, single-row tapered 6) are SKF's as recalled, not checked
+#: against a stored copy of the catalogue's table: results that use them say so.
+K_Z = {
+    "radial_ball": 3.1,
+    "angular_contact_ball": 4.4,
+    "cylindrical_roller": 5.1,
+    "tapered_roller": 6.0,
+}
+#: K_Z values not checked against a stored copy (the result warns).
+K_Z_UNVERIFIED = ("cylindrical_roller", "tapered_roller")
+#: mu_EHL of roller bearings, whatever the oil (catalogue 10000 EN p. 105: 0.02 cylindrical,
+#: 0.002 tapered roller bearings) [-].
+MU_EHL_ROLLER = {"cylindrical_roller": 0.02, "tapered_roller": 0.002}
 #: Types the SKF model of this module covers.
-SKF_BEARING_TYPES = ("radial_ball", "angular_contact_ball", "four_point_contact_ball")
+SKF_BEARING_TYPES = (
+    "radial_ball",
+    "angular_contact_ball",
+    "four_point_contact_ball",
+    "cylindrical_roller",
+    "tapered_roller",
+)
+#: Of them, roller bearings (their G_rr, G_sl forms of catalogue Table 2a).
+SKF_ROLLER_TYPES = ("cylindrical_roller", "tapered_roller")
 
 SKF_SOURCE = (
     "SKF Rolling bearings, catalogue 10000 EN, 'The SKF model for calculating "
@@ -414,6 +434,63 @@ def angular_contact_load_variables(mean_diameter, radial_load, axial_load, shaft
     return g_rr, g_sl
 
 
+def cylindrical_roller_load_variables(mean_diameter, radial_load, axial_load, constants):
+    """(G_rr, G_sl) of a cylindrical roller bearing, catalogue Table 2a [SKF units]:
+    G_rr = R1 d_m^2.41 F_r^0.31, G_sl = S1 d_m^0.9 F_a + S2 d_m F_r (d_m mm, F N).
+
+    Parameters
+    ----------
+    mean_diameter : float
+        d_m = 0.5 (d + D) [m].
+    radial_load, axial_load : float
+        F_r, F_a [N], >= 0.
+    constants : SkfGeometryConstants
+        R1, S1, S2 of the series (R2 unused).
+
+    >>> g = cylindrical_roller_load_variables(0.0385, 2000.0, 0.0,
+    ...                                       SkfGeometryConstants(1.09e-6, 0.0, 0.16, 0.0015))
+    >>> round(g[0], 4), round(g[1], 3)
+    (0.0762, 115.5)
+    """
+    dm = float(_mm("mean_diameter", mean_diameter))
+    fr = float(_array("radial_load", radial_load, "N"))
+    fa = float(_array("axial_load", axial_load, "N"))
+    c = constants
+    return c.r1 * dm**2.41 * fr**0.31, c.s1 * dm**0.9 * fa + c.s2 * dm * fr
+
+
+def tapered_roller_load_variables(mean_diameter, radial_load, axial_load, axial_factor, constants):
+    """(G_rr, G_sl) of a tapered roller bearing, catalogue Table 2a [SKF units]:
+    G_rr = R1 d_m^2.38 (F_r + R2 Y F_a)^0.31, G_sl = S1 d_m^0.82 (F_r + S2 Y F_a), Y the
+    axial load factor of the bearing (0.4 cot alpha for one row).
+
+    Parameters
+    ----------
+    mean_diameter : float
+        d_m = 0.5 (d + D) [m].
+    radial_load, axial_load : float
+        F_r, F_a [N], >= 0.
+    axial_factor : float
+        Y [-].
+    constants : SkfGeometryConstants
+        R1, R2, S1, S2 of the series.
+
+    >>> g = tapered_roller_load_variables(0.0385, 2000.0, 500.0, 1.6,
+    ...                                   SkfGeometryConstants(1.76e-6, 10.9, 0.017, 2.0))
+    >>> round(g[0], 4), round(g[1], 2)
+    (0.1855, 1221.32)
+    """
+    dm = float(_mm("mean_diameter", mean_diameter))
+    fr = float(_array("radial_load", radial_load, "N"))
+    fa = float(_array("axial_load", axial_load, "N"))
+    y = float(_array("axial_factor", axial_factor, "-"))
+    c = constants
+    return (
+        c.r1 * dm**2.38 * (fr + c.r2 * y * fa) ** 0.31,
+        c.s1 * dm**0.82 * (fr + c.s2 * y * fa),
+    )
+
+
 def seal_moment(k_s1, k_s2, beta, seal_diameter):
     """M_seal = K_S1 d_s^beta + K_S2 [N m] (SKF units inside: d_s mm, M N mm).
 
@@ -476,14 +553,17 @@ def skf_frictional_moment(
     mu_ehl: float = MU_EHL["mineral"],
     seal: float = 0.0,
     drag: float = 0.0,
+    axial_factor: float | None = None,
 ) -> SkfMoment:
-    """Total frictional moment of a ball bearing by the SKF model [N m, components].
+    """Total frictional moment of a ball or roller bearing by the SKF model [N m,
+    components].
 
     Parameters
     ----------
     bearing_type : str
-        ``"radial_ball"`` (deep-groove), ``"angular_contact_ball"`` or
-        ``"four_point_contact_ball"`` [-].
+        ``"radial_ball"`` (deep-groove), ``"angular_contact_ball"``,
+        ``"four_point_contact_ball"``, ``"cylindrical_roller"`` or ``"tapered_roller"``
+        [-].
     bore, outside_diameter : float
         d, D [m]; d_m = 0.5 (d + D).
     radial_load, axial_load : float
@@ -506,6 +586,8 @@ def skf_frictional_moment(
         Seal moment M_seal [N m] (:func:`seal_moment`), >= 0.
     drag : float
         Drag moment M_drag [N m], >= 0 (not modelled here; 0 for grease, oil-air, oil jet).
+    axial_factor : float or None
+        Y of a tapered roller bearing (needed with F_a > 0) [-].
 
     >>> m = skf_frictional_moment("radial_ball", 0.025, 0.052, 1000.0, 0.0,
     ...                           rpm_to_rad_s(3000), 20e-6,
@@ -518,7 +600,7 @@ def skf_frictional_moment(
             "bearing_type",
             bearing_type,
             "one of " + ", ".join(SKF_BEARING_TYPES),
-            "the SKF model is implemented for ball bearings only",
+            "the SKF model is implemented for these types",
         )
     if not isinstance(constants, SkfGeometryConstants):
         raise InputError("constants", constants, "an SkfGeometryConstants")
@@ -541,6 +623,20 @@ def skf_frictional_moment(
     if bearing_type == "radial_ball":
         g_rr, g_sl = deep_groove_load_variables(
             dm, radial_load, axial_load, constants, static_load_rating
+        )
+    elif bearing_type == "cylindrical_roller":
+        g_rr, g_sl = cylindrical_roller_load_variables(dm, radial_load, axial_load, constants)
+    elif bearing_type == "tapered_roller":
+        if axial_factor is None:
+            if float(_array("axial_load", axial_load, "N")) > 0:
+                raise InputError(
+                    "axial_factor",
+                    None,
+                    "the axial load factor Y of the tapered bearing when F_a > 0",
+                )
+            axial_factor = 0.0
+        g_rr, g_sl = tapered_roller_load_variables(
+            dm, radial_load, axial_load, axial_factor, constants
         )
     else:
         g_rr, g_sl = angular_contact_load_variables(

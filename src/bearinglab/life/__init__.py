@@ -47,6 +47,7 @@ from .iso16281 import (
     reference_life,
     reference_rating_life,
 )
+from .iso16281_roller import roller_contact_ratings, roller_reference_rating_life
 from .life import (
     METHODS,
     LifeResult,
@@ -83,6 +84,8 @@ __all__ = [
     "reference_life",
     "reference_rating_life",
     "reliability_factor",
+    "roller_contact_ratings",
+    "roller_reference_rating_life",
     "static_load_factors",
     "static_load_rating",
     "ViscosityTooLow",

@@ -161,9 +161,19 @@ def contamination_factor(contamination, pitch_diameter: float) -> tuple[float, s
 
 
 def life_modification_factor(
-    kappa: float, load_ratio: float, *, ep_additives: bool = False, contamination: float = 1.0
+    kappa: float,
+    load_ratio: float,
+    *,
+    ep_additives: bool = False,
+    contamination: float = 1.0,
+    roller: bool = False,
 ) -> float:
-    """Life modification factor a_ISO of radial ball bearings, ISO 281:2007 [-].
+    """Life modification factor a_ISO of radial ball (or roller) bearings, ISO 281:2007 [-].
+
+    Balls: 0.1 [1 - (2.5671 - c/kappa^p)^0.83 (e_C C_u/P)^(1/3)]^-9.3; rollers:
+    0.1 [1 - (1.5859 - c/kappa^p) (e_C C_u/P)^0.4]^-9.185 with (c, p) = (1.3993, 0.054381),
+    (1.2348, 0.19087), (1.2348, 0.071739) in the three kappa bands
+    (:data:`bearinglab.ratings.tables.A_ISO_ROLLER_BANDS`).
 
     Parameters
     ----------
@@ -176,6 +186,8 @@ def life_modification_factor(
         is used and a_ISO is limited to 3 (ISO 281 9.3.3.4 as quoted by bb_core).
     contamination : float
         e_C, needed only for the EP rule [-].
+    roller : bool
+        Radial roller bearings' constants [-].
 
     Returns
     -------
@@ -203,16 +215,35 @@ def life_modification_factor(
     if ep_additives and kappa < 1.0 and contamination >= T.EP_KAPPA_EC_MIN:
         kappa, cap = 1.0, T.EP_A_ISO_CAP
     k = min(float(kappa), T.KAPPA_MAX)
-    c, p = next((c, p) for low, c, p in reversed(T.A_ISO_BANDS) if k >= low)
-    base = max(T.A_ISO_BASE - c / k**p, 0.0)  # 0 at kappa = 0.1 (rounding aside)
-    bracket = 1.0 - base**T.A_ISO_EXPONENT * load_ratio ** (1.0 / 3.0)
+    if roller:
+        bands, base0, exponent, power, slope = (
+            T.A_ISO_ROLLER_BANDS,
+            T.A_ISO_ROLLER_BASE,
+            T.A_ISO_ROLLER_EXPONENT,
+            T.A_ISO_ROLLER_POWER,
+            T.A_ISO_ROLLER_SLOPE,
+        )
+    else:
+        bands, base0, exponent, power, slope = (
+            T.A_ISO_BANDS,
+            T.A_ISO_BASE,
+            T.A_ISO_EXPONENT,
+            1.0 / 3.0,
+            T.A_ISO_SLOPE,
+        )
+    c, p = next((c, p) for low, c, p in reversed(bands) if k >= low)
+    base = max(base0 - c / k**p, 0.0)  # 0 at kappa = 0.1 (rounding aside)
+    bracket = 1.0 - base**exponent * load_ratio**power
     if bracket <= 0.0:
         return cap
-    return float(min(0.1 * bracket**-T.A_ISO_SLOPE, cap))
+    return float(min(0.1 * bracket**-slope, cap))
 
 
-def basic_rating_life(dynamic_rating: float, equivalent_load: float) -> float:
-    """Basic rating life of a ball bearing L10 = (C/P)^3 [million revolutions].
+def basic_rating_life(
+    dynamic_rating: float, equivalent_load: float, exponent: float = 3.0
+) -> float:
+    """Basic rating life L10 = (C/P)^p [million revolutions]: p = 3 for ball bearings,
+    10/3 for roller bearings (ISO 281:2007 eq. 1).
 
     Parameters
     ----------
@@ -220,6 +251,8 @@ def basic_rating_life(dynamic_rating: float, equivalent_load: float) -> float:
         C [N].
     equivalent_load : float
         P > 0 [N].
+    exponent : float
+        p [-].
 
     >>> basic_rating_life(14000.0, 1400.0)
     1000.0
@@ -229,7 +262,7 @@ def basic_rating_life(dynamic_rating: float, equivalent_load: float) -> float:
             isinstance(value, (int, float, np.floating)) and math.isfinite(value) and value > 0
         ):
             raise InputError(name, value, "a load > 0 [N]")
-    return float((dynamic_rating / equivalent_load) ** 3)
+    return float((dynamic_rating / equivalent_load) ** exponent)
 
 
 def _check_condition(condition: OperatingCondition, method: str) -> None:
@@ -265,8 +298,16 @@ def rating_life(
     ep_additives: bool = False,
     dynamic_load_rating: float | None = None,
     static_load_rating: float | None = None,
+    slices: int | None = None,
+    edge_stress: bool = False,
 ) -> LifeResult:
-    """Rating life of a single-row ball bearing, ISO 281:2007 or ISO/TS 16281.
+    """Rating life of a single-row ball bearing (or a roller bearing), ISO 281:2007 or
+    ISO/TS 16281.
+
+    A roller bearing (``rolling_element`` "roller") has L10 = (C/P)^(10/3), the roller
+    rows of ISO 281 Table 3 and a_ISO, and for ``iso16281`` the slice method
+    (:func:`bearinglab.life.iso16281_roller.roller_reference_rating_life`,
+    P_ref = C / L10r^(3/10)).
 
     ``iso281``: L10 = (C/P)^3 with P from Table 3 (normal clearance, rigid rings, no
     misalignment). ``iso16281``: the basic reference rating life L10r from the per-ball
@@ -298,6 +339,11 @@ def rating_life(
         Apply ISO 281's EP-additive rule to a_ISO.
     dynamic_load_rating, static_load_rating : float, optional
         C and C_0 given [N] (see :func:`bearinglab.life.load_ratings`).
+    slices : int, optional
+        Roller bearings, ``iso16281``: slices per contact (None: 30) [-].
+    edge_stress : bool
+        Roller bearings, ``iso16281``: weight the slice loads by ISO/TS 16281's edge-stress
+        factors of an unprofiled roller [-].
 
     Returns
     -------
@@ -321,6 +367,13 @@ def rating_life(
     if rotating not in ("inner", "outer"):
         raise InputError("rotating", rotating, "'inner' or 'outer'")
     _check_condition(condition, method)
+    roller = getattr(bearing, "rolling_element", "ball") == "roller"
+    if not roller:
+        for name, value in (("slices", slices), ("edge_stress", edge_stress or None)):
+            if value is not None:
+                raise InputError(
+                    name, value, "its default for a ball bearing", "roller bearings only"
+                )
     a1 = reliability_factor(reliability_percent)
     ratings = load_ratings(
         bearing, dynamic_load_rating=dynamic_load_rating, static_load_rating=static_load_rating
@@ -337,19 +390,32 @@ def rating_life(
     reference = None
     iso281_p = None
     if method == "iso16281":
-        from .iso16281 import reference_rating_life
+        if roller:
+            from .iso16281_roller import roller_reference_rating_life
 
-        ref = reference_rating_life(bearing, condition, ratings.dynamic, rotating=rotating)
+            ref = roller_reference_rating_life(
+                bearing,
+                condition,
+                ratings.dynamic,
+                rotating=rotating,
+                slices=slices,
+                edge_stress=edge_stress,
+            )
+        else:
+            from .iso16281 import reference_rating_life
+
+            ref = reference_rating_life(bearing, condition, ratings.dynamic, rotating=rotating)
         l10 = ref["l10r"]
         iso281_p, p = p, ref["reference_load"]
         reference = ref
         warnings.extend(ref["warnings"])
     else:
-        l10 = basic_rating_life(ratings.dynamic, p)
+        l10 = basic_rating_life(ratings.dynamic, p, 10.0 / 3.0 if roller else 3.0)
     if ratings.static / p0 < 1.0:
         warnings.append(
             f"static safety factor s0 = {ratings.static / p0:.3g} < 1: the most "
-            "loaded contact exceeds 4200 MPa (ISO 76 permanent deformation)"
+            f"loaded contact exceeds {4000 if roller else 4200} MPa (ISO 76 permanent "
+            "deformation)"
         )
     kwargs = {}
     if viscosity is not None:
@@ -377,7 +443,11 @@ def rating_life(
             a_iso = lnm = None
         else:
             a_iso = life_modification_factor(
-                kappa, e_c * ratings.fatigue_limit / p, ep_additives=ep_additives, contamination=e_c
+                kappa,
+                e_c * ratings.fatigue_limit / p,
+                ep_additives=ep_additives,
+                contamination=e_c,
+                roller=roller,
             )
             lnm = a1 * a_iso * l10
             if a_iso >= T.A_ISO_CAP:

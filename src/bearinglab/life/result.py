@@ -137,20 +137,30 @@ class LifeResult:
         }
         if self.reference is not None:
             ref = self.reference
+            element = getattr(self.bearing, "rolling_element", "ball")
             out.update(
                 {
                     "iso281_equivalent_load_n": self.iso281_equivalent_load,
                     "reference_load_n": self.equivalent_load,
                     "inner_contact_rating_n": ref["inner_rating"],
                     "outer_contact_rating_n": ref["outer_rating"],
-                    "inner_equivalent_ball_load_n": ref["inner_equivalent"],
-                    "outer_equivalent_ball_load_n": ref["outer_equivalent"],
+                    f"inner_equivalent_{element}_load_n": ref["inner_equivalent"],
+                    f"outer_equivalent_{element}_load_n": ref["outer_equivalent"],
                     "rotating_ring": ref["rotating"],
-                    "inner_ball_loads_n": [float(q) for q in ref["inner_loads"]],
-                    "outer_ball_loads_n": [float(q) for q in ref["outer_loads"]],
+                    f"inner_{element}_loads_n": [float(q) for q in ref["inner_loads"]],
+                    f"outer_{element}_loads_n": [float(q) for q in ref["outer_loads"]],
                 }
             )
+            if element == "roller":
+                out["slices"] = ref["slices"]
+                out["edge_stress"] = ref["edge_stress"]
+        out["life_exponent"] = self.life_exponent
         return out
+
+    @property
+    def life_exponent(self) -> float:
+        """p of L10 = (C/P)^p: 3 for ball bearings, 10/3 for roller bearings [-]."""
+        return 10.0 / 3.0 if getattr(self.bearing, "rolling_element", "ball") == "roller" else 3.0
 
     def to_pandas(self):
         """The main results as a table: quantity, value, unit (symbol of
@@ -208,7 +218,13 @@ class LifeResult:
         fig, ax = figure_axes(ax, figsize=(7, 4.5))
         c = self.ratings.dynamic
         p = np.geomspace(0.02 * c, c, 100)
-        ax.loglog(p, hours((c / p) ** 3, self.shaft_speed), color="C0", label="L10 = (C/P)^3")
+        e = self.life_exponent
+        ax.loglog(
+            p,
+            hours((c / p) ** e, self.shaft_speed),
+            color="C0",
+            label=f"L10 = (C/P)^{'10/3' if e > 3 else '3'}",
+        )
         ax.loglog(
             [self.equivalent_load],
             [self.l10_hours],

@@ -21,6 +21,8 @@ from ..errors import ConvergenceError, InputError
 from ..geometry import BallBearing
 from ..operating import OperatingCondition
 from .result import LoadDistribution
+from .roller import roller_centrifugal_force, solve_roller_distribution
+from .roller_result import RollerLoadDistribution
 from .solver import (
     CENTRIFUGAL_FLOOR,
     DOF_NAMES,
@@ -35,9 +37,12 @@ __all__ = [
     "MAX_SPEED_FACTOR",
     "RACE_CONTROLS",
     "LoadDistribution",
+    "RollerLoadDistribution",
     "centrifugal_force",
     "inner_ring_expansion",
+    "roller_centrifugal_force",
     "solve_load_distribution",
+    "solve_roller_distribution",
     "speed_limit",
 ]
 
@@ -92,12 +97,19 @@ def solve_load_distribution(
     tolerance: float = 1e-9,
     initial=None,
     race_control: str = "outer",
+    slices: int | None = None,
+    axial_displacement: float | None = None,
 ) -> LoadDistribution:
     """Quasi-static equilibrium of ``bearing`` under ``condition``.
 
+    A roller bearing (``bearing.rolling_element == "roller"``) is solved by the slice model
+    of :func:`bearinglab.quasistatic.roller.solve_roller_distribution` and gives a
+    :class:`~bearinglab.quasistatic.roller_result.RollerLoadDistribution` (the same keys
+    with "roller" for "ball"); the ball-only options must keep their defaults then.
+
     Parameters
     ----------
-    bearing : BallBearing
+    bearing : BallBearing or RollerBearing
         Geometry, clearance (P_d < 0 is a preload), arch angles of four-point bearings.
     condition : OperatingCondition
         Loads, imposed misalignments and shaft speed (n d_m up to 3e6 mm/min).
@@ -132,10 +144,15 @@ def solve_load_distribution(
         and spin (gyroscopic moment): the ball rolls without spinning on the outer or the
         inner race; "hybrid" picks the race per ball by Jones's criterion and shares the
         friction as Harris does (gyroscopic.py) [-].
+    slices : int or None
+        Roller bearings: slices per line contact (None: 30, ISO/TS 16281's example) [-].
+    axial_displacement : float or None
+        Tapered roller bearings: impose the inner ring's axial displacement instead of
+        solving it (the axial force is then the reaction: at 0, the induced axial force) [m].
 
     Returns
     -------
-    LoadDistribution
+    LoadDistribution or RollerLoadDistribution
 
     Raises
     ------
@@ -145,6 +162,41 @@ def solve_load_distribution(
         When the ball or ring equilibrium cannot be found; for a load the contacts cannot
         carry, the message gives the load against the static rating C0 (ISO 76).
     """
+    if getattr(bearing, "rolling_element", "ball") == "roller":
+        ball_only = {
+            "ball_diameter_errors": ball_diameter_errors is not None,
+            "film": film is not None,
+            "lubricant": lubricant is not None,
+            "gyroscopic": gyroscopic,
+            "ring_expansion": ring_expansion,
+            "race_control": race_control != "outer",
+        }
+        for name, given in ball_only.items():
+            if given:
+                raise InputError(
+                    name,
+                    locals()[name] if name != "race_control" else race_control,
+                    "its default for a roller bearing",
+                    "the roller model does not take it (ball bearings only)",
+                )
+        check_speed(bearing, condition.shaft_speed)
+        from .roller import DEFAULT_SLICES, solve_roller_distribution
+
+        try:
+            return solve_roller_distribution(
+                bearing,
+                condition,
+                slices=DEFAULT_SLICES if slices is None else slices,
+                roller_phase=ball_phase,
+                tolerance=tolerance,
+                initial=initial,
+                axial_displacement=axial_displacement,
+            )
+        except ConvergenceError as exc:
+            raise _in_user_terms(exc, bearing, condition) from exc
+    for name, value in (("slices", slices), ("axial_displacement", axial_displacement)):
+        if value is not None:
+            raise InputError(name, value, "None for a ball bearing", "roller bearings only")
     if race_control not in RACE_CONTROLS:
         raise InputError("race_control", race_control, " or ".join(map(repr, RACE_CONTROLS)))
     check_speed(bearing, condition.shaft_speed)

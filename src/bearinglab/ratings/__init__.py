@@ -1,5 +1,6 @@
-"""Load ratings and equivalent loads of ball bearings (ISO 281:2007, ISO 76:2006): layers 1
-and 2, from the internal geometry alone.
+"""Load ratings and equivalent loads of ball and roller bearings (ISO 281:2007, ISO
+76:2006): layers 1 and 2, from the internal geometry alone (roller bearings:
+:mod:`.roller`, which :func:`load_ratings` and the equivalent loads dispatch to).
 
 * :func:`load_ratings` -- basic dynamic rating C, static rating C_0 and fatigue load
   limit C_u (:mod:`.basic`), as a :class:`LoadRatings`;
@@ -34,6 +35,15 @@ from .equivalent import (
     load_factors,
     static_load_factors,
 )
+from .roller import (
+    roller_dynamic_load_rating,
+    roller_equivalent_dynamic_load,
+    roller_equivalent_static_load,
+    roller_fatigue_load_limit,
+    roller_fc_factor,
+    roller_static_load_rating,
+    tapered_factors,
+)
 
 __all__ = [
     "LoadFactors",
@@ -46,6 +56,13 @@ __all__ = [
     "fc_factor",
     "load_factors",
     "load_ratings",
+    "roller_dynamic_load_rating",
+    "roller_equivalent_dynamic_load",
+    "roller_equivalent_static_load",
+    "roller_fatigue_load_limit",
+    "roller_fc_factor",
+    "roller_static_load_rating",
     "static_load_factors",
     "static_load_rating",
+    "tapered_factors",
 ]

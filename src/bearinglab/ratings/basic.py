@@ -254,6 +254,7 @@ GIVEN_RATING_FACTOR = 2.0
 DYNAMIC_SOURCE = "ISO 281:2007 from the internal geometry"
 STATIC_SOURCE = "ISO 76:2006 from the internal geometry"
 FATIGUE_SOURCE = "ISO 281 Annex B (simplified) from C0"
+ROLLER_FATIGUE_SOURCE = "ISO 281 Annex B (simplified, roller bearings: C0/8.2) from C0"
 
 
 @dataclass(frozen=True)
@@ -293,6 +294,7 @@ class LoadRatings:
     dynamic_source: str = DYNAMIC_SOURCE
     static_source: str = STATIC_SOURCE
     fatigue_limit_source: str = FATIGUE_SOURCE
+    rating_factor: float = T.B_M_BALL
 
     def to_dict(self) -> dict:
         """JSON-ready dict in engineering units."""
@@ -307,7 +309,7 @@ class LoadRatings:
             "f0": self.f0,
             "gamma": self.gamma,
             "rating_kind": "axial" if self.thrust else "radial",
-            "rating_factor_bm": T.B_M_BALL,
+            "rating_factor_bm": self.rating_factor,
         }
 
 
@@ -394,10 +396,19 @@ def load_ratings(
 
     dynamic, dynamic_source = source(c, getattr(computed, "dynamic", None), DYNAMIC_SOURCE)
     static, static_source = source(c0, getattr(computed, "static", None), STATIC_SOURCE)
+    roller = getattr(bearing, "rolling_element", "ball") == "roller"
+    if roller:
+        from .roller import roller_fatigue_load_limit
+
+        limit = roller_fatigue_load_limit(static, bearing.pitch_diameter)
+        limit_source = ROLLER_FATIGUE_SOURCE
+    else:
+        limit = fatigue_load_limit(static, bearing.pitch_diameter)
+        limit_source = FATIGUE_SOURCE
     return LoadRatings(
         dynamic=dynamic,
         static=static,
-        fatigue_limit=fatigue_load_limit(static, bearing.pitch_diameter),
+        fatigue_limit=limit,
         fc=fc,
         f0=f0,
         gamma=gamma,
@@ -405,7 +416,8 @@ def load_ratings(
         warnings=warnings,
         dynamic_source=dynamic_source,
         static_source=static_source,
-        fatigue_limit_source=FATIGUE_SOURCE + (" (given)" if c0 is not None else ""),
+        fatigue_limit_source=limit_source + (" (given)" if c0 is not None else ""),
+        rating_factor=computed.rating_factor if computed is not None else T.B_M_BALL,
     )
 
 
@@ -421,8 +433,57 @@ def _far_from_computed(name: str, given, value: float, standard: str) -> tuple[s
     )
 
 
+def _roller_ratings(bearing) -> LoadRatings:
+    """C, C_0 and C_u of a roller bearing from its internal geometry (ISO 281, ISO 76;
+    :mod:`bearinglab.ratings.roller`)."""
+    from . import roller as R
+
+    btype = bearing.bearing_type
+    if btype not in R.B_M_ROLLER:
+        raise InputError(
+            "bearing_type",
+            btype,
+            "one of " + ", ".join(R.B_M_ROLLER),
+            "ISO 281/76 ratings of this type are not implemented",
+        )
+    args = (
+        int(bearing.roller_count),
+        bearing.roller_diameter,
+        bearing.roller_length,
+        bearing.pitch_diameter,
+        bearing.contact_angle,
+        int(bearing.rows),
+    )
+    b_m = R.B_M_ROLLER[btype]
+    dynamic = R.roller_dynamic_load_rating(*args, rating_factor=b_m)
+    static = R.roller_static_load_rating(*args)
+    gamma = bearing.gamma
+    warnings = ()
+    if btype == "needle_roller":
+        warnings = (
+            "needle roller bearing rated with b_m = 1.1 (machined rings; ISO 281 "
+            "gives 1.0 for drawn cups)",
+        )
+    return LoadRatings(
+        dynamic=dynamic,
+        static=static,
+        fatigue_limit=R.roller_fatigue_load_limit(static, bearing.pitch_diameter),
+        fc=R.roller_fc_factor(gamma),
+        f0=R.F0_ROLLER,
+        gamma=gamma,
+        thrust=False,
+        warnings=warnings,
+        dynamic_source=DYNAMIC_SOURCE,
+        static_source=STATIC_SOURCE,
+        fatigue_limit_source=ROLLER_FATIGUE_SOURCE,
+        rating_factor=b_m,
+    )
+
+
 def _computed_ratings(bearing: BallBearing) -> LoadRatings:
     """C, C_0 and C_u from the internal geometry (ISO 281, ISO 76)."""
+    if getattr(bearing, "rolling_element", "ball") == "roller":
+        return _roller_ratings(bearing)
     btype = bearing.bearing_type
     if btype not in RATED_TYPES:
         raise InputError(

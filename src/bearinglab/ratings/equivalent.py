@@ -121,6 +121,8 @@ def equivalent_dynamic_load(
 
     Radial and angular-contact bearings: P_r = F_r when F_a/F_r <= e, else
     X F_r + Y F_a (Table 3, normal clearance); thrust ball bearings (90 deg): P_a = F_a.
+    A roller bearing (``rolling_element`` "roller") gets the roller rows of Table 3
+    (:func:`bearinglab.ratings.roller.roller_equivalent_dynamic_load`).
 
     Parameters
     ----------
@@ -142,6 +144,13 @@ def equivalent_dynamic_load(
     1370
     """
     radial, axial = _loads(radial_load, axial_load)
+    if getattr(bearing, "rolling_element", "ball") == "roller":
+        from .roller import roller_equivalent_dynamic_load
+
+        p, x, y, e = roller_equivalent_dynamic_load(
+            bearing.contact_angle, int(bearing.rows), radial, axial
+        )
+        return p, LoadFactors(x, y, e)
     if bearing.is_thrust:
         _thrust_check(bearing, radial)
         return axial, LoadFactors(0.0, 1.0, 0.0)
@@ -186,7 +195,8 @@ def equivalent_static_load(
 ) -> float:
     """Static equivalent load P_0 of a single-row ball bearing, ISO 76:2006 [N]:
     max(F_r, X_0 F_r + Y_0 F_a) for radial and angular-contact bearings, F_a for a thrust
-    ball bearing with a 90 deg contact angle.
+    ball bearing with a 90 deg contact angle; a roller bearing, ISO 76's roller rows
+    (:func:`bearinglab.ratings.roller.roller_equivalent_static_load`).
 
     Parameters
     ----------
@@ -203,6 +213,12 @@ def equivalent_static_load(
     (1000.0, 1200.0)
     """
     radial, axial = _loads(radial_load, axial_load)
+    if getattr(bearing, "rolling_element", "ball") == "roller":
+        from .roller import roller_equivalent_static_load
+
+        return roller_equivalent_static_load(
+            bearing.contact_angle, int(bearing.rows), radial, axial
+        )
     if bearing.is_thrust:
         _thrust_check(bearing, radial)
         return axial

@@ -310,6 +310,19 @@ A_ISO_EXPONENT = 0.83
 A_ISO_SLOPE = 9.3
 A_ISO_CAP = 50.0
 KAPPA_MIN, KAPPA_MAX = 0.1, 4.0
+#: a_ISO of radial roller bearings (ISO 281:2007): (kappa_from, c, p) in
+#: a_ISO = 0.1 [1 - (1.5859 - c / kappa^p) (e_C C_u / P)^0.4]^-9.185.
+#: ewing (id 12173787189) gives the first band and the exponents 1, 0.4, 9.185; mecapy
+#: (id 61555616929) all three bands but the exponent 0.4 on the bracket's first factor.
+#: The exponent 1 is kept: the bands meet at kappa = 0.4 (1.3993/0.4^0.054381 =
+#: 1.2348/0.4^0.19087 = 1.471) either way, and with 0.4 a roller bearing would gain more
+#: from cleanliness than a ball bearing (a_ISO 50 already at e_C C_u/P = 0.2 for kappa = 4),
+#: against the makers' diagrams where roller bearings need the larger load ratio.
+A_ISO_ROLLER_BANDS = ((0.1, 1.3993, 0.054381), (0.4, 1.2348, 0.19087), (1.0, 1.2348, 0.071739))
+A_ISO_ROLLER_BASE = 1.5859
+A_ISO_ROLLER_EXPONENT = 1.0
+A_ISO_ROLLER_POWER = 0.4
+A_ISO_ROLLER_SLOPE = 9.185
 #: ISO 281 9.3.3.4 as quoted by bb_core: with effective EP additives, kappa < 1 and
 #: e_C >= 0.2, kappa = 1 may be used and a_ISO is then limited to 3.
 EP_KAPPA_EC_MIN, EP_A_ISO_CAP = 0.2, 3.0

@@ -23,6 +23,7 @@ def all_cases() -> list[Case]:
         harris218,
         nasa_slip,
         ratings,
+        rollers,
         seed000,
         seed001,
         seed003,
@@ -42,4 +43,5 @@ def all_cases() -> list[Case]:
         *ratings.CASES,
         *harris218.CASES,
         *nasa_slip.CASES,
+        *rollers.CASES,
     ]
