@@ -358,7 +358,7 @@ DIMENSIONLESS: dict[str, str] = {
     "a1": "reliability factor",
     "a_iso": "life modification factor",
     "kappa": "viscosity ratio nu / nu_1",
-    "e_limit": "ISO 281 e",
+    "e_limit": "ISO 281 e (null where it does not apply: a cylindrical roller bearing)",
     "x_factor": "ISO 281 X",
     "y_factor": "ISO 281 Y",
     "f0": "ISO 76 f_0",

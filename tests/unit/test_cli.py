@@ -61,10 +61,12 @@ def test_info_310_forced_gost(capsys):
     assert d["decoded"]["iso_equivalent"] == "6310"
 
 
-def test_info_of_a_roller_bearing_gives_dimensions_only(capsys):
+def test_info_of_a_roller_bearing_gives_its_roller_geometry(capsys):
     d = run_json(capsys, "info", "7206", "--system", "gost")
     assert d["bearing_type"] == "tapered_roller" and d["bore_mm"] == 30
-    assert d["ball_count"] is None
+    assert d["rolling_element"] == "roller" and "ball_count" not in d
+    assert d["roller_count"] > 10 and 0 < d["roller_diameter_mm"] < (62 - 30) / 2
+    assert 5 < d["contact_angle_deg"] < 30 and d["geometry_source"] in ("catalog", "estimated", "mixed")
 
 
 def test_frequencies_6205_at_1797(capsys):
@@ -420,9 +422,12 @@ SEED_003 = [
 @pytest.mark.parametrize("text, bearing_type, bore_mm", SEED_003, ids=[c[0] for c in SEED_003])
 def test_info_json_of_every_seed_003_example(capsys, text, bearing_type, bore_mm):
     d = run_json(capsys, "info", text, "--system", "gost")
-    assert INFO_KEYS <= d.keys()
     assert d["system"] == "gost" and d["bearing_type"] == bearing_type
     assert d["decoded"]["bore_mm"] == bore_mm
+    if d.get("rolling_element") == "roller":
+        assert {"roller_count", "roller_diameter_mm", "roller_length_mm"} <= d.keys()
+        return
+    assert INFO_KEYS <= d.keys()
     if d["ball_count"] is None:
         assert d["no_geometry_reason"]
     else:

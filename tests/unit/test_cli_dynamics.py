@@ -176,7 +176,7 @@ def test_analyze_band_options(tmp_path, capsys):
 def test_bad_defect_specs(capsys, spec, why):
     err = run_error(capsys, *SIM, "--defect", spec)
     assert err.startswith("error: --defect = ") and repr(spec) in err
-    assert "outer, inner or ball" in err and why in err
+    assert "LOCATION outer, inner, ball" in err and why in err
 
 
 def test_defect_spec_units_and_angles():

@@ -102,7 +102,7 @@ def test_ball_window_stops_at_the_race_windows():
         ((), "no fault detected"),
         ((Defect("outer", 1e-3, 20e-6),), "outer_race"),
         ((Defect("inner", 1e-3, 20e-6),), "inner_race"),
-        ((Defect("ball", 1e-3, 20e-6),), "ball"),  # the family of the rolling element
+        ((Defect("ball", 1e-3, 20e-6),), "roller"),  # named for the rolling element
     ],
 )
 def test_simulated_roller_records_are_diagnosed(defects, verdict):

@@ -8,9 +8,9 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, field
 
-from ..errors import CatalogError, DesignationError
-from ..inputs import Input, bearing_from, bearing_warnings
-from .base import BEARING_INPUTS, Analysis, Outcome, plot_file
+from ..errors import CatalogError, DesignationError, InputError
+from ..inputs import INPUTS, Input, bearing_from, bearing_warnings, no_effect, si
+from .base import BEARING_INPUTS, Analysis, Outcome, inputs, plot_file
 
 
 @dataclass(frozen=True)
@@ -112,13 +112,45 @@ INFO = Analysis(
 
 def contact(values: dict) -> Outcome:
     """The ``contact`` request: the Hertz contact of one ball with the inner and outer
-    raceway under ``ball_load_n`` (:func:`bearinglab.contact.ball_race.ball_contacts`)."""
-    from ..contact.ball_race import ball_contacts  # scipy.special: only this request
-
+    raceway under `ball_load_n` (:func:`bearinglab.contact.ball_race.ball_contacts`), or
+    the line contact of one roller under `roller_load_n` by slices, with the tilt
+    `misalignment_mrad` between the rings
+    (:func:`bearinglab.contact.roller_race.roller_contacts`)."""
     bearing, decoded = bearing_from(values)
-    method = (values.get("hertz_method") or "exact").replace("-", "_")
-    result = ball_contacts(bearing, values["ball_load_n"], method=method)
-    warnings = bearing_warnings(bearing, decoded) + list(result.to_dict()["warnings"])
+    roller = bearing.rolling_element == "roller"
+    own, other = ("roller_load_n", "ball_load_n") if roller else ("ball_load_n", "roller_load_n")
+    if values.get(other) is not None:
+        raise InputError(
+            other,
+            values[other],
+            f"no value for a {bearing.rolling_element} bearing: give `{own}`",
+        )
+    if values.get(own) is None:
+        raise InputError(own, None, f"the load on one {bearing.rolling_element} [N]")
+    if roller:
+        from ..contact.roller_race import roller_contacts
+
+        result = roller_contacts(
+            bearing,
+            values[own],
+            tilt=si(values, "misalignment_mrad", 0.0),
+            slices=values.get("slices") or 30,
+        )
+        method = values.get("hertz_method")
+        unused = no_effect(
+            [("hertz_method", method not in (None, "exact"))],
+            "for a roller (a line contact, by slices)",
+        )
+    else:
+        from ..contact.ball_race import ball_contacts  # scipy.special: only this request
+
+        method = (values.get("hertz_method") or "exact").replace("-", "_")
+        result = ball_contacts(bearing, values[own], method=method)
+        given = [(n, bool(values.get(n))) for n in ("misalignment_mrad",)]
+        unused = no_effect(given, "on a ball's contact") + no_effect(
+            [("slices", values.get("slices") not in (None, 30))], "for a ball (a point contact)"
+        )
+    warnings = bearing_warnings(bearing, decoded) + list(result.to_dict()["warnings"]) + unused
     return Outcome(result, values.get("designation"), tuple(warnings), bearing)
 
 
@@ -129,13 +161,26 @@ CONTACT = Analysis(
         **BEARING_INPUTS,
         "ball_load_n": Input(
             "number",
-            ...,
-            "Normal load on one ball [N].",
+            None,
+            "Normal load on one ball [N] (a ball bearing).",
             low=0.0,
             high=1e7,
             low_open=True,
             what="a load",
         ),
+        "roller_load_n": Input(
+            "number",
+            None,
+            "Normal load on one roller [N] (a roller bearing).",
+            low=0.0,
+            high=1e7,
+            low_open=True,
+            what="a load",
+        ),
+        "misalignment_mrad": INPUTS["misalignment_mrad"].with_(
+            help="Tilt between the rings in the roller's plane [mrad] (a roller bearing)."
+        ),
+        **inputs("slices"),
         "hertz_method": Input(
             "text",
             "exact",

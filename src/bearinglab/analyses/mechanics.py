@@ -19,6 +19,7 @@ from ..inputs import (
     INPUTS,
     FormErrors,
     Input,
+    balls_only,
     bearing_from,
     bearing_warnings,
     condition_from,
@@ -104,6 +105,8 @@ def static(values: dict) -> StaticResult:
         plausibility = operating_warnings(bearing, condition)
     except InputError as exc:
         raise restate(exc, values, STATIC.options) from None
+    if bearing.rolling_element == "roller":
+        return _static_rollers(values, bearing, decoded, condition, plausibility)
     seed = values.get("seed")
     imperfections = forms.build(bearing, seed)
     options = {
@@ -152,6 +155,48 @@ def static(values: dict) -> StaticResult:
     )
 
 
+#: The static inputs that act through the balls only (their film, spin, orbit and form
+#: errors): a roller bearing refuses them.
+BALL_STATIC = (
+    "film",
+    "gyroscopic",
+    "ring_expansion",
+    "orbit",
+    "waviness",
+    "ball_size_error_um",
+    "surface3d",
+)
+
+
+def _static_rollers(values, bearing, decoded, condition, plausibility) -> StaticResult:
+    """The load distribution of a roller bearing, by slices
+    (:func:`bearinglab.quasistatic.solve_load_distribution`); the inputs that act through
+    balls only are refused, naming the first given."""
+    from ..plausibility import pressure_warnings
+    from ..quasistatic import solve_load_distribution
+
+    for name in BALL_STATIC:
+        if values.get(name):
+            raise InputError(
+                name,
+                values[name],
+                "no value for a roller bearing (modelled for ball bearings only)",
+            )
+    unused = no_effect(
+        [("race_control", values.get("race_control") not in (None, "outer"))],
+        "for a roller bearing",
+    )
+    result = solve_load_distribution(bearing, condition, slices=values.get("slices") or 30)
+    warnings = (
+        bearing_warnings(bearing, decoded)
+        + plausibility
+        + unused
+        + list(result.warnings)
+        + pressure_warnings(bearing, result)
+    )
+    return StaticResult(bearing, result, values.get("designation"), warnings=tuple(warnings))
+
+
 def _static_columns(r: StaticResult) -> dict:
     d = r.to_dict()
     d["tilt_x_mrad"], d["tilt_y_mrad"] = d["tilt_mrad"]
@@ -190,7 +235,7 @@ STATIC = Analysis(
             low=2,
             high=100_000,
         ),
-        **inputs("waviness", "ball_size_error_um", "surface3d", "seed"),
+        **inputs("waviness", "ball_size_error_um", "surface3d", "seed", "slices"),
     },
     run=static,
     outputs={
@@ -201,6 +246,7 @@ STATIC = Analysis(
         "radial_stiffness_n_per_um": "f",
         "axial_stiffness_n_per_um": "f",
         "max_ball_load_n": "f",
+        "max_roller_load_n": "f",
         "equilibrium_residual_n": "f",
         "diametral_clearance_um": "f",
         "orbit_peak_to_peak_um": "f",
@@ -231,6 +277,7 @@ _STIFFNESS_OUT = {
     "radial_stiffness_n_per_um": "f",
     "axial_stiffness_n_per_um": "f",
     "max_ball_load_n": "f",
+    "max_roller_load_n": "f",
 }
 
 
@@ -661,6 +708,9 @@ def ring_modes(values: dict) -> Outcome:
             )
     else:
         bearing, decoded = bearing_from(values)
+        balls_only(
+            bearing, values, "the outer-ring modes of seed 000 are those of a ring on ball springs"
+        )
     try:
         r = _solve_modes(values, bearing, ms, free, ball_count)
     except InputError as exc:

@@ -80,6 +80,7 @@ def life(values: dict) -> Outcome:
             "ISO 281 has no misalignment; use `life_method` iso16281",
         )
     bearing, decoded = bearing_from(values)
+    axial_note = _roller_axial(bearing, condition.axial_load)
     nu = values.get("viscosity_mm2_s")
     try:
         # the tilt turns the inner ring about the axis across the (downward) radial load
@@ -100,6 +101,11 @@ def life(values: dict) -> Outcome:
             ep_additives=bool(values.get("ep_additives")),
             dynamic_load_rating=si(values, "dynamic_load_rating_kn"),
             static_load_rating=si(values, "static_load_rating_kn"),
+            **(
+                {"slices": values.get("slices"), "edge_stress": bool(values.get("edge_stress"))}
+                if bearing.rolling_element == "roller"
+                else {}
+            ),
         )
     except ViscosityTooLow as exc:
         raise InputError(
@@ -118,8 +124,33 @@ def life(values: dict) -> Outcome:
         [("ep_additives", "ep_additives" in result.unused)],
         "without `viscosity_mm2_s` (the EP rule acts on a_ISO, which needs the viscosity)",
     )
-    warnings = bearing_warnings(bearing, decoded) + list(result.warnings) + unused
+    unused += no_effect(
+        [(n, bearing.rolling_element == "ball" and bool(values.get(n))) for n in ("edge_stress",)],
+        "for a ball bearing",
+    )
+    warnings = bearing_warnings(bearing, decoded) + axial_note + list(result.warnings) + unused
     return Outcome(result, values.get("designation"), tuple(warnings), bearing)
+
+
+def _roller_axial(bearing, axial_load: float) -> list[str]:
+    """An axial load on a cylindrical roller bearing: refused where a ring has no ribs (NU,
+    N: nothing carries it), else a warning that ISO 281 does not count it (P = F_r) and the
+    ribs' sliding contacts limit it."""
+    if bearing.rolling_element != "roller" or bearing.contact_angle > 0 or not axial_load:
+        return []
+    if bearing.design in ("NU", "N", "NN", ""):
+        raise InputError(
+            "axial_load_n",
+            axial_load,
+            f"0 for an {bearing.design or 'unribbed'} cylindrical roller bearing (a ring "
+            "without ribs carries no axial load)",
+        )
+    return [
+        f"ISO 281 counts no axial load on a cylindrical roller bearing (P = F_r): the "
+        f"{abs(axial_load):g} N on the ribs of an {bearing.design} bearing is limited by their "
+        "sliding contact's heat and wear, not by fatigue; check the maker's permissible "
+        "axial load"
+    ]
 
 
 LIFE = Analysis(
@@ -164,6 +195,13 @@ LIFE = Analysis(
             "bool", False, "The lubricant has proven EP additives (ISO 281 rule for kappa < 1)."
         ),
         **_RATINGS,
+        **inputs("slices"),
+        "edge_stress": Input(
+            "bool",
+            False,
+            "ISO/TS 16281: count the edge stress of the roller contacts in the slice lives "
+            "(roller bearings, `life_method` iso16281).",
+        ),
     },
     run=life,
     outputs={

@@ -17,6 +17,7 @@ from ..inputs import (
     INPUTS,
     FormErrors,
     Input,
+    balls_only,
     bearing_from,
     bearing_warnings,
     check_defects,
@@ -119,6 +120,12 @@ def noise(values: dict, progress=None) -> NoiseOutcome:
         )
     forms = forms_of(values)
     bearing, decoded = bearing_from(values)
+    balls_only(
+        bearing,
+        values,
+        "the noise model (seed 003 part 4, seed 002) radiates the inner ring and the balls as "
+        "pulsating spheres",
+    )
     seed = values.get("seed")
     imperfections = forms.build(bearing, seed)
     angle = si(values, "angle_deg", math.pi / 2)
@@ -277,15 +284,16 @@ def defects_of(values: dict) -> list:
         )
     depth, angle = values.get("defect_depth_mm"), values.get("defect_angle_deg")
     for part in parts:
-        if part not in ("outer", "inner", "ball"):
+        if part not in ("outer", "inner", "ball", "roller"):
             raise InputError(
                 "fault",
                 fault,
-                "none, outer, inner, ball or a '+'-joined compound such as outer+inner",
+                "none, outer, inner, ball, roller or a '+'-joined compound such as outer+inner",
             )
         kwargs = {} if angle is None else {"angle": math.radians(angle)}
         width = values.get("defect_width_mm") or 0.5
-        out.append(Defect(part, width * 1e-3, None if depth is None else depth * 1e-3, **kwargs))
+        where = "ball" if part == "roller" else part  # the models' rolling element
+        out.append(Defect(where, width * 1e-3, None if depth is None else depth * 1e-3, **kwargs))
     return out
 
 
@@ -382,14 +390,17 @@ def _simulate_columns(outcome: SimulateOutcome) -> dict:
         "spin_speed_ratio": sim.spin_speed_ratio,
         "warnings": list(outcome.warnings),
     }
-    d.update({f"{k}_hz": sim.kinematic.hz(k) for k in ("bpfo", "bpfi", "ftf", "ball_defect")})
+    # a roller bearing fills the roller columns, a ball bearing the ball columns
+    element = outcome.bearing.rolling_element
+    d.update({f"{k}_hz": sim.kinematic.hz(k) for k in ("bpfo", "bpfi", "ftf")})
+    d[f"{element}_defect_hz"] = sim.kinematic.hz("ball_defect")
     g = outcome.record.diagnosis.to_dict()
     d.update(
         {
             "likely_fault": g["likely_fault"] or "none",
             "primary_fault": g["primary_fault"] or "none",
             "band_kurtosis": g["band_kurtosis"],
-            "ball_defect_frequency_hz": g["ball_defect_frequency_hz"],
+            f"{element}_defect_frequency_hz": g[f"{element}_defect_frequency_hz"],
         }
     )
     if g["band_hz"] is not None:
@@ -400,7 +411,7 @@ def _simulate_columns(outcome: SimulateOutcome) -> dict:
 
 
 _FAULTS = {
-    "fault": Input("text", "none", "none, outer, inner, ball or '+'-joined (outer+inner)."),
+    "fault": Input("text", "none", "none, outer, inner, ball, roller or '+'-joined (outer+inner)."),
     "defect_width_mm": INPUTS["defect_width_mm"].with_(
         default=0.5, help="Width of the fault's defects [mm]."
     ),
@@ -486,6 +497,7 @@ SIMULATE = Analysis(
         "bpfi_hz": "f",
         "ftf_hz": "f",
         "ball_defect_hz": "f",
+        "roller_defect_hz": "f",
         "cage_speed_ratio": "f",
         "spin_speed_ratio": "f",
         "likely_fault": "s",
@@ -496,8 +508,10 @@ SIMULATE = Analysis(
         "score_outer": "f",
         "score_inner": "f",
         "score_ball": "f",
+        "score_roller": "f",
         "score_cage": "f",
         "ball_defect_frequency_hz": "f",
+        "roller_defect_frequency_hz": "f",
         "warnings": "s",
     },
     largest=20,

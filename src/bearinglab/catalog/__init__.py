@@ -19,7 +19,7 @@
 Core API in SI units (m, rad); the CSV files hold millimetres as catalogues print them.
 """
 
-from .build import GeometryNeeded, bearing_from_designation
+from .build import GeometryNeeded, bearing_from_designation, rolling_element_of
 from .build_roller import published_roller_geometries
 from .estimate import EstimatedGeometry, estimate_internal_geometry
 from .estimate_roller import EstimatedRollerGeometry, estimate_roller_geometry
@@ -43,6 +43,7 @@ __all__ = [
     "GeometryNeeded",
     "PublishedGeometry",
     "bearing_from_designation",
+    "rolling_element_of",
     "boundary_dimensions",
     "catalog_table",
     "estimate_internal_geometry",

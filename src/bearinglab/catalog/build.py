@@ -227,6 +227,23 @@ def _table_clearance(des: Any, text: str) -> tuple[float | None, Source]:
     )
 
 
+def rolling_element_of(text: str, system: str | None = None) -> str:
+    """Whether the bearing ``text`` names (a catalogue name or a designation, read as
+    :func:`bearing_from_designation` reads it with ``rollers=True``) has balls or rollers:
+    "ball" or "roller". A designation that does not read raises the reader's error;
+    ``system`` ("iso", "gost" or None to guess) is the designation system to read it in.
+
+    >>> rolling_element_of("NU205"), rolling_element_of("6205"), rolling_element_of("7205", "gost")
+    ('roller', 'ball', 'roller')
+    """
+    if roller_by_name(text) is not None:
+        return "roller"
+    if _by_name(text) is not None:
+        return "ball"
+    des = _parse(text, system)
+    return "roller" if getattr(des, "bearing_type", None) in ROLLER_BUILD_TYPES else "ball"
+
+
 def bearing_from_designation(
     text: str,
     system: str | None = None,

@@ -341,14 +341,20 @@ def _check_sizes(values: dict, sources: dict) -> None:
         return
     if d >= big_d:
         if sources["outside_diameter"].kind == "user" and sources["bore"].kind != "user":
-            raise InputError("outside_diameter", big_d, f"more than the bore {d:.6g} m")
-        raise InputError("bore", d, f"less than the outside diameter {big_d:.6g} m")
+            raise InputError(
+                "outside_diameter", big_d, "more than the bore {d}", unit="m", numbers={"d": d}
+            )
+        raise InputError(
+            "bore", d, "less than the outside diameter {D}", unit="m", numbers={"D": big_d}
+        )
     dm = values.get("pitch_diameter")
     if dm is not None and not d < dm < big_d:
         raise InputError(
             "pitch_diameter",
             dm,
-            f"between the bore {d:.6g} m and the outside diameter {big_d:.6g} m",
+            "between the bore {d} and the outside diameter {D}",
+            unit="m",
+            numbers={"d": d, "D": big_d},
         )
 
 

@@ -77,9 +77,9 @@ def _fmt(value, digits: int = 4) -> str:
 
 
 def _number(value) -> str:
-    """A value for a table: 4 significant digits, no exponent from 1e-4 to 1e6; None is "-",
-    a string is shown as it is."""
-    if value is None:
+    """A value for a table: 4 significant digits, no exponent from 1e-4 to 1e6; None (or
+    a NaN, a table's "not computed") is "-", a string is shown as it is."""
+    if value is None or (isinstance(value, float) and value != value):
         return "-"
     if isinstance(value, str):
         return value
@@ -247,7 +247,8 @@ def simulation_stage(model: str) -> str:
 
 def print_verdict(diag, name: str, bearing) -> None:
     """The record, the family tests, the lines and the verdict as tables (the same data as
-    ``to_dict``)."""
+    ``to_dict``: a roller bearing's rolling-element family named "roller")."""
+    d = diag.to_dict()
     speed = diag.speed
     measured = speed.get("measured_rpm")
     console.print(
@@ -292,7 +293,7 @@ def print_verdict(diag, name: str, bearing) -> None:
             round(t["significance"], 2),
             "yes" if t["passed"] else "no",
         ]
-        for name, t in diag.families.items()
+        for name, t in d["families"].items()
     ]
     console.print(
         _table(
@@ -318,5 +319,5 @@ def print_verdict(diag, name: str, bearing) -> None:
             "Envelope lines", ["f [Hz]", "level over floor [-]", "matched", "deviation [%]"], lines
         )
     )
-    console.print(f"verdict: [bold]{escape(diag.verdict.replace('_', ' '))}[/bold]")
+    console.print(f"verdict: [bold]{escape(d['verdict'].replace('_', ' '))}[/bold]")
     console.print(f"[dim]{escape(diag.reason)}[/dim]")

@@ -6,7 +6,6 @@ from rich.markup import escape
 
 from ..analyses.foundation import CONTACT, INFO
 from ..analyses.mechanics import FREQUENCIES
-from ..geometry import BallBearing
 from ..inputs import geometry_line
 from ..kinematics import FREQUENCY_NAMES, LONG_NAMES, defect_frequencies
 from ._app import command_app, console
@@ -73,46 +72,59 @@ def _print_designation(d) -> None:
         console.print(f"[yellow]note:[/yellow] {escape(in_flags(note))}")
 
 
-def _print_bearing(b: BallBearing) -> None:
-    refs = _References()
-    _source_text = refs.cell
-    rows = [
-        ["bore d", b.bore and b.bore * 1e3, "mm", _source_text(b, "bore")],
+def _rows(b, cell) -> list[list]:
+    """The geometry table's rows (quantity, value, unit, source: ``cell(b, field)``) of a
+    ball or roller bearing."""
+    boundary = [
+        ["bore d", b.bore and b.bore * 1e3, "mm", cell(b, "bore")],
         [
             "outside diameter D",
             b.outside_diameter and b.outside_diameter * 1e3,
             "mm",
-            _source_text(b, "outside_diameter"),
+            cell(b, "outside_diameter"),
         ],
-        ["width B", b.width and b.width * 1e3, "mm", _source_text(b, "width")],
-        ["balls Z", b.ball_count, "", _source_text(b, "ball_count")],
-        ["ball diameter D_w", b.ball_diameter * 1e3, "mm", _source_text(b, "ball_diameter")],
-        ["pitch diameter d_m", b.pitch_diameter * 1e3, "mm", _source_text(b, "pitch_diameter")],
-        [
-            "inner groove factor f_i",
-            b.inner_groove_factor,
-            "",
-            _source_text(b, "inner_groove_factor"),
-        ],
-        [
-            "outer groove factor f_o",
-            b.outer_groove_factor,
-            "",
-            _source_text(b, "outer_groove_factor"),
-        ],
-        [
-            "contact angle (nominal)",
-            math.degrees(b.contact_angle),
-            "deg",
-            _source_text(b, "contact_angle"),
-        ],
+        ["width B", b.width and b.width * 1e3, "mm", cell(b, "width")],
+    ]
+    if b.rolling_element == "roller":
+        return boundary + [
+            ["rollers Z (per row)", b.roller_count, "", cell(b, "roller_count")],
+            ["rows", b.rows, "", cell(b, "rows")],
+            ["roller diameter D_we", b.roller_diameter * 1e3, "mm", cell(b, "roller_diameter")],
+            ["roller length L_we", b.roller_length * 1e3, "mm", cell(b, "roller_length")],
+            ["pitch diameter d_m", b.pitch_diameter * 1e3, "mm", cell(b, "pitch_diameter")],
+            ["roller profile", b.profile.kind, "", cell(b, "profile")],
+            [
+                "contact angle (nominal)",
+                math.degrees(b.contact_angle),
+                "deg",
+                cell(b, "contact_angle"),
+            ],
+            [
+                "diametral clearance P_d",
+                b.diametral_clearance * 1e6,
+                "um",
+                cell(b, "diametral_clearance"),
+            ],
+        ]
+    return boundary + [
+        ["balls Z", b.ball_count, "", cell(b, "ball_count")],
+        ["ball diameter D_w", b.ball_diameter * 1e3, "mm", cell(b, "ball_diameter")],
+        ["pitch diameter d_m", b.pitch_diameter * 1e3, "mm", cell(b, "pitch_diameter")],
+        ["inner groove factor f_i", b.inner_groove_factor, "", cell(b, "inner_groove_factor")],
+        ["outer groove factor f_o", b.outer_groove_factor, "", cell(b, "outer_groove_factor")],
+        ["contact angle (nominal)", math.degrees(b.contact_angle), "deg", cell(b, "contact_angle")],
         [
             "diametral clearance P_d",
             b.diametral_clearance * 1e6,
             "um",
-            _source_text(b, "diametral_clearance"),
+            cell(b, "diametral_clearance"),
         ],
     ]
+
+
+def _print_bearing(b) -> None:
+    refs = _References()
+    rows = _rows(b, refs.cell)
     console.print(
         _table(
             f"Geometry (source: {b.geometry_source})", ["quantity", "value", "unit", "source"], rows
@@ -120,13 +132,22 @@ def _print_bearing(b: BallBearing) -> None:
     )
     refs.print()
     d = b.to_dict()
-    derived = [
-        ["inner raceway (groove bottom) d_i", d["inner_raceway_diameter_mm"], "mm"],
-        ["outer raceway (groove bottom) d_o", d["outer_raceway_diameter_mm"], "mm"],
-        ["free contact angle", d["free_contact_angle_deg"], "deg"],
-        ["end play P_e", d["end_play_um"], "um"],
-        ["ball mass", d["ball_mass_g"], "g"],
-    ]
+    if b.rolling_element == "roller":
+        derived = [
+            ["inner raceway d_i", d["inner_raceway_diameter_mm"], "mm"],
+            ["outer raceway d_o", d["outer_raceway_diameter_mm"], "mm"],
+            ["cone angle", d["cone_angle_deg"], "deg"],
+            ["axial clearance", d["axial_clearance_um"], "um"],
+            ["roller mass", d["roller_mass_g"], "g"],
+        ]
+    else:
+        derived = [
+            ["inner raceway (groove bottom) d_i", d["inner_raceway_diameter_mm"], "mm"],
+            ["outer raceway (groove bottom) d_o", d["outer_raceway_diameter_mm"], "mm"],
+            ["free contact angle", d["free_contact_angle_deg"], "deg"],
+            ["end play P_e", d["end_play_um"], "um"],
+            ["ball mass", d["ball_mass_g"], "g"],
+        ]
     for key, label, unit in (
         ("inner_ring_mass_g", "inner ring mass", "g"),
         ("outer_ring_mass_g", "outer ring mass", "g"),
@@ -135,15 +156,16 @@ def _print_bearing(b: BallBearing) -> None:
             derived.append([label, d[key], unit])
     console.print(_table("Derived", ["quantity", "value", "unit"], derived))
     f = defect_frequencies(b, 2 * math.pi)
+    element = b.rolling_element
     console.print(
         _table(
             "Frequency factors (orders of shaft speed, inner ring rotating)",
             ["frequency", "order", "meaning"],
             [
                 [
-                    n.upper() if n != "ball_defect" else "ball defect (2xBSF)",
+                    n.upper() if n != "ball_defect" else f"{element} defect (2xBSF)",
                     f.orders[n],
-                    LONG_NAMES[n],
+                    LONG_NAMES[n].replace("ball", element),
                 ]
                 for n in FREQUENCY_NAMES
             ],
@@ -161,6 +183,7 @@ def frequencies(values, json_output: JsonOpt = False, plot=None):
         return
     bearing, speed_rpm, outer_rotating = f.bearing, values["speed_rpm"], values["outer_rotating"]
     ring = "outer" if outer_rotating else "inner"
+    element = bearing.rolling_element
     console.print(
         _table(
             f"{bearing.name or 'bearing'} at {speed_rpm:g} rpm ({ring} ring "
@@ -169,10 +192,10 @@ def frequencies(values, json_output: JsonOpt = False, plot=None):
             [["shaft", f.shaft_hz, 1.0, LONG_NAMES["shaft"]]]
             + [
                 [
-                    n.upper() if n != "ball_defect" else "BALL DEFECT",
+                    n.upper() if n != "ball_defect" else f"{element.upper()} DEFECT",
                     f.hz(n),
                     f.orders[n],
-                    LONG_NAMES[n],
+                    LONG_NAMES[n].replace("ball", element),
                 ]
                 for n in FREQUENCY_NAMES
             ],
@@ -180,7 +203,7 @@ def frequencies(values, json_output: JsonOpt = False, plot=None):
     )
     console.print(escape(geometry_line(bearing, f.contact_angle)))
     console.print(
-        "[dim]BSF is one spin revolution; a ball defect strikes the races at "
+        f"[dim]BSF is one spin revolution; a {element} defect strikes the races at "
         "2 x BSF (some tables print that as 'ball spin').[/dim]"
     )
     _print_warnings(warnings)
@@ -194,6 +217,9 @@ def contact(values, json_output: JsonOpt = False, plot=None):
     result, bearing, d = r.result, r.bearing, r.to_dict()
     ball_load_n, method = values["ball_load_n"], values["hertz_method"]
     if _plot_and_emit(d, json_output, result, plot):
+        return
+    if bearing.rolling_element == "roller":
+        _print_roller_contact(d, bearing)
         return
     rows = []
     for key, label, unit in (
@@ -218,5 +244,35 @@ def contact(values, json_output: JsonOpt = False, plot=None):
     console.print(
         f"ball between both races: total approach {d['total_approach_um']:.4g} um, "
         f"K_n = {d['ball_load_deflection_constant_n_per_um1_5']:.4g} N/µm^1.5"
+    )
+    _print_warnings(d["warnings"])
+
+
+def _print_roller_contact(d: dict, bearing) -> None:
+    """A roller's line contact: pressures, half-width, approach, inner and outer."""
+    rows = [
+        [label, d["inner"][key], d["outer"][key], unit]
+        for key, label, unit in (
+            ("max_pressure_gpa", "max pressure (slices and edges)", "GPa"),
+            ("middle_pressure_gpa", "pressure at the middle", "GPa"),
+            ("hertz_pressure_gpa", "Hertz line-contact p0", "GPa"),
+            ("hertz_half_width_mm", "Hertz half-width b", "mm"),
+            ("edge_pressure_ratio", "edge / middle pressure", ""),
+            ("approach_um", "approach delta", "um"),
+        )
+    ]
+    console.print(
+        _table(
+            f"{bearing.name or 'bearing'}: line contact of one roller, Q = "
+            f"{d['roller_load_n']:g} N, tilt {d['tilt_mrad']:g} mrad "
+            f"({len(d['slice_loads_n'])} slices)",
+            ["quantity", "inner", "outer", "unit"],
+            rows,
+        )
+    )
+    console.print(escape(geometry_line(bearing)))
+    console.print(
+        f"roller between both races: total approach {d['roller_approach_um']:.4g} um "
+        f"(Palmgren's 3.84e-5 Q^0.9 / l^0.8: {d['palmgren_approach_um']:.4g} um)"
     )
     _print_warnings(d["warnings"])

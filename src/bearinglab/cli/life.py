@@ -62,7 +62,8 @@ def _print(result, out: dict, bearing) -> None:
     console.print(
         escape(
             f"{factors}; X {out['x_factor']:.3g}, Y {out['y_factor']:.3g}, "
-            f"e {out['e_limit']:.3g}; a_1 {out['a1']:.3g} at "
+            f"e {'-' if out['e_limit'] is None else format(out['e_limit'], '.3g')}; "
+            f"a_1 {out['a1']:.3g} at "
             f"{out['reliability_percent']:g} %"
         ),
         style="dim",

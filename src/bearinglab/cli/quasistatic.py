@@ -47,6 +47,7 @@ def static(values, json_output: JsonOpt = False, plot=None, orbit_plot=None, sti
     if json_output:
         _emit_json(d)
         return
+    roller = r.bearing.rolling_element == "roller"
     # column -> header with its unit (Greek symbols keep the table within 80 columns)
     cols = {
         "ball": "ball",
@@ -59,10 +60,22 @@ def static(values, json_output: JsonOpt = False, plot=None, orbit_plot=None, sti
         "outer_max_pressure_gpa": label("p_o", "gpa"),
         "contact_points": "points",
     }
+    if roller:
+        cols = {
+            "roller": "roller",
+            "angle_deg": label("ψ", "deg"),
+            "inner_load_n": label("Q_i", "n"),
+            "outer_load_n": label("Q_o", "n"),
+            "inner_max_pressure_gpa": label("p_i", "gpa"),
+            "outer_max_pressure_gpa": label("p_o", "gpa"),
+            "end_load_ratio": "end load",
+        }
+    elements = d["rollers" if roller else "balls"]
     console.print(
         _table(
             f"{r.bearing.name or 'bearing'}: F_r = {d['radial_load_n']:g} N, "
             f"F_a = {d['axial_load_n']:g} N, {d['speed_rpm']:g} rpm"
+            + (f", {d['slices']} slices per roller" if roller else "")
             + (", with EHL film" if values["film"] else "")
             + (
                 f", gyroscopic ({d['race_control']} raceway control)"
@@ -70,7 +83,7 @@ def static(values, json_output: JsonOpt = False, plot=None, orbit_plot=None, sti
                 else ""
             ),
             list(cols.values()),
-            [[ball[c] for c in cols] for ball in d["balls"]],
+            [[element[c] for c in cols] for element in elements],
         )
     )
     console.print(escape(geometry_line(r.bearing)))
@@ -89,7 +102,11 @@ def static(values, json_output: JsonOpt = False, plot=None, orbit_plot=None, sti
                 ["radial displacement S_r", _clean(d["radial_displacement_um"]), "µm"],
                 ["axial displacement S_a", _clean(d["axial_displacement_um"]), "µm"],
                 ["tilt about x, y", ", ".join(f"{_clean(t):.4g}" for t in d["tilt_mrad"]), "mrad"],
-                ["max ball load", d["max_ball_load_n"], "N"],
+                [
+                    "max roller load" if roller else "max ball load",
+                    d[f"max_{'roller' if roller else 'ball'}_load_n"],
+                    "N",
+                ],
                 ["radial stiffness C_r", d["radial_stiffness_n_per_um"], "N/µm"],
                 ["axial stiffness C_a", d["axial_stiffness_n_per_um"], "N/µm"],
             ]

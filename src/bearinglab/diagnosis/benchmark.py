@@ -56,6 +56,7 @@ SPELLINGS = {
     "bpfo": "outer",
     "b": "ball",
     "rolling element": "ball",
+    "roller": "ball",
     "bsf": "ball",
     "ftf": "cage",
 }

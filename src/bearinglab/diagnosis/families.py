@@ -108,6 +108,9 @@ ALIASES = {
     "ball": "ball",
     "bsf": "ball",
     "ball_defect": "ball",
+    # a roller bearing's rolling element is the same family (reported as "roller")
+    "roller": "ball",
+    "roller_defect": "ball",
     "cage": "cage",
     "ftf": "cage",
 }

@@ -146,7 +146,14 @@ class Diagnosis:
     def to_dict(self) -> dict:
         """JSON-ready dict in engineering units (Hz, rpm; amplitudes in the squared
         envelope's unit); ``defect_size`` (the verdict's first race fault's width, null
-        without one) and ``defect_sizes`` (every race fault's)."""
+        without one) and ``defect_sizes`` (every race fault's). For a roller bearing the
+        rolling element's family is named "roller" (the verdict too)."""
+        bearing = getattr(self.frequencies, "bearing", None)
+        if getattr(bearing, "rolling_element", "ball") == "roller":
+            return _as_rollers(self._dict())
+        return self._dict()
+
+    def _dict(self) -> dict:
         return {
             "verdict": self.verdict,
             "likely_fault": self.likely_fault,
@@ -295,3 +302,23 @@ def measured_ball_defect_frequency(matched_peaks) -> float | None:
         if lines:
             return float(max(lines, key=lambda p: p["amplitude"])["frequency_hz"]) / n
     return None
+
+
+def _as_rollers(d: dict) -> dict:
+    """A diagnosis' dict with the rolling element's family named "roller": the verdict,
+    the faults, the families, scores and tolerances, and the frequency of its defect."""
+
+    def name(text):
+        return "roller" if text == "ball" else text
+
+    d = dict(d)
+    for key in ("likely_fault", "primary_fault"):
+        d[key] = name(d[key])
+    d["verdict"] = " ".join("roller" if w == "ball" else w for w in str(d["verdict"]).split(" "))
+    d["faults"] = [name(f) for f in d["faults"]]
+    d["cage_modulation_of"] = [name(f) for f in d["cage_modulation_of"]]
+    for key in ("families", "scores", "tolerances"):
+        if isinstance(d.get(key), dict):
+            d[key] = {name(k): v for k, v in d[key].items()}
+    d["roller_defect_frequency_hz"] = d.pop("ball_defect_frequency_hz")
+    return d

@@ -305,6 +305,15 @@ def size_defect(
     from ..signal.spectra import samples
 
     x = samples(x, "x")
+    if bearing.rolling_element == "roller":  # the spall geometry here is a ball's
+        return DefectSize(
+            race=fault,
+            status="not sized",
+            reason="sizing models a ball rolling over a spall (its drop and the bridging at "
+            "the edges); a roller's line contact is not modelled",
+            fault_frequency=f,
+            speed=float(contact_speed(f, bearing.roller_count, raceway_radius(bearing, race))),
+        )
     radius = raceway_radius(bearing, race)
     v = float(contact_speed(f, bearing.ball_count, radius))
     if radial_load is None:

@@ -19,6 +19,7 @@ import math
 
 from ..errors import InputError
 from .bearing import (
+    balls_only,
     bearing_from,
     bearing_warnings,
     geometry_line,
@@ -46,6 +47,7 @@ __all__ = [
     "INPUTS",
     "FormErrors",
     "Input",
+    "balls_only",
     "bearing_from",
     "bearing_warnings",
     "check",

@@ -12,7 +12,7 @@ from dataclasses import replace
 from pathlib import Path
 
 from ..errors import CatalogError, InputError
-from .table import BEARING, GEOMETRY_NEEDED, INPUTS
+from .table import BALL_ONLY, BEARING, GEOMETRY_NEEDED, INPUTS, ROLLER_NEEDED, ROLLER_ONLY
 
 #: The geometry inputs that set a BallBearing field (its name: the input's ``sets``; the
 #: conversion: the input's unit), in the table's order.
@@ -95,12 +95,20 @@ class _Given:
         overrides: dict = {}
         for name in _GEOMETRY:
             value = self.values.get(name)
-            if value is not None:
-                keyword = _field(name)
-                overrides[keyword] = int(value) if keyword == "ball_count" else _si(name, value)
+            if value is None:
+                continue
+            keyword, kind = _field(name), INPUTS[name].kind
+            if name == "roller_profile":
+                overrides[keyword] = parse_profile(value)
+            elif kind == "text":
+                overrides[keyword] = value
+            elif kind == "integer":
+                overrides[keyword] = int(value)
+            else:
+                overrides[keyword] = _si(name, value)
         material = _material(self.values)
-        if material is not None:
-            overrides["ring_material"] = overrides["ball_material"] = material
+        if material is not None:  # the rolling elements' key is set once the kind is known
+            overrides["ring_material"] = overrides["element_material"] = material
         if isinstance(self.values.get("name"), str):
             overrides["name"] = self.values["name"]
         return overrides
@@ -255,9 +263,16 @@ def bearing_from(values: dict):
     given = _Given(values)
     overrides = given.overrides
     try:
+        kind = _kind(given, designation)
+        if "element_material" in overrides:
+            element = "roller_material" if kind == "roller" else "ball_material"
+            overrides[element] = overrides.pop("element_material")
         if designation:
-            return bearing_from_designation(designation, system=given.system, overrides=overrides)
-        missing = [n for n in GEOMETRY_NEEDED if _field(n) not in overrides]
+            return bearing_from_designation(
+                designation, system=given.system, overrides=overrides, rollers=True
+            )
+        needed = ROLLER_NEEDED if kind == "roller" else GEOMETRY_NEEDED
+        missing = [n for n in needed if _field(n) not in overrides]
         if missing:
             raise InputError(
                 "designation",
@@ -267,11 +282,110 @@ def bearing_from(values: dict):
         kwargs = dict(overrides)
         name = kwargs.pop("name", "user geometry")
         sources = {k: Source("user", "request") for k in kwargs}
+        if kind == "roller":
+            from ..roller_geometry import RollerBearing
+
+            return RollerBearing(name=name, sources=sources, **kwargs), None
         return BallBearing(name=name, sources=sources, **kwargs), None
     except InputError as exc:
         raise given.remap(exc) from None
     except GeometryNeeded as exc:
         raise CatalogError(_catalog_message(exc)) from None
+
+
+def _kind(given: _Given, designation) -> str:
+    """ "ball" or "roller": the designation's (catalogue name or designation), else the
+    kind the explicit geometry describes; inputs of the other kind are refused, naming the
+    first of them."""
+    from ..catalog import rolling_element_of
+
+    balls = [n for n in BALL_ONLY if n in given.values]
+    rollers = [n for n in ROLLER_ONLY if n in given.values]
+    if designation:
+        kind = rolling_element_of(str(designation), given.system)
+    else:
+        kind = "roller" if rollers else "ball"
+    wrong = balls if kind == "roller" else rollers
+    if wrong:
+        name = wrong[0]
+        what = (
+            f"{designation} is a {kind} bearing"
+            if designation
+            else (f"`{(rollers if kind == 'roller' else balls)[0]}` describes a {kind} bearing")
+        )
+        raise InputError(
+            given.origin(name),
+            given.values[name],
+            f"no value: it is an input of a {'ball' if kind == 'roller' else 'roller'} bearing",
+            what,
+        )
+    return kind
+
+
+def balls_only(bearing, values: dict, why: str) -> None:
+    """Refuse the roller ``bearing`` for a model of ball bearings only (``why``: whose model
+    it is), naming the input in ``values`` (the request) that made it a roller bearing."""
+    if bearing.rolling_element != "roller":
+        return
+    name = "designation" if values.get("designation") else "rollers"
+    raise InputError(name, values.get(name), f"a ball bearing: {why}")
+
+
+def parse_profile(text):
+    """A `roller_profile` text as a RollerProfile: flat, logarithmic,
+    crowned:crown_radius_mm=R[,flat_length_mm=F] or user:positions_mm=A/B/C,drops_um=A/B/C.
+
+    >>> parse_profile("crowned:crown_radius_mm=500").crown_radius
+    0.5
+    """
+    from ..roller_geometry import PROFILE_KINDS, RollerProfile
+
+    if not isinstance(text, str):
+        return text
+    kind, _, rest = text.strip().partition(":")
+    kind = kind.strip().lower()
+    allowed = (
+        "flat, logarithmic, crowned:crown_radius_mm=R[,flat_length_mm=F] or "
+        "user:positions_mm=A/B/C,drops_um=A/B/C"
+    )
+    if kind not in PROFILE_KINDS:
+        raise InputError("roller_profile", text, allowed)
+    keys: dict = {}
+    for item in filter(None, (p.strip() for p in rest.split(","))):
+        key, eq, value = item.partition("=")
+        try:
+            numbers = [float(v) for v in value.split("/")]
+        except ValueError:
+            numbers = []
+        if not eq or not numbers or key.strip() in keys:
+            raise InputError("roller_profile", text, allowed)
+        keys[key.strip()] = numbers
+    scales = {"crown_radius_mm": 1e-3, "flat_length_mm": 1e-3}
+    wanted = {
+        "flat": (),
+        "logarithmic": (),
+        "crowned": ("crown_radius_mm", "flat_length_mm"),
+        "user": ("positions_mm", "drops_um"),
+    }[kind]
+    for key in keys:
+        if key not in wanted:
+            raise InputError("roller_profile", text, allowed, f"{key} is not a key of {kind}")
+    if kind == "crowned":
+        if "crown_radius_mm" not in keys:
+            raise InputError("roller_profile", text, allowed, "crowned needs crown_radius_mm")
+        flat = keys.get("flat_length_mm", [0.0])[0] * scales["flat_length_mm"]
+        return RollerProfile(
+            "crowned", crown_radius=keys["crown_radius_mm"][0] * 1e-3, flat_length=flat
+        )
+    if kind == "user":
+        if set(keys) != {"positions_mm", "drops_um"}:
+            raise InputError("roller_profile", text, allowed, "user needs positions and drops")
+        return RollerProfile(
+            "user",
+            positions=tuple(v * 1e-3 for v in keys["positions_mm"]),
+            drops=tuple(v * 1e-6 for v in keys["drops_um"]),
+        )
+    return RollerProfile(kind)
 
 
 def bearing_warnings(bearing, decoded=None) -> list[str]:
@@ -295,7 +409,7 @@ def bearing_warnings(bearing, decoded=None) -> list[str]:
             "(they carry more balls); give `balls`"
         )
     big_d = bearing.outside_diameter
-    if bearing.is_thrust and big_d is not None:
+    if bearing.rolling_element == "ball" and bearing.is_thrust and big_d is not None:
         reach = bearing.pitch_diameter + bearing.ball_diameter
         if reach > big_d:
             out.append(
@@ -310,10 +424,17 @@ def geometry_line(bearing, contact_angle: float | None = None) -> str:
     """One line: where the geometry of ``bearing`` comes from and its main values (the
     ``contact_angle`` given [rad], else the nominal one)."""
     alpha = bearing.contact_angle if contact_angle is None else contact_angle
+    if bearing.rolling_element == "roller":
+        size = (
+            f"D_we = {bearing.roller_diameter * 1e3:.4g} mm, "
+            f"L_we = {bearing.roller_length * 1e3:.4g} mm"
+        )
+    else:
+        size = f"D_w = {bearing.ball_diameter * 1e3:.4g} mm"
     return (
-        f"geometry ({bearing.geometry_source}): Z = {bearing.ball_count}, "
-        f"D_w = {bearing.ball_diameter * 1e3:.4g} mm, d_m = {bearing.pitch_diameter * 1e3:.4g} "
-        f"mm, contact angle {math.degrees(alpha):.4g} deg"
+        f"geometry ({bearing.geometry_source}): Z = {bearing.element_count}, {size}, "
+        f"d_m = {bearing.pitch_diameter * 1e3:.4g} mm, contact angle "
+        f"{math.degrees(alpha):.4g} deg"
     )
 
 

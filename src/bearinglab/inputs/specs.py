@@ -50,10 +50,10 @@ MAX_FORM_ERROR = 0.05
 
 #: What a defect specification may hold.
 DEFECT_ALLOWED = (
-    "LOCATION:KEY=VALUE,... with LOCATION outer, inner or ball and keys "
-    "width_mm (> 0, required), depth_mm (> 0), angle_deg (outer: position from "
-    "+x towards +y, 270 = bottom; inner: position at t = 0; ball: spin phase) "
-    "and ball (ball index, ball defects only), e.g. "
+    "LOCATION:KEY=VALUE,... with LOCATION outer, inner, ball (a ball bearing) or roller (a "
+    "roller bearing) and keys width_mm (> 0, required), depth_mm (> 0), angle_deg (outer: "
+    "position from +x towards +y, 270 = bottom; inner: position at t = 0; ball, roller: "
+    "spin phase) and ball or roller (its index, its defects only), e.g. "
     "outer:width_mm=1.2,depth_mm=0.25"
 )
 _DEFECT_KEYS = {
@@ -64,6 +64,12 @@ _DEFECT_KEYS = {
         "depth_mm": "positive",
         "angle_deg": "number",
         "ball": "index",
+    },
+    "roller": {
+        "width_mm": "positive",
+        "depth_mm": "positive",
+        "angle_deg": "number",
+        "roller": "index",
     },
 }
 
@@ -189,11 +195,12 @@ def parse_defect(text: str):
     }
     if "angle_deg" in values:  # into [-pi, pi): 270 deg is -90 deg, the bottom
         kwargs["angle"] = (math.radians(values["angle_deg"]) + math.pi) % (2 * math.pi) - math.pi
-    if "ball" in values:
-        kwargs["ball"] = values["ball"]
+    if "ball" in values or "roller" in values:
+        kwargs["ball"] = values.get("ball", values.get("roller"))
     from ..dynamics import Defect  # the dynamics package imports scipy.signal
 
-    return Defect(location, **kwargs)
+    # a roller's defect is the rolling element's: the models' "ball" location
+    return Defect("ball" if location == "roller" else location, **kwargs)
 
 
 def form_errors_text(imperfections) -> str:
@@ -224,7 +231,16 @@ def check_defects(specs: list[str], defects: list, bearing) -> None:
     """Each defect of ``specs`` (as typed) and ``defects`` (as parse_defect read them)
     checked against the ``bearing``
     (Defect.check): one that does not fit is a one-line error in the spec's units."""
+    element = bearing.rolling_element
     for text, defect in zip(specs, defects, strict=True):
+        written = str(text).partition(":")[0].strip().lower()
+        if written in ("ball", "roller") and written != element:
+            raise InputError(
+                "defect",
+                text,
+                DEFECT_ALLOWED,
+                f"{bearing.name or 'the bearing'} has {element}s: write {element}:...",
+            )
         try:
             defect.check(bearing)
         except InputError as exc:

@@ -125,7 +125,7 @@ INPUTS: dict[str, Input] = {
     "system": Input(
         "text", None, "Read the designation as GOST 3189-89 or ISO.", choices=("gost", "iso")
     ),
-    "balls": Input("integer", None, "Number of balls Z.", sets="BallBearing.ball_count"),
+    "balls": Input("integer", None, "Number of balls Z.", low=3, sets="BallBearing.ball_count"),
     "ball_diameter_mm": _n(None, "Ball diameter D_w [mm].", **_LENGTH, sets="ball_diameter"),
     "pitch_diameter_mm": _n(None, "Pitch diameter d_m [mm].", **_LENGTH, sets="pitch_diameter"),
     "contact_angle_deg": _n(None, "Nominal contact angle [deg].", sets="contact_angle"),
@@ -141,6 +141,56 @@ INPUTS: dict[str, Input] = {
     ),
     "outer_arch_angle_deg": _n(
         None, "Gothic-arch angle of the outer groove [deg] (0 = circular).", sets="outer_arch_angle"
+    ),
+    "rollers": Input(
+        "integer", None, "Number of rollers per row Z.", low=3, sets="RollerBearing.roller_count"
+    ),
+    "roller_diameter_mm": _n(
+        None,
+        "Roller diameter D_we (mean diameter of a tapered roller) [mm].",
+        **_LENGTH,
+        sets="roller_diameter",
+    ),
+    "roller_length_mm": _n(
+        None,
+        "Effective roller length L_we (the line contact's length) [mm].",
+        **_LENGTH,
+        sets="roller_length",
+    ),
+    "roller_profile": Input(
+        "text",
+        None,
+        "Roller profile: flat (unprofiled), logarithmic (ISO/TS 16281, the default), "
+        "crowned:crown_radius_mm=R[,flat_length_mm=F] or user:positions_mm=A/B/C,"
+        "drops_um=A/B/C (the drop below the straight line at each position from the "
+        "roller's middle).",
+        sets="profile",
+    ),
+    "cone_angle_deg": _n(
+        None,
+        "Cone (inner raceway) angle of a tapered bearing [deg] (default: on apex).",
+        0.0,
+        45.0,
+        what="an angle",
+        sets="cone_angle",
+    ),
+    "rows": Input(
+        "integer", None, "Rows of rollers (1 or 2).", low=1, high=2, sets="RollerBearing.rows"
+    ),
+    "arrangement": Input(
+        "text",
+        None,
+        "Two rows of a roller bearing: back_to_back or face_to_face (mirrored tapered rows), "
+        "tandem (two rows alike, e.g. NN); single for one row.",
+        choices=("single", "back_to_back", "face_to_face", "tandem"),
+        sets="arrangement",
+    ),
+    "axial_clearance_um": _n(
+        None,
+        "Axial play of a mirrored pair or double-row tapered bearing [um]; negative: a preload.",
+        -1e4,
+        1e4,
+        sets="axial_clearance",
     ),
     "bore_mm": _n(None, "Bore d [mm].", **_LENGTH, sets="bore"),
     "outside_diameter_mm": _n(None, "Outside diameter D [mm].", **_LENGTH, sets="outside_diameter"),
@@ -216,6 +266,14 @@ INPUTS: dict[str, Input] = {
         sets="OperatingCondition.misalignment",
     ),
     "outer_rotating": Input("bool", False, "The outer ring turns, the inner ring is fixed."),
+    "slices": Input(
+        "integer",
+        30,
+        "Slices of each roller's line contact (ISO/TS 16281); roller bearings only.",
+        low=3,
+        high=500,
+        what="a number of slices",
+    ),
     # ---------------------------------------------------------------- lubricant
     "film": Input("bool", False, "Subtract the Hamrock-Dowson EHL film from the approaches."),
     "lubricant": Input(
@@ -395,6 +453,27 @@ INPUTS: dict[str, Input] = {
 BEARING = tuple(INPUTS)[: tuple(INPUTS).index("geometry") + 1]
 #: The explicit geometry a bearing needs without a designation.
 GEOMETRY_NEEDED = ("balls", "ball_diameter_mm", "pitch_diameter_mm")
+#: The explicit geometry a roller bearing needs without a designation.
+ROLLER_NEEDED = ("rollers", "roller_diameter_mm", "roller_length_mm", "pitch_diameter_mm")
+#: The inputs that belong to one kind of rolling element only.
+BALL_ONLY = (
+    "balls",
+    "ball_diameter_mm",
+    "inner_groove_factor",
+    "outer_groove_factor",
+    "inner_arch_angle_deg",
+    "outer_arch_angle_deg",
+)
+ROLLER_ONLY = (
+    "rollers",
+    "roller_diameter_mm",
+    "roller_length_mm",
+    "roller_profile",
+    "cone_angle_deg",
+    "rows",
+    "arrangement",
+    "axial_clearance_um",
+)
 #: The form errors.
 FORMS = ("waviness", "ball_size_error_um", "surface3d", "seed")
 

@@ -4,6 +4,7 @@ carry their unit (:mod:`bearinglab.units`), ``to_pandas`` and ``plot``."""
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -117,7 +118,8 @@ class LifeResult:
             "equivalent_load_n": self.equivalent_load,
             "x_factor": self.factors.x,
             "y_factor": self.factors.y,
-            "e_limit": self.factors.e,
+            # ISO 281 gives no e for a bearing that carries no axial load (alpha = 0 rollers)
+            "e_limit": self.factors.e if math.isfinite(self.factors.e) else None,
             "static_equivalent_load_n": self.static_equivalent_load,
             "static_safety_factor": self.static_safety_factor,
             "l10_million_rev": self.l10,
