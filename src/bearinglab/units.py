@@ -414,6 +414,7 @@ DIMENSIONLESS: dict[str, str] = {
     "ok": "true when every case passed or failed as documented",
     "sections": "the report's sections",
     "failed_sections": "sections whose analysis failed",
+    "left_out_sections": "sections that do not apply to the bearing, each with why",
     # studies and data sets
     "analysis": "the analysis a study runs",
     "inputs": "input columns (with their units)",

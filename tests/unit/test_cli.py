@@ -66,7 +66,11 @@ def test_info_of_a_roller_bearing_gives_its_roller_geometry(capsys):
     assert d["bearing_type"] == "tapered_roller" and d["bore_mm"] == 30
     assert d["rolling_element"] == "roller" and "ball_count" not in d
     assert d["roller_count"] > 10 and 0 < d["roller_diameter_mm"] < (62 - 30) / 2
-    assert 5 < d["contact_angle_deg"] < 30 and d["geometry_source"] in ("catalog", "estimated", "mixed")
+    assert 5 < d["contact_angle_deg"] < 30 and d["geometry_source"] in (
+        "catalog",
+        "estimated",
+        "mixed",
+    )
 
 
 def test_frequencies_6205_at_1797(capsys):

@@ -480,20 +480,13 @@ def stiffness_map_request(values: dict, progress=None) -> StiffnessMap:
         check_speed(bearing, float(np.max(speeds)) * math.pi / 30.0)
     except InputError as exc:
         raise restate(exc, values, STIFFNESS_MAP.options) from None
-    done = [0]
-
-    def advance(n: int) -> None:
-        done[0] += n
-        if progress is not None:
-            progress(done[0], total)
-
     table = stiffness_map(
         bearing,
         radial,
         axial,
         speeds,
         workers=workers or None,
-        progress=advance,
+        progress=progress,
         gyroscopic=bool(values.get("gyroscopic")),
         race_control=values.get("race_control") or "outer",
     )

@@ -312,7 +312,7 @@ def print_verdict(diag, name: str, bearing) -> None:
             peak_label(p),
             None if p.get("deviation") is None else 100 * p["deviation"],
         ]
-        for p in diag.peaks
+        for p in d["peaks"]
     ]
     console.print(
         _table(

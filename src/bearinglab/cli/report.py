@@ -45,14 +45,17 @@ def report_command(values, json_output: JsonOpt = False, output=None):
                 "output": str(output),
                 "sections": [s.key for s in report.sections],
                 "failed_sections": failed,
+                "left_out_sections": {s.key: s.left_out for s in report.left_out},
                 "warnings": warnings,
             }
         )
     else:
-        ok = len(report.sections) - len(failed)
+        ok = len(report.sections) - len(failed) - len(report.left_out)
+        skipped = ", ".join(s.title.lower() for s in report.left_out)
         console.print(
             f"report written to [bold]{escape(str(output))}[/bold] ({ok} of "
             f"{len(report.sections)} sections"
+            + (f"; not for this bearing: {escape(skipped)}" if skipped else "")
             + (f"; failed: {escape(', '.join(f['title'] for f in failed))})" if failed else ")")
         )
         _print_warnings(warnings)

@@ -70,8 +70,8 @@ def _record_error(exc: InputError, r: dict, bearing=None) -> InputError:
     typed, not m)."""
     if exc.parameter in ("errors", "band"):  # ball-size errors: the band drawn
         limit = (
-            f"at most {0.1 * bearing.ball_diameter * 1e6:.4g} um (each ball within +-5 % of "
-            f"the ball diameter, {bearing.ball_diameter * 1e3:g} mm)"
+            f"at most {0.1 * bearing.element_diameter * 1e6:.4g} um (each element within "
+            f"+-5 % of its diameter, {bearing.element_diameter * 1e3:g} mm)"
             if bearing is not None
             else exc.allowed.replace("[m]", "[um]")
         )
@@ -116,7 +116,7 @@ def _make_record(r: dict, bearing, check: bool) -> tuple[np.ndarray, dict, dict]
     from ..plausibility import LOCATION_FAMILY, sampling_warnings
     from .path import TransferPath
 
-    z = bearing.ball_count
+    z = bearing.element_count
     defects = [
         Defect(
             d["location"],

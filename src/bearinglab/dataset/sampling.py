@@ -130,11 +130,25 @@ def _check_bearing(given, options: dict) -> None:
     from ..study.bearings import bearing_of
 
     try:
-        bearing_of(options)
+        return bearing_of(options)
     except BearinglabError as exc:
         allowed = exc.allowed if isinstance(exc, InputError) else "bearings bearinglab can make"
         hint = exc.hint if isinstance(exc, InputError) else " ".join(str(exc).split())
         raise InputError("bearings", given, allowed, hint) from None
+
+
+def _check_rollers(given, bearing, parsed: dict) -> None:
+    """Refuse, before any record, what the models take for ball bearings only when a
+    roller bearing is drawn: waviness, ball-size errors and the slip model."""
+    if bearing.rolling_element != "roller":
+        return
+    why = f"{given} is a roller bearing; the model takes it for ball bearings only"
+    for name in ("waviness_amplitude_um", "ball_size_error_um"):
+        if _highest(parsed[name]) > 0:
+            raise InputError(name, parsed[name][1], "0 with a roller bearing", why)
+    models = parsed["model"][1] if parsed["model"][0] == "choice" else [parsed["model"][1]]
+    if "slip" in models:
+        raise InputError("model", "slip", "rigid with a roller bearing", why)
 
 
 @dataclass(frozen=True)
@@ -172,8 +186,9 @@ class DatasetSpec:
         if not bearings:
             raise InputError("bearings", self.bearings, "at least one bearing")
         p = {"bearings": [_bearing_options(b) for b in bearings]}
-        for b, options in zip(bearings, p["bearings"], strict=True):
-            _check_bearing(b, options)
+        made = [
+            _check_bearing(b, options) for b, options in zip(bearings, p["bearings"], strict=True)
+        ]
         faults = parse_range(
             "faults",
             list(self.faults) if isinstance(self.faults, tuple) else self.faults,
@@ -226,6 +241,8 @@ class DatasetSpec:
                 )
             )
         p["resonances"] = path
+        for b, bearing in zip(bearings, made, strict=True):
+            _check_rollers(b, bearing, p)
         default_path = self.resonances == type(self).__dataclass_fields__["resonances"].default
         _check_path(path, p["sample_rate_hz"], blame_rate=default_path)
         object.__setattr__(self, "parsed", p)

@@ -306,10 +306,11 @@ def measured_ball_defect_frequency(matched_peaks) -> float | None:
 
 def _as_rollers(d: dict) -> dict:
     """A diagnosis' dict with the rolling element's family named "roller": the verdict,
-    the faults, the families, scores and tolerances, and the frequency of its defect."""
+    the faults, the families, scores and tolerances, the peaks' matches and the frequency
+    of its defect."""
 
     def name(text):
-        return "roller" if text == "ball" else text
+        return {"ball": "roller", "ball_defect": "roller_defect"}.get(text, text)
 
     d = dict(d)
     for key in ("likely_fault", "primary_fault"):
@@ -320,5 +321,10 @@ def _as_rollers(d: dict) -> dict:
     for key in ("families", "scores", "tolerances"):
         if isinstance(d.get(key), dict):
             d[key] = {name(k): v for k, v in d[key].items()}
+    if isinstance(d.get("peaks"), list):
+        d["peaks"] = [
+            {k: name(v) if k in ("matched", "sideband_of") else v for k, v in p.items()}
+            for p in d["peaks"]
+        ]
     d["roller_defect_frequency_hz"] = d.pop("ball_defect_frequency_hz")
     return d

@@ -104,17 +104,21 @@ def equivalent_load_of(
     bearing: FrictionBearing, kind: str, fr: float, fa: float, given: float | None
 ) -> tuple[float, str]:
     """P for seed 003's model, which does not say how P is formed: given; F_r without axial
-    load; ISO 281 Table 3 from the geometry of a ball bearing; P_a = F_a for a thrust ball
-    bearing under axial load alone."""
+    load; ISO 281 Table 3 from the geometry of a ball bearing or of a roller bearing whose
+    is tapered (its contact angle); P_a = F_a for a thrust ball bearing
+    under axial load alone."""
     if given is not None:
         return check_load("equivalent_load", given), "given"
     if fa == 0.0:
         return fr, "P = F_r (no axial load)"
     ball = bearing.ball_bearing
+    if ball is None and bearing.roller_bearing is not None and fr > 0:
+        ball = bearing.roller_bearing  # ISO 281's roller rows of Table 3
     if ball is not None and ball.bearing_type in (
         "radial_ball",
         "angular_contact_ball",
         "thrust_ball",
+        "tapered_roller",
     ):
         from ..ratings import equivalent_dynamic_load
 

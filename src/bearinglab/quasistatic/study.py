@@ -2,11 +2,13 @@
 
 Each (axial load, speed) line is one task: its radial loads are solved in ascending order,
 each starting from the previous solution (a warm start: two or three Newton steps instead
-of a cold start's ten). After the line's first case, the rest go to the compiled ring
-iteration in one call (solver.solve_line); a case it cannot solve goes to the full solver,
-with its load and speed continuations, and the line carries on from there. Lines are
-spread over worker processes with ``concurrent.futures`` (a machine's cores; a Dask
-cluster is the route for larger studies).
+of a cold start's ten). For a ball bearing, after the line's first case the rest go to the
+compiled ring iteration in one call (solver.solve_line); a case it cannot solve goes to
+the full solver, with its load and speed continuations, and the line carries on from
+there. A roller bearing's line is solved case by case by the slice model, each from the
+previous ring displacement. Lines run on the engine (:func:`bearinglab.engine.open_jobs`:
+this process or a pool of the machine's cores; a Dask cluster is the route for larger
+studies, through :mod:`bearinglab.study`).
 """
 
 from __future__ import annotations
@@ -14,7 +16,6 @@ from __future__ import annotations
 import math
 import os
 from collections.abc import Callable
-from concurrent.futures import ProcessPoolExecutor
 
 import numpy as np
 
@@ -37,8 +38,17 @@ COLUMNS = (
 )
 
 
+def columns(bearing) -> tuple[str, ...]:
+    """The map's columns for ``bearing``: COLUMNS, with max_roller_load_n for a roller
+    bearing."""
+    if getattr(bearing, "rolling_element", "ball") != "roller":
+        return COLUMNS
+    return tuple("max_roller_load_n" if c == "max_ball_load_n" else c for c in COLUMNS)
+
+
 def _line(args) -> list[dict]:
     bearing, radial_loads, axial_load, rpm, angle, options = args
+    roller = getattr(bearing, "rolling_element", "ball") == "roller"
     loads = np.sort(np.asarray(radial_loads, float))
     rows, state = [], None  # state: (ring displacement, ball centres) to go on from
     i = 0
@@ -50,7 +60,8 @@ def _line(args) -> list[dict]:
             state = None
             i += 1
             continue
-        if state is not None and solver.COMPILED_RING and options["race_control"] != "hybrid":
+        batch = not roller and solver.COMPILED_RING and options["race_control"] != "hybrid"
+        if state is not None and batch:
             # the rest of the line in one compiled call, each case from the previous one
             done, state = _batch(bearing, loads[i:], axial_load, rpm, angle, state, rows, options)
             i += done
@@ -73,7 +84,12 @@ def _line(args) -> list[dict]:
             state = None
             i += 1
             continue
-        state = (r.displacement, r.ball_centre)
+        except InputError as exc:  # a load this bearing cannot take (a lone tapered row)
+            rows.append({**row, "status": f"not solved: {exc}"})
+            state = None
+            i += 1
+            continue
+        state = (r.displacement, None if roller else r.ball_centre)
         rows.append(
             {
                 **row,
@@ -81,7 +97,9 @@ def _line(args) -> list[dict]:
                 "axial_displacement_um": r.axial_displacement * 1e6,
                 "radial_stiffness_n_per_um": r.radial_stiffness * 1e-6,
                 "axial_stiffness_n_per_um": r.axial_stiffness * 1e-6,
-                "max_ball_load_n": float(r.load.max()),
+                ("max_roller_load_n" if roller else "max_ball_load_n"): (
+                    r.max_roller_load if roller else float(r.load.max())
+                ),
                 "status": "ok",
             }
         )
@@ -133,7 +151,7 @@ def stiffness_map(
     *,
     radial_load_angle: float = -0.5 * math.pi,
     workers: int | None = None,
-    progress: Callable[[int], None] | None = None,
+    progress: Callable[[int, int], None] | None = None,
     gyroscopic: bool = False,
     race_control: str = "outer",
 ):
@@ -141,7 +159,7 @@ def stiffness_map(
 
     Parameters
     ----------
-    bearing : BallBearing
+    bearing : BallBearing or RollerBearing
         The bearing.
     radial_loads, axial_loads : sequences of float
         Loads [N] (radial >= 0).
@@ -152,14 +170,16 @@ def stiffness_map(
     workers : int, optional
         Worker processes; 1 solves in this process; default: the machine's cores.
     progress : callable, optional
-        Called with the number of cases just finished.
+        ``progress(done, total)`` in cases, as the engine tells it.
     gyroscopic, race_control :
-        As for :func:`bearinglab.quasistatic.solve_load_distribution` [-].
+        As for :func:`bearinglab.quasistatic.solve_load_distribution`; ball bearings
+        only [-].
 
     Returns
     -------
     pandas.DataFrame
-        One row per case, columns COLUMNS; ``status`` is "ok", "no load" or why not.
+        One row per case, columns :func:`columns`; ``status`` is "ok", "no load" or why
+        not.
     """
     radial = np.asarray(radial_loads, float)
     if radial.ndim != 1 or not np.all(np.isfinite(radial)) or np.any(radial < 0):
@@ -167,28 +187,30 @@ def stiffness_map(
     if race_control not in solver.RACE_CONTROLS:
         raise InputError("race_control", race_control, " or ".join(map(repr, solver.RACE_CONTROLS)))
     options = {"gyroscopic": bool(gyroscopic), "race_control": race_control}
+    if getattr(bearing, "rolling_element", "ball") == "roller":
+        for name, moot in (("gyroscopic", gyroscopic), ("race_control", race_control != "outer")):
+            if moot:
+                raise InputError(
+                    name, options[name], "its default for a roller bearing", "ball bearings only"
+                )
     tasks = [
-        (bearing, radial, float(fa), float(rpm), radial_load_angle, options)
-        for rpm in speeds_rpm
-        for fa in axial_loads
+        (i, (bearing, radial, float(fa), float(rpm), radial_load_angle, options))
+        for i, (rpm, fa) in enumerate((r, a) for r in speeds_rpm for a in axial_loads)
     ]
-    workers = workers or os.cpu_count() or 1
-    rows = []
-    if workers == 1 or len(tasks) == 1:
-        for task in tasks:
-            rows.extend(_line(task))
-            if progress:
-                progress(len(radial))
-    else:
-        from ..engine import deferred_interrupts
+    lines: list = [[] for _ in tasks]
 
-        with ProcessPoolExecutor(max_workers=workers) as pool:
-            with deferred_interrupts():  # the workers never see a Ctrl-C: this process stops
-                lines = pool.map(_line, tasks)
-            for line in lines:
-                rows.extend(line)
-                if progress:
-                    progress(len(radial))
+    def keep(task, rows) -> None:
+        lines[task[0]] = rows
+
+    from ..engine import check_workers, open_jobs, run_partitions
+
+    jobs = min(check_workers("workers", workers or os.cpu_count() or 1), len(tasks))
+    with open_jobs(max(jobs, 1)) as runner:
+        run_partitions(runner, _task, tasks, [len(radial)] * len(tasks), keep, progress=progress)
     import pandas as pd
 
-    return pd.DataFrame(rows, columns=list(COLUMNS))
+    return pd.DataFrame([r for line in lines for r in line], columns=list(columns(bearing)))
+
+
+def _task(task) -> list[dict]:
+    return _line(task[1])

@@ -17,11 +17,13 @@ from ..plausibility import (
     operating_warnings,
     sampling_warnings,
 )
+from ..roller_geometry import RollerBearing
 from . import mechanics, operation, spectra, vibration
 from .context import Context
 from .document import Report, Section
 
 #: The sections in page order: key, title, function(Context) -> (html, highlights).
+#: A section that does not apply to the bearing says why instead (:func:`left_out`).
 SECTIONS = (
     ("identity", "Identity and geometry", mechanics.identity),
     ("load-distribution", "Load distribution", mechanics.load_distribution),
@@ -35,6 +37,33 @@ SECTIONS = (
     ("friction", "Friction torque and power loss", operation.friction),
     ("life", "Rating life", operation.life),
 )
+_RIGID = (
+    "the rigid dynamic model is planar: single-row cylindrical and needle roller bearings "
+    "only (a tapered or two-row bearing's axial load and second row are not in it)"
+)
+
+
+def left_out(key: str, bearing) -> str | None:
+    """Why section ``key`` is not computed for ``bearing`` (a model of ball bearings only,
+    or a roller bearing the rigid model does not take), or None."""
+    if bearing.rolling_element != "roller":
+        return None
+    if key == "ring-resonances":
+        return (
+            "seed 000's ring model rests the outer ring on ball contacts; no roller "
+            "model of the ring modes is built"
+        )
+    if key == "noise":
+        return (
+            "seed 003's sound model radiates from the balls (pulsating spheres) and the "
+            "inner ring; no roller model of the sound is built"
+        )
+    rigid = bearing.contact_modelled and not bearing.is_tapered and bearing.rows == 1
+    if key in ("envelope-spectrum", "vibration-bands") and not rigid:
+        return _RIGID
+    return None
+
+
 #: ISO 15242's top band edge at 1800 rpm [Hz]; the default sample rate resolves it.
 _TOP_BAND_HZ = 10e3
 
@@ -86,8 +115,10 @@ def build_report(
 
     Parameters
     ----------
-    bearing : BallBearing
-        The bearing (e.g. from :func:`bearinglab.catalog.bearing_from_designation`).
+    bearing : BallBearing or RollerBearing
+        The bearing (e.g. from :func:`bearinglab.catalog.bearing_from_designation`); a
+        roller bearing's report leaves out what is modelled for ball bearings only (ring
+        resonances, sound, the slip model), saying so in those sections.
     condition : OperatingCondition
         Loads and the shaft speed (> 0) [N, rad/s].
     designation : bearinglab.designation.Designation, optional
@@ -112,8 +143,8 @@ def build_report(
     -------
     Report
     """
-    if not isinstance(bearing, BallBearing):
-        raise InputError("bearing", bearing, "a BallBearing")
+    if not isinstance(bearing, (BallBearing, RollerBearing)):
+        raise InputError("bearing", bearing, "a BallBearing or a RollerBearing")
     if not condition.shaft_speed > 0:
         raise speed_error(condition.shaft_speed, "a speed > 0 rpm")
     for name, value, zero in (
@@ -155,6 +186,10 @@ def build_report(
     for i, (key, title, build) in enumerate(SECTIONS):
         if progress is not None:
             progress(title, i, len(SECTIONS))
+        why = left_out(key, bearing)
+        if why is not None:
+            sections.append(Section(key, title, left_out=why))
+            continue
         try:
             body, highlights = build(ctx)
             sections.append(Section(key, title, body, highlights=list(highlights)))

@@ -156,14 +156,16 @@ def key_figures(items: list[tuple[str, str]]) -> str:
 
 @dataclass
 class Section:
-    """One section of a report: ``body`` HTML, or ``error`` when its analysis failed;
-    ``highlights`` are (label, value) pairs for the summary at the top."""
+    """One section of a report: ``body`` HTML, ``error`` when its analysis failed, or
+    ``left_out``: why it does not apply to this bearing; ``highlights`` are (label, value)
+    pairs for the summary at the top."""
 
     key: str
     title: str
     body: str = ""
     error: str | None = None
     highlights: list[tuple[str, str]] = field(default_factory=list)
+    left_out: str | None = None
 
     @property
     def failed(self) -> bool:
@@ -175,6 +177,8 @@ class Section:
             f'<div class="error"><strong>This analysis failed</strong> (the rest of the '
             f"report is unaffected):<pre>{prose(self.error)}</pre></div>"
             if self.failed
+            else f'<p class="small">Not computed: {esc(self.left_out)}.</p>'
+            if self.left_out
             else self.body
         )
         return (
@@ -199,6 +203,11 @@ class Report:
     def failed(self) -> list[Section]:
         """The sections whose analysis failed."""
         return [s for s in self.sections if s.failed]
+
+    @property
+    def left_out(self) -> list[Section]:
+        """The sections that do not apply to the bearing."""
+        return [s for s in self.sections if s.left_out]
 
     def to_html(self) -> str:
         """The self-contained page."""

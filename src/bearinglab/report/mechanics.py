@@ -33,6 +33,19 @@ _GEOMETRY = (  # field, label, symbol, SI -> shown factor, unit
     ("outer_groove_factor", "outer groove factor", "f_o", 1, "-"),
     ("diametral_clearance", "diametral clearance", "P_d", 1e6, "um"),
 )
+_ROLLER_GEOMETRY = (
+    ("bore", "bore", "d", 1e3, "mm"),
+    ("outside_diameter", "outside diameter", "D", 1e3, "mm"),
+    ("width", "width", "B", 1e3, "mm"),
+    ("roller_count", "number of rollers", "Z", 1, "-"),
+    ("roller_diameter", "roller diameter", "D_we", 1e3, "mm"),
+    ("roller_length", "roller effective length", "L_we", 1e3, "mm"),
+    ("pitch_diameter", "pitch diameter", "d_m", 1e3, "mm"),
+    ("contact_angle", "contact angle (outer raceway)", "alpha", 180 / math.pi, "deg"),
+    ("rows", "rows", "i", 1, "-"),
+    ("diametral_clearance", "diametral clearance", "P_d", 1e6, "um"),
+    ("axial_clearance", "axial clearance", "P_a", 1e6, "um"),
+)
 
 
 class _References(References):
@@ -59,24 +72,30 @@ def identity(ctx: Context):
         parts.append(notes(list(des.notes), "About the designation"))
     refs = _References()
     rows = []
-    for name, label, symbol, factor, unit in _GEOMETRY:
+    roller = b.rolling_element == "roller"
+    for name, label, symbol, factor, unit in _ROLLER_GEOMETRY if roller else _GEOMETRY:
         value = getattr(b, name)
-        shown = (
-            None
-            if value is None
-            else (int(value) if name == "ball_count" else float(value) * factor)
-        )
+        shown = None if value is None else (int(value) if unit == "-" else float(value) * factor)
         rows.append([label, symbol, shown, unit, Raw(esc(refs.cell(b, name)))])
     derived = [
         ("inner raceway diameter", "d_i", b.inner_raceway_diameter * 1e3, "mm"),
         ("outer raceway diameter", "d_o", b.outer_raceway_diameter * 1e3, "mm"),
-        ("free contact angle", "alpha_0", math.degrees(b.free_contact_angle), "deg"),
-        ("ball mass", "m_b", b.ball_mass * 1e3, "g"),
     ]
-    if None not in (b.bore, b.outside_diameter, b.width) and not b.is_thrust:
+    if roller:
+        derived.append(("roller mass", "m_r", b.roller_mass * 1e3, "g"))
+    else:
+        derived += [
+            ("free contact angle", "alpha_0", math.degrees(b.free_contact_angle), "deg"),
+            ("ball mass", "m_b", b.ball_mass * 1e3, "g"),
+        ]
+    if not roller and None not in (b.bore, b.outside_diameter, b.width) and not b.is_thrust:
         derived.append(("outer ring mass", "m_k", b.outer_ring_mass * 1e3, "g"))
     rows += [[label, symbol, value, unit, "derived"] for label, symbol, value, unit in derived]
-    for name, label in (("ring_material", "ring material"), ("ball_material", "ball material")):
+    element = "roller" if roller else "ball"
+    for name, label in (
+        ("ring_material", "ring material"),
+        (f"{element}_material", f"{element} material"),
+    ):
         m = getattr(b, name)
         rows.append(
             [
@@ -108,6 +127,8 @@ def load_distribution(ctx: Context):
     """Quasi-static load distribution at the operating point (polar plot of ball loads)."""
     r = solve_load_distribution(ctx.bearing, ctx.condition)
     ctx.results["load"] = r
+    if ctx.bearing.rolling_element == "roller":
+        return _roller_load_distribution(ctx, r)
     d = r.to_dict()
     balls = r.ball_table()
     loaded = int((balls["inner_load_n"] > 0).sum())
@@ -167,9 +188,72 @@ def load_distribution(ctx: Context):
     return "".join(body), highlights
 
 
+def _roller_load_distribution(ctx: Context, r):
+    """The roller bearing's load distribution by slices (its summary and one row per
+    roller)."""
+    d = r.to_dict()
+    summary = [
+        ["radial displacement S_r", d["radial_displacement_um"], "um"],
+        ["axial displacement S_a", d["axial_displacement_um"], "um"],
+        ["largest roller load Q_max", d["max_roller_load_n"], "N"],
+        ["largest slice pressure p_max", d["max_pressure_gpa"], "GPa"],
+        ["rollers loaded at the inner ring", d["loaded_rollers"], f"of {d['roller_count']}"],
+        ["radial stiffness C_r = dF_r/dS_r", d["radial_stiffness_n_per_um"], "N/um"],
+        ["axial stiffness C_a = dF_a/dS_a", d["axial_stiffness_n_per_um"], "N/um"],
+        ["diametral clearance P_d", d["diametral_clearance_um"], "um"],
+        ["equilibrium residual", d["equilibrium_residual_n"], "N"],
+    ]
+    if "max_flange_load_n" in d:
+        summary.insert(3, ["largest rib load", d["max_flange_load_n"], "N"])
+    rows = [
+        [
+            row["roller"],
+            row["angle_deg"],
+            row["inner_load_n"],
+            row["outer_load_n"],
+            row["inner_max_pressure_gpa"],
+            row["outer_max_pressure_gpa"],
+            row["end_load_ratio"],
+        ]
+        for row in d["rollers"]
+    ]
+    body = [
+        paragraph(
+            "Quasi-static equilibrium of the inner ring with each roller's line contacts cut "
+            f"into {d['slices']} slices (Harris & Kotzalas, Advanced Concepts, ch. 1; "
+            "Palmgren's slice stiffness; the roller's profile drop in each slice; "
+            "bearinglab.quasistatic.solve_load_distribution). Roller 1 sits under the "
+            "radial load, which acts downwards (-y)."
+        ),
+        table(["quantity", "value", "unit"], summary, "Operating point", numeric=(1,)),
+        figure(r.plot()[0], "Roller loads at their angular positions and the slice loads"),
+        table(
+            [
+                "roller",
+                "angle [deg]",
+                "inner load [N]",
+                "outer load [N]",
+                "inner p_max [GPa]",
+                "outer p_max [GPa]",
+                "end / mean slice load",
+            ],
+            rows,
+            "Per roller",
+        ),
+        notes(list(r.warnings), "Warnings"),
+    ]
+    highlights = [
+        ("Largest roller load", f"{number(d['max_roller_load_n'], 3)} N"),
+        ("Radial stiffness", f"{number(d['radial_stiffness_n_per_um'], 3)} N/um"),
+    ]
+    return "".join(body), highlights
+
+
 def contact(ctx: Context):
     """Hertz contact of the most loaded ball with both raceways."""
     r = ctx.need("load", "load distribution")
+    if ctx.bearing.rolling_element == "roller":
+        return _roller_contact(ctx, r)
     q = float(np.max(r.load))
     if q <= 0:
         raise ValueError("no ball carries load at this operating point")
@@ -209,6 +293,43 @@ def contact(ctx: Context):
     return "".join(body), [("Max contact pressure", f"{number(p, 3)} GPa")]
 
 
+def _roller_contact(ctx: Context, r):
+    """The line contacts of the most loaded roller, by slices and by the half-space."""
+    from ..contact.roller_race import roller_contacts
+
+    q = float(r.max_roller_load)
+    if q <= 0:
+        raise ValueError("no roller carries load at this operating point")
+    c = roller_contacts(ctx.bearing, q)
+    d = c.to_dict()
+    keys = (
+        ("largest pressure (half-space)", "max_pressure_gpa", "GPa"),
+        ("pressure at the middle", "middle_pressure_gpa", "GPa"),
+        ("edge / middle pressure", "edge_pressure_ratio", "-"),
+        ("Hertz line-contact pressure", "hertz_pressure_gpa", "GPa"),
+        ("Hertz half-width b", "hertz_half_width_mm", "mm"),
+        ("approach delta", "approach_um", "um"),
+    )
+    rows = [[label, d["inner"][k], d["outer"][k], unit] for label, k, unit in keys]
+    body = [
+        paragraph(
+            f"Line contacts of the most loaded roller (Q = {q:.4g} N) with both raceways: "
+            "the pressure along the roller from the elastic half-space (the profile's "
+            "crowning and the edges included) against Hertz's line contact of the same "
+            "length (bearinglab.contact.roller_contacts)."
+        ),
+        table(
+            ["quantity", "inner", "outer", "unit"],
+            rows,
+            f"Contacts at Q = {q:.4g} N",
+            numeric=(1, 2),
+        ),
+        figure(c.plot()[0], "Pressure along the roller at the largest roller load"),
+        notes(list(c.warnings), "Warnings"),
+    ]
+    return "".join(body), [("Max contact pressure", f"{number(d['max_pressure_gpa'], 3)} GPa")]
+
+
 def _condition(ctx: Context, factor: float, along: str) -> OperatingCondition:
     c = ctx.condition
     kwargs = {
@@ -240,7 +361,9 @@ def stiffness(ctx: Context):
         sr.append(
             d["radial_displacement_um"] if along == "radial_load" else d["axial_displacement_um"]
         )
-        rows.append([k, load, sr[-1], cr[-1], ca[-1], d["max_ball_load_n"]])
+        rows.append(
+            [k, load, sr[-1], cr[-1], ca[-1], d.get("max_ball_load_n", d.get("max_roller_load_n"))]
+        )
     from ..plotting import _pyplot
 
     fig, ax = _pyplot().subplots(1, 2, figsize=(11, 3.8))
@@ -262,8 +385,9 @@ def stiffness(ctx: Context):
         paragraph(
             f"Tangent stiffness of the bearing at {symbol} from "
             f"{LOAD_FACTORS[0]:g} to {LOAD_FACTORS[-1]:g} times the operating load "
-            "(other loads and the speed held). Ball bearings stiffen as the load "
-            "grows (Q ~ delta^1.5) and more balls take load."
+            "(other loads and the speed held). Bearings stiffen as the load grows "
+            "(Q ~ delta^1.5 for a ball, about delta^1.1 for a roller) and more "
+            "rolling elements take load."
         ),
         figure(fig, f"Stiffness and displacement against {symbol}"),
         table(

@@ -23,7 +23,7 @@ PEAKS_SHOWN = 12
 def example_defect(bearing) -> Defect:
     """The outer-race spall simulated when the user gives no defect: 15 % of the ball
     diameter wide, a fifth of that deep, at the bottom of the load zone [-]."""
-    width = round(0.15 * bearing.ball_diameter, 5)
+    width = round(0.15 * bearing.element_diameter, 5)
     return Defect("outer", width=width, depth=round(0.2 * width, 6))
 
 
@@ -45,7 +45,9 @@ def frequencies(ctx: Context):
     """Kinematic defect frequencies and, from a short slip-model run, with slip."""
     kin = defect_frequencies(ctx.bearing, ctx.condition.shaft_speed)
     slip, slip_note = None, None
-    if ctx.slip_duration > 0:
+    if ctx.bearing.rolling_element == "roller":
+        slip_note = "The slip model (seed 004) is for ball bearings: no frequencies with slip."
+    elif ctx.slip_duration > 0:
         try:
             sim = simulate(
                 ctx.bearing,

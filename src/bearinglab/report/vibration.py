@@ -34,7 +34,12 @@ def _noise(ctx: Context):
 def bands(ctx: Context):
     """RMS vibration velocity in the ISO 15242 bands
     (:func:`bearinglab.noise.bearing_velocity_bands`, through ``noise_analysis``)."""
-    vb = _noise(ctx).bands
+    if ctx.bearing.rolling_element == "roller":  # no noise model: the rigid model's bands
+        from ..noise import bearing_velocity_bands
+
+        vb = bearing_velocity_bands(ctx.bearing, ctx.condition, source="rigid")
+    else:
+        vb = _noise(ctx).bands
     edges = vb.bands.bands
     rows = [[name, edges[name][0], edges[name][1], vb[name]] for name in ("low", "medium", "high")]
     body = [
