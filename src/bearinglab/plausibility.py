@@ -118,7 +118,7 @@ def load_warnings(bearing, radial_load: float, axial_load: float = 0.0) -> list[
             name,
             value,
             f"a load whose static equivalent P0 is at most "
-            f"{1 / MIN_ELASTIC_SAFETY:g} C0 = {c0 / MIN_ELASTIC_SAFETY:.4g} N [N]",
+            f"{1 / MIN_ELASTIC_SAFETY:g} C0 = {c0 / MIN_ELASTIC_SAFETY:.4g} N",
             f"P0 = {p0:.4g} N is {p0 / c0:.3g} times the static rating C0 = "
             f"{c0:.4g} N (ISO 76): the contacts would flow plastically and no "
             "elastic model applies",

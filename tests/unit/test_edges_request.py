@@ -116,3 +116,53 @@ def test_negations_and_the_old_names_still_work(capsys, args):
     old flags as aliases."""
     assert main([*args, "--json"]) == 0
     capsys.readouterr()
+
+
+@pytest.mark.parametrize("cell", ["", "nan"])
+def test_a_cases_table_with_an_empty_or_nan_load_is_refused(capsys, tmp_path, cell):
+    """An empty cell or a nan became the default 0 N silently, where `--set` refused nan."""
+    cases = tmp_path / "cases.csv"
+    cases.write_text(f"designation,radial_load_n\n6205,1000\n6205,{cell}\n")
+    line = _error_line(
+        capsys, ["study", "static", "--cases", str(cases), "-o", str(tmp_path / "s")]
+    )
+    assert line.startswith("error: --cases radial_load_n (row 2 of cases.csv) = ")
+    assert not (tmp_path / "s").exists()
+
+
+def test_an_empty_cell_of_an_optional_input_leaves_it_not_given(tmp_path):
+    from bearinglab.study.cases import CaseTable
+    from bearinglab.analyses import ANALYSES
+
+    cases = tmp_path / "cases.csv"
+    cases.write_text("designation,clearance_um\n6205,\n6205,20\n")
+    table = CaseTable(cases, ANALYSES["static"].options, "static")
+    assert [r["clearance_um"] for r in table.rows(0, 2)] == [None, 20.0]
+
+
+def test_a_data_set_load_past_the_elastic_limit_is_refused_before_any_record(capsys, tmp_path):
+    """1e7 N on a 6205 made a data set without a word."""
+    line = _error_line(
+        capsys, ["dataset", str(tmp_path / "d"), "--records", "2", "--radial-load-n", "1e7"]
+    )
+    assert line.startswith("error: --radial-load-n = '1e7' is not allowed") and "C0" in line
+    assert not (tmp_path / "d").exists()
+
+
+def test_the_first_compile_in_a_process_is_told(caplog, monkeypatch):
+    """The first run after install sat silent for 23 s while numba compiled."""
+    import numba
+
+    from bearinglab.engine import compiling
+
+    compiling.watch()
+    monkeypatch.setitem(compiling._state, "told", False)
+
+    @numba.njit(cache=False)
+    def twice(x):
+        return 2 * x
+
+    with caplog.at_level("WARNING", logger="bearinglab.engine.compiling"):
+        assert twice(2) == 4 and twice(3) == 6
+    told = [r for r in caplog.records if r.name == "bearinglab.engine.compiling"]
+    assert len(told) == 1 and "first run after install" in told[0].getMessage()

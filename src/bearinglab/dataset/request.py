@@ -248,7 +248,7 @@ def dataset_from(values: dict, *, progress=None, given=None) -> DatasetOutcome:
             )
         raise
     given = {k for k, v in values.items() if v is not None} if given is None else set(given)
-    warnings = failures(result) + moot(result.spec, given, values)
+    warnings = list(result.spec.warnings) + failures(result) + moot(result.spec, given, values)
     return DatasetOutcome(result, tuple(warnings))
 
 

@@ -137,6 +137,21 @@ def _check_bearing(given, options: dict) -> None:
         raise InputError("bearings", given, allowed, hint) from None
 
 
+def _load_warnings(given, bearing, parsed: dict) -> list[str]:
+    """The highest radial load drawn against the bearing's static rating
+    (:func:`bearinglab.plausibility.load_warnings`): past 8 C0 refused before any record,
+    past C0 a warning for the set."""
+    from ..plausibility import load_warnings
+
+    load = _highest(parsed["radial_load_n"])
+    try:
+        return [f"{given}: {w}" for w in load_warnings(bearing, load)]
+    except InputError as exc:
+        raise InputError(
+            "radial_load_n", parsed["radial_load_n"][1], exc.allowed, f"{given}: {exc.hint}"
+        ) from None
+
+
 def _check_rollers(given, bearing, parsed: dict) -> None:
     """Refuse, before any record, what the models take for ball bearings only when a
     roller bearing is drawn: waviness, ball-size errors and the slip model."""
@@ -241,8 +256,11 @@ class DatasetSpec:
                 )
             )
         p["resonances"] = path
+        warnings = []
         for b, bearing in zip(bearings, made, strict=True):
             _check_rollers(b, bearing, p)
+            warnings += _load_warnings(b, bearing, p)
+        object.__setattr__(self, "warnings", tuple(warnings))
         default_path = self.resonances == type(self).__dataclass_fields__["resonances"].default
         _check_path(path, p["sample_rate_hz"], blame_rate=default_path)
         object.__setattr__(self, "parsed", p)

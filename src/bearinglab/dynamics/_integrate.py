@@ -23,7 +23,10 @@ from __future__ import annotations
 import numba
 import numpy as np
 
+from ..engine.compiling import watch
 from . import _kernels
+
+watch()  # the first compile after install is told, not silent
 
 OK, TOO_MANY_STEPS, STEP_TOO_SMALL, NOT_FINITE = 0, 1, 2, 3
 STATUS_TEXT = {

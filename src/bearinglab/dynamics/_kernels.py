@@ -16,6 +16,10 @@ import math
 import numba
 import numpy as np
 
+from ..engine.compiling import watch
+
+watch()  # the first compile after install is told, not silent
+
 # ---- packed parameters of the rigid model
 (
     M_S,

@@ -23,7 +23,10 @@ import math
 import numba
 import numpy as np
 
+from ..engine.compiling import watch
 from . import _integrate, _slip_kernels
+
+watch()  # the first compile after install is told, not silent
 
 NG = _slip_kernels.NG  # global states
 NB = _slip_kernels.NB  # states per ball

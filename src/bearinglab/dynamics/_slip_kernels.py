@@ -23,7 +23,10 @@ import math
 import numba
 import numpy as np
 
+from ..engine.compiling import watch
 from ._kernels import surface_deviation_numba
+
+watch()  # the first compile after install is told, not silent
 
 NG = 10  # global states
 NB = 6  # states per ball

@@ -31,6 +31,10 @@ from collections import namedtuple
 import numba
 import numpy as np
 
+from ..engine.compiling import watch
+
+watch()  # the first compile after install is told, not silent
+
 #: One ball's constants: its groove centres c_rho, c_z (C,) [m], free distances R - D_w/2
 #: (C,) [m], groove radii R (C,) [m], arch sides (C,) and z0 (C,) [m], K polynomials (C, P),
 #: film (C,) [m], ring of each contact (C,) (0 inner, 1 outer), its raceway control and

@@ -21,7 +21,10 @@ from __future__ import annotations
 import numba
 import numpy as np
 
+from ..engine.compiling import watch
 from . import _ball
+
+watch()  # the first compile after install is told, not silent
 
 
 @numba.njit(cache=True)

@@ -15,7 +15,10 @@ import math
 import numba
 import numpy as np
 
+from ..engine.compiling import watch
 from . import _ball_set
+
+watch()  # the first compile after install is told, not silent
 
 
 @numba.njit(cache=True)

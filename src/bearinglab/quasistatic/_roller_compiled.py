@@ -10,7 +10,10 @@ import math
 import numba
 import numpy as np
 
+from ..engine.compiling import watch
 from ._roller_kernels import REG_ABSOLUTE, REG_RELATIVE, ROLLER_ITERATIONS
+
+watch()  # the first compile after install is told, not silent
 
 
 @numba.njit(cache=True)

@@ -280,7 +280,10 @@ class Grid:
 class CaseTable:
     """Cases read from a CSV or Parquet file: one row per case, columns = option names.
 
-    Empty cells take the option's default. The file's SHA-256 is part of the study's
+    An empty cell leaves an optional input (one without a default: a clearance, a
+    designation in a table that gives some bearings by their geometry) not given; an input
+    with a default (a load, 0 N) needs a value in every row, or its column left out. A
+    ``nan`` is refused as in ``--set``. The file's SHA-256 is part of the study's
     identity, so a changed file is a different study.
     """
 
@@ -293,11 +296,13 @@ class CaseTable:
         suffix = path.suffix.lower()
         try:
             if suffix == ".csv":  # designations such as 6205 stay text
-                frame = pd.read_csv(
+                frame = pd.read_csv(  # only an empty cell is missing: a typed nan is refused
                     path,
                     dtype={
                         k: str for k, o in options.items() if o.kind in ("text", "texts", "path")
                     },
+                    keep_default_na=False,
+                    na_values=[""],
                 )
             elif suffix in (".parquet", ".pq"):
                 frame = pd.read_parquet(path)
@@ -325,7 +330,13 @@ class CaseTable:
             clean = {}
             for k, v in row.items():
                 if v is None or (isinstance(v, float) and math.isnan(v)):
-                    clean[k] = options[k].default
+                    if options[k].default is not None and options[k].default is not ...:
+                        raise InputError(
+                            f"{k} (row {i + 1} of {path.name})",
+                            "an empty cell",
+                            f"a value: leave the column out for the default {options[k].default}",
+                        )
+                    clean[k] = None if options[k].default is ... else options[k].default
                 else:
                     try:
                         clean[k] = _scalar(k, v.item() if hasattr(v, "item") else v, options[k])

@@ -251,7 +251,8 @@ def study_from(values: dict, *, progress=None, given=None, plot=None) -> StudyOu
                 "confirm with `yes` to run them all",
             ) from None
         if input_for(exc.parameter, STUDY_INPUTS) is None:  # an input of the analysis
-            raise InputError(f"set {exc.parameter}", exc.value, exc.allowed, exc.hint) from None
+            where = "cases" if values.get("cases") is not None else "set"
+            raise InputError(f"{where} {exc.parameter}", exc.value, exc.allowed, exc.hint) from None
         raise
     except Interrupted as exc:
         if exc.total is not None:
