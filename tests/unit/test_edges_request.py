@@ -131,8 +131,8 @@ def test_a_cases_table_with_an_empty_or_nan_load_is_refused(capsys, tmp_path, ce
 
 
 def test_an_empty_cell_of_an_optional_input_leaves_it_not_given(tmp_path):
-    from bearinglab.study.cases import CaseTable
     from bearinglab.analyses import ANALYSES
+    from bearinglab.study.cases import CaseTable
 
     cases = tmp_path / "cases.csv"
     cases.write_text("designation,clearance_um\n6205,\n6205,20\n")
