@@ -25,68 +25,58 @@ from ..errors import BearinglabError
 COMMANDS: dict[str, tuple[str, str]] = {
     "info": (
         "foundation",
-        (
-            "Decode a designation; show dimensions, internal geometry (with "
-            "sources) and frequency factors."
-        ),
+        "Decode a designation; show dimensions, internal geometry (with sources) and "
+        "frequency factors.",
     ),
     "frequencies": (
         "foundation",
-        ("Kinematic defect frequencies (pure rolling) in Hz and as orders."),
+        "Kinematic defect frequencies (pure rolling) in Hz and as orders.",
     ),
-    "contact": ("foundation", "Hertz contact of one ball with the inner and outer raceway."),
+    "contact": (
+        "foundation",
+        "Hertz contact of one ball or roller with the inner and outer raceway.",
+    ),
     "static": (
         "quasistatic",
-        (
-            "Quasi-static load distribution: per-ball loads and contact "
-            "angles, ring displacements and the 5x5 stiffness matrix."
-        ),
+        "Quasi-static load distribution: per-ball (per-roller) loads and contact angles, "
+        "ring displacements and the 5x5 stiffness matrix.",
     ),
     "stiffness-map": (
         "quasistatic",
-        ("Radial and axial stiffness (and displacements) over a grid of loads and speeds."),
+        "Radial and axial stiffness (and displacements) over a grid of loads and speeds.",
     ),
     "ring-modes": (
         "rings",
-        ("Natural frequencies of the outer ring in the loaded bearing (seed 000)."),
+        "Natural frequencies of the outer ring in the loaded bearing (seed 000).",
     ),
     "simulate": (
         "simulate",
-        (
-            "Simulate the vibration of a bearing with defects and form errors "
-            "(seed 003 rigid model or seed 004 slip model)."
-        ),
+        "Simulate the vibration of a bearing with defects and form errors (seed 003 rigid"
+        " model or seed 004 slip model).",
     ),
     "analyze": ("analyze", "Diagnose a vibration record by envelope analysis."),
     "benchmark": ("benchmark", "Run the diagnosis over a folder of labelled recordings."),
-    "trend": (
-        "trend",
-        "Trend health indicators over a series of recordings and raise an alarm.",
-    ),
+    "trend": ("trend", "Trend health indicators over a series of recordings and raise an alarm."),
     "noise": (
         "noise",
-        (
-            "Noise of a running ball bearing with waviness, ball-size errors and "
-            "random surfaces (seed 003 part 4, seed 002)."
-        ),
+        "Noise of a running ball bearing with waviness, ball-size errors and random "
+        "surfaces (seed 003 part 4, seed 002).",
     ),
     "friction": (
         "friction",
-        ("Friction torque and power loss: seed 003's constant coefficient or the SKF model."),
+        "Friction torque and power loss: seed 003's constant coefficient or the SKF model.",
     ),
-    "life": ("life", ("Load ratings C, C0, Cu, equivalent loads, basic and modified rating life.")),
+    "life": ("life", "Load ratings C, C0, Cu, equivalent loads, basic and modified rating life."),
     "validate": ("validate", "Run every published case bearinglab reproduces."),
     "report": (
         "report",
-        (
-            "Write an engineer's report of a bearing at an operating point to one "
-            "self-contained HTML page."
-        ),
+        "Write an engineer's report of a bearing at an operating point to one self-"
+        "contained HTML page.",
     ),
     "study": ("study", "Run one analysis over a grid of inputs or a table of cases, on dask."),
     "dataset": (
         "dataset",
-        ("Make labelled synthetic vibration records in the bearing-datasets layout, on dask."),
+        "Make labelled synthetic vibration records in the bearing-datasets layout, on dask.",
     ),
 }
 

@@ -4,7 +4,6 @@ The geometry options and the bearing they describe are in :mod:`._geometry`."""
 
 import functools
 import inspect
-import math
 import os
 from contextlib import contextmanager
 from pathlib import Path
@@ -169,28 +168,6 @@ def worded(exc: InputError, shown: dict) -> InputError:
     error = OptionError(option, exc.value, markup(exc.allowed, names), markup(exc.hint, names))
     error.input, error.unit = exc.parameter, exc.unit
     return error
-
-
-def speed_rad_s(speed_rpm: float, *, zero: bool = False) -> float:
-    """Speed [rad/s] from --speed-rpm, in the table's range (> 0 unless ``zero``)."""
-    from ..inputs import INPUTS
-
-    INPUTS["speed_rpm"].check("--speed-rpm", speed_rpm)
-    if not zero and speed_rpm <= 0:
-        raise OptionError("--speed-rpm", speed_rpm, "a speed > 0 rpm")
-    return speed_rpm * math.pi / 30
-
-
-def load_n(flag: str, value: float | None, signed: bool = False) -> float | None:
-    """A load option [N] in the table's range of an axial (``signed``) or radial load."""
-    from ..inputs import INPUTS
-
-    spec = INPUTS["axial_load_n" if signed else "radial_load_n"]
-    try:
-        spec.check(flag, value)
-    except InputError as exc:
-        raise OptionError(flag, value, exc.allowed) from None
-    return value
 
 
 #: The inputs the user typed on the command line running (not left at their defaults).

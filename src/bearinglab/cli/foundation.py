@@ -6,7 +6,9 @@ from rich.markup import escape
 
 from ..analyses.foundation import CONTACT, INFO
 from ..analyses.mechanics import FREQUENCIES
-from ..inputs import geometry_line
+from ..contact.ball_race import SUMMARY as BALL_SUMMARY
+from ..contact.roller_race import SUMMARY as ROLLER_SUMMARY
+from ..inputs import geometry_line, geometry_rows
 from ..kinematics import FREQUENCY_NAMES, LONG_NAMES, defect_frequencies
 from ._app import command_app, console
 from ._inputs import JsonOpt, _print_warnings, in_flags, takes
@@ -72,59 +74,12 @@ def _print_designation(d) -> None:
         console.print(f"[yellow]note:[/yellow] {escape(in_flags(note))}")
 
 
-def _rows(b, cell) -> list[list]:
-    """The geometry table's rows (quantity, value, unit, source: ``cell(b, field)``) of a
-    ball or roller bearing."""
-    boundary = [
-        ["bore d", b.bore and b.bore * 1e3, "mm", cell(b, "bore")],
-        [
-            "outside diameter D",
-            b.outside_diameter and b.outside_diameter * 1e3,
-            "mm",
-            cell(b, "outside_diameter"),
-        ],
-        ["width B", b.width and b.width * 1e3, "mm", cell(b, "width")],
-    ]
-    if b.rolling_element == "roller":
-        return boundary + [
-            ["rollers Z (per row)", b.roller_count, "", cell(b, "roller_count")],
-            ["rows", b.rows, "", cell(b, "rows")],
-            ["roller diameter D_we", b.roller_diameter * 1e3, "mm", cell(b, "roller_diameter")],
-            ["roller length L_we", b.roller_length * 1e3, "mm", cell(b, "roller_length")],
-            ["pitch diameter d_m", b.pitch_diameter * 1e3, "mm", cell(b, "pitch_diameter")],
-            ["roller profile", b.profile.kind, "", cell(b, "profile")],
-            [
-                "contact angle (nominal)",
-                math.degrees(b.contact_angle),
-                "deg",
-                cell(b, "contact_angle"),
-            ],
-            [
-                "diametral clearance P_d",
-                b.diametral_clearance * 1e6,
-                "um",
-                cell(b, "diametral_clearance"),
-            ],
-        ]
-    return boundary + [
-        ["balls Z", b.ball_count, "", cell(b, "ball_count")],
-        ["ball diameter D_w", b.ball_diameter * 1e3, "mm", cell(b, "ball_diameter")],
-        ["pitch diameter d_m", b.pitch_diameter * 1e3, "mm", cell(b, "pitch_diameter")],
-        ["inner groove factor f_i", b.inner_groove_factor, "", cell(b, "inner_groove_factor")],
-        ["outer groove factor f_o", b.outer_groove_factor, "", cell(b, "outer_groove_factor")],
-        ["contact angle (nominal)", math.degrees(b.contact_angle), "deg", cell(b, "contact_angle")],
-        [
-            "diametral clearance P_d",
-            b.diametral_clearance * 1e6,
-            "um",
-            cell(b, "diametral_clearance"),
-        ],
-    ]
-
-
 def _print_bearing(b) -> None:
     refs = _References()
-    rows = _rows(b, refs.cell)
+    rows = [
+        [f"{label} {symbol}", value, "" if unit == "-" else unit, refs.cell(b, name)]
+        for name, label, symbol, value, unit in geometry_rows(b)
+    ]
     console.print(
         _table(
             f"Geometry (source: {b.geometry_source})", ["quantity", "value", "unit", "source"], rows
@@ -137,7 +92,7 @@ def _print_bearing(b) -> None:
             ["inner raceway d_i", d["inner_raceway_diameter_mm"], "mm"],
             ["outer raceway d_o", d["outer_raceway_diameter_mm"], "mm"],
             ["cone angle", d["cone_angle_deg"], "deg"],
-            ["axial clearance", d["axial_clearance_um"], "um"],
+            ["roller profile", d["roller_profile"]["kind"], ""],
             ["roller mass", d["roller_mass_g"], "g"],
         ]
     else:
@@ -212,7 +167,7 @@ def frequencies(values, json_output: JsonOpt = False, plot=None):
 @app.command()
 @takes(argument="designation", files=CONTACT.files, **CONTACT.command_options)
 def contact(values, json_output: JsonOpt = False, plot=None):
-    """Hertz contact of one ball with the inner and outer raceway."""
+    """Hertz contact of one ball or roller with the inner and outer raceway."""
     r = CONTACT(values)
     result, bearing, d = r.result, r.bearing, r.to_dict()
     ball_load_n, method = values["ball_load_n"], values["hertz_method"]
@@ -221,23 +176,12 @@ def contact(values, json_output: JsonOpt = False, plot=None):
     if bearing.rolling_element == "roller":
         _print_roller_contact(d, bearing)
         return
-    rows = []
-    for key, label, unit in (
-        ("semi_major_mm", "semi-major axis a", "mm"),
-        ("semi_minor_mm", "semi-minor axis b", "mm"),
-        ("ellipticity", "ellipticity k = a/b", ""),
-        ("max_pressure_gpa", "max pressure p_max", "GPa"),
-        ("mean_pressure_gpa", "mean pressure", "GPa"),
-        ("approach_um", "approach delta", "um"),
-        ("stiffness_n_per_um", "stiffness dQ/d(delta)", "N/um"),
-    ):
-        rows.append([label, d["inner"][key], d["outer"][key], unit])
     console.print(
         _table(
             f"{bearing.name or 'bearing'}: Hertz contact, Q = {ball_load_n:g} N, "
             f"contact angle {d['contact_angle_deg']:g} deg ({method})",
             ["quantity", "inner", "outer", "unit"],
-            rows,
+            _both(d, BALL_SUMMARY),
         )
     )
     console.print(escape(geometry_line(bearing, result.contact_angle)))
@@ -250,24 +194,13 @@ def contact(values, json_output: JsonOpt = False, plot=None):
 
 def _print_roller_contact(d: dict, bearing) -> None:
     """A roller's line contact: pressures, half-width, approach, inner and outer."""
-    rows = [
-        [label, d["inner"][key], d["outer"][key], unit]
-        for key, label, unit in (
-            ("max_pressure_gpa", "max pressure (slices and edges)", "GPa"),
-            ("middle_pressure_gpa", "pressure at the middle", "GPa"),
-            ("hertz_pressure_gpa", "Hertz line-contact p0", "GPa"),
-            ("hertz_half_width_mm", "Hertz half-width b", "mm"),
-            ("edge_pressure_ratio", "edge / middle pressure", ""),
-            ("approach_um", "approach delta", "um"),
-        )
-    ]
     console.print(
         _table(
             f"{bearing.name or 'bearing'}: line contact of one roller, Q = "
             f"{d['roller_load_n']:g} N, tilt {d['tilt_mrad']:g} mrad "
             f"({len(d['slice_loads_n'])} slices)",
             ["quantity", "inner", "outer", "unit"],
-            rows,
+            _both(d, ROLLER_SUMMARY),
         )
     )
     console.print(escape(geometry_line(bearing)))
@@ -276,3 +209,8 @@ def _print_roller_contact(d: dict, bearing) -> None:
         f"(Palmgren's 3.84e-5 Q^0.9 / l^0.8: {d['palmgren_approach_um']:.4g} um)"
     )
     _print_warnings(d["warnings"])
+
+
+def _both(d: dict, summary) -> list[list]:
+    """The rows of a contacts table: each quantity of ``summary`` at both races."""
+    return [[label, d["inner"][k], d["outer"][k], "" if u == "-" else u] for k, label, u in summary]

@@ -28,7 +28,7 @@ app = command_app()
 @app.command()
 @takes(argument="designation", files=STATIC.files, **STATIC.command_options)
 def static(values, json_output: JsonOpt = False, plot=None, orbit_plot=None, stiffness_csv=None):
-    """Quasi-static load distribution: per-ball loads and contact angles, ring
+    """Quasi-static load distribution: per-ball (per-roller) loads and contact angles, ring
     displacements and the 5x5 stiffness matrix; with form errors (waviness, ball-size
     errors, 3-D surfaces) at the instant the shaft angle is 0, and with --orbit the
     inner-ring centre orbit."""
@@ -41,16 +41,17 @@ def static(values, json_output: JsonOpt = False, plot=None, orbit_plot=None, sti
     if plot is not None:
         save_plot_figure(r.plot()[0], plot)
     if orbit_plot is not None:
-        _plot_orbit(o, orbit_plot)
+        save_plot_figure(o.plot_both()[0], orbit_plot, "--orbit-plot")
     if stiffness_csv is not None:
         _write_csv(result.stiffness_frame(), stiffness_csv, index=True, flag="--stiffness-csv")
     if json_output:
         _emit_json(d)
         return
     roller = r.bearing.rolling_element == "roller"
+    elements = d["rollers" if roller else "balls"]
     # column -> header with its unit (Greek symbols keep the table within 80 columns)
-    cols = {
-        "ball": "ball",
+    headers = {
+        "roller" if roller else "ball": "roller" if roller else "ball",
         "angle_deg": label("ψ", "deg"),
         "inner_load_n": label("Q_i", "n"),
         "outer_load_n": label("Q_o", "n"),
@@ -59,18 +60,9 @@ def static(values, json_output: JsonOpt = False, plot=None, orbit_plot=None, sti
         "inner_max_pressure_gpa": label("p_i", "gpa"),
         "outer_max_pressure_gpa": label("p_o", "gpa"),
         "contact_points": "points",
+        "end_load_ratio": "end load",
     }
-    if roller:
-        cols = {
-            "roller": "roller",
-            "angle_deg": label("ψ", "deg"),
-            "inner_load_n": label("Q_i", "n"),
-            "outer_load_n": label("Q_o", "n"),
-            "inner_max_pressure_gpa": label("p_i", "gpa"),
-            "outer_max_pressure_gpa": label("p_o", "gpa"),
-            "end_load_ratio": "end load",
-        }
-    elements = d["rollers" if roller else "balls"]
+    cols = {c: h for c, h in headers.items() if c in elements[0]}
     console.print(
         _table(
             f"{r.bearing.name or 'bearing'}: F_r = {d['radial_load_n']:g} N, "
@@ -113,7 +105,7 @@ def static(values, json_output: JsonOpt = False, plot=None, orbit_plot=None, sti
             + (
                 [
                     ["orbit peak to peak", d["orbit_peak_to_peak_um"], "µm"],
-                    ["orbit", _orbit_text(o), ""],
+                    ["orbit", o.describe(), ""],
                 ]
                 if o is not None
                 else []
@@ -137,30 +129,6 @@ def static(values, json_output: JsonOpt = False, plot=None, orbit_plot=None, sti
 def _clean(value: float, floor: float = 1e-9) -> float:
     """Solver round-off (|value| < floor in the shown unit) as 0, not 3.5e-14."""
     return 0.0 if abs(value) < floor else value
-
-
-def _orbit_text(o) -> str:
-    if o.time is None:
-        return (
-            f"{o.x.size} positions over "
-            f"{np.degrees(o.ball_phase[-1] - o.ball_phase[0]):.4g} deg of the ball set"
-        )
-    return f"{o.time.size} instants over {o.time.size * (o.time[1] - o.time[0]):.4g} s"
-
-
-def _plot_orbit(o, path: Path) -> None:
-    """Orbit (left), inner-ring displacements and ball-centre radii against time or the
-    ball-set angle (right)."""
-    from ..plotting import _pyplot
-
-    plt = _pyplot()
-    fig = plt.figure(figsize=(12, 5.5))
-    grid = fig.add_gridspec(2, 2, width_ratios=(1, 1.4))
-    o.plot(ax=fig.add_subplot(grid[:, 0]))
-    right = fig.add_subplot(grid[0, 1])
-    o.plot_history(axes=[right, fig.add_subplot(grid[1, 1], sharex=right)])
-    fig.tight_layout()
-    save_plot_figure(fig, path, "--orbit-plot")
 
 
 @app.command("stiffness-map")

@@ -4,6 +4,9 @@ and the ISO 20816 severity (:func:`bearinglab.trend.trend_records`;
 docs/capabilities/trend.md)."""
 
 from ..trend.request import TREND
+from ..trend.result import duration_text as _seconds
+from ..trend.result import life_text as _life
+from ..trend.result import measured_text as _measured
 from ._app import command_app, console
 from ._inputs import JsonOpt, _print_warnings, plot_option, save_plot_figure, takes
 from ._output import _emit_json, _table, escape, progress_bar
@@ -38,32 +41,6 @@ def trend_command(values, json_output: JsonOpt = False, html=None, plot=None):
     for what, path in (("plot", plot), ("page", html)):
         if path is not None:
             console.print(f"{what} written to {escape(str(path))}")
-
-
-def _seconds(value: float | None) -> str:
-    if value is None:
-        return "-"
-    return f"{value:.6g} s" + (f" ({value / 3600:.3g} h)" if value >= 3600 else "")
-
-
-def _measured(m: dict) -> str:
-    """The measured false-alarm rate in words."""
-    if m["per_hour"] is None:
-        return m["measured_on"]
-    upper = "" if m["upper_per_hour"] is None else f" (< {m['upper_per_hour']:.3g} at 95 %)"
-    return (
-        f"{m['firings']} in {m['monitored_hours']:.3g} h: {m['per_hour']:.3g} per hour{upper}, "
-        f"{m['per_record']:.3g} per record, on {m['measured_on']}"
-    )
-
-
-def _life(life: dict) -> str:
-    """The remaining-life estimate in words."""
-    return (
-        f"{_seconds(life['estimate_s'])} (80 %: {_seconds(life['low_s'])} to "
-        f"{_seconds(life['high_s'])}) at {_seconds(life['at_time_s'])}, from "
-        f"{life['basis']} ({life['method']})"
-    )
 
 
 def _print(out: dict) -> None:

@@ -202,6 +202,18 @@ def load_deflection_constants(
     return k_i, k_o, float(hertz.series_constant(k_i, k_o))
 
 
+#: The quantities a table of both contacts shows: key of to_dict()["inner"], label, unit.
+SUMMARY = (
+    ("semi_major_mm", "semi-major axis a", "mm"),
+    ("semi_minor_mm", "semi-minor axis b", "mm"),
+    ("ellipticity", "ellipticity k = a/b", "-"),
+    ("max_pressure_gpa", "maximum pressure p_max", "GPa"),
+    ("mean_pressure_gpa", "mean pressure", "GPa"),
+    ("approach_um", "approach delta", "um"),
+    ("stiffness_n_per_um", "contact stiffness dQ/d(delta)", "N/um"),
+)
+
+
 def ball_contacts(
     bearing: BallBearing,
     ball_load,

@@ -195,6 +195,17 @@ class RollerContacts:
         )
 
 
+#: The quantities a table of both contacts shows: key of to_dict()["inner"], label, unit.
+SUMMARY = (
+    ("max_pressure_gpa", "largest pressure (half-space, edges included)", "GPa"),
+    ("middle_pressure_gpa", "pressure at the middle", "GPa"),
+    ("edge_pressure_ratio", "edge / middle pressure", "-"),
+    ("hertz_pressure_gpa", "Hertz line-contact p0", "GPa"),
+    ("hertz_half_width_mm", "Hertz half-width b", "mm"),
+    ("approach_um", "approach delta", "um"),
+)
+
+
 def roller_contacts(
     bearing: RollerBearing,
     roller_load: float,

@@ -23,6 +23,7 @@ from .bearing import (
     bearing_from,
     bearing_warnings,
     geometry_line,
+    geometry_rows,
     given_fields,
     read_geometry_file,
 )
@@ -55,6 +56,7 @@ __all__ = [
     "closed",
     "condition_from",
     "geometry_line",
+    "geometry_rows",
     "given_fields",
     "input_for",
     "lubricant_from",

@@ -438,6 +438,57 @@ def geometry_line(bearing, contact_angle: float | None = None) -> str:
     )
 
 
+#: The geometry a table shows: field, label, symbol, SI -> shown factor, unit.
+_SHOWN_BOUNDARY = (
+    ("bore", "bore", "d", 1e3, "mm"),
+    ("outside_diameter", "outside diameter", "D", 1e3, "mm"),
+    ("width", "width", "B", 1e3, "mm"),
+)
+_SHOWN = {
+    "ball": (
+        ("ball_count", "number of balls", "Z", 1, "-"),
+        ("ball_diameter", "ball diameter", "D_w", 1e3, "mm"),
+        ("pitch_diameter", "pitch diameter", "d_m", 1e3, "mm"),
+        ("contact_angle", "nominal contact angle", "alpha", 180 / math.pi, "deg"),
+        ("inner_groove_factor", "inner groove factor", "f_i", 1, "-"),
+        ("outer_groove_factor", "outer groove factor", "f_o", 1, "-"),
+        ("diametral_clearance", "diametral clearance", "P_d", 1e6, "um"),
+    ),
+    "roller": (
+        ("roller_count", "number of rollers (per row)", "Z", 1, "-"),
+        ("rows", "rows", "i", 1, "-"),
+        ("roller_diameter", "roller diameter", "D_we", 1e3, "mm"),
+        ("roller_length", "roller effective length", "L_we", 1e3, "mm"),
+        ("pitch_diameter", "pitch diameter", "d_m", 1e3, "mm"),
+        ("contact_angle", "contact angle (outer raceway)", "alpha", 180 / math.pi, "deg"),
+        ("diametral_clearance", "diametral clearance", "P_d", 1e6, "um"),
+        ("axial_clearance", "axial clearance", "P_a", 1e6, "um"),
+    ),
+}
+
+
+def geometry_rows(bearing) -> list[tuple]:
+    """The geometry of a ball or roller ``bearing`` as a table shows it: (field, label,
+    symbol, value in the unit, unit) per value, None where it is not known; the command
+    line's ``info`` and the report's identity section draw the same rows.
+
+    Parameters
+    ----------
+    bearing : BallBearing or RollerBearing
+        The bearing.
+
+    >>> from bearinglab.catalog import bearing_from_designation
+    >>> geometry_rows(bearing_from_designation("6205")[0])[3][1:]
+    ('number of balls', 'Z', 9, '-')
+    """
+    rows = []
+    for name, label, symbol, factor, unit in _SHOWN_BOUNDARY + _SHOWN[bearing.rolling_element]:
+        value = getattr(bearing, name)
+        shown = value if value is None or isinstance(value, int) else float(value) * factor
+        rows.append((name, label, symbol, shown, unit))
+    return rows
+
+
 def given_fields(values: dict) -> dict[str, str]:
     """The geometry inputs given in ``values`` (a geometry file counts as the whole
     bearing, ``system`` reads the designation): input -> the BallBearing field it sets."""

@@ -182,6 +182,30 @@ class Orbit:
         ax.set_title(f"inner-ring centre orbit, peak to peak {self.peak_to_peak * 1e6:.3g} um")
         return fig, ax
 
+    def plot_both(self):
+        """The orbit (left) beside the inner ring's displacements and the balls' radial
+        displacements against time or the ball-set angle (right); returns (fig, axes)."""
+        from ..plotting import _pyplot
+
+        fig = _pyplot().figure(figsize=(12, 5.5))
+        grid = fig.add_gridspec(2, 2, width_ratios=(1, 1.4))
+        left = fig.add_subplot(grid[:, 0])
+        right = fig.add_subplot(grid[0, 1])
+        below = fig.add_subplot(grid[1, 1], sharex=right)
+        self.plot(ax=left)
+        self.plot_history(axes=[right, below])
+        fig.tight_layout()
+        return fig, [left, right, below]
+
+    def describe(self) -> str:
+        """How many points the orbit has, over what time or ball-set angle."""
+        if self.time is None:
+            turn = np.degrees(self.ball_phase[-1] - self.ball_phase[0])
+            return f"{self.x.size} positions over {turn:.4g} deg of the ball set"
+        return (
+            f"{self.time.size} instants over {self.time.size * (self.time[1] - self.time[0]):.4g} s"
+        )
+
     def plot_history(self, axes=None):
         """Inner-ring x, y, z and the balls' radial displacements against time (or the
         ball-set angle), seed 003 figs. 9c-d and 10; returns (fig, axes)."""

@@ -8,8 +8,11 @@ import math
 
 import numpy as np
 
+from ..contact.ball_race import SUMMARY as BALL_SUMMARY
 from ..contact.ball_race import ball_contacts
+from ..contact.roller_race import SUMMARY as ROLLER_SUMMARY
 from ..geometry import References
+from ..inputs import geometry_rows
 from ..operating import OperatingCondition
 from ..quasistatic import DOF_NAMES, solve_load_distribution
 from ..rings import ring_modes
@@ -20,32 +23,6 @@ from .document import Raw, esc, figure, notes, number, paragraph, table
 LOAD_FACTORS = (0.25, 0.5, 0.75, 1.0, 1.25, 1.5, 2.0)
 #: Ring modes shown [-].
 RING_MODES = range(2, 7)
-
-_GEOMETRY = (  # field, label, symbol, SI -> shown factor, unit
-    ("bore", "bore", "d", 1e3, "mm"),
-    ("outside_diameter", "outside diameter", "D", 1e3, "mm"),
-    ("width", "width", "B", 1e3, "mm"),
-    ("ball_count", "number of balls", "Z", 1, "-"),
-    ("ball_diameter", "ball diameter", "D_w", 1e3, "mm"),
-    ("pitch_diameter", "pitch diameter", "d_m", 1e3, "mm"),
-    ("contact_angle", "nominal contact angle", "alpha", 180 / math.pi, "deg"),
-    ("inner_groove_factor", "inner groove factor", "f_i", 1, "-"),
-    ("outer_groove_factor", "outer groove factor", "f_o", 1, "-"),
-    ("diametral_clearance", "diametral clearance", "P_d", 1e6, "um"),
-)
-_ROLLER_GEOMETRY = (
-    ("bore", "bore", "d", 1e3, "mm"),
-    ("outside_diameter", "outside diameter", "D", 1e3, "mm"),
-    ("width", "width", "B", 1e3, "mm"),
-    ("roller_count", "number of rollers", "Z", 1, "-"),
-    ("roller_diameter", "roller diameter", "D_we", 1e3, "mm"),
-    ("roller_length", "roller effective length", "L_we", 1e3, "mm"),
-    ("pitch_diameter", "pitch diameter", "d_m", 1e3, "mm"),
-    ("contact_angle", "contact angle (outer raceway)", "alpha", 180 / math.pi, "deg"),
-    ("rows", "rows", "i", 1, "-"),
-    ("diametral_clearance", "diametral clearance", "P_d", 1e6, "um"),
-    ("axial_clearance", "axial clearance", "P_a", 1e6, "um"),
-)
 
 
 class _References(References):
@@ -73,10 +50,8 @@ def identity(ctx: Context):
     refs = _References()
     rows = []
     roller = b.rolling_element == "roller"
-    for name, label, symbol, factor, unit in _ROLLER_GEOMETRY if roller else _GEOMETRY:
-        value = getattr(b, name)
-        shown = None if value is None else (int(value) if unit == "-" else float(value) * factor)
-        rows.append([label, symbol, shown, unit, Raw(esc(refs.cell(b, name)))])
+    for name, label, symbol, value, unit in geometry_rows(b):
+        rows.append([label, symbol, value, unit, Raw(esc(refs.cell(b, name)))])
     derived = [
         ("inner raceway diameter", "d_i", b.inner_raceway_diameter * 1e3, "mm"),
         ("outer raceway diameter", "d_o", b.outer_raceway_diameter * 1e3, "mm"),
@@ -259,16 +234,7 @@ def contact(ctx: Context):
         raise ValueError("no ball carries load at this operating point")
     c = ball_contacts(ctx.bearing, q)
     d = c.to_dict()
-    keys = (
-        ("semi-major axis a", "semi_major_mm", "mm"),
-        ("semi-minor axis b", "semi_minor_mm", "mm"),
-        ("ellipticity k = a/b", "ellipticity", "-"),
-        ("maximum pressure p_max", "max_pressure_gpa", "GPa"),
-        ("mean pressure", "mean_pressure_gpa", "GPa"),
-        ("approach delta", "approach_um", "um"),
-        ("contact stiffness dQ/d(delta)", "stiffness_n_per_um", "N/um"),
-    )
-    rows = [[label, d["inner"][k], d["outer"][k], unit] for label, k, unit in keys]
+    rows = [[label, d["inner"][k], d["outer"][k], unit] for k, label, unit in BALL_SUMMARY]
     body = [
         paragraph(
             f"Hertz point contact of the most loaded ball (Q = {q:.4g} N) with the "
@@ -302,15 +268,7 @@ def _roller_contact(ctx: Context, r):
         raise ValueError("no roller carries load at this operating point")
     c = roller_contacts(ctx.bearing, q)
     d = c.to_dict()
-    keys = (
-        ("largest pressure (half-space)", "max_pressure_gpa", "GPa"),
-        ("pressure at the middle", "middle_pressure_gpa", "GPa"),
-        ("edge / middle pressure", "edge_pressure_ratio", "-"),
-        ("Hertz line-contact pressure", "hertz_pressure_gpa", "GPa"),
-        ("Hertz half-width b", "hertz_half_width_mm", "mm"),
-        ("approach delta", "approach_um", "um"),
-    )
-    rows = [[label, d["inner"][k], d["outer"][k], unit] for label, k, unit in keys]
+    rows = [[label, d["inner"][k], d["outer"][k], unit] for k, label, unit in ROLLER_SUMMARY]
     body = [
         paragraph(
             f"Line contacts of the most loaded roller (Q = {q:.4g} N) with both raceways: "

@@ -8,6 +8,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from ..files import write_atomically
+from ..trend.result import life_text, measured_text
 from .document import figure, key_figures, notes, number, page, paragraph, table
 
 #: What the ISO 20816 zones can and cannot say about a bearing (issue 27).
@@ -61,21 +62,8 @@ def trend_page(result) -> str:
         key_figures(cards),
         paragraph(d["rule"]["description"]),
         paragraph(
-            "False alarms measured: "
-            + (
-                measured["measured_on"]
-                if measured["per_hour"] is None
-                else f"{measured['firings']} in {number(measured['monitored_hours'], 3)} h of "
-                f"monitoring, {number(measured['per_hour'], 3)} per hour"
-                + (
-                    ""
-                    if measured["upper_per_hour"] is None
-                    else f" (at most {number(measured['upper_per_hour'], 3)} per hour at 95 %)"
-                )
-                + f", {number(measured['per_record'], 3)} per record; measured on "
-                f"{measured['measured_on']}."
-            )
-            + f" Documentation: {d['rule']['documentation']}."
+            f"False alarms measured: {measured_text(measured)}. "
+            f"Documentation: {d['rule']['documentation']}."
         ),
         figure(
             result.plot()[0],
@@ -169,12 +157,9 @@ def _zones(severity: dict, top: float) -> str:
 
 def _life(result, life: dict) -> str:
     """The remaining-life estimate, its basis and its figure over time."""
-    text = (
-        f"Remaining useful life at {number(life['at_time_s'], 6)} s: {_hours(life['estimate_s'])}"
-        f" (80 % interval {_hours(life['low_s'])} to {_hours(life['high_s'])}), from "
-        f"{life['basis']}: {life['method']}. Learned from {life['learned_from']}."
+    out = paragraph(
+        f"Remaining useful life: {life_text(life)}. Learned from {life['learned_from']}."
     )
-    out = paragraph(text)
     history = getattr(result.remaining_life, "history", None)
     if history is not None and len(history[0]):
         out += figure(

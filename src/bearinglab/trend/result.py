@@ -36,6 +36,37 @@ DOCUMENTATION = (
 EPOCH_CLOCK = 1e8
 
 
+def duration_text(seconds: float | None) -> str:
+    """A duration for people: seconds, with hours beside from an hour on ("-" for None).
+
+    >>> duration_text(7200.0)
+    '7200 s (2 h)'
+    """
+    if seconds is None:
+        return "-"
+    return f"{seconds:.6g} s" + (f" ({seconds / 3600:.3g} h)" if seconds >= 3600 else "")
+
+
+def measured_text(m: dict) -> str:
+    """The false-alarm rate measured (``to_dict()["measured_false_alarm"]``) in words."""
+    if m["per_hour"] is None:
+        return m["measured_on"]
+    upper = "" if m["upper_per_hour"] is None else f" (< {m['upper_per_hour']:.3g} at 95 %)"
+    return (
+        f"{m['firings']} in {m['monitored_hours']:.3g} h: {m['per_hour']:.3g} per hour{upper}, "
+        f"{m['per_record']:.3g} per record, on {m['measured_on']}"
+    )
+
+
+def life_text(life: dict) -> str:
+    """The remaining-life estimate (``to_dict()["remaining_life"]``) in words."""
+    return (
+        f"{duration_text(life['estimate_s'])} (80 %: {duration_text(life['low_s'])} to "
+        f"{duration_text(life['high_s'])}) at {duration_text(life['at_time_s'])}, from "
+        f"{life['basis']} ({life['method']})"
+    )
+
+
 def _indicator_value(name: str, statistic: float) -> float:
     """An indicator's value from its test statistic (the inverse of STATISTICS)."""
     return math.exp(statistic) - (2.0 if name == "spectral_kurtosis" else 0.0)
