@@ -98,7 +98,21 @@ class InputError(BearinglabError, ValueError):
 
     def worded(self, name: str, names=None) -> str:
         """The message with the parameter called ``name`` and each backquoted name of the
-        texts replaced by ``names(name)`` (default: kept in backquotes)."""
+        texts replaced by ``names(name)`` (default: kept in backquotes).
+
+        Parameters
+        ----------
+        name : str
+            How to call the parameter (e.g. an input's public name or a flag).
+        names : callable or None
+            ``names(name) -> str`` rewrites each backquoted name of the allowed range and hint;
+            None keeps them in backquotes.
+
+        Returns
+        -------
+        str
+            The message in one line.
+        """
         allowed, hint = (markup(t, names) for t in (self.allowed, self.hint))
         text = (
             f"{name} is not given: expected {allowed}"
@@ -117,7 +131,28 @@ class InputError(BearinglabError, ValueError):
     ) -> InputError:
         """This error about ``parameter`` with ``value``, its numbers in ``unit`` (one of
         which is ``scale`` in this error's unit; by default this error's), its backquoted
-        names renamed by ``names(name)``."""
+        names renamed by ``names(name)``.
+
+        Parameters
+        ----------
+        parameter : str
+            The name the new error gives (e.g. the public input name ``pitch_diameter_mm``).
+        value : object
+            The value the new error shows, as given (it is not converted).
+        scale : float
+            The size of one ``unit`` in this error's unit (e.g. 1e-3 for mm when this error's
+            numbers are in m): each of its numbers is divided by it. Default 1.
+        unit : str or None
+            The unit symbol of the new error's numbers; None: this error's unit.
+        names : callable or None
+            ``names(name) -> str`` rewrites each backquoted name of the texts (e.g. as a
+            command-line flag); None keeps them in backquotes.
+
+        Returns
+        -------
+        InputError
+            A new error; this one is left as it is.
+        """
         allowed, hint = (markup(t, names) for t in self.template)
         numbers = {k: v / scale for k, v in self.numbers.items()}
         unit = self.unit if unit is None else unit

@@ -363,14 +363,30 @@ class BallBearing:
         """Groove depth from the groove bottom to a shoulder [m] (an estimate):
         GROOVE_DEPTH_RATIO D_w, except the thrust-side (``side`` = +1) shoulder of an
         angular-contact bearing, ANGULAR_SHOULDER_DEPTH_RATIO D_w. The thrust side is the
-        one a positive contact angle leans to (docs/conventions.md)."""
+        one a positive contact angle leans to (docs/conventions.md).
+
+        Parameters
+        ----------
+        side : int
+            +1: the thrust side (the deeper shoulder of an angular-contact bearing); any other
+            value (-1): the other side.
+        """
         high = self.contact_angle > 0 and side > 0
         return (ANGULAR_SHOULDER_DEPTH_RATIO if high else GROOVE_DEPTH_RATIO) * self.ball_diameter
 
     def shoulder_angle(self, race: Race, side: int = 1) -> float:
         """Contact angle, measured at the groove centre from the groove bottom, at which
         the groove meets its shoulder on ``side`` (+1 thrust side, -1 the other) of the
-        ``race`` ("inner" or "outer"): arccos(1 - depth / (f D_w)) [rad]."""
+        ``race`` ("inner" or "outer"): arccos(1 - depth / (f D_w)) [rad].
+
+        Parameters
+        ----------
+        race : {"inner", "outer"}
+            The ring whose groove it is (its groove factor f).
+        side : int
+            +1: the thrust side (the shoulder a positive contact angle leans to); any other
+            value (-1): the other side.
+        """
         f = self.inner_groove_factor if race == "inner" else self.outer_groove_factor
         return math.acos(
             max(-1.0, min(1.0, 1.0 - self.shoulder_depth(side) / (f * self.ball_diameter)))
@@ -378,14 +394,30 @@ class BallBearing:
 
     def contact_radii(self, race: Race, contact_angle: float | None = None):
         """(R_x, R_y) of the ``race``'s contact ("inner" or "outer") at ``contact_angle``
-        [rad] (default: the free contact angle) [m]; see :func:`contact_radii`."""
+        [rad] (default: the nominal contact angle) [m]; see :func:`contact_radii`.
+
+        Parameters
+        ----------
+        race : {"inner", "outer"}
+            The raceway whose contact it is.
+        contact_angle : float or None
+            Contact angle [rad]; None: the bearing's nominal ``contact_angle``.
+        """
         f = self.inner_groove_factor if race == "inner" else self.outer_groove_factor
         alpha = self.contact_angle if contact_angle is None else contact_angle
         return contact_radii(self.ball_diameter, self.pitch_diameter, f, alpha, race)
 
     def curvature(self, race: Race, contact_angle: float | None = None):
         """Curvature sum [1/m] and difference [-] of the ``race``'s contact ("inner" or
-        "outer") at ``contact_angle`` [rad] (default: the free contact angle)."""
+        "outer") at ``contact_angle`` [rad] (default: the nominal contact angle).
+
+        Parameters
+        ----------
+        race : {"inner", "outer"}
+            The raceway whose contact it is.
+        contact_angle : float or None
+            Contact angle [rad]; None: the bearing's nominal ``contact_angle``.
+        """
         return curvature_sum_difference(*self.contact_radii(race, contact_angle))
 
     # ---- masses and ring sections

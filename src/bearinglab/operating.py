@@ -118,6 +118,16 @@ class OperatingCondition:
         """The condition with the shaft speed given in rpm, ``speed_rpm`` (every other
         field as for the class, SI), so that a speed in rpm cannot pass for rad/s.
 
+        Parameters
+        ----------
+        speed_rpm : float
+            Shaft speed [rpm], finite and >= 0.
+        **loads
+            The other fields of the class (``radial_load`` [N], ``axial_load`` [N], ...), in SI;
+            not ``shaft_speed``.
+
+        Examples
+        --------
         >>> round(OperatingCondition.at_rpm(1797, radial_load=500.0).shaft_speed, 4)
         188.1814
         """

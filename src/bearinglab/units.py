@@ -26,12 +26,34 @@ RPM = math.pi / 30.0
 
 
 def rpm_to_rad_s(speed_rpm: float) -> float:
-    """A speed in rpm as an angular speed [rad/s]."""
+    """A speed in rpm as an angular speed [rad/s].
+
+    Parameters
+    ----------
+    speed_rpm : float
+        Speed [rpm].
+
+    Returns
+    -------
+    float
+        The same speed [rad/s].
+    """
     return speed_rpm * RPM
 
 
 def rad_s_to_rpm(speed: float) -> float:
-    """An angular speed [rad/s] in rpm."""
+    """An angular speed [rad/s] in rpm.
+
+    Parameters
+    ----------
+    speed : float
+        Angular speed [rad/s].
+
+    Returns
+    -------
+    float
+        The same speed [rpm].
+    """
     return speed / RPM
 
 

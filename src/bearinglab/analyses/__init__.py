@@ -35,7 +35,14 @@ ALIASES = {"ring_modes": "ring-modes", "load-distribution": "static"}
 
 
 def analysis(name: str) -> Analysis:
-    """The analysis called ``name`` (InputError naming the choices otherwise)."""
+    """The analysis called ``name`` (InputError naming the choices otherwise).
+
+    Parameters
+    ----------
+    name : str
+        The analysis' name as the command line spells it (e.g. "static", "ring-modes"; the
+        aliases "ring_modes" and "load-distribution" are accepted).
+    """
     name = ALIASES.get(name, name)
     if name not in ANALYSES:
         raise InputError("analysis", name, "one of " + ", ".join(ANALYSES))

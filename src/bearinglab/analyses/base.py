@@ -80,7 +80,22 @@ class Analysis:
 
     def evaluate(self, case: dict, seed: int) -> dict:
         """A study ``case``'s output columns; ``seed`` (the case's) draws its random inputs
-        unless the case gives a ``seed``."""
+        unless the case gives a ``seed``.
+
+        Parameters
+        ----------
+        case : dict
+            One study case: input name -> value in its unit (a ``case`` key, the case's number,
+            is left out).
+        seed : int
+            The case's seed (>= 0), given to the analysis as its ``seed`` when it takes one and
+            the case does not set it.
+
+        Returns
+        -------
+        dict
+            Output column -> value (see :func:`pick`).
+        """
         values = {k: v for k, v in case.items() if k != "case"}
         if "seed" in self.options and values.get("seed") is None:
             values["seed"] = seed
@@ -129,7 +144,21 @@ HTML_FILE = {"html": FILES["html"]}
 
 
 def pick(d: dict, outputs: dict) -> dict:
-    """The ``outputs`` columns of a result's dict ``d`` (lists joined for text columns)."""
+    """The ``outputs`` columns of a result's dict ``d`` (lists joined for text columns).
+
+    Parameters
+    ----------
+    d : dict
+        A result's ``to_dict()`` (or the analysis' own columns).
+    outputs : dict
+        Study column -> kind: "f" float, "i" integer, "s" text. A list value becomes its
+        items joined by "; " in a text column and None in any other.
+
+    Returns
+    -------
+    dict
+        Column -> value, None for a key that ``d`` lacks.
+    """
     out = {}
     for k, kind in outputs.items():
         v = d.get(k)

@@ -233,6 +233,15 @@ def rolling_element_of(text: str, system: str | None = None) -> str:
     "ball" or "roller". A designation that does not read raises the reader's error;
     ``system`` ("iso", "gost" or None to guess) is the designation system to read it in.
 
+    Parameters
+    ----------
+    text : str
+        A catalogue name or a designation (e.g. ``NU205``, ``6205``, ``7205``).
+    system : str or None
+        ``"iso"`` or ``"gost"`` to read a designation in that system; None guesses.
+
+    Examples
+    --------
     >>> rolling_element_of("NU205"), rolling_element_of("6205"), rolling_element_of("7205", "gost")
     ('roller', 'ball', 'roller')
     """

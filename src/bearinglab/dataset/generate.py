@@ -95,7 +95,28 @@ def make_record(
     With ``check``, a record that cannot show what its label says is refused (an
     InputError, which the set records as a failed record): a fault whose defect frequency
     is above the Nyquist frequency, or less than one cage revolution (not every ball has
-    passed the load zone). Its errors name the data set's inputs, in their units."""
+    passed the load zone). Its errors name the data set's inputs, in their units.
+
+    Parameters
+    ----------
+    spec : DatasetSpec
+        The data set's specification (its ranges and choices).
+    seed : int
+        The data set's seed (>= 0).
+    index : int
+        The record's index in the set (>= 0); with ``seed`` alone it fixes the record.
+    check : bool
+        Refuse a record that cannot show what its label says (default True).
+
+    Returns
+    -------
+    samples : numpy.ndarray
+        The sensor signal, float32.
+    record : dict
+        The record's inputs, as drawn (engineering units).
+    model : tuple
+        (bearing, kinematic frequencies) of the record.
+    """
     from ..study.bearings import bearing_of
 
     r = draw_record(spec, seed, index)
@@ -275,7 +296,13 @@ class DatasetResult:
     def plot(self, ax=None):
         """Records per fault type, radial load [N] against speed [rpm] (a scatter of the
         set's coverage), on ``ax`` (a matplotlib Axes; a new figure by default); returns
-        (figure, axes)."""
+        (figure, axes).
+
+        Parameters
+        ----------
+        ax : matplotlib Axes or None
+            Where to draw; None: a new figure.
+        """
         from ..plotting import figure_axes
 
         meta = self.to_pandas()

@@ -61,7 +61,18 @@ class TransferPath:
         object.__setattr__(self, "resonances", tuple(checked))
 
     def check(self, sample_rate: float) -> None:
-        """Refuse a resonance above MAX_FRACTION of ``sample_rate`` [Hz]."""
+        """Refuse a resonance above MAX_FRACTION of ``sample_rate`` [Hz].
+
+        Parameters
+        ----------
+        sample_rate : float
+            Sample rate [Hz].
+
+        Raises
+        ------
+        InputError
+            If a resonance frequency exceeds MAX_FRACTION (0.45) of ``sample_rate``.
+        """
         for f, _ in self.resonances:
             if f > MAX_FRACTION * sample_rate:
                 raise InputError(
@@ -72,7 +83,18 @@ class TransferPath:
                 )
 
     def sos(self, sample_rate: float) -> np.ndarray:
-        """Second-order sections of the digital path at ``sample_rate`` [Hz]."""
+        """Second-order sections of the digital path at ``sample_rate`` [Hz].
+
+        Parameters
+        ----------
+        sample_rate : float
+            Sample rate [Hz]; each resonance must be at most MAX_FRACTION (0.45) of it.
+
+        Returns
+        -------
+        numpy.ndarray
+            Shape (n, 6), as ``scipy.signal.sosfilt`` takes them; (0, 6) without resonances.
+        """
         from scipy.signal import bilinear, tf2sos
 
         self.check(sample_rate)
@@ -87,7 +109,20 @@ class TransferPath:
     def apply(self, x, sample_rate: float) -> np.ndarray:
         """The sensor's signal for the pedestal acceleration ``x`` [same unit], sampled at
         ``sample_rate`` [Hz]; the filter starts in the steady state of the first sample
-        (no start-up transient)."""
+        (no start-up transient).
+
+        Parameters
+        ----------
+        x : array_like
+            Pedestal acceleration samples, 1-D (any unit; the output has the same).
+        sample_rate : float
+            Sample rate [Hz]; each resonance must be at most MAX_FRACTION (0.45) of it.
+
+        Returns
+        -------
+        numpy.ndarray
+            The filtered samples (a copy of ``x`` when the path has no resonance).
+        """
         from scipy.signal import sosfilt, sosfilt_zi
 
         x = np.asarray(x, float)

@@ -326,7 +326,24 @@ def draw_record(spec: DatasetSpec, seed: int, index: int) -> dict:
     """Inputs of record ``index`` of the data set ``spec``, drawn from the data set
     ``seed`` and ``index`` alone (:func:`bearinglab.study.case_rng`): bearing, operating
     point, defects, form errors, noise, path, sampling (engineering units; defects as
-    dicts)."""
+    dicts).
+
+    Parameters
+    ----------
+    spec : DatasetSpec
+        The data set's specification (its ranges and choices).
+    seed : int
+        The data set's seed (>= 0).
+    index : int
+        The record's index in the set (>= 0).
+
+    Returns
+    -------
+    dict
+        The record's inputs: ``bearing``, ``fault``, ``defects``, ``speed_rpm``,
+        ``radial_load_n``, ``model``, ``sample_rate_hz``, ``duration_s``, ``noise_ms2``,
+        form errors, ``resonances`` ((f [Hz], zeta [-]) pairs), ...
+    """
     p = spec.parsed
     rng = case_rng(seed, index)
     bearing = p["bearings"][int(rng.integers(len(p["bearings"])))]

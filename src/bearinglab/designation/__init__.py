@@ -138,6 +138,15 @@ def iso_equivalent(text: str, system: str | None = None) -> str | None:
     """Return the ISO designation of a bearing, or None if there is none; ``text`` and
     ``system`` as in :func:`gost_equivalent`.
 
+    Parameters
+    ----------
+    text : str
+        The designation in either system (read as :func:`parse` does).
+    system : str or None
+        ``"gost"`` or ``"iso"`` to force one reader; None tries both.
+
+    Examples
+    --------
     >>> iso_equivalent("310"), iso_equivalent("80205")
     ('6310', '6205-2Z')
     """

@@ -293,7 +293,14 @@ class BenchmarkResult:
 
     def confusion(self, column: str | None = None) -> dict:
         """Confusion matrix of ``column`` (default: the methods together): expected ->
-        verdict class -> count."""
+        verdict class -> count.
+
+        Parameters
+        ----------
+        column : str or None
+            A method's verdict column, or the methods joined by "+"; None: the methods
+            together.
+        """
         column = column or "+".join(self.methods)
         matrix = {c: dict.fromkeys((*CLASSES, "error"), 0) for c in CLASSES}
         for r in self.records:
@@ -303,7 +310,20 @@ class BenchmarkResult:
 
     def count(self, column: str, kind: str) -> int:
         """Records of ``column`` whose :func:`outcome` is ``kind`` (right, wrong, missed,
-        error)."""
+        error).
+
+        Parameters
+        ----------
+        column : str
+            A method's verdict column, or the methods joined by "+".
+        kind : {"right", "wrong", "missed", "error"}
+            The :func:`outcome` counted.
+
+        Returns
+        -------
+        int
+            The number of records with that outcome.
+        """
         return sum(
             outcome(None if r["error"] else r.get(column), r["expected"]) == kind
             for r in self.records
@@ -311,12 +331,26 @@ class BenchmarkResult:
 
     def recall(self, column: str | None = None) -> dict:
         """Per class: right / records of that class [-], for the verdicts of ``column``
-        (a method, or by default the methods together)."""
+        (a method, or by default the methods together).
+
+        Parameters
+        ----------
+        column : str or None
+            A method's verdict column, or the methods joined by "+"; None: the methods
+            together.
+        """
         return {k: row[k] / sum(row.values()) for k, row in self.confusion(column).items()}
 
     def accuracy(self, column: str | None = None) -> float:
         """Share of records right [-], for the verdicts of ``column`` (a method, or by
-        default the methods together)."""
+        default the methods together).
+
+        Parameters
+        ----------
+        column : str or None
+            A method's verdict column, or the methods joined by "+"; None: the methods
+            together.
+        """
         column = column or "+".join(self.methods)
         return sum(r.get(column) == r["expected"] for r in self.records) / len(self.records)
 
@@ -382,7 +416,16 @@ class BenchmarkResult:
     def plot(self, ax=None, column: str | None = None):
         """Confusion matrix of ``column`` (a method, or by default the methods together)
         as an image with counts, on ``ax`` (a matplotlib Axes; a new figure by default);
-        returns (figure, axes)."""
+        returns (figure, axes).
+
+        Parameters
+        ----------
+        ax : matplotlib Axes or None
+            Where to draw; None: a new figure.
+        column : str or None
+            A method's verdict column, or the methods joined by "+"; None: the methods
+            together.
+        """
         from ..plotting import _pyplot
 
         plt = _pyplot()

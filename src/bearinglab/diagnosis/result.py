@@ -291,6 +291,14 @@ def measured_ball_defect_frequency(matched_peaks) -> float | None:
     The strongest line matched to ``ball_defect`` at harmonic 1; if there is none, half
     the strongest matched at harmonic 2; else None. Sidebands are not used.
 
+    Parameters
+    ----------
+    matched_peaks : iterable of dict
+        Labelled lines (:func:`bearinglab.signal.match_peaks`), each with ``frequency_hz``
+        [Hz], ``amplitude``, ``matched`` and ``harmonic``.
+
+    Examples
+    --------
     >>> measured_ball_defect_frequency([
     ...     {"frequency_hz": 270.0, "amplitude": 1.0, "matched": "ball_defect", "harmonic": 2}])
     135.0

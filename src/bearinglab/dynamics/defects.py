@@ -123,7 +123,14 @@ class Defect:
 
     def check(self, bearing) -> None:
         """Refuse a defect that does not fit ``bearing`` (width below D_w, ball index < Z);
-        for a roller bearing, the rolling element ("ball") is a roller."""
+        for a roller bearing, the rolling element ("ball") is a roller.
+
+        Parameters
+        ----------
+        bearing : BallBearing or RollerBearing
+            The bearing the defect is on: the width must be less than its rolling-element
+            diameter, and a ball defect's index less than its element count.
+        """
         element = getattr(bearing, "rolling_element", "ball")
         if self.width >= bearing.element_diameter:
             raise InputError(

@@ -108,7 +108,21 @@ class Simulation:
 
     def plot(self, axes=None, channels=("acc_y", "disp_y")):
         """The record's ``channels`` against time, one above the other, on ``axes`` (one
-        matplotlib Axes per channel; a new figure by default); (fig, axes)."""
+        matplotlib Axes per channel; a new figure by default); (fig, axes).
+
+        Parameters
+        ----------
+        axes : sequence of matplotlib Axes or None
+            One Axes per channel, top to bottom; None: a new figure.
+        channels : sequence of str
+            Channels to plot: ``acc_x``, ``acc_y`` [m/s^2], ``disp_x``, ``disp_y`` (drawn in
+            [um]) and, for the slip model, ``cage_speed`` [rad/s].
+
+        Returns
+        -------
+        (Figure, axes)
+            The figure (not shown) and its Axes.
+        """
         from ..plotting import _pyplot
 
         if axes is None:
@@ -323,7 +337,14 @@ def simulate(
 
 def needs_compiling(model: str = "rigid") -> bool:
     """True when the integrator of ``model`` is not yet in numba's on-disk cache: the first
-    simulation in this install will compile it (several seconds; later ones load it)."""
+    simulation in this install will compile it (several seconds; later ones load it).
+
+    Parameters
+    ----------
+    model : {"rigid", "slip"}
+        The dynamic model whose integrator is asked about (any other value is taken as
+        "slip").
+    """
     kernel = _integrate.dopri_chunk_rigid if model == "rigid" else _rosenbrock.rosenbrock_chunk
     return not _integrate.cached_on_disk(kernel)
 

@@ -114,6 +114,16 @@ class FrictionBearing:
         (:class:`~bearinglab.designation.Designation`); without one
         the series is read from the bearing's name when that is a designation.
 
+        Parameters
+        ----------
+        bearing : BallBearing
+            The bearing (SI); its pitch diameter is the d_m of the friction model.
+        designation : Designation or None
+            The bearing's decoded designation (series, design variant, closures); None: read
+            from the bearing's name when that is a designation (closures "unknown" otherwise).
+
+        Examples
+        --------
         >>> from bearinglab.catalog import bearing_from_designation
         >>> FrictionBearing.from_ball_bearing(*bearing_from_designation("6205-2RS")).closures
         '2seals'

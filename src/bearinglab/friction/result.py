@@ -184,7 +184,13 @@ class FrictionResult:
 
     def plot(self, ax=None):
         """Bar chart of the torque components [N·mm] on ``ax`` (a matplotlib Axes; a new
-        figure by default); returns (fig, ax), never shows."""
+        figure by default); returns (fig, ax), never shows.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes or None
+            Where to draw; None: a new figure.
+        """
         from ..plotting import figure_axes
 
         fig, ax = figure_axes(ax, figsize=(6, 3.5))

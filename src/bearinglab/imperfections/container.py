@@ -95,7 +95,19 @@ class Imperfections:
         )
 
     def check(self, bearing) -> None:
-        """Refuse ball indices or ball-size error counts that do not fit ``bearing``."""
+        """Refuse ball indices or ball-size error counts that do not fit ``bearing``.
+
+        Parameters
+        ----------
+        bearing : BallBearing
+            The bearing the form errors are on.
+
+        Raises
+        ------
+        InputError
+            If a ball index is not less than its ball count, or the ball-size errors are not
+            one per ball or exceed +-5 % of D_w.
+        """
         for item in self.waviness + self.surfaces:
             item.check(bearing)
         if self.ball_size_errors is not None:
@@ -129,7 +141,22 @@ class Imperfections:
         """Random-surface heights [m] of one raceway (``race``: "inner" or "outer") along
         ``z`` [m] at each ``angle`` [rad]: (..., n) for angle (...) and z (n,) (what
         :func:`ball_axial_shift` samples; waviness, constant across the groove, does not
-        move the contacts axially)."""
+        move the contacts axially).
+
+        Parameters
+        ----------
+        race : {"inner", "outer"}
+            The raceway.
+        angle : array_like
+            Angle in the ring's own frame [rad], any shape (...).
+        z : array_like
+            Axial positions across the raceway [m], shape (n,).
+
+        Returns
+        -------
+        numpy.ndarray
+            Height [m], shape (..., n); zero without a random surface on that race.
+        """
         angle = np.asarray(angle, float)[..., None]
         out = np.zeros(angle.shape[:-1] + np.shape(z))
         for s in self.surfaces:
@@ -139,7 +166,21 @@ class Imperfections:
 
     def ball_deviation(self, spin_angle, ball_count: int):
         """Radius deviation of each ball at spin angle phi (the point facing the outer
-        race) [m]; the last axis of ``spin_angle`` (broadcast to ``ball_count``) is the ball."""
+        race) [m]; the last axis of ``spin_angle`` (broadcast to ``ball_count``) is the ball.
+
+        Parameters
+        ----------
+        spin_angle : array_like
+            Spin angle phi of each ball [rad] (0: the mark faces the outer race at time 0); its
+            last axis, broadcast to ``ball_count``, is the ball.
+        ball_count : int
+            Number of balls Z.
+
+        Returns
+        -------
+        numpy.ndarray
+            Radius deviation r - R [m] of each ball, of the broadcast shape (..., Z).
+        """
         phi = np.broadcast_to(
             np.asarray(spin_angle, float), np.broadcast_shapes(np.shape(spin_angle), (ball_count,))
         )
@@ -158,7 +199,20 @@ class Imperfections:
         """The form errors as effective ball-diameter errors for a quasi-static solve: the
         approach changes a_i + a_o of every ball of ``bearing`` at shaft angle 0, ball 0
         under the load, which acts at ``radial_load_angle`` [rad] (:meth:`approach_change`)
-        [m], one per ball."""
+        [m], one per ball.
+
+        Parameters
+        ----------
+        bearing : BallBearing
+            The bearing the form errors are on.
+        radial_load_angle : float
+            Direction of the radial load [rad], from +x towards +y; ball 0 sits there.
+
+        Returns
+        -------
+        numpy.ndarray
+            Effective ball-diameter error [m] of each of the Z balls (positive: more approach).
+        """
         z = bearing.ball_count
         psi = radial_load_angle + 2.0 * np.pi * np.arange(z) / z
         return self.approach_change(bearing, psi).total

@@ -280,14 +280,33 @@ class RandomSurface:
 
     def autocorrelation(self, tau_r, tau_z):
         """The target R(``tau_r``, ``tau_z``) of this surface (seed 002 eq. 6), at lags
-        ``tau_r`` along the raceway and ``tau_z`` across it [m] [m^2]."""
+        ``tau_r`` along the raceway and ``tau_z`` across it [m] [m^2].
+
+        Parameters
+        ----------
+        tau_r : array_like
+            Lag along the raceway (circumferential) [m].
+        tau_z : array_like
+            Lag across the raceway (axial) [m], broadcast against ``tau_r``.
+
+        Returns
+        -------
+        numpy.ndarray
+            R [m^2].
+        """
         return exponential_autocorrelation(
             tau_r, tau_z, self.amplitude, self.length_circumferential, self.length_axial
         )
 
     def check(self, bearing) -> None:
         """Nothing to refuse: a surface fits any ``bearing`` (its radius is only its
-        scale)."""
+        scale).
+
+        Parameters
+        ----------
+        bearing : BallBearing
+            Any bearing (not used).
+        """
 
     def to_dict(self) -> dict:
         """JSON-ready description in engineering units."""

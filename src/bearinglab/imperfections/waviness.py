@@ -122,11 +122,29 @@ class Waviness:
 
     def radius_deviation(self, angle):
         """r - R = A cos(q angle + phase) at ``angle`` [m] (ring-frame angle or spin angle,
-        [rad]); vectorised."""
+        [rad]); vectorised.
+
+        Parameters
+        ----------
+        angle : array_like
+            Raceways: the angle theta in the ring's own frame [rad]; balls: the spin angle phi
+            [rad].
+
+        Returns
+        -------
+        numpy.ndarray or float
+            r - R [m], of the shape of ``angle``.
+        """
         return self.amplitude * np.cos(self.order * np.asarray(angle, float) + self.phase)
 
     def check(self, bearing) -> None:
-        """Refuse a ball index beyond the ball count of ``bearing``."""
+        """Refuse a ball index beyond the ball count of ``bearing``.
+
+        Parameters
+        ----------
+        bearing : BallBearing
+            The bearing: a ball index must be in [0, Z - 1].
+        """
         if self.ball is not None and self.ball >= bearing.ball_count:
             raise InputError("ball", self.ball, f"a ball index in [0, {bearing.ball_count - 1}]")
 
@@ -218,7 +236,14 @@ class BallSizeErrors:
 
     def check(self, bearing) -> None:
         """Refuse a count that differs from the Z of ``bearing`` or errors beyond
-        +-5 % D_w."""
+        +-5 % D_w.
+
+        Parameters
+        ----------
+        bearing : BallBearing
+            The bearing: there must be one error per ball (Z values), each within +-5 % of its
+            ball diameter D_w.
+        """
         if self.errors.shape != (bearing.ball_count,):
             raise InputError(
                 "errors", self.errors.tolist(), f"{bearing.ball_count} values (one per ball)"

@@ -79,7 +79,21 @@ _CONDITION = (
 
 def speed_from(values: dict, *, positive: bool = True) -> float:
     """The shaft speed [rad/s] of ``speed_rpm`` in the request ``values`` (> 0 rpm, or
-    >= 0 unless ``positive``)."""
+    >= 0 unless ``positive``).
+
+    Parameters
+    ----------
+    values : dict
+        The request; its ``speed_rpm`` [rpm] is required and checked against the table's
+        range.
+    positive : bool
+        Require a speed > 0 rpm; False allows 0.
+
+    Returns
+    -------
+    float
+        The shaft speed [rad/s].
+    """
     rpm = values.get("speed_rpm")
     if rpm is None:
         raise InputError("speed_rpm", None, "a speed in rpm")
@@ -94,7 +108,25 @@ def condition_from(values: dict, *, positive_speed: bool = False, unloaded: str 
     ``positive_speed``), ``radial_load_n``, ``axial_load_n``,
     ``radial_load_angle_deg`` and ``misalignment_mrad`` (a tilt about the radial-plane axis
     across the load); absent inputs take the table's defaults (speed 0). With
-    ``unloaded`` (why a load is needed) a load of zero is refused."""
+    ``unloaded`` (why a load is needed) a load of zero is refused.
+
+    Parameters
+    ----------
+    values : dict
+        The request: input name -> value in its unit (``speed_rpm`` [rpm],
+        ``radial_load_n`` [N], ``axial_load_n`` [N], ``radial_load_angle_deg`` [deg],
+        ``misalignment_mrad`` [mrad]; absent or None: the table's default).
+    positive_speed : bool
+        Refuse a speed of 0 rpm (the speed must then be > 0 rpm).
+    unloaded : str
+        Why the analysis needs a load; when not empty, a request with both loads zero is
+        refused with this reason. Empty (the default): a zero load is allowed.
+
+    Returns
+    -------
+    OperatingCondition
+        In SI: loads [N], load angle [rad], misalignment [rad] and shaft speed [rad/s].
+    """
     from ..operating import OperatingCondition
 
     v = {name: values.get(name, INPUTS[name].default) for name in _CONDITION}
@@ -118,7 +150,22 @@ def condition_from(values: dict, *, positive_speed: bool = False, unloaded: str 
 
 def no_effect(given, why: str) -> list[str]:
     """A warning naming the inputs given (``given``: (name, given) pairs) that have no
-    effect ``why``; none when none was given."""
+    effect ``why``; none when none was given.
+
+    Parameters
+    ----------
+    given : iterable of (str, bool)
+        (input name, whether it was given) pairs; names that are identifiers are written in
+        backquotes.
+    why : str
+        The condition under which they have no effect (e.g. "without `film` (the EHL
+        film)").
+
+    Returns
+    -------
+    list of str
+        One warning naming the inputs given, or an empty list.
+    """
     names = [f"`{name}`" if name.isidentifier() else name for name, on in given if on]
     return [f"{' and '.join(names)}: no effect {why}"] if names else []
 
@@ -131,7 +178,15 @@ def lubricant_from(values: dict):
     """(Lubricant, temperature [K] or None, warnings) of the request ``values``:
     ``lubricant`` and
     ``temperature_c`` for the EHL ``film``: (None, None, warnings) without the film, the
-    warnings naming the lubricant inputs that then have no effect."""
+    warnings naming the lubricant inputs that then have no effect.
+
+    Parameters
+    ----------
+    values : dict
+        The request: ``film`` (bool), ``lubricant`` (one of the built-in lubricants, default
+        iso-vg68) and ``temperature_c`` [degC] (in [-60, 300]; None: the lubricant's
+        reference temperature).
+    """
     from ..lubrication import LUBRICANTS, ZERO_CELSIUS
 
     check(values, {name: INPUTS[name] for name in ("lubricant", "temperature_c")})

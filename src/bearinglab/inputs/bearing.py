@@ -160,7 +160,21 @@ class _Given:
 
 def read_geometry_file(path) -> dict:
     """Read the geometry TOML file at ``path``: input name -> (key as written, checked
-    value)."""
+    value).
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The TOML file (UTF-8): keys are geometry input names (``ball_diameter_mm``, ...;
+        also ``ball_count`` for ``balls``, ``diametral_clearance_um`` for ``clearance_um``),
+        ``name`` and ``system`` ('gost' or 'iso').
+
+    Returns
+    -------
+    dict
+        Input name -> (key as written, value): numbers as float (finite), ``balls`` as int,
+        ``system`` in lower case, in the units of the input names (no conversion).
+    """
     name = "geometry"
     try:
         text = Path(path).read_bytes().decode("utf-8")
@@ -248,7 +262,21 @@ def _material(values: dict):
 def bearing_from(values: dict):
     """(BallBearing, Designation or None) from a request's ``values`` (name -> value in
     its unit): a ``designation`` and/or the explicit geometry and material, or a
-    ``geometry`` TOML file. Errors name the input given, with its value in its unit."""
+    ``geometry`` TOML file. Errors name the input given, with its value in its unit.
+
+    Parameters
+    ----------
+    values : dict
+        The request: input name -> value in the input's unit (``designation``, ``system``,
+        ``geometry``, ``balls``, ``ball_diameter_mm``, ...; None: not given).
+
+    Returns
+    -------
+    bearing : BallBearing or RollerBearing
+        In SI.
+    decoded : Designation or None
+        The designation as read, None for an explicit geometry.
+    """
     from ..catalog import GeometryNeeded, bearing_from_designation
     from ..geometry import BallBearing, Source
 
@@ -324,7 +352,18 @@ def _kind(given: _Given, designation) -> str:
 
 def balls_only(bearing, values: dict, why: str) -> None:
     """Refuse the roller ``bearing`` for a model of ball bearings only (``why``: whose model
-    it is), naming the input in ``values`` (the request) that made it a roller bearing."""
+    it is), naming the input in ``values`` (the request) that made it a roller bearing.
+
+    Parameters
+    ----------
+    bearing : BallBearing or RollerBearing
+        The bearing built from the request; nothing happens unless it has rollers.
+    values : dict
+        The request (input name -> value in its unit), to name the input that made it a
+        roller bearing (``designation`` if given, else ``rollers``).
+    why : str
+        Whose model takes ball bearings only, for the error (e.g. "the slip model").
+    """
     if bearing.rolling_element != "roller":
         return
     name = "designation" if values.get("designation") else "rollers"
@@ -393,7 +432,20 @@ def bearing_warnings(bearing, decoded=None) -> list[str]:
     read, or None) that also reads in the other system
     (GOST 3189-89 / ISO: the reading used is said), an estimated ball count of an
     angular-contact bearing (a lower bound), balls of a thrust bearing reaching past its
-    outside diameter."""
+    outside diameter.
+
+    Parameters
+    ----------
+    bearing : BallBearing or RollerBearing
+        The bearing used.
+    decoded : Designation or None
+        The designation it was read from, None for an explicit geometry.
+
+    Returns
+    -------
+    list of str
+        The caveats, one sentence each (empty when there is none).
+    """
     out = []
     if decoded is not None:
         out += [n for n in decoded.notes if n.startswith("also reads as")]
@@ -422,7 +474,16 @@ def bearing_warnings(bearing, decoded=None) -> list[str]:
 
 def geometry_line(bearing, contact_angle: float | None = None) -> str:
     """One line: where the geometry of ``bearing`` comes from and its main values (the
-    ``contact_angle`` given [rad], else the nominal one)."""
+    ``contact_angle`` given [rad], else the nominal one).
+
+    Parameters
+    ----------
+    bearing : BallBearing or RollerBearing
+        The bearing shown.
+    contact_angle : float or None
+        The contact angle to show [rad] (e.g. the operating one); None: the bearing's
+        nominal contact angle.
+    """
     alpha = bearing.contact_angle if contact_angle is None else contact_angle
     if bearing.rolling_element == "roller":
         size = (
@@ -491,7 +552,13 @@ def geometry_rows(bearing) -> list[tuple]:
 
 def given_fields(values: dict) -> dict[str, str]:
     """The geometry inputs given in ``values`` (a geometry file counts as the whole
-    bearing, ``system`` reads the designation): input -> the BallBearing field it sets."""
+    bearing, ``system`` reads the designation): input -> the BallBearing field it sets.
+
+    Parameters
+    ----------
+    values : dict
+        The request: input name -> value in its unit (None: not given).
+    """
     return {
         name: _field(name) if INPUTS[name].fields else name
         for name in BEARING

@@ -183,6 +183,17 @@ def parse_defect(text: str):
     ``ball:width_mm=1.2[,ball=0]``; widths and depths in mm, angles in degrees (for the
     outer race from +x towards +y, default 270 = the bottom of the load zone).
 
+    Parameters
+    ----------
+    text : str
+        The specification: ``LOCATION:KEY=VALUE,...`` with LOCATION one of outer, inner,
+        ball, roller (any case) and keys ``width_mm`` (required, > 0), ``depth_mm`` (> 0),
+        ``angle_deg`` (outer: position, default 270; inner: position at t = 0; ball,
+        roller: spin phase) and, for a ball or roller, ``ball`` / ``roller`` (its index,
+        >= 0).
+
+    Examples
+    --------
     >>> parse_defect("outer:width_mm=1.2,depth_mm=0.25").to_dict()["angle_deg"]
     -90.0
     """
@@ -230,7 +241,18 @@ def defect_text(d) -> str:
 def check_defects(specs: list[str], defects: list, bearing) -> None:
     """Each defect of ``specs`` (as typed) and ``defects`` (as parse_defect read them)
     checked against the ``bearing``
-    (Defect.check): one that does not fit is a one-line error in the spec's units."""
+    (Defect.check): one that does not fit is a one-line error in the spec's units.
+
+    Parameters
+    ----------
+    specs : list of str
+        The defect specifications as typed (``outer:width_mm=1.2,...``).
+    defects : list of Defect
+        The same, as :func:`parse_defect` read them (one per specification).
+    bearing : BallBearing or RollerBearing
+        The bearing they must fit (a ``ball:`` defect needs balls, a ``roller:`` one
+        rollers).
+    """
     element = bearing.rolling_element
     for text, defect in zip(specs, defects, strict=True):
         written = str(text).partition(":")[0].strip().lower()
@@ -346,7 +368,22 @@ class FormErrors:
     def build(self, bearing, seed: int | None = None):
         """The Imperfections on ``bearing``, random ones drawn with ``seed`` (None: 0;
         None when none were given); errors name the
-        input and the specification."""
+        input and the specification.
+
+        Parameters
+        ----------
+        bearing : BallBearing
+            The bearing the form errors are on; the amplitudes are checked against its ball
+            diameter and the surfaces sized on its raceways.
+        seed : int or None
+            Seed (>= 0) of the random form errors (ball-size errors, random surfaces); None
+            gives 0.
+
+        Returns
+        -------
+        Imperfections or None
+            None when no form error was given.
+        """
         from ..imperfections import BallSizeErrors, Imperfections, RandomSurface
 
         if not self.given:

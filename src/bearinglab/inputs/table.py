@@ -60,7 +60,13 @@ class Input:
         return tuple(s.rpartition(".")[2] for s in sets if s)
 
     def allowed(self, unit: str = "") -> str:
-        """The allowed range (or choices) in words, in the input's ``unit`` (its symbol)."""
+        """The allowed range (or choices) in words, in the input's ``unit`` (its symbol).
+
+        Parameters
+        ----------
+        unit : str
+            The unit symbol to write after the bounds (e.g. "mm"); empty: none.
+        """
         if self.choices:
             return "one of " + ", ".join(map(str, self.choices))
         if self.low is None and self.high is None:
@@ -78,7 +84,20 @@ class Input:
 
     def check(self, name: str, value):
         """``value`` if it is allowed (None passes: not given); otherwise an InputError
-        naming ``name``, the value as given and the range in the input's unit."""
+        naming ``name``, the value as given and the range in the input's unit.
+
+        Parameters
+        ----------
+        name : str
+            The input's public name, for the error and to find its unit (its suffix).
+        value : object
+            The value as given, in the input's unit; None passes (not given).
+
+        Returns
+        -------
+        object
+            ``value``, unchanged.
+        """
         if value is None:
             return None
         if self.choices:
@@ -482,6 +501,17 @@ def si(values: dict, name: str, default=None):
     """The value of input ``name`` in the request ``values`` in SI, by the unit its name
     carries (:func:`bearinglab.units.unit_of`); ``default`` (already SI) when not given.
 
+    Parameters
+    ----------
+    values : dict
+        The request: input name -> value in the unit its name carries (None: not given).
+    name : str
+        The input's public name (``ball_diameter_mm``, ``speed_rpm``, ...).
+    default : object
+        Returned as it is when the input is not given (already in SI).
+
+    Examples
+    --------
     >>> si({"ball_diameter_mm": 7.5}, "ball_diameter_mm"), si({}, "speed_rpm", 0.0)
     (0.0075, 0.0)
     """
@@ -500,6 +530,20 @@ def input_for(parameter: str, specs: dict) -> str | None:
     first whose name less its unit suffix is it (``duration`` -> ``duration_s``); None if
     none.
 
+    Parameters
+    ----------
+    parameter : str
+        A model parameter or input name (e.g. ``shaft_speed``, ``ball_count``).
+    specs : dict
+        Input name -> :class:`Input` to look in (e.g. :data:`INPUTS`).
+
+    Returns
+    -------
+    str or None
+        The input's public name.
+
+    Examples
+    --------
     >>> input_for("shaft_speed", INPUTS), input_for("ball_count", INPUTS)
     ('speed_rpm', 'balls')
     >>> input_for("duration", INPUTS)
@@ -526,6 +570,17 @@ def restate(exc: InputError, values: dict, specs: dict) -> InputError:
     in that unit, and the model parameters it names in backquotes as the inputs that set
     them. An error about no input of the request is returned as it is.
 
+    Parameters
+    ----------
+    exc : InputError
+        The model's error, naming a model parameter in SI.
+    values : dict
+        The request: input name -> value as given, in the input's unit.
+    specs : dict
+        Input name -> :class:`Input` of the request's inputs.
+
+    Examples
+    --------
     >>> e = InputError("ball_diameter", 0.05, "less than {d}", unit="m", numbers={"d": 0.04})
     >>> str(restate(e, {"ball_diameter_mm": 50.0}, INPUTS))
     'ball_diameter_mm = 50.0 is not allowed: expected less than 40 mm'
@@ -602,7 +657,16 @@ def _symbol(name: str) -> str:
 def check(values: dict, specs: dict | None = None) -> dict:
     """Check each value of ``values`` (name -> value in its unit; None: not given) against
     its input's range: the inputs ``specs`` (name -> Input), by default the table's
-    entries of the names given; returns ``values``."""
+    entries of the names given; returns ``values``.
+
+    Parameters
+    ----------
+    values : dict
+        Input name -> value in its unit (None: not given).
+    specs : dict or None
+        Input name -> :class:`Input` to check against; None: the table's entries of the
+        names in ``values`` (names that are not in the table are not checked).
+    """
     if specs is None:
         specs = {name: INPUTS[name] for name in values if name in INPUTS}
     for name, spec in specs.items():

@@ -214,7 +214,13 @@ class LifeResult:
     def plot(self, ax=None):
         """Basic rating life against the equivalent load (log-log), with the operating
         point and, when known, the modified life, on ``ax`` (a matplotlib Axes; a new
-        figure by default); returns (fig, ax)."""
+        figure by default); returns (fig, ax).
+
+        Parameters
+        ----------
+        ax : matplotlib Axes or None
+            Where to draw; None: a new figure.
+        """
         from ..plotting import figure_axes
 
         fig, ax = figure_axes(ax, figsize=(7, 4.5))

@@ -148,7 +148,13 @@ class NoiseAnalysis:
         """Pressure and SPL(t) against time (left), the pressure spectrum with the BPFO /
         BPFI harmonics and the labelled lines, and the directivity at the point's distance
         (right), on ``fig`` (a matplotlib Figure; a new one by default); returns
-        (fig, axes), never shows."""
+        (fig, axes), never shows.
+
+        Parameters
+        ----------
+        fig : matplotlib Figure or None
+            The figure to draw on (four Axes are added to it); None: a new figure.
+        """
         from ..plotting import _pyplot, draw_spectrum
 
         if fig is None:

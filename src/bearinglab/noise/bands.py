@@ -103,7 +103,13 @@ class BearingVelocityBands:
 
     def plot(self, ax=None):
         """Bar chart of the three bands [um/s] on ``ax`` (a matplotlib Axes; a new figure
-        by default); returns (fig, ax), never shows."""
+        by default); returns (fig, ax), never shows.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes or None
+            Where to draw; None: a new figure.
+        """
         from ..plotting import figure_axes
 
         fig, ax = figure_axes(ax, figsize=(6.5, 3.2))

@@ -63,7 +63,13 @@ class BearingNoise:
 
     def plot(self, axes=None):
         """Pressure and SPL against time on ``axes`` (as for
-        :meth:`.SoundPressure.plot`)."""
+        :meth:`.SoundPressure.plot`).
+
+        Parameters
+        ----------
+        axes : pair of matplotlib Axes or None
+            Where to draw the pressure and the SPL; None: a new figure.
+        """
         return self.sound.plot(axes)
 
 

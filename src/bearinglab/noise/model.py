@@ -99,6 +99,20 @@ def default_field_point(bearing, angle: float | None = None) -> tuple[FieldPoint
     from +x towards +y (default straight up, +y: above the bearing, against a downward
     load), and the rule in words.
 
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing that radiates; its outside radius places the point.
+    angle : float or None
+        Direction of the point from +x towards +y [rad]; None: straight up (+y).
+
+    Returns
+    -------
+    (FieldPoint, str)
+        The point and the rule that placed it, in words.
+
+    Examples
+    --------
     >>> from bearinglab.geometry import BallBearing
     >>> b = BallBearing(ball_count=7, ball_diameter=3.85e-3, pitch_diameter=15e-3,
     ...                 bore=8e-3, outside_diameter=22e-3, width=7e-3)
@@ -126,13 +140,32 @@ def least_field_distance(bearing) -> float:
     """Least distance of a field point from the centre of ``bearing`` [m]: (d_m + D_w) / 2,
     just outside the balls' path. Inside it the point would lie in the inner-ring cylinder, in
     a ball's path (the sources of seed 003's eqs. 19 and 23) or in the thin gap between
-    them, inside the bearing."""
+    them, inside the bearing.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing (pitch diameter d_m and ball diameter D_w [m]).
+    """
     return 0.5 * (bearing.pitch_diameter + bearing.ball_diameter)
 
 
 def check_field_point(bearing, point: FieldPoint) -> list[str]:
     """Refuse a ``point`` inside the balls' path of ``bearing``
     (:func:`least_field_distance`); warn when it lies inside the bearing's outside radius.
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing that radiates.
+    point : FieldPoint
+        The field point (its distance from the bearing's centre [m] and angle [rad]); its
+        distance must exceed :func:`least_field_distance`.
+
+    Returns
+    -------
+    list of str
+        A warning when the point lies inside the bearing's outside radius, else none.
 
     Raises
     ------

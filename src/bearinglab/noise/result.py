@@ -49,7 +49,13 @@ class Directivity:
 
     def plot(self, ax=None):
         """Polar plot of the levels [dB] on ``ax`` (a polar matplotlib Axes; a new figure
-        by default); returns (fig, ax)."""
+        by default); returns (fig, ax).
+
+        Parameters
+        ----------
+        ax : matplotlib Axes or None
+            A polar Axes to draw on; None: a new figure.
+        """
         from ..plotting import figure_axes
 
         fig, ax = figure_axes(ax, subplot_kw={"projection": "polar"}, figsize=(5.5, 5.5))
@@ -104,19 +110,50 @@ class SoundPressure:
         return float((self.time.size - 1) / (self.time[-1] - self.time[0]))
 
     def pressure(self, part: str = "total") -> np.ndarray:
-        """Pressure series of ``part`` [Pa]."""
+        """Pressure series of ``part`` [Pa].
+
+        Parameters
+        ----------
+        part : str
+            One of :attr:`parts`: "inner_ring" or "balls" (those computed), "total" (the
+            default) or an x / y contribution ("inner_ring_x", ...).
+
+        Returns
+        -------
+        numpy.ndarray
+            The pressure at each time [Pa].
+
+        Raises
+        ------
+        InputError
+            If ``part`` is not one of the parts computed.
+        """
         if part not in self.parts:
             raise InputError("part", part, f"one of {list(self.parts)}")
         return self.parts[part]
 
     def effective_pressure(self, part: str = "total") -> float:
-        """p_e = sqrt(1/T int p^2 dt) (seed 003, after eq. 27) of ``part`` ("ring",
-        "balls" or "total") [Pa]."""
+        """p_e = sqrt(1/T int p^2 dt) (seed 003, after eq. 27) of ``part`` ("inner_ring",
+        "balls" or "total") [Pa].
+
+        Parameters
+        ----------
+        part : str
+            One of :attr:`parts`: "inner_ring" or "balls" (those computed), "total" (the
+            default) or an x / y contribution ("inner_ring_x", ...).
+        """
         return effective_pressure(self.pressure(part))
 
     def spl(self, part: str = "total") -> float:
-        """SPL = 20 lg(p_e / p_ref) of ``part`` ("ring", "balls" or "total") over the
-        whole record (eq. 27) [dB]; -inf if silent."""
+        """SPL = 20 lg(p_e / p_ref) of ``part`` ("inner_ring", "balls" or "total") over the
+        whole record (eq. 27) [dB]; -inf if silent.
+
+        Parameters
+        ----------
+        part : str
+            One of :attr:`parts`: "inner_ring" or "balls" (those computed), "total" (the
+            default) or an x / y contribution ("inner_ring_x", ...).
+        """
         return sound_pressure_level(self.effective_pressure(part))
 
     def spl_time(self, part: str = "total", window: float | None = None) -> np.ndarray:
@@ -153,9 +190,25 @@ class SoundPressure:
         return sound_pressure_level(np.sqrt(mean_square))
 
     def spectrum(self, part: str = "total", window="hann", segment_length=None):
-        """Single-sided amplitude spectrum of the pressure of ``part`` ("ring", "balls"
+        """Single-sided amplitude spectrum of the pressure of ``part`` ("inner_ring", "balls"
         or "total") [Pa] (:func:`bearinglab.signal.amplitude_spectrum`, with its
-        ``window`` and ``segment_length``)."""
+        ``window`` and ``segment_length``).
+
+        Parameters
+        ----------
+        part : str
+            One of :attr:`parts`: "inner_ring" or "balls" (those computed), "total" (the
+            default) or an x / y contribution ("inner_ring_x", ...).
+        window : str or tuple
+            Any window ``scipy.signal.get_window`` accepts; default "hann".
+        segment_length : int or None
+            Samples per segment (Welch average); None: the whole record as one segment.
+
+        Returns
+        -------
+        Spectrum
+            ``frequency`` [Hz] and ``amplitude`` [Pa].
+        """
         from ..signal import amplitude_spectrum
 
         return amplitude_spectrum(
@@ -235,7 +288,13 @@ class SoundPressure:
     def plot(self, axes=None):
         """Pressure against time (ring, balls, total) and SPL(t), labelled with its time
         mean and the L_eq of each part, on ``axes`` (two matplotlib Axes; a new figure
-        by default); returns (fig, axes)."""
+        by default); returns (fig, axes).
+
+        Parameters
+        ----------
+        axes : pair of matplotlib Axes or None
+            Where to draw: the pressure on the first, the SPL on the second; None: a new figure.
+        """
         from ..plotting import figure_axes
 
         fig, axes = figure_axes(axes, 2, 1, figsize=(8, 6), sharex=True)

@@ -56,7 +56,18 @@ MAX_SPEED_FACTOR = 3.0e6
 
 def speed_limit(bearing: BallBearing) -> float:
     """Highest shaft speed this model answers for ``bearing``, n d_m = MAX_SPEED_FACTOR
-    [rad/s]."""
+    [rad/s].
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing; its pitch diameter d_m sets the limit.
+
+    Returns
+    -------
+    float
+        The speed [rad/s] at which n d_m reaches MAX_SPEED_FACTOR (n in rpm, d_m in mm).
+    """
     return MAX_SPEED_FACTOR / (bearing.pitch_diameter * 1e3) * math.pi / 30.0
 
 

@@ -276,7 +276,14 @@ class LoadDistribution:
 
     def stiffness_matrix_shown(self, relative: float = 1e-9) -> np.ndarray:
         """The stiffness matrix with the solver's round-off (entries below ``relative``
-        times the largest) set to 0, for tables [SI]."""
+        times the largest) set to 0, for tables [SI].
+
+        Parameters
+        ----------
+        relative : float
+            Entries whose magnitude is below ``relative`` times the largest magnitude are set to
+            0 [-]; default 1e-9.
+        """
         k = np.asarray(self.stiffness_matrix, dtype=float)
         return np.where(np.abs(k) < relative * np.max(np.abs(k)), 0.0, k)
 
@@ -288,7 +295,19 @@ class LoadDistribution:
 
     def plot(self, axes=None):
         """Polar load distribution and contact angles on ``axes`` (a polar and a plain
-        matplotlib Axes; a new figure by default); returns (fig, axes)."""
+        matplotlib Axes; a new figure by default); returns (fig, axes).
+
+        Parameters
+        ----------
+        axes : pair of matplotlib Axes or None
+            Where to draw: a polar Axes (the loads at their angles) and a plain one (the contact
+            angles); None: a new figure.
+
+        Returns
+        -------
+        (Figure, axes)
+            The figure and the pair of Axes; the figure is not shown.
+        """
         from ..plotting import load_distribution_figure
 
         return load_distribution_figure(self, axes)

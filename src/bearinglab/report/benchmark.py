@@ -106,6 +106,19 @@ def _sizing_table(result) -> str:
 
 
 def write_benchmark_page(result, path) -> Path:
-    """Write :func:`benchmark_page` of ``result`` atomically to ``path`` (UTF-8)."""
+    """Write :func:`benchmark_page` of ``result`` atomically to ``path`` (UTF-8).
+
+    Parameters
+    ----------
+    result : BenchmarkResult
+        What :func:`bearinglab.diagnosis.run_benchmark` returned.
+    path : str or Path
+        The HTML file to write; its directory must exist.
+
+    Returns
+    -------
+    Path
+        The file written.
+    """
     text = benchmark_page(result)
     return write_atomically(path, lambda tmp: Path(tmp).write_text(text, encoding="utf-8"))

@@ -74,6 +74,18 @@ def default_sample_rate(shaft_speed: float) -> float:
     1800 rpm, scaled), so that at high speed the defect lines, their harmonics and the
     resonances they excite stay below the Nyquist frequency.
 
+    Parameters
+    ----------
+    shaft_speed : float
+        Shaft speed [rad/s].
+
+    Returns
+    -------
+    float
+        Sample rate [Hz], a multiple of 100 Hz and at least 25 600 Hz.
+
+    Examples
+    --------
     >>> default_sample_rate(1800 * math.pi / 30)
     25600.0
     """

@@ -245,7 +245,18 @@ class Report:
         )
 
     def write(self, path: str | Path) -> Path:
-        """Write the page to ``path`` atomically (UTF-8)."""
+        """Write the page to ``path`` atomically (UTF-8).
+
+        Parameters
+        ----------
+        path : str or Path
+            The HTML file to write; its directory must exist.
+
+        Returns
+        -------
+        Path
+            The file written.
+        """
         text = self.to_html()
         return write_atomically(path, lambda tmp: Path(tmp).write_text(text, encoding="utf-8"))
 

@@ -170,6 +170,19 @@ def _life(result, life: dict) -> str:
 
 
 def write_trend_page(result, path) -> Path:
-    """Write :func:`trend_page` of ``result`` atomically to ``path`` (UTF-8)."""
+    """Write :func:`trend_page` of ``result`` atomically to ``path`` (UTF-8).
+
+    Parameters
+    ----------
+    result : TrendResult
+        What :func:`bearinglab.trend.trend_records` returned.
+    path : str or Path
+        The HTML file to write; its directory must exist.
+
+    Returns
+    -------
+    Path
+        The file written.
+    """
     text = trend_page(result)
     return write_atomically(path, lambda tmp: Path(tmp).write_text(text, encoding="utf-8"))

@@ -73,7 +73,23 @@ class RingModes:
     warnings: tuple[str, ...] = ()
 
     def mode(self, m: int) -> RingMode:
-        """The :class:`RingMode` of mode number ``m``."""
+        """The :class:`RingMode` of mode number ``m``.
+
+        Parameters
+        ----------
+        m : int
+            Mode number (the number of waves round the ring), one of the computed modes.
+
+        Returns
+        -------
+        RingMode
+            That mode.
+
+        Raises
+        ------
+        InputError
+            If mode ``m`` was not computed.
+        """
         found = [r for r in self.modes if r.mode == m]
         if not found:
             raise InputError("m", m, f"one of the computed modes {[r.mode for r in self.modes]}")
@@ -154,7 +170,13 @@ class RingModes:
 
     def plot(self, ax=None):
         """Frequencies by mode number (free, approximate, refined, measured) on ``ax`` (a
-        matplotlib Axes; a new figure by default); (fig, ax)."""
+        matplotlib Axes; a new figure by default); (fig, ax).
+
+        Parameters
+        ----------
+        ax : matplotlib Axes or None
+            Where to draw; None: a new figure.
+        """
         from ..plotting import figure_axes
 
         fig, ax = figure_axes(ax, figsize=(8, 4.5))

@@ -65,6 +65,18 @@ def iso15242_bands(speed_rpm: float | None = None) -> dict:
     """ISO 15242 band edges [Hz] at ``speed_rpm`` (default 1800 min^-1: 50-300, 300-1800,
     1800-10000 Hz), scaled in proportion to the speed.
 
+    Parameters
+    ----------
+    speed_rpm : float or None
+        Shaft speed [rpm], finite and > 0; None: the standard's 1800 rpm.
+
+    Returns
+    -------
+    dict
+        Band name ("low", "medium", "high") -> (low, high) edges [Hz].
+
+    Examples
+    --------
     >>> iso15242_bands(900.0)["high"]
     (900.0, 5000.0)
     """

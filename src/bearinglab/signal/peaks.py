@@ -360,6 +360,15 @@ def peak_label(p: dict) -> str:
     """Short label of a labelled line ``p`` (a dict of :func:`match_peaks`): "2x bpfo",
     "1x bpfi -1 shaft", "10x shaft" or "-".
 
+    Parameters
+    ----------
+    p : dict
+        One labelled peak of :func:`match_peaks`: ``matched`` and ``harmonic`` for a
+        harmonic, ``sideband_of``, ``sideband_harmonic``, ``sideband_order`` and
+        ``modulation`` for a sideband.
+
+    Examples
+    --------
     >>> peak_label({"matched": "bpfo", "harmonic": 2})
     '2x bpfo'
     """

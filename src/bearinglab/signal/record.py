@@ -139,6 +139,16 @@ class Signal:
     def channel(self, name: str | None = None) -> np.ndarray:
         """Samples of channel ``name`` (default: the first channel).
 
+        Parameters
+        ----------
+        name : str or None
+            The channel's name; None: the first channel.
+
+        Returns
+        -------
+        numpy.ndarray
+            Its samples.
+
         Raises
         ------
         InputError
@@ -151,7 +161,19 @@ class Signal:
         return self.channels[name]
 
     def select(self, names: str | list[str] | tuple[str, ...]) -> Signal:
-        """A new record with only the channels ``names`` (in that order)."""
+        """A new record with only the channels ``names`` (in that order).
+
+        Parameters
+        ----------
+        names : str or sequence of str
+            The channel(s) to keep, in the order wanted; each must be a channel of this record
+            (at least one).
+
+        Returns
+        -------
+        Signal
+            With those channels, the same sample rate and metadata.
+        """
         wanted = [names] if isinstance(names, str) else list(names)
         if not wanted or any(not isinstance(n, str) or n not in self.channels for n in wanted):
             raise InputError("channel", names, f"one or more of {list(self.channels)}")

@@ -417,6 +417,15 @@ def spectral_kurtosis(x, sample_rate, window_length: int) -> Spectrum:
     no boundary padding so that no frame is part zeros). SK is ~0 for stationary
     Gaussian noise, -1 for a stationary sinusoid and large and positive where impacts
     excite a resonance. Returned as a :class:`Spectrum` whose ``amplitude`` is SK [-].
+
+    Parameters
+    ----------
+    x : array_like
+        The samples, 1-D, finite, at least 16 of them (any unit: SK is dimensionless).
+    sample_rate : float
+        Sample rate [Hz], finite and > 0.
+    window_length : int
+        Length of the Hann window [samples], a whole number in [8, len(x) // 4].
     """
     import scipy.signal  # imported here: it costs ~0.5 s at start-up
 

@@ -73,6 +73,22 @@ def case_rng(seed: int, case: int, stream: int = 0) -> np.random.Generator:
     ``stream`` 0 draws the random options, 1 seeds the analysis' own random inputs
     (ball-size errors, measurement noise), so adding a random option never changes them.
 
+    Parameters
+    ----------
+    seed : int
+        The study's (or data set's) seed, >= 0.
+    case : int
+        The case's (or record's) index, >= 0.
+    stream : int
+        0: the random options (the default); 1: the analysis' own random inputs.
+
+    Returns
+    -------
+    numpy.random.Generator
+        The same generator for the same three numbers.
+
+    Examples
+    --------
     >>> float(case_rng(1, 7).random()) == float(case_rng(1, 7).random())
     True
     """
@@ -81,7 +97,20 @@ def case_rng(seed: int, case: int, stream: int = 0) -> np.random.Generator:
 
 def case_seed(seed: int, case: int) -> int:
     """An integer seed for the analysis' random inputs of case index ``case`` of a study
-    seeded ``seed`` (stream 1 of :func:`case_rng`)."""
+    seeded ``seed`` (stream 1 of :func:`case_rng`).
+
+    Parameters
+    ----------
+    seed : int
+        The study's seed, >= 0.
+    case : int
+        The case's index, >= 0.
+
+    Returns
+    -------
+    int
+        A seed in [0, 2**32).
+    """
     return int(np.random.SeedSequence([int(seed), int(case), 1]).generate_state(1)[0])
 
 
@@ -152,6 +181,24 @@ def parse_values(name: str, value, option: Option) -> list | Uniform:
     the text forms of this module; each value is checked against ``option`` (its kind and
     choices); ``name`` is the option's name, which the errors name.
 
+    Parameters
+    ----------
+    name : str
+        The option's name, for the errors (e.g. ``speed_rpm``).
+    value : object
+        A value, a list (tuple, array, range) of them, a :class:`Uniform`, or text: "A,B,C",
+        "START:STOP:COUNT", "log:START:STOP:COUNT" (START, STOP > 0) or "uniform:LOW:HIGH"
+        (LOW < HIGH; the ranges for numbers only), in the option's unit.
+    option : Option
+        The option: its kind (number, integer, text, texts, bool, path) and choices.
+
+    Returns
+    -------
+    list or Uniform
+        The values, each checked, or the random range.
+
+    Examples
+    --------
     >>> parse_values("speed_rpm", "1000:3000:3", Option("number", None, ""))
     [1000.0, 2000.0, 3000.0]
     >>> parse_values("designation", "6205,6206", Option("text", None, ""))

@@ -150,7 +150,20 @@ class StudyResult:
         study's table, on ``ax`` (a matplotlib Axes; a new figure by default); with
         ``path``, also saved there (.png, .svg, .pdf; the figure is then closed); returns
         (figure, axes)
-        (:func:`bearinglab.study.plots.plot_study`)."""
+        (:func:`bearinglab.study.plots.plot_study`).
+
+        Parameters
+        ----------
+        output : str
+            The column mapped (an output of the study).
+        x, y : str
+            The input columns along the axes.
+        path : str or Path or None
+            Also save the figure there (.png, .svg or .pdf; the figure is then closed); None:
+            not saved.
+        ax : matplotlib Axes or None
+            Where to draw; None: a new figure.
+        """
         from .plots import plot_study
 
         return plot_study(self.to_pandas(), output, x, y, path=path, ax=ax)
@@ -158,7 +171,13 @@ class StudyResult:
 
 def read_study(path) -> object:
     """The table of the study folder ``path`` (its part-*.parquet files) as a pandas
-    DataFrame, in case order."""
+    DataFrame, in case order.
+
+    Parameters
+    ----------
+    path : str or Path
+        The study folder (holding part-*.parquet files).
+    """
     import pandas as pd
     import pyarrow.parquet as pq
 
@@ -400,7 +419,13 @@ def study_columns(analysis: str, grid: dict | None = None, *, cases=None, repeat
 
 def describe_options(analysis: str) -> list[dict]:
     """The options of ``analysis`` (a name of :data:`bearinglab.study.ANALYSES` or an
-    alias): name, kind, default, help and choices of each (for --help and docs)."""
+    alias): name, kind, default, help and choices of each (for --help and docs).
+
+    Parameters
+    ----------
+    analysis : str
+        The analysis' name (or an alias), e.g. "static".
+    """
     a = get_analysis(analysis)
     return [
         {

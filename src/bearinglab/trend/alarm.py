@@ -293,6 +293,26 @@ def plain_rule(rms, fraction: float = 0.1, sigmas: float = 6.0, run: int = 3) ->
     run of ``run`` values of ``rms`` above mean + ``sigmas`` standard deviations of the
     first ``fraction`` of the series (which a live monitor cannot know), or None.
 
+    Parameters
+    ----------
+    rms : array_like
+        The indicator's series, one value per record (e.g. RMS [m/s^2]).
+    fraction : float
+        Share of the series at its start taken as the baseline [-] (at least 2 records
+        are). Default 0.1.
+    sigmas : float
+        The limit is the baseline mean + ``sigmas`` standard deviations [-]. Default 6.
+    run : int
+        How many successive records must exceed the limit. Default 3.
+
+    Returns
+    -------
+    int or None
+        The index of the record that completes the first run (records in the baseline do
+        not count), or None when no run occurs.
+
+    Examples
+    --------
     >>> plain_rule([1.0, 1.1, 0.9, 1.0, 1.05, 0.95, 1.0, 1.0, 1.1, 0.9] * 3 + [5.0] * 3)
     32
     """

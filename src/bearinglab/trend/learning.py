@@ -74,7 +74,18 @@ class LearnedRuns:
         )
 
     def write(self, path) -> Path:
-        """Write as JSON to ``path`` (atomically)."""
+        """Write as JSON to ``path`` (atomically).
+
+        Parameters
+        ----------
+        path : str or Path
+            The JSON file to write; its directory must exist.
+
+        Returns
+        -------
+        Path
+            The file written.
+        """
         from ..files import write_atomically
 
         text = json.dumps(self.to_dict(), indent=1, allow_nan=False) + "\n"

@@ -154,7 +154,13 @@ class TrendResult:
         return self.limits[0].excess if self.limits else math.inf
 
     def limit(self, j: int) -> float:
-        """Test ``j``'s limit in the indicator's unit."""
+        """Test ``j``'s limit in the indicator's unit.
+
+        Parameters
+        ----------
+        j : int
+            The test's index in ``tests``.
+        """
         return _indicator_value(self.tests[j][0], self.limits[j].limit)
 
     def above(self) -> np.ndarray:
@@ -201,7 +207,13 @@ class TrendResult:
         return None
 
     def test_name(self, j: int) -> str:
-        """The name of test ``j`` (an index of ``tests``): "indicator:channel"."""
+        """The name of test ``j`` (an index of ``tests``): "indicator:channel".
+
+        Parameters
+        ----------
+        j : int
+            The test's index in ``tests``.
+        """
         name, c = self.tests[j]
         return f"{name}:{self.channels[c]}"
 
@@ -453,8 +465,15 @@ class TrendResult:
     # ------------------------------------------------------------------ figure
     def plot(self, ax=None):
         """The indicators over time, the baseline, the limits and the alarm
-        (:func:`.figure.trend_figure`), on ``ax`` (six matplotlib Axes; a new figure by
-        default); returns (figure, axes)."""
+        (:func:`.figure.trend_figure`), on ``ax`` (one matplotlib Axes per panel; a new
+        figure by default); returns (figure, axes).
+
+        Parameters
+        ----------
+        ax : sequence of matplotlib Axes or None
+            One Axes per panel (one per indicator, and the velocity and the fault families
+            when computed); None: a new figure.
+        """
         from .figure import trend_figure
 
         return trend_figure(self, ax)
@@ -462,7 +481,13 @@ class TrendResult:
     def plot_life(self, ax=None):
         """The remaining life estimated over the series with its 80 % interval
         (:func:`.figure.life_figure`), on ``ax`` (a new figure by default); returns (figure,
-        axes). InputError without an estimate."""
+        axes). InputError without an estimate.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes or None
+            Where to draw; None: a new figure.
+        """
         from ..errors import InputError
         from .figure import life_figure
 

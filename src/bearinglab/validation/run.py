@@ -137,7 +137,22 @@ def run_validation(
 ) -> Validation:
     """Run ``cases`` (default: every published case, :func:`bearinglab.validation.all_cases`).
 
-    ``progress(done, total, label)`` is called before each case."""
+    ``progress(done, total, label)`` is called before each case.
+
+    Parameters
+    ----------
+    cases : sequence of Case or None
+        The cases to run (:class:`~bearinglab.validation.case.Case`); None: every published
+        case.
+    progress : callable or None
+        ``progress(done, total, label)``, called before each case with the number of cases
+        done, their total and the case's "source: quantity"; None: no report.
+
+    Returns
+    -------
+    Validation
+        Each case's verdict and the counts.
+    """
     if cases is None:
         from .. import validation
 
