@@ -260,8 +260,8 @@ def _material(values: dict):
 
 
 def bearing_from(values: dict):
-    """(BallBearing or RollerBearing, Designation or None) from a request's ``values`` (name -> value in
-    its unit): a ``designation`` and/or the explicit geometry and material, or a
+    """(BallBearing or RollerBearing, Designation or None) from a request's ``values``
+    (name -> value in its unit): a ``designation`` and/or the explicit geometry and material, or a
     ``geometry`` TOML file. Errors name the input given, with its value in its unit.
 
     Parameters
