@@ -376,7 +376,8 @@ def test_a_serial_data_set_resumes_to_every_record(tmp_path, capsys):
     line = assert_stopped(code, err, "run the same command again to make the other")
     kept = len(list((out / "_bearinglab").glob("meta-*.parquet")))
     assert f"{kept} of 30 records are kept in {out}" in line
-    assert not (out / "_bearinglab" / "failed.csv").exists()
+    failed = out / "_bearinglab" / "failed.csv"
+    assert not failed.exists(), failed.read_text()
     no_partial_files(out)
     capsys.readouterr()
     assert main(["dataset", str(out), *DATASET, "--scheduler", "serial", "--json"]) == 0
