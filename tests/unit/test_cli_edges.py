@@ -274,36 +274,5 @@ def test_no_progress_bar_off_a_terminal(tmp_path, capsys, json_output):
 
 
 # ------------------------------------------------------------------ 9: the page's snippets
-def python_blocks(page: Path) -> list[str]:
-    """The ```python blocks of a Markdown page."""
-    import re
-
-    return re.findall(r"```python\n(.*?)```", page.read_text(encoding="utf-8"), re.S)
-
-
-@pytest.mark.slow
-@pytest.mark.parametrize("number", [0, 1])
-def test_studies_page_snippets_run_as_scripts(tmp_path, number):
-    """Each ```python block of docs/capabilities/studies.md, saved as a script and run with
-    this Python as written (a LocalCluster: the workers import the script), exits 0.
-    Without ``if __name__ == "__main__":`` they crashed."""
-    import subprocess
-    import sys
-
-    root = Path(__file__).resolve().parents[2]
-    blocks = python_blocks(root / "docs" / "capabilities" / "studies.md")
-    assert len(blocks) == 2
-    if "bearing_datasets" in blocks[number]:
-        pytest.importorskip("bearing_datasets")
-    script = tmp_path / "snippet.py"
-    script.write_text(blocks[number], encoding="utf-8")
-    env = {**os.environ, "PYTHONPATH": str(root / "src")}
-    done = subprocess.run(
-        [sys.executable, str(script)],
-        cwd=tmp_path,
-        env=env,
-        capture_output=True,
-        text=True,
-        timeout=600,
-    )
-    assert done.returncode == 0, done.stderr[-2000:]
+# docs/capabilities/studies.md's ```python blocks (they crashed without
+# ``if __name__ == "__main__":``) run in tests/unit/test_readme.py with every page's.

@@ -30,18 +30,24 @@ PAGES = [ROOT / "README.md", *sorted((ROOT / "docs").rglob("*.md"))]
 EXTRAS = {"ross": "ross", "examples": "sklearn"}
 
 
-def shell_lines(page: Path) -> list[str]:
-    """The ``bearinglab`` and ``python`` lines of a page's ```sh blocks, continuations
-    joined and comments dropped."""
+def shell_blocks(page: Path) -> list[list[str]]:
+    """The ``bearinglab`` and ``python`` lines of each of a page's ```sh blocks,
+    continuations joined and comments dropped (a block is self-contained: what a line
+    reads, a line of the same block wrote)."""
     text = page.read_text(encoding="utf-8")
-    lines = []
+    blocks = []
     for block in re.findall(r"```sh\n(.*?)```", text, flags=re.S):
         joined = re.sub(r"\\\n\s*", " ", block)
-        for line in joined.splitlines():
-            line = line.split("  #")[0].strip()
-            if line.startswith(("bearinglab ", "python ")):
-                lines.append(line)
-    return lines
+        lines = [line.split("  #")[0].strip() for line in joined.splitlines()]
+        lines = [line for line in lines if line.startswith(("bearinglab ", "python "))]
+        if lines:
+            blocks.append(lines)
+    return blocks
+
+
+def shell_lines(page: Path) -> list[str]:
+    """The ``bearinglab`` and ``python`` lines of a page's ```sh blocks, in order."""
+    return [line for block in shell_blocks(page) for line in block]
 
 
 def python_blocks(page: Path) -> list[str]:
@@ -88,13 +94,26 @@ def _needs(block: str, python: str) -> str | None:
     return None if found.returncode == 0 else match.group(1)
 
 
+def _examples() -> list[tuple[Path, int | None]]:
+    """(page, index of its ```sh block) for every block, and (page, None) for a page's
+    ```python blocks: one test each, so that the long pages spread over the workers."""
+    out = []
+    for page in PAGES:
+        out += [(page, k) for k in range(len(shell_blocks(page)))]
+        if python_blocks(page):
+            out.append((page, None))
+    return out
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize(
-    "page",
-    [p for p in PAGES if shell_lines(p) or python_blocks(p)],
-    ids=lambda p: str(p.relative_to(ROOT)),
+    "page, block",
+    _examples(),
+    ids=lambda v: (
+        str(v.relative_to(ROOT)) if isinstance(v, Path) else ("python" if v is None else f"sh{v}")
+    ),
 )
-def test_every_example_runs_as_written(tmp_path, page):
+def test_every_example_runs_as_written(tmp_path, page, block):
     binary, python = _binaries()
     root = tmp_path / "main"
     root.mkdir()
@@ -104,7 +123,7 @@ def test_every_example_runs_as_written(tmp_path, page):
     env = {**os.environ, "MPLBACKEND": "Agg", "PYTHONDONTWRITEBYTECODE": "1"}
     env.pop("PYTHONPATH", None)  # the install under test, not this checkout
     failed = []
-    for line in shell_lines(page):
+    for line in [] if block is None else shell_blocks(page)[block]:
         if "../shared" in line and not SHARED.is_dir():
             continue
         program, *args = shlex.split(line)
@@ -114,11 +133,11 @@ def test_every_example_runs_as_written(tmp_path, page):
         )
         if done.returncode != 0:
             failed.append(f"{line}\n  -> exit {done.returncode}: {done.stderr.strip()[-400:]}")
-    for i, block in enumerate(python_blocks(page)):
-        if _needs(block, python) is not None:
+    for i, code in enumerate(python_blocks(page) if block is None else []):
+        if _needs(code, python) is not None:
             continue
         script = root / f"block{i}.py"
-        script.write_text(block, encoding="utf-8")
+        script.write_text(code, encoding="utf-8")
         done = subprocess.run(
             [python, script.name], cwd=root, env=env, capture_output=True, text=True, timeout=600
         )
