@@ -24,8 +24,64 @@ STIFFNESS_UNITS = [
 ]
 
 
+class RingResult:
+    """What a ball and a roller load distribution share: the inner ring's displacement
+    along the load, its stiffness along it and axially (seed 001's S_r, S_a, C_r, C_a), and
+    the stiffness matrix as tables. Needs ``condition``, ``displacement`` (5,) [m, rad]
+    and ``stiffness_matrix`` (5, 5) [SI]."""
+
+    @property
+    def radial_direction(self) -> np.ndarray:
+        """Unit vector of the radial load (or of the radial displacement if no load)."""
+        f = self.condition.load_vector()[:2]
+        if np.hypot(*f) > 0:
+            return f / np.hypot(*f)
+        d = self.displacement[:2]
+        return d / np.hypot(*d) if np.hypot(*d) > 0 else np.array([0.0, -1.0])
+
+    @property
+    def radial_displacement(self) -> float:
+        """Inner-ring displacement along the radial load direction, S_r of seed 001 [m]."""
+        return float(self.displacement[:2] @ self.radial_direction)
+
+    @property
+    def axial_displacement(self) -> float:
+        """Axial inner-ring displacement S_a from the centred position [m]."""
+        return float(self.displacement[2])
+
+    @property
+    def radial_stiffness(self) -> float:
+        """C_r = dF_r/dS_r at fixed other displacements (seed 001) [N/m]."""
+        e = self.radial_direction
+        return float(e @ self.stiffness_matrix[:2, :2] @ e)
+
+    @property
+    def axial_stiffness(self) -> float:
+        """C_a = dF_a/dS_a at fixed other displacements (seed 001) [N/m]."""
+        return float(self.stiffness_matrix[2, 2])
+
+    def stiffness_matrix_shown(self, relative: float = 1e-9) -> np.ndarray:
+        """The stiffness matrix with the solver's round-off (entries below ``relative``
+        times the largest) set to 0, for tables [SI].
+
+        Parameters
+        ----------
+        relative : float
+            Entries whose magnitude is below ``relative`` times the largest magnitude are set to
+            0 [-]; default 1e-9.
+        """
+        k = np.asarray(self.stiffness_matrix, dtype=float)
+        return np.where(np.abs(k) < relative * np.max(np.abs(k)), 0.0, k)
+
+    def stiffness_frame(self):
+        """The 5x5 stiffness matrix as a table with named rows and columns (SI), for CSV."""
+        import pandas as pd
+
+        return pd.DataFrame(self.stiffness_matrix, index=list(DOF_NAMES), columns=list(DOF_NAMES))
+
+
 @dataclass(frozen=True)
-class LoadDistribution:
+class LoadDistribution(RingResult):
     """Quasi-static equilibrium of a ball bearing.
 
     Attributes
@@ -87,37 +143,6 @@ class LoadDistribution:
         if self.orbital_speed is None:
             return math.nan
         return float(np.mean(self.orbital_speed))
-
-    # ---------------------------------------------------------------- derived
-    @property
-    def radial_direction(self) -> np.ndarray:
-        """Unit vector of the radial load (or of the radial displacement if no load)."""
-        f = self.condition.load_vector()[:2]
-        if np.hypot(*f) > 0:
-            return f / np.hypot(*f)
-        d = self.displacement[:2]
-        return d / np.hypot(*d) if np.hypot(*d) > 0 else np.array([0.0, -1.0])
-
-    @property
-    def radial_displacement(self) -> float:
-        """Inner-ring displacement along the radial load direction, S_r of seed 001 [m]."""
-        return float(self.displacement[:2] @ self.radial_direction)
-
-    @property
-    def axial_displacement(self) -> float:
-        """Axial inner-ring displacement S_a from the centred position [m]."""
-        return float(self.displacement[2])
-
-    @property
-    def radial_stiffness(self) -> float:
-        """C_r = dF_r/dS_r at fixed other displacements (seed 001) [N/m]."""
-        e = self.radial_direction
-        return float(e @ self.stiffness_matrix[:2, :2] @ e)
-
-    @property
-    def axial_stiffness(self) -> float:
-        """C_a = dF_a/dS_a at fixed other displacements (seed 001) [N/m]."""
-        return float(self.stiffness_matrix[2, 2])
 
     @property
     def contact_points(self) -> np.ndarray:
@@ -273,25 +298,6 @@ class LoadDistribution:
             "warnings": list(self.warnings),
             "balls": balls,
         }
-
-    def stiffness_matrix_shown(self, relative: float = 1e-9) -> np.ndarray:
-        """The stiffness matrix with the solver's round-off (entries below ``relative``
-        times the largest) set to 0, for tables [SI].
-
-        Parameters
-        ----------
-        relative : float
-            Entries whose magnitude is below ``relative`` times the largest magnitude are set to
-            0 [-]; default 1e-9.
-        """
-        k = np.asarray(self.stiffness_matrix, dtype=float)
-        return np.where(np.abs(k) < relative * np.max(np.abs(k)), 0.0, k)
-
-    def stiffness_frame(self):
-        """The 5x5 stiffness matrix as a table with named rows and columns (SI), for CSV."""
-        import pandas as pd
-
-        return pd.DataFrame(self.stiffness_matrix, index=list(DOF_NAMES), columns=list(DOF_NAMES))
 
     def plot(self, axes=None):
         """Polar load distribution and contact angles on ``axes`` (a polar and a plain

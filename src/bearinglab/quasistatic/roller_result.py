@@ -16,7 +16,7 @@ import numpy as np
 from ..contact.line import line_contact, roller_raceway_radii
 from ..operating import OperatingCondition
 from ..roller_geometry import RollerBearing
-from .result import STIFFNESS_UNITS
+from .result import STIFFNESS_UNITS, RingResult
 
 DOF_NAMES = ("x", "y", "z", "tilt_x", "tilt_y")
 #: An end slice carrying this many times its roller's mean slice load is edge loading [-].
@@ -24,7 +24,7 @@ EDGE_LOAD_RATIO = 1.5
 
 
 @dataclass(frozen=True)
-class RollerLoadDistribution:
+class RollerLoadDistribution(RingResult):
     """Quasi-static equilibrium of a roller bearing.
 
     Attributes
@@ -139,36 +139,6 @@ class RollerLoadDistribution:
     def max_roller_load(self) -> float:
         """Largest load of one roller on one raceway (``max_roller_load_n``) [N]."""
         return float(max(np.max(self.inner_roller_load), np.max(self.outer_roller_load)))
-
-    @property
-    def radial_direction(self) -> np.ndarray:
-        """Unit vector of the radial load (or of the radial displacement if no load)."""
-        f = self.condition.load_vector()[:2]
-        if np.hypot(*f) > 0:
-            return f / np.hypot(*f)
-        d = self.displacement[:2]
-        return d / np.hypot(*d) if np.hypot(*d) > 0 else np.array([0.0, -1.0])
-
-    @property
-    def radial_displacement(self) -> float:
-        """Inner-ring displacement along the radial load direction [m]."""
-        return float(self.displacement[:2] @ self.radial_direction)
-
-    @property
-    def axial_displacement(self) -> float:
-        """Axial inner-ring displacement [m]."""
-        return float(self.displacement[2])
-
-    @property
-    def radial_stiffness(self) -> float:
-        """dF_r/dS_r at fixed other displacements [N/m]."""
-        e = self.radial_direction
-        return float(e @ self.stiffness_matrix[:2, :2] @ e)
-
-    @property
-    def axial_stiffness(self) -> float:
-        """dF_a/dS_a at fixed other displacements [N/m]."""
-        return float(self.stiffness_matrix[2, 2])
 
     @property
     def induced_axial_force(self) -> float:
@@ -333,23 +303,6 @@ class RollerLoadDistribution:
         if self.centrifugal_force > 0:
             out["centrifugal_force_n"] = self.centrifugal_force
         return out
-
-    def stiffness_matrix_shown(self, relative: float = 1e-9) -> np.ndarray:
-        """The stiffness matrix with round-off below ``relative`` x the largest set to 0 [SI].
-
-        Parameters
-        ----------
-        relative : float
-            Threshold relative to the largest entry [-].
-        """
-        k = np.asarray(self.stiffness_matrix, dtype=float)
-        return np.where(np.abs(k) < relative * np.max(np.abs(k)), 0.0, k)
-
-    def stiffness_frame(self):
-        """The 5x5 stiffness matrix as a table with named rows and columns (SI)."""
-        import pandas as pd
-
-        return pd.DataFrame(self.stiffness_matrix, index=list(DOF_NAMES), columns=list(DOF_NAMES))
 
     def plot(self, axes=None):
         """Roller loads round the bearing and the slice loads of the heaviest roller on
