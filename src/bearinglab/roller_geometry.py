@@ -384,7 +384,9 @@ class RollerBearing:
                 positive_number(name, getattr(self, name), "a positive length [m]")
         d, big_d = self.bore, self.outside_diameter
         if d is not None and big_d is not None and d >= big_d:
-            raise InputError("bore", d, f"less than the outside diameter {big_d:.6g} m")
+            raise InputError(
+                "bore", d, "less than the outside diameter {D}", unit="m", numbers={"D": big_d}
+            )
         if d is not None and self.inner_raceway_diameter <= d:
             raise InputError(
                 "roller_diameter",

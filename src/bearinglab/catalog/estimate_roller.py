@@ -150,7 +150,13 @@ def estimate_roller_geometry(
     for name, value in (("bore", bore), ("outside_diameter", outside_diameter), ("width", width)):
         positive_number(name, value, "a positive length [m]")
     if outside_diameter <= bore:
-        raise InputError("outside_diameter", outside_diameter, f"more than the bore {bore:.6g} m")
+        raise InputError(
+            "outside_diameter",
+            outside_diameter,
+            "more than the bore {d}",
+            unit="m",
+            numbers={"d": bore},
+        )
     pitch = 0.5 * (bore + outside_diameter)
     diameter = ROLLER_DIAMETER_FACTOR * (outside_diameter - bore)
     factor = (
