@@ -30,13 +30,6 @@ pytestmark = pytest.mark.skipif(
 
 #: Y records (with some method) the default method does not diagnose: file -> reason.
 NOT_REPRODUCED = {
-    "cwru/12k_DE/3005.mat": "ball 0.028 in, Y2 with M1 only (no tachometer: the speed is "
-    "checked by the fault's series): with the tail's reading (issue 27, 2026-11-29) the "
-    "ball series reaches 10^-3.3 (level 10^-2.6) and its harmonics 10^-3.6, but 10^-1.8 "
-    "without 2 BSF (support gate 10^-2): 2 BSF (z 16.7) and 6 BSF (z 8.9) stand among "
-    "low-frequency lines of z 5.5-7.0 (17.6, 23.4, 36.6, 54.2 Hz) that make the record's "
-    "clutter, so that neither reaches past 10^-3.3. With the rank's reading it was right "
-    "(10^-3.14, without 2 BSF 10^-2.06)",
     "cwru/12k_DE/197.mat": "outer 0.014 in at 6 o'clock, Y2 with M3 only: the cpw SES is "
     "flat (largest line z 3.9), outer race 10^-0.0 with cpw and "
     "drs-sk, 10^-0.3 with raw; our fast-kurtogram band does not "

@@ -17,7 +17,7 @@ import scipy.special
 import scipy.stats
 
 from bearinglab.diagnosis.chain import chain_logp, chain_steps
-from bearinglab.diagnosis.speed import shaft_multiple, supply_line
+from bearinglab.diagnosis.speed import line_near, shaft_multiple, supply_line
 from bearinglab.diagnosis.statistics import (
     _window_max,
     line_logp,
@@ -151,3 +151,16 @@ def test_mains_at_120_hz_is_not_a_shaft_at_4_times_the_speed():
     assert shaft_multiple(x, fs, 1772 / 60) is None
     # the same lines where the given speed puts its 4th harmonic are a shaft's
     assert shaft_multiple(x, fs, 30.0) == (4, pytest.approx(120.0, rel=1e-3))
+
+
+def test_a_line_at_the_speed_given_is_found_in_a_busy_spectrum():
+    # HIT-SM Normal_900's shape: the shaft line at 15.23 Hz (900 rpm given), stronger 2nd
+    # and 4th harmonics, a strong 4.5 Hz line, the 50 Hz mains; in noise alone, no line
+    fs, t = 5000.0, np.arange(25000) / 5000.0
+    rng = np.random.default_rng(2)
+    x = rng.standard_normal(t.size)
+    for f, a in ((15.23, 0.3), (30.46, 0.6), (60.92, 0.6), (4.49, 1.5), (50.0, 0.7)):
+        x = x + a * np.sin(2 * np.pi * f * t + rng.uniform(0, 6))
+    found = line_near(x, fs, 15.0)
+    assert found is not None and found[0] == pytest.approx(15.23, abs=0.25)
+    assert line_near(rng.standard_normal(t.size), fs, 15.0) is None
