@@ -151,3 +151,14 @@ def test_sidebands_are_spaced_by_the_rates_the_signal_shows():
     # the fundamentals stay at the speed given
     assert by_name["inner_race"].frequency == 162.0 and by_name["cage"].frequency == 12.0
     assert families(freqs, tolerances())[1].modulation == 30.0
+
+
+def test_an_accepted_series_explains_its_harmonics_beyond_the_search_limit():
+    # the tail's reference runs beyond the search limit: an accepted fault's higher
+    # harmonics are masked there too, or they stand as clutter against a second fault
+    lines = tuple(Line("harmonic", n, 0, 100.0 * n, 100.0 * n, 50.0, -20.0) for n in (1, 2, 3))
+    test = SeriesTest(-50.0, -40.0, -45.0, 100.0, 0.0, lines, 10)
+    near = verdict.explained(test, (29.0, 11.6))
+    far = verdict.explained(test, (29.0, 11.6), 1000.0)
+    assert 1000.0 not in near and {400.0, 1000.0} <= set(far)
+    assert 1000.0 - 29.0 in far and 400.0 + 11.6 in far  # with their intermodulation

@@ -73,6 +73,26 @@ def verdict_reason(faults, table, decision, pfa) -> str:
         )
     if decision["modulation"]:
         parts.append("FTF lines counted as the cage-rate modulation of the fault")
+    # a second series above the threshold beside the fault, not named: say so (a compound
+    # fault is reported whole, or its second part is said to be short of the gates)
+    gate = significance(SUPPORT_ALPHA)
+    for f in FAMILIES:
+        t = table[f]
+        if f in faults or f in decision["modulation"] or t["significance"] <= threshold:
+            continue
+        short = [
+            f"{what} {value:.3g}"
+            for what, value in (
+                (f"its harmonics {_gated(f)}", t["harmonic_significance"]),
+                ("without its strongest line", t["support_significance"]),
+            )
+            if value < gate
+        ]
+        parts.append(
+            f"{f} also reaches {t['significance']:.3g} > {threshold:.3g} by {t['method']} "
+            "beside it, not named a second fault"
+            + (f": {' and '.join(short)} (at least {gate:.3g} needed)" if short else "")
+        )
     return "; ".join(parts)
 
 
