@@ -22,7 +22,7 @@ from .families import (
     families,
     tolerances,
 )
-from .methods import METHODS, method_spectrum, parse_methods
+from .methods import IES_NOTE, METHODS, method_spectrum, parse_methods
 from .reasons import doubt_reason, stray_warning, verdict_reason
 from .result import Diagnosis
 from .speed import SPEED_CONFIRMING, speed_used
@@ -287,6 +287,8 @@ def analyze_signal(
     mesh = _positive("mesh_frequency", mesh_frequency, "a frequency > 0 Hz")
     metadata = getattr(signal_or_array, "metadata", {})
     warnings: list[str] = list(check_channel(x, channel or "the array", "signal_or_array"))
+    if "ies" in names:  # issue 27: labelled as no verdict at a stated probability
+        warnings.append(IES_NOTE)
     warnings += metadata.get("reading_notes", [])
     stored = metadata.get("stored_sample_rate_hz")
     if stored is not None and abs(stored - fs) > 1e-9 * fs:

@@ -47,7 +47,7 @@ import numpy as np
 #: level, and the quadrature of the moves' terms would underflow.
 FAR = -600.0
 #: Points of the quadrature of a move's term [-].
-QUADRATURE_POINTS = 241
+QUADRATURE_POINTS = 121
 
 
 def _within(counts: np.ndarray) -> np.ndarray:

@@ -831,9 +831,11 @@ def _continuation(grid, n_max, orders, modulation, top, ref_top, resolution, liv
 def tail_tables(
     z, zmax, count, bottom_bin, near_bin, top_bin, values, index, uses, hills, beyond=None
 ) -> dict:
-    """ln p of every candidate's lines, one table per nested template (``uses``: template
-    -> rows x lines bool), each line read against the positions that are not the
-    template's own lines at its fundamental (:func:`own_intervals`).
+    """ln p of every candidate's lines (``uses``: nested template -> rows x lines bool;
+    the same table for each), each line read against the positions that are not the
+    family's own at its fundamental (:func:`own_intervals`): every line its deepest
+    template reads there, and its harmonics continued beyond the search limit
+    (``beyond``: :func:`_continuation`).
 
     Up to u, the upper TAIL_Q quantile of the positions from ``bottom_bin`` to
     ``top_bin``: the rank among all of them (the candidate's own included: in-sample,
@@ -886,54 +888,75 @@ def tail_tables(
     prefix = np.concatenate([np.zeros((1, 6)), np.cumsum(basis.astype(float), axis=0)])
     totals = prefix[-1]
     regions = {"near": ok & below, "all": ok}
-    tables = {}
-    for d, use in uses.items():
-        if beyond is None:
-            lo, hi = own_intervals(index, use, hills, zmax.size)
-        else:
-            more_index, more_k = beyond
-            more = more_index >= 0
-            if d in uses:
-                more = more & (np.abs(more_k) <= d)[None, :]
-            lo, hi = own_intervals(
-                np.concatenate([index, np.maximum(more_index, 0)], axis=1),
-                np.concatenate([use, more], axis=1),
-                hills,
-                zmax.size,
-            )
-        m_n, s_n, c_n, m_f, s_f, c_f = (totals[None, :] - _interval_sums(prefix, lo, hi)).T
-        # are the exceedances below the limit more frequent, or larger, than above it?
-        a, b = np.maximum(m_n * cluster, 0.5), np.maximum(m_f * cluster, 0.5)
-        ratio = (s_n / np.maximum(m_n, 1.0)) / np.maximum(s_f / np.maximum(m_f, 1.0), 1e-12)
-        p_scale = scipy.special.fdtrc(2.0 * a, 2.0 * b, ratio)
-        k = np.round(m_n * cluster).astype(int)
-        total = np.maximum(np.round((m_n + m_f) * cluster).astype(int), k)
-        share = c_n / np.maximum(c_n + c_f, 1.0)
-        p_rate = np.where(k > 0, scipy.special.bdtrc(np.maximum(k - 1, 0), total, share), 1.0)
-        alone = (c_f < 1) | (np.minimum(p_scale, p_rate) < POOL_ALPHA)
-        lp = np.zeros(values.shape)
-        for name, rows in (("near", alone), ("all", ~alone)):
-            if rows.any():
-                lp[rows] = _region_logp(z, zmax, regions[name], values[rows], lo[rows], hi[rows])
-        tables[d] = np.where(uses[max(uses)], lp, 0.0)
+    # the family's own positions at each fundamental: every line its deepest template
+    # reads there, and the series' continuation beyond the search limit
+    use = uses[max(uses)]
+    if beyond is None:
+        lo, hi = own_intervals(index, use, hills, zmax.size)
+    else:
+        more_index, _ = beyond
+        lo, hi = own_intervals(
+            np.concatenate([index, np.maximum(more_index, 0)], axis=1),
+            np.concatenate([use, more_index >= 0], axis=1),
+            hills,
+            zmax.size,
+        )
+    m_n, s_n, c_n, m_f, s_f, c_f = (totals[None, :] - _interval_sums(prefix, lo, hi)).T
+    # are the exceedances below the limit more frequent, or larger, than above it?
+    a, b = np.maximum(m_n * cluster, 0.5), np.maximum(m_f * cluster, 0.5)
+    ratio = (s_n / np.maximum(m_n, 1.0)) / np.maximum(s_f / np.maximum(m_f, 1.0), 1e-12)
+    p_scale = scipy.special.fdtrc(2.0 * a, 2.0 * b, ratio)
+    k = np.round(m_n * cluster).astype(int)
+    total = np.maximum(np.round((m_n + m_f) * cluster).astype(int), k)
+    share = c_n / np.maximum(c_n + c_f, 1.0)
+    p_rate = np.where(k > 0, scipy.special.bdtrc(np.maximum(k - 1, 0), total, share), 1.0)
+    alone = (c_f < 1) | (np.minimum(p_scale, p_rate) < POOL_ALPHA)
+    lp = np.zeros(values.shape)
+    for name, rows in (("near", alone), ("all", ~alone)):
+        if rows.any():
+            fit = _region(z, zmax, regions[name])
+            lp[rows] = _region_logp(zmax, fit, values[rows], lo[rows], hi[rows])
+    table = np.where(use, lp, 0.0)
+    tables = {d: table for d in uses}
     return tables
 
 
-def _region_logp(z, zmax, region, values, lo, hi) -> np.ndarray:
-    """ln p of the lines ``values`` (rows x lines) against the positions of ``region``
-    that are not each row's own (merged intervals ``lo``..``hi``): see :func:`tail_tables`."""
+def _region(z, zmax, region) -> dict:
+    """What the tail of ``region``'s positions is fitted from, whatever the candidate:
+    the sorted readings, the threshold u, the clusters per exceedance, the noise's scale,
+    x*, the prefix sums of the noise's exceedances and of the positions, and the
+    clutter's peaks with their heights (see :func:`tail_tables`)."""
     pos = np.flatnonzero(region)
     ref = np.sort(zmax[pos])
-    n = ref.size
-    u = ref[int((1 - TAIL_Q) * n)]
-    cluster = _cluster(zmax, region, ref)
+    u = ref[int((1 - TAIL_Q) * ref.size)]
     over = region & (zmax > u)
     excess = np.where(over, zmax - u, 0.0)
     scale = max(float(np.median(excess[over])) / math.log(2.0), 1e-12) if over.any() else 1.0
     cut = scale * math.log(2.0 * max(int(over.sum()), 1))
-    clutter = over & (excess > cut)
-    basis = np.stack([over & ~clutter, region]).T.astype(float)
-    prefix = np.concatenate([np.zeros((1, 2)), np.cumsum(basis, axis=0)])
+    basis = np.stack([over & ~(excess > cut), region]).T.astype(float)
+    zz = np.where(region, z[: zmax.size], -np.inf)
+    peak = np.zeros(zmax.size, bool)
+    peak[1:-1] = (zz[1:-1] >= zz[:-2]) & (zz[1:-1] > zz[2:]) & (zz[1:-1] > u + cut)
+    peaks = np.flatnonzero(peak)
+    return {
+        "mask": region,
+        "ref": ref,
+        "u": u,
+        "cluster": _cluster(zmax, region, ref),
+        "scale": scale,
+        "cut": cut,
+        "prefix": np.concatenate([np.zeros((1, 2)), np.cumsum(basis, axis=0)]),
+        "peaks": peaks,
+        "heights": z[peaks],
+    }
+
+
+def _region_logp(zmax, fit, values, lo, hi) -> np.ndarray:
+    """ln p of the lines ``values`` (rows x lines) against the positions of a region
+    (``fit``: :func:`_region`) that are not each row's own (merged intervals
+    ``lo``..``hi``): see :func:`tail_tables`."""
+    u, cut, scale, cluster = fit["u"], fit["cut"], fit["scale"], fit["cluster"]
+    prefix, peaks, heights = fit["prefix"], fit["peaks"], fit["heights"]
     m, c = (prefix[-1][None, :] - _interval_sums(prefix, lo, hi)).T
     c = np.maximum(c, 1.0)
     x = np.maximum(values - u, 0.0)
@@ -944,26 +967,22 @@ def _region_logp(z, zmax, region, values, lo, hi) -> np.ndarray:
     # are not the row's own: within their range the share of the positions not the row's
     # own that read as much; beyond the largest, the chance to exceed them all, falling
     # off by the peaks' own predictive law
-    zz = np.where(region, z[: zmax.size], -np.inf)
-    peak = np.zeros(zmax.size, bool)
-    peak[1:-1] = (zz[1:-1] >= zz[:-2]) & (zz[1:-1] > zz[2:]) & (zz[1:-1] > u + cut)
-    peaks = np.flatnonzero(peak)
-    if peaks.size:
-        heights = z[peaks]
+    high = values > u + cut
+    if peaks.size and high.any():
         inside = (lo[:, :, None] <= peaks[None, None, :]) & (peaks[None, None, :] <= hi[:, :, None])
         free_peak = ~inside.any(axis=1)
         kc = free_peak.sum(axis=1).astype(float)
         top = np.where(free_peak, heights[None, :], u + cut).max(axis=1)
         mean = np.where(free_peak, heights[None, :] - u - cut, 0.0).sum(axis=1)
         mean = np.maximum(mean / np.maximum(kc, 1.0), 1e-12)
-        high = values > u + cut
-        reach = _free_count(zmax, region, values, high, lo, hi)
+        reach = _free_count(zmax, fit["mask"], values, high, lo, hi)
         k_c = np.maximum(kc, 1.0)[:, None]
         beyond = np.maximum(values - top[:, None], 0.0)
         fall = np.exp(-k_c * np.log1p(beyond / (k_c * mean[:, None])))
         part = np.where(reach > 0, reach, fall) / (1.0 + c)[:, None]
         law = law + np.where((kc[:, None] > 0) & high, part, 0.0)
-    rank = np.log((1.0 + n - np.searchsorted(ref, values, side="left")) / (1.0 + n))
+    n = fit["ref"].size
+    rank = np.log((1.0 + n - np.searchsorted(fit["ref"], values, side="left")) / (1.0 + n))
     return np.where(values > u, np.minimum(np.log(np.maximum(law, 1e-300)), 0.0), rank)
 
 
@@ -971,21 +990,22 @@ def _free_count(zmax, region, values, which, lo, hi) -> np.ndarray:
     """For the lines ``which`` (rows x lines), the positions of ``region`` that are not the
     row's own (merged intervals ``lo``..``hi``) and read at least the line's value."""
     out = np.zeros(values.shape)
-    rows = np.flatnonzero(which.any(axis=1))
-    if rows.size == 0:
+    r, j = np.nonzero(which)
+    if r.size == 0:
         return out
-    values_r = np.where(which[rows], values[rows], np.inf)
+    v = values[r, j]
     ref = np.sort(zmax[region])
-    total = ref.size - np.searchsorted(ref, values_r, side="left")
+    total = ref.size - np.searchsorted(ref, v, side="left")
     # the row's own positions in the region, and how many of them reach each value
+    rows, back = np.unique(r, return_inverse=True)
     width = int(np.max(hi[rows] - lo[rows], initial=-1)) + 1
     if width > 0:
         at = lo[rows][:, :, None] + np.arange(width)[None, None, :]
         inside = at <= hi[rows][:, :, None]
         at = np.clip(at, 0, zmax.size - 1)
         own_z = np.where(inside & region[at], zmax[at], -np.inf).reshape(rows.size, -1)
-        total = total - (own_z[:, :, None] >= values_r[:, None, :]).sum(axis=1)
-    out[rows] = np.where(which[rows], total, 0)
+        total = total - (own_z[back] >= v[:, None]).sum(axis=1)
+    out[r, j] = total
     return out
 
 
