@@ -151,6 +151,16 @@ def series_shape(lines, second: bool = False) -> str | None:
     return None
 
 
+def _reach(reference, spec):
+    """The top of the tail's reference for a method's spectrum [Hz]: ``reference``, or the
+    demodulation band's width where that is narrower (the squared envelope of a band holds
+    cyclic frequencies up to its width only: beyond, drs-sk's spectrum is its own roll-off)."""
+    band = getattr(spec, "band", None)
+    if reference is None or band is None:
+        return reference
+    return min(reference, float(band[1]) - float(band[0]))
+
+
 def test_all(
     spectra,
     fams: list[Family],
@@ -183,7 +193,7 @@ def test_all(
                 bottom,
                 fam.gate_carriers,
                 tail=True,
-                reference=reference,
+                reference=_reach(reference, spec),
             )
     return out
 
