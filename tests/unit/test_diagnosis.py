@@ -591,6 +591,15 @@ def test_the_reason_names_the_gate_that_stopped_a_family_above_the_threshold():
     assert "strongest" not in gated  # that test passed
     weak = _reason((), {**table, "ball": row(1.2, 1.2, 0.3)}, decision, 0.01)
     assert "stands out" in weak and "best: ball 1.2" in weak
+    # beside a fault, a second series above the threshold stopped by a gate is said too
+    # (issue 27: the README's ER-16K with an outer-race and a ball defect read "outer
+    # race" with no word on the ball; cpw: ball 10^-4.1, its harmonics 10^-1.35)
+    outer = {**row(24.7, 25.1, 20.3), "lines": [], "fundamental_hz": 104.1, "slip": -0.001}
+    both = {**table, "outer_race": outer, "ball": row(4.13, 1.35, 2.8)}
+    said = _reason(("outer_race",), both, decision, 0.01)
+    assert said.startswith("outer_race: bpfo 104.1 Hz")
+    assert "ball also reaches 4.13 > 2.6 by cpw beside it, not named a second fault" in said
+    assert "first sidebands 1.35 (at least 2 needed)" in said
 
 
 def test_a_speed_range_that_misses_the_given_speed_is_named(kin):

@@ -7,14 +7,24 @@ import pytest
 
 import bearinglab.diagnosis.verdict as verdict
 from bearinglab.diagnosis.families import Family, families, tolerances
-from bearinglab.diagnosis.statistics import LINE_BINS, SeriesTest, series_test, welch_dof
+from bearinglab.diagnosis.statistics import (
+    LINE_BINS,
+    Line,
+    SeriesTest,
+    series_test,
+    welch_dof,
+)
 
 LN10 = math.log(10.0)
 
 
 def _test(significance, harmonics, support):
-    """A SeriesTest with these -log10 p-values (series, harmonics, without its strongest)."""
-    return SeriesTest(-significance * LN10, -support * LN10, -harmonics * LN10, 100.0, 0.0, (), 10)
+    """A SeriesTest with these -log10 p-values (series, harmonics, without its strongest),
+    its first harmonic shown (a fault's series shows one of its carriers)."""
+    line = Line("harmonic", 1, 0, 100.0, 100.0, 10.0, -3 * LN10)
+    return SeriesTest(
+        -significance * LN10, -support * LN10, -harmonics * LN10, 100.0, 0.0, (line,), 10
+    )
 
 
 class _Spectrum:
@@ -49,6 +59,45 @@ def test_a_family_passing_every_gate_by_one_method_is_not_dropped_for_another(mo
     table[("cpw", "outer_race")] = _test(6.0, 1.0, 5.0)
     d = _decide(monkeypatch, [table], fams)
     assert d["faults"] == [] and d["tests"]["outer_race"][0] == "raw"
+
+
+def _with_harmonics(test, shown):
+    """``test`` with harmonics ``shown`` at 10^-3 (and the 2nd, if not shown, at 0.5)."""
+    lines = tuple(
+        Line("harmonic", n, 0, 100.0 * n, 100.0 * n, 5.0, math.log(1e-3 if n in shown else 0.5))
+        for n in sorted(set(shown) | {2})
+    )
+    return SeriesTest(test.log_p, test.support_log_p, test.harmonic_log_p, 100.0, 0.0, lines, 10)
+
+
+def test_a_second_fault_needs_two_harmonics_of_its_own(monkeypatch):
+    # issue 27: MFPT inner-race files 4 and 6 got "compound: inner race + outer race"
+    # from one BPFO harmonic (and its sidebands) beside the inner-race series
+    fams = [
+        Family("inner_race", 30.0, 0.02, 0.02, 5.0, 2),
+        Family("outer_race", 20.0, 0.02, 0.02, 5.0, 2),
+    ]
+    first = {
+        ("raw", "inner_race"): _with_harmonics(_test(12.0, 9.0, 8.0), (1, 2)),
+        ("raw", "outer_race"): _with_harmonics(_test(5.0, 4.0, 3.0), (1,)),
+    }
+    second = {("raw", "outer_race"): first[("raw", "outer_race")]}
+    d = _decide(monkeypatch, [first, second], fams, methods=("raw",))
+    assert d["faults"] == ["inner_race"]
+    # with two of its harmonics shown it is a compound fault
+    second = {("raw", "outer_race"): _with_harmonics(_test(5.0, 4.0, 3.0), (1, 2))}
+    d = _decide(monkeypatch, [first, second], fams, methods=("raw",))
+    assert d["faults"] == ["inner_race", "outer_race"]
+
+
+def test_a_first_fault_shows_one_of_its_harmonics(monkeypatch):
+    # the drive-end outer-race series of CWRU 130 read on the fan-end channel for the
+    # 6203 sat on its ball sidebands n (2 BSF) - n FTF: "ball" from sidebands alone
+    fams = [Family("ball", 30.0, 0.07, 0.02, 2.0, 2)]
+    table = {("raw", "ball"): _with_harmonics(_test(16.9, 5.4, 5.4), ())}
+    assert _decide(monkeypatch, [table], fams, methods=("raw",))["faults"] == []
+    table = {("raw", "ball"): _with_harmonics(_test(16.9, 5.4, 5.4), (2,))}
+    assert _decide(monkeypatch, [table], fams, methods=("raw",))["faults"] == ["ball"]
 
 
 def test_a_ball_beside_a_cage_series_is_read_before_the_cage_lines_are_masked(monkeypatch):
@@ -102,3 +151,14 @@ def test_sidebands_are_spaced_by_the_rates_the_signal_shows():
     # the fundamentals stay at the speed given
     assert by_name["inner_race"].frequency == 162.0 and by_name["cage"].frequency == 12.0
     assert families(freqs, tolerances())[1].modulation == 30.0
+
+
+def test_an_accepted_series_explains_its_harmonics_beyond_the_search_limit():
+    # the tail's reference runs beyond the search limit: an accepted fault's higher
+    # harmonics are masked there too, or they stand as clutter against a second fault
+    lines = tuple(Line("harmonic", n, 0, 100.0 * n, 100.0 * n, 50.0, -20.0) for n in (1, 2, 3))
+    test = SeriesTest(-50.0, -40.0, -45.0, 100.0, 0.0, lines, 10)
+    near = verdict.explained(test, (29.0, 11.6))
+    far = verdict.explained(test, (29.0, 11.6), 1000.0)
+    assert 1000.0 not in near and {400.0, 1000.0} <= set(far)
+    assert 1000.0 - 29.0 in far and 400.0 + 11.6 in far  # with their intermodulation

@@ -23,11 +23,11 @@ from .families import (
     families,
     tolerances,
 )
-from .methods import METHODS, method_spectrum, parse_methods
+from .methods import IES_NOTE, METHODS, method_spectrum, parse_methods
 from .reasons import doubt_reason, stray_warning, verdict_reason
 from .result import Diagnosis
 from .speed import SPEED_CONFIRMING, speed_used
-from .statistics import LINE_ALPHA, decades
+from .statistics import LINE_ALPHA, REFERENCE_POSITIONS, decades
 from .verdict import NO_FAULT, decide, discrete_mask, label_peaks, with_z
 
 #: Channels preferred when none is named: the vertical (load-direction) acceleration of
@@ -296,6 +296,8 @@ def analyze_signal(
     mesh = _positive("mesh_frequency", mesh_frequency, "a frequency > 0 Hz")
     metadata = getattr(signal_or_array, "metadata", {})
     warnings: list[str] = list(check_channel(x, channel or "the array", "signal_or_array"))
+    if "ies" in names:  # issue 27: labelled as no verdict at a stated probability
+        warnings.append(IES_NOTE)
     warnings += metadata.get("reading_notes", [])
     stored = metadata.get("stored_sample_rate_hz")
     if stored is not None and abs(stored - fs) > 1e-9 * fs:
@@ -362,11 +364,15 @@ def analyze_signal(
     # a simulated record of a bearing without a defect names its varying-compliance rate
     # (dynamics.simulate): the model's own lines, masked as a machine's are
     compliance = metadata.get("varying_compliance_hz")
+    # the tail's reference runs beyond the search limit (statistics.tail_tables), masked
+    # as far
+    reference = min(fs / 2.56, max(max_frequency, REFERENCE_POSITIONS * res))
     valid, masked = discrete_mask(
         spectra,
         {"shaft": shaft_hz, "supply": supply, "mesh": mesh, "varying_compliance": compliance},
-        max_frequency,
+        max(reference, max_frequency),
     )
+    masked = {k: [(o, f) for o, f in v if f <= max_frequency] for k, v in masked.items()}
     searched = valid[spectra[0].method][1 : int(max_frequency / res) + 1]
     covered = 1.0 - float(np.mean(searched)) if (supply or mesh) else 0.0
     if covered > 0.5:
@@ -383,7 +389,7 @@ def analyze_signal(
         harmonics,
         pfa,
         (rates["shaft"], rates["ftf"]),
-        (shaft_hz, supply, mesh, compliance),
+        reference,
     )
     faults = withdrawn = tuple(decision["faults"])
     if doubt is not None:

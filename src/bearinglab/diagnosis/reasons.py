@@ -11,7 +11,7 @@ import math
 from .families import FAMILIES, FREQUENCY, GATE_CARRIERS, GATE_ORDERS, SIDEBANDS
 from .methods import DESCRIPTIONS
 from .statistics import LINE_ALPHA, SUPPORT_ALPHA, decades
-from .verdict import significance, stray_series
+from .verdict import series_shape, significance, stray_series
 
 
 def _gated(family: str) -> str:
@@ -39,11 +39,16 @@ def verdict_reason(faults, table, decision, pfa) -> str:
             )
         if t["support_significance"] < gate:
             short.append(f"without its strongest line it reaches {t['support_significance']:.3g}")
+        test = decision.get("tests", {}).get(best)
+        shape = series_shape(test[1].lines) if test else None
+        if shape and not short:
+            short.append(shape)
         if t["significance"] > threshold and short:
+            needed = f" (at least {gate:.3g} needed)" if not shape or len(short) > 1 else ""
             return (
                 f"no fault called at a false-alarm probability of {pfa:g}: {best} reaches "
                 f"{t['significance']:.3g} > {threshold:.3g} by {t['method']}, but a fault "
-                f"shows as a series, and {' and '.join(short)} (at least {gate:.3g} needed)"
+                f"shows as a series, and {' and '.join(short)}{needed}"
             )
         return (
             f"no family's harmonic series stands out of the noise floor at a false-alarm "
@@ -68,6 +73,26 @@ def verdict_reason(faults, table, decision, pfa) -> str:
         )
     if decision["modulation"]:
         parts.append("FTF lines counted as the cage-rate modulation of the fault")
+    # a second series above the threshold beside the fault, not named: say so (a compound
+    # fault is reported whole, or its second part is said to be short of the gates)
+    gate = significance(SUPPORT_ALPHA)
+    for f in FAMILIES:
+        t = table[f]
+        if f in faults or f in decision["modulation"] or t["significance"] <= threshold:
+            continue
+        short = [
+            f"{what} {value:.3g}"
+            for what, value in (
+                (f"its harmonics {_gated(f)}", t["harmonic_significance"]),
+                ("without its strongest line", t["support_significance"]),
+            )
+            if value < gate
+        ]
+        parts.append(
+            f"{f} also reaches {t['significance']:.3g} > {threshold:.3g} by {t['method']} "
+            "beside it, not named a second fault"
+            + (f": {' and '.join(short)} (at least {gate:.3g} needed)" if short else "")
+        )
     return "; ".join(parts)
 
 

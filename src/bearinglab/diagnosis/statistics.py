@@ -19,11 +19,20 @@ The test of a fault family (outer race, inner race, ball, cage):
    barely move a median;
 2. a line expected at frequency f is read as the largest normalised value z over the
    bin nearest f and its two neighbours (the line's own width under a Hann window); its
-   p-value is its rank among the same reading at every other position where a line may
-   stand, from the lowest line of any family to the search limit (:func:`line_logp`: an
-   empirical null, because the envelope spectrum of a real machine holds far more, and
-   larger, lines than the chi-square law of noise allows - on the healthy CWRU record 97
-   the chi-square p-values put some family beyond 1e-900);
+   p-value (:func:`tail_tables`, the diagnosis' reading, ``series_test(tail=True)``) is
+   its rank among the same reading at every position where a line may stand, up to the
+   reference's upper TAIL_Q, and beyond that a peaks-over-threshold law fitted to the
+   positions that are not the family's own lines at that fundamental - the noise's
+   exceedances, exponential with an estimated scale (their predictive, Lomax, law), plus
+   the record's clutter of discrete lines of other origin, counted. An empirical null in
+   the body, because the envelope spectrum of a real machine holds far more, and larger,
+   lines than the chi-square law of noise allows (on the healthy CWRU record 97 the
+   chi-square p-values put some family beyond 1e-900); a law in the tail, because the
+   rank alone floors at 1 / positions (10^-2.7 for a 6205 record): a line 20 times the
+   floor scored as one at 4 (issue 27). The reference runs beyond the search limit to
+   REFERENCE_POSITIONS positions where what lies beyond is no heavier than the family's
+   own region. The speed check and the stray-series search read the rank alone
+   (:func:`line_rank_logp`, ``tail=False``);
 3. the family's lines are its harmonics n f' (n = 1 .. N), the modulation sidebands
    n f' +- k f_m that the physics puts there, and the modulation's own lines k f_m (the
    sidebands of the 0th harmonic: an impact train whose amplitude varies at f_m has
@@ -36,17 +45,21 @@ The test of a fault family (outer race, inner race, ball, cage):
 4. the lines' p-values are combined by Fisher's method (-2 sum ln p ~ chi2 with 2L
    degrees of freedom for L independent lines: Fisher R. A., Statistical Methods for
    Research Workers, 1932, sec. 21.1; a line whose three bins overlap an earlier line's
-   is read once), the best fundamental is kept, and its p-value is
-   multiplied by the number M of distinct line positions the scan tried (a Bonferroni
-   bound on the search). The depth of modulation is not known beforehand (an outer-race
-   defect under a fixed load is not modulated at all, the same defect under a rotating
-   load or away from the load line is; Randall & Antoni 2011, sec. 2 and fig. 4), and
-   Fisher's combination is diluted by lines that carry nothing: so the template is tested
-   nested - harmonics alone, then with the sidebands up to order 1, 2, ... - and the best
-   of the K templates is kept with its p-value multiplied by K too (Bonferroni over the
-   templates; on 12 synthetic outer-race faults in the load zone at 0 dB, raw method,
-   the +-1 x shaft template scored 10^-1.7 to 10^-7.9, the harmonics alone 10^-4.1 to
-   10^-10.9: docs/capabilities/diagnosis.md);
+   is read once), and the best fundamental is kept. The depth of modulation is not
+   known beforehand (an outer-race defect under a fixed load is not modulated at all,
+   the same defect under a rotating load or away from the load line is; Randall &
+   Antoni 2011, sec. 2 and fig. 4), and Fisher's combination is diluted by lines that
+   carry nothing: so the template is tested nested - harmonics alone, then with the
+   sidebands up to order 1, 2, ... - and the best of the K templates is kept (on 12
+   synthetic outer-race faults in the load zone at 0 dB, raw method, the +-1 x shaft
+   template scored 10^-1.7 to 10^-7.9, the harmonics alone 10^-4.1 to 10^-10.9:
+   docs/capabilities/diagnosis.md). The scan over fundamentals and templates is a
+   multiple comparison: with ``tail`` its best p-value is bounded by the union bound
+   along the chain of consecutive fundamentals of each template
+   (:func:`bearinglab.diagnosis.chain.chain_logp`: within 10-25 % of the scan's true law
+   for harmonics alone, 2-3 times above it with the sidebands' templates, where the
+   count of distinct sets of lines, Bonferroni, is 3-5 times above); the rank's reading
+   multiplies it by the count of distinct sets of lines and templates (Bonferroni);
 5. the harmonics must be significant by themselves, at SUPPORT_ALPHA (sidebands support a
    series, they do not make one: a flexible template of harmonics and two orders of sidebands fits
    stray lines, e.g. BPFO as a ball line's second cage sideband; the modulation's own
@@ -62,7 +75,8 @@ The test of a fault family (outer race, inner race, ball, cage):
    and nearly nothing beside them, and its harmonics with their sidebands fell short:
    docs/capabilities/diagnosis.md);
    and the series must
-   not rest on one line: combined again without its strongest line, it must still
+   not rest on one line: combined again without its strongest line (the best template
+   without it, over the fundamentals that read that line where it stands), it must still
    reach SUPPORT_ALPHA (an isolated line is more often a discrete component
    of the machine than a bearing fault; Randall & Antoni 2011, sec. 2: a fault shows as
    a series of harmonics).
@@ -316,8 +330,8 @@ def series_test(
     gate_orders: int = 0,
     bottom: float = 0.0,
     gate_carriers: bool = False,
-    decoys: tuple | None = None,
     tail: bool = False,
+    reference: float | None = None,
 ) -> SeriesTest:
     """Significance of the harmonic series n f' (n = 1..``harmonics``) with its sidebands
     n f' +- k ``modulation`` and the modulation's lines k ``modulation``
@@ -355,20 +369,20 @@ def series_test(
     gate_carriers : bool
         Count a sideband in ``harmonic_log_p`` only where its carrier (the harmonic it
         flanks) shows at LINE_ALPHA.
-    decoys : (intervals, intervals), optional
-        Calibrate the scan on the record itself (:func:`decoy_centres`,
-        :func:`effective_trials`): the same template is scanned over windows of the same
-        reach at decoy fundamentals whose windows avoid these intervals [Hz] (the fault
-        families' windows, and the harmonics of the shaft, the supply and the mesh:
-        what a bearing or machine line explains), and the number of effective
-        trials fitted to their best p-values replaces the Bonferroni count. None: the
-        Bonferroni count of distinct sets of lines times the templates (also when fewer
-        than MIN_DECOYS decoys fit in the spectrum).
     tail : bool
-        Read each line with the fitted tail beyond the empirical null
-        (:func:`reference_logp`); False (default): the rank alone, floored at
-        1 / positions, each candidate's own positions left out of its reference
-        (:func:`line_rank_logp`).
+        True: each line read by the rank up to the reference's upper TAIL_Q and beyond by
+        the tail law of the positions that are not the candidate's own
+        (:func:`tail_tables`), each scan's best p-value bounded by its chain of
+        consecutive fundamentals (:func:`bearinglab.diagnosis.chain.chain_logp`) - the
+        diagnosis' test. False (default): the rank alone, floored at 1 / positions, each
+        candidate's own positions left out of its reference (:func:`line_rank_logp`),
+        and a Bonferroni count of the scan's distinct sets of lines - the speed check's
+        and the stray-series search's reading.
+    reference : float, optional
+        With ``tail``: the positions up to this frequency [Hz] (at least
+        ``max_frequency``) are the reference of the tail law, when those above
+        ``max_frequency`` are no heavier than those below (:func:`tail_tables`); default
+        ``max_frequency``.
 
     Returns
     -------
@@ -376,9 +390,12 @@ def series_test(
     """
     valid = np.ones(z.shape, bool) if valid is None else valid
     top = min(max_frequency, (z.size - 2) * resolution)
-    # nothing above the limit is read, as a line or as reference: leave those bins out
-    # (with a margin: lines beyond the limit are clipped to the last bins)
-    keep = int(math.floor(top / resolution)) + 4 + OWN_BINS
+    ref_top = top
+    if tail and reference is not None:
+        ref_top = max(top, min(float(reference), (z.size - 2) * resolution))
+    # nothing above the reference is read, as a line or as reference: leave those bins
+    # out (with a margin: lines beyond the limit are clipped to the last bins)
+    keep = int(math.floor(ref_top / resolution)) + 4 + OWN_BINS
     z, valid = z[:keep], valid[:keep]
     n_max = int(min(harmonics, math.floor(top / (fundamental * (1 + above)))))
     if n_max < 1:
@@ -398,11 +415,42 @@ def series_test(
     n_arr = np.array([r[1] for r in spec], float)
     k_arr = np.array([r[2] for r in spec], float)
     zmax, count, offset = _window_max(z, valid)
-    table = line_logp(zmax, count, top / resolution, bottom / resolution, tail)
     live = count > 0
-    index, readable, logp = _read(grid, n_arr, k_arr, modulation, top, resolution, live, table)
+    index, readable = _read(grid, n_arr, k_arr, modulation, top, resolution, live)
+    if not np.any(readable):
+        return SeriesTest(0.0, 0.0, 0.0, fundamental, 0.0, (), 0)
     values = zmax[index]
-    if not tail:
+    # nested templates: harmonics alone, then with sidebands up to each order (the depth
+    # of modulation is unknown: none for a fixed defect under a fixed load)
+    depths = tuple(range(0, int(orders) + 1)) if (modulation and orders) else (0,)
+    uses = {d: readable & (np.abs(k_arr) <= d)[None, :] for d in depths}
+    if tail:
+        hills = line_hills(np.where(valid, z, 0.0), offset)
+        # the family's own region: up to its highest line (the cage's lines all lie in
+        # the lowest tenth of the search range, where an envelope spectrum is busiest)
+        region = min(float(np.max(np.where(readable, index, 0))) + 2 * LINE_BINS, top / resolution)
+        # beyond the search limit the family's series goes on: its harmonics (and their
+        # sidebands) up to the reference's top are its own there too
+        own = _continuation(grid, n_max, orders, modulation, top, ref_top, resolution, live)
+        tables = tail_tables(
+            np.where(valid, z, 0.0),
+            zmax,
+            count,
+            bottom / resolution,
+            region,
+            ref_top / resolution,
+            values,
+            index,
+            uses,
+            hills,
+            own,
+            nu,
+        )
+        found = _tail_scan(tables, uses, index, n_arr, k_arr, gate_orders, gate_carriers)
+        log_p, support, harmonic, best, depth = found
+        logp = tables[depth]
+        candidates = _distinct_rows(np.where(uses[depth], index, -1))
+    else:
         # the rank alone, each candidate's own positions left out of its reference (a
         # strong series, with its leakage, is not measured against itself)
         logp = np.where(
@@ -417,71 +465,25 @@ def series_test(
             ),
             0.0,
         )
-    if not np.any(readable):
-        return SeriesTest(0.0, 0.0, 0.0, fundamental, 0.0, (), 0)
-    # nested templates: harmonics alone, then with sidebands up to each order (the depth
-    # of modulation is unknown: none for a fixed defect under a fixed load)
-    depths = tuple(range(0, int(orders) + 1)) if (modulation and orders) else (0,)
-    found = _best_row(logp, readable, k_arr, depths)
-    if found is None:
-        return SeriesTest(0.0, 0.0, 0.0, fundamental, 0.0, (), 0)
-    raw_log_p, best, depth = found
-    use = readable & (np.abs(k_arr) <= depth)[None, :]
-    candidates = _distinct_rows(np.where(use, index, -1))
-    raw_support, raw_harmonic, n_gates = _gates(
-        logp[best], use[best], readable[best], n_arr, k_arr, gate_orders, gate_carriers
-    )
-    # the scan's multiple comparisons: the effective trials fitted to decoy scans of the
-    # same spectrum, each statistic on its own decoys; else Bonferroni over the distinct
-    # sets of lines x the templates (and x the gate's sets of lines)
-    fitted = None
-    if decoys is not None:
-        fitted = _decoy_trials(
-            decoys,
-            fundamental,
-            grid.size,
-            n_max,
-            harmonics,
-            (below, above),
-            (n_arr, k_arr, modulation, depths, gate_orders, gate_carriers),
-            top,
-            resolution,
-            live,
-            table,
-        )
-    if fitted is None:
-        # the best template by its Bonferroni-corrected p-value (as before decoys)
+        # the best template by its Bonferroni-corrected p-value: the scan's distinct
+        # sets of lines x the templates (x the gate's sets)
         trials = []
         for d in depths:
-            u = readable & (np.abs(k_arr) <= d)[None, :]
-            if u.any():
-                c = _fisher_rows(logp, u)
+            if uses[d].any():
+                c = _fisher_rows(logp, uses[d])
                 r = int(np.argmin(c))
-                m = _distinct_rows(np.where(u, index, -1))
+                m = _distinct_rows(np.where(uses[d], index, -1))
                 trials.append((float(c[r]) + math.log(m), float(c[r]), r, d, m))
         _, raw_log_p, best, depth, candidates = min(trials)
-        use = readable & (np.abs(k_arr) <= depth)[None, :]
+        use = uses[depth]
         raw_support, raw_harmonic, n_gates = _gates(
-            logp[best],
-            use[best],
-            readable[best],
-            n_arr,
-            k_arr,
-            gate_orders,
-            gate_carriers,
-            tippett=False,
+            logp[best], use[best], readable[best], n_arr, k_arr, gate_orders, gate_carriers
         )
-        # Bonferroni: the scan's distinct sets x the templates (x the gate's sets)
         log_m = math.log(candidates) + math.log(len(trials))
         log_p = min(0.0, raw_log_p + log_m)
         support = min(0.0, raw_support + log_m) if use[best].sum() > 1 else 0.0
         harmonic = min(0.0, raw_harmonic + log_m + math.log(n_gates)) if n_gates else 0.0
-    else:
-        log_p, support, harmonic = (
-            decoy_logp(v, d)
-            for v, d in zip((raw_log_p, raw_support, raw_harmonic), fitted, strict=True)
-        )
-    row = use[best]
+    row = uses[depth][best]
     freq = grid[best] * n_arr + k_arr * (modulation or 0.0)
     lines = []
     for j in np.flatnonzero(row):
@@ -504,87 +506,97 @@ def series_test(
     )
 
 
-def _best_row(logp, readable, k_arr, depths):
-    """(ln p, row, depth) of the best fundamental of a scan and its best nested template
-    (Fisher's combination over the readable lines of each), or None when nothing reads."""
-    out = None
-    for d in depths:
-        use = readable & (np.abs(k_arr) <= d)[None, :]
-        if not use.any():
-            continue
-        combined = _fisher_rows(logp, use)
-        r = int(np.argmin(combined))
-        if out is None or combined[r] < out[0]:
-            out = (float(combined[r]), r, d)
-    return out
-
-
-def _gates(logp, use, readable, n_arr, k_arr, gate_orders, gate_carriers, tippett=True):
+def _gates(logp, use, readable, n_arr, k_arr, gate_orders, gate_carriers):
     """ln p of the support and the harmonic gate at one fundamental, before the scan's
-    correction, and the number of sets of lines the harmonic gate tried.
+    correction, and the number of sets of lines the harmonic gate tried (the rank's
+    reading: ``series_test(tail=False)``).
 
-    Support: the series without its strongest line, by Fisher's combination, or with
-    ``tippett`` (the decoy-calibrated test) the better of it and the strongest remaining
-    line (Tippett's, times the lines left), times 2:
-    after a dominant line, a fault's series may show one more clear harmonic and nothing
-    else readable (CWRU 222: 2 BSF at z 22.7, 4 BSF at z 5.8), which Fisher's combination
-    dilutes in the lines that hold nothing. Harmonic gate: the harmonics alone, then with
-    their sidebands up to ``gate_orders`` (nested as the templates are: the depth of
-    modulation is unknown), the better; with ``gate_carriers`` a sideband counts only
-    beside a carrier that shows at LINE_ALPHA."""
+    Support: the series without its strongest line, by Fisher's combination. Harmonic
+    gate: the harmonics alone, then with their sidebands up to ``gate_orders`` (nested as
+    the templates are: the depth of modulation is unknown), the better; with
+    ``gate_carriers`` a sideband counts only beside a carrier that shows at LINE_ALPHA."""
     lps = logp[use]
     support = 0.0
     if lps.size > 1:
-        rest = np.delete(lps, int(np.argmin(lps)))
-        support = float(fisher_logp(rest))
-        if tippett:
-            single = min(0.0, float(np.min(rest)) + math.log(rest.size))
-            support = min(0.0, min(support, single) + math.log(2.0))
-    own = readable & (n_arr >= 1)
+        support = float(fisher_logp(np.delete(lps, int(np.argmin(lps)))))
+    sets = _gate_masks(logp, readable, n_arr, k_arr, gate_orders, gate_carriers)
+    values = [float(fisher_logp(logp[m])) for m in sets]
+    return support, (min(values) if values else 0.0), len(sets)
+
+
+def _gate_masks(logp_row, readable_row, n_arr, k_arr, gate_orders, gate_carriers) -> list:
+    """The distinct sets of lines (masks over the template's lines) of the harmonic gate
+    at one fundamental: the harmonics alone, then with their sidebands up to
+    ``gate_orders``; with ``gate_carriers`` a sideband only beside a carrier that shows at
+    LINE_ALPHA (the load that modulates a fixed defect's impacts is never negative, and
+    the Fourier coefficients of a non-negative function are at most its mean,
+    |c_k| <= c_0, so that no sideband of a real series stands without its carrier)."""
+    own = readable_row & (n_arr >= 1)
     if gate_carriers:
-        # a sideband counts only beside a carrier that shows: the load that modulates a
-        # fixed defect's impacts is never negative, and the Fourier coefficients of a
-        # non-negative function are at most its mean (|c_k| <= c_0), so no sideband of a
-        # real series stands without its carrier (stray lines at n f +- k f_m do)
-        shown = n_arr[own & (k_arr == 0) & (logp < math.log(LINE_ALPHA))]
-        own &= (k_arr == 0) | np.isin(n_arr, shown)
-    sets = {tuple(np.flatnonzero(own & (np.abs(k_arr) <= d))) for d in range(int(gate_orders) + 1)}
-    sets = [float(fisher_logp(logp[list(g)])) for g in sets if g]
-    return support, (min(sets) if sets else 0.0), len(sets)
+        shown = n_arr[own & (k_arr == 0) & (logp_row < math.log(LINE_ALPHA))]
+        own = own & ((k_arr == 0) | np.isin(n_arr, shown))
+    out, seen = [], set()
+    for d in range(int(gate_orders) + 1):
+        m = own & (np.abs(k_arr) <= d)
+        key = tuple(np.flatnonzero(m))
+        if key and key not in seen:
+            seen.add(key)
+            out.append(m)
+    return out
 
 
-def decoy_logp(log_p: float, decoys: np.ndarray) -> float:
-    """ln p of a scan's statistic ``log_p`` against the same statistic of its decoy scans
-    ``decoys`` (ln p each): the larger of their empirical fraction at least as extreme,
-    (1 + #decoys <= log_p) / (1 + #decoys) - exact where the family's window is no
-    different from a decoy's - and the law fitted to their lower half
-    (:func:`effective_trials`); beyond every decoy, that law alone."""
-    decoys = np.asarray(decoys, dtype=float)
-    fitted = _scan_logp(log_p, *effective_trials(decoys))
-    reached = int(np.sum(decoys <= log_p))
-    if reached == 0:  # beyond every decoy: the fitted law alone
-        return fitted
-    return max(math.log((1.0 + reached) / (1.0 + decoys.size)), fitted)
+def _tail_scan(tables, uses, index, n_arr, k_arr, gate_orders, gate_carriers):
+    """The family's p-value and its gates from the tail's line p-values (``tables``,
+    one per nested template), each scan bounded by its chain (``series_test(tail=True)``).
+
+    - The series: the best (fundamental, template) by Fisher's combination; the chain
+      bound of every template's scan at that level.
+    - The support: the best template's lines without the strongest line, at the best
+      fundamental; its scan is the fundamentals that read that line where it stands (it
+      fixes the fundamental), with every template's chain over them.
+    - The harmonic gate: the harmonics alone, or with their first sidebands (as
+      ``gate_orders``, ``gate_carriers`` say), the better, each set's chain over the whole
+      scan.
+
+    Returns (ln p, support ln p, harmonic ln p, best row, best template)."""
+    from .chain import chain_logp, chain_steps
+
+    depths = tuple(tables)
+    combos = {d: _fisher_rows(tables[d], uses[d]) for d in depths}
+    depth = min(depths, key=lambda d: float(np.min(combos[d])))
+    best = int(np.argmin(combos[depth]))
+    log_p = chain_logp(float(combos[depth][best]), [chain_steps(index, uses[d]) for d in depths])
+    row = uses[depth][best]
+    support = 0.0
+    if row.sum() > 1:
+        strongest = int(np.flatnonzero(row)[np.argmin(tables[depth][best][row])])
+        keep = np.ones(n_arr.size, bool)
+        keep[strongest] = False
+        raw = min(
+            float(fisher_logp(tables[d][best][uses[d][best] & keep]))
+            for d in depths
+            if (uses[d][best] & keep).any()
+        )
+        rows = np.abs(index[:, strongest] - index[best, strongest]) <= 1
+        sub = [chain_steps(index[rows], uses[d][rows] & keep[None, :]) for d in depths]
+        support = chain_logp(raw, sub)
+    harmonic = 0.0
+    readable = uses[depths[-1]]
+    gate = _gate_masks(tables[0][best], readable[best], n_arr, k_arr, gate_orders, gate_carriers)
+    if gate:
+        raw = min(
+            float(fisher_logp(tables[min(int(np.max(np.abs(k_arr[m]))), depths[-1])][best][m]))
+            for m in gate
+        )
+        harmonic = chain_logp(raw, [chain_steps(index, readable & m[None, :]) for m in gate])
+    return log_p, support, harmonic, best, depth
 
 
-def _scan_logp(log_p: float, log_m: float, beta: float = 1.0) -> float:
-    """ln of the chance that the best of a scan's trials reaches e^log_p, for a scan whose
-    best p-value follows P(min <= t) = e^log_m t^beta (beta = 1: M = e^log_m trials,
-    1 - (1 - p)^M; :func:`effective_trials`), at most 0."""
-    if beta == 1.0:
-        p = math.exp(log_p)
-        if p < 1e-12 or not math.isfinite(log_p):
-            return min(0.0, log_p + log_m)
-        m = math.exp(log_m)
-        return min(0.0, math.log(-math.expm1(m * math.log1p(-min(p, 1 - 1e-16)))))
-    return min(0.0, log_m + beta * log_p)
-
-
-def _read(grid, n_arr, k_arr, modulation, top, resolution, live, table):
-    """Bins, readability and ln p of the template's lines (n f' + k f_m) at each
-    fundamental of ``grid`` (rows): a line is read where a valid bin lies within one bin
-    of it, below ``top`` [Hz], and once (a line whose three bins overlap an earlier line's
-    is not read again: Fisher's combination needs independent lines)."""
+def _read(grid, n_arr, k_arr, modulation, top, resolution, live):
+    """Bins and readability of the template's lines (n f' + k f_m) at each fundamental of
+    ``grid`` (rows): a line is read where a valid bin lies within one bin of it, below
+    ``top`` [Hz], and once (a line whose three bins overlap an earlier line's is not read
+    again: Fisher's combination needs independent lines)."""
     freq = grid[:, None] * n_arr[None, :] + k_arr[None, :] * (modulation or 0.0)
     index = np.rint(freq / resolution).astype(int)
     size = live.size
@@ -606,159 +618,10 @@ def _read(grid, n_arr, k_arr, modulation, top, resolution, live, table):
         for j in np.unique(later):
             blocked[:, j] = np.any(hit[:, later == j], axis=1)
         readable &= ~blocked
-    logp = np.where(readable, table[index], 0.0)
-    return index, readable, logp
+    return index, readable
 
 
-#: Fewest decoy windows for a fitted count of effective trials; with fewer the scan is
-#: bounded by Bonferroni [-].
-MIN_DECOYS = 12
-#: Decoy fundamentals farther than this factor from the family's are not used [-]: the
-#: template keeps its number of harmonics near its own.
-DECOY_SPAN = 3.0
-#: Spacing of the decoy windows, as a fraction of their width [-] (below 1 they overlap,
-#: as the trials of one scan do; the fitted count is then the same, with more decoys).
-DECOY_STEP = 0.5
-#: Most decoys per family (evenly chosen among those that fit) [-].
-MAX_DECOYS = 48
-
-
-def decoy_centres(
-    fundamental: float,
-    width: float,
-    harmonics: int,
-    top: float,
-    families,
-    lines,
-    lowest: float,
-) -> list[float]:
-    """Decoy fundamentals [Hz] for a family scanned over ``width`` [Hz] at ``fundamental``
-    with up to ``harmonics`` harmonics below ``top``: windows whose reach at their highest
-    harmonic equals the family's (the same number of distinct sets of lines), spaced by
-    DECOY_STEP of their width, from ``lowest`` [Hz] up to ``top`` / 2 (two harmonics) and
-    within DECOY_SPAN of the family's fundamental; none touches an interval of
-    ``families`` ((low, high) [Hz]: the fault families' windows), and none is centred in
-    one of ``lines`` (the harmonics of the shaft, supply and mesh frequencies, whose lines
-    are masked: a decoy there reads little). The family's own lines are not read by its
-    decoys (:func:`series_test`); another family's may be, which only makes the test of
-    this one more cautious."""
-    n_family = max(1, min(harmonics, int(top / (fundamental + width / 2))))
-    reach = width * n_family  # how far the highest harmonic moves over the scan [Hz]
-    lo = max(lowest, fundamental / DECOY_SPAN)
-    hi = min(top / 2.0, fundamental * DECOY_SPAN)
-    out, c = [], lo
-    while c < hi:
-        n = max(1, min(harmonics, int(top / c)))
-        half = 0.5 * reach / n
-        c0 = c + half
-        clear = all(c0 + half < a or c0 - half > b for a, b in families) and all(
-            not a <= c0 <= b for a, b in lines
-        )
-        if clear and n >= 2:
-            out.append(c0)
-        c = c0 - half + 2 * half * DECOY_STEP
-    return out
-
-
-def effective_trials(decoy_log_p) -> tuple[float, float]:
-    """The law of a scan's best p-value fitted to the best ln p of each decoy scan:
-    P(min <= t) = A t^beta for small t, returned as (ln A, beta) [-].
-
-    For M independent trials the best p-value is the smallest of M uniform ones,
-    P(min <= t) = 1 - (1 - t)^M ~ M t (beta = 1, A = M, a Bonferroni count of effective
-    trials). The trials of a scan overlap, and then the count is not one number: it
-    grows as t falls (a Monte Carlo count for CWRU 222's ball scan gave 75, 103 and 146
-    effective trials at t = 0.05, 0.01 and 0.001: docs/capabilities/diagnosis.md), so
-    that a count fitted to the whole of the decoys' law would be too small where the
-    verdict's level lies. The law is fitted to the lower half of the decoys' empirical
-    distribution (rank i of n at p_(i): ln(i / (n + 1)) = ln A + beta ln p_(i), least
-    squares), beta held in [BETA_MIN, 1] and A at least 1, so that it extrapolates no
-    faster than the trend of the decoys' own tail. A line statistic whose tail is too
-    light or too heavy for the record shows in A and beta too: the law is the record's.
-
-    The minimum of 50 uniform p-values (the decoys of a scan of 50 independent trials):
-    the lower half's fit gives about 30 trials and beta 0.9.
-
-    >>> la, b = effective_trials(np.log(np.random.default_rng(0).beta(1, 50, 4000)))
-    >>> round(math.exp(la) / 50, 1), round(b, 1)
-    (0.6, 0.9)
-    """
-    lp = np.sort(np.asarray(decoy_log_p, dtype=float))
-    n = lp.size
-    half = max(n // 2, 3)
-    x = lp[:half]
-    y = np.log(np.arange(1, half + 1) / (n + 1.0))
-    if np.ptp(x) > 0:
-        beta = float(np.polyfit(x, y, 1)[0])
-    else:
-        beta = 1.0
-    beta = min(1.0, max(BETA_MIN, beta))
-    log_a = max(0.0, float(np.mean(y - beta * x)))
-    return log_a, beta
-
-
-#: Smallest slope of the fitted law of a scan's best p-value [-] (see
-#: :func:`effective_trials`).
-BETA_MIN = 0.8
-
-
-def _decoy_trials(
-    excluded, fundamental, points, n_max, harmonics, window, template, top, resolution, live, table
-):
-    """Effective trials (M_p, M_support, M_harmonic) of the family's scan and its two
-    gates, each fitted to the same statistic of decoy scans (:func:`effective_trials`),
-    or None when fewer than MIN_DECOYS decoys fit (see :func:`series_test`)."""
-    below, above = window
-    n_arr, k_arr, modulation, depths, gate_orders, gate_carriers = template
-    width = fundamental * (below + above)
-    own = [(fundamental * (1 - below), fundamental * (1 + above))]
-    fams, lines = excluded
-    centres = decoy_centres(fundamental, width, harmonics, top, list(fams) + own, lines, 0.0)
-    if len(centres) < MIN_DECOYS:
-        return None
-    if len(centres) > MAX_DECOYS:
-        centres = [centres[i] for i in np.linspace(0, len(centres) - 1, MAX_DECOYS).astype(int)]
-    # the family's own lines (its harmonics over its window) are not read by a decoy
-    free = live.copy()
-    for n in range(1, n_max + 1):
-        lo = int(math.floor(n * fundamental * (1 - below) / resolution)) - 1
-        hi = int(math.ceil(n * fundamental * (1 + above) / resolution)) + 2
-        free[max(lo, 0) : max(hi, 0)] = False
-    # every decoy's scan in one array: rows = decoys x grid points; harmonics above a
-    # decoy's own count (its reach equals the family's) are not read
-    c = np.asarray(centres)
-    n_d = np.maximum(1, np.minimum(harmonics, (top / c).astype(int)))
-    offsets = np.arange(points) - 0.5 * (points - 1)
-    grid = (c[:, None] + offsets[None, :] * (resolution / (2.0 * n_d))[:, None]).ravel()
-    _, readable, logp = _read(grid, n_arr, k_arr, modulation, top, resolution, free, table)
-    readable &= n_arr[None, :] <= np.repeat(n_d, points)[:, None]
-    logp = np.where(readable, logp, 0.0)
-    rows = readable.reshape(c.size, points, -1)
-    enough = (rows[:, :, n_arr >= 1].sum(axis=2) >= 2).any(axis=1)
-    best = np.full(c.size, np.inf)
-    row_of = np.zeros(c.size, int)
-    depth_of = np.zeros(c.size, int)
-    for d in depths:
-        use = readable & (np.abs(k_arr) <= d)[None, :]
-        combined = _fisher_rows(logp, use).reshape(c.size, points)
-        r = np.argmin(combined, axis=1)
-        v = combined[np.arange(c.size), r]
-        better = v < best
-        best = np.where(better, v, best)
-        row_of = np.where(better, r, row_of)
-        depth_of = np.where(better, d, depth_of)
-    stats = []
-    for j in np.flatnonzero(enough & np.isfinite(best)):
-        r = j * points + row_of[j]
-        use = readable[r] & (np.abs(k_arr) <= depth_of[j])
-        sup, har, _ = _gates(logp[r], use, readable[r], n_arr, k_arr, gate_orders, gate_carriers)
-        stats.append((float(best[j]), sup, har))
-    if len(stats) < MIN_DECOYS:
-        return None
-    return tuple(np.array(column) for column in zip(*stats, strict=True))
-
-
-#: Bins either side of each of a family's own lines kept beyond the search limit [-].
+#: Bins either side of each of a family's own lines left out of its reference [-].
 OWN_BINS = 2
 
 
@@ -772,7 +635,9 @@ def line_logp(
     """ln p of the reading ``zmax`` (largest z over three bins) at every bin, against the
     same reading at every valid position of the spectrum from ``bottom_bin`` (at least 1)
     to ``top_bin`` (:func:`reference_logp`, its rank alone unless ``tail``); 0 where no
-    bin is valid.
+    bin is valid. Each bin is read against all the positions, itself included: the
+    calibration of the line statistic on records without a line (no candidate's own
+    positions are left out; :func:`tail_tables` does that for a family's lines).
 
     The reference starts where a line may be sought (the analysis passes the lowest
     line of any family, about 0.98 FTF): below it the positions read the main lobe and
@@ -784,9 +649,11 @@ def line_logp(
     start = int(min(max(math.floor(bottom_bin), 1), stop))
     live = count[start : stop + 1] > 0
     ref = zmax[start : stop + 1][live]
+    above = np.zeros(zmax.size, bool)
+    above[start : stop + 1] = live
     out = np.zeros(zmax.size)
     ok = count > 0
-    out[ok] = reference_logp(ref, zmax[ok], tail)
+    out[ok] = reference_logp(ref, zmax[ok], tail, _cluster(zmax, above, ref))
     return out
 
 
@@ -798,17 +665,11 @@ def line_rank_logp(
     index: np.ndarray,
     bottom_bin: float = 1.0,
 ) -> np.ndarray:
-    """ln p (the rank alone, floored at 1 / positions: ``tail=False``) of lines read as
-    ``values`` (largest z over three bins, one row per candidate
-    fundamental, at bins ``index``) against the same reading at every other valid
-    position of the spectrum from ``bottom_bin`` (at least 1) to ``top_bin``: the
-    empirical null (1 + #positions reading at least as much) / (1 + #positions).
-
-    The reference starts where a line may be sought (the analysis passes the lowest
-    line of any family, about 0.98 FTF): below it the positions read the main lobe and
-    first side lobes of the 0 Hz line (the envelope's mean, the largest value of every
-    envelope spectrum), a place no bearing line can stand and which would otherwise
-    count against every line of the record.
+    """ln p (the rank alone, floored at 1 / positions) of lines read as ``values``
+    (largest z over three bins, one row per candidate fundamental, at bins ``index``)
+    against the same reading at every other valid position of the spectrum from
+    ``bottom_bin`` (at least 1) to ``top_bin``: the empirical null
+    (1 + #positions reading at least as much) / (1 + #positions).
 
     The spectrum's own bins are the reference, clutter of unrelated discrete lines
     included: a real machine's envelope spectrum holds many more, and larger, lines than
@@ -837,39 +698,59 @@ def line_rank_logp(
     return np.log((1.0 + np.maximum(above - own_above, 0)) / (1.0 + np.maximum(n_ref, 0))[:, None])
 
 
-#: Reference positions beyond the tail's threshold: the largest TAIL_FRACTION of them; the
-#: tail is fitted when that is at least TAIL_MIN positions, else the rank alone [-].
-TAIL_FRACTION = 0.05
-TAIL_MIN = 10
+#: Fraction of the reference positions above the tail's threshold u [-].
+TAIL_Q = 0.1
+#: Level of the one-sided tests that keep the positions below the search limit as the
+#: tail's reference alone, when they show more, or larger, exceedances than those above
+#: it [-].
+POOL_ALPHA = 0.05
+#: Widest reach of a line's hill either side of its peak [bins].
+HILL_BINS = 12
+#: Positions of the tail's reference the analysis asks for (beyond the search limit
+#: where the search range holds fewer), up to the anti-aliasing limit f_s / 2.56 [-]:
+#: about 200 exceedances, so that the predictive law of the tail is within a factor 2 of
+#: its exponential ten scales out.
+REFERENCE_POSITIONS = 2000
 
 
-def reference_logp(reference: np.ndarray, values, tail: bool = True) -> np.ndarray:
+def _cluster(zmax: np.ndarray, positions: np.ndarray, ref: np.ndarray) -> float:
+    """Clusters per exceedance of the upper TAIL_Q of ``ref`` among the ``positions``
+    (bool over bins) - runs of consecutive positions above the threshold, 1/3 for lines
+    that each read at three positions (declustering by runs: Coles S., An Introduction
+    to Statistical Modeling of Extreme Values, Springer 2001, sec. 5.3.2)."""
+    if ref.size == 0:
+        return 1.0
+    u = np.sort(ref)[int((1 - TAIL_Q) * ref.size)]
+    above = positions & (zmax > u)
+    runs = int(np.sum(above[1:] & ~above[:-1])) + int(above[0])
+    return runs / max(float(above.sum()), 1.0)
+
+
+def reference_logp(
+    reference: np.ndarray, values, tail: bool = True, cluster: float = 1.0
+) -> np.ndarray:
     """ln p of ``values`` against the readings ``reference`` of the same spectrum at the
     positions where a line may stand: semi-parametric, an empirical null in the body and
-    an exponential law fitted to the tail.
+    a peaks-over-threshold law in the tail.
 
-    - Up to the k-th largest reading u (k = TAIL_FRACTION of the positions, at least
-      TAIL_MIN): the rank, (1 + #positions reading at least as much) / (1 + #positions)
-      - exact under the null that a line's position is no different from any other
-      (exchangeable positions), whatever the record's clutter of unrelated lines: a real
-      machine's envelope spectrum holds far more, and larger, lines than the chi-square
-      law of noise allows (on the healthy CWRU record 97 it put some family at 1e-900).
-    - Beyond u: p = (1 + k) / (1 + N) exp(-(v - u) / sigma), the exceedances of the top
-      k readings over u taken as exponential (the peaks-over-threshold model with shape 0:
-      Knijnenburg T. A. et al., Bioinformatics 25 (2009) i161-i168; the chi2_nu / nu law
-      of a Welch bin has an exponential tail, and the largest of three bins too), sigma
-      from the upper body, (u - u_4k) / ln 4 with u_4k the 4k-th largest reading: the
-      few strong lines of a fault, which may make the whole top k, do not move it.
+    - Up to u, the reference's upper TAIL_Q quantile: the rank, (1 + #positions reading
+      at least as much) / (1 + #positions) - exact under the null that a line's position
+      is no different from any other (exchangeable positions), whatever the record's
+      clutter of unrelated lines.
+    - Beyond u: the exceedances of the reference over u taken as exponential (the
+      peaks-over-threshold model with shape 0; the chi2_nu / nu law of a Welch bin has an
+      exponential tail, and the largest of three bins too; Knijnenburg T. A. et al.,
+      Bioinformatics 25 (2009) i161-i168) whose scale is not known: a new exceedance
+      then follows the predictive law P(> u + x) = P(> u) (1 + x / (m s))^-m, m the
+      number of independent exceedances (their count times ``cluster``: a line reads at
+      three positions) and s their mean - the Lomax law, which is the exponential for
+      many exceedances and heavier for few.
       The rank alone floors at 1 / (1 + N) (10^-2.7 for the ~500 positions of a 6205
       record): a line 20 times the floor scored the same as one at 4.
 
-    On a record whose tail is heavier than exponential (discrete lines of other origin)
-    this makes single lines too significant; the scan's count of effective trials, fitted
-    to decoy scans of the same spectrum (:func:`effective_trials`), carries that.
-
     >>> ref = np.random.default_rng(0).exponential(1.0, 2000)
     >>> lp = reference_logp(ref, np.array([0.0, 20.0]))
-    >>> round(float(lp[0]), 6), -8.7 < float(lp[1]) / 20 < -0.9
+    >>> round(float(lp[0]), 6), -8.7 < float(lp[1]) / 20 < -0.4
     (0.0, True)
     """
     ref = np.sort(np.asarray(reference, dtype=float))
@@ -877,19 +758,294 @@ def reference_logp(reference: np.ndarray, values, tail: bool = True) -> np.ndarr
     n = ref.size
     if n == 0:
         return np.zeros(values.shape)
-    above = n - np.searchsorted(ref, values, side="left")
-    body = np.log((1.0 + above) / (1.0 + n))
-    k = int(math.ceil(TAIL_FRACTION * n))
-    if k < TAIL_MIN or not tail:
-        return body
-    u = ref[n - k - 1]
-    # the exponential's scale from the upper body, between the top 4k and the top k
-    # readings: a fault's own lines (a few per cent of the positions) do not move it
-    sigma = float(u - ref[n - 4 * k - 1]) / math.log(4.0)
-    if not sigma > 0:
-        return body
-    tail = math.log((1.0 + k) / (1.0 + n)) - (values - u) / sigma
-    return np.where(values > u, np.minimum(tail, 0.0), body)
+    rank = np.log((1.0 + n - np.searchsorted(ref, values, side="left")) / (1.0 + n))
+    if not tail or n < 20:
+        return rank
+    u = ref[int((1 - TAIL_Q) * n)]
+    over = ref[ref > u] - u
+    if over.size == 0:
+        return rank
+    log_pu = math.log((1.0 + over.size) / (1.0 + n))
+    m = max(over.size * cluster, 1.0)
+    scale = max(float(np.mean(over)), 1e-12)
+    law = log_pu - m * np.log1p(np.maximum(values - u, 0.0) / (m * scale))
+    return np.where(values > u, np.minimum(law, 0.0), rank)
+
+
+def line_hills(z: np.ndarray, offset: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """For the reading at each bin (the largest of three: its peak at bin + ``offset``),
+    the first and last bin of the peak's hill: the bins either side down which ``z``
+    falls steadily from the peak, at most HILL_BINS - a line's own extent, wider than
+    its three bins where it wanders (a ball's random slip spread CWRU 222's 2 BSF line
+    over six bins) or leaks."""
+    n = z.size
+    idx = np.arange(n)
+    # run lengths of steady falls going left (z[i-1] < z[i]) and right (z[i+1] < z[i])
+    fall_left = np.zeros(n, bool)
+    fall_left[1:] = z[:-1] < z[1:]
+    fall_right = np.zeros(n, bool)
+    fall_right[:-1] = z[1:] < z[:-1]
+    last_stop = np.maximum.accumulate(np.where(~fall_left, idx, 0))
+    left = idx - last_stop
+    rev = fall_right[::-1]
+    last_stop_r = np.maximum.accumulate(np.where(~rev, idx, 0))
+    right = (idx - last_stop_r)[::-1]
+    peak = np.clip(idx + offset, 0, n - 1)
+    return peak - np.minimum(left[peak], HILL_BINS), peak + np.minimum(right[peak], HILL_BINS)
+
+
+def own_intervals(index, use, hills, size: int) -> tuple[np.ndarray, np.ndarray]:
+    """The positions each candidate's own lines (``use`` at bins ``index``, rows x lines)
+    occupy, as intervals [start, end] per line, rows x lines, merged within each row so
+    that none overlaps (an empty one has end < start): each line's bin +- OWN_BINS and its
+    hill (:func:`line_hills`) widened by one bin, the positions whose three bins reach
+    it."""
+    lo, hi = hills
+    i = np.clip(index, 0, lo.size - 1)
+    a = np.clip(np.minimum(lo[i] - 1, index - OWN_BINS), 0, size - 1)
+    b = np.clip(np.maximum(hi[i] + 1, index + OWN_BINS), 0, size - 1)
+    a = np.where(use, a, size)  # unused lines: empty, sorted last
+    b = np.where(use, b, -1)
+    order = np.argsort(a, axis=1, kind="stable")
+    a = np.take_along_axis(a, order, axis=1)
+    b = np.take_along_axis(b, order, axis=1)
+    reach = np.maximum.accumulate(b, axis=1)
+    before = np.concatenate([np.full((b.shape[0], 1), -1), reach[:, :-1]], axis=1)
+    return np.maximum(a, before + 1), b
+
+
+def _interval_sums(prefix: np.ndarray, start: np.ndarray, end: np.ndarray) -> np.ndarray:
+    """Sums of the columns of a table over the merged intervals of each row, from its
+    prefix sums ``prefix`` (bins + 1 x columns, prefix[k] = sum of bins < k): rows x
+    columns."""
+    empty = end < start
+    s = np.where(empty, 0, start)
+    e = np.where(empty, -1, end)
+    return (prefix[e + 1] - prefix[s]).sum(axis=1)
+
+
+def _continuation(grid, n_max, orders, modulation, top, ref_top, resolution, live):
+    """The family's lines beyond the search limit ``top`` up to ``ref_top`` [Hz]: its
+    harmonics n > ``n_max`` and their sidebands at each fundamental of ``grid`` - bins
+    (rows x lines, -1 where none reads) and sideband orders (lines)."""
+    if ref_top <= top * (1 + 1e-9):
+        return None
+    n_top = int(math.floor(ref_top / float(np.min(grid))))
+    if n_top <= n_max:
+        return None
+    ns = np.arange(n_max + 1, n_top + 1)
+    ks = [0] + ([s * k for k in range(1, int(orders) + 1) for s in (-1, 1)] if modulation else [])
+    n_arr = np.repeat(ns, len(ks)).astype(float)
+    k_arr = np.tile(np.array(ks, float), ns.size)
+    freq = grid[:, None] * n_arr[None, :] + k_arr[None, :] * (modulation or 0.0)
+    index = np.rint(freq / resolution).astype(int)
+    ok = (freq > top) & (freq <= ref_top) & (index >= 1) & (index < live.size - 1)
+    return np.where(ok, index, -1), k_arr
+
+
+def tail_tables(
+    z, zmax, count, bottom_bin, near_bin, top_bin, values, index, uses, hills, beyond=None, nu=None
+) -> dict:
+    """ln p of every candidate's lines (``uses``: nested template -> rows x lines bool;
+    the same table for each), each line read against the positions that are not the
+    family's own at its fundamental (:func:`own_intervals`): every line its deepest
+    template reads there, and its harmonics continued beyond the search limit
+    (``beyond``: :func:`_continuation`).
+
+    Up to u, the upper TAIL_Q quantile of the positions from ``bottom_bin`` to
+    ``top_bin``: the rank among all of them (the candidate's own included: in-sample,
+    cautious). Beyond u, the sum of two parts fitted to the positions that are not the
+    candidate's own (a fault's own lines, and the spread of a line that wanders, are not
+    its null: they made the upper 5 % of CWRU 223's positions):
+
+    - the noise's: its exceedances over u exponential, the scale s from their median
+      (s = median / ln 2: a few large lines of other origin do not move it); as s is
+      estimated, a new exceedance follows the predictive (Lomax) law
+      (1 + x / (m s))^-m, m the exceedances the noise explains (declustered: a line
+      reads at three positions);
+    - the clutter's: the peaks beyond x* = s ln(2 M), where the noise law expects fewer
+      than half an exceedance of the M - discrete lines of other origin - counted: a
+      reading is as likely as the share of positions whose peaks reach it; beyond the
+      largest, the chance that a new one exceeds all k of them, 1 / (k + 1), falling off
+      by their own predictive law (1 + (v - v_max) / (k c))^-k, c their mean height over
+      u + x*. A line is never more significant than the clutter this record shows
+      allows.
+
+    Leaving each candidate's lines out of its own tail keeps the p-value of one fixed set
+    of lines calibrated; the in-sample rank below u keeps Fisher's combination of lines
+    read against the same reference from moving them together (measured in
+    docs/capabilities/diagnosis.md). The positions above the family's own region (up to
+    ``near_bin``: its highest line) join the reference unless those below show more
+    exceedances, or larger ones, than those above (one-sided binomial and F tests at
+    POOL_ALPHA, on the declustered counts): a raw envelope spectrum's low cyclic
+    frequencies hold more clutter than its high ones, and the cage's lines lie in the
+    lowest tenth of the search range, where every envelope spectrum is busiest.
+    """
+    import scipy.special
+
+    stop = int(min(top_bin, zmax.size - 1))
+    start = int(min(max(math.floor(bottom_bin), 1), stop))
+    near = int(min(max(near_bin, start), stop))
+    ok = np.zeros(zmax.size, bool)
+    ok[start : stop + 1] = count[start : stop + 1] > 0
+    if ok.sum() < 20:
+        return {d: np.zeros(values.shape) for d in uses}
+    below = np.zeros(zmax.size, bool)
+    below[: near + 1] = True
+    # the pooling test's counts: exceedances of the whole reference's threshold
+    ref = np.sort(zmax[ok])
+    u = ref[int((1 - TAIL_Q) * ref.size)]
+    cluster = _cluster(zmax, ok, ref)
+    over = ok & (zmax > u)
+    excess = np.where(over, zmax - u, 0.0)
+    columns = [over, excess, ok]
+    basis = np.stack([c * below for c in columns] + [c * ~below for c in columns]).T
+    prefix = np.concatenate([np.zeros((1, 6)), np.cumsum(basis.astype(float), axis=0)])
+    totals = prefix[-1]
+    regions = {"near": ok & below, "all": ok}
+    # the family's own positions at each fundamental: every line its deepest template
+    # reads there, and the series' continuation beyond the search limit
+    use = uses[max(uses)]
+    if beyond is None:
+        lo, hi = own_intervals(index, use, hills, zmax.size)
+    else:
+        more_index, _ = beyond
+        lo, hi = own_intervals(
+            np.concatenate([index, np.maximum(more_index, 0)], axis=1),
+            np.concatenate([use, more_index >= 0], axis=1),
+            hills,
+            zmax.size,
+        )
+    m_n, s_n, c_n, m_f, s_f, c_f = (totals[None, :] - _interval_sums(prefix, lo, hi)).T
+    # are the exceedances below the limit more frequent, or larger, than above it?
+    a, b = np.maximum(m_n * cluster, 0.5), np.maximum(m_f * cluster, 0.5)
+    ratio = (s_n / np.maximum(m_n, 1.0)) / np.maximum(s_f / np.maximum(m_f, 1.0), 1e-12)
+    p_scale = scipy.special.fdtrc(2.0 * a, 2.0 * b, ratio)
+    k = np.round(m_n * cluster).astype(int)
+    total = np.maximum(np.round((m_n + m_f) * cluster).astype(int), k)
+    share = c_n / np.maximum(c_n + c_f, 1.0)
+    p_rate = np.where(k > 0, scipy.special.bdtrc(np.maximum(k - 1, 0), total, share), 1.0)
+    alone = (c_f < 1) | (np.minimum(p_scale, p_rate) < POOL_ALPHA)
+    lp = np.zeros(values.shape)
+    for name, rows in (("near", alone), ("all", ~alone)):
+        if rows.any():
+            fit = _region(z, zmax, regions[name], nu)
+            lp[rows] = _region_logp(zmax, fit, values[rows], lo[rows], hi[rows])
+    table = np.where(use, lp, 0.0)
+    tables = {d: table for d in uses}
+    return tables
+
+
+def chi2_excess_scale(nu: float) -> float:
+    """The exponential scale of the exceedances of the largest of three chi2_nu / nu bins
+    over its upper TAIL_Q quantile [-]: their mean excess, the spread a Welch estimate
+    with nu degrees of freedom gives any random signal.
+
+    >>> round(chi2_excess_scale(2.0), 2), round(chi2_excess_scale(50.0), 3)
+    (1.02, 0.104)
+    """
+    import scipy.special
+
+    # the upper TAIL_Q quantile u of max of 3 (F(u)^3 = 1 - TAIL_Q), then the mean excess
+    # integral_u^inf S3(x) dx / S3(u), S3 = 1 - F^3
+    u = float(scipy.special.chdtri(nu, 1.0 - (1.0 - TAIL_Q) ** (1.0 / 3.0))) / nu
+    x = u + np.linspace(0.0, 40.0 / math.sqrt(nu) + 40.0 / nu, 2001)
+    survival = 1.0 - (1.0 - scipy.special.chdtrc(nu, x * nu)) ** 3
+    return float(np.trapezoid(survival, x)) / TAIL_Q
+
+
+def _region(z, zmax, region, nu=None) -> dict:
+    """What the tail of ``region``'s positions is fitted from, whatever the candidate:
+    the sorted readings, the threshold u, the clusters per exceedance, the noise's scale,
+    x*, the prefix sums of the noise's exceedances and of the positions, and the
+    clutter's peaks with their heights (see :func:`tail_tables`)."""
+    pos = np.flatnonzero(region)
+    ref = np.sort(zmax[pos])
+    u = ref[int((1 - TAIL_Q) * ref.size)]
+    over = region & (zmax > u)
+    excess = np.where(over, zmax - u, 0.0)
+    scale = max(float(np.median(excess[over])) / math.log(2.0), 1e-12) if over.any() else 1.0
+    if nu:
+        # never narrower than the estimation noise of a Welch spectrum of any random
+        # signal: a noise-free simulation's deterministic floor spreads far less, and
+        # every slight line of it had stood out (a healthy 6205, cpw: 'outer race' from
+        # harmonics 6 and 7 at 1.4 x the floor)
+        scale = max(scale, chi2_excess_scale(nu))
+    cut = scale * math.log(2.0 * max(int(over.sum()), 1))
+    basis = np.stack([over & ~(excess > cut), region]).T.astype(float)
+    zz = np.where(region, z[: zmax.size], -np.inf)
+    peak = np.zeros(zmax.size, bool)
+    peak[1:-1] = (zz[1:-1] >= zz[:-2]) & (zz[1:-1] > zz[2:]) & (zz[1:-1] > u + cut)
+    peaks = np.flatnonzero(peak)
+    return {
+        "mask": region,
+        "ref": ref,
+        "u": u,
+        "cluster": _cluster(zmax, region, ref),
+        "scale": scale,
+        "cut": cut,
+        "prefix": np.concatenate([np.zeros((1, 2)), np.cumsum(basis, axis=0)]),
+        "peaks": peaks,
+        "heights": z[peaks],
+    }
+
+
+def _region_logp(zmax, fit, values, lo, hi) -> np.ndarray:
+    """ln p of the lines ``values`` (rows x lines) against the positions of a region
+    (``fit``: :func:`_region`) that are not each row's own (merged intervals
+    ``lo``..``hi``): see :func:`tail_tables`."""
+    u, cut, scale, cluster = fit["u"], fit["cut"], fit["scale"], fit["cluster"]
+    prefix, peaks, heights = fit["prefix"], fit["peaks"], fit["heights"]
+    m, c = (prefix[-1][None, :] - _interval_sums(prefix, lo, hi)).T
+    c = np.maximum(c, 1.0)
+    x = np.maximum(values - u, 0.0)
+    # the noise's part
+    m_eff = np.maximum(m * cluster, 1.0)[:, None]
+    law = ((1.0 + m) / (1.0 + c))[:, None] * np.exp(-m_eff * np.log1p(x / (m_eff * scale)))
+    # the clutter's part: its peaks (local maxima of z above u + x*, each line once) that
+    # are not the row's own: within their range the share of the positions not the row's
+    # own that read as much; beyond the largest, the chance to exceed them all, falling
+    # off by the peaks' own predictive law
+    high = values > u + cut
+    if peaks.size and high.any():
+        inside = (lo[:, :, None] <= peaks[None, None, :]) & (peaks[None, None, :] <= hi[:, :, None])
+        free_peak = ~inside.any(axis=1)
+        kc = free_peak.sum(axis=1).astype(float)
+        top = np.where(free_peak, heights[None, :], u + cut).max(axis=1)
+        mean = np.where(free_peak, heights[None, :] - u - cut, 0.0).sum(axis=1)
+        mean = np.maximum(mean / np.maximum(kc, 1.0), 1e-12)
+        reach = _free_count(zmax, fit["mask"], values, high, lo, hi)
+        k_c = np.maximum(kc, 1.0)[:, None]
+        beyond = np.maximum(values - top[:, None], 0.0)
+        fall = np.exp(-k_c * np.log1p(beyond / (k_c * mean[:, None])))
+        part = np.where(reach > 0, reach, fall) / (1.0 + c)[:, None]
+        law = law + np.where((kc[:, None] > 0) & high, part, 0.0)
+    n = fit["ref"].size
+    rank = np.log((1.0 + n - np.searchsorted(fit["ref"], values, side="left")) / (1.0 + n))
+    return np.where(values > u, np.minimum(np.log(np.maximum(law, 1e-300)), 0.0), rank)
+
+
+def _free_count(zmax, region, values, which, lo, hi) -> np.ndarray:
+    """For the lines ``which`` (rows x lines), the positions of ``region`` that are not the
+    row's own (merged intervals ``lo``..``hi``) and read at least the line's value."""
+    out = np.zeros(values.shape)
+    r, j = np.nonzero(which)
+    if r.size == 0:
+        return out
+    v = values[r, j]
+    ref = np.sort(zmax[region])
+    total = ref.size - np.searchsorted(ref, v, side="left")
+    # the row's own positions in the region, and how many of them reach each value
+    rows, back = np.unique(r, return_inverse=True)
+    width = int(np.max(hi[rows] - lo[rows], initial=-1)) + 1
+    if width > 0:
+        at = lo[rows][:, :, None] + np.arange(width)[None, None, :]
+        inside = at <= hi[rows][:, :, None]
+        at = np.clip(at, 0, zmax.size - 1)
+        own_z = np.where(inside & region[at], zmax[at], -np.inf).reshape(rows.size, -1)
+        total = total - (own_z[back] >= v[:, None]).sum(axis=1)
+    out[r, j] = total
+    return out
 
 
 def _fisher_rows(logp: np.ndarray, readable: np.ndarray) -> np.ndarray:

@@ -34,13 +34,16 @@ import numpy as np
 
 from .families import FREQUENCY, SIDEBANDS, Family
 from .speed import supply_line
-from .statistics import LINE_ALPHA, SUPPORT_ALPHA, Line, decades, normalised, series_test
+from .statistics import (
+    LINE_ALPHA,
+    SUPPORT_ALPHA,
+    Line,
+    decades,
+    fisher_logp,
+    normalised,
+    series_test,
+)
 
-#: Read the families' lines with the fitted tail and calibrate each scan on decoy scans
-#: of the same spectrum (:func:`.statistics.series_test`), instead of the rank of each
-#: line and a Bonferroni count: measured in issue 27 and not yet the default
-#: (docs/capabilities/diagnosis.md, "A statistic without a floor").
-DECOY_CALIBRATION = False
 #: Fewest harmonics of a family that must show at LINE_ALPHA for it to be called as a
 #: second fault beside a first (issue 27: no family is added from a single harmonic) [-].
 MIN_HARMONICS = 2
@@ -105,6 +108,59 @@ def discrete_mask(
     return valid, masked
 
 
+def series_shape(lines, second: bool = False) -> str | None:
+    """Why the harmonic ``lines`` of a family's best template (:class:`.statistics.Line`)
+    make no fault's series, or None.
+
+    - A fault's series shows in its harmonics: for a first fault, their Fisher
+      combination (the harmonics alone, at the best fundamental) reaches LINE_ALPHA - its
+      sidebands may carry a weak carrier, but not alone: the ball's sidebands
+      n (2 BSF) - n FTF are themselves a harmonic series at 2 BSF - FTF, and the
+      drive-end outer-race series of CWRU 130 and 131 (BPFO 107 Hz), read on the
+      fan-end channel for the 6203 (2 BSF - FTF = 108 Hz), made a "ball" from them; a
+      second fault shows as a series of its own, at least MIN_HARMONICS of its
+      harmonics at LINE_ALPHA each (a compound verdict had added an outer race from one
+      BPFO harmonic and its sidebands, beside an inner race whose intermodulation puts
+      lines there).
+    - Harmonics shown that are all multiples of one k >= 2 are a series at k x the
+      fundamental, not the family's: a record whose sample rate was given 4 times too
+      high reads a BPFO series as BPFO's harmonics 4 and 8.
+
+    >>> from .statistics import Line
+    >>> h = lambda n, p: Line("harmonic", n, 0, 0.0, 0.0, 0.0, math.log(p))
+    >>> series_shape([h(1, 1e-3), h(2, 1e-3)]) is None, series_shape([h(1, 0.3), h(2, 0.5)])
+    (True, 'its harmonics alone reach only 0.362')
+    >>> series_shape([h(1, 1e-3), h(2, 0.5)], second=True)
+    'fewer than 2 of its harmonics show at 1 %'
+    >>> series_shape([h(4, 1e-9), h(8, 1e-9), h(1, 0.5)])
+    'its harmonics shown at 1 %, [4, 8], are those of a series at 4 x it'
+    """
+    harmonics = [ln for ln in lines if ln.kind == "harmonic" and ln.n >= 1]
+    shown = {ln.n for ln in harmonics if ln.log_p < math.log(LINE_ALPHA)}
+    if second and len(shown) < MIN_HARMONICS:
+        return f"fewer than {MIN_HARMONICS} of its harmonics show at {100 * LINE_ALPHA:g} %"
+    together = float(fisher_logp([ln.log_p for ln in harmonics])) if harmonics else 0.0
+    if together >= math.log(LINE_ALPHA):
+        return f"its harmonics alone reach only {decades(together):.3g}"
+    common = math.gcd(*shown) if len(shown) >= 2 else 1
+    if common > 1:
+        return (
+            f"its harmonics shown at {100 * LINE_ALPHA:g} %, {sorted(shown)}, are those of a "
+            f"series at {common} x it"
+        )
+    return None
+
+
+def _reach(reference, spec):
+    """The top of the tail's reference for a method's spectrum [Hz]: ``reference``, or the
+    demodulation band's width where that is narrower (the squared envelope of a band holds
+    cyclic frequencies up to its width only: beyond, drs-sk's spectrum is its own roll-off)."""
+    band = getattr(spec, "band", None)
+    if reference is None or band is None:
+        return reference
+    return min(reference, float(band[1]) - float(band[0]))
+
+
 def test_all(
     spectra,
     fams: list[Family],
@@ -112,13 +168,11 @@ def test_all(
     max_frequency: float,
     harmonics: int,
     bottom: float = 0.0,
-    explained_hz: tuple = (),
+    reference: float | None = None,
 ) -> dict:
     """(method, family) -> SeriesTest for every method spectrum and family, each line read
-    against the positions from ``bottom`` [Hz] up, its scan calibrated on decoys away from
-    the families' windows and the harmonics of ``explained_hz`` (shaft, supply, mesh)
-    (see :func:`series_test` and :func:`decoy_exclusions`)."""
-    excluded = decoy_exclusions(fams, explained_hz, max_frequency, spectra[0].resolution)
+    against the positions from ``bottom`` [Hz] up to ``reference`` [Hz] (default
+    ``max_frequency``) by the tail's reading (:func:`series_test` with ``tail``)."""
     out = {}
     for spec in spectra:
         z = spec.z
@@ -138,40 +192,33 @@ def test_all(
                 fam.gate_orders,
                 bottom,
                 fam.gate_carriers,
-                decoys=excluded if DECOY_CALIBRATION else None,
-                tail=DECOY_CALIBRATION,
+                tail=True,
+                reference=_reach(reference, spec),
             )
     return out
 
 
-def decoy_exclusions(fams, explained_hz, max_frequency: float, resolution: float) -> tuple:
-    """Intervals [Hz] a decoy's window must avoid: every family's window (at 1/2, 1 and
-    2 x it), and each harmonic of the frequencies ``explained_hz`` (shaft, supply, mesh)
-    widened by one bin and 1 % - fundamentals that a bearing, shaft, supply or mesh line
-    explains. Returns (the families' windows, the machine's lines)."""
-    windows = [(f.frequency * (1 - f.below), f.frequency * (1 + f.above)) for f in fams]
-    out = []
-    for f in explained_hz:
-        if not f or f <= 0:
-            continue
-        for k in range(1, int(max_frequency / f) + 2):
-            half = resolution + 0.01 * k * f
-            out.append((k * f - half, k * f + half))
-    return tuple(windows), tuple(out)
-
-
-def explained(test, modulations: tuple) -> list[float]:
+def explained(test, modulations: tuple, beyond: float | None = None) -> list[float]:
     """Frequencies an accepted series explains [Hz]: its lines, and around each harmonic
     found its intermodulation with the shaft (+-1, 2 orders) and the cage (+-1): a
     fault's impacts are modulated at both rates (load zone, unbalance, unequal balls),
-    and these products must not become the evidence of a second fault."""
+    and these products must not become the evidence of a second fault. With ``beyond``
+    [Hz], its harmonics above those read, up to there, and theirs: the tail's reference
+    runs beyond the search limit (:func:`.statistics.tail_tables`), where a strong
+    series' higher harmonics are no clutter against a second fault's lines (the README's
+    ER-16K with an outer-race and a ball defect read "outer race" alone: 22 harmonics of
+    BPFO at z 80-140 against the ball's at z 8)."""
+    harmonics = [line.frequency_hz for line in test.lines if line.kind == "harmonic"]
     out = [line.frequency_hz for line in test.lines]
+    if beyond and test.fundamental_hz > 0 and test.lines:
+        last = max(line.n for line in test.lines)
+        more = np.arange(last + 1, int(beyond / test.fundamental_hz) + 1) * test.fundamental_hz
+        harmonics += list(more)
+        out += list(more)
     shaft, ftf = modulations
-    for line in test.lines:
-        if line.kind != "harmonic":
-            continue
+    for f in harmonics:
         for fm, orders in ((shaft, (1, 2)), (ftf, (1,))):
-            out += [line.frequency_hz + s * k * fm for k in orders for s in (-1, 1)]
+            out += [f + s * k * fm for k in orders for s in (-1, 1)]
     return out
 
 
@@ -183,7 +230,7 @@ def decide(
     harmonics: int,
     false_alarm: float,
     modulations: tuple = (0.0, 0.0),
-    explained_hz: tuple = (),
+    reference: float | None = None,
 ) -> dict:
     """The greedy verdict over all methods (see the module docstring).
 
@@ -194,7 +241,6 @@ def decide(
     """
     alpha = false_alarm / (len(fams) * len(spectra))
     log_alpha, log_support = math.log(alpha), math.log(SUPPORT_ALPHA)
-    log_line = math.log(LINE_ALPHA)
     valid = {m: v.copy() for m, v in base_valid.items()}
     # every family's lines are read against the same positions: where any of them may stand
     bottom = min(f.lowest for f in fams)
@@ -203,16 +249,11 @@ def decide(
     remaining = [f.name for f in fams]
 
     def passes(test) -> bool:
-        # a second fault shows as a series of its own: at least MIN_HARMONICS of its
-        # harmonics at LINE_ALPHA (a compound verdict had added an outer race from one
-        # BPFO harmonic and its sidebands, beside an inner race whose intermodulation
-        # puts lines there); a first fault's sidebands may carry a weak carrier
-        shown = {ln.n for ln in test.lines if ln.kind == "harmonic" and ln.log_p < log_line}
         return (
             test.log_p < log_alpha
             and test.harmonic_log_p < log_support
             and test.support_log_p < log_support
-            and (not accepted or len(shown) >= MIN_HARMONICS)
+            and series_shape(test.lines, bool(accepted)) is None
         )
 
     ball_beside_cage = None
@@ -224,7 +265,7 @@ def decide(
             max_frequency,
             harmonics,
             bottom,
-            explained_hz,
+            reference,
         )
         for name in remaining:
             # the most significant method among those whose test passes every gate (the
@@ -243,7 +284,7 @@ def decide(
         accepted.append(winner)
         remaining.remove(winner)
         resolution = spectra[0].resolution
-        for f in explained(best[winner][1], modulations):
+        for f in explained(best[winner][1], modulations, reference):
             i = int(round(f / resolution))
             for spec in spectra:
                 if 0 < i < spec.z.size:
