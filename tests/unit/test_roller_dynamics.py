@@ -96,6 +96,7 @@ def test_ball_window_stops_at_the_race_windows():
     assert separated(freqs, TOLERANCES) == TOLERANCES
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(
     "defects, verdict",
     [
@@ -106,14 +107,20 @@ def test_ball_window_stops_at_the_race_windows():
     ],
 )
 def test_simulated_roller_records_are_diagnosed(defects, verdict):
-    # with 1 m/s^2 of measurement noise (a seed: the test is the same every run); noise-free,
-    # the inner-race record is "no fault detected": the leakage of its own lines widens the
-    # shaft-harmonic masks over the BPFI series (see the capability page's limitations).
-    # Measured over seeds 0-9 (2026-11-28): each of the four verdicts 10 of 10.
-    record = simulate_record(
-        NU205, COND, defects, duration=1.0, sample_rate=20e3, noise=1.0, seed=0
-    )
-    assert record.to_dict()["diagnosis"]["verdict"] == verdict
+    # with 1 m/s^2 of measurement noise, seeds 0-9; noise-free, the inner-race record is
+    # "no fault detected": the leakage of its own lines widens the shaft-harmonic masks
+    # over the BPFI series (see the capability page's limitations). Measured 2026-11-28
+    # with the diagnosis of issue 27's second round: healthy and outer 10 of 10, inner
+    # and roller 9 of 10 (the roller miss: its lines shown are the even harmonics of
+    # 2 BSF, read as a series at twice it). At least 8 of 10 right, no wrong fault.
+    verdicts = [
+        simulate_record(
+            NU205, COND, defects, duration=1.0, sample_rate=20e3, noise=1.0, seed=seed
+        ).to_dict()["diagnosis"]["verdict"]
+        for seed in range(10)
+    ]
+    assert verdicts.count(verdict) >= 8
+    assert set(verdicts) <= {verdict, "no fault detected"}
 
 
 @pytest.mark.slow
