@@ -4,9 +4,7 @@ and the ISO 20816 severity (:func:`bearinglab.trend.trend_records`;
 docs/capabilities/trend.md)."""
 
 from ..trend.request import TREND
-from ..trend.result import duration_text as _seconds
-from ..trend.result import life_text as _life
-from ..trend.result import measured_text as _measured
+from ..trend.result import duration_text, life_text, measured_text
 from ._app import command_app, console
 from ._inputs import JsonOpt, _print_warnings, plot_option, save_plot_figure, takes
 from ._output import _emit_json, _table, escape, progress_bar
@@ -49,22 +47,23 @@ def _print(out: dict) -> None:
     base = out["baseline"]
     rows = [
         ["folder", f"{out['folder']} ({out['layout']})"],
-        ["records", f"{len(out['records'])} over {_seconds(out['duration_s'])}"],
+        ["records", f"{len(out['records'])} over {duration_text(out['duration_s'])}"],
         ["channels", ", ".join(out["channels"])],
         [
             "baseline",
-            f"{out['baseline_records']} records, {_seconds(base['start_s'])} to "
-            f"{_seconds(base['end_s'])} (after {base['running_in_records']} running-in records)",
+            f"{out['baseline_records']} records, {duration_text(base['start_s'])} to "
+            f"{duration_text(base['end_s'])} "
+            f"(after {base['running_in_records']} running-in records)",
         ],
         [
             "rule",
             f"{rule['tests']} tests over 0-{rule['band_hz'][1]:.6g} Hz, each level the median "
-            f"of {rule['persistence']} records ({_seconds(rule['persistence_s'])}), limit "
+            f"of {rule['persistence']} records ({duration_text(rule['persistence_s'])}), limit "
             f"{rule['limit_excess']:.3g} robust scales above the baseline; false alarms "
             f"stated {rule['false_alarm_per_hour']:.3g} per hour of monitoring "
             f"({rule['false_alarm_per_record']:.3g} per record)",
         ],
-        ["false alarms measured", _measured(rule["measured_false_alarm"])],
+        ["false alarms measured", measured_text(rule["measured_false_alarm"])],
     ]
     alarm = out["alarm"]
     if alarm is None:
@@ -73,11 +72,11 @@ def _print(out: dict) -> None:
         rows += [
             [
                 "alarm",
-                f"{_seconds(alarm['time_s'])}, record {alarm['record']} ({alarm['file']}): "
+                f"{duration_text(alarm['time_s'])}, record {alarm['record']} ({alarm['file']}): "
                 f"{alarm['indicator']} of {alarm['channel']} {alarm['value']:.4g} > limit "
                 f"{alarm['limit']:.4g}",
             ],
-            ["before the last record", _seconds(alarm["time_to_last_record_s"])],
+            ["before the last record", duration_text(alarm["time_to_last_record_s"])],
         ]
     diag = out["diagnosis"]
     if diag is not None and alarm is not None:
@@ -95,20 +94,22 @@ def _print(out: dict) -> None:
             [
                 "short crossings",
                 f"{len(out['short_crossings'])} run(s) of records above a limit that did not "
-                f"persist, the first at {_seconds(first['time_s'])} ({first['indicator']}, "
+                f"persist, the first at {duration_text(first['time_s'])} ({first['indicator']}, "
                 f"{first['channel']})",
             ]
         )
     life = out.get("remaining_life")
     if life is not None:
-        rows.append(["remaining life", _life(life)])
+        rows.append(["remaining life", life_text(life)])
     severity = out["severity"]
     if severity is not None:
         first = severity["first_zone_s"]
         rows.append(
             [
                 f"ISO zones ({severity['machine']})",
-                "; ".join(f"zone {z} from {_seconds(t)}" for z, t in first.items() if t is not None)
+                "; ".join(
+                    f"zone {z} from {duration_text(t)}" for z, t in first.items() if t is not None
+                )
                 or "zone A throughout",
             ]
         )

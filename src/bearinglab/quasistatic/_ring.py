@@ -22,9 +22,10 @@ watch()  # the first compile after install is told, not silent
 
 
 @numba.njit(cache=True)
-def _lu_solve(a, rhs):
+def _lu_solve(a, rhs, tol=1e-15):
     """x with a x = rhs by Gaussian elimination with partial pivoting (n <= 5); returns
-    (x, False) for a matrix singular to machine precision, as np.linalg.solve would raise."""
+    (x, False) for a matrix singular to ``tol`` times its largest entry, as
+    np.linalg.solve would raise (the ball ring iteration 1e-15, the roller one 1e-14)."""
     n = rhs.shape[0]
     m = a.copy()
     x = rhs.copy()
@@ -37,7 +38,7 @@ def _lu_solve(a, rhs):
         for r in range(c + 1, n):
             if abs(m[r, c]) > abs(m[p, c]):
                 p = r
-        if abs(m[p, c]) <= 1e-15 * scale or scale == 0.0:
+        if abs(m[p, c]) <= tol * scale or scale == 0.0:
             return x, False
         if p != c:
             for k in range(n):

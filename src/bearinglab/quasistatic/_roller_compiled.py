@@ -11,6 +11,7 @@ import numba
 import numpy as np
 
 from ..engine.compiling import watch
+from ._ring import _lu_solve
 from ._roller_kernels import REG_ABSOLUTE, REG_RELATIVE, ROLLER_ITERATIONS
 
 watch()  # the first compile after install is told, not silent
@@ -305,40 +306,6 @@ def roller_set_state(u, v_all, rs):
 
 
 @numba.njit(cache=True)
-def _lu_solve(a, rhs):
-    """x with a x = rhs (n <= 5), Gaussian elimination with partial pivoting; (x, False)
-    for a matrix singular to machine precision."""
-    n = rhs.shape[0]
-    m = a.copy()
-    x = rhs.copy()
-    scale = 0.0
-    for i in range(n):
-        for k in range(n):
-            scale = max(scale, abs(m[i, k]))
-    for c in range(n):
-        p = c
-        for r in range(c + 1, n):
-            if abs(m[r, c]) > abs(m[p, c]):
-                p = r
-        if abs(m[p, c]) <= 1e-14 * scale or scale == 0.0:
-            return x, False
-        if p != c:
-            for k in range(n):
-                m[c, k], m[p, k] = m[p, k], m[c, k]
-            x[c], x[p] = x[p], x[c]
-        for r in range(c + 1, n):
-            f = m[r, c] / m[c, c]
-            for k in range(c, n):
-                m[r, k] -= f * m[c, k]
-            x[r] -= f * x[c]
-    for c in range(n - 1, -1, -1):
-        for k in range(c + 1, n):
-            x[c] -= m[c, k] * x[k]
-        x[c] /= m[c, c]
-    return x, True
-
-
-@numba.njit(cache=True)
 def _residual_norm(load, force, free, scale):
     total = 0.0
     for d in range(5):
@@ -376,7 +343,7 @@ def ring_newton(u0, v0, free, load, scale, max_step, rs, target, max_iterations)
             rhs[a] = load[idx[a]] + force[idx[a]]
             for b in range(nfree):
                 kff[a, b] = stiff[idx[a], idx[b]]
-        du_f, solved = _lu_solve(kff, rhs)
+        du_f, solved = _lu_solve(kff, rhs, 1e-14)
         if not solved or not np.all(np.isfinite(du_f)):
             for a in range(nfree):
                 du_f[a] = rhs[a] / max(abs(kff[a, a]), 1.0)
