@@ -19,7 +19,7 @@ def registry() -> dict:
     from .analyses import ANALYSES
     from .analyses.diagnosis import ANALYZE, BENCHMARK
     from .analyses.foundation import CONTACT, INFO
-    from .analyses.mechanics import STIFFNESS_MAP
+    from .analyses.stiffness import STIFFNESS_MAP
     from .dataset.request import DATASET
     from .report.request import REPORT
     from .study.request import STUDY

@@ -1,6 +1,6 @@
 """One JSON contract (issue 12, docs/json.md): every key of every command's ``--json``
 carries its unit as a suffix of :data:`bearinglab.units.UNITS`, or is one of the
-dimensionless keys of :data:`bearinglab.units.DIMENSIONLESS`, inside maps' members too
+dimensionless keys of :data:`bearinglab.json_keys.DIMENSIONLESS`, inside maps' members too
 (issue 22); docs/json.md lists both."""
 
 import json
@@ -10,11 +10,10 @@ import pytest
 from conftest import README_REPORT, README_STATIC, write_pronostia
 
 from bearinglab.cli import main
+from bearinglab.json_keys import DIMENSIONLESS, MAPS
 from bearinglab.units import (
-    DIMENSIONLESS,
     JSON_EXCEPTIONS,
     JSON_SUFFIXES,
-    MAPS,
     UNITS,
     contract_markdown,
     unit_of,
@@ -119,7 +118,7 @@ REAL = Path(__file__).resolve().parents[3] / "shared" / "data" / "real"
 
 def _offending(obj, path: str = "") -> list[str]:
     """Keys that break the contract, with their path. The data-named levels of a map
-    (units.MAPS) are not checked, but the keys inside its members are."""
+    (json_keys.MAPS) are not checked, but the keys inside its members are."""
     bad = []
     if isinstance(obj, dict):
         for key, value in obj.items():

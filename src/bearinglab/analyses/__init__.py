@@ -12,7 +12,7 @@ The command line generates each command's options from its entry and prints the 
 from __future__ import annotations
 
 from ..errors import InputError
-from . import mechanics, operation, vibration
+from . import foundation, mechanics, operation, rings, stiffness, vibration
 from .base import Analysis, inputs, pick
 
 __all__ = ["ALIASES", "ANALYSES", "Analysis", "analysis", "inputs", "pick"]
@@ -21,12 +21,12 @@ __all__ = ["ALIASES", "ANALYSES", "Analysis", "analysis", "inputs", "pick"]
 ANALYSES: dict[str, Analysis] = {
     a.name: a
     for a in (
-        mechanics.STIFFNESS,
+        stiffness.STIFFNESS,
         mechanics.STATIC,
-        mechanics.FREQUENCIES,
+        foundation.FREQUENCIES,
         operation.LIFE,
         operation.FRICTION,
-        mechanics.RING_MODES,
+        rings.RING_MODES,
         vibration.NOISE,
         vibration.SIMULATE,
     )

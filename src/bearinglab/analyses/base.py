@@ -22,6 +22,12 @@ def inputs(*names: str, **own: Input) -> dict[str, Input]:
 
 #: The bearing's inputs (a designation and/or its geometry).
 BEARING_INPUTS = inputs(*BEARING)
+#: The loads of a quasi-static request.
+LOADS = inputs("radial_load_n", "axial_load_n")
+#: The inner-ring speed, at rest unless given.
+SPEED_AT_REST = {
+    "speed_rpm": INPUTS["speed_rpm"].with_(default=0.0, help="Inner-ring speed [rpm].")
+}
 
 
 @dataclass(frozen=True)

@@ -1,7 +1,7 @@
-"""The foundation's requests: what a designation or a geometry is (``info``) and the
-Hertz contact of one rolling element with both raceways (``contact``). Each builds the
-models from the request (:mod:`bearinglab.inputs`), calls the library once and keeps the
-result."""
+"""The foundation's requests: what a designation or a geometry is (``info``), the
+Hertz contact of one rolling element with both raceways (``contact``) and the kinematic
+defect frequencies (``frequencies``, pure rolling). Each builds the models from the
+request (:mod:`bearinglab.inputs`), calls the library once and keeps the result."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ import math
 from dataclasses import dataclass, field
 
 from ..errors import CatalogError, DesignationError, InputError
-from ..inputs import INPUTS, Input, bearing_from, bearing_warnings, no_effect, si
+from ..inputs import INPUTS, Input, bearing_from, bearing_warnings, no_effect, si, speed_from
 from .base import BEARING_INPUTS, Analysis, Outcome, inputs, plot_file
 
 
@@ -195,3 +195,43 @@ CONTACT = Analysis(
 )
 
 __all__ = ["CONTACT", "INFO", "InfoResult", "contact", "info"]
+
+
+# ------------------------------------------------------------------ kinematics
+def frequencies(values: dict) -> Outcome:
+    """The ``frequencies`` request: kinematic defect frequencies (pure rolling)."""
+    from ..inputs import given_fields
+    from ..kinematics import defect_frequencies, geometry_inputs
+    from ..plausibility import speed_factor_warnings
+
+    shaft_speed = speed_from(values, positive=False)
+    bearing, decoded = bearing_from(values)
+    f = defect_frequencies(bearing, shaft_speed, outer_rotating=bool(values.get("outer_rotating")))
+    used = geometry_inputs(bearing)
+    unused = [(name, field not in used) for name, field in given_fields(values).items()]
+    warnings = (
+        bearing_warnings(bearing, decoded)
+        + speed_factor_warnings(bearing, shaft_speed)
+        + no_effect(unused, "on the defect frequencies (pure rolling: Z, D_w, d_m, contact angle)")
+    )
+    return Outcome(f, values.get("designation"), tuple(warnings), bearing)
+
+
+_FREQ_OUT = {
+    f"{n}_{u}": "f" for u in ("hz", "order") for n in ("ftf", "bpfo", "bpfi", "bsf", "ball_defect")
+}
+_FREQ_OUT["shaft_hz"] = "f"
+
+FREQUENCIES = Analysis(
+    "frequencies",
+    "Kinematic defect frequencies (defect_frequencies).",
+    {
+        **BEARING_INPUTS,
+        "speed_rpm": INPUTS["speed_rpm"].with_(default=...),
+        **inputs("outer_rotating"),
+    },
+    run=frequencies,
+    outputs=_FREQ_OUT,
+    largest=20000,
+    files=plot_file("the defect frequencies"),
+)

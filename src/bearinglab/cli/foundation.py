@@ -4,8 +4,7 @@ import math
 
 from rich.markup import escape
 
-from ..analyses.foundation import CONTACT, INFO
-from ..analyses.mechanics import FREQUENCIES
+from ..analyses.foundation import CONTACT, FREQUENCIES, INFO
 from ..contact.ball_race import SUMMARY as BALL_SUMMARY
 from ..contact.roller_race import SUMMARY as ROLLER_SUMMARY
 from ..inputs import geometry_line, geometry_rows

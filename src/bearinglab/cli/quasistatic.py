@@ -5,7 +5,8 @@ from pathlib import Path
 import numpy as np
 from rich.markup import escape
 
-from ..analyses.mechanics import STATIC, STIFFNESS_MAP
+from ..analyses.mechanics import STATIC
+from ..analyses.stiffness import STIFFNESS_MAP
 from ..files import write_atomically
 from ..inputs import geometry_line
 from ..inputs.specs import form_errors_text

@@ -3,7 +3,7 @@
 inputs of the paper alone (ball count, ring mass, K_x or f_1, free-ring frequencies,
 kappa)."""
 
-from ..analyses.mechanics import DEFAULT_RING_AXIAL_LOAD, RING_MODES
+from ..analyses.rings import DEFAULT_RING_AXIAL_LOAD, RING_MODES
 from ._app import command_app, console
 from ._inputs import JsonOpt, _print_warnings, check_path, plot_option, save_plot_figure, takes
 from ._output import _emit_json, _table

@@ -28,18 +28,8 @@ from .bearing import (
     read_geometry_file,
 )
 from .specs import FormErrors, check_defects, parse_defect
-from .table import (
-    BEARING,
-    FORMS,
-    GEOMETRY_NEEDED,
-    INPUTS,
-    Input,
-    check,
-    closed,
-    input_for,
-    restate,
-    si,
-)
+from .table import BEARING, FORMS, GEOMETRY_NEEDED, INPUTS, Input
+from .values import check, closed, input_for, restate, si
 
 __all__ = [
     "BEARING",

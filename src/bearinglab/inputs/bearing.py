@@ -116,7 +116,7 @@ class _Given:
     def remap(self, exc: InputError) -> InputError:
         """The model's error in the user's terms: the input they gave (or, for a check
         between two values, the one of them they gave) with its value in its unit."""
-        from .table import input_for, restate
+        from .values import input_for, restate
 
         name = input_for(exc.parameter, INPUTS)
         if name is None or name not in BEARING:
@@ -234,7 +234,7 @@ def read_geometry_file(path) -> dict:
 
 def _catalog_message(exc) -> str:
     """A catalogue error in the user's terms: the inputs to give instead of keywords."""
-    from .table import input_for
+    from .values import input_for
 
     names = [f"`{input_for(k, INPUTS)}`" for k in exc.needed if input_for(k, INPUTS) in BEARING]
     if not names:
