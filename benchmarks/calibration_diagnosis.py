@@ -2,7 +2,7 @@
 
 Three questions, each on records without a bearing fault:
 
-1. **The line statistic** (:func:`bearinglab.diagnosis.statistics.reference_logp`): at the
+1. **The line statistic** (:func:`bearinglab.diagnosis.tail.reference_logp`): at the
    positions where a line may stand, each record's line p-values (each position read
    against all of them) should be uniform. Per record a Kolmogorov-Smirnov test at the
    1 % level; pooled over the records, the fraction of positions below 1e-2, 1e-3 and
@@ -38,7 +38,8 @@ import numpy as np
 
 from bearinglab.catalog import bearing_from_designation
 from bearinglab.diagnosis import analyze_signal
-from bearinglab.diagnosis.statistics import _window_max, line_logp, normalised
+from bearinglab.diagnosis.statistics import _window_max, normalised
+from bearinglab.diagnosis.tail import line_logp
 from bearinglab.kinematics import defect_frequencies
 
 LEVELS = (0.2, 0.1, 0.05, 0.01, 0.0025, 0.001)

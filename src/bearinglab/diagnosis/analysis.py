@@ -27,7 +27,8 @@ from .methods import IES_NOTE, METHODS, method_spectrum, parse_methods
 from .reasons import doubt_reason, stray_warning, verdict_reason
 from .result import Diagnosis
 from .speed import SPEED_CONFIRMING, speed_used
-from .statistics import LINE_ALPHA, REFERENCE_POSITIONS, decades
+from .statistics import LINE_ALPHA, decades
+from .tail import REFERENCE_POSITIONS
 from .verdict import NO_FAULT, decide, discrete_mask, label_peaks, with_z
 
 #: Channels preferred when none is named: the vertical (load-direction) acceleration of

@@ -204,7 +204,7 @@ def explained(test, modulations: tuple, beyond: float | None = None) -> list[flo
     fault's impacts are modulated at both rates (load zone, unbalance, unequal balls),
     and these products must not become the evidence of a second fault. With ``beyond``
     [Hz], its harmonics above those read, up to there, and theirs: the tail's reference
-    runs beyond the search limit (:func:`.statistics.tail_tables`), where a strong
+    runs beyond the search limit (:func:`.tail.tail_tables`), where a strong
     series' higher harmonics are no clutter against a second fault's lines (the README's
     ER-16K with an outer-race and a ball defect read "outer race" alone: 22 harmonics of
     BPFO at z 80-140 against the ball's at z 8)."""
