@@ -17,8 +17,8 @@ import scipy.special
 import scipy.stats
 
 from bearinglab.diagnosis.chain import chain_logp, chain_steps
+from bearinglab.diagnosis.series import _window_max, series_test
 from bearinglab.diagnosis.speed import line_near, shaft_multiple, supply_line
-from bearinglab.diagnosis.statistics import _window_max, series_test
 from bearinglab.diagnosis.tail import line_logp, reference_logp
 
 

@@ -6,7 +6,7 @@ Layer 1 (NumPy and ``scipy.special``). A line expected at frequency f is read as
 largest normalised value z over the bin nearest f and its two neighbours (the line's own
 width under a Hann window; :func:`bearinglab.diagnosis.statistics.normalised`). Its
 p-value (:func:`tail_tables`, the diagnosis' reading, ``series_test(tail=True)`` of
-:mod:`.statistics`) is its rank among the same reading at every position where a line may
+:mod:`.series`) is its rank among the same reading at every position where a line may
 stand, up to the reference's upper TAIL_Q, and beyond that a peaks-over-threshold law
 fitted to the positions that are not the family's own lines at that fundamental - the
 noise's exceedances, exponential with an estimated scale (their predictive, Lomax, law),
@@ -243,7 +243,7 @@ def tail_tables(
     the same table for each), each line read against the positions that are not the
     family's own at its fundamental (:func:`own_intervals`): every line its deepest
     template reads there, and its harmonics continued beyond the search limit
-    (``beyond``: :func:`.statistics._continuation`).
+    (``beyond``: :func:`.series._continuation`).
 
     Up to u, the upper TAIL_Q quantile of the positions from ``bottom_bin`` to
     ``top_bin``: the rank among all of them (the candidate's own included: in-sample,
