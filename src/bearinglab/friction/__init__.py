@@ -5,7 +5,8 @@
   ball bearings from ISO 281 (:func:`bearinglab.ratings.equivalent_dynamic_load`).
 - :mod:`.skf` -- the SKF four-component model M = phi_ish phi_rs M_rr + M_sl + M_seal +
   M_drag (SKF catalogue 10000 EN), and the viscosity ratio kappa (ISO 281's nu_1 from
-  :mod:`bearinglab.life`).
+  :mod:`bearinglab.life`); :mod:`.skf_constants` its constants (mu, K_rs, K_Z, the
+  deep-groove series' geometry constants) and units.
 - :mod:`.bearing` -- :class:`FrictionBearing`: what the models need of a bearing (a ball
   bearing's geometry, or any type's ISO boundary dimensions).
 - :mod:`.analysis` -- :func:`constant_friction`, :func:`skf_friction` and
@@ -35,17 +36,8 @@ from .constant import (
 )
 from .result import FrictionResult
 from .skf import (
-    DEEP_GROOVE_CONSTANTS,
-    K_RS,
-    K_Z,
-    MU_BL,
-    MU_EHL,
-    SKF_BEARING_TYPES,
-    SKF_SOURCE,
-    SkfGeometryConstants,
     SkfMoment,
     angular_contact_load_variables,
-    deep_groove_constants,
     deep_groove_load_angle,
     deep_groove_load_variables,
     inlet_shear_heating_factor,
@@ -55,6 +47,17 @@ from .skf import (
     sliding_friction_coefficient,
     sliding_weighting_factor,
     viscosity_ratio,
+)
+from .skf_constants import (
+    DEEP_GROOVE_CONSTANTS,
+    K_RS,
+    K_Z,
+    MU_BL,
+    MU_EHL,
+    SKF_BEARING_TYPES,
+    SKF_SOURCE,
+    SkfGeometryConstants,
+    deep_groove_constants,
 )
 
 __all__ = [

@@ -39,7 +39,8 @@ from .rules import (
     seals_of,
     viscosity_of,
 )
-from .skf import (
+from .skf import seal_moment, skf_frictional_moment, viscosity_ratio
+from .skf_constants import (
     K_RS,
     K_Z,
     K_Z_UNVERIFIED,
@@ -50,9 +51,6 @@ from .skf import (
     SKF_SOURCE,
     SkfGeometryConstants,
     deep_groove_constants,
-    seal_moment,
-    skf_frictional_moment,
-    viscosity_ratio,
 )
 
 MODELS = ("constant", "skf")
