@@ -5,7 +5,8 @@
   ball bearings from ISO 281 (:func:`bearinglab.ratings.equivalent_dynamic_load`).
 - :mod:`.skf` -- the SKF four-component model M = phi_ish phi_rs M_rr + M_sl + M_seal +
   M_drag (SKF catalogue 10000 EN), and the viscosity ratio kappa (ISO 281's nu_1 from
-  :mod:`bearinglab.life`); :mod:`.skf_constants` its constants (mu, K_rs, K_Z, the
+  :mod:`bearinglab.life`); :mod:`.skf_loads` its geometric and load variables G_rr, G_sl
+  by bearing type (Table 2a); :mod:`.skf_constants` its constants (mu, K_rs, K_Z, the
   deep-groove series' geometry constants) and units.
 - :mod:`.bearing` -- :class:`FrictionBearing`: what the models need of a bearing (a ball
   bearing's geometry, or any type's ISO boundary dimensions).
@@ -37,9 +38,6 @@ from .constant import (
 from .result import FrictionResult
 from .skf import (
     SkfMoment,
-    angular_contact_load_variables,
-    deep_groove_load_angle,
-    deep_groove_load_variables,
     inlet_shear_heating_factor,
     replenishment_factor,
     seal_moment,
@@ -58,6 +56,11 @@ from .skf_constants import (
     SKF_SOURCE,
     SkfGeometryConstants,
     deep_groove_constants,
+)
+from .skf_loads import (
+    angular_contact_load_variables,
+    deep_groove_load_angle,
+    deep_groove_load_variables,
 )
 
 __all__ = [
