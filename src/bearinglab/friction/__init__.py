@@ -10,9 +10,11 @@
   deep-groove series' geometry constants) and units.
 - :mod:`.bearing` -- :class:`FrictionBearing`: what the models need of a bearing (a ball
   bearing's geometry, or any type's ISO boundary dimensions).
-- :mod:`.analysis` -- :func:`constant_friction`, :func:`skf_friction` and
-  :func:`bearing_friction` (either model, with the rules for P, C_0, seals, viscosity and
-  lubrication), used by the ``friction`` command and the report alike.
+- :mod:`.models` -- :func:`constant_friction` and :func:`skf_friction`, each model as a
+  result from explicit inputs.
+- :mod:`.analysis` -- :func:`bearing_friction` (either model, with the rules for P, C_0,
+  seals, viscosity and lubrication of :mod:`.rules`), used by the ``friction`` command and
+  the report alike.
 - :mod:`.result` -- :class:`FrictionResult`.
 
 Core API in SI units (N, m, rad/s, m^2/s, N m, W); ``FrictionResult.to_dict()`` in
@@ -25,7 +27,7 @@ checked against the sources: docs/capabilities/friction.md.
 29.25
 """
 
-from .analysis import MODELS, SEALS, bearing_friction, constant_friction, skf_friction
+from .analysis import bearing_friction
 from .bearing import FrictionBearing
 from .constant import (
     SEED003_COEFFICIENTS,
@@ -35,7 +37,9 @@ from .constant import (
     friction_type_of,
     power_loss,
 )
+from .models import MODELS, constant_friction, skf_friction
 from .result import FrictionResult
+from .rules import SEALS
 from .skf import (
     SkfMoment,
     inlet_shear_heating_factor,
