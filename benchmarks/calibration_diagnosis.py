@@ -2,7 +2,7 @@
 
 Three questions, each on records without a bearing fault:
 
-1. **The line statistic** (:func:`bearinglab.diagnosis.statistics.reference_logp`): at the
+1. **The line statistic** (:func:`bearinglab.diagnosis.tail.reference_logp`): at the
    positions where a line may stand, each record's line p-values (each position read
    against all of them) should be uniform. Per record a Kolmogorov-Smirnov test at the
    1 % level; pooled over the records, the fraction of positions below 1e-2, 1e-3 and
@@ -11,7 +11,7 @@ Three questions, each on records without a bearing fault:
    p-value of each family's scan (its own geometry: a 6205 at 1797 rpm, 12 kHz, the
    default resolution) on records of independent bins whose lines' p-values are exact,
    against the bound, at t = 0.05 ... 1e-4 (``--chain DRAWS``).
-3. **The family's p-value** (tail and chain, :func:`~bearinglab.diagnosis.statistics.
+3. **The family's p-value** (tail and chain, :func:`~bearinglab.diagnosis.series.
    series_test`) as the diagnosis computes it: over the records, each family's p-value
    below t as often as t at most (P(p < t) / t, with the count), a KS test of their
    uniformity, and the whole-record false alarms (any fault named) against P_FA.
@@ -38,7 +38,9 @@ import numpy as np
 
 from bearinglab.catalog import bearing_from_designation
 from bearinglab.diagnosis import analyze_signal
-from bearinglab.diagnosis.statistics import _window_max, line_logp, normalised
+from bearinglab.diagnosis.series import _window_max
+from bearinglab.diagnosis.statistics import normalised
+from bearinglab.diagnosis.tail import line_logp
 from bearinglab.kinematics import defect_frequencies
 
 LEVELS = (0.2, 0.1, 0.05, 0.01, 0.0025, 0.001)
@@ -118,7 +120,7 @@ def chain_check(draws, seed=0):
     """The chain bound against the scan's true law on records of independent bins."""
     from bearinglab.diagnosis.chain import chain_logp, chain_steps
     from bearinglab.diagnosis.families import families, tolerances
-    from bearinglab.diagnosis.statistics import _read
+    from bearinglab.diagnosis.series import _read
 
     bearing, _ = bearing_from_designation("6205")
     kin = defect_frequencies(bearing, 1797 * math.pi / 30)

@@ -15,7 +15,8 @@ from bearinglab.diagnosis import (
     peak_label,
 )
 from bearinglab.diagnosis.families import tolerances
-from bearinglab.diagnosis.statistics import chi2_logsf, decades, series_test, welch_dof
+from bearinglab.diagnosis.series import series_test
+from bearinglab.diagnosis.statistics import chi2_logsf, decades, welch_dof
 from bearinglab.diagnosis.verdict import leakage_halfwidth
 from bearinglab.dynamics import Defect, simulate
 from bearinglab.errors import InputError

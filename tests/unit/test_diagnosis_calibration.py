@@ -1,7 +1,7 @@
 """Calibration of the diagnosis' probabilities under no fault (issue 27).
 
-The line statistic with its tail (:func:`bearinglab.diagnosis.statistics.reference_logp`,
-:func:`~bearinglab.diagnosis.statistics.tail_tables`), the chain bound on a scan's best
+The line statistic with its tail (:func:`bearinglab.diagnosis.tail.reference_logp`,
+:func:`~bearinglab.diagnosis.tail.tail_tables`), the chain bound on a scan's best
 p-value (:mod:`bearinglab.diagnosis.chain`) on its own, the family test on noise, and the
 speed check's supply rule. The sweeps over many records are in
 benchmarks/calibration_diagnosis.py. Cost: about 4 s.
@@ -17,13 +17,9 @@ import scipy.special
 import scipy.stats
 
 from bearinglab.diagnosis.chain import chain_logp, chain_steps
+from bearinglab.diagnosis.series import _window_max, series_test
 from bearinglab.diagnosis.speed import line_near, shaft_multiple, supply_line
-from bearinglab.diagnosis.statistics import (
-    _window_max,
-    line_logp,
-    reference_logp,
-    series_test,
-)
+from bearinglab.diagnosis.tail import line_logp, reference_logp
 
 
 def test_a_strong_line_is_not_floored_at_the_rank_of_the_largest_reference():

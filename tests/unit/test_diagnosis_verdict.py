@@ -7,13 +7,8 @@ import pytest
 
 import bearinglab.diagnosis.verdict as verdict
 from bearinglab.diagnosis.families import Family, families, tolerances
-from bearinglab.diagnosis.statistics import (
-    LINE_BINS,
-    Line,
-    SeriesTest,
-    series_test,
-    welch_dof,
-)
+from bearinglab.diagnosis.series import LINE_BINS, Line, SeriesTest, series_test
+from bearinglab.diagnosis.statistics import welch_dof
 
 LN10 = math.log(10.0)
 

@@ -260,7 +260,8 @@ def test_frequency_names_read_roller_for_rollers():
 
 # ------------------------------------------------------------------ friction
 def test_skf_roller_forms():
-    from bearinglab.friction.skf import SkfGeometryConstants, skf_frictional_moment
+    from bearinglab.friction.skf import skf_frictional_moment
+    from bearinglab.friction.skf_constants import SkfGeometryConstants
 
     const = SkfGeometryConstants(1.09e-6, 0.0, 0.16, 0.0015)
     m = skf_frictional_moment("cylindrical_roller", 0.025, 0.052, 2000.0, 0.0, 300.0, 30e-6, const)

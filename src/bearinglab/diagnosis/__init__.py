@@ -13,7 +13,11 @@ Modules, one sub-problem each:
 - :mod:`.families`: which lines each fault makes, and their tolerances (literature);
 - :mod:`.methods`: Smith & Randall's three routes to a squared envelope spectrum (raw,
   cepstral pre-whitening, discrete/random separation + fast kurtogram band);
-- :mod:`.statistics`: the noise floor, line p-values, the harmonic series test;
+- :mod:`.statistics`: the noise floor and its chi-square law, Fisher's combination;
+- :mod:`.series`: the harmonic series test of a family (nested templates, the scan and
+  its chain bound, :mod:`.chain`);
+- :mod:`.tail`: a line's p-value against the spectrum's own positions (its rank, and a
+  fitted peaks-over-threshold law beyond);
 - :mod:`.speed`: the shaft speed the signal shows;
 - :mod:`.verdict`: masking of discrete lines, the greedy decision, labelled lines;
 - :mod:`.result`: :class:`Diagnosis`; :mod:`.analysis`: :func:`analyze_signal`;

@@ -4,7 +4,7 @@ Steps: read the samples; check the speed the signal shows against the speed give
 take it from the signal, ``shaft_speed="auto"``); check that the record is long enough and
 sampled fast enough for the bearing; compute the squared envelope spectrum by each method
 asked for (:mod:`.methods`); test each fault family's harmonic series with its sidebands
-against the local noise floor (:mod:`.statistics`) and decide (:mod:`.verdict`).
+against the local noise floor (:mod:`.series`) and decide (:mod:`.verdict`).
 """
 
 from __future__ import annotations
@@ -26,8 +26,10 @@ from .families import (
 from .methods import IES_NOTE, METHODS, method_spectrum, parse_methods
 from .reasons import doubt_reason, stray_warning, verdict_reason
 from .result import Diagnosis
+from .series import LINE_ALPHA
 from .speed import SPEED_CONFIRMING, speed_used
-from .statistics import LINE_ALPHA, REFERENCE_POSITIONS, decades
+from .statistics import decades
+from .tail import REFERENCE_POSITIONS
 from .verdict import NO_FAULT, decide, discrete_mask, label_peaks, with_z
 
 #: Channels preferred when none is named: the vertical (load-direction) acceleration of
@@ -364,7 +366,7 @@ def analyze_signal(
     # a simulated record of a bearing without a defect names its varying-compliance rate
     # (dynamics.simulate): the model's own lines, masked as a machine's are
     compliance = metadata.get("varying_compliance_hz")
-    # the tail's reference runs beyond the search limit (statistics.tail_tables), masked
+    # the tail's reference runs beyond the search limit (tail.tail_tables), masked
     # as far
     reference = min(fs / 2.56, max(max_frequency, REFERENCE_POSITIONS * res))
     valid, masked = discrete_mask(

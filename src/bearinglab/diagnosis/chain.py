@@ -2,7 +2,7 @@
 
 Layer 1 (NumPy and ``scipy.special``). A family's test scans its fundamental f' over the
 family's tolerance window on a grid fine enough to move the top harmonic by half a bin,
-and keeps the best of the Fisher tests of its lines (:mod:`.statistics`). The chance that
+and keeps the best of the Fisher tests of its lines (:mod:`.series`). The chance that
 the best of them reaches t on a record without the fault is the probability of the union
 of the events A_r = {test r reaches t}. Bonferroni bounds it by the number of distinct
 tests times t, but consecutive fundamentals read nearly the same bins - one line moves to
@@ -21,7 +21,7 @@ of Davies' bound by the expected number of up-crossings (Davies R. B., Biometrik
 Each step between consecutive fundamentals is split into single-line steps (a union of
 the intermediate tests only adds events, so the bound stays a bound), and each has a
 closed form when the lines' p-values are independent and uniform (the null of
-:mod:`.statistics`) and a line's reading is the largest of three bins:
+:mod:`.series`) and a line's reading is the largest of three bins:
 
 - a line moves to the next bin (two of its three bins shared): with R ~ chi2(2L - 2) the
   other lines' Fisher statistic, x the level's critical value of chi2(2L) and

@@ -12,7 +12,7 @@ MSSP 25(2) (2011) 485-520, sec. 2 and fig. 4):
   load zone spans less than a turn), hence the same two orders as the inner race
   (Randall & Antoni 2011, sec. 2 and fig. 4). Record 144 (3 o'clock) shows 1 and 2 x BPFO
   with +-2 x shaft sidebands (z 10-17 with cpw) and no +-1. The sidebands are tested as
-  nested templates (harmonics alone first: :mod:`.statistics`), so an unmodulated
+  nested templates (harmonics alone first: :mod:`.series`), so an unmodulated
   series loses nothing by them;
 - inner race: harmonics of BPFI with sidebands at the shaft rate, the defect passing
   through the load zone once per revolution (+-1, 2 x shaft);
@@ -20,7 +20,7 @@ MSSP 25(2) (2011) 485-520, sec. 2 and fig. 4):
   revolution) with sidebands at the cage rate, which carries the ball through the load
   zone (+-1, 2 x FTF);
 - every modulated family also shows the modulation's own lines, k x shaft or k x FTF
-  (k = 1, 2: the sidebands of the 0th harmonic, :mod:`.statistics`); the shaft
+  (k = 1, 2: the sidebands of the 0th harmonic, :mod:`.series`); the shaft
   harmonics are masked as the machine's, so this adds FTF lines to the ball family only,
   and never to the test of its harmonics (FTF lines alone make no ball fault);
 - cage: harmonics of FTF. FTF lines are also the cage-rate modulation of a ball fault and
@@ -49,7 +49,7 @@ held every BPFO harmonic and a simulated outer-race defect was called "ball"); a
 2 BSF lies 31 % above its BPFO, 13 % below its BPFI, and keeps its whole window.
 
 The search window is never narrower than the line's own three bins
-(:data:`bearinglab.diagnosis.statistics.LINE_BINS`).
+(:data:`bearinglab.diagnosis.series.LINE_BINS`).
 """
 
 from __future__ import annotations
@@ -82,13 +82,13 @@ TOLERANCES = {
 #: modulate the defect deeply, once per revolution of what carries it (inner race: shaft;
 #: ball: cage; Randall & Antoni 2011, sec. 2 and fig. 4), so that the carriers may be
 #: weaker than their sidebands - or not (the harmonics alone are tried too:
-#: :mod:`.statistics`); and the first shaft sidebands of the outer race, whose defect,
+#: :mod:`.series`); and the first shaft sidebands of the outer race, whose defect,
 #: away from the load line or under a rotating load, is loaded through the shaft-rate
 #: modulation too (CWRU 247 at 3 o'clock: 1 and 2 x BPFO with BPFO - shaft, 2 BPFO - shaft
 #: and BPFO + shaft beside them, its harmonics alone 10^-1.82 against the gate's 10^-2).
 GATE_ORDERS = {"outer_race": 1, "inner_race": 1, "ball": 1, "cage": 0}
 #: Families whose sidebands count in that test only beside a carrier that shows
-#: (:data:`bearinglab.diagnosis.statistics.LINE_ALPHA`): the outer race, whose fixed
+#: (:data:`bearinglab.diagnosis.series.LINE_ALPHA`): the outer race, whose fixed
 #: defect sees one transfer path, so that its envelope is the impact train times a load
 #: that is never negative, whose sidebands are then never stronger than their carrier
 #: (|c_k| <= c_0). Without this condition a healthy record's stray lines at

@@ -1,7 +1,7 @@
 """The verdict in words: the one-line reason of a diagnosis, and the warning for a harmonic
 series that none of the bearing's frequencies explains (:func:`.verdict.stray_series`).
 
-What each line says follows the tests it reports (:mod:`.statistics`, :mod:`.verdict`).
+What each line says follows the tests it reports (:mod:`.series`, :mod:`.verdict`).
 """
 
 from __future__ import annotations
@@ -10,7 +10,8 @@ import math
 
 from .families import FAMILIES, FREQUENCY, GATE_CARRIERS, GATE_ORDERS, SIDEBANDS
 from .methods import DESCRIPTIONS
-from .statistics import LINE_ALPHA, SUPPORT_ALPHA, decades
+from .series import LINE_ALPHA, SUPPORT_ALPHA
+from .statistics import decades
 from .verdict import series_shape, significance, stray_series
 
 

@@ -3,7 +3,7 @@
 The shaft turns the rotor's unbalance, misalignment and looseness into lines at the shaft
 frequency and its harmonics, in the spectrum of the raw signal (Randall R. B., Vibration-
 based Condition Monitoring, Wiley 2011, sec. 2.2.1 and ch. 5). The search is the harmonic
-series test of :mod:`bearinglab.diagnosis.statistics` on the full-resolution power
+series test of :mod:`bearinglab.diagnosis.series` on the full-resolution power
 spectrum (Hann window, one segment, nu = 2), with the fundamental scanned over the range
 given: the shaft line and its first harmonics together, each read within one bin, their
 p-values combined by Fisher's method and bounded over the scan. When the series is
@@ -128,7 +128,8 @@ def shaft_frequency(
     29.3
     """
     from .methods import segment_length
-    from .statistics import FLOOR_BINS, normalised, series_test
+    from .series import series_test
+    from .statistics import FLOOR_BINS, normalised
 
     n = segment_length(x.size, sample_rate, sample_rate / x.size)
     y = x[:n] - np.mean(x[:n])
@@ -288,7 +289,7 @@ def fundamental_shows(x: np.ndarray, sample_rate: float, frequency: float, k: in
     series at SPEED_ALPHA in the record ``x``, or its first line stands out of its own
     neighbourhood (:func:`line_near`): then ``frequency`` is the k-th harmonic of that
     shaft, whose series was found."""
-    from .statistics import series_test
+    from .series import series_test
 
     if line_near(x, sample_rate, frequency / k) is not None:
         return True

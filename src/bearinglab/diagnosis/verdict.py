@@ -33,16 +33,9 @@ import math
 import numpy as np
 
 from .families import FREQUENCY, SIDEBANDS, Family
+from .series import LINE_ALPHA, SUPPORT_ALPHA, Line, series_test
 from .speed import supply_line
-from .statistics import (
-    LINE_ALPHA,
-    SUPPORT_ALPHA,
-    Line,
-    decades,
-    fisher_logp,
-    normalised,
-    series_test,
-)
+from .statistics import decades, fisher_logp, normalised
 
 #: Fewest harmonics of a family that must show at LINE_ALPHA for it to be called as a
 #: second fault beside a first (issue 27: no family is added from a single harmonic) [-].
@@ -109,7 +102,7 @@ def discrete_mask(
 
 
 def series_shape(lines, second: bool = False) -> str | None:
-    """Why the harmonic ``lines`` of a family's best template (:class:`.statistics.Line`)
+    """Why the harmonic ``lines`` of a family's best template (:class:`.series.Line`)
     make no fault's series, or None.
 
     - A fault's series shows in its harmonics: for a first fault, their Fisher
@@ -126,7 +119,7 @@ def series_shape(lines, second: bool = False) -> str | None:
       fundamental, not the family's: a record whose sample rate was given 4 times too
       high reads a BPFO series as BPFO's harmonics 4 and 8.
 
-    >>> from .statistics import Line
+    >>> from .series import Line
     >>> h = lambda n, p: Line("harmonic", n, 0, 0.0, 0.0, 0.0, math.log(p))
     >>> series_shape([h(1, 1e-3), h(2, 1e-3)]) is None, series_shape([h(1, 0.3), h(2, 0.5)])
     (True, 'its harmonics alone reach only 0.362')
@@ -204,7 +197,7 @@ def explained(test, modulations: tuple, beyond: float | None = None) -> list[flo
     fault's impacts are modulated at both rates (load zone, unbalance, unequal balls),
     and these products must not become the evidence of a second fault. With ``beyond``
     [Hz], its harmonics above those read, up to there, and theirs: the tail's reference
-    runs beyond the search limit (:func:`.statistics.tail_tables`), where a strong
+    runs beyond the search limit (:func:`.tail.tail_tables`), where a strong
     series' higher harmonics are no clutter against a second fault's lines (the README's
     ER-16K with an outer-race and a ball defect read "outer race" alone: 22 harmonics of
     BPFO at z 80-140 against the ball's at z 8)."""

@@ -5,12 +5,16 @@
   ball bearings from ISO 281 (:func:`bearinglab.ratings.equivalent_dynamic_load`).
 - :mod:`.skf` -- the SKF four-component model M = phi_ish phi_rs M_rr + M_sl + M_seal +
   M_drag (SKF catalogue 10000 EN), and the viscosity ratio kappa (ISO 281's nu_1 from
-  :mod:`bearinglab.life`).
+  :mod:`bearinglab.life`); :mod:`.skf_loads` its geometric and load variables G_rr, G_sl
+  by bearing type (Table 2a); :mod:`.skf_constants` its constants (mu, K_rs, K_Z, the
+  deep-groove series' geometry constants) and units.
 - :mod:`.bearing` -- :class:`FrictionBearing`: what the models need of a bearing (a ball
   bearing's geometry, or any type's ISO boundary dimensions).
-- :mod:`.analysis` -- :func:`constant_friction`, :func:`skf_friction` and
-  :func:`bearing_friction` (either model, with the rules for P, C_0, seals, viscosity and
-  lubrication), used by the ``friction`` command and the report alike.
+- :mod:`.models` -- :func:`constant_friction` and :func:`skf_friction`, each model as a
+  result from explicit inputs.
+- :mod:`.analysis` -- :func:`bearing_friction` (either model, with the rules for P, C_0,
+  seals, viscosity and lubrication of :mod:`.rules`), used by the ``friction`` command and
+  the report alike.
 - :mod:`.result` -- :class:`FrictionResult`.
 
 Core API in SI units (N, m, rad/s, m^2/s, N m, W); ``FrictionResult.to_dict()`` in
@@ -23,7 +27,7 @@ checked against the sources: docs/capabilities/friction.md.
 29.25
 """
 
-from .analysis import MODELS, SEALS, bearing_friction, constant_friction, skf_friction
+from .analysis import bearing_friction
 from .bearing import FrictionBearing
 from .constant import (
     SEED003_COEFFICIENTS,
@@ -33,8 +37,20 @@ from .constant import (
     friction_type_of,
     power_loss,
 )
+from .models import MODELS, constant_friction, skf_friction
 from .result import FrictionResult
+from .rules import SEALS
 from .skf import (
+    SkfMoment,
+    inlet_shear_heating_factor,
+    replenishment_factor,
+    seal_moment,
+    skf_frictional_moment,
+    sliding_friction_coefficient,
+    sliding_weighting_factor,
+    viscosity_ratio,
+)
+from .skf_constants import (
     DEEP_GROOVE_CONSTANTS,
     K_RS,
     K_Z,
@@ -43,18 +59,12 @@ from .skf import (
     SKF_BEARING_TYPES,
     SKF_SOURCE,
     SkfGeometryConstants,
-    SkfMoment,
-    angular_contact_load_variables,
     deep_groove_constants,
+)
+from .skf_loads import (
+    angular_contact_load_variables,
     deep_groove_load_angle,
     deep_groove_load_variables,
-    inlet_shear_heating_factor,
-    replenishment_factor,
-    seal_moment,
-    skf_frictional_moment,
-    sliding_friction_coefficient,
-    sliding_weighting_factor,
-    viscosity_ratio,
 )
 
 __all__ = [

@@ -128,20 +128,7 @@ class FrictionBearing:
         >>> FrictionBearing.from_ball_bearing(*bearing_from_designation("6205-2RS")).closures
         '2seals'
         """
-        if designation is None:
-            designation = _designation_of(bearing.name)
-        return cls(
-            name=bearing.name or "bearing",
-            bearing_type=bearing.bearing_type,
-            bore=bearing.bore,
-            outside_diameter=bearing.outside_diameter,
-            pitch_diameter=bearing.pitch_diameter,
-            pitch_diameter_source=f"ball pitch diameter ({bearing.geometry_source})",
-            series=getattr(designation, "series", None),
-            design_variant=getattr(designation, "design_variant", None),
-            closures=getattr(designation, "closures", "unknown"),
-            ball_bearing=bearing,
-        )
+        return cls._from_model(bearing, designation, "ball", ball_bearing=bearing)
 
     @classmethod
     def from_roller_bearing(cls, bearing, designation=None) -> FrictionBearing:
@@ -160,19 +147,35 @@ class FrictionBearing:
         >>> FrictionBearing.from_roller_bearing(b, des).design_variant
         'NU'
         """
+        return cls._from_model(
+            bearing, designation, "roller", own_design=bearing.design, roller_bearing=bearing
+        )
+
+    @classmethod
+    def _from_model(
+        cls, bearing, designation, element: str, own_design: str | None = None, **model
+    ) -> FrictionBearing:
+        """A bearing bearinglab models, kept as ``model`` (``ball_bearing=bearing`` or
+        ``roller_bearing=bearing``), d_m its ``element``'s (ball, roller) pitch diameter;
+        series, design variant and closures from the ``designation``, else from the
+        bearing's name when that is one; a roller bearing's ``own_design`` (``"NU"``) when
+        the designation gives no design variant."""
         if designation is None:
             designation = _designation_of(bearing.name)
+        design_variant = getattr(designation, "design_variant", None)
+        if own_design is not None:
+            design_variant = design_variant or own_design or None
         return cls(
             name=bearing.name or "bearing",
             bearing_type=bearing.bearing_type,
             bore=bearing.bore,
             outside_diameter=bearing.outside_diameter,
             pitch_diameter=bearing.pitch_diameter,
-            pitch_diameter_source=f"roller pitch diameter ({bearing.geometry_source})",
+            pitch_diameter_source=f"{element} pitch diameter ({bearing.geometry_source})",
             series=getattr(designation, "series", None),
-            design_variant=getattr(designation, "design_variant", None) or bearing.design or None,
+            design_variant=design_variant,
             closures=getattr(designation, "closures", "unknown"),
-            roller_bearing=bearing,
+            **model,
         )
 
     @classmethod

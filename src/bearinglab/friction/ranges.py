@@ -2,7 +2,7 @@
 bearing type, and the check that refuses a constant outside them.
 
 The constants are series values of SKF's table of geometry constants (catalogue 10000 EN,
-chapter "Friction"; see :mod:`.skf`) in SKF units (d_m mm, F N, n r/min, M N mm). A typed
+chapter "Friction"; see :mod:`.skf_constants`) in SKF units (d_m mm, F N, n r/min, M N mm). A typed
 exponent slip (3.9e-1 for 3.9e-7) is otherwise accepted and multiplies the rolling moment
 by 10^6: a 6205 at 3000 rpm then loses 8 MW. Each range here is the smallest value of the
 type's table / 10 to the largest x 10: every tabulated series lies inside by construction,
@@ -10,9 +10,9 @@ and an untabulated series should not differ from its neighbours by an order of m
 (the constants carry the series' internal geometry, which varies smoothly across series);
 a value outside is an exponent or unit slip.
 
-- Deep-groove ball bearings: :data:`.skf.DEEP_GROOVE_CONSTANTS`, the shipped table.
+- Deep-groove ball bearings: :data:`.skf_constants.DEEP_GROOVE_CONSTANTS`, the shipped table.
 - Angular-contact and four-point ball bearings: SKF's rows for the series 72 B, 73 B, 32 A,
-  33 A, QJ 2, QJ 3, not shipped (:mod:`.skf`). No stored source gives them; the envelope
+  33 A, QJ 2, QJ 3, not shipped (:mod:`.skf_constants`). No stored source gives them; the envelope
   :data:`ANGULAR_CONTACT_TABLE` holds their orders of magnitude as recalled from the
   catalogue (unverified: only orders of magnitude are used, widened 10x each way). R3 and S3
   agree in order with the balls' centrifugal load, F_g = R3 d_m^4 n^2: a 7206's balls at
@@ -23,7 +23,7 @@ a value outside is an exponent or unit slip.
 from __future__ import annotations
 
 from ..errors import InputError
-from .skf import DEEP_GROOVE_CONSTANTS, SkfGeometryConstants
+from .skf_constants import DEEP_GROOVE_CONSTANTS, SkfGeometryConstants
 
 #: Envelope (smallest, largest) of SKF's angular-contact and four-point rows, SKF units
 #: (orders of magnitude, secondary; see the module docstring).

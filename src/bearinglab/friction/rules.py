@@ -12,7 +12,7 @@ import math
 
 from ..errors import InputError, positive_number
 from .bearing import FrictionBearing
-from .skf import K_RS
+from .skf_constants import K_RS
 
 #: Seals as the friction models see them: none, non-contact shields (no moment), contact.
 SEALS = ("none", "shields", "contact")

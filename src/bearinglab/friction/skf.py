@@ -11,208 +11,67 @@ model", is in the SKF General Catalogue 6000 EN and on skf.com):
   phi_bl = 1 / e^(2.6e-8 (n nu)^1.4 d_m), mu_bl ~ 0.15 (additive package), mu_EHL = 0.05
   (mineral oil), 0.04 (synthetic oil), 0.1 (transmission fluid) for ball bearings
   (0.02 cylindrical, 0.002 tapered roller bearings).
-- geometric and load variables (catalogue Table 2a, radial bearings):
-  deep-groove ball bearings, F_a = 0: G_rr = R1 d_m^1.96 F_r^0.54,
-  G_sl = S1 d_m^-0.26 F_r^(5/3); F_a > 0: G_rr = R1 d_m^1.96 (F_r + R2/sin(alpha_F) F_a)^0.54,
-  G_sl = S1 d_m^-0.145 (F_r^5 + S2 d_m^1.5 / sin(alpha_F) F_a^4)^(1/3),
-  alpha_F = 24.6 (F_a/C_0)^0.24 [deg];
-  angular-contact (and four-point) ball bearings: G_rr = R1 d_m^1.97 (F_r + F_g + R2 F_a)^0.54,
-  F_g = R3 d_m^4 n^2; G_sl = S1 d_m^0.26 ((F_r + F_g)^(4/3) + S2 F_a^(4/3)), F_g = S3 d_m^4 n^2.
+- geometric and load variables G_rr, G_sl by bearing type (catalogue Table 2a, radial
+  bearings): :mod:`.skf_loads`.
 - inlet shear heating: phi_ish = 1 / (1 + 1.84e-9 (n d_m)^1.28 nu^0.64).
 - kinematic replenishment / starvation: phi_rs = 1 / e^(K_rs nu n (d + D) sqrt(K_Z / (2 (D - d)))),
   K_rs = 3e-8 (low-level oil bath, oil jet), 6e-8 (grease, oil-air); K_Z = 3.1 (deep-groove),
   4.4 (single-row angular-contact ball bearings).
 - seals: M_seal = K_S1 d_s^beta + K_S2 (d_s the seal counterface diameter).
 
-The model works in SKF's engineering units: n [r/min], nu [mm^2/s] (operating viscosity of
-the oil or the grease's base oil), d, D, d_m = 0.5 (d + D) [mm] (the bearing MEAN
-diameter, not the ball pitch diameter), F [N], M [N mm]. The functions here take SI
-(rad/s, m^2/s, m, N) and return N m; they convert at the edge.
+The constants (mu, K_rs, K_Z, the per-series geometry constants) and the checks that turn
+SI inputs into SKF's units are in :mod:`.skf_constants`. The model works in SKF's
+engineering units: n [r/min], nu [mm^2/s] (operating viscosity of the oil or the grease's
+base oil), d, D, d_m = 0.5 (d + D) [mm] (the bearing MEAN diameter, not the ball pitch
+diameter), F [N], M [N mm]. The functions here take SI (rad/s, m^2/s, m, N) and return
+N m; they convert at the edge.
 
 What was checked against stored copies of the source, and what was not
 (see docs/capabilities/friction.md):
 
-- checked: the total-moment structure and the G_rr, G_sl forms for deep-groove and
-  angular-contact ball bearings including alpha_F (catalogue 10000 EN, Table 2a, as
-  stored at yumpu.com, document 55668573 page 106); M_sl, mu_sl, phi_bl, mu_bl = 0.15 and
-  the mu_EHL values (same document, page 105); d_m = 0.5 (d + D) and the symbols of
-  phi_ish (skf.com, "Inlet shear heating reduction factor").
+- checked: the total-moment structure (catalogue 10000 EN, as stored at yumpu.com,
+  document 55668573 page 106); M_sl, mu_sl, phi_bl, mu_bl = 0.15 and the mu_EHL values
+  (same document, page 105); d_m = 0.5 (d + D) and the symbols of phi_ish (skf.com,
+  "Inlet shear heating reduction factor").
 - not checked against a stored primary copy (the pages with these numbers are images or
-  were not stored): the constants of phi_ish (1.84e-9, 1.28, 0.64) and of phi_rs, the
-  K_rs and K_Z values, and the per-series geometry constants R1, R2, S1, S2 of
-  :data:`DEEP_GROOVE_CONSTANTS`. They are SKF's published values as given in the task
-  brief and as transcribed in independent public implementations of the model, which
-  agree with each other; treat them as secondary until checked against the catalogue.
-  Every result says so (``SkfGeometryConstants.verified``).
-- not shipped: angular-contact geometry constants (R1..R3, S1..S3 by series) and the
-  seal constants K_S1, K_S2, beta (catalogue tables not available in stored sources):
-  the caller supplies them. Drag losses in an oil bath (M_drag) need the catalogue's
-  diagram of the oil-level variable V_M, which is not available as numbers: M_drag is a
-  caller-supplied moment, zero by default.
+  were not stored): the constants of phi_ish (1.84e-9, 1.28, 0.64) and of phi_rs, and
+  those of :mod:`.skf_constants` it names; every result says so
+  (``SkfGeometryConstants.verified``).
+- not shipped: the seal constants K_S1, K_S2, beta (catalogue tables not available in
+  stored sources): the caller supplies them. Drag losses in an oil bath (M_drag) need the
+  catalogue's diagram of the oil-level variable V_M, which is not available as numbers:
+  M_drag is a caller-supplied moment, zero by default.
 """
 
 from __future__ import annotations
 
-import math
-from dataclasses import dataclass
 from typing import NamedTuple
 
 import numpy as np
 
-from ..errors import InputError, positive_number
-from ..units import rad_s_to_rpm, rpm_to_rad_s  # noqa: F401 - rpm_to_rad_s: doctests
-
-#: Conversions: SI -> SKF engineering units.
-RPM_PER_RAD_S = rad_s_to_rpm(1.0)
-MM2_S_PER_M2_S = 1e6
-MM_PER_M = 1e3
-#: Boundary-layer sliding friction coefficient mu_bl, "generally ~ 0.15" [-].
-MU_BL = 0.15
-#: mu_EHL of ball bearings (catalogue: "other bearings") by lubricant kind [-].
-MU_EHL = {"mineral": 0.05, "synthetic": 0.04, "transmission-fluid": 0.1}
-#: K_rs by lubrication method: 3e-8 low-level oil bath and oil jet, 6e-8 grease and
-#: oil-air [-] (secondary, see the module docstring).
-K_RS = {"grease": 6e-8, "oil-air": 6e-8, "oil-jet": 3e-8, "low-oil-bath": 3e-8}
-#: K_Z, the bearing-type geometry constant of phi_rs [-] (secondary). The roller values
-#: (single-row cylindrical 5.1, single-row tapered 6) are SKF's as recalled, not checked
-#: against a stored copy of the catalogue's table: results that use them say so.
-K_Z = {
-    "radial_ball": 3.1,
-    "angular_contact_ball": 4.4,
-    "cylindrical_roller": 5.1,
-    "tapered_roller": 6.0,
-}
-#: K_Z values not checked against a stored copy (the result warns).
-K_Z_UNVERIFIED = ("cylindrical_roller", "tapered_roller")
-#: mu_EHL of roller bearings, whatever the oil (catalogue 10000 EN p. 105: 0.02 cylindrical,
-#: 0.002 tapered roller bearings) [-].
-MU_EHL_ROLLER = {"cylindrical_roller": 0.02, "tapered_roller": 0.002}
-#: Types the SKF model of this module covers.
-SKF_BEARING_TYPES = (
-    "radial_ball",
-    "angular_contact_ball",
-    "four_point_contact_ball",
-    "cylindrical_roller",
-    "tapered_roller",
+from ..errors import InputError
+from ..units import rpm_to_rad_s  # noqa: F401 - used by the doctests
+from .skf_constants import (  # noqa: F401 - deep_groove_constants: doctests
+    K_RS,
+    K_Z,
+    MM2_S_PER_M2_S,
+    MU_BL,
+    MU_EHL,
+    SKF_BEARING_TYPES,
+    SkfGeometryConstants,
+    _array,
+    _mm,
+    _mm2_s,
+    _out,
+    _rpm,
+    deep_groove_constants,
 )
-#: Of them, roller bearings (their G_rr, G_sl forms of catalogue Table 2a).
-SKF_ROLLER_TYPES = ("cylindrical_roller", "tapered_roller")
-
-SKF_SOURCE = (
-    "SKF Rolling bearings, catalogue 10000 EN, 'The SKF model for calculating "
-    "the frictional moment'"
+from .skf_loads import (
+    angular_contact_load_variables,
+    cylindrical_roller_load_variables,
+    deep_groove_load_variables,
+    tapered_roller_load_variables,
 )
-_SECONDARY = (
-    "SKF catalogue 10000 EN, geometry constants for deep groove ball bearings by "
-    "series; transcribed from secondary public sources (not checked against a "
-    "stored copy of the catalogue table)"
-)
-
-
-@dataclass(frozen=True)
-class SkfGeometryConstants:
-    """Geometry constants of the SKF model for one bearing series.
-
-    Parameters
-    ----------
-    r1, r2 : float
-        Rolling-moment constants R1, R2 [SKF units: M_rr in N mm with d_m in mm, F in N].
-    s1, s2 : float
-        Sliding-moment constants S1, S2 [SKF units].
-    r3, s3 : float or None
-        Centrifugal-load constants of angular-contact bearings (F_g = R3 d_m^4 n^2,
-        S3 d_m^4 n^2) [SKF units]; None for deep-groove bearings.
-    source : str
-        Where the numbers come from [-].
-    verified : bool
-        True only if checked against a stored copy of the primary source [-].
-
-    >>> SkfGeometryConstants(3.9e-7, 1.7, 3.23e-3, 36.5).r3 is None
-    True
-    """
-
-    r1: float
-    r2: float
-    s1: float
-    s2: float
-    r3: float | None = None
-    s3: float | None = None
-    source: str = "user"
-    verified: bool = False
-
-    def __post_init__(self) -> None:
-        for name in ("r1", "r2", "s1", "s2", "r3", "s3"):
-            v = getattr(self, name)
-            if v is None and name in ("r3", "s3"):
-                continue
-            positive_number(name, v, "a finite constant >= 0 (SKF units)", zero=True)
-
-
-def _dgbb(r1, r2, s1, s2):
-    return SkfGeometryConstants(r1, r2, s1, s2, source=_SECONDARY, verified=False)
-
-
-#: Deep-groove ball bearing geometry constants by ISO series (SKF catalogue table of
-#: geometry constants; secondary transcription, see the module docstring). 42 and 43 are
-#: double-row deep-groove bearings.
-DEEP_GROOVE_CONSTANTS: dict[str, SkfGeometryConstants] = {
-    **dict.fromkeys(("42", "43"), _dgbb(5.4e-7, 0.96, 3.00e-3, 40.0)),
-    **dict.fromkeys(("60", "630"), _dgbb(4.1e-7, 1.7, 3.73e-3, 14.6)),
-    **dict.fromkeys(("62", "622"), _dgbb(3.9e-7, 1.7, 3.23e-3, 36.5)),
-    **dict.fromkeys(("63", "623"), _dgbb(3.7e-7, 1.7, 2.84e-3, 92.8)),
-    "64": _dgbb(3.6e-7, 1.7, 2.43e-3, 198.0),
-    **dict.fromkeys(("160", "161"), _dgbb(4.3e-7, 1.7, 4.63e-3, 4.25)),
-    **dict.fromkeys(("617", "618", "628", "637", "638"), _dgbb(4.7e-7, 1.7, 6.50e-3, 0.78)),
-    **dict.fromkeys(("619", "639"), _dgbb(4.3e-7, 1.7, 4.75e-3, 3.6)),
-}
-
-
-def deep_groove_constants(series: str) -> SkfGeometryConstants:
-    """Geometry constants of a deep-groove ball bearing series (``"62"``, ``"618"``) [-].
-
-    Parameters
-    ----------
-    series : str
-        ISO series of the designation (:attr:`Designation.series`) [-].
-
-    >>> deep_groove_constants("62").r1
-    3.9e-07
-    """
-    if series not in DEEP_GROOVE_CONSTANTS:
-        raise InputError(
-            "series",
-            series,
-            "a deep-groove series with SKF constants: " + ", ".join(DEEP_GROOVE_CONSTANTS),
-            "give the constants R1, R2, S1, S2 (constants)",
-        )
-    return DEEP_GROOVE_CONSTANTS[series]
-
-
-# ------------------------------------------------------------------ input checks
-def _out(a):
-    """A 0-d result as a Python float, an array as it is."""
-    a = np.asarray(a, dtype=float)
-    return float(a) if a.ndim == 0 else a
-
-
-def _array(name: str, value, unit: str, positive: bool = False) -> np.ndarray:
-    a = np.asarray(value, dtype=float)
-    bad = (a <= 0) if positive else (a < 0)
-    if a.size == 0 or np.any(~np.isfinite(a)) or np.any(bad):
-        raise InputError(name, value, f"finite values {'>' if positive else '>='} 0 [{unit}]")
-    return a
-
-
-def _rpm(shaft_speed) -> np.ndarray:
-    return _array("shaft_speed", shaft_speed, "rad/s") * RPM_PER_RAD_S
-
-
-def _mm2_s(viscosity) -> np.ndarray:
-    return _array("viscosity", viscosity, "m^2/s", positive=True) * MM2_S_PER_M2_S
-
-
-def _mm(name: str, value) -> np.ndarray:
-    return _array(name, value, "m", positive=True) * MM_PER_M
 
 
 # ------------------------------------------------------------------ lubrication condition
@@ -335,160 +194,6 @@ def sliding_friction_coefficient(weighting_factor, mu_bl=MU_BL, mu_ehl=MU_EHL["m
     bl = float(_array("mu_bl", mu_bl, "-"))
     ehl = float(_array("mu_ehl", mu_ehl, "-"))
     return _out(w * bl + (1.0 - w) * ehl)
-
-
-# ------------------------------------------------------------------ load variables
-def deep_groove_load_angle(axial_load, static_load_rating):
-    """alpha_F = 24.6 (F_a / C_0)^0.24 [rad] (catalogue: degrees), deep-groove bearings.
-
-    Parameters
-    ----------
-    axial_load : float or array
-        F_a [N], >= 0.
-    static_load_rating : float
-        Basic static load rating C_0 [N], > 0; F_a <= C_0.
-
-    >>> round(math.degrees(deep_groove_load_angle(1000.0, 10000.0)), 3)
-    14.156
-    """
-    fa = _array("axial_load", axial_load, "N")
-    c0 = float(_array("static_load_rating", static_load_rating, "N", positive=True))
-    if np.any(fa > c0):
-        raise InputError(
-            "axial_load", axial_load, f"at most the static load rating C_0 = {c0:.6g} N"
-        )
-    return _out(np.radians(24.6 * (fa / c0) ** 0.24))
-
-
-def deep_groove_load_variables(
-    mean_diameter, radial_load, axial_load, constants, static_load_rating=None
-):
-    """(G_rr, G_sl) of a deep-groove ball bearing, catalogue Table 2a [SKF units].
-
-    Returned in SKF's units: M_rr [N mm] = G_rr (nu[mm^2/s] n[r/min])^0.6 and
-    M_sl [N mm] = G_sl mu_sl. With F_a > 0, C_0 is needed for alpha_F. The F_a > 0 form
-    does not tend to the F_a = 0 form of G_sl as F_a -> 0 (d_m^-0.145 against
-    d_m^-0.26, as printed).
-
-    Parameters
-    ----------
-    mean_diameter : float
-        d_m = 0.5 (d + D) [m].
-    radial_load, axial_load : float
-        F_r, F_a [N], >= 0.
-    constants : SkfGeometryConstants
-        R1, R2, S1, S2 of the series.
-    static_load_rating : float or None
-        C_0 [N]; needed when F_a > 0.
-
-    >>> g = deep_groove_load_variables(0.0385, 1000.0, 0.0, deep_groove_constants("62"))
-    >>> round(g[0], 5), round(g[1], 2)
-    (0.02082, 125.02)
-    """
-    dm = float(_mm("mean_diameter", mean_diameter))
-    fr = float(_array("radial_load", radial_load, "N"))
-    fa = float(_array("axial_load", axial_load, "N"))
-    c = constants
-    if fa == 0.0:
-        return (c.r1 * dm**1.96 * fr**0.54, c.s1 * dm**-0.26 * fr ** (5.0 / 3.0))
-    if static_load_rating is None:
-        raise InputError(
-            "static_load_rating",
-            None,
-            "the basic static load rating C_0 [N] when F_a > 0",
-            "SKF's alpha_F = 24.6 (F_a/C_0)^0.24 needs it (static_load_rating)",
-        )
-    sin_a = math.sin(float(deep_groove_load_angle(fa, static_load_rating)))
-    g_rr = c.r1 * dm**1.96 * (fr + c.r2 / sin_a * fa) ** 0.54
-    g_sl = c.s1 * dm**-0.145 * (fr**5 + c.s2 * dm**1.5 / sin_a * fa**4) ** (1.0 / 3.0)
-    return g_rr, g_sl
-
-
-def angular_contact_load_variables(mean_diameter, radial_load, axial_load, shaft_speed, constants):
-    """(G_rr, G_sl) of an angular-contact (or four-point) ball bearing [SKF units].
-
-    G_rr = R1 d_m^1.97 (F_r + F_g + R2 F_a)^0.54 with F_g = R3 d_m^4 n^2;
-    G_sl = S1 d_m^0.26 ((F_r + F_g)^(4/3) + S2 F_a^(4/3)) with F_g = S3 d_m^4 n^2
-    (catalogue Table 2a; d_m mm, n r/min, F N).
-
-    Parameters
-    ----------
-    mean_diameter : float
-        d_m [m].
-    radial_load, axial_load : float
-        F_r, F_a [N].
-    shaft_speed : float
-        [rad/s].
-    constants : SkfGeometryConstants
-        With r3 and s3 given.
-    """
-    c = constants
-    if c.r3 is None or c.s3 is None:
-        raise InputError("constants", c, "angular-contact constants with R3 and S3")
-    dm = float(_mm("mean_diameter", mean_diameter))
-    fr = float(_array("radial_load", radial_load, "N"))
-    fa = float(_array("axial_load", axial_load, "N"))
-    n = float(_rpm(shaft_speed))
-    g_rr = c.r1 * dm**1.97 * (fr + c.r3 * dm**4 * n**2 + c.r2 * fa) ** 0.54
-    g_sl = c.s1 * dm**0.26 * ((fr + c.s3 * dm**4 * n**2) ** (4.0 / 3.0) + c.s2 * fa ** (4.0 / 3.0))
-    return g_rr, g_sl
-
-
-def cylindrical_roller_load_variables(mean_diameter, radial_load, axial_load, constants):
-    """(G_rr, G_sl) of a cylindrical roller bearing, catalogue Table 2a [SKF units]:
-    G_rr = R1 d_m^2.41 F_r^0.31, G_sl = S1 d_m^0.9 F_a + S2 d_m F_r (d_m mm, F N).
-
-    Parameters
-    ----------
-    mean_diameter : float
-        d_m = 0.5 (d + D) [m].
-    radial_load, axial_load : float
-        F_r, F_a [N], >= 0.
-    constants : SkfGeometryConstants
-        R1, S1, S2 of the series (R2 unused).
-
-    >>> g = cylindrical_roller_load_variables(0.0385, 2000.0, 0.0,
-    ...                                       SkfGeometryConstants(1.09e-6, 0.0, 0.16, 0.0015))
-    >>> round(g[0], 4), round(g[1], 3)
-    (0.0762, 115.5)
-    """
-    dm = float(_mm("mean_diameter", mean_diameter))
-    fr = float(_array("radial_load", radial_load, "N"))
-    fa = float(_array("axial_load", axial_load, "N"))
-    c = constants
-    return c.r1 * dm**2.41 * fr**0.31, c.s1 * dm**0.9 * fa + c.s2 * dm * fr
-
-
-def tapered_roller_load_variables(mean_diameter, radial_load, axial_load, axial_factor, constants):
-    """(G_rr, G_sl) of a tapered roller bearing, catalogue Table 2a [SKF units]:
-    G_rr = R1 d_m^2.38 (F_r + R2 Y F_a)^0.31, G_sl = S1 d_m^0.82 (F_r + S2 Y F_a), Y the
-    axial load factor of the bearing (0.4 cot alpha for one row).
-
-    Parameters
-    ----------
-    mean_diameter : float
-        d_m = 0.5 (d + D) [m].
-    radial_load, axial_load : float
-        F_r, F_a [N], >= 0.
-    axial_factor : float
-        Y [-].
-    constants : SkfGeometryConstants
-        R1, R2, S1, S2 of the series.
-
-    >>> g = tapered_roller_load_variables(0.0385, 2000.0, 500.0, 1.6,
-    ...                                   SkfGeometryConstants(1.76e-6, 10.9, 0.017, 2.0))
-    >>> round(g[0], 4), round(g[1], 2)
-    (0.1855, 1221.32)
-    """
-    dm = float(_mm("mean_diameter", mean_diameter))
-    fr = float(_array("radial_load", radial_load, "N"))
-    fa = float(_array("axial_load", axial_load, "N"))
-    y = float(_array("axial_factor", axial_factor, "-"))
-    c = constants
-    return (
-        c.r1 * dm**2.38 * (fr + c.r2 * y * fa) ** 0.31,
-        c.s1 * dm**0.82 * (fr + c.s2 * y * fa),
-    )
 
 
 def seal_moment(k_s1, k_s2, beta, seal_diameter):
