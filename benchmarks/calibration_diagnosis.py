@@ -112,6 +112,20 @@ def report(name, records):
         print(f"  {fam:10s} P(p < t) / t  {ratios};  KS p = {ks:.3g}")
 
 
+def line_report(name, records):
+    """Print how many records' line p-values pass a KS test of uniformity at 1 %, and the
+    pooled fraction of positions below 1e-2, 1e-3 and 1e-4."""
+    import scipy.stats
+
+    passed = sum(scipy.stats.kstest(p, "uniform").pvalue > 0.01 for p in records)
+    pooled = np.concatenate(records)
+    print(
+        f"{name}, line p-values: KS at 1 % passes on {passed} of {len(records)} records; "
+        + ", ".join(f"P(p<{t:g}) = {np.mean(pooled < t):.2e}" for t in (1e-2, 1e-3, 1e-4))
+        + f" ({pooled.size} positions)"
+    )
+
+
 def family_pvalues(d):
     return {name: row["p_value"] for name, row in d.families.items()}
 
@@ -174,7 +188,6 @@ def chain_check(draws, seed=0):
 
 
 def main() -> None:
-    import scipy.stats
 
     parser = argparse.ArgumentParser()
     parser.add_argument("--seeds", type=int, default=200)
@@ -187,17 +200,8 @@ def main() -> None:
     bearing, _ = bearing_from_designation("6205")
     kin = defect_frequencies(bearing, 1797 * math.pi / 30)
     start = time.time()
-    passed, pooled = 0, []
-    for seed in range(args.seeds):
-        x, fs = white(seed, args.seconds)
-        p = line_pvalues(x, fs, kin)
-        passed += scipy.stats.kstest(p, "uniform").pvalue > 0.01
-        pooled.append(p)
-    pooled = np.concatenate(pooled)
-    print(
-        f"white noise, line p-values: KS at 1 % passes on {passed} of {args.seeds} records; "
-        + ", ".join(f"P(p<{t:g}) = {np.mean(pooled < t):.2e}" for t in (1e-2, 1e-3, 1e-4))
-        + f" ({pooled.size} positions)"
+    line_report(
+        "white noise", [line_pvalues(*white(seed, args.seconds), kin) for seed in range(args.seeds)]
     )
     if args.chain:
         print(f"the chain bound against {args.chain} records of independent bins:")
@@ -214,7 +218,7 @@ def main() -> None:
         from bearinglab.operating import OperatingCondition
 
         condition = OperatingCondition(radial_load=2000.0, shaft_speed=1797 * math.pi / 30)
-        records = []
+        records, lines = [], []
         for seed in range(args.simulated):
             sim = simulate(
                 bearing,
@@ -228,15 +232,20 @@ def main() -> None:
             )
             d = analyze_signal(sim.signal, None, sim.kinematic)
             records.append((d.faults, family_pvalues(d)))
+            lines.append(line_pvalues(sim.signal.channel(), sim.signal.sample_rate, kin))
         report("healthy rigid-model simulations, 2 s, 1 m/s^2 of noise (raw)", records)
+        line_report("healthy rigid-model simulations", lines)
     if args.real:
         records = {m: [] for m in args.methods.split(",")}
+        lines = []
         for x, fs, k in healthy_real(Path(args.real)):
+            lines.append(line_pvalues(x, fs, k))
             for method in records:
                 d = analyze_signal(x, fs, k, methods=method)
                 records[method].append((d.faults, family_pvalues(d)))
         for method, rows in records.items():
             report(f"healthy real records (97 in 2.5 s segments, fan-end 6203), {method}", rows)
+        line_report("healthy real records", lines)
     print(f"{time.time() - start:.0f} s")
 
 
