@@ -102,20 +102,25 @@ def parse(text: str, system: str | None = None) -> Designation:
                 "(`system` gost forces the GOST one)",
             )
         return replace(iso, alternatives=(gost,), notes=notes)
+    # The other reader's failure is noted only when it read part of the text: "NU205" is
+    # no GOST number from its first letter, and saying so is noise.
     if iso is not None:
         assert gost_error is not None
-        return replace(iso, notes=iso.notes + (_not_read("a GOST 3189-89", gost_error),))
+        return replace(iso, notes=iso.notes + _not_read("a GOST 3189-89", gost_error))
     if gost is not None:
         assert iso_error is not None
-        return replace(gost, notes=gost.notes + (_not_read("an ISO", iso_error),))
+        return replace(gost, notes=gost.notes + _not_read("an ISO", iso_error))
     assert iso_error is not None and gost_error is not None
     raise gost_error if gost_error.progress > iso_error.progress else iso_error
 
 
-def _not_read(what: str, error: ReadError) -> str:
-    """Note naming what the other reader could not read, e.g. "not an ISO designation:
-    cannot read 'C' (unknown suffix for an ISO 62 bearing)"."""
-    return f"not {what} designation: cannot read {error.part!r} ({error.reason})"
+def _not_read(what: str, error: ReadError) -> tuple[str, ...]:
+    """The note naming what the other reader could not read, e.g. "not an ISO designation:
+    cannot read 'C' (unknown suffix for an ISO 62 bearing)", or none when that reader
+    failed at the first character."""
+    if error.progress <= 0:
+        return ()
+    return (f"not {what} designation: cannot read {error.part!r} ({error.reason})",)
 
 
 def gost_equivalent(text: str, system: str | None = None) -> str | None:
