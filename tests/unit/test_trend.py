@@ -541,3 +541,15 @@ def test_dask_workers_give_the_same_trend(failing):
     assert two.files == one.files and two.alarm == one.alarm
     for name in one.values:
         np.testing.assert_array_equal(two.values[name], one.values[name])
+
+
+@pytest.mark.parametrize(
+    "kwargs, parameter",
+    [({"run": 0}, "run"), ({"fraction": 0.0}, "fraction"), ({"sigmas": -1.0}, "sigmas")],
+)
+def test_plain_rule_refuses_a_rule_that_cannot_run(kwargs, parameter) -> None:
+    from bearinglab.trend.alarm import plain_rule
+
+    with pytest.raises(InputError) as err:
+        plain_rule([1.0] * 30, **kwargs)
+    assert err.value.parameter == parameter

@@ -58,7 +58,7 @@ def _record_error(exc: InputError, r: dict, bearing=None) -> InputError:
 
 def make_record(
     spec: DatasetSpec, seed: int, index: int, check: bool = True
-) -> tuple[np.ndarray, dict, dict]:
+) -> tuple[np.ndarray, dict, tuple]:
     """(samples float32, record inputs, kinematic frequencies object) of record ``index``
     of the data set ``spec`` seeded ``seed`` (inputs from :func:`.sampling.draw_record`).
 
@@ -98,7 +98,7 @@ def make_record(
         raise _record_error(exc, r, bearing) from None
 
 
-def _make_record(r: dict, bearing, check: bool) -> tuple[np.ndarray, dict, dict]:
+def _make_record(r: dict, bearing, check: bool) -> tuple[np.ndarray, dict, tuple]:
     """:func:`make_record` of the drawn inputs ``r`` (errors in the model's terms)."""
     from ..dynamics import Defect, simulate
     from ..imperfections import BallSizeErrors, Imperfections, Waviness

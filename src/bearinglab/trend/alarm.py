@@ -316,6 +316,12 @@ def plain_rule(rms, fraction: float = 0.1, sigmas: float = 6.0, run: int = 3) ->
     >>> plain_rule([1.0, 1.1, 0.9, 1.0, 1.05, 0.95, 1.0, 1.0, 1.1, 0.9] * 3 + [5.0] * 3)
     32
     """
+    if not 0.0 < fraction < 1.0:
+        raise InputError("fraction", fraction, "a share of the series between 0 and 1")
+    if not sigmas > 0.0:
+        raise InputError("sigmas", sigmas, "a number of standard deviations > 0")
+    if isinstance(run, bool) or not isinstance(run, int | np.integer) or run < 1:
+        raise InputError("run", run, "a whole number of records >= 1")
     x = np.asarray(rms, dtype=float)
     n = max(2, math.ceil(fraction * x.size))
     limit = x[:n].mean() + sigmas * x[:n].std(ddof=1)
