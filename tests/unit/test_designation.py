@@ -518,6 +518,7 @@ def test_spherical_213_family_is_read() -> None:
         25.0,
     )
 
+
 @pytest.mark.parametrize("text", ["NU205", "180205"])
 def test_a_reader_stopped_at_the_first_character_adds_no_note(text) -> None:
     # NU205 is no GOST number from its first letter; 180205 no ISO family: saying so is noise
