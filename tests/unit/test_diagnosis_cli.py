@@ -181,6 +181,10 @@ def test_benchmark_json_and_html(folder, capsys, tmp_path):
     assert page.read_text(encoding="utf-8").count("<img") >= 4  # matrix + 3 spectra
     code, out, _ = run(capsys, "benchmark", str(folder), "--method", "raw,cpw", "--jobs", "2")
     assert code == 0 and "confusion" in out
+    # the ies note is said of every record: printed once, with their count
+    code, out, _ = run(capsys, "benchmark", str(folder), "--method", "ies")
+    flat = " ".join(out.split())
+    assert code == 0 and flat.count("the ies method") == 1 and "3 records: the ies" in flat
     code, _, err = run(capsys, "benchmark", str(tmp_path))
     assert code == 2 and "labels.csv" in err
     # more processes than 4 per core only take memory (100 000 once filled 24 GB)

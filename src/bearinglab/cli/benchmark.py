@@ -115,9 +115,13 @@ def benchmark_command(values, json_output: JsonOpt = False, html=None):
                 whole=0,
             )
         )
+    said: dict[str, list[str]] = {}  # a warning said of many records is printed once
     for r in out["records"]:
         for warning in r.get("warnings") or []:
-            console.print(f"[yellow]{escape(r['file'])}: {escape(warning)}[/yellow]")
+            said.setdefault(warning, []).append(r["file"])
+    for warning, files in said.items():
+        where = files[0] if len(files) == 1 else f"{len(files)} records"
+        console.print(f"[yellow]{escape(where)}: {escape(warning)}[/yellow]")
     errors = [r for r in out["records"] if r["error"]]
     for r in errors:
         console.print(f"[red]{escape(r['file'])}: {escape(r['error'])}[/red]")
