@@ -215,6 +215,34 @@ class ConvergenceError(BearinglabError, RuntimeError):
     """An iterative solver did not converge; the message names the case and residual."""
 
 
+def bore_below_outside(bore: float, outside_diameter: float, blame: str = "outside_diameter"):
+    """Check d < D, else an :class:`InputError` on ``blame`` (``"outside_diameter"`` or
+    ``"bore"``: the value the user gave rather than the catalogue's).
+
+    Parameters
+    ----------
+    bore : float
+        d [m].
+    outside_diameter : float
+        D [m].
+    blame : str
+        The input the error names when d >= D [-].
+
+    >>> bore_below_outside(0.025, 0.052)
+    >>> bore_below_outside(0.06, 0.052, "bore")  # doctest: +ELLIPSIS
+    Traceback (most recent call last):
+    ...
+    bearinglab.errors.InputError: bore = 0.06 is not allowed: expected less than the ...
+    """
+    if bore < outside_diameter:
+        return
+    if blame == "bore":
+        allowed, numbers = "less than the outside diameter {D}", {"D": outside_diameter}
+        raise InputError("bore", bore, allowed, unit="m", numbers=numbers)
+    allowed, numbers = "more than the bore {d}", {"d": bore}
+    raise InputError("outside_diameter", outside_diameter, allowed, unit="m", numbers=numbers)
+
+
 def positive_number(name: str, value, allowed: str, *, zero: bool = False) -> float:
     """``value`` as a float if it is a finite real number > 0 (>= 0 with ``zero``), not a
     bool; otherwise an :class:`InputError` naming ``name``, the value and ``allowed``.

@@ -20,7 +20,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .errors import InputError, positive_number
+from .errors import InputError, bore_below_outside, positive_number
 from .geometry_sections import RingSection, grooved_ring_section
 from .macrogeometry import (
     Race,
@@ -228,10 +228,8 @@ class BallBearing:
             if getattr(self, name) is not None:
                 _positive(name, getattr(self, name))
         d, big_d = self.bore, self.outside_diameter
-        if d is not None and big_d is not None and d >= big_d:
-            raise InputError(
-                "bore", d, "less than the outside diameter {D}", unit="m", numbers={"D": big_d}
-            )
+        if d is not None and big_d is not None:
+            bore_below_outside(d, big_d, "bore")
         if self.is_thrust:
             self._check_thrust_washers()
             return

@@ -34,7 +34,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .contact.line import crowned_profile, logarithmic_profile
-from .errors import InputError, positive_number
+from .errors import InputError, bore_below_outside, positive_number
 from .geometry import Source
 from .materials import BEARING_STEEL, Material
 
@@ -383,10 +383,8 @@ class RollerBearing:
             if getattr(self, name) is not None:
                 positive_number(name, getattr(self, name), "a positive length [m]")
         d, big_d = self.bore, self.outside_diameter
-        if d is not None and big_d is not None and d >= big_d:
-            raise InputError(
-                "bore", d, "less than the outside diameter {D}", unit="m", numbers={"D": big_d}
-            )
+        if d is not None and big_d is not None:
+            bore_below_outside(d, big_d, "bore")
         if d is not None and self.inner_raceway_diameter <= d:
             raise InputError(
                 "roller_diameter",

@@ -18,7 +18,7 @@ import math
 from dataclasses import dataclass
 from typing import Any
 
-from ..errors import CatalogError, InputError
+from ..errors import CatalogError, InputError, bore_below_outside
 from ..geometry import Source
 from ..roller_geometry import RollerBearing, RollerProfile
 from . import _data
@@ -339,14 +339,8 @@ def _check_sizes(values: dict, sources: dict) -> None:
     d, big_d = values.get("bore"), values.get("outside_diameter")
     if d is None or big_d is None:
         return
-    if d >= big_d:
-        if sources["outside_diameter"].kind == "user" and sources["bore"].kind != "user":
-            raise InputError(
-                "outside_diameter", big_d, "more than the bore {d}", unit="m", numbers={"d": d}
-            )
-        raise InputError(
-            "bore", d, "less than the outside diameter {D}", unit="m", numbers={"D": big_d}
-        )
+    given_outside = sources["outside_diameter"].kind == "user" and sources["bore"].kind != "user"
+    bore_below_outside(d, big_d, "outside_diameter" if given_outside else "bore")
     dm = values.get("pitch_diameter")
     if dm is not None and not d < dm < big_d:
         raise InputError(

@@ -42,7 +42,7 @@ import math
 from dataclasses import dataclass
 from numbers import Real
 
-from ..errors import InputError
+from ..errors import InputError, bore_below_outside
 
 #: Citation attached to every estimated value (``Source("estimated", ESTIMATE_METHOD)``).
 ESTIMATE_METHOD = (
@@ -302,8 +302,7 @@ def estimate_internal_geometry(
     for name, value in (("bore", bore), ("outside_diameter", outside_diameter)):
         if not (isinstance(value, Real) and math.isfinite(value) and value > 0):
             raise InputError(name, value, "a positive length [m]")
-    if outside_diameter <= bore:
-        raise InputError("outside_diameter", outside_diameter, f"more than the bore {bore:.6g} m")
+    bore_below_outside(bore, outside_diameter)
     if contact_angle is None:
         if bearing_type != "radial_ball":
             raise InputError(

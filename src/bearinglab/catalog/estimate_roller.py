@@ -36,7 +36,7 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..errors import InputError, positive_number
+from ..errors import InputError, bore_below_outside, positive_number
 
 #: Citation attached to every estimated value.
 ROLLER_ESTIMATE_METHOD = (
@@ -149,14 +149,7 @@ def estimate_roller_geometry(
         raise InputError("bearing_type", bearing_type, "cylindrical_roller or tapered_roller")
     for name, value in (("bore", bore), ("outside_diameter", outside_diameter), ("width", width)):
         positive_number(name, value, "a positive length [m]")
-    if outside_diameter <= bore:
-        raise InputError(
-            "outside_diameter",
-            outside_diameter,
-            "more than the bore {d}",
-            unit="m",
-            numbers={"d": bore},
-        )
+    bore_below_outside(bore, outside_diameter)
     pitch = 0.5 * (bore + outside_diameter)
     diameter = ROLLER_DIAMETER_FACTOR * (outside_diameter - bore)
     factor = (

@@ -17,7 +17,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..errors import InputError, positive_number
+from ..errors import InputError, bore_below_outside, positive_number
 
 #: How d_m is estimated when it is not known.
 MEAN_DIAMETER_ESTIMATE = "estimated as (d + D) / 2"
@@ -94,10 +94,7 @@ class FrictionBearing:
         big_d = _length("outside_diameter", self.outside_diameter, optional=True)
         dm = _length("pitch_diameter", self.pitch_diameter)
         if d is not None and big_d is not None:
-            if big_d <= d:
-                raise InputError(
-                    "outside_diameter", big_d, "more than the bore {d}", unit="m", numbers={"d": d}
-                )
+            bore_below_outside(d, big_d)
             if not d < dm < big_d:
                 raise InputError(
                     "pitch_diameter",
@@ -269,18 +266,8 @@ class FrictionBearing:
     def _with_pitch(cls, name, kind, bore, outside, pitch, given, **kwargs) -> FrictionBearing:
         """The bearing with d_m given or estimated; a mismatch of d, D and d_m is blamed on a
         value that was given rather than one from the table."""
-        if outside <= bore:
-            if "outside_diameter" in given or "bore" not in given:
-                raise InputError(
-                    "outside_diameter",
-                    outside,
-                    "more than the bore {d}",
-                    unit="m",
-                    numbers={"d": bore},
-                )
-            raise InputError(
-                "bore", bore, "less than the outside diameter {D}", unit="m", numbers={"D": outside}
-            )
+        blame_outside = "outside_diameter" in given or "bore" not in given
+        bore_below_outside(bore, outside, "outside_diameter" if blame_outside else "bore")
         if pitch is None:
             return cls(
                 name, kind, bore, outside, 0.5 * (bore + outside), MEAN_DIAMETER_ESTIMATE, **kwargs

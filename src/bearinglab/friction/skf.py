@@ -49,7 +49,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ..errors import InputError
+from ..errors import InputError, bore_below_outside
 from ..units import rpm_to_rad_s  # noqa: F401 - used by the doctests
 from .skf_constants import (  # noqa: F401 - deep_groove_constants: doctests
     K_RS,
@@ -311,8 +311,7 @@ def skf_frictional_moment(
         raise InputError("constants", constants, "an SkfGeometryConstants")
     d = float(_array("bore", bore, "m", positive=True))
     big_d = float(_array("outside_diameter", outside_diameter, "m", positive=True))
-    if big_d <= d:
-        raise InputError("outside_diameter", outside_diameter, f"more than the bore {d:.6g} m")
+    bore_below_outside(d, big_d)
     if k_z is None:
         if bearing_type not in K_Z:
             raise InputError(
