@@ -228,6 +228,8 @@ def bore_below_outside(bore: float, outside_diameter: float, blame: str = "outsi
     blame : str
         The input the error names when d >= D [-].
 
+    Examples
+    --------
     >>> bore_below_outside(0.025, 0.052)
     >>> bore_below_outside(0.06, 0.052, "bore")  # doctest: +ELLIPSIS
     Traceback (most recent call last):

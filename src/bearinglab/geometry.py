@@ -136,6 +136,8 @@ class BallBearing:
         offset axially by (f D_w - D_w/2) sin(alpha_T), as in four-point and split-race
         bearings, seed 001); 0 for a circular groove [rad].
 
+    Examples
+    --------
     >>> b = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3)
     >>> round(b.inner_raceway_diameter * 1e3, 2), round(b.outer_raceway_diameter * 1e3, 2)
     (31.1, 46.98)

@@ -71,6 +71,8 @@ def frequency_label(bearing, name: str) -> str:
     name : str
         One of FREQUENCY_NAMES [-].
 
+    Examples
+    --------
     >>> from bearinglab.geometry import BallBearing
     >>> frequency_label(BallBearing(ball_count=9, ball_diameter=8e-3, pitch_diameter=39e-3),
     ...                 "ball_defect")
@@ -116,6 +118,8 @@ def frequency_orders(
     outer_rotating : bool
         True if the outer ring turns and the inner ring is fixed.
 
+    Examples
+    --------
     >>> o = frequency_orders(9, 0.3126, 1.537)   # CWRU drive-end 6205, inches
     >>> [round(float(o[k]), 3) for k in ("ftf", "bpfo", "bpfi", "ball_defect")]
     [0.398, 3.585, 5.415, 4.713]
@@ -244,6 +248,8 @@ def defect_frequencies(
     contact_angle : float, optional
         Contact angle to use instead of the nominal one [rad].
 
+    Examples
+    --------
     >>> from bearinglab.geometry import BallBearing
     >>> er16k = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=38.51e-3)
     >>> f = defect_frequencies(er16k, 1750 * 2 * math.pi / 60)

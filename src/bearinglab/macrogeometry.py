@@ -36,6 +36,8 @@ def raceway_diameters(pitch_diameter, ball_diameter, diametral_clearance):
     diametral_clearance : float or array
         Diametral clearance P_d [m]; negative for an interference (preload).
 
+    Examples
+    --------
     >>> [round(float(x) * 1e3, 4) for x in raceway_diameters(0.065, 0.0127, 15e-6)]
     [52.2925, 77.7075]
     """
@@ -60,6 +62,8 @@ def free_contact_angle(
     inner_groove_factor, outer_groove_factor : float
         f_i, f_o [-], each > 0.5.
 
+    Examples
+    --------
     >>> import math
     >>> round(math.degrees(free_contact_angle(15e-6, 0.0127, 0.52, 0.52)), 2)
     9.86
@@ -112,6 +116,8 @@ def contact_radii(ball_diameter, pitch_diameter, groove_factor, contact_angle, r
     race : {"inner", "outer"}
         Which raceway.
 
+    Examples
+    --------
     >>> rx, ry = contact_radii(12.7e-3, 65e-3, 0.52, 0.0, "inner")
     >>> round(float(1e-3 * (1 / rx + 1 / ry)), 4)  # Harris 209 example: 0.2018 /mm
     0.2018

@@ -30,6 +30,8 @@ class Material:
     density : float
         Mass density rho [kg/m^3].
 
+    Examples
+    --------
     >>> BEARING_STEEL.elastic_modulus
     208000000000.0
     """

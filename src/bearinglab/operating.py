@@ -62,6 +62,8 @@ class OperatingCondition:
     shaft_speed : float
         Inner-ring speed [rad/s], >= 0 (outer ring fixed).
 
+    Examples
+    --------
     >>> OperatingCondition(radial_load=500.0).load_vector()[:3].round(6).tolist()
     [0.0, -500.0, 0.0]
     """

@@ -96,6 +96,8 @@ class RollerProfile:
         A user profile: axial positions from the roller's middle [m] and the radius drop
         there [m] (>= 0), positions increasing.
 
+    Examples
+    --------
     >>> round(float(RollerProfile("crowned", crown_radius=1.0).drop(5e-3, 10e-3, 10e-3)) * 1e6, 3)
     12.5
     """
@@ -189,6 +191,8 @@ def on_apex_angles(contact_angle: float, roller_diameter: float, pitch_diameter:
     pitch_diameter : float
         d_m [m].
 
+    Examples
+    --------
     >>> [round(math.degrees(a), 3) for a in on_apex_angles(math.radians(13.86), 6.8, 38.5)]
     [9.725, 11.793, 2.067]
     """
@@ -271,6 +275,8 @@ class RollerBearing:
     sources : dict
         Field -> :class:`~bearinglab.geometry.Source`.
 
+    Examples
+    --------
     >>> b = RollerBearing(roller_count=14, roller_diameter=10e-3, roller_length=9.6e-3,
     ...                   pitch_diameter=65.01e-3, profile=RollerProfile("flat"))
     >>> b.rolling_element, round(b.inner_raceway_diameter * 1e3, 2)

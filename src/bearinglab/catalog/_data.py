@@ -50,6 +50,8 @@ def source_lines(name: str) -> list[str]:
     name : str
         File name in ``catalog/data``, one of :data:`TABLES` [-].
 
+    Examples
+    --------
     >>> source_lines("iso15_radial.csv")[0].startswith("ISO 15")
     True
     """
@@ -79,6 +81,8 @@ def rows(name: str) -> tuple[dict, ...]:
     name : str
         File name in ``catalog/data``, one of :data:`TABLES` [-].
 
+    Examples
+    --------
     >>> rows("iso104_thrust.csv")[0]["series"]
     '511'
     """
@@ -104,6 +108,8 @@ def read_table(name: str):
     name : str
         File name in ``catalog/data``, one of :data:`TABLES` [-].
 
+    Examples
+    --------
     >>> t = read_table("iso104_thrust.csv")
     >>> float(t.query("series == '511' and bore_mm == 10")["height_mm"].iloc[0])
     9.0

@@ -143,6 +143,8 @@ def roller_by_name(text: str) -> PublishedRollerGeometry | None:
     text : str
         Catalogue name, e.g. ``"ZA-2115 (IMS)"`` [-].
 
+    Examples
+    --------
     >>> roller_by_name("za-2115 (ims)").values["roller_count"]
     16
     """

@@ -84,6 +84,8 @@ def diameter_series_group(dimension_series: str) -> str:
     dimension_series : str
         ISO two-digit dimension series; its last digit is the diameter series [-].
 
+    Examples
+    --------
     >>> diameter_series_group("02"), diameter_series_group("18"), diameter_series_group("10")
     ('2', '0', '0')
     """
@@ -117,6 +119,8 @@ def ball_diameter_factor(bore: float, dimension_series: str) -> float:
     dimension_series : str
         ISO two-digit dimension series [-].
 
+    Examples
+    --------
     >>> ball_diameter_factor(0.025, "02"), ball_diameter_factor(0.05, "03")
     (0.3, 0.32)
     """
@@ -207,6 +211,8 @@ def ball_count_and_pitch(
     tuple
         (Z [-], d_m [m], notes [-]).
 
+    Examples
+    --------
     >>> z, dm, _ = ball_count_and_pitch(8.1e-3, 38.5e-3, "02")
     >>> z, round(dm * 1e3, 2)
     (9, 38.56)
@@ -254,6 +260,8 @@ def kw_range(bore: float, dimension_series: str) -> tuple[float, float]:
     dimension_series : str
         ISO two-digit dimension series [-].
 
+    Examples
+    --------
     >>> kw_range(0.025, "02")
     (0.29, 0.31)
     """
@@ -288,6 +296,8 @@ def estimate_internal_geometry(
     contact_angle : float or None
         Nominal contact angle; None gives 0 for a radial bearing [rad].
 
+    Examples
+    --------
     >>> g = estimate_internal_geometry(0.025, 0.052, "02")   # 6205
     >>> g.ball_count, round(g.ball_diameter * 1e3, 2), round(g.pitch_diameter * 1e3, 2)
     (9, 8.1, 38.56)

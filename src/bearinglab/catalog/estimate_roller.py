@@ -106,6 +106,8 @@ def tapered_contact_angle(series: str) -> float:
     series : str
         ISO 355 series, e.g. ``"302"`` [-].
 
+    Examples
+    --------
     >>> round(math.degrees(tapered_contact_angle("302")), 2)
     13.86
     """
@@ -141,6 +143,8 @@ def estimate_roller_geometry(
     contact_angle : float
         alpha [rad] (0 for cylindrical bearings).
 
+    Examples
+    --------
     >>> g = estimate_roller_geometry(0.025, 0.052, 0.015)   # NU205
     >>> g.roller_count, round(g.roller_diameter * 1e3, 2), round(g.roller_length * 1e3, 2)
     (12, 7.29, 9.0)

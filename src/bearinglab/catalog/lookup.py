@@ -67,6 +67,8 @@ class BoundaryDimensions:
     height : float or None
         Height T of a thrust bearing [m].
 
+    Examples
+    --------
     >>> BoundaryDimensions(0.025, 0.052, 0.015, "ISO 15:2017").to_dict()["outside_diameter_mm"]
     52.0
     """
@@ -292,6 +294,8 @@ def radial_clearance(bore: float, group: str = "CN") -> tuple[float, float]:
     CatalogError
         For a bore outside the table of that group; the message gives the range covered.
 
+    Examples
+    --------
     >>> [round(x * 1e6, 6) for x in radial_clearance(0.025)]
     [5.0, 20.0]
     >>> [round(x * 1e6, 6) for x in radial_clearance(0.025, "C3")]
@@ -440,6 +444,8 @@ def published_geometry(
     system : str or None
         ``"gost"`` or ``"iso"`` for reading text as a designation [-].
 
+    Examples
+    --------
     >>> published_geometry("er-16k").ball_count
     9
     """
@@ -473,6 +479,8 @@ def catalog_table(kind: str = "dimensions"):
         ``table`` column), ``"geometry"`` (published internal geometries) or
         ``"families"`` (family -> standard and table) [-].
 
+    Examples
+    --------
     >>> t = catalog_table()
     >>> row = t.query("table == 'iso15_radial.csv' and key == '02' and bore_mm == 25")
     >>> float(row["width_mm"].iloc[0])

@@ -233,6 +233,8 @@ def ball_contacts(
     method : {"exact", "hamrock_brewe"}
         How the ellipticity and elliptic integrals are obtained.
 
+    Examples
+    --------
     >>> from bearinglab.geometry import BallBearing
     >>> b = BallBearing(ball_count=9, ball_diameter=12.7e-3, pitch_diameter=65e-3)
     >>> r = ball_contacts(b, 4000.0)

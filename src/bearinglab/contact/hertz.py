@@ -118,6 +118,8 @@ def ellipticity(radius_ratio, method: Method = "exact"):
     ConvergenceError
         If the exact relation cannot be solved to a relative residual of 1e-10.
 
+    Examples
+    --------
     >>> round(float(ellipticity(1.0)), 6)
     1.0
     >>> round(float(ellipticity(15.0)), 3), round(float(ellipticity(15.0, "hamrock_brewe")), 3)
@@ -238,6 +240,8 @@ def point_contact(load, rx, ry, effective_modulus, method: Method = "exact") -> 
     method : {"exact", "hamrock_brewe"}
         Ellipticity and elliptic integrals exact (SciPy) or by Hamrock-Brewe.
 
+    Examples
+    --------
     >>> c = point_contact(1000.0, 3.23e-3, 0.165, 228.6e9)
     >>> round(float(c.max_pressure) / 1e9, 2)
     2.32
@@ -334,6 +338,8 @@ def series_constant(inner_constant, outer_constant):
     inner_constant, outer_constant : float or array
         K_i and K_o [N/m^1.5].
 
+    Examples
+    --------
     >>> round(float(series_constant(8.0, 8.0)), 6)  # equal springs: K / 2^1.5
     2.828427
     """

@@ -93,6 +93,8 @@ def line_contact(load_per_length, reduced_radius, effective_modulus) -> LineCont
     effective_modulus : float
         E' = 2 / ((1 - nu_a^2)/E_a + (1 - nu_b^2)/E_b) [Pa].
 
+    Examples
+    --------
     >>> c = line_contact(40e3 / 0.02, 0.01, 2 / (2 * (1 - 0.3**2) / 210e9))
     >>> round(float(c.max_pressure) / 1e6, 1), round(float(c.half_width) * 1e3, 4)
     (2710.3, 0.4698)
@@ -126,6 +128,8 @@ def roller_raceway_radii(roller_diameter, pitch_diameter, contact_angle=0.0):
     contact_angle : float or array
         Raceway angle alpha [rad].
 
+    Examples
+    --------
     >>> [round(float(r) * 1e3, 4) for r in roller_raceway_radii(10e-3, 65.01e-3)]
     [4.2309, 5.7691]
     """
@@ -150,6 +154,8 @@ def iso16281_roller_constant(effective_length, effective_modulus=None, steel_mod
         E' of the steel pair the standard's constant stands for [Pa]; needed with
         ``effective_modulus``.
 
+    Examples
+    --------
     >>> round(iso16281_roller_constant(9.6e-3) / 1e9, 4)
     0.5783
     """
@@ -172,6 +178,8 @@ def iso16281_approach(load, effective_length):
     effective_length : float
         L_we [m].
 
+    Examples
+    --------
     >>> round(float(iso16281_approach(1000.0, 10e-3)) * 1e6, 3)
     6.308
     """
@@ -191,6 +199,8 @@ def palmgren_approach(load, length):
     length : float
         Contact length l [m].
 
+    Examples
+    --------
     >>> round(float(palmgren_approach(1000.0, 10e-3)) * 1e6, 3)
     3.05
     """
@@ -211,6 +221,8 @@ def slice_positions(effective_length: float, slices: int) -> np.ndarray:
     slices : int
         n_s >= 1 [-].
 
+    Examples
+    --------
     >>> (slice_positions(10e-3, 4) * 1e3).tolist()
     [-3.75, -1.25, 1.25, 3.75]
     """
@@ -241,6 +253,8 @@ def logarithmic_profile(x, roller_diameter: float, effective_length: float, tape
     tapered : bool
         The tapered-roller form (0.00045 D_we ...) [-].
 
+    Examples
+    --------
     >>> round(float(logarithmic_profile(4e-3, 10e-3, 9.6e-3)) * 1e6, 3)
     4.15
     """
@@ -268,6 +282,8 @@ def crowned_profile(x, crown_radius: float, flat_length: float = 0.0):
     flat_length : float
         Length of the straight middle [m].
 
+    Examples
+    --------
     >>> round(float(crowned_profile(5e-3, 1.0)) * 1e6, 3)
     12.5
     """
@@ -287,6 +303,8 @@ def edge_stress_factors(slices: int) -> np.ndarray:
     slices : int
         n_s >= 2 [-].
 
+    Examples
+    --------
     >>> [round(float(f), 3) for f in edge_stress_factors(30)[:3]]
     [2.328, 1.127, 1.064]
     """

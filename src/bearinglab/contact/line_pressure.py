@@ -57,6 +57,8 @@ def rectangle_influence(xc, yc, x0, x1, y0, y1):
     x0, x1, y0, y1 : array
         Rectangle edges [m].
 
+    Examples
+    --------
     >>> round(float(rectangle_influence(0.0, 0.0, -1.0, 1.0, -1.0, 1.0)), 4)  # 8 asinh(1)
     7.051
     """

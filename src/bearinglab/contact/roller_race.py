@@ -54,6 +54,8 @@ def slice_loads(
     tilt : float
         Tilt between the raceways in the roller's plane [rad].
 
+    Examples
+    --------
     >>> q, d = slice_loads(1000.0, 5e8, np.linspace(-4e-3, 4e-3, 5), np.zeros(5))
     >>> q.round(6).tolist(), round(d * 1e6, 4)
     ([200.0, 200.0, 200.0, 200.0, 200.0], 7.4289)
@@ -230,6 +232,8 @@ def roller_contacts(
     axial_cells, transverse_cells : int
         Cells of the half-space solution along and across the contact [-].
 
+    Examples
+    --------
     >>> from bearinglab.roller_geometry import RollerBearing, RollerProfile
     >>> b = RollerBearing(roller_count=14, roller_diameter=10e-3, roller_length=9.6e-3,
     ...                   pitch_diameter=65e-3)

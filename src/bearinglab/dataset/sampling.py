@@ -42,6 +42,8 @@ def parse_range(
     signed : bool
         The numbers may be negative (otherwise they must be >= 0); ``positive`` prevails.
 
+    Examples
+    --------
     >>> parse_range("speed_rpm", "1700:1800")
     ('uniform', 1700.0, 1800.0)
     >>> parse_range("model", "rigid,slip", text=True)

@@ -68,6 +68,8 @@ def parse(text: str, system: str | None = None) -> Designation:
         If no reader understands the text; it names the part not understood by the reader
         that got further.
 
+    Examples
+    --------
     >>> parse("6205", system="gost").contact_angle_deg is None
     True
     >>> parse("1205").notes
@@ -133,6 +135,8 @@ def gost_equivalent(text: str, system: str | None = None) -> str | None:
     system : str or None
         Force ``"gost"`` or ``"iso"`` reading [-]
 
+    Examples
+    --------
     >>> gost_equivalent("6006"), gost_equivalent("61904")
     ('106', '1000904')
     """

@@ -49,6 +49,8 @@ def nfkc_chars(text: str) -> list[tuple[int, str]]:
     text : str
         Designation as given [-]
 
+    Examples
+    --------
     >>> "".join(ch for _, ch in nfkc_chars("\uff16\uff12\uff10\uff15"))
     '6205'
     """
@@ -101,6 +103,8 @@ def original_slice(text: str, index: list[int], start: int, stop: int | None = N
     stop : int or None
         One past the last normalised position; None for the end [-]
 
+    Examples
+    --------
     >>> original_slice("4- 3003124P", [0, 1, 3, 4], 2, 4)
     '30'
     """
@@ -126,6 +130,8 @@ def format_iso(basic: str, closure_codes: list[str], other_groups: list[str]) ->
     other_groups : list of str
         Further suffix groups, e.g. ``["C3"]`` [-]
 
+    Examples
+    --------
     >>> format_iso("6205", ["2RS"], ["C3"])
     '6205-2RS C3'
     """

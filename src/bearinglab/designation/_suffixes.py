@@ -170,6 +170,8 @@ def suffix_table(group: str) -> dict[str, IsoSuffix]:
     group : str
         ``"angular"``, ``"sph"``, ``"four"``, ``"deep"``, ``"cyl"`` or ``"other"`` [-]
 
+    Examples
+    --------
     >>> "BE" in suffix_table("angular"), "BE" in suffix_table("deep")
     (True, False)
     """

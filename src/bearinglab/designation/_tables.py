@@ -95,6 +95,8 @@ def gost_iso_dims(type_digit: str, variant: str, dia: str, width: str) -> str | 
     width : str
         GOST width-series digit [-]
 
+    Examples
+    --------
     >>> gost_iso_dims("3", "", "1", "3"), gost_iso_dims("8", "", "2", "0")
     ('30', '12')
     """
@@ -396,6 +398,8 @@ def family_for_gost(type_digit: str, variant: str, dims: str | None) -> Family |
     dims : str or None
         ISO two-digit dimension series [-]
 
+    Examples
+    --------
     >>> family_for_gost("2", "1", "02").key
     'NF2'
     """
@@ -415,6 +419,8 @@ def bore_from_code(code: str) -> float:
     code : str
         Two-digit bore code (seed 003 lines 137-139) [-]
 
+    Examples
+    --------
     >>> bore_from_code("03"), bore_from_code("96")
     (17.0, 480.0)
     """
@@ -430,6 +436,8 @@ def format_mm(value: float) -> str:
     value : float
         Length [mm]
 
+    Examples
+    --------
     >>> format_mm(2.5), format_mm(25.0)
     ('2.5', '25')
     """

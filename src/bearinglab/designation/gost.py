@@ -194,6 +194,8 @@ def parse_gost(text: str) -> Designation:
     bearinglab.errors.DesignationError
         Naming the part that is not a GOST 3189-89 designation.
 
+    Examples
+    --------
     >>> parse_gost("4-12210").design_variant_meaning
     'one rib on the outer ring (seed 003 line 185: 4-12210), ISO NF'
     >>> parse_gost("7000106").iso_equivalent, parse_gost("1000096").iso_equivalent

@@ -142,6 +142,8 @@ def parse_iso(text: str) -> Designation:
     bearinglab.errors.DesignationError
         Naming the part that is not understood.
 
+    Examples
+    --------
     >>> parse_iso("16006").gost_equivalent, parse_iso("61904").gost_equivalent
     ('7000106', '1000904')
     >>> parse_iso("62/22").bore_mm

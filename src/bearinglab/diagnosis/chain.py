@@ -74,6 +74,8 @@ def chain_steps(index: np.ndarray, use: np.ndarray) -> tuple[int, np.ndarray, np
         comes in or goes out (a step's moves first, then the lines that go, then those
         that come).
 
+    Examples
+    --------
     >>> first, moves, pairs = chain_steps(np.array([[1, 4], [2, 4], [2, 5]]),
     ...                                   np.array([[True, True], [True, True], [True, False]]))
     >>> first, moves.tolist(), pairs.tolist()

@@ -55,6 +55,8 @@ def levinson(autocorrelation, order: int) -> np.ndarray:
     order : int
         p, >= 1.
 
+    Examples
+    --------
     >>> [abs(round(float(c), 6)) for c in levinson([1.0, 0.5, 0.25], 2)]   # AR(1), 0.5
     [1.0, 0.5, 0.0]
     """
@@ -224,6 +226,8 @@ def signed_rank_p(differences) -> float:
     differences : array_like
         Paired differences, one per passage.
 
+    Examples
+    --------
     >>> signed_rank_p([1.0] * 30) < 1e-5, signed_rank_p([-1.0] * 30) > 0.99
     (True, True)
     """

@@ -63,6 +63,8 @@ def contact_speed(fault_frequency, ball_count, race_radius):
     race_radius : float
         R, the raceway radius [m].
 
+    Examples
+    --------
     >>> round(float(contact_speed(107.36, 9, 23.49e-3)), 3)   # 6205 outer race, 1797 rpm
     1.761
     """
@@ -100,6 +102,8 @@ def bridged_distance(approach, ball_radius, race_radius, race: str):
     race : {"inner", "outer"}
         The race with the pit.
 
+    Examples
+    --------
     >>> round(float(bridged_distance(10e-6, 3.97e-3, 23.49e-3, "outer")) * 1e3, 3)
     0.309
     """
@@ -162,6 +166,8 @@ def ball_approaches(bearing, radial_load: float) -> tuple[float, float]:
     radial_load : float
         F_r [N], > 0.
 
+    Examples
+    --------
     >>> from bearinglab.catalog import bearing_from_designation
     >>> b, _ = bearing_from_designation("6205")
     >>> [round(d * 1e6, 1) for d in ball_approaches(b, 500.0)]

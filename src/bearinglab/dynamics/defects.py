@@ -60,6 +60,8 @@ def edge_drop(distance, ball_radius, race_radius, race: Literal["inner", "outer"
     race : {"inner", "outer"}
         Which race the pit is on, or faces (for a ball defect).
 
+    Examples
+    --------
     >>> round(float(edge_drop(0.6e-3, 3.97e-3, 23.235e-3, "outer")) * 1e6, 2)  # ER-16K, 1.2 mm
     37.85
     """
@@ -95,6 +97,8 @@ class Defect:
     ball : int
         Index of the defective ball (ball 0 is at psi = 0 at time 0); ball defects only.
 
+    Examples
+    --------
     >>> Defect("outer", width=1.2e-3, depth=0.25e-3).to_dict()["width_mm"]
     1.2
     """

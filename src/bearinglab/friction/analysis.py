@@ -131,6 +131,8 @@ def bearing_friction(
     **skf_options
         ``k_z``, ``mu_bl``, ``drag``, ``notes`` of :func:`skf_friction`.
 
+    Examples
+    --------
     >>> from bearinglab.catalog import bearing_from_designation
     >>> b, _ = bearing_from_designation("6205")
     >>> r = bearing_friction(b, rpm_to_rad_s(3000), 1000.0, model="skf", viscosity=20e-6)

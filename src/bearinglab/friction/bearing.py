@@ -67,6 +67,8 @@ class FrictionBearing:
     roller_bearing : RollerBearing or None
         The internal geometry, when it is a roller bearing bearinglab models.
 
+    Examples
+    --------
     >>> FrictionBearing.from_dimensions(0.025, 0.052).pitch_diameter
     0.0385
     """
@@ -139,6 +141,8 @@ class FrictionBearing:
         designation : Designation or None
             Its designation (series, design variant, closures) [-].
 
+        Examples
+        --------
         >>> from bearinglab.catalog import bearing_from_designation
         >>> b, des = bearing_from_designation("NU205", rollers=True)
         >>> FrictionBearing.from_roller_bearing(b, des).design_variant
@@ -197,6 +201,8 @@ class FrictionBearing:
         bore, outside_diameter, pitch_diameter : float or None
             d, D, d_m [m].
 
+        Examples
+        --------
         >>> b = FrictionBearing.from_designation("NU205")
         >>> b.bearing_type, round(b.pitch_diameter * 1e3, 3), b.pitch_diameter_source
         ('cylindrical_roller', 38.5, 'estimated as (d + D) / 2')

@@ -99,6 +99,8 @@ def friction_type_of(bearing_type: str, design_variant: str | None = None) -> st
     design_variant : str or None
         ISO type prefix or GOST design variant of the designation (``"NCF"``) [-].
 
+    Examples
+    --------
     >>> friction_type_of("cylindrical_roller", "NU"), friction_type_of("cylindrical_roller", "NCF")
     ('cylindrical_roller', 'cylindrical_roller_full_complement')
     """
@@ -125,6 +127,8 @@ def friction_coefficient(friction_type: str) -> float:
     friction_type : str
         A key of :data:`SEED003_COEFFICIENTS` [-].
 
+    Examples
+    --------
     >>> friction_coefficient("radial_ball")
     0.0015
     """
@@ -147,6 +151,8 @@ def constant_coefficient_torque(coefficient, equivalent_load, pitch_diameter):
     pitch_diameter : float or array
         Pitch (mean) diameter d_m [m], > 0.
 
+    Examples
+    --------
     >>> round(float(constant_coefficient_torque(0.0015, 1000.0, 0.039)), 6)
     0.02925
     """
@@ -166,6 +172,8 @@ def power_loss(torque, shaft_speed):
     shaft_speed : float or array
         Speed of the rotating ring omega [rad/s], >= 0.
 
+    Examples
+    --------
     >>> from bearinglab.units import rpm_to_rad_s
     >>> round(float(power_loss(0.02925, rpm_to_rad_s(1500))), 4)
     4.5946

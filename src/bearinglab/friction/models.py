@@ -71,6 +71,8 @@ def constant_friction(
     radial_load, axial_load : float
         The loads P was formed from, for the report [N]; ``radial_load`` defaults to P.
 
+    Examples
+    --------
     >>> r = constant_friction(1000.0, 0.039, rpm_to_rad_s(1500), "radial_ball")
     >>> round(r.torque * 1e3, 3), round(r.power_loss, 3)
     (29.25, 4.595)
@@ -155,6 +157,8 @@ def skf_friction(
     axial_factor : float or None
         Y of a tapered roller bearing [-].
 
+    Examples
+    --------
     >>> from bearinglab.friction import deep_groove_constants
     >>> r = skf_friction("radial_ball", 0.025, 0.052, 1000.0, 0.0, rpm_to_rad_s(3000), 20e-6,
     ...                  deep_groove_constants("62"))

@@ -91,6 +91,8 @@ def viscosity_ratio(viscosity, shaft_speed, mean_diameter) -> float:
     mean_diameter : float
         d_m = 0.5 (d + D) [m].
 
+    Examples
+    --------
     >>> round(viscosity_ratio(20e-6, rpm_to_rad_s(3000), 0.0385), 3)
     1.51
     """
@@ -112,6 +114,8 @@ def inlet_shear_heating_factor(shaft_speed, mean_diameter, viscosity):
     viscosity : float or array
         Operating viscosity nu [m^2/s].
 
+    Examples
+    --------
     >>> round(float(inlet_shear_heating_factor(rpm_to_rad_s(3000), 0.0385, 20e-6)), 4)
     0.9636
     """
@@ -137,6 +141,8 @@ def replenishment_factor(shaft_speed, viscosity, bore, outside_diameter, k_rs, k
     k_z : float
         Bearing-type geometry constant K_Z [-] (:data:`K_Z`).
 
+    Examples
+    --------
     >>> round(float(replenishment_factor(rpm_to_rad_s(3000), 20e-6, 0.025, 0.052,
     ...                                  6e-8, 3.1)), 4)
     0.9357
@@ -164,6 +170,8 @@ def sliding_weighting_factor(shaft_speed, viscosity, mean_diameter):
     mean_diameter : float or array
         d_m = 0.5 (d + D) [m].
 
+    Examples
+    --------
     >>> sliding_weighting_factor(0.0, 20e-6, 0.0385)
     1.0
     """
@@ -185,6 +193,8 @@ def sliding_friction_coefficient(weighting_factor, mu_bl=MU_BL, mu_ehl=MU_EHL["m
     mu_ehl : float
         Full-film coefficient [-] (:data:`MU_EHL`).
 
+    Examples
+    --------
     >>> sliding_friction_coefficient(1.0)
     0.15
     """
@@ -211,6 +221,8 @@ def seal_moment(k_s1, k_s2, beta, seal_diameter):
     seal_diameter : float
         Seal counterface diameter d_s [m].
 
+    Examples
+    --------
     >>> round(seal_moment(0.02, 2.0, 2.25, 0.0313) * 1e3, 3)
     48.345
     """
@@ -294,6 +306,8 @@ def skf_frictional_moment(
     axial_factor : float or None
         Y of a tapered roller bearing (needed with F_a > 0) [-].
 
+    Examples
+    --------
     >>> m = skf_frictional_moment("radial_ball", 0.025, 0.052, 1000.0, 0.0,
     ...                           rpm_to_rad_s(3000), 20e-6,
     ...                           deep_groove_constants("62"))

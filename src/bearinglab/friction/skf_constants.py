@@ -111,6 +111,8 @@ class SkfGeometryConstants:
     verified : bool
         True only if checked against a stored copy of the primary source [-].
 
+    Examples
+    --------
     >>> SkfGeometryConstants(3.9e-7, 1.7, 3.23e-3, 36.5).r3 is None
     True
     """
@@ -159,6 +161,8 @@ def deep_groove_constants(series: str) -> SkfGeometryConstants:
     series : str
         ISO series of the designation (:attr:`Designation.series`) [-].
 
+    Examples
+    --------
     >>> deep_groove_constants("62").r1
     3.9e-07
     """

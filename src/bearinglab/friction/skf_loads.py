@@ -59,6 +59,8 @@ def deep_groove_load_angle(axial_load, static_load_rating):
     static_load_rating : float
         Basic static load rating C_0 [N], > 0; F_a <= C_0.
 
+    Examples
+    --------
     >>> round(math.degrees(deep_groove_load_angle(1000.0, 10000.0)), 3)
     14.156
     """
@@ -92,6 +94,8 @@ def deep_groove_load_variables(
     static_load_rating : float or None
         C_0 [N]; needed when F_a > 0.
 
+    Examples
+    --------
     >>> g = deep_groove_load_variables(0.0385, 1000.0, 0.0, deep_groove_constants("62"))
     >>> round(g[0], 5), round(g[1], 2)
     (0.02082, 125.02)
@@ -154,6 +158,8 @@ def cylindrical_roller_load_variables(mean_diameter, radial_load, axial_load, co
     constants : SkfGeometryConstants
         R1, S1, S2 of the series (R2 unused).
 
+    Examples
+    --------
     >>> g = cylindrical_roller_load_variables(0.0385, 2000.0, 0.0,
     ...                                       SkfGeometryConstants(1.09e-6, 0.0, 0.16, 0.0015))
     >>> round(g[0], 4), round(g[1], 3)
@@ -180,6 +186,8 @@ def tapered_roller_load_variables(mean_diameter, radial_load, axial_load, axial_
     constants : SkfGeometryConstants
         R1, R2, S1, S2 of the series.
 
+    Examples
+    --------
     >>> g = tapered_roller_load_variables(0.0385, 2000.0, 500.0, 1.6,
     ...                                   SkfGeometryConstants(1.76e-6, 10.9, 0.017, 2.0))
     >>> round(g[0], 4), round(g[1], 2)

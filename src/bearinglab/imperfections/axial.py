@@ -144,6 +144,8 @@ def ball_axial_shift(
     ConvergenceError
         When eq. 9 has no sign change within +-D_w/4 (profiles too steep to hold the ball).
 
+    Examples
+    --------
     >>> from bearinglab.geometry import BallBearing
     >>> b = BallBearing(ball_count=7, ball_diameter=3.969e-3, pitch_diameter=15e-3)
     >>> r = ball_axial_shift(b, outer_height=lambda z: 1e-3 * z)    # outer race tilted

@@ -65,6 +65,8 @@ class Imperfections:
     surfaces : RandomSurface or sequence of RandomSurface
         3-D random raceway surfaces (seed 002 eq. 6); several on one race add up.
 
+    Examples
+    --------
     >>> import math
     >>> from bearinglab.geometry import BallBearing
     >>> b = BallBearing(ball_count=7, ball_diameter=3.969e-3, pitch_diameter=15e-3)

@@ -60,6 +60,8 @@ def exponential_autocorrelation(tau_r, tau_z, rms, length_circumferential, lengt
     length_circumferential, length_axial : float
         beta_r, beta_z, correlation lengths [m].
 
+    Examples
+    --------
     >>> round(float(exponential_autocorrelation(1e-3, 0.0, 1.0, 1e-3, 2e-3)), 4)
     0.1003
     """
@@ -129,6 +131,8 @@ class RandomSurface:
     exact_rms : bool
         Scale this realisation (mean removed) to RMS exactly dh.
 
+    Examples
+    --------
     >>> s = RandomSurface("outer", 0.1e-6, 0.5e-3, 0.5e-3, radius=11e-3, width=2e-3, seed=3)
     >>> s.heights.shape, bool(np.allclose(s.height(s.theta[:3], 0.0), s.heights[:3, 16]))
     ((512, 33), True)

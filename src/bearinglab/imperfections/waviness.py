@@ -92,6 +92,8 @@ class Waviness:
         Ball waviness only: the index of the wavy ball (ball 0 is at psi = 0 at time 0,
         docs/conventions.md); None means every ball, all with the same phase [-].
 
+    Examples
+    --------
     >>> w = Waviness("outer", order=8, amplitude=0.1e-6)
     >>> round(float(w.radius_deviation(math.pi / 8)) * 1e6, 3)    # a trough
     -0.1
@@ -170,6 +172,8 @@ class BallSizeErrors:
     errors : array (Z,)
         D_wj - D_w of ball j; positive for a ball larger than nominal [m].
 
+    Examples
+    --------
     >>> e = BallSizeErrors.random(7, 2e-6, seed=1)
     >>> bool(np.all(np.abs(e.errors) <= 1e-6)), e == BallSizeErrors.random(7, 2e-6, seed=1)
     (True, True)

@@ -538,6 +538,8 @@ def geometry_rows(bearing) -> list[tuple]:
     bearing : BallBearing or RollerBearing
         The bearing.
 
+    Examples
+    --------
     >>> from bearinglab.catalog import bearing_from_designation
     >>> geometry_rows(bearing_from_designation("6205")[0])[3][1:]
     ('number of balls', 'Z', 9, '-')

@@ -120,6 +120,8 @@ def parse_spec(
     InputError
         One line naming the input, the specification and the part that is wrong.
 
+    Examples
+    --------
     >>> parse_spec("Inner : order=7, amplitude_um=0.5", "waviness", "...",
     ...            {"inner": {"order": "order", "amplitude_um": "nonnegative"}},
     ...            noun="waviness", word="race")

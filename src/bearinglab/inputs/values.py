@@ -138,6 +138,8 @@ def closed(values: dict, specs: dict, what: str = "") -> dict:
     dict
         ``values``.
 
+    Examples
+    --------
     >>> try:
     ...     closed({"reliabilty_percent": 99}, {"reliability_percent": INPUTS["seed"]}, "life")
     ... except InputError as exc:

@@ -45,6 +45,8 @@ def conformity_ratio(gamma: float, inner_groove_factor: float, outer_groove_fact
     inner_groove_factor, outer_groove_factor : float
         f_i, f_o (> 0.5) [-].
 
+    Examples
+    --------
     >>> round(conformity_ratio(0.2, 0.52, 0.52), 4)
     0.5198
     """
@@ -74,6 +76,8 @@ def contact_ratings(bearing: BallBearing, dynamic_rating: float) -> tuple[float,
     dynamic_rating : float
         The bearing's basic dynamic load rating C (ISO 281) [N].
 
+    Examples
+    --------
     >>> from bearinglab.geometry import BallBearing
     >>> b = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3,
     ...                 outer_groove_factor=0.53)
@@ -108,6 +112,8 @@ def equivalent_ball_load(loads, exponent: float) -> float:
     exponent : float
         w: 3 for the rotating ring, 10/3 for the stationary ring [-].
 
+    Examples
+    --------
     >>> round(equivalent_ball_load([100.0] * 8, 3.0), 9)
     100.0
     >>> round(equivalent_ball_load([0, 100.0], 3.0), 3)
@@ -131,6 +137,8 @@ def reference_life(
     inner_equivalent, outer_equivalent : float
         Q_ei, Q_ee [N]; at least one > 0.
 
+    Examples
+    --------
     >>> round(reference_life(1000.0, 2000.0, 100.0, 100.0), 1)
     918.4
     """

@@ -60,6 +60,8 @@ def roller_contact_ratings(bearing, dynamic_rating: float) -> tuple[float, float
     dynamic_rating : float
         The bearing's C (ISO 281) [N].
 
+    Examples
+    --------
     >>> from bearinglab.roller_geometry import RollerBearing
     >>> b = RollerBearing(roller_count=14, roller_diameter=10e-3, roller_length=9.6e-3,
     ...                   pitch_diameter=65.01e-3)
@@ -90,6 +92,8 @@ def slice_equivalent_loads(loads, exponent: float, factors=None) -> np.ndarray:
     factors : array (n_s,) or None
         Edge-stress factors f_k (None: 1) [-].
 
+    Examples
+    --------
     >>> slice_equivalent_loads(np.full((4, 2), 10.0), 4.0).tolist()
     [10.0, 10.0]
     """

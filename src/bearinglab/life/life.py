@@ -60,6 +60,8 @@ def reliability_factor(reliability_percent: float) -> float:
     reliability_percent : float
         Reliability (probability of survival) [%].
 
+    Examples
+    --------
     >>> reliability_factor(90), reliability_factor(99), reliability_factor(99.95)
     (1.0, 0.25, 0.077)
     """
@@ -87,6 +89,8 @@ def rated_viscosity(shaft_speed: float, pitch_diameter: float) -> float:
     pitch_diameter : float
         D_pw [m].
 
+    Examples
+    --------
     >>> round(rated_viscosity(rpm_to_rad_s(3000), 0.039) * 1e6, 2)   # mm^2/s
     13.16
     """
@@ -194,6 +198,8 @@ def life_modification_factor(
     float
         a_ISO in [0.1, 50].
 
+    Examples
+    --------
     >>> life_modification_factor(1.0, 0.0)
     0.1
     >>> round(life_modification_factor(2.0, 0.3), 3)
@@ -254,6 +260,8 @@ def basic_rating_life(
     exponent : float
         p [-].
 
+    Examples
+    --------
     >>> basic_rating_life(14000.0, 1400.0)
     1000.0
     """
@@ -356,6 +364,8 @@ def rating_life(
         (:class:`ViscosityTooLow`), a moment or misalignment with ``iso281``, a given
         rating not > 0, ...
 
+    Examples
+    --------
     >>> from bearinglab.catalog import bearing_from_designation
     >>> b, _ = bearing_from_designation("6205")
     >>> r = rating_life(b, OperatingCondition(radial_load=1400.0, shaft_speed=rpm_to_rad_s(1500)))

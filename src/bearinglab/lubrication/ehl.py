@@ -101,6 +101,8 @@ def ellipticity_hamrock_dowson(radius_ratio):
     radius_ratio : float or array
         R_y / R_x [-], >= 1.
 
+    Examples
+    --------
     >>> round(float(ellipticity_hamrock_dowson(1.0)), 2)
     1.03
     """
@@ -155,6 +157,8 @@ def dimensionless_groups(
     pressure_viscosity_coefficient : float or array
         alpha [1/Pa].
 
+    Examples
+    --------
     >>> g = dimensionless_groups(1000.0, 10.0, 5e-3, 2e11, 0.04, 2e-8)
     >>> [float(f"{float(v):.4g}") for v in g]
     [4e-10, 4000.0, 0.0002]
@@ -191,6 +195,8 @@ def hamrock_dowson_minimum(speed, materials, load, ellipticity):
     ellipticity : float or array
         k [-], > 0.
 
+    Examples
+    --------
     >>> round(float(hamrock_dowson_minimum(1e-11, 5000.0, 1e-6, 4.0)) * 1e6, 3)
     19.99
     """
@@ -208,6 +214,8 @@ def hamrock_dowson_central(speed, materials, load, ellipticity):
     speed, materials, load, ellipticity : float or array
         U, G, W and k [-], as in :func:`hamrock_dowson_minimum`.
 
+    Examples
+    --------
     >>> round(float(hamrock_dowson_central(1e-11, 5000.0, 1e-6, 4.0)) * 1e6, 3)
     25.567
     """
@@ -260,6 +268,8 @@ def hamrock_dowson_film(
     ellipticity_method : {"hamrock_dowson", "exact", "hamrock_brewe"}
         How k is obtained (:func:`contact_ellipticity`) [-].
 
+    Examples
+    --------
     >>> h = hamrock_dowson_film(500.0, 5.0, 4e-3, 0.1, 2.286e11, 0.05, 2e-8, "minimum")
     >>> round(float(h) * 1e6, 3)
     0.54
@@ -317,6 +327,8 @@ def seed004_film_thickness(
     radius_exponent : float
         p [-]: 0.956 as printed, 0.466 for a dimensionally consistent formula.
 
+    Examples
+    --------
     >>> h = seed004_film_thickness(300.0, 2.35, 3.18e-3, 0.104, 2.286e11, 0.04, 1.48e-8,
     ...                            radius_exponent=0.466)
     >>> round(float(h) * 1e6, 3)
@@ -370,6 +382,8 @@ def rolling_entrainment_speed(
     contact_angle : float or array
         alpha [rad].
 
+    Examples
+    --------
     >>> round(float(rolling_entrainment_speed(39e-3, 8e-3, 2400 * np.pi / 30)), 4)
     2.3473
     """
@@ -447,6 +461,8 @@ def film_thickness(
     ellipticity_method : {"hamrock_dowson", "exact", "hamrock_brewe"}
         How k is obtained [-].
 
+    Examples
+    --------
     >>> from bearinglab.geometry import BallBearing
     >>> from bearinglab.lubrication.lubricant import ISO_VG68
     >>> b = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3)

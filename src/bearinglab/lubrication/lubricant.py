@@ -96,6 +96,8 @@ def reynolds_viscosity(
     reference_temperature : float or array
         T_0 [K].
 
+    Examples
+    --------
     >>> round(float(reynolds_viscosity(0.04, 0.027, 313.15, 293.15)), 5)
     0.02331
     """
@@ -126,6 +128,8 @@ def roelands_pressure_viscosity_coefficient(viscosity, roelands_index):
     roelands_index : float or array
         Roelands' pressure-viscosity index Z [-], > 0.
 
+    Examples
+    --------
     >>> round(float(roelands_pressure_viscosity_coefficient(0.04, 0.45)) * 1e8, 4)
     1.4811
     """
@@ -158,6 +162,8 @@ def roelands_index(viscosity, pressure_viscosity_coefficient):
     pressure_viscosity_coefficient : float or array
         alpha [1/Pa].
 
+    Examples
+    --------
     >>> round(float(roelands_index(0.04, 1.4811254e-8)), 4)
     0.45
     """
@@ -205,6 +211,8 @@ class Lubricant:
     source : str
         Where the values come from [-].
 
+    Examples
+    --------
     >>> oil = Lubricant("test oil", 0.05, 313.15, 2e-8, 870.0, temperature_coefficient=0.03)
     >>> round(float(oil.viscosity(323.15)), 5)
     0.03704
@@ -428,6 +436,8 @@ def operating_viscosity(lubricant, temperature=None) -> tuple[float, str]:
         Operating temperature [K] in :data:`OPERATING_TEMPERATURE_RANGE`; None means the
         lubricant's reference temperature.
 
+    Examples
+    --------
     >>> nu, how = operating_viscosity("iso-vg68")
     >>> round(nu * 1e6, 6), how
     (68.0, 'ISO VG 68 mineral oil (typical) at its reference temperature 40 degC')

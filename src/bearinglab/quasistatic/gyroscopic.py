@@ -83,6 +83,8 @@ def raceway_control_kinematics(inner_angle, outer_angle, gamma_prime, control="o
     control : {"outer", "inner"}
         The race at which the ball rolls without spinning [-].
 
+    Examples
+    --------
     >>> b, om, orr = raceway_control_kinematics(0.7, 0.7, 0.2, "inner")
     >>> round(float(om), 6) == round((1 - 0.2 * math.cos(0.7)) / 2, 6)
     True

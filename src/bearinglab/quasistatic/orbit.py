@@ -293,6 +293,8 @@ def inner_ring_orbit(
         Passed to :func:`bearinglab.quasistatic.solve_load_distribution` (``lubricant``,
         ``gyroscopic``, ``ring_expansion``, ...).
 
+    Examples
+    --------
     >>> from bearinglab.imperfections import Imperfections, Waviness
     >>> b = BallBearing(ball_count=7, ball_diameter=3.969e-3, pitch_diameter=15e-3,
     ...                 diametral_clearance=10e-6)

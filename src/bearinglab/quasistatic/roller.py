@@ -86,6 +86,8 @@ def roller_centrifugal_force(bearing: RollerBearing, shaft_speed: float) -> floa
     shaft_speed : float
         Inner-ring speed omega [rad/s].
 
+    Examples
+    --------
     >>> from bearinglab.roller_geometry import RollerBearing
     >>> b = RollerBearing(roller_count=14, roller_diameter=10e-3, roller_length=9.6e-3,
     ...                   pitch_diameter=65.01e-3)

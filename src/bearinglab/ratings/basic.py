@@ -65,6 +65,8 @@ def fc_factor(gamma: float, thrust: bool = False) -> float:
     float
         f_c for D_w in mm and C in N [N/mm^1.8].
 
+    Examples
+    --------
     >>> fc_factor(0.19), round(fc_factor(0.2034), 3)
     (60.0, 59.866)
     """
@@ -89,6 +91,8 @@ def f0_factor(gamma: float, thrust: bool = False) -> float:
     float
         f_0 for D_w in mm and C_0 in N [N/mm^2].
 
+    Examples
+    --------
     >>> f0_factor(0.09), f0_factor(0.095)
     (16.5, 16.45)
     """
@@ -164,6 +168,8 @@ def dynamic_load_rating(
     float
         C_r or C_a [N].
 
+    Examples
+    --------
     >>> round(dynamic_load_rating(9, 7.94004e-3, 39.0398e-3))  # SKF 6205 (CWRU), ISO 281
     14027
     """
@@ -208,6 +214,8 @@ def static_load_rating(
     float
         C_0r or C_0a [N].
 
+    Examples
+    --------
     >>> round(static_load_rating(8, 7.92e-3, 34.55e-3))  # XJTU-SY LDK UER204
     6635
     """
@@ -230,6 +238,8 @@ def fatigue_load_limit(static_rating: float, pitch_diameter: float) -> float:
     pitch_diameter : float
         D_pw [m].
 
+    Examples
+    --------
     >>> round(fatigue_load_limit(22000.0, 0.05)), round(fatigue_load_limit(22000.0, 0.4))
     (1000, 500)
     """
@@ -356,6 +366,8 @@ def load_ratings(
         90 deg, or a gamma outside the ISO tables (unless both ratings are given); a given
         rating that is not > 0.
 
+    Examples
+    --------
     >>> from bearinglab.catalog import bearing_from_designation
     >>> r = load_ratings(bearing_from_designation("6203")[0])
     >>> round(r.dynamic), round(r.static)

@@ -56,6 +56,8 @@ def load_factors(contact_angle: float, relative_axial_load: float) -> LoadFactor
     -------
     LoadFactors
 
+    Examples
+    --------
     >>> load_factors(0.0, 1.03e6)[:3]
     (0.56, 1.55, 0.28)
     >>> tuple(round(v, 3) for v in load_factors(math.radians(22.5), 0.0)[:3])
@@ -138,6 +140,8 @@ def equivalent_dynamic_load(
     tuple
         (P [N], the LoadFactors used; X = 1, Y = 0 when F_a/F_r <= e).
 
+    Examples
+    --------
     >>> from bearinglab.geometry import BallBearing
     >>> b = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3)
     >>> round(equivalent_dynamic_load(b, 1000.0, 500.0)[0])
@@ -170,6 +174,8 @@ def static_load_factors(contact_angle: float) -> tuple[float, float]:
     contact_angle : float
         Nominal contact angle [rad]: 0, or 5 ... 45 deg.
 
+    Examples
+    --------
     >>> static_load_factors(0.0), static_load_factors(math.radians(37.5))
     ((0.6, 0.5), (0.5, 0.275))
     """
@@ -207,6 +213,8 @@ def equivalent_static_load(
     axial_load : float
         F_a [N].
 
+    Examples
+    --------
     >>> from bearinglab.geometry import BallBearing
     >>> b = BallBearing(ball_count=9, ball_diameter=7.94e-3, pitch_diameter=39.04e-3)
     >>> equivalent_static_load(b, 1000.0, 500.0), equivalent_static_load(b, 1000.0, 1200.0)

@@ -76,6 +76,8 @@ def roller_fc_factor(gamma: float) -> float:
     float
         f_c for C in N with L_we and D_we in mm.
 
+    Examples
+    --------
     >>> round(roller_fc_factor(0.15), 2), round(roller_fc_factor(10 / 65.01), 2)
     (88.21, 88.35)
     """
@@ -140,6 +142,8 @@ def roller_dynamic_load_rating(
     rating_factor : float
         b_m [-].
 
+    Examples
+    --------
     >>> round(roller_dynamic_load_rating(14, 10e-3, 9.6e-3, 65.01e-3))  # Harris's 209
     48445
     """
@@ -169,6 +173,8 @@ def roller_static_load_rating(
     roller_count, roller_diameter, roller_length, pitch_diameter, contact_angle, rows
         As for :func:`roller_dynamic_load_rating`.
 
+    Examples
+    --------
     >>> round(roller_static_load_rating(14, 10e-3, 9.6e-3, 65.01e-3))  # Harris's 209
     50040
     """
@@ -195,6 +201,8 @@ def roller_fatigue_load_limit(static_rating: float, pitch_diameter: float) -> fl
     pitch_diameter : float
         D_pw [m].
 
+    Examples
+    --------
     >>> round(roller_fatigue_load_limit(8200.0, 0.05))
     1000
     """
@@ -217,6 +225,8 @@ def tapered_factors(contact_angle: float, rows: int = 1) -> tuple[float, float, 
     rows : int
         1, or 2 for a pair or a double-row bearing [-].
 
+    Examples
+    --------
     >>> [round(v, 3) for v in tapered_factors(math.radians(13.86))]
     [0.37, 0.4, 1.621, 0.0]
     """
@@ -248,6 +258,8 @@ def roller_equivalent_dynamic_load(
     tuple
         (P [N], X, Y, e [-]).
 
+    Examples
+    --------
     >>> round(roller_equivalent_dynamic_load(math.radians(13.86), 1, 1000.0, 1000.0)[0])
     2021
     """
@@ -274,6 +286,8 @@ def roller_equivalent_static_load(
     radial_load, axial_load : float
         F_r, F_a [N].
 
+    Examples
+    --------
     >>> round(roller_equivalent_static_load(math.radians(13.86), 1, 1000.0, 1000.0))
     1392
     """

@@ -78,6 +78,8 @@ def free_ring_frequency(mode, elastic_modulus, density, second_moment, mean_radi
     mean_radius, area : float or array
         Radius R of the centroid line [m] and section area S [m^2].
 
+    Examples
+    --------
     >>> round(float(free_ring_frequency(2, 208e9, 7830, 1e-10, 0.03, 5e-5)), 1)
     3458.7
     """
@@ -115,6 +117,8 @@ def radial_stiffness_under_axial_load(ball_count, ball_constant, axial_load, con
     contact_angle : float or array
         tau, 0 < tau < pi/2 [rad].
 
+    Examples
+    --------
     >>> round(float(radial_stiffness_under_axial_load(8, 1.5e10, 200.0, 0.2)) / 1e6, 1)
     175.7
     """
@@ -143,6 +147,8 @@ def rigid_body_frequency(radial_stiffness, ring_mass):
     ring_mass : float or array
         Vibrating mass m_h of the ring and what is attached to it [kg].
 
+    Examples
+    --------
     >>> round(float(rigid_body_frequency(150e6, 0.6)), 1)  # seed 000, 310: "2.5 kHz"
     2516.5
     """
@@ -180,6 +186,8 @@ def loaded_ring_frequency(free_frequency, rigid_body_frequency, mode, lam=1.0):
     lam : float or array
         lambda in [0, 2] [-].
 
+    Examples
+    --------
     >>> round(float(loaded_ring_frequency(3.50, 5.07, 2)), 2)  # seed 000, 106: 7.31 kHz
     7.31
     """
@@ -198,6 +206,8 @@ def loaded_ring_frequencies(free_frequency, rigid_body_frequency, mode, ball_cou
     mode, ball_count : int or array
         m >= 1 [-] and n [-].
 
+    Examples
+    --------
     >>> [round(float(f), 2) for f in loaded_ring_frequencies(10.0, 2.5, 4, 8)]  # 310
     [10.0, 11.11]
     """
@@ -250,6 +260,8 @@ def refined_frequency(
     lam : float or array
         lambda in [0, 2] [-].
 
+    Examples
+    --------
     >>> round(float(refined_frequency(6.08, 16.2, 2.5, 5, 0.33)), 2)
     11.8
     """
@@ -289,6 +301,8 @@ def refined_ring_frequencies(
     lam : float or array
         1 for 2m != l n, 2 for the balls at the antinodes when 2m = l n [-].
 
+    Examples
+    --------
     >>> f, e = refined_ring_frequencies(10.0, 2.5, 4, 0.33, lam=2)  # 310, m = 4
     >>> [round(float(x), 2) for x in f + e]
     [9.46, 14.46, 1.22, -1.32]
@@ -335,6 +349,8 @@ def refined_equal_stiffness(
     antinodes : bool
         Use (3.10) and (3.9) [-].
 
+    Examples
+    --------
     >>> f, e = refined_equal_stiffness(16.2, 2.5, 5, 0.33)  # seed 000, 310, m = 5
     >>> [round(float(x), 3) for x in f + e]
     [11.796, 17.287, 6.129, -0.514]

@@ -289,6 +289,8 @@ def ring_modes(
         (the tangent radial stiffness of :func:`bearinglab.quasistatic.solve_load_distribution`
         at the axial load, which counts the contact angle the load produces) [-].
 
+    Examples
+    --------
     >>> r = ring_modes(ball_count=8, rigid_body_frequency=2500.0, ball_mass_ratio=0.33,
     ...                free_frequencies={4: 10000.0}, modes=[4])
     >>> [round(f / 1e3, 2) for f in r.mode(4).approximate + r.mode(4).refined]

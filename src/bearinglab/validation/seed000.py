@@ -377,6 +377,8 @@ def tolerance(compute, inputs: dict, half_unit: float) -> tuple[float, float]:
     half_unit : float
         Half a unit in the last printed place of the result [its unit].
 
+    Examples
+    --------
     >>> value, allowance = tolerance(lambda p: 2 * p["x"], {"x": (1.0, 0.05)}, 0.005)
     >>> value, round(allowance, 6)
     (2.0, 0.105)

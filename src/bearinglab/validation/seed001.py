@@ -97,6 +97,8 @@ def arch_angle_for(
     groove_factor : float
         f_i = f_o [-].
 
+    Examples
+    --------
     >>> round(math.degrees(arch_angle_for(math.radians(26), 150e-6, 18.9e-3, 0.53)), 2)
     15.22
     """
@@ -302,6 +304,8 @@ def inflection_load(radial_loads, displacements) -> float:
     displacements : array
         S_r at those loads [any length unit].
 
+    Examples
+    --------
     >>> f = np.arange(0.0, 11.0)
     >>> float(inflection_load(f, np.maximum(f - 6.0, 0.0) * 5 + 0.1 * f))
     6.0
@@ -345,6 +349,8 @@ def onset_load(radial_loads, displacements) -> float:
     displacements : array
         S_r at those loads [any length unit].
 
+    Examples
+    --------
     >>> f = np.arange(1.0, 11.0)
     >>> float(onset_load(f, np.maximum(f - 6.0, 0.0) * 5 + 0.1 * f))
     6.0
