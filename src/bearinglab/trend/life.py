@@ -132,12 +132,21 @@ class Predictive:
         return np.maximum(t - elapsed, 0.0)
 
 
-def best_estimate(samples) -> float:
-    """The estimate maximising the mean PHM 2012 accuracy over equally likely remaining
-    lives ``samples`` [s] (module docstring)."""
+def best_estimate(samples, weights=None) -> float:
+    """The estimate maximising the mean PHM 2012 accuracy over remaining lives
+    ``samples`` [s], equally likely or under ``weights`` (module docstring).
+
+    Parameters
+    ----------
+    samples : array
+        Remaining lives [s].
+    weights : array, optional
+        Their weights (equal when not given).
+    """
     r = np.maximum(np.asarray(samples, dtype=float), MIN_TIME)
+    w = np.ones(r.size) if weights is None else np.asarray(weights, dtype=float)
     candidates = np.geomspace(r.min(), r.max(), 160) if r.max() > r.min() else r[:1]
-    mean = phm2012_accuracy(r[None, :], candidates[:, None]).mean(axis=1)
+    mean = phm2012_accuracy(r[None, :], candidates[:, None]) @ w / w.sum()
     return float(candidates[int(np.argmax(mean))])
 
 
@@ -176,6 +185,12 @@ SURVIVAL_METHOD = (
 LEAD_METHOD = (
     "the times from the alarm to the failure learned, lognormal-t predictive, given the time "
     "since the alarm; the estimate maximises the expected PHM 2012 score"
+)
+SIMILARITY_METHOD = (
+    "the remaining lives of the learning runs at the moments their health indicator (the "
+    "largest deviation of every indicator and channel above its baseline) matched this "
+    "series' last 20 min, weighted by the match; the estimate maximises the expected PHM "
+    "2012 score"
 )
 TREND_METHOD = (
     "the r.m.s. level's rise since the alarm (Theil-Sen, Mann-Kendall p < 0.05) extrapolated "
@@ -216,6 +231,8 @@ def estimate_at(life: dict, times, hi, alarm: int | None, i: int) -> tuple:
     """(estimate, low, high, method, basis) [s] at record ``i`` from the learned ``life``
     parameters (:func:`learn_life`)."""
     now = float(times[i])
+    if life.get("trajectories"):
+        return _similar(life["trajectories"], times, hi, alarm, i)
     if alarm is None or i < alarm:
         p = Predictive(**life["lives"])
         r = p.quantiles(now, QUANTILES)
@@ -232,6 +249,26 @@ def estimate_at(life: dict, times, hi, alarm: int | None, i: int) -> tuple:
     r = p.quantiles(since, QUANTILES)
     lo, hi_ = p.quantiles(since, INTERVAL)
     return best_estimate(r), float(lo), float(hi_), LEAD_METHOD, "degradation"
+
+
+def _similar(trajectories, times, health, alarm, i: int) -> tuple:
+    """:func:`estimate_at` by trajectory similarity (:mod:`.similarity`); ``health`` is
+    its health indicator. Basis: survival before the alarm (the match is to the learned
+    runs' healthy stretches), degradation from it on."""
+    from .similarity import candidates, weighted_quantile
+
+    basis = "survival" if alarm is None or i < alarm else "degradation"
+    found = candidates(trajectories, times, health, i)
+    if found is None:
+        lives = [float(tr["life_s"]) for tr in trajectories]
+        p = Predictive.of(lives)
+        r = p.quantiles(float(times[i]), QUANTILES)
+        lo, hi_ = p.quantiles(float(times[i]), INTERVAL)
+        return best_estimate(r), float(lo), float(hi_), SURVIVAL_METHOD, basis
+    r, w = found
+    lo, hi_ = weighted_quantile(r, w, INTERVAL)
+    est = min(max(best_estimate(r, w), float(lo)), float(hi_))
+    return est, float(lo), float(hi_), SIMILARITY_METHOD, basis
 
 
 def remaining_life(result) -> RemainingLife | None:
@@ -256,7 +293,12 @@ def life_of(learned, times, values, first, stop, window, alarm, history: int = H
     life = {} if learned is None else learned.life
     if not life:
         return None
-    hi = health_index(values, times, first, stop, window)
+    if life.get("trajectories"):
+        from .similarity import health_indicator
+
+        hi = health_indicator(values, _tests(values), first, stop, window)
+    else:
+        hi = health_index(values, times, first, stop, window)
     n = len(times)
     spaced = np.linspace(0, n - 1, max(min(history, n), 1)).round().astype(int)
     picks = np.unique(np.append(spaced, n - 1))
@@ -279,6 +321,14 @@ def life_of(learned, times, values, first, stop, window, alarm, history: int = H
     )
 
 
+def _tests(values) -> tuple:
+    """The (indicator, channel) tests of the indicator ``values`` (all that are given)."""
+    from .indicators import INDICATORS
+
+    channels = np.asarray(values["rms"]).shape[1]
+    return tuple((n, c) for n in INDICATORS if n in values for c in range(channels))
+
+
 def learn_life(learned, runs: dict):
     """``learned`` (a :class:`~.learning.LearnedRuns`) with the remaining-life parameters of
     its ``runs`` (name -> :class:`~.learning.RunSeries`): the lives, the times from each
@@ -288,8 +338,10 @@ def learn_life(learned, runs: dict):
 
     from .rule import evaluate
 
+    from .similarity import health_indicator, trajectory
+
     lives, leads, ends = [], [], []
-    rows = []
+    rows, trajectories = [], []
     for row in learned.runs:
         r = runs[row["run"]]
         warnings: list[str] = []
@@ -311,11 +363,16 @@ def learn_life(learned, runs: dict):
         if alarm_s is not None:
             leads.append(max(life_s - alarm_s, MIN_TIME))
         ends.append(float(hi[-1]))
+        health = health_indicator(
+            r.values, _tests(r.values), r.settle_records, r.baseline_stop, r.persistence
+        )
+        trajectories.append(trajectory(row["run"], r.times, health))
         rows.append({**row, "alarm_s": alarm_s, "end_level": float(hi[-1])})
     life = {
         "learned_from": learned.source,
         "lives": Predictive.of(lives).__dict__,
         "leads": Predictive.of(leads if len(leads) >= 2 else lives).__dict__,
         "end_levels": ends,
+        "trajectories": trajectories,
     }
     return replace(learned, runs=tuple(rows), life=life)
