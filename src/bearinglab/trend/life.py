@@ -51,6 +51,8 @@ TREND_RECORDS = 5
 TREND_MAX_RECORDS = 100
 #: Points of the history of estimates drawn (evenly spaced records, the last one included).
 HISTORY = 60
+#: Cells of the log grid on which many weighted remaining lives are pooled (best_estimate).
+POOLED = 128
 #: Floor of the times learned [s] (an alarm at the last record has a lead of 0 s).
 MIN_TIME = 1.0
 
@@ -66,9 +68,8 @@ def phm2012_accuracy(actual, estimate) -> np.ndarray:
     """
     actual = np.asarray(actual, dtype=float)
     er = 100.0 * (actual - np.asarray(estimate, dtype=float)) / actual
-    late = np.exp(math.log(0.5) * np.maximum(-er, 0.0) / LATE_HALVING)
-    early = np.exp(math.log(0.5) * np.maximum(er, 0.0) / EARLY_HALVING)
-    return np.where(er <= 0, late, early)
+    halvings = np.where(er <= 0, -er / LATE_HALVING, er / EARLY_HALVING)
+    return np.exp(math.log(0.5) * halvings)
 
 
 @lru_cache(maxsize=16)
@@ -145,6 +146,14 @@ def best_estimate(samples, weights=None) -> float:
     """
     r = np.maximum(np.asarray(samples, dtype=float), MIN_TIME)
     w = np.ones(r.size) if weights is None else np.asarray(weights, dtype=float)
+    if r.size > POOLED and r.max() > r.min():
+        # pooled on a log grid (cells 3.6 % wide at a 100x spread), the weighted mean of each cell
+        cell = np.minimum((np.log(r / r.min()) / np.log(r.max() / r.min()) * POOLED), POOLED - 1)
+        cell = cell.astype(int)
+        total = np.bincount(cell, w, POOLED)
+        keep = total > 0
+        r = np.bincount(cell, w * r, POOLED)[keep] / total[keep]
+        w = total[keep]
     candidates = np.geomspace(r.min(), r.max(), 160) if r.max() > r.min() else r[:1]
     mean = phm2012_accuracy(r[None, :], candidates[:, None]) @ w / w.sum()
     return float(candidates[int(np.argmax(mean))])
@@ -337,7 +346,6 @@ def learn_life(learned, runs: dict):
     from dataclasses import replace
 
     from .rule import evaluate
-
     from .similarity import health_indicator, trajectory
 
     lives, leads, ends = [], [], []

@@ -130,28 +130,46 @@ def candidates(trajectories, times, health, i: int, window: float = WINDOW):
     span = min(window, now - float(times[0]))
     offsets = np.linspace(0.0, span, OFFSETS)
     mine = np.interp(now - offsets, times, health)
-    lives, dists, runs = [], [], []
+    found = _stretches(trajectories, span, offsets)
+    if found is None:
+        return None
+    theirs, lives, runs_ = found
+    d = np.sqrt(np.mean((theirs - mine[None, :]) ** 2, axis=1))
+    sigma = max(float(np.quantile(d, SCALE_QUANTILE)), 1e-3)
+    w = np.exp(-0.5 * (d / sigma) ** 2)
+    total = np.bincount(runs_, w)
+    best = np.zeros(total.size)
+    np.maximum.at(best, runs_, w)
+    w = w * np.divide(best, total, out=np.zeros_like(best), where=total > 0)[runs_]
+    if w.sum() <= 0:
+        w = np.ones_like(w)
+    return lives, w
+
+
+_STRETCHES: list = []
+
+
+def _stretches(trajectories, span: float, offsets):
+    """(learned indicators at ``offsets`` before each record tau, stretches x offsets; the
+    remaining lives life - tau; the run of each) over the learned ``trajectories``, or None
+    when none is as long as ``span``; the last few are kept, since a series' history asks
+    for the same ones at every record once it is longer than the window."""
+    for key, value in _STRETCHES:
+        if key[0] is trajectories and key[1] == span:
+            return value
+    blocks, lives, runs = [], [], []
     for k, tr in enumerate(trajectories):
         t = np.asarray(tr["times_s"], dtype=float)
         h = np.asarray(tr["health"], dtype=float)
-        taus = t[t >= t[0] + span]
-        if taus.size == 0 or t.size < 2:
+        taus = t[t >= t[0] + span] if t.size >= 2 else t[:0]
+        if taus.size == 0:
             continue
-        theirs = np.interp(taus[:, None] - offsets[None, :], t, h)
-        dists.append(np.sqrt(np.mean((theirs - mine[None, :]) ** 2, axis=1)))
+        blocks.append(np.interp(taus[:, None] - offsets[None, :], t, h))
         lives.append(float(tr["life_s"]) - taus)
         runs.append(np.full(taus.size, k))
-    if not lives:
-        return None
-    d = np.concatenate(dists)
-    sigma = max(float(np.quantile(d, SCALE_QUANTILE)), 1e-3)
-    w = np.exp(-0.5 * (d / sigma) ** 2)
-    runs_ = np.concatenate(runs)
-    for k in np.unique(runs_):
-        mask = runs_ == k
-        total = w[mask].sum()
-        if total > 0:
-            w[mask] *= w[mask].max() / total
-    if w.sum() <= 0:
-        w = np.ones_like(w)
-    return np.concatenate(lives), w
+    value = (
+        (np.concatenate(blocks), np.concatenate(lives), np.concatenate(runs)) if blocks else None
+    )
+    _STRETCHES.insert(0, ((trajectories, span), value))
+    del _STRETCHES[4:]
+    return value
