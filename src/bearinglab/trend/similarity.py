@@ -15,9 +15,10 @@ is of it since the baseline) is compared with every stretch of the same length o
 learned run, ending at each of its records tau: the distance is the r.m.s. difference at
 :data:`OFFSETS` points evenly spaced over the window. Each stretch gives a candidate
 remaining life, the run's life minus tau, weighted by exp(-d^2 / 2 sigma^2), sigma the
-10 % quantile of all the distances (the closest matches set the scale); each run's
-weights are scaled to sum to its best weight, so that a long run with many similar
-stretches counts once ([Wang2008] weighs each run by its best match). A series whose
+median over the runs of each run's nearest distance (how close a good match is between
+these runs; at least :data:`SCALE_FLOOR`); each run's weights are scaled to sum to its
+best weight, so that a long run with many similar stretches counts once ([Wang2008]
+weighs each run by its best match). A series whose
 indicator is flat matches the learned runs' healthy stretches, and the candidates spread
 over their remaining lives: the interval is as wide as the lives learned. A rising
 indicator matches the stretches before their failures.
@@ -36,8 +37,8 @@ import numpy as np
 WINDOW = 1200.0
 #: Points compared over the window (100 s apart at the default window).
 OFFSETS = 13
-#: Quantile of the distances that sets the similarity's scale sigma.
-SCALE_QUANTILE = 0.1
+#: Floor of the similarity's scale sigma [health-indicator units].
+SCALE_FLOOR = 0.02
 #: Most records kept of a learned run's indicator (evenly spaced, its last one included).
 MAX_RECORDS = 400
 
@@ -135,7 +136,9 @@ def candidates(trajectories, times, health, i: int, window: float = WINDOW):
         return None
     theirs, lives, runs_ = found
     d = np.sqrt(np.mean((theirs - mine[None, :]) ** 2, axis=1))
-    sigma = max(float(np.quantile(d, SCALE_QUANTILE)), 1e-3)
+    nearest = np.full(int(runs_.max()) + 1, np.inf)
+    np.minimum.at(nearest, runs_, d)
+    sigma = max(float(np.median(nearest[np.isfinite(nearest)])), SCALE_FLOOR)
     w = np.exp(-0.5 * (d / sigma) ** 2)
     total = np.bincount(runs_, w)
     best = np.zeros(total.size)
