@@ -1,6 +1,16 @@
 """The remaining useful life at the latest record of a series, with an 80 % interval (layer
 3, NumPy only).
 
+**Method.** With what was learned from runs to failure holding their health indicators
+(``life["trajectories"]``, as :func:`learn_life` writes since 2026-11-28), the estimate
+comes from trajectory similarity (:mod:`.similarity`, [Wang2008]): the remaining lives of
+the learned runs at the stretches whose health indicator matches the series' last 20
+minutes, weighted by the match; its basis is survival before the alarm and degradation
+from it on, and before the series has a level (inside its baseline) the lives' law below
+given survival to its age. Measured leave one run out on the six PRONOSTIA learning runs,
+it does better than what follows, and no better than a constant (docs/capabilities/
+trend.md). What follows is the method used with a learned file without trajectories.
+
 **Two bases.** Before any alarm the series shows no degradation, and the estimate rests on
 *survival*: the lives of the runs to failure learned (:mod:`.learning`), given that the
 bearing has survived to the series' age (its time since the first record, which is taken
