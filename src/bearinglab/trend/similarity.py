@@ -26,7 +26,7 @@ indicator matches the stretches before their failures.
 **Estimate.** The weighted candidates' 10 % and 90 % quantiles are the 80 % interval; the
 estimate maximises their expected PHM 2012 score (:func:`.life.best_estimate`: a late
 estimate costs four times more per per cent than an early one, so a wide law gives an
-early estimate).
+early estimate), held inside the interval (:func:`.life.estimate_at`).
 """
 
 from __future__ import annotations
