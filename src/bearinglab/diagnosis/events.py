@@ -92,7 +92,7 @@ def event_envelope(x, order: int) -> np.ndarray:
     order : int
         p, the predictor's length [samples].
     """
-    from ..signal.spectra import analytic
+    from ..signal.spectra import analytic_power
 
     x = np.asarray(x, dtype=float)
     x = x - x.mean()
@@ -106,7 +106,7 @@ def event_envelope(x, order: int) -> np.ndarray:
         return np.zeros(n)
     error = np.convolve(x, levinson(r, order))[:n]
     error[:order] = 0.0  # the filter's start, predicted from samples before the record
-    return np.abs(analytic(error)) ** 2
+    return analytic_power(error)
 
 
 def moving_average(x, length: int) -> np.ndarray:
