@@ -194,6 +194,37 @@ def align_passages(envelope, times, margin: int, reach: int, iterations: int = 2
     iterations : int
         Rounds of alignment.
     """
+    from ..signal.spectra import fast_length
+
+    e = np.asarray(envelope, dtype=float)
+    t = np.asarray(times, dtype=int).copy()
+    length = 2 * margin + 1
+    # the correlation of each passage with the template at shifts -reach .. +reach is
+    # the whole envelope's correlation with the template, read at each passage: one
+    # transform of the envelope (zero-padded past its end: no wrap) serves every round
+    m = fast_length(e.size + length)
+    spectrum = np.fft.rfft(e, m)
+    shifts_read = np.arange(2 * reach + 1)
+    for _ in range(iterations):
+        template = e[t[:, None] + np.arange(-margin, margin + 1)].mean(axis=0)
+        template = template - template.mean()
+        c = np.fft.irfft(spectrum * np.conj(np.fft.rfft(template, m)), m)
+        shifts = np.argmax(c[(t - margin - reach)[:, None] + shifts_read], axis=1) - reach
+        if not np.any(shifts):
+            break
+        t = t + shifts
+    return t
+
+
+def align_passages_rows(envelope, times, margin: int, reach: int, iterations: int = 2):
+    """:func:`align_passages` passage by passage (each row of samples transformed on its
+    own): the plain form a test checks the whole-record correlation against.
+
+    Parameters
+    ----------
+    envelope, times, margin, reach, iterations :
+        As for :func:`align_passages`.
+    """
     e = np.asarray(envelope, dtype=float)
     t = np.asarray(times, dtype=int).copy()
     span = np.arange(-margin - reach, margin + reach + 1)
