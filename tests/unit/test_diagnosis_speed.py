@@ -29,3 +29,31 @@ def test_bins_at_their_running_median_tie_exactly_whatever_the_round_off():
     assert np.unique(z[own]).size == 1
     wobble = p * (1.0 + 4e-16 * rng.standard_normal(p.size))
     assert np.array_equal(_ranks(normalised(wobble, nu)), _ranks(z))
+
+
+def test_the_whole_record_alignment_is_the_passage_by_passage_one():
+    from bearinglab.diagnosis.events import align_passages, align_passages_rows
+
+    rng = np.random.default_rng(5)
+    n, period = 60_000, 173.3
+    e = rng.exponential(1.0, n)
+    grid = np.arange(300, n - 300, period)
+    starts = (grid + rng.integers(-4, 5, grid.size)).astype(int)
+    for i in starts:
+        e[i : i + 6] += 40.0 * np.exp(-np.arange(6) / 2.0)
+        e[i + 20 : i + 24] += 15.0
+    times = starts + rng.integers(-6, 7, starts.size)
+    for margin, reach in ((40, 8), (67, 12)):
+        want = align_passages_rows(e, times, margin, reach)
+        assert np.array_equal(align_passages(e, times, margin, reach), want)
+        assert not np.array_equal(want, times)  # the test moves passages
+
+
+def test_median_is_numpys():
+    from bearinglab.diagnosis.events import median
+
+    rng = np.random.default_rng(7)
+    for n in (1, 2, 3, 10, 11, 120_000, 120_001):
+        x = rng.exponential(1.0, n)
+        assert median(x) == float(np.median(x))
+    assert median([1.0, 1.0, 2.0, 2.0]) == 1.5

@@ -72,6 +72,7 @@ from .events import (
     align_passages,
     event_envelope,
     find_pair,
+    median,
     moving_average,
     refine_peak,
     ring_down,
@@ -348,7 +349,7 @@ def size_defect(
     order = max(4, int(round(PREDICTOR_LENGTH * fs)))
     e = event_envelope(x, order)
     es = moving_average(e, k)
-    floor = float(np.median(es))
+    floor = median(es)
     reach = max(k, int(round(TRACK_SMOOTHING * fs)))
     times, clear = track_passages(moving_average(e, reach), period)
     margin = 2 * longest + k

@@ -31,6 +31,7 @@ docs/capabilities/diagnosis.md says what was measured.
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -329,6 +330,7 @@ def tail_tables(
     return tables
 
 
+@functools.lru_cache(maxsize=64)
 def chi2_excess_scale(nu: float) -> float:
     """The exponential scale of the exceedances of the largest of three chi2_nu / nu bins
     over its upper TAIL_Q quantile [-]: their mean excess, the spread a Welch estimate

@@ -71,8 +71,7 @@ def cepstral_prewhitening(x) -> np.ndarray:
     spectrum = np.fft.rfft(x - x.mean(), n=nfft)
     magnitude = np.abs(spectrum)
     live = magnitude > 1e-12 * max(float(magnitude.max()), 1e-300)
-    whitened = np.zeros_like(spectrum)
-    whitened[live] = spectrum[live] / magnitude[live]
+    whitened = np.divide(spectrum, magnitude, out=np.zeros_like(spectrum), where=live)
     return np.fft.irfft(whitened, n=nfft)[:n]
 
 
