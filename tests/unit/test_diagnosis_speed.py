@@ -57,3 +57,16 @@ def test_median_is_numpys():
         x = rng.exponential(1.0, n)
         assert median(x) == float(np.median(x))
     assert median([1.0, 1.0, 2.0, 2.0]) == 1.5
+
+
+def test_moving_average_is_the_plain_centred_mean():
+    from bearinglab.diagnosis.events import moving_average
+
+    rng = np.random.default_rng(11)
+    for n, length in ((1, 1), (5, 2), (5, 7), (100, 10), (101, 13), (2000, 12), (7, 7)):
+        x = rng.exponential(1.0, n)
+        c = np.concatenate(([0.0], np.cumsum(x)))
+        i = np.arange(n)
+        lo = np.clip(i - length // 2, 0, n)
+        hi = np.clip(i - length // 2 + length, 0, n)
+        assert np.array_equal(moving_average(x, length), (c[hi] - c[lo]) / (hi - lo))

@@ -144,11 +144,18 @@ def moving_average(x, length: int) -> np.ndarray:
     x = np.asarray(x, dtype=float)
     if length <= 1:
         return x.copy()
+    n, half = x.size, length // 2
     c = np.concatenate(([0.0], np.cumsum(x)))
-    i = np.arange(x.size)
-    lo = np.clip(i - length // 2, 0, x.size)
-    hi = np.clip(i - length // 2 + length, 0, x.size)
-    return (c[hi] - c[lo]) / (hi - lo)
+    out = np.empty(n)
+    # the full windows by slices, the ends (windows cut by the record) by index
+    first, last = half, n - length + half  # i with 0 <= i - half and i - half + length <= n
+    if first <= last:
+        out[first : last + 1] = (c[length:] - c[: n - length + 1]) / length
+    ends = np.r_[0 : min(first, n), max(last + 1, first) : n]
+    lo = np.clip(ends - half, 0, n)
+    hi = np.clip(ends - half + length, 0, n)
+    out[ends] = (c[hi] - c[lo]) / (hi - lo)
+    return out
 
 
 def track_passages(envelope, period: float, tolerance: float = ALIGN_TOLERANCE):
