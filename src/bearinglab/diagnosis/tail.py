@@ -238,7 +238,19 @@ def _interval_sums(prefix: np.ndarray, start: np.ndarray, end: np.ndarray) -> np
 
 
 def tail_tables(
-    z, zmax, count, bottom_bin, near_bin, top_bin, values, index, uses, hills, beyond=None, nu=None
+    z,
+    zmax,
+    count,
+    bottom_bin,
+    near_bin,
+    top_bin,
+    values,
+    index,
+    uses,
+    hills,
+    beyond=None,
+    nu=None,
+    shared=None,
 ) -> dict:
     """ln p of every candidate's lines (``uses``: nested template -> rows x lines bool;
     the same table for each), each line read against the positions that are not the
@@ -274,24 +286,35 @@ def tail_tables(
     POOL_ALPHA, on the declustered counts): a raw envelope spectrum's low cyclic
     frequencies hold more clutter than its high ones, and the cage's lines lie in the
     lowest tenth of the search range, where every envelope spectrum is busiest.
+
+    ``shared`` (optional): a store kept by the caller across the families read on one
+    spectrum with one set of valid bins (:func:`.series.series_test`), for what does not
+    depend on the family; the results are the same without it.
     """
     import scipy.special
 
+    shared = {} if shared is None else shared
     stop = int(min(top_bin, zmax.size - 1))
     start = int(min(max(math.floor(bottom_bin), 1), stop))
     near = int(min(max(near_bin, start), stop))
-    ok = np.zeros(zmax.size, bool)
-    ok[start : stop + 1] = count[start : stop + 1] > 0
-    if ok.sum() < 20:
+    key = ("reference", zmax.size, start, stop)
+    if key not in shared:
+        ok = np.zeros(zmax.size, bool)
+        ok[start : stop + 1] = count[start : stop + 1] > 0
+        shared[key] = (ok, None)
+        if ok.sum() >= 20:
+            # the pooling test's counts: exceedances of the whole reference's threshold
+            ref = np.sort(zmax[ok])
+            u = ref[int((1 - TAIL_Q) * ref.size)]
+            over = ok & (zmax > u)
+            excess = np.where(over, zmax - u, 0.0)
+            shared[key] = (ok, (_cluster(zmax, ok, ref), over, excess))
+    ok, pooled = shared[key]
+    if pooled is None:
         return {d: np.zeros(values.shape) for d in uses}
+    cluster, over, excess = pooled
     below = np.zeros(zmax.size, bool)
     below[: near + 1] = True
-    # the pooling test's counts: exceedances of the whole reference's threshold
-    ref = np.sort(zmax[ok])
-    u = ref[int((1 - TAIL_Q) * ref.size)]
-    cluster = _cluster(zmax, ok, ref)
-    over = ok & (zmax > u)
-    excess = np.where(over, zmax - u, 0.0)
     columns = [over, excess, ok]
     basis = np.stack([c * below for c in columns] + [c * ~below for c in columns]).T
     prefix = np.concatenate([np.zeros((1, 6)), np.cumsum(basis.astype(float), axis=0)])
@@ -323,8 +346,10 @@ def tail_tables(
     lp = np.zeros(values.shape)
     for name, rows in (("near", alone), ("all", ~alone)):
         if rows.any():
-            fit = _region(z, zmax, regions[name], nu)
-            lp[rows] = _region_logp(zmax, fit, values[rows], lo[rows], hi[rows])
+            region_key = ("region", key, near if name == "near" else None, nu)
+            if region_key not in shared:
+                shared[region_key] = _region(z, zmax, regions[name], nu)
+            lp[rows] = _region_logp(zmax, shared[region_key], values[rows], lo[rows], hi[rows])
     table = np.where(use, lp, 0.0)
     tables = {d: table for d in uses}
     return tables
