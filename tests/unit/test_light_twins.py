@@ -102,3 +102,16 @@ def test_fast_lengths_are_scipys():
     for n in [*range(1, 3000), 480_001, 1_000_003, 2**20 + 1]:
         assert fast_length(n) == scipy.fft.next_fast_len(n, real=True)
         assert fast_length_below(n) == scipy.fft.prev_fast_len(n, real=True)
+
+
+@pytest.mark.parametrize("n", [1000, 120_000])
+def test_analytic_power_from_a_spectrum_at_hand(n):
+    # the whitened record's spectrum, already known, spares the envelope a transform
+    from bearinglab.signal.preprocess import cepstral_prewhitening, prewhitened
+
+    x = np.random.default_rng(n).normal(size=n) + 0.5
+    y, spectrum = prewhitened(x)
+    assert np.array_equal(y, cepstral_prewhitening(x))
+    ref = analytic_power(y - y.mean())
+    assert np.allclose(analytic_power(y - y.mean(), spectrum), ref, rtol=1e-9, atol=1e-12)
+    assert prewhitened(x[:-1])[1] is None  # 119 999 / 999 samples: not a fast length

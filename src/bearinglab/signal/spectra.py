@@ -344,7 +344,7 @@ def analytic(x) -> np.ndarray:
     return np.fft.ifft(spectrum)[:n]
 
 
-def analytic_power(x) -> np.ndarray:
+def analytic_power(x, spectrum=None) -> np.ndarray:
     """Squared magnitude |x + j H[x]|^2 of the analytic signal (:func:`analytic`), as
     x^2 + H[x]^2 with the Hilbert transform H[x] from one real inverse FFT.
 
@@ -358,11 +358,18 @@ def analytic_power(x) -> np.ndarray:
     ----------
     x : array_like
         Samples (1-D), any unit.
+    spectrum : numpy.ndarray, optional
+        ``numpy.fft.rfft(x)`` already at hand, when the record's length is a fast one
+        (:func:`fast_length`), or the spectrum of a record that differs from ``x`` only
+        by a constant (its 0 Hz bin is not used); not changed.
     """
     x = np.asarray(x, dtype=float)
     n = x.size
     m = fast_length(n)
-    half = np.fft.rfft(x, m)
+    if spectrum is not None and m == n and len(spectrum) == n // 2 + 1:
+        half = np.array(spectrum, dtype=complex)
+    else:
+        half = np.fft.rfft(x, m)
     half[0] = 0.0
     if m % 2 == 0:
         half[-1] = 0.0
