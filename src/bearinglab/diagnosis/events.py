@@ -183,17 +183,19 @@ def track_passages(envelope, period: float, tolerance: float = ALIGN_TOLERANCE):
     level = TRACK_LEVEL * median(e)
     anchor = int(np.argmax(e[: int(min(3 * period, e.size))]))
     half = max(tolerance * period, 1.0)
-    found = {anchor: bool(e[anchor] >= level)}
+    clear = e >= level
+    found = {anchor: bool(clear[anchor])}
+    size = e.size
     for step in (period, -period):
         last, gap = float(anchor), 0
-        while True:
+        while True:  # a loop of a thousand steps: each as few NumPy calls as it can be
             centre = last + (gap + 1) * step
             lo, hi = int(round(centre - half)), int(round(centre + half)) + 1
-            if hi > e.size or lo < 0:
+            if hi > size or lo < 0:
                 break
-            i = lo + int(np.argmax(e[lo:hi]))
-            found[i] = bool(e[i] >= level)
-            if found[i]:
+            i = lo + int(e[lo:hi].argmax())
+            found[i] = is_clear = bool(clear[i])
+            if is_clear:
                 last, gap = float(i), 0
             else:
                 gap += 1
