@@ -82,6 +82,7 @@ from .spall import (
     ASSUMED_LOAD,
     LOAD_RANGE,
     assumed_loads,
+    ball_series_constant,
     bridged_width,
     contact_speed,
     raceway_radius,
@@ -419,9 +420,10 @@ def size_defect(
     spacings = np.array(spacings)
     spacing = float(np.median(spacings))
     q_low, q_high = (float(q) for q in np.quantile(spacings, QUANTILES))
-    bridged = bridged_width(bearing, race, load)
-    low = v * max(q_low, 0.0) + bridged_width(bearing, race, light)
-    high = v * q_high + bridged_width(bearing, race, heavy)
+    k_ball = ball_series_constant(bearing)  # once for the three loads
+    bridged = bridged_width(bearing, race, load, k_ball)
+    low = v * max(q_low, 0.0) + bridged_width(bearing, race, light, k_ball)
+    high = v * q_high + bridged_width(bearing, race, heavy, k_ball)
     width = v * spacing + bridged
     load_words = (
         f"under {load:.4g} N"
