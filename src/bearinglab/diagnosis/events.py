@@ -224,21 +224,29 @@ def align_passages(envelope, times, margin: int, reach: int, iterations: int = 2
     iterations : int
         Rounds of alignment.
     """
-    from ..signal.spectra import fast_length
-
     e = np.asarray(envelope, dtype=float)
     t = np.asarray(times, dtype=int).copy()
     length = 2 * margin + 1
     # the correlation of each passage with the template at shifts -reach .. +reach is
-    # the whole envelope's correlation with the template, read at each passage: one
-    # transform of the envelope (zero-padded past its end: no wrap) serves every round
-    m = fast_length(e.size + length)
-    spectrum = np.fft.rfft(e, m)
+    # the whole envelope's correlation with the template, read at each passage; it is
+    # computed by overlap-save (blocks of `block` samples, `hop` outputs each, no wrap),
+    # the blocks transformed once for every round and the template at the blocks' length
+    block = 1024
+    while block < 4 * length:
+        block *= 2
+    hop = block - length + 1
+    count = max(-(-(e.size - length + 1) // hop), 1)
+    padded = np.zeros((count - 1) * hop + block)
+    padded[: e.size] = e
+    blocks = np.fft.rfft(
+        np.lib.stride_tricks.sliding_window_view(padded, block)[::hop][:count], axis=1
+    )
     shifts_read = np.arange(2 * reach + 1)
     for _ in range(iterations):
         template = e[t[:, None] + np.arange(-margin, margin + 1)].mean(axis=0)
         template = template - template.mean()
-        c = np.fft.irfft(spectrum * np.conj(np.fft.rfft(template, m)), m)
+        c = np.fft.irfft(blocks * np.conj(np.fft.rfft(template, block)), block, axis=1)
+        c = c[:, :hop].ravel()  # c[p] = sum_j e[p + j] template[j]
         shifts = np.argmax(c[(t - margin - reach)[:, None] + shifts_read], axis=1) - reach
         if not np.any(shifts):
             break
