@@ -58,6 +58,27 @@ def best(fn, repeat=5):
     return min(times)
 
 
+def steady_allocator() -> bool:
+    """Keep freed memory in the process (glibc's mallopt: no mmap below 256 MB, no trim),
+    so that a large array is not page-faulted afresh at every call. Under the default
+    allocator the plain SciPy reference's own time depends on what ran before it in the
+    process (3.8-6.5 ms for record 105: its 1.9 MB complex arrays come page-faulted from
+    the system, or recycled when an earlier call freed as large a block); the ratios are
+    also given with this set, where both sides compute without those page faults."""
+    import ctypes
+    import ctypes.util
+
+    name = ctypes.util.find_library("c")
+    if not name:
+        return False
+    try:
+        libc = ctypes.CDLL(name)
+        # M_TRIM_THRESHOLD -1, M_MMAP_THRESHOLD -3 (malloc.h)
+        return bool(libc.mallopt(-1, 1 << 28)) and bool(libc.mallopt(-3, 1 << 28))
+    except (OSError, AttributeError):
+        return False
+
+
 def main():
     x, name = record()
     kin = defect_frequencies(bearing_from_designation("6205-2RS")[0], 1797 * math.pi / 30)
@@ -81,6 +102,15 @@ def main():
         print(
             f"analyze_signal(methods={methods!r}): {1e3 * t:.0f} ms, x{t / ref:.1f}; "
             f"with its defect_sizes {1e3 * sized:.0f} ms, x{sized / ref:.1f}"
+        )
+    if steady_allocator():
+        ref = best(plain)
+        t = best(lambda: analyze_signal(x, FS, kin).defect_sizes)
+        bare = best(lambda: analyze_signal(x, FS, kin))
+        print(
+            f"without the allocator's page faults (steady_allocator): plain {1e3 * ref:.1f} ms; "
+            f"analyze_signal() and its defect_sizes {1e3 * t:.0f} ms, x{t / ref:.1f}; without "
+            f"the sizing {1e3 * bare:.0f} ms, x{bare / ref:.1f}"
         )
     odd = np.random.default_rng(1).standard_normal(480_001)
     slow = best(lambda: scipy.signal.hilbert(odd), 3)
