@@ -233,8 +233,11 @@ def _interval_sums(prefix: np.ndarray, start: np.ndarray, end: np.ndarray) -> np
     columns."""
     empty = end < start
     s = np.where(empty, 0, start)
-    e = np.where(empty, -1, end)
-    return (prefix[e + 1] - prefix[s]).sum(axis=1)
+    e = np.where(empty, -1, end) + 1
+    # column by column: a gather of single values and a sum along contiguous rows cost a
+    # quarter of the gather of whole rows of the table and its strided sum
+    columns = np.ascontiguousarray(prefix.T)
+    return np.stack([(c[e] - c[s]).sum(axis=1) for c in columns], axis=-1)
 
 
 def tail_tables(
