@@ -18,7 +18,8 @@ def test_bins_at_their_running_median_tie_exactly_whatever_the_round_off():
     # a bin that is its own window's running median reads exactly chi2_median / nu: such
     # bins tie, and a rank among them does not move when the power moves by round-off
     # (before: p / (median x nu / chi2_median) differed in the last bit bin by bin, and a
-    # line reading one of them moved its p-value by up to 14 % with the FFT's round-off)
+    # line reading one of them moved its family's significance by 4.5 % when the envelope's
+    # FFT path changed at round-off: MFPT OuterRaceFault_vload_1, raw, ball)
     rng = np.random.default_rng(3)
     nu = 8.0
     p = rng.chisquare(nu, 4000) / nu
