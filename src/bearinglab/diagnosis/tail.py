@@ -437,7 +437,7 @@ def _region_logp(zmax, fit, values, lo, hi) -> np.ndarray:
         top = np.where(free_peak, heights[None, :], u + cut).max(axis=1)
         mean = np.where(free_peak, heights[None, :] - u - cut, 0.0).sum(axis=1)
         mean = np.maximum(mean / np.maximum(kc, 1.0), 1e-12)
-        reach = _free_count(zmax, fit["mask"], values, high, lo, hi)
+        reach = _free_count(zmax, fit["mask"], values, high, lo, hi, fit["ref"])
         k_c = np.maximum(kc, 1.0)[:, None]
         beyond = np.maximum(values - top[:, None], 0.0)
         fall = np.exp(-k_c * np.log1p(beyond / (k_c * mean[:, None])))
@@ -448,15 +448,16 @@ def _region_logp(zmax, fit, values, lo, hi) -> np.ndarray:
     return np.where(values > u, np.minimum(np.log(np.maximum(law, 1e-300)), 0.0), rank)
 
 
-def _free_count(zmax, region, values, which, lo, hi) -> np.ndarray:
+def _free_count(zmax, region, values, which, lo, hi, ref=None) -> np.ndarray:
     """For the lines ``which`` (rows x lines), the positions of ``region`` that are not the
-    row's own (merged intervals ``lo``..``hi``) and read at least the line's value."""
+    row's own (merged intervals ``lo``..``hi``) and read at least the line's value
+    (``ref``: the region's readings sorted, when at hand)."""
     out = np.zeros(values.shape)
     r, j = np.nonzero(which)
     if r.size == 0:
         return out
     v = values[r, j]
-    ref = np.sort(zmax[region])
+    ref = np.sort(zmax[region]) if ref is None else ref
     total = ref.size - np.searchsorted(ref, v, side="left")
     # the row's own positions in the region, and how many of them reach each value
     rows, back = np.unique(r, return_inverse=True)
