@@ -3,7 +3,11 @@
 A 10 s record at 12 kHz (the CWRU drive-end record 105 when ../shared/data/real is there,
 otherwise synthetic impacts in noise): ``analyze_signal`` with each method and with the
 default, against ``np.abs(scipy.signal.hilbert(x))`` and ``np.fft.rfft`` of the same record
-(what a user would write by hand), in one run, best of five calls each. Also the Hilbert
+(what a user would write by hand), in one run, best of five calls each. The default is
+timed as ``bearinglab analyze`` runs it: ``analyze_signal`` and then its ``defect_sizes``
+(the width of a race defect found, issue 29, read lazily and printed by the command), and
+also without the sizing, as the methods are (before 2026-11-28 the default's line left
+the sizing out). Also the Hilbert
 transform at an awkward length (480 001 samples) with and without the fast-length padding
 of ``bearinglab.signal.spectra.analytic`` (issue 12 item 9).
 
@@ -54,6 +58,27 @@ def best(fn, repeat=5):
     return min(times)
 
 
+def steady_allocator() -> bool:
+    """Keep freed memory in the process (glibc's mallopt: no mmap below 256 MB, no trim),
+    so that a large array is not page-faulted afresh at every call. Under the default
+    allocator the plain SciPy reference's own time depends on what ran before it in the
+    process (3.8-6.5 ms for record 105: its 1.9 MB complex arrays come page-faulted from
+    the system, or recycled when an earlier call freed as large a block); the ratios are
+    also given with this set, where both sides compute without those page faults."""
+    import ctypes
+    import ctypes.util
+
+    name = ctypes.util.find_library("c")
+    if not name:
+        return False
+    try:
+        libc = ctypes.CDLL(name)
+        # M_TRIM_THRESHOLD -1, M_MMAP_THRESHOLD -3 (malloc.h)
+        return bool(libc.mallopt(-1, 1 << 28)) and bool(libc.mallopt(-3, 1 << 28))
+    except (OSError, AttributeError):
+        return False
+
+
 def main():
     x, name = record()
     kin = defect_frequencies(bearing_from_designation("6205-2RS")[0], 1797 * math.pi / 30)
@@ -62,13 +87,31 @@ def main():
         env = np.abs(scipy.signal.hilbert(x - x.mean()))
         return np.abs(np.fft.rfft(env - env.mean()))
 
-    analyze_signal(x, FS, kin)  # warm-up (imports)
+    assert analyze_signal(x, FS, kin).defect_sizes is not None  # warm-up (imports)
     ref = best(plain)
     print(f"record {name}: {x.size} samples at {FS:g} Hz")
     print(f"plain SciPy envelope + FFT: {1e3 * ref:.1f} ms")
+    t = best(lambda: analyze_signal(x, FS, kin).defect_sizes)
+    print(
+        f"analyze_signal() and its defect_sizes (as `bearinglab analyze`): {1e3 * t:.0f} ms, "
+        f"x{t / ref:.1f}"
+    )
     for methods in ("raw", "cpw", "drs-sk", "all", "ies", "cpw,ies"):
         t = best(lambda m=methods: analyze_signal(x, FS, kin, methods=m))
-        print(f"analyze_signal(methods={methods!r}): {1e3 * t:.0f} ms, x{t / ref:.1f}")
+        sized = best(lambda m=methods: analyze_signal(x, FS, kin, methods=m).defect_sizes)
+        print(
+            f"analyze_signal(methods={methods!r}): {1e3 * t:.0f} ms, x{t / ref:.1f}; "
+            f"with its defect_sizes {1e3 * sized:.0f} ms, x{sized / ref:.1f}"
+        )
+    if steady_allocator():
+        ref = best(plain)
+        t = best(lambda: analyze_signal(x, FS, kin).defect_sizes)
+        bare = best(lambda: analyze_signal(x, FS, kin))
+        print(
+            f"without the allocator's page faults (steady_allocator): plain {1e3 * ref:.1f} ms; "
+            f"analyze_signal() and its defect_sizes {1e3 * t:.0f} ms, x{t / ref:.1f}; without "
+            f"the sizing {1e3 * bare:.0f} ms, x{bare / ref:.1f}"
+        )
     odd = np.random.default_rng(1).standard_normal(480_001)
     slow = best(lambda: scipy.signal.hilbert(odd), 3)
     fast = best(lambda: analytic(odd), 3)

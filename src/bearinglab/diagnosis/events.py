@@ -94,7 +94,7 @@ def event_envelope(x, order: int) -> np.ndarray:
     order : int
         p, the predictor's length [samples].
     """
-    from ..signal.spectra import analytic
+    from ..signal.spectra import analytic_power
 
     x = np.asarray(x, dtype=float)
     x = x - x.mean()
@@ -108,7 +108,28 @@ def event_envelope(x, order: int) -> np.ndarray:
         return np.zeros(n)
     error = np.convolve(x, levinson(r, order))[:n]
     error[:order] = 0.0  # the filter's start, predicted from samples before the record
-    return np.abs(analytic(error)) ** 2
+    return analytic_power(error)
+
+
+def median(x) -> float:
+    """``numpy.median`` of a 1-D array, by one partition: numpy partitions an even-length
+    array at both middle positions at once, which costs eight times one (1.1 against
+    0.14 ms for 120 000 samples); the lower middle value is the largest below the upper.
+
+    Parameters
+    ----------
+    x : array_like
+        Values (1-D, at least one, no NaN).
+
+    >>> median([3.0, 1.0, 2.0]), median([4.0, 1.0, 3.0, 2.0])
+    (2.0, 2.5)
+    """
+    v = np.asarray(x, dtype=float)
+    k = v.size // 2
+    part = np.partition(v, k)
+    if v.size % 2:
+        return float(part[k])
+    return float(np.mean(np.array([part[:k].max(), part[k]])))
 
 
 def moving_average(x, length: int) -> np.ndarray:
@@ -125,11 +146,18 @@ def moving_average(x, length: int) -> np.ndarray:
     x = np.asarray(x, dtype=float)
     if length <= 1:
         return x.copy()
+    n, half = x.size, length // 2
     c = np.concatenate(([0.0], np.cumsum(x)))
-    i = np.arange(x.size)
-    lo = np.clip(i - length // 2, 0, x.size)
-    hi = np.clip(i - length // 2 + length, 0, x.size)
-    return (c[hi] - c[lo]) / (hi - lo)
+    out = np.empty(n)
+    # the full windows by slices, the ends (windows cut by the record) by index
+    first, last = half, n - length + half  # i with 0 <= i - half and i - half + length <= n
+    if first <= last:
+        out[first : last + 1] = (c[length:] - c[: n - length + 1]) / length
+    ends = np.r_[0 : min(first, n), max(last + 1, first) : n]
+    lo = np.clip(ends - half, 0, n)
+    hi = np.clip(ends - half + length, 0, n)
+    out[ends] = (c[hi] - c[lo]) / (hi - lo)
+    return out
 
 
 def track_passages(envelope, period: float, tolerance: float = ALIGN_TOLERANCE):
@@ -154,20 +182,22 @@ def track_passages(envelope, period: float, tolerance: float = ALIGN_TOLERANCE):
     e = np.asarray(envelope, dtype=float)
     if e.size < period:
         return np.zeros(0, dtype=int), np.zeros(0, dtype=bool)
-    level = TRACK_LEVEL * float(np.median(e))
+    level = TRACK_LEVEL * median(e)
     anchor = int(np.argmax(e[: int(min(3 * period, e.size))]))
     half = max(tolerance * period, 1.0)
-    found = {anchor: bool(e[anchor] >= level)}
+    clear = e >= level
+    found = {anchor: bool(clear[anchor])}
+    size = e.size
     for step in (period, -period):
         last, gap = float(anchor), 0
-        while True:
+        while True:  # a loop of a thousand steps: each as few NumPy calls as it can be
             centre = last + (gap + 1) * step
             lo, hi = int(round(centre - half)), int(round(centre + half)) + 1
-            if hi > e.size or lo < 0:
+            if hi > size or lo < 0:
                 break
-            i = lo + int(np.argmax(e[lo:hi]))
-            found[i] = bool(e[i] >= level)
-            if found[i]:
+            i = lo + int(e[lo:hi].argmax())
+            found[i] = is_clear = bool(clear[i])
+            if is_clear:
                 last, gap = float(i), 0
             else:
                 gap += 1
@@ -195,6 +225,45 @@ def align_passages(envelope, times, margin: int, reach: int, iterations: int = 2
         Largest shift [samples].
     iterations : int
         Rounds of alignment.
+    """
+    e = np.asarray(envelope, dtype=float)
+    t = np.asarray(times, dtype=int).copy()
+    length = 2 * margin + 1
+    # the correlation of each passage with the template at shifts -reach .. +reach is
+    # the whole envelope's correlation with the template, read at each passage; it is
+    # computed by overlap-save (blocks of `block` samples, `hop` outputs each, no wrap),
+    # the blocks transformed once for every round and the template at the blocks' length
+    block = 1024
+    while block < 4 * length:
+        block *= 2
+    hop = block - length + 1
+    count = max(-(-(e.size - length + 1) // hop), 1)
+    padded = np.zeros((count - 1) * hop + block)
+    padded[: e.size] = e
+    blocks = np.fft.rfft(
+        np.lib.stride_tricks.sliding_window_view(padded, block)[::hop][:count], axis=1
+    )
+    shifts_read = np.arange(2 * reach + 1)
+    for _ in range(iterations):
+        template = e[t[:, None] + np.arange(-margin, margin + 1)].mean(axis=0)
+        template = template - template.mean()
+        c = np.fft.irfft(blocks * np.conj(np.fft.rfft(template, block)), block, axis=1)
+        c = c[:, :hop].ravel()  # c[p] = sum_j e[p + j] template[j]
+        shifts = np.argmax(c[(t - margin - reach)[:, None] + shifts_read], axis=1) - reach
+        if not np.any(shifts):
+            break
+        t = t + shifts
+    return t
+
+
+def align_passages_rows(envelope, times, margin: int, reach: int, iterations: int = 2):
+    """:func:`align_passages` passage by passage (each row of samples transformed on its
+    own): the plain form a test checks the whole-record correlation against.
+
+    Parameters
+    ----------
+    envelope, times, margin, reach, iterations :
+        As for :func:`align_passages`.
     """
     e = np.asarray(envelope, dtype=float)
     t = np.asarray(times, dtype=int).copy()

@@ -137,12 +137,23 @@ def segment_length(n: int, sample_rate: float, resolution: float) -> int:
     return fast_length_below(n)
 
 
-def squared_envelope_power(x: np.ndarray, sample_rate: float, resolution: float, band=None):
-    """(frequency [Hz], Welch power of the squared envelope, nu) at ``resolution`` [Hz]."""
-    from ..signal.spectra import envelope, welch_power
+def squared_envelope_power(
+    x: np.ndarray, sample_rate: float, resolution: float, band=None, spectrum=None
+):
+    """(frequency [Hz], Welch power of the squared envelope, nu) at ``resolution`` [Hz];
+    ``spectrum``: the real spectrum of ``x`` at its own (fast) length, when at hand and
+    there is no ``band`` (the envelope is then not transformed again)."""
+    from ..signal.spectra import analytic_power, envelope, welch_power
     from .statistics import welch_dof
 
-    env = envelope(x, sample_rate, band=band, squared=True)
+    if band is None and spectrum is not None:
+        # envelope(x, squared=True) with the record's spectrum already known (the mean
+        # removed first changes its 0 Hz bin only, which the Hilbert transform drops)
+        centred = x - x.mean()
+        env = analytic_power(centred, spectrum)
+        env = env - env.mean()
+    else:
+        env = envelope(x, sample_rate, band=band, squared=True)
     nperseg = segment_length(env.size, sample_rate, resolution)
     noverlap = nperseg // 2
     frequency, power = welch_power(env, sample_rate, nperseg, noverlap)
@@ -244,13 +255,14 @@ def method_spectrum(
     MethodSpectrum
     """
     from ..signal.kurtogram import fast_kurtogram
-    from ..signal.preprocess import cepstral_prewhitening, discrete_random_separation
+    from ..signal.preprocess import discrete_random_separation, prewhitened
 
     kurtogram = None
+    spectrum = None  # the real spectrum of y at its own length, when at hand
     if method == "raw":
         y = x
     elif method in ("cpw", "ies"):
-        y = cepstral_prewhitening(x)
+        y, spectrum = prewhitened(np.asarray(x, dtype=float))
     elif method == "drs-sk":
         y, _ = discrete_random_separation(x, sample_rate)
     else:
@@ -269,5 +281,5 @@ def method_spectrum(
         )
         z = standardised(power, nu)
         return MethodSpectrum(method, frequency, power, nu, band, kurtogram, z)
-    frequency, power, nu = squared_envelope_power(y, sample_rate, resolution, band)
+    frequency, power, nu = squared_envelope_power(y, sample_rate, resolution, band, spectrum)
     return MethodSpectrum(method, frequency, power, nu, band, kurtogram)

@@ -187,6 +187,7 @@ def series_test(
     gate_carriers: bool = False,
     tail: bool = False,
     reference: float | None = None,
+    shared: dict | None = None,
 ) -> SeriesTest:
     """Significance of the harmonic series n f' (n = 1..``harmonics``) with its sidebands
     n f' +- k ``modulation`` and the modulation's lines k ``modulation``
@@ -238,6 +239,11 @@ def series_test(
         ``max_frequency``) are the reference of the tail law, when those above
         ``max_frequency`` are no heavier than those below (:func:`.tail.tail_tables`); default
         ``max_frequency``.
+    shared : dict, optional
+        A store for what does not depend on the family - the three-bin readings, the
+        lines' hills, the reference and its tail's fit - kept by the caller across the
+        families tested on one spectrum with one ``valid`` (it must be new, or empty,
+        whenever ``z`` or ``valid`` change); the results are the same without it.
 
     Returns
     -------
@@ -269,7 +275,11 @@ def series_test(
         spec += [("sideband", 0, k) for k in range(1, orders + 1)]
     n_arr = np.array([r[1] for r in spec], float)
     k_arr = np.array([r[2] for r in spec], float)
-    zmax, count, offset = _window_max(z, valid)
+    shared = {} if shared is None else shared
+    key = ("window", keep)
+    if key not in shared:
+        shared[key] = _window_max(z, valid)
+    zmax, count, offset = shared[key]
     live = count > 0
     index, readable = _read(grid, n_arr, k_arr, modulation, top, resolution, live)
     if not np.any(readable):
@@ -280,7 +290,9 @@ def series_test(
     depths = tuple(range(0, int(orders) + 1)) if (modulation and orders) else (0,)
     uses = {d: readable & (np.abs(k_arr) <= d)[None, :] for d in depths}
     if tail:
-        hills = line_hills(np.where(valid, z, 0.0), offset)
+        if ("hills", keep) not in shared:
+            shared["hills", keep] = line_hills(np.where(valid, z, 0.0), offset)
+        hills = shared["hills", keep]
         # the family's own region: up to its highest line (the cage's lines all lie in
         # the lowest tenth of the search range, where an envelope spectrum is busiest)
         region = min(float(np.max(np.where(readable, index, 0))) + 2 * LINE_BINS, top / resolution)
@@ -300,6 +312,7 @@ def series_test(
             hills,
             own,
             nu,
+            shared,
         )
         found = _tail_scan(tables, uses, index, n_arr, k_arr, gate_orders, gate_carriers)
         log_p, support, harmonic, best, depth = found

@@ -72,6 +72,7 @@ from .events import (
     align_passages,
     event_envelope,
     find_pair,
+    median,
     moving_average,
     refine_peak,
     ring_down,
@@ -81,6 +82,7 @@ from .spall import (
     ASSUMED_LOAD,
     LOAD_RANGE,
     assumed_loads,
+    ball_series_constant,
     bridged_width,
     contact_speed,
     raceway_radius,
@@ -348,7 +350,7 @@ def size_defect(
     order = max(4, int(round(PREDICTOR_LENGTH * fs)))
     e = event_envelope(x, order)
     es = moving_average(e, k)
-    floor = float(np.median(es))
+    floor = median(es)
     reach = max(k, int(round(TRACK_SMOOTHING * fs)))
     times, clear = track_passages(moving_average(e, reach), period)
     margin = 2 * longest + k
@@ -418,9 +420,10 @@ def size_defect(
     spacings = np.array(spacings)
     spacing = float(np.median(spacings))
     q_low, q_high = (float(q) for q in np.quantile(spacings, QUANTILES))
-    bridged = bridged_width(bearing, race, load)
-    low = v * max(q_low, 0.0) + bridged_width(bearing, race, light)
-    high = v * q_high + bridged_width(bearing, race, heavy)
+    k_ball = ball_series_constant(bearing)  # once for the three loads
+    bridged = bridged_width(bearing, race, load, k_ball)
+    low = v * max(q_low, 0.0) + bridged_width(bearing, race, light, k_ball)
+    high = v * q_high + bridged_width(bearing, race, heavy, k_ball)
     width = v * spacing + bridged
     load_words = (
         f"under {load:.4g} N"

@@ -148,7 +148,9 @@ def _ring_approach(k: float, cosines: np.ndarray, load: float, half_clearance: f
     return 0.5 * (lo + hi)
 
 
-def ball_approaches(bearing, radial_load: float) -> tuple[float, float]:
+def ball_approaches(
+    bearing, radial_load: float, constant: float | None = None
+) -> tuple[float, float]:
     """Approaches (delta0, delta1) of the ball on the load line [m]: carrying its load with
     every ball in place, and once it has lost contact over a defect and the others carry
     the whole load (the rings close up by delta1 - delta0).
@@ -165,6 +167,8 @@ def ball_approaches(bearing, radial_load: float) -> tuple[float, float]:
         The bearing.
     radial_load : float
         F_r [N], > 0.
+    constant : float, optional
+        K, when already computed for this bearing (:func:`ball_series_constant`).
 
     Examples
     --------
@@ -173,7 +177,7 @@ def ball_approaches(bearing, radial_load: float) -> tuple[float, float]:
     >>> [round(d * 1e6, 1) for d in ball_approaches(b, 500.0)]
     [9.8, 15.8]
     """
-    k = ball_series_constant(bearing)
+    k = ball_series_constant(bearing) if constant is None else float(constant)
     z = bearing.ball_count
     cosines = np.cos(2.0 * np.pi * np.arange(z) / z)
     half = 0.5 * bearing.diametral_clearance
@@ -182,14 +186,15 @@ def ball_approaches(bearing, radial_load: float) -> tuple[float, float]:
     return u0 - half, u1 - half
 
 
-def bridged_width(bearing, race: str, radial_load: float) -> float:
+def bridged_width(bearing, race: str, radial_load: float, constant: float | None = None) -> float:
     """x0 + x1: what the ball bridges at both edges of a pit on ``race`` under
     ``radial_load`` [N] - the event spacing times the contact speed falls short of the
     defect's width by this much, and a defect shorter than it never lets the ball drop
-    (:func:`bridged_distance` of :func:`ball_approaches`) [m]."""
+    (:func:`bridged_distance` of :func:`ball_approaches`; ``constant``: its K when
+    already computed) [m]."""
     r = 0.5 * bearing.ball_diameter
     radius = raceway_radius(bearing, race)
-    d0, d1 = ball_approaches(bearing, radial_load)
+    d0, d1 = ball_approaches(bearing, radial_load, constant)
     return float(np.sum(bridged_distance(np.array([d0, d1]), r, radius, race)))
 
 

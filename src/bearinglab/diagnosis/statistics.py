@@ -89,7 +89,10 @@ def normalised(power: np.ndarray, nu: float, floor_bins: int = FLOOR_BINS) -> np
     chi2_median = 2.0 * float(scipy.special.gammaincinv(nu / 2.0, 0.5))  # = chi2(nu).median()
     mean = median * nu / chi2_median
     tiny = 1e-300 + 1e-12 * float(np.max(mean)) if mean.size else 1e-300
-    return p / np.maximum(mean, tiny)
+    # divided by the median first: a bin that is its own window's median reads exactly
+    # chi2_median / nu, so that such bins tie exactly whatever the round-off of the FFTs
+    # before (a rank among them must not depend on the last bit of each bin's power)
+    return p / np.maximum(median, tiny * chi2_median / nu) * (chi2_median / nu)
 
 
 def standardised(power: np.ndarray, nu: float, floor_bins: int = FLOOR_BINS) -> np.ndarray:

@@ -31,6 +31,7 @@ docs/capabilities/diagnosis.md says what was measured.
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
@@ -232,12 +233,27 @@ def _interval_sums(prefix: np.ndarray, start: np.ndarray, end: np.ndarray) -> np
     columns."""
     empty = end < start
     s = np.where(empty, 0, start)
-    e = np.where(empty, -1, end)
-    return (prefix[e + 1] - prefix[s]).sum(axis=1)
+    e = np.where(empty, -1, end) + 1
+    # column by column: a gather of single values and a sum along contiguous rows cost a
+    # quarter of the gather of whole rows of the table and its strided sum
+    columns = np.ascontiguousarray(prefix.T)
+    return np.stack([(c[e] - c[s]).sum(axis=1) for c in columns], axis=-1)
 
 
 def tail_tables(
-    z, zmax, count, bottom_bin, near_bin, top_bin, values, index, uses, hills, beyond=None, nu=None
+    z,
+    zmax,
+    count,
+    bottom_bin,
+    near_bin,
+    top_bin,
+    values,
+    index,
+    uses,
+    hills,
+    beyond=None,
+    nu=None,
+    shared=None,
 ) -> dict:
     """ln p of every candidate's lines (``uses``: nested template -> rows x lines bool;
     the same table for each), each line read against the positions that are not the
@@ -273,24 +289,35 @@ def tail_tables(
     POOL_ALPHA, on the declustered counts): a raw envelope spectrum's low cyclic
     frequencies hold more clutter than its high ones, and the cage's lines lie in the
     lowest tenth of the search range, where every envelope spectrum is busiest.
+
+    ``shared`` (optional): a store kept by the caller across the families read on one
+    spectrum with one set of valid bins (:func:`.series.series_test`), for what does not
+    depend on the family; the results are the same without it.
     """
     import scipy.special
 
+    shared = {} if shared is None else shared
     stop = int(min(top_bin, zmax.size - 1))
     start = int(min(max(math.floor(bottom_bin), 1), stop))
     near = int(min(max(near_bin, start), stop))
-    ok = np.zeros(zmax.size, bool)
-    ok[start : stop + 1] = count[start : stop + 1] > 0
-    if ok.sum() < 20:
+    key = ("reference", zmax.size, start, stop)
+    if key not in shared:
+        ok = np.zeros(zmax.size, bool)
+        ok[start : stop + 1] = count[start : stop + 1] > 0
+        shared[key] = (ok, None)
+        if ok.sum() >= 20:
+            # the pooling test's counts: exceedances of the whole reference's threshold
+            ref = np.sort(zmax[ok])
+            u = ref[int((1 - TAIL_Q) * ref.size)]
+            over = ok & (zmax > u)
+            excess = np.where(over, zmax - u, 0.0)
+            shared[key] = (ok, (_cluster(zmax, ok, ref), over, excess))
+    ok, pooled = shared[key]
+    if pooled is None:
         return {d: np.zeros(values.shape) for d in uses}
+    cluster, over, excess = pooled
     below = np.zeros(zmax.size, bool)
     below[: near + 1] = True
-    # the pooling test's counts: exceedances of the whole reference's threshold
-    ref = np.sort(zmax[ok])
-    u = ref[int((1 - TAIL_Q) * ref.size)]
-    cluster = _cluster(zmax, ok, ref)
-    over = ok & (zmax > u)
-    excess = np.where(over, zmax - u, 0.0)
     columns = [over, excess, ok]
     basis = np.stack([c * below for c in columns] + [c * ~below for c in columns]).T
     prefix = np.concatenate([np.zeros((1, 6)), np.cumsum(basis.astype(float), axis=0)])
@@ -322,13 +349,16 @@ def tail_tables(
     lp = np.zeros(values.shape)
     for name, rows in (("near", alone), ("all", ~alone)):
         if rows.any():
-            fit = _region(z, zmax, regions[name], nu)
-            lp[rows] = _region_logp(zmax, fit, values[rows], lo[rows], hi[rows])
+            region_key = ("region", key, near if name == "near" else None, nu)
+            if region_key not in shared:
+                shared[region_key] = _region(z, zmax, regions[name], nu)
+            lp[rows] = _region_logp(zmax, shared[region_key], values[rows], lo[rows], hi[rows])
     table = np.where(use, lp, 0.0)
     tables = {d: table for d in uses}
     return tables
 
 
+@functools.lru_cache(maxsize=64)
 def chi2_excess_scale(nu: float) -> float:
     """The exponential scale of the exceedances of the largest of three chi2_nu / nu bins
     over its upper TAIL_Q quantile [-]: their mean excess, the spread a Welch estimate
@@ -407,7 +437,7 @@ def _region_logp(zmax, fit, values, lo, hi) -> np.ndarray:
         top = np.where(free_peak, heights[None, :], u + cut).max(axis=1)
         mean = np.where(free_peak, heights[None, :] - u - cut, 0.0).sum(axis=1)
         mean = np.maximum(mean / np.maximum(kc, 1.0), 1e-12)
-        reach = _free_count(zmax, fit["mask"], values, high, lo, hi)
+        reach = _free_count(zmax, fit["mask"], values, high, lo, hi, fit["ref"])
         k_c = np.maximum(kc, 1.0)[:, None]
         beyond = np.maximum(values - top[:, None], 0.0)
         fall = np.exp(-k_c * np.log1p(beyond / (k_c * mean[:, None])))
@@ -418,15 +448,16 @@ def _region_logp(zmax, fit, values, lo, hi) -> np.ndarray:
     return np.where(values > u, np.minimum(np.log(np.maximum(law, 1e-300)), 0.0), rank)
 
 
-def _free_count(zmax, region, values, which, lo, hi) -> np.ndarray:
+def _free_count(zmax, region, values, which, lo, hi, ref=None) -> np.ndarray:
     """For the lines ``which`` (rows x lines), the positions of ``region`` that are not the
-    row's own (merged intervals ``lo``..``hi``) and read at least the line's value."""
+    row's own (merged intervals ``lo``..``hi``) and read at least the line's value
+    (``ref``: the region's readings sorted, when at hand)."""
     out = np.zeros(values.shape)
     r, j = np.nonzero(which)
     if r.size == 0:
         return out
     v = values[r, j]
-    ref = np.sort(zmax[region])
+    ref = np.sort(zmax[region]) if ref is None else ref
     total = ref.size - np.searchsorted(ref, v, side="left")
     # the row's own positions in the region, and how many of them reach each value
     rows, back = np.unique(r, return_inverse=True)

@@ -169,6 +169,7 @@ def test_all(
     out = {}
     for spec in spectra:
         z = spec.z
+        shared: dict = {}  # what the families' tests share on this spectrum and mask
         for fam in fams:
             out[spec.method, fam.name] = series_test(
                 z,
@@ -187,6 +188,7 @@ def test_all(
                 fam.gate_carriers,
                 tail=True,
                 reference=_reach(reference, spec),
+                shared=shared,
             )
     return out
 

@@ -65,15 +65,27 @@ def cepstral_prewhitening(x) -> np.ndarray:
     >>> bool(abs(s[50] / s[900] - 1.0) < 1e-6)   # both tones now weigh the same
     True
     """
-    x = samples(x)
+    return prewhitened(samples(x))[0]
+
+
+def prewhitened(x: np.ndarray) -> tuple[np.ndarray, np.ndarray | None]:
+    """(:func:`cepstral_prewhitening` of the samples ``x``, its real spectrum X / |X| when
+    the transform's length is the record's own - a fast length - else None): the
+    spectrum of the whitened record, for an envelope that needs it not to transform the
+    record again (:func:`bearinglab.signal.spectra.analytic_power`).
+
+    Parameters
+    ----------
+    x : numpy.ndarray
+        Samples (1-D, float, checked).
+    """
     n = x.size
     nfft = fast_length(n)
     spectrum = np.fft.rfft(x - x.mean(), n=nfft)
     magnitude = np.abs(spectrum)
     live = magnitude > 1e-12 * max(float(magnitude.max()), 1e-300)
-    whitened = np.zeros_like(spectrum)
-    whitened[live] = spectrum[live] / magnitude[live]
-    return np.fft.irfft(whitened, n=nfft)[:n]
+    whitened = np.divide(spectrum, magnitude, out=np.zeros_like(spectrum), where=live)
+    return np.fft.irfft(whitened, n=nfft)[:n], (whitened if nfft == n else None)
 
 
 def drs_segment(n: int, sample_rate: float) -> int:
