@@ -59,10 +59,24 @@ def measured_text(m: dict) -> str:
 
 
 def life_text(life: dict) -> str:
-    """The remaining-life estimate (``to_dict()["remaining_life"]``) in words."""
+    """The remaining-life estimate (``to_dict()["remaining_life"]``) in words, to three
+    figures (an estimate whose interval spans a decade has no more).
+
+    Parameters
+    ----------
+    life : dict
+        ``to_dict()["remaining_life"]``.
+
+    Examples
+    --------
+    >>> life_text({"estimate_s": 1656.97, "low_s": 237.18, "high_s": 9963.4,
+    ...            "at_time_s": 28020.0, "basis": "degradation", "method": "similarity"})
+    '1660 s (80 %: 237 s to 9960 s (2.77 h)) at 28020 s (7.78 h), from degradation (similarity)'
+    """
+    est, low, high = (float(f"{life[k]:.3g}") for k in ("estimate_s", "low_s", "high_s"))
     return (
-        f"{duration_text(life['estimate_s'])} (80 %: {duration_text(life['low_s'])} to "
-        f"{duration_text(life['high_s'])}) at {duration_text(life['at_time_s'])}, from "
+        f"{duration_text(est)} (80 %: {duration_text(low)} to "
+        f"{duration_text(high)}) at {duration_text(life['at_time_s'])}, from "
         f"{life['basis']} ({life['method']})"
     )
 
