@@ -91,10 +91,13 @@ def fault_rate(e: np.ndarray, sample_rate: float, fitted: float, uncertainty: fl
     >>> round(fault_rate(e - e.mean(), fs, 31.5, 0.5), 3)
     31.7
     """
+    from ..signal.spectra import fast_length
+
     n = e.size
     window = 0.5 - 0.5 * np.cos(2.0 * np.pi * np.arange(n) / n)
-    power = np.abs(np.fft.rfft((e - e.mean()) * window)) ** 2
-    bin_hz = sample_rate / n
+    size = fast_length(n)  # zero-padded to a length the FFT is fast at
+    power = np.abs(np.fft.rfft((e - e.mean()) * window, size)) ** 2
+    bin_hz = sample_rate / size
     ks, rates, weights = [], [], []
     for k in range(1, RATE_LINES + 1):
         lo = max(int(math.floor(k * (fitted - uncertainty) / bin_hz)), 1)
