@@ -95,3 +95,54 @@ def test_impacts_are_removed_only_where_they_recur_at_one_rate():
     found = fault_rate(e - e.mean(), FS, rate, 1.2)
     kept = harmonics(without_impacts(e, FS, found), found).sum() / harmonics(e, found).sum()
     assert kept > 0.5
+
+
+def _made_up(monkeypatch, table, fams, prior, alpha=None):
+    """decide() on made-up tests (one round repeated), after ``prior`` faults."""
+    import bearinglab.diagnosis.verdict as verdict
+
+    def test_all(spectra, fams_left, *args, **kwargs):
+        names = {f.name for f in fams_left}
+        return {key: t for key, t in table.items() if key[1] in names}
+
+    class Spectrum:
+        method, resolution, z = "cpw", 1.0, np.zeros(64)
+
+    monkeypatch.setattr(verdict, "test_all", test_all)
+    valid = {"cpw": np.ones(64, bool)}
+    return verdict.decide([Spectrum()], fams, valid, 50.0, 8, 0.01, prior=prior, alpha=alpha)
+
+
+def _series(significance, shown):
+    """A SeriesTest at 10^-``significance`` (its harmonics and support too) whose
+    harmonics ``shown`` stand at 10^-3 (the 2nd, if not shown, at 0.5)."""
+    from bearinglab.diagnosis.series import Line, SeriesTest
+
+    lines = tuple(
+        Line("harmonic", n, 0, 100.0 * n, 100.0 * n, 5.0, math.log(1e-3 if n in shown else 0.5))
+        for n in sorted(set(shown) | {2})
+    )
+    log_p = -significance * math.log(10.0)
+    return SeriesTest(log_p, log_p, log_p, 100.0, 0.0, lines, 10)
+
+
+def test_the_remainder_calls_a_second_fault_with_the_evidence_of_one(monkeypatch):
+    """Read after a first fault (``prior``), a family is a second fault: one harmonic at
+    1 % is not enough (issue 27), two are; the level is the record's first reading's; and
+    FTF lines beside a prior outer race are its cage modulation, not a cage fault."""
+    from bearinglab.diagnosis.families import Family
+
+    ball = [Family("ball", 30.0, 0.07, 0.02, 2.0, 2)]
+    one = {("cpw", "ball"): _series(5.0, (1,))}
+    assert _made_up(monkeypatch, one, ball, ())["faults"] == ["ball"]
+    assert _made_up(monkeypatch, one, ball, ("outer_race",))["faults"] == []
+    two = {("cpw", "ball"): _series(5.0, (1, 2))}
+    assert _made_up(monkeypatch, two, ball, ("outer_race",))["faults"] == ["ball"]
+    # at the level of the first reading (4 families): 10^-2.5 is not enough there
+    weak = {("cpw", "ball"): _series(2.5, (1, 2))}
+    assert _made_up(monkeypatch, weak, ball, ())["faults"] == ["ball"]
+    assert _made_up(monkeypatch, weak, ball, ("outer_race",), alpha=0.01 / 4)["faults"] == []
+    cage = [Family("cage", 2.0, 0.02, 0.02, None, 0)]
+    ftf = {("cpw", "cage"): _series(5.0, (1, 2))}
+    d = _made_up(monkeypatch, ftf, cage, ("outer_race",))
+    assert d["faults"] == [] and d["modulation"] == ["cage"]
