@@ -16,15 +16,17 @@ and the other families are read again on what is left:
    impact is that shape scaled by least squares (time-synchronous averaging: McFadden
    P. D., "Examination of a technique for the early detection of failure in gears by
    signal processing of the time domain average of the meshing vibration", MSSP 1(2)
-   (1987) 173-183; its subtraction, the residual, ibid. and Randall R. B., Antoni J.,
-   "Rolling element bearing diagnostics - A tutorial", MSSP 25(2) (2011) 485-520,
-   sec. 3.2). The scale per impact is what a simulation without slip needs: the ER-16K's
-   outer-race impacts are periodic to 1e-6 but vary by +-50 % in strength.
+   (1987) 173-183; removing a deterministic part before envelope analysis: Randall R. B.,
+   Antoni J., "Rolling element bearing diagnostics - A tutorial", MSSP 25(2) (2011)
+   485-520, sec. 3.2). The scale per impact is what a simulation without slip needs: the
+   ER-16K's outer-race impacts recur at BPFO to 1e-6 but vary by +-50 % in strength, and
+   an inner race's impacts are modulated by the load zone at the shaft rate.
 3. The remainder is read as the record was (same methods, Welch segments, masks of the
    machine's lines and test), but only if the first fault is gone from it: its own series
    no longer reaches the threshold. Where it is not gone - a real bearing's impacts
-   drift with random slip (1-2 %, Randall & Antoni 2011 sec. 2), and an average at a
-   fixed period removes little of them - nothing changes. Where it is gone, the first
+   drift with random slip (1-2 %, Randall & Antoni 2011 sec. 2), which an average at a
+   fixed period cannot follow at the higher harmonics - nothing changes. Where it is
+   gone, the first
    fault's lines and intermodulation need no mask, and a family of the remainder that
    passes every gate of a second fault at the record's level (:func:`.verdict.decide`
    with the first fault ``prior``: at least MIN_HARMONICS harmonics at LINE_ALPHA) is
