@@ -146,3 +146,52 @@ def test_the_remainder_calls_a_second_fault_with_the_evidence_of_one(monkeypatch
     ftf = {("cpw", "cage"): _series(5.0, (1, 2))}
     d = _made_up(monkeypatch, ftf, cage, ("outer_race",))
     assert d["faults"] == [] and d["modulation"] == ["cage"]
+
+
+def test_a_first_fault_is_gone_only_when_it_no_longer_shows_at_one_percent(monkeypatch):
+    """CWRU 119's second half (a ball record) read "outer race" at 10^-3.8 by the three
+    methods (threshold 10^-3.08); the remainder kept 10^-2.65 of it - below the
+    threshold, not removed - and read an inner race there. The remainder is read only
+    when the first fault no longer shows at 1 % (SUPPORT_ALPHA)."""
+    import bearinglab.diagnosis.residual as residual
+    import bearinglab.diagnosis.verdict as verdict
+    from bearinglab.diagnosis.families import Family
+
+    class Spectrum:
+        method, resolution, z = "raw", 1.0, np.zeros(64)
+
+    left = {}
+    monkeypatch.setattr(residual, "residual_spectra", lambda *a: [(Spectrum(), 106.3)])
+    monkeypatch.setattr(verdict, "discrete_mask", lambda *a: ({"raw": np.ones(64, bool)}, {}))
+    monkeypatch.setattr(verdict, "test_all", lambda *a, **k: {("raw", "outer_race"): left["t"]})
+    inner = _series(3.44, (1, 3))
+    monkeypatch.setattr(
+        verdict,
+        "decide",
+        lambda *a, **k: {
+            "faults": ["inner_race"],
+            "tests": {"inner_race": ("raw", inner)},
+            "modulation": [],
+        },
+    )
+    fams = [
+        Family("outer_race", 106.0, 0.02, 0.02, 30.0, 2),
+        Family("inner_race", 160.0, 0.02, 0.02, 30.0, 2),
+    ]
+    first = {
+        "faults": ["outer_race"],
+        "tests": {"outer_race": ("raw", _series(3.8, (7,)))},
+        "alpha": 0.01 / 12,
+        "modulation": [],
+    }
+
+    def look(remainder):
+        left["t"] = _series(remainder, ())
+        return residual.second_look(
+            np.zeros(4096), FS, [Spectrum()], fams, first, {}, 900.0, 8, 0.01, (30.0, 12.0), 900.0
+        )
+
+    assert look(2.65) is first  # below the threshold 10^-3.08, but still a series at 1 %
+    d = look(1.5)  # gone: the remainder is read, its second fault added
+    assert d["faults"] == ["outer_race", "inner_race"]
+    assert d["second_look"]["removed"] == "outer_race"
