@@ -20,6 +20,8 @@ Modules, one sub-problem each:
   fitted peaks-over-threshold law beyond);
 - :mod:`.speed`: the shaft speed the signal shows;
 - :mod:`.verdict`: masking of discrete lines, the greedy decision, labelled lines;
+- :mod:`.residual`: a second look once a fault is accepted - its impacts removed from the
+  squared envelope, the other families read again on the rest (a compound fault);
 - :mod:`.result`: :class:`Diagnosis`; :mod:`.analysis`: :func:`analyze_signal`;
 - :mod:`.benchmark`: :func:`run_benchmark` and :class:`BenchmarkResult`;
 - :mod:`.sizing`: :func:`size_defect`, the width of a race defect found, from the entry

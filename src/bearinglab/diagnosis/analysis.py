@@ -25,6 +25,7 @@ from .families import (
 )
 from .methods import IES_NOTE, METHODS, method_spectrum, parse_methods
 from .reasons import doubt_reason, stray_warning, verdict_reason
+from .residual import second_look
 from .result import Diagnosis
 from .series import LINE_ALPHA
 from .speed import SPEED_CONFIRMING, speed_used
@@ -369,11 +370,8 @@ def analyze_signal(
     # the tail's reference runs beyond the search limit (tail.tail_tables), masked
     # as far
     reference = min(fs / 2.56, max(max_frequency, REFERENCE_POSITIONS * res))
-    valid, masked = discrete_mask(
-        spectra,
-        {"shaft": shaft_hz, "supply": supply, "mesh": mesh, "varying_compliance": compliance},
-        max(reference, max_frequency),
-    )
+    machine = {"shaft": shaft_hz, "supply": supply, "mesh": mesh, "varying_compliance": compliance}
+    valid, masked = discrete_mask(spectra, machine, max(reference, max_frequency))
     masked = {k: [(o, f) for o, f in v if f <= max_frequency] for k, v in masked.items()}
     searched = valid[spectra[0].method][1 : int(max_frequency / res) + 1]
     covered = 1.0 - float(np.mean(searched)) if (supply or mesh) else 0.0
@@ -387,6 +385,20 @@ def analyze_signal(
         spectra,
         fams,
         valid,
+        max_frequency,
+        harmonics,
+        pfa,
+        (rates["shaft"], rates["ftf"]),
+        reference,
+    )
+    # a compound fault's second series, read once the first fault's impacts are removed
+    decision = second_look(
+        x,
+        fs,
+        spectra,
+        fams,
+        decision,
+        machine,
         max_frequency,
         harmonics,
         pfa,

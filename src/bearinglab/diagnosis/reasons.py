@@ -57,6 +57,7 @@ def verdict_reason(faults, table, decision, pfa) -> str:
             f"{t['significance']:.3g} by {t['method']})"
         )
     parts = []
+    look = decision.get("second_look") or {}
     for f in faults:
         t = table[f]
         found = t["lines"]
@@ -71,6 +72,12 @@ def verdict_reason(faults, table, decision, pfa) -> str:
             f"{DESCRIPTIONS[t['method']].split(' (')[0]}); lines at {100 * LINE_ALPHA:g} % "
             f"each: harmonics {harm or 'none'}, sidebands {side}"
             + (f", k x {rate} {own}" if own else "")
+            + (
+                f"; read once the {look['removed'].replace('_', ' ')}'s impacts recurring at "
+                f"{look['rate_hz']:.6g} Hz were removed from the squared envelope"
+                if f in look.get("added", ())
+                else ""
+            )
         )
     if decision["modulation"]:
         parts.append("FTF lines counted as the cage-rate modulation of the fault")

@@ -226,6 +226,9 @@ def decide(
     false_alarm: float,
     modulations: tuple = (0.0, 0.0),
     reference: float | None = None,
+    prior: tuple = (),
+    alpha: float | None = None,
+    bottom: float | None = None,
 ) -> dict:
     """The greedy verdict over all methods (see the module docstring).
 
@@ -233,12 +236,19 @@ def decide(
     (family -> its best SeriesTest and method, from the round that accepted it or, for
     the others, the last round), ``alpha`` (level of each test) and ``modulation``
     (FTF lines counted as the cage-rate modulation of an accepted fault).
+
+    ``prior`` names faults already accepted on the record (:mod:`.residual`: the spectra
+    are then what is left once the first fault's impacts are removed): every family of
+    ``fams`` is read as a second fault, at the level ``alpha`` of the record's first
+    reading, against the positions from ``bottom`` [Hz] (default: the lowest of ``fams``).
     """
-    alpha = false_alarm / (len(fams) * len(spectra))
+    if alpha is None:
+        alpha = false_alarm / (len(fams) * len(spectra))
     log_alpha, log_support = math.log(alpha), math.log(SUPPORT_ALPHA)
     valid = {m: v.copy() for m, v in base_valid.items()}
     # every family's lines are read against the same positions: where any of them may stand
-    bottom = min(f.lowest for f in fams)
+    if bottom is None:
+        bottom = min(f.lowest for f in fams)
     accepted: list[str] = []
     best: dict[str, tuple] = {}
     remaining = [f.name for f in fams]
@@ -248,7 +258,7 @@ def decide(
             test.log_p < log_alpha
             and test.harmonic_log_p < log_support
             and test.support_log_p < log_support
-            and series_shape(test.lines, bool(accepted)) is None
+            and series_shape(test.lines, bool(accepted or prior)) is None
         )
 
     ball_beside_cage = None
@@ -285,7 +295,7 @@ def decide(
                 if 0 < i < spec.z.size:
                     mask_line(valid[spec.method], spec.z, i)
     modulation = []
-    if "cage" in accepted and ({"ball", "outer_race"} & set(accepted)):
+    if "cage" in accepted and ({"ball", "outer_race"} & set(accepted + list(prior))):
         accepted.remove("cage")
         modulation = ["cage"]
     elif (
