@@ -18,7 +18,7 @@ Three questions, each on records without a bearing fault:
 
 Records: white noise (12 kHz, 6205 at 1797 rpm; ``--seconds``), healthy rigid-model
 simulations (``--simulated N``: ``dynamics.simulate``, 6205, 1797 rpm, 2 kN, 1 m/s^2 of
-white noise; the default method for them, raw), and with ``--real FOLDER`` the healthy
+white noise; the default methods for them, raw and cpw), and with ``--real FOLDER`` the healthy
 CWRU 97 in 2.5 s segments at its logged speed and 1-2 % either side (drive and fan end)
 and the fan-end channel of every CWRU file read for the healthy fan-end 6203-2RS. Run
 from the repository root:
@@ -233,7 +233,7 @@ def main() -> None:
             d = analyze_signal(sim.signal, None, sim.kinematic)
             records.append((d.faults, family_pvalues(d)))
             lines.append(line_pvalues(sim.signal.channel(), sim.signal.sample_rate, kin))
-        report("healthy rigid-model simulations, 2 s, 1 m/s^2 of noise (raw)", records)
+        report("healthy rigid-model simulations, 2 s, 1 m/s^2 of noise (raw and cpw)", records)
         line_report("healthy rigid-model simulations", lines)
     if args.real:
         records = {m: [] for m in args.methods.split(",")}

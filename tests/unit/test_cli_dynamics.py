@@ -58,8 +58,9 @@ def test_simulate_outer_race_json(capsys):
         {"location": "outer", "width_mm": 1.2, "depth_mm": 0.25, "angle_deg": -90.0}
     ]
     assert d["output"] is None and d["stats"]["steps"] > 0
-    # a bearinglab simulation is diagnosed by the raw envelope, whole band (issue 11)
-    assert diag["band_hz"] is None and diag["methods"] == ["raw"]
+    # a bearinglab simulation is read by the raw and pre-whitened envelopes, whole band
+    # (issue 11; cpw beside raw since issue 27 item 10)
+    assert diag["band_hz"] is None and diag["methods"] == ["raw", "cpw"]
 
 
 @pytest.mark.parametrize(

@@ -268,7 +268,7 @@ def test_no_sub_multiple_warning_when_the_fault_confirms_the_speed(kin):
     assert any("1/2 of it" in w for w in d.warnings)
 
 
-def test_simulated_records_default_to_the_raw_envelope(er16k):
+def test_simulated_records_default_to_raw_and_cpw(er16k):
     condition = OperatingCondition(radial_load=50.0, shaft_speed=SPEED)
     sim = simulate(
         er16k,
@@ -279,7 +279,7 @@ def test_simulated_records_default_to_the_raw_envelope(er16k):
         sample_rate=FS,
     )
     d = analyze_signal(sim.signal, None, sim.kinematic)
-    assert d.methods == ("raw",) and d.channel == "acc_y"
+    assert d.methods == ("raw", "cpw") and d.channel == "acc_y"
     assert d.verdict == "outer_race"
 
 

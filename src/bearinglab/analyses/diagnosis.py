@@ -40,7 +40,7 @@ DIAGNOSIS_INPUTS: dict[str, Input] = {
         None,
         "raw, cpw, drs-sk or all (repeatable or comma-separated): Smith & Randall's Methods "
         "1-3; ies: the improved envelope spectrum (spectral coherence), optional; default cpw "
-        "(raw for bearinglab simulations).",
+        "(raw and cpw for bearinglab simulations).",
         sets="methods",
     ),
     "band_hz": Input(

@@ -54,8 +54,9 @@ FALSE_ALARM = 0.01
 #: docs' table): the choice rests on the real records. Confirmed on the 33 shared records
 #: (2026-11-26, issue 21): cpw 23, all three 19, drs-sk 19, raw 18.
 DEFAULT_METHODS = ("cpw",)
-#: Methods for a record simulated by bearinglab (no random slip: deterministic).
-SIMULATED_METHODS = ("raw",)
+#: Methods for a record simulated by bearinglab (no random slip: deterministic, so not
+#: drs-sk; raw and cpw together read the README's compound faults whole, issue 27 item 10).
+SIMULATED_METHODS = ("raw", "cpw")
 #: Fewest cage revolutions a record must hold: below that the cage line is not a line.
 MIN_CAGE_REVOLUTIONS = 3.0
 #: Cage revolutions below which the resolution is called coarse for the cage line
@@ -217,10 +218,11 @@ def analyze_signal(
         :mod:`.methods`).
         Default DEFAULT_METHODS (``cpw``), except for a record simulated
         by bearinglab (a Signal whose metadata names its ``model``): SIMULATED_METHODS
-        (``raw``), because a simulation without random slip is deterministic, and
-        pre-whitening and discrete/random separation remove deterministic periodic
-        content (they are made for the random slip of real bearings: Antoni & Randall
-        2004, Randall & Antoni 2011 sec. 3.2).
+        (``raw`` and ``cpw``): a simulation without random slip is deterministic, and
+        discrete/random separation removes deterministic periodic content (it is made
+        for the random slip of real bearings: Antoni & Randall 2004, Randall & Antoni
+        2011 sec. 3.2); pre-whitening keeps the impacts' phase, and with ``raw`` reads
+        the compound faults that one method alone misses (docs: issue 27 item 10).
     band : (float, float) or "auto", optional
         Demodulation band [Hz] for every method instead of its own (None: whole band for
         ``raw`` and ``cpw``, the fast kurtogram's for ``drs-sk``); "auto": the fast
