@@ -427,36 +427,44 @@ def _tail_scan(tables, uses, index, n_arr, k_arr, gate_orders, gate_carriers):
       scan.
 
     Returns (ln p, support ln p, harmonic ln p, best row, best template)."""
-    from .chain import chain_logp, chain_steps
+    from .chain import chain_bounds, chain_counts
 
     depths = tuple(tables)
     combos = {d: _fisher_rows(tables[d], uses[d]) for d in depths}
     depth = min(depths, key=lambda d: float(np.min(combos[d])))
     best = int(np.argmin(combos[depth]))
-    log_p = chain_logp(float(combos[depth][best]), [chain_steps(index, uses[d]) for d in depths])
+    # the three scans' levels first, then their chain bounds together
+    levels = [float(combos[depth][best])]
+    chains = [chain_counts(index, np.stack([uses[d] for d in depths]))]
     row = uses[depth][best]
-    support = 0.0
     if row.sum() > 1:
         strongest = int(np.flatnonzero(row)[np.argmin(tables[depth][best][row])])
         keep = np.ones(n_arr.size, bool)
         keep[strongest] = False
-        raw = min(
-            float(fisher_logp(tables[d][best][uses[d][best] & keep]))
-            for d in depths
-            if (uses[d][best] & keep).any()
+        levels.append(
+            min(
+                float(fisher_logp(tables[d][best][uses[d][best] & keep]))
+                for d in depths
+                if (uses[d][best] & keep).any()
+            )
         )
         rows = np.abs(index[:, strongest] - index[best, strongest]) <= 1
-        sub = [chain_steps(index[rows], uses[d][rows] & keep[None, :]) for d in depths]
-        support = chain_logp(raw, sub)
-    harmonic = 0.0
+        sub = np.stack([uses[d][rows] & keep[None, :] for d in depths])
+        chains.append(chain_counts(index[rows], sub))
     readable = uses[depths[-1]]
     gate = _gate_masks(tables[0][best], readable[best], n_arr, k_arr, gate_orders, gate_carriers)
     if gate:
-        raw = min(
-            float(fisher_logp(tables[min(int(np.max(np.abs(k_arr[m]))), depths[-1])][best][m]))
-            for m in gate
+        levels.append(
+            min(
+                float(fisher_logp(tables[min(int(np.max(np.abs(k_arr[m]))), depths[-1])][best][m]))
+                for m in gate
+            )
         )
-        harmonic = chain_logp(raw, [chain_steps(index, readable & m[None, :]) for m in gate])
+        chains.append(chain_counts(index, np.stack([readable & m[None, :] for m in gate])))
+    bounds = chain_bounds(levels, chains)
+    log_p = bounds[0]
+    support = bounds[1] if row.sum() > 1 else 0.0
+    harmonic = bounds[-1] if gate else 0.0
     return log_p, support, harmonic, best, depth
 
 
