@@ -477,7 +477,7 @@ def _read(grid, n_arr, k_arr, modulation, top, resolution, live):
     index = np.rint(freq / resolution).astype(int)
     size = live.size
     inside = (freq > 0.5 * resolution) & (freq <= top) & (index >= 1) & (index < size - 1)
-    index = np.clip(index, 1, size - 2)
+    index = np.minimum(np.maximum(index, 1), size - 2)
     readable = inside & live[index]
     # (BPFO of a 6203 is 3.053 x shaft: n BPFO + 2 shaft and (n + 1) BPFO - shaft fall in
     # one bin, and white noise then passed the outer race's test 7 x too often)

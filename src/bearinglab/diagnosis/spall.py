@@ -134,7 +134,7 @@ def _ring_approach(k: float, cosines: np.ndarray, load: float, half_clearance: f
     """u with load = sum K [u cos(psi) - P_d/2]_+^1.5 cos(psi), by bisection [m]."""
 
     def force(u):
-        return k * float(np.sum(np.clip(u * cosines - half_clearance, 0.0, None) ** 1.5 * cosines))
+        return k * float(np.sum(np.maximum(u * cosines - half_clearance, 0.0) ** 1.5 * cosines))
 
     lo = min(half_clearance, 0.0)
     while force(lo) > load:  # a preload: the rings are pressed together at u = 0
