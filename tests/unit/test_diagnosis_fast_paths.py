@@ -74,3 +74,39 @@ def test_chain_bounds_together_equal_each_alone(seed):
     assert far == pytest.approx(
         -700.0 + math.log(counts[0][0] + counts[0][1].sum() + counts[0][2].sum())
     )
+
+
+@pytest.mark.parametrize("n", [4096, 4095])
+def test_the_hann_power_from_the_record_spectrum_is_the_windowed_transform(n):
+    from bearinglab.diagnosis.speed import hann_power
+
+    rng = np.random.default_rng(n)
+    t = np.arange(n) / 1000.0
+    x = np.sin(2 * np.pi * 29.3 * t) + 0.1 * rng.standard_normal(n) + 3.0
+    spectrum = np.fft.rfft(x - x.mean())
+    fast = hann_power(x, n, 600, spectrum)
+    plain = hann_power(x, n, 600)
+    window = 0.5 - 0.5 * np.cos(2 * np.pi * np.arange(n) / n)
+    assert fast.size == plain.size == 600
+    assert np.allclose(plain, np.abs(np.fft.rfft((x - x.mean()) * window)[:600]) ** 2)
+    assert np.allclose(fast, plain, rtol=1e-9, atol=1e-12 * plain.max())
+
+
+def test_the_prewhitening_and_the_speed_reuse_the_record_spectrum():
+    from bearinglab.diagnosis.speed import shaft_frequency
+    from bearinglab.signal.preprocess import prewhitened
+
+    rng = np.random.default_rng(3)
+    fs, n = 4000.0, 16000
+    t = np.arange(n) / fs
+    x = sum(np.sin(2 * np.pi * k * 24.7 * t) / k for k in (1, 2, 3)) + rng.standard_normal(n)
+    spectrum = np.fft.rfft(x - x.mean())
+    kept = spectrum.copy()
+    y, whitened = prewhitened(x, spectrum)
+    y0, whitened0 = prewhitened(x)
+    assert np.array_equal(y, y0) and np.array_equal(whitened, whitened0)
+    assert np.array_equal(spectrum, kept)  # not changed
+    fast = shaft_frequency(x, fs, 23.0, 26.0, spectrum=spectrum)
+    plain = shaft_frequency(x, fs, 23.0, 26.0)
+    assert fast.frequency == pytest.approx(plain.frequency, rel=1e-12)
+    assert fast.p_value == pytest.approx(plain.p_value, rel=1e-9)
