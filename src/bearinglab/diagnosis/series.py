@@ -430,7 +430,12 @@ def _tail_scan(tables, uses, index, n_arr, k_arr, gate_orders, gate_carriers):
     from .chain import chain_bounds, chain_counts
 
     depths = tuple(tables)
-    combos = {d: _fisher_rows(tables[d], uses[d]) for d in depths}
+    # every template's Fisher combinations in one pass (the templates share one table of
+    # line p-values when the tail reads them: tail_tables)
+    same = all(tables[d] is tables[depths[0]] for d in depths)
+    stacked = tables[depths[0]][None] if same else np.stack([tables[d] for d in depths])
+    combined = _fisher_rows(stacked, np.stack([uses[d] for d in depths]))
+    combos = dict(zip(depths, combined, strict=True))
     depth = min(depths, key=lambda d: float(np.min(combos[d])))
     best = int(np.argmin(combos[depth]))
     # the three scans' levels first, then their chain bounds together
@@ -517,10 +522,12 @@ def _continuation(grid, n_max, orders, modulation, top, ref_top, resolution, liv
 
 
 def _fisher_rows(logp: np.ndarray, readable: np.ndarray) -> np.ndarray:
-    """ln of Fisher's combination, row by row, over the readable entries only."""
-    lines = readable.sum(axis=1)
-    out = np.zeros(logp.shape[0])
+    """ln of Fisher's combination, row by row (the last axis: lines), over the readable
+    entries only; ``readable`` (rows x lines, or stacked: templates x rows x lines)
+    broadcast against ``logp``."""
+    lines = readable.sum(axis=-1)
+    out = np.zeros(lines.shape)
     live = lines > 0
-    statistic = -2.0 * np.where(readable, logp, 0.0)[live].sum(axis=1)
+    statistic = -2.0 * np.where(readable, logp, 0.0)[live].sum(axis=-1)
     out[live] = chi2_logsf(statistic, 2 * lines[live])
     return out
