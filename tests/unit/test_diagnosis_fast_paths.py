@@ -110,3 +110,40 @@ def test_the_prewhitening_and_the_speed_reuse_the_record_spectrum():
     plain = shaft_frequency(x, fs, 23.0, 26.0)
     assert fast.frequency == pytest.approx(plain.frequency, rel=1e-12)
     assert fast.p_value == pytest.approx(plain.p_value, rel=1e-9)
+
+
+@pytest.mark.parametrize("designation", ["6205-2RS", "6203", "6310", "61800"])
+def test_the_ball_series_constant_is_the_two_contacts_computed_alone(designation):
+    from bearinglab.catalog import bearing_from_designation
+    from bearinglab.contact import hertz
+    from bearinglab.diagnosis.spall import ball_series_constant
+    from bearinglab.materials import effective_modulus
+
+    bearing = bearing_from_designation(designation)[0]
+    e = effective_modulus(bearing.ball_material, bearing.ring_material)
+    inner = hertz.load_deflection_constant(*bearing.contact_radii("inner"), e)
+    outer = hertz.load_deflection_constant(*bearing.contact_radii("outer"), e)
+    assert ball_series_constant(bearing) == float(hertz.series_constant(inner, outer))
+
+
+def test_refine_peaks_is_refine_peak_row_by_row():
+    from bearinglab.diagnosis.events import refine_peak, refine_peaks
+
+    rng = np.random.default_rng(7)
+    rows = rng.random((200, 31))
+    rows[5] = 1.0  # flat: no parabola
+    i = rng.integers(0, 31, size=200)
+    i[:3] = (0, 30, 15)  # the ends are not refined
+    out = refine_peaks(rows, i)
+    assert out.tolist() == [refine_peak(row, int(j)) for row, j in zip(rows, i, strict=True)]
+
+
+def test_the_bridged_widths_are_each_load_alone():
+    from bearinglab.catalog import bearing_from_designation
+    from bearinglab.diagnosis.spall import bridged_width, bridged_widths
+
+    bearing = bearing_from_designation("6205-2RS")[0]
+    loads = (443.6, 140.0, 1400.0)
+    for race in ("inner", "outer"):
+        together = bridged_widths(bearing, race, loads)
+        assert together == [bridged_width(bearing, race, load) for load in loads]
