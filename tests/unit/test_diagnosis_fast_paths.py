@@ -147,3 +147,44 @@ def test_the_bridged_widths_are_each_load_alone():
     for race in ("inner", "outer"):
         together = bridged_widths(bearing, race, loads)
         assert together == [bridged_width(bearing, race, load) for load in loads]
+
+
+def _plain_free_count(zmax, region, values, which, lo, hi, ref):
+    """The free count as it was before the positions' screening: every own position of
+    every row with lines compared with every line of it."""
+    out = np.zeros(values.shape)
+    r, j = np.nonzero(which)
+    if r.size == 0:
+        return out
+    v = values[r, j]
+    total = ref.size - np.searchsorted(ref, v, side="left")
+    rows, back = np.unique(r, return_inverse=True)
+    width = int(np.max(hi[rows] - lo[rows], initial=-1)) + 1
+    if width > 0:
+        at = lo[rows][:, :, None] + np.arange(width)[None, None, :]
+        inside = at <= hi[rows][:, :, None]
+        at = np.clip(at, 0, zmax.size - 1)
+        own_z = np.where(inside & region[at], zmax[at], -np.inf).reshape(rows.size, -1)
+        total = total - (own_z[back] >= v[:, None]).sum(axis=1)
+    out[r, j] = total
+    return out
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_the_free_count_is_the_plain_count(seed):
+    from bearinglab.diagnosis.tail import _free_count
+
+    rng = np.random.default_rng(100 + seed)
+    size, rows, lines = 600, 30, 9
+    zmax = np.round(rng.exponential(1.0, size), 1)  # ties between readings
+    region = rng.random(size) < 0.9
+    ref = np.sort(zmax[region])
+    index = np.sort(rng.integers(0, size, size=(rows, lines)), axis=1)
+    values = zmax[index]
+    # merged intervals as tail.own_intervals makes them: sorted, apart, some empty
+    lo = np.minimum(index, size - 1)
+    hi = np.minimum(lo + rng.integers(-1, 20, size=lo.shape), size - 1)
+    hi[:, :-1] = np.minimum(hi[:, :-1], lo[:, 1:] - 1)
+    which = (values > np.quantile(ref, 0.7)) & (rng.random(values.shape) < 0.8)
+    fast = _free_count(zmax, region, values, which, lo, hi, ref)
+    assert np.array_equal(fast, _plain_free_count(zmax, region, values, which, lo, hi, ref))

@@ -454,7 +454,11 @@ def _region_logp(zmax, fit, values, lo, hi) -> np.ndarray:
 def _free_count(zmax, region, values, which, lo, hi, ref=None) -> np.ndarray:
     """For the lines ``which`` (rows x lines), the positions of ``region`` that are not the
     row's own (merged intervals ``lo``..``hi``) and read at least the line's value
-    (``ref``: the region's readings sorted, when at hand)."""
+    (``ref``: the region's readings sorted, when at hand).
+
+    Only the positions that read at least the smallest of those values can count: each
+    row's own among them are found by their places in the row's intervals, whatever the
+    intervals' widths."""
     out = np.zeros(values.shape)
     r, j = np.nonzero(which)
     if r.size == 0:
@@ -462,18 +466,23 @@ def _free_count(zmax, region, values, which, lo, hi, ref=None) -> np.ndarray:
     v = values[r, j]
     ref = np.sort(zmax[region]) if ref is None else ref
     total = ref.size - np.searchsorted(ref, v, side="left")
-    # the row's own positions in the region, and how many of them reach each value
-    # (np.nonzero gives r sorted: its distinct values by their changes)
-    first = np.empty(r.size, bool)
-    first[0] = True
-    np.not_equal(r[1:], r[:-1], out=first[1:])
-    rows, back = r[first], np.cumsum(first) - 1
-    width = int(np.max(hi[rows] - lo[rows], initial=-1)) + 1
-    if width > 0:
-        at = lo[rows][:, :, None] + np.arange(width)[None, None, :]
-        inside = at <= hi[rows][:, :, None]
-        at = np.minimum(np.maximum(at, 0), zmax.size - 1)
-        own_z = np.where(inside & region[at], zmax[at], -np.inf).reshape(rows.size, -1)
-        total = total - (own_z[back] >= v[:, None]).sum(axis=1)
+    # the positions of the region that may count, and which of them each row owns (the
+    # intervals do not overlap: a position is in at most one of a row's); np.nonzero
+    # gives r sorted: its distinct values by their changes
+    high = np.flatnonzero(region & (zmax >= v.min()))
+    if high.size:
+        first = np.empty(r.size, bool)
+        first[0] = True
+        np.not_equal(r[1:], r[:-1], out=first[1:])
+        rows, back = r[first], np.cumsum(first) - 1
+        start, end = lo[rows], hi[rows]
+        some = end >= start
+        a = np.searchsorted(high, start[some], side="left")
+        b = np.searchsorted(high, end[some], side="right")
+        owner = np.nonzero(some)[0] * (high.size + 1)
+        edges = np.bincount(owner + a, minlength=rows.size * (high.size + 1))
+        edges -= np.bincount(owner + b, minlength=rows.size * (high.size + 1))
+        owned = np.cumsum(edges.reshape(rows.size, high.size + 1), axis=1)[:, :-1] > 0
+        total = total - (owned[back] & (zmax[high][None, :] >= v[:, None])).sum(axis=1)
     out[r, j] = total
     return out
