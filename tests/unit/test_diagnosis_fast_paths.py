@@ -188,3 +188,37 @@ def test_the_free_count_is_the_plain_count(seed):
     which = (values > np.quantile(ref, 0.7)) & (rng.random(values.shape) < 0.8)
     fast = _free_count(zmax, region, values, which, lo, hi, ref)
     assert np.array_equal(fast, _plain_free_count(zmax, region, values, which, lo, hi, ref))
+
+
+def test_fisher_rows_of_stacked_templates_are_each_template_alone():
+    from bearinglab.diagnosis.series import _fisher_rows
+
+    rng = np.random.default_rng(11)
+    logp = np.log(rng.random((40, 17)))
+    uses = rng.random((3, 40, 17)) < 0.6
+    uses[1, 5] = False  # a row with no line
+    together = _fisher_rows(logp[None], uses)
+    for d in range(3):
+        assert np.array_equal(together[d], _fisher_rows(logp, uses[d]))
+
+
+def test_own_intervals_sorted_by_one_flat_gather():
+    from bearinglab.diagnosis.tail import OWN_BINS, own_intervals
+
+    rng = np.random.default_rng(12)
+    size = 400
+    lo_h = np.maximum(np.arange(size) - rng.integers(0, 4, size), 0)
+    hi_h = np.minimum(np.arange(size) + rng.integers(0, 4, size), size - 1)
+    index = rng.integers(-3, size + 3, size=(25, 14))
+    use = rng.random(index.shape) < 0.7
+    lo, hi = own_intervals(index, use, (lo_h, hi_h), size)
+    # as before: clipped, the unused empty, each row sorted by take_along_axis
+    i = np.clip(index, 0, size - 1)
+    a = np.clip(np.minimum(lo_h[i] - 1, index - OWN_BINS), 0, size - 1)
+    b = np.clip(np.maximum(hi_h[i] + 1, index + OWN_BINS), 0, size - 1)
+    a, b = np.where(use, a, size), np.where(use, b, -1)
+    order = np.argsort(a, axis=1, kind="stable")
+    a, b = np.take_along_axis(a, order, axis=1), np.take_along_axis(b, order, axis=1)
+    reach = np.maximum.accumulate(b, axis=1)
+    before = np.concatenate([np.full((b.shape[0], 1), -1), reach[:, :-1]], axis=1)
+    assert np.array_equal(lo, np.maximum(a, before + 1)) and np.array_equal(hi, b)
