@@ -106,7 +106,20 @@ def _positive(name: str, value, allowed: str, optional: bool = True) -> float | 
     return v
 
 
-def _speed(frequencies, shaft_speed, speed_range, x, fs, warnings, supply=None):
+def _record_spectrum(x, fs):
+    """``numpy.fft.rfft(x - x.mean())``, transformed once for the speed check and the
+    pre-whitening of ``cpw`` and ``ies`` when both would transform the whole record (its
+    length a fast one); else None."""
+    from ..signal.spectra import fast_length
+    from .methods import segment_length
+
+    n = x.size
+    if fast_length(n) != n or segment_length(n, fs, fs / n) != n:
+        return None
+    return np.fft.rfft(x - x.mean())
+
+
+def _speed(frequencies, shaft_speed, speed_range, x, fs, warnings, supply=None, spectrum=None):
     """(DefectFrequencies at the speed used, the speed record, the shaft rate the signal
     shows [Hz], the doubt on the speed given or None): the inputs checked here, the speed
     by :func:`.speed.speed_used`."""
@@ -131,7 +144,9 @@ def _speed(frequencies, shaft_speed, speed_range, x, fs, warnings, supply=None):
         raise InputError("shaft_speed", nominal, 'a speed > 0 rad/s or "auto"')
     if nominal is None and not auto:
         raise InputError("shaft_speed", None, 'a speed > 0 rad/s or "auto" with a bearing')
-    used, record, measured, doubt = speed_used(x, fs, nominal, speed_range, auto, warnings, supply)
+    used, record, measured, doubt = speed_used(
+        x, fs, nominal, speed_range, auto, warnings, supply, spectrum
+    )
     kin = defect_frequencies(bearing, used, outer_rotating=outer, contact_angle=alpha)
     return kin, record, kin.shaft_hz if measured is None else measured, doubt
 
@@ -310,8 +325,9 @@ def analyze_signal(
             f"the file stores a sample rate of {stored:g} Hz and {fs:g} Hz was given: every "
             f"frequency of the record reads {fs / stored:.4g} times what the file says"
         )
+    spectrum = _record_spectrum(x, fs)
     kin, speed, shaft_hz, doubt = _speed(
-        frequencies, shaft_speed, speed_range, x, fs, warnings, supply
+        frequencies, shaft_speed, speed_range, x, fs, warnings, supply, spectrum
     )
     nyquist = fs / 2
     freqs = {name: kin.hz(name) for name in ("shaft", "ftf", "bpfo", "bpfi", "ball_defect")}
@@ -350,7 +366,8 @@ def analyze_signal(
                 "resolution", resolution, f"a resolution >= {floor_res:.4g} Hz (1 / record length)"
             )
     spectra = [
-        with_z(method_spectrum(m, x, fs, resolution, band, largest, max_frequency)) for m in names
+        with_z(method_spectrum(m, x, fs, resolution, band, largest, max_frequency, spectrum))
+        for m in names
     ]
     # sidebands and intermodulation at the rates the signal shows: the shaft line found
     # (the one masked), the cage in proportion

@@ -101,17 +101,23 @@ def chain_steps(index: np.ndarray, use: np.ndarray) -> tuple[int, np.ndarray, np
     return int(lines[0]), moves[moves >= 1], pairs[pairs >= 1]
 
 
-def _chi2_isf(log_t: float, dof) -> np.ndarray:
-    """The critical value x with P(chi2_dof > x) = e^log_t."""
+def _chi2_isf(log_t, dof) -> np.ndarray:
+    """The critical value x with P(chi2_dof > x) = e^log_t (``log_t`` a float, or one per
+    ``dof``)."""
     import scipy.special
 
-    return np.asarray(scipy.special.chdtri(np.asarray(dof, float), math.exp(log_t)), float)
+    if np.ndim(log_t):  # each level's e^log_t by math.exp, as for one level
+        t = np.array([math.exp(v) for v in np.asarray(log_t, float).ravel()])
+    else:
+        t = math.exp(log_t)
+    return np.asarray(scipy.special.chdtri(np.asarray(dof, float), t), float)
 
 
-def log_move(log_t: float, lines) -> np.ndarray:
+def log_move(log_t, lines) -> np.ndarray:
     """ln P(A_new and not A_old) when one of the L ``lines`` of a Fisher test at level
-    e^``log_t`` moves to the next bin (see the module docstring): the integral over
-    y = x s^2 (points crowded where the line's term rises), all L at once."""
+    e^``log_t`` (a float, or one per L) moves to the next bin (see the module docstring):
+    the integral over y = x s^2 (points crowded where the line's term rises), all L at
+    once."""
     import scipy.special
 
     lines = np.atleast_1d(np.asarray(lines, float))
@@ -140,15 +146,83 @@ def log_move(log_t: float, lines) -> np.ndarray:
     return np.where(lines >= 2, out, single)
 
 
-def log_pair(log_t: float, lines) -> np.ndarray:
+def log_pair(log_t, lines) -> np.ndarray:
     """ln P(A_L and not A_(L-1)) for Fisher tests of L ``lines`` and of L - 1 of them at
-    level e^``log_t`` (= P(A_(L-1) and not A_L)): e^(-x_L/2) (x_(L-1)/2)^(L-1) / Gamma(L)."""
+    level e^``log_t`` (a float, or one per L; = P(A_(L-1) and not A_L)):
+    e^(-x_L/2) (x_(L-1)/2)^(L-1) / Gamma(L)."""
     import scipy.special
 
     lines = np.atleast_1d(np.asarray(lines, float))
     x_l = _chi2_isf(log_t, 2.0 * lines)
     x_m = np.where(lines > 1, _chi2_isf(log_t, np.maximum(2.0 * lines - 2.0, 1.0)), 2.0)
     return -x_l / 2.0 + (lines - 1.0) * np.log(x_m / 2.0) - scipy.special.gammaln(lines)
+
+
+def chain_counts(index: np.ndarray, uses: np.ndarray) -> tuple[int, np.ndarray, np.ndarray]:
+    """What :func:`chain_logp` needs of one or several scans over the same fundamentals, as
+    counts: :func:`chain_steps` of each scan, its moves and pairs counted by their number
+    of lines and summed over the scans (the chain bound is a sum over single-line steps:
+    their order does not matter).
+
+    Parameters
+    ----------
+    index : numpy.ndarray of int
+        (rows x lines) the bin each line reads at each fundamental.
+    uses : numpy.ndarray of bool
+        (rows x lines) the lines one scan's test combines at each fundamental, or
+        (scans x rows x lines) several scans' at once.
+
+    Returns
+    -------
+    (int, numpy.ndarray, numpy.ndarray)
+        The number of scans whose first row reads a line; the count of single-line moves
+        at L lines and of lines coming in or going out with the larger count L, at
+        position L (integer arrays).
+
+    Examples
+    --------
+    >>> first, moves, pairs = chain_counts(np.array([[1, 4], [2, 4], [2, 5]]),
+    ...                                    np.array([[True, True], [True, True], [True, False]]))
+    >>> first, moves.tolist(), pairs.tolist()
+    (1, [0, 0, 1, 0], [0, 0, 1, 0])
+    """
+    use = np.asarray(uses, bool)
+    if use.ndim == 2:
+        use = use[None]
+    lines = use.sum(axis=2)  # scans x rows
+    if lines.shape[1] == 0:
+        return 0, np.zeros(1, int), np.zeros(1, int)
+    firsts = int(np.count_nonzero(lines[:, 0] >= 1))
+    size = int(lines.max()) + 2
+    if lines.shape[1] < 2:
+        return firsts, np.zeros(size, int), np.zeros(size, int)
+    prev, cur = use[:, :-1], use[:, 1:]
+    moved = (prev & cur & (index[:-1] != index[1:])[None]).sum(axis=2).ravel()
+    gone = (prev & ~cur).sum(axis=2).ravel()
+    come = (~prev & cur).sum(axis=2).ravel()
+    old = lines[:, :-1].ravel()
+    moves = np.bincount(np.repeat(old, moved), minlength=size)
+    moves[0] = 0  # a test of no lines moves none
+    # a step's lines that go count L, L - 1, .., L - gone + 1; those that come then count
+    # L - gone + 1, .., L - gone + come: two runs of consecutive counts, summed as the
+    # differences of their ends
+    starts = np.concatenate([old - gone + 1, old - gone + 1])
+    lengths = np.concatenate([gone, come])
+    some = lengths > 0
+    edges = np.bincount(starts[some], minlength=size + 1) - np.bincount(
+        (starts + lengths)[some], minlength=size + 1
+    )
+    pairs = np.cumsum(edges)[:size]
+    return firsts, moves, pairs
+
+
+def _as_counts(chains) -> tuple[int, np.ndarray, np.ndarray]:
+    """The steps of ``chains`` (each :func:`chain_steps`) as :func:`chain_counts`."""
+    firsts = sum(1 for first, _, _ in chains if first >= 1)
+    moves = np.concatenate([m for _, m, _ in chains]) if chains else np.zeros(0, int)
+    pairs = np.concatenate([p for _, _, p in chains]) if chains else np.zeros(0, int)
+    size = int(max(moves.max(initial=0), pairs.max(initial=0))) + 2
+    return firsts, np.bincount(moves, minlength=size), np.bincount(pairs, minlength=size)
 
 
 def chain_logp(log_t: float, chains) -> float:
@@ -160,19 +234,60 @@ def chain_logp(log_t: float, chains) -> float:
     >>> round(math.exp(chain_logp(math.log(1e-4), [steps])) / 1e-4, 2)  # 1 + 9 x ~1/3
     4.0
     """
-    if not log_t < 0.0:
-        return 0.0
-    firsts = sum(1 for first, _, _ in chains if first >= 1)
-    moves = np.concatenate([m for _, m, _ in chains]) if chains else np.zeros(0, int)
-    pairs = np.concatenate([p for _, _, p in chains]) if chains else np.zeros(0, int)
-    count = firsts + moves.size + pairs.size
-    if count == 0:
-        return 0.0
-    if log_t < FAR:
-        return min(0.0, log_t + math.log(count))
-    terms = [log_t + math.log(firsts)] if firsts else []
-    for values, term in ((moves, log_move), (pairs, log_pair)):
-        if values.size:
-            unique, counts = np.unique(values, return_counts=True)
-            terms += list(term(log_t, unique) + np.log(counts))
-    return min(0.0, float(np.logaddexp.reduce(np.array(terms))), log_t + math.log(count))
+    return chain_bounds([log_t], [_as_counts(chains)])[0]
+
+
+def chain_bounds(log_ts, counts) -> list[float]:
+    """:func:`chain_logp` of several levels at once, each of its scans given as counts
+    (:func:`chain_counts`): the moves' and pairs' terms of all of them computed together,
+    as they are one level at a time.
+
+    Parameters
+    ----------
+    log_ts : sequence of float
+        ln of each level.
+    counts : sequence of tuple
+        For each level, :func:`chain_counts` of its scans (summed over them).
+
+    Returns
+    -------
+    list of float
+        ln of each level's bound, at most 0.
+
+    >>> import math
+    >>> c = chain_counts(np.arange(10)[:, None], np.ones((10, 1), bool))
+    >>> round(math.exp(chain_bounds([math.log(1e-4)], [c])[0]) / 1e-4, 2)
+    4.0
+    """
+    out: list[float] = [0.0] * len(log_ts)
+    work = []  # (query, level's ln, firsts, count, L of moves, their counts, L of pairs, ...)
+    for q, (log_t, (firsts, moves, pairs)) in enumerate(zip(log_ts, counts, strict=True)):
+        log_t = float(log_t)
+        count = firsts + int(moves[1:].sum()) + int(pairs[1:].sum())
+        if not log_t < 0.0 or count == 0:
+            continue
+        if log_t < FAR:
+            out[q] = min(0.0, log_t + math.log(count))
+            continue
+        lm, lp = np.flatnonzero(moves[1:]) + 1, np.flatnonzero(pairs[1:]) + 1
+        work.append((q, log_t, firsts, count, lm, moves[lm], lp, pairs[lp]))
+    if not work:
+        return out
+    # every level's terms at once: one row per (level, L), the level's probability as
+    # math.exp gives it (as one level at a time does)
+    terms = {}
+    for which, term, lines_at, counts_at in ((0, log_move, 4, 5), (1, log_pair, 6, 7)):
+        rows = [w for w in work if w[lines_at].size]
+        if rows:
+            t = np.concatenate([np.full(w[lines_at].size, w[1]) for w in rows])
+            values = term(t, np.concatenate([w[lines_at] for w in rows]))
+            values = values + np.log(np.concatenate([w[counts_at] for w in rows]))
+            ends = np.cumsum([w[lines_at].size for w in rows])
+            for w, part in zip(rows, np.split(values, ends[:-1]), strict=True):
+                terms[which, w[0]] = part
+    for q, log_t, firsts, count, *_ in work:
+        parts = [np.array([log_t + math.log(firsts)])] if firsts else []
+        parts += [terms[k, q] for k in (0, 1) if (k, q) in terms]
+        total = float(np.logaddexp.reduce(np.concatenate(parts)))
+        out[q] = min(0.0, total, log_t + math.log(count))
+    return out

@@ -227,6 +227,7 @@ def method_spectrum(
     band=None,
     largest_defect: float = 0.0,
     max_frequency: float | None = None,
+    spectrum=None,
 ) -> MethodSpectrum:
     """The squared envelope spectrum of ``x`` by ``method`` (see the module docstring).
 
@@ -249,6 +250,9 @@ def method_spectrum(
     max_frequency : float, optional
         Upper end of the line search [Hz] (``ies`` computes its cyclic frequencies up to
         there and a margin); default 5.5 x ``largest_defect``.
+    spectrum : numpy.ndarray, optional
+        ``numpy.fft.rfft(x - x.mean())`` when already at hand (``cpw`` and ``ies`` then
+        do not transform the record again).
 
     Returns
     -------
@@ -258,11 +262,11 @@ def method_spectrum(
     from ..signal.preprocess import discrete_random_separation, prewhitened
 
     kurtogram = None
-    spectrum = None  # the real spectrum of y at its own length, when at hand
+    record_spectrum, spectrum = spectrum, None  # the real spectrum of y at its own length
     if method == "raw":
         y = x
     elif method in ("cpw", "ies"):
-        y, spectrum = prewhitened(np.asarray(x, dtype=float))
+        y, spectrum = prewhitened(np.asarray(x, dtype=float), record_spectrum)
     elif method == "drs-sk":
         y, _ = discrete_random_separation(x, sample_rate)
     else:

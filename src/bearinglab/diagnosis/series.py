@@ -427,36 +427,49 @@ def _tail_scan(tables, uses, index, n_arr, k_arr, gate_orders, gate_carriers):
       scan.
 
     Returns (ln p, support ln p, harmonic ln p, best row, best template)."""
-    from .chain import chain_logp, chain_steps
+    from .chain import chain_bounds, chain_counts
 
     depths = tuple(tables)
-    combos = {d: _fisher_rows(tables[d], uses[d]) for d in depths}
+    # every template's Fisher combinations in one pass (the templates share one table of
+    # line p-values when the tail reads them: tail_tables)
+    same = all(tables[d] is tables[depths[0]] for d in depths)
+    stacked = tables[depths[0]][None] if same else np.stack([tables[d] for d in depths])
+    combined = _fisher_rows(stacked, np.stack([uses[d] for d in depths]))
+    combos = dict(zip(depths, combined, strict=True))
     depth = min(depths, key=lambda d: float(np.min(combos[d])))
     best = int(np.argmin(combos[depth]))
-    log_p = chain_logp(float(combos[depth][best]), [chain_steps(index, uses[d]) for d in depths])
+    # the three scans' levels first, then their chain bounds together
+    levels = [float(combos[depth][best])]
+    chains = [chain_counts(index, np.stack([uses[d] for d in depths]))]
     row = uses[depth][best]
-    support = 0.0
     if row.sum() > 1:
         strongest = int(np.flatnonzero(row)[np.argmin(tables[depth][best][row])])
         keep = np.ones(n_arr.size, bool)
         keep[strongest] = False
-        raw = min(
-            float(fisher_logp(tables[d][best][uses[d][best] & keep]))
-            for d in depths
-            if (uses[d][best] & keep).any()
+        levels.append(
+            min(
+                float(fisher_logp(tables[d][best][uses[d][best] & keep]))
+                for d in depths
+                if (uses[d][best] & keep).any()
+            )
         )
         rows = np.abs(index[:, strongest] - index[best, strongest]) <= 1
-        sub = [chain_steps(index[rows], uses[d][rows] & keep[None, :]) for d in depths]
-        support = chain_logp(raw, sub)
-    harmonic = 0.0
+        sub = np.stack([uses[d][rows] & keep[None, :] for d in depths])
+        chains.append(chain_counts(index[rows], sub))
     readable = uses[depths[-1]]
     gate = _gate_masks(tables[0][best], readable[best], n_arr, k_arr, gate_orders, gate_carriers)
     if gate:
-        raw = min(
-            float(fisher_logp(tables[min(int(np.max(np.abs(k_arr[m]))), depths[-1])][best][m]))
-            for m in gate
+        levels.append(
+            min(
+                float(fisher_logp(tables[min(int(np.max(np.abs(k_arr[m]))), depths[-1])][best][m]))
+                for m in gate
+            )
         )
-        harmonic = chain_logp(raw, [chain_steps(index, readable & m[None, :]) for m in gate])
+        chains.append(chain_counts(index, np.stack([readable & m[None, :] for m in gate])))
+    bounds = chain_bounds(levels, chains)
+    log_p = bounds[0]
+    support = bounds[1] if row.sum() > 1 else 0.0
+    harmonic = bounds[-1] if gate else 0.0
     return log_p, support, harmonic, best, depth
 
 
@@ -469,7 +482,7 @@ def _read(grid, n_arr, k_arr, modulation, top, resolution, live):
     index = np.rint(freq / resolution).astype(int)
     size = live.size
     inside = (freq > 0.5 * resolution) & (freq <= top) & (index >= 1) & (index < size - 1)
-    index = np.clip(index, 1, size - 2)
+    index = np.minimum(np.maximum(index, 1), size - 2)
     readable = inside & live[index]
     # (BPFO of a 6203 is 3.053 x shaft: n BPFO + 2 shaft and (n + 1) BPFO - shaft fall in
     # one bin, and white noise then passed the outer race's test 7 x too often)
@@ -509,10 +522,12 @@ def _continuation(grid, n_max, orders, modulation, top, ref_top, resolution, liv
 
 
 def _fisher_rows(logp: np.ndarray, readable: np.ndarray) -> np.ndarray:
-    """ln of Fisher's combination, row by row, over the readable entries only."""
-    lines = readable.sum(axis=1)
-    out = np.zeros(logp.shape[0])
+    """ln of Fisher's combination, row by row (the last axis: lines), over the readable
+    entries only; ``readable`` (rows x lines, or stacked: templates x rows x lines)
+    broadcast against ``logp``."""
+    lines = readable.sum(axis=-1)
+    out = np.zeros(lines.shape)
     live = lines > 0
-    statistic = -2.0 * np.where(readable, logp, 0.0)[live].sum(axis=1)
+    statistic = -2.0 * np.where(readable, logp, 0.0)[live].sum(axis=-1)
     out[live] = chi2_logsf(statistic, 2 * lines[live])
     return out

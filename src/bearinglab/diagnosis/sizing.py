@@ -74,7 +74,7 @@ from .events import (
     find_pair,
     median,
     moving_average,
-    refine_peak,
+    refine_peaks,
     ring_down,
     track_passages,
 )
@@ -82,8 +82,8 @@ from .spall import (
     ASSUMED_LOAD,
     LOAD_RANGE,
     assumed_loads,
-    ball_series_constant,
     bridged_width,
+    bridged_widths,
     contact_speed,
     raceway_radius,
 )
@@ -409,21 +409,21 @@ def size_defect(
         )
     entry_at, exit_at = (lag, 0) if lag < 0 else (0, lag)
     reach = max(k, int(round(0.2 * abs(lag))))
-    spacings = []
-    for row in rows:
-        positions = []
-        for at in (entry_at, exit_at):
-            lo = max(centre + at - reach, 0)
-            i = lo + int(np.argmax(row[lo : centre + at + reach + 1]))
-            positions.append(refine_peak(row, i))
-        spacings.append((positions[1] - positions[0]) / fs)
-    spacings = np.array(spacings)
+    # each passage's entry and exit: the largest sample near each, refined by a parabola
+    # (refine_peaks: refine_peak of all passages at once)
+    positions = []
+    for at in (entry_at, exit_at):
+        lo = max(centre + at - reach, 0)
+        positions.append(
+            refine_peaks(rows, lo + np.argmax(rows[:, lo : centre + at + reach + 1], axis=1))
+        )
+    spacings = (positions[1] - positions[0]) / fs
     spacing = float(np.median(spacings))
     q_low, q_high = (float(q) for q in np.quantile(spacings, QUANTILES))
-    k_ball = ball_series_constant(bearing)  # once for the three loads
-    bridged = bridged_width(bearing, race, load, k_ball)
-    low = v * max(q_low, 0.0) + bridged_width(bearing, race, light, k_ball)
-    high = v * q_high + bridged_width(bearing, race, heavy, k_ball)
+    # the three loads' bridged widths at once (one Hertz constant, one bisection)
+    bridged, at_light, at_heavy = bridged_widths(bearing, race, (load, light, heavy))
+    low = v * max(q_low, 0.0) + at_light
+    high = v * q_high + at_heavy
     width = v * spacing + bridged
     load_words = (
         f"under {load:.4g} N"

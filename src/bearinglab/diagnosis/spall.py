@@ -125,8 +125,10 @@ def ball_series_constant(bearing) -> float:
     from ..materials import effective_modulus
 
     e = effective_modulus(bearing.ball_material, bearing.ring_material)
-    inner = hertz.load_deflection_constant(*bearing.contact_radii("inner"), e)
-    outer = hertz.load_deflection_constant(*bearing.contact_radii("outer"), e)
+    # both contacts in one call (one solve of the ellipticities: its iterations leave a
+    # converged element as it is, so each is the one it would be alone)
+    (rx_i, ry_i), (rx_o, ry_o) = bearing.contact_radii("inner"), bearing.contact_radii("outer")
+    inner, outer = hertz.load_deflection_constant(np.array([rx_i, rx_o]), np.array([ry_i, ry_o]), e)
     return float(hertz.series_constant(inner, outer))
 
 
@@ -134,7 +136,7 @@ def _ring_approach(k: float, cosines: np.ndarray, load: float, half_clearance: f
     """u with load = sum K [u cos(psi) - P_d/2]_+^1.5 cos(psi), by bisection [m]."""
 
     def force(u):
-        return k * float(np.sum(np.clip(u * cosines - half_clearance, 0.0, None) ** 1.5 * cosines))
+        return k * float(np.sum(np.maximum(u * cosines - half_clearance, 0.0) ** 1.5 * cosines))
 
     lo = min(half_clearance, 0.0)
     while force(lo) > load:  # a preload: the rings are pressed together at u = 0
@@ -196,6 +198,30 @@ def bridged_width(bearing, race: str, radial_load: float, constant: float | None
     radius = raceway_radius(bearing, race)
     d0, d1 = ball_approaches(bearing, radial_load, constant)
     return float(np.sum(bridged_distance(np.array([d0, d1]), r, radius, race)))
+
+
+def bridged_widths(bearing, race: str, radial_loads, constant: float | None = None) -> list:
+    """:func:`bridged_width` under each of ``radial_loads`` [N], the pits' edges found by
+    one bisection for all (:func:`bridged_distance` works element by element: each the one
+    it would be alone) [m].
+
+    Parameters
+    ----------
+    bearing : BallBearing
+        The bearing.
+    race : {"inner", "outer"}
+        The race with the pit.
+    radial_loads : sequence of float
+        F_r [N], each > 0.
+    constant : float, optional
+        K, when already computed for this bearing (:func:`ball_series_constant`).
+    """
+    r = 0.5 * bearing.ball_diameter
+    radius = raceway_radius(bearing, race)
+    k = ball_series_constant(bearing) if constant is None else float(constant)
+    deltas = np.array([ball_approaches(bearing, load, k) for load in radial_loads])
+    distances = bridged_distance(deltas.ravel(), r, radius, race).reshape(deltas.shape)
+    return [float(np.sum(row)) for row in distances]
 
 
 def assumed_loads(bearing) -> tuple[float, float, float]:

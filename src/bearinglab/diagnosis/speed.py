@@ -108,8 +108,44 @@ def _hann(n: int) -> np.ndarray:
     return window
 
 
+def hann_power(x: np.ndarray, n: int, bins: int, spectrum=None) -> np.ndarray:
+    """|rfft(y w)|^2 at bins 0 .. ``bins`` - 1 (fewer if the transform has fewer), y the
+    first ``n`` samples of ``x`` less their mean and w the periodic Hann window
+    (:func:`_hann`).
+
+    ``spectrum``: ``numpy.fft.rfft`` of the whole of ``x`` less its mean, when at hand
+    and ``n`` is the record's length; the window is then applied to it - the periodic Hann
+    window is 1/2 - (e^(2 pi j i/n) + e^(-2 pi j i/n)) / 4, so that its product's
+    spectrum is Y[k] / 2 - (Y[k - 1] + Y[k + 1]) / 4 (Y[-1] = conj Y[1]) - rather than the
+    record transformed again (equal to round-off; a test checks it).
+
+    Parameters
+    ----------
+    x : numpy.ndarray
+        Samples (1-D).
+    n : int
+        Samples transformed, at most ``x.size``.
+    bins : int
+        Bins wanted.
+    spectrum : numpy.ndarray, optional
+        ``numpy.fft.rfft(x - x.mean())``.
+    """
+    if spectrum is not None and n == x.size and len(spectrum) == n // 2 + 1 and bins + 1 < n // 2:
+        s = spectrum[: bins + 1]
+        before = np.concatenate((np.conj(s[1:2]), s[: bins - 1]))
+        windowed = 0.5 * s[:bins] - 0.25 * (before + s[1 : bins + 1])
+        return windowed.real**2 + windowed.imag**2
+    y = x[:n] - np.mean(x[:n])
+    return (np.abs(np.fft.rfft(y * _hann(n))) ** 2)[:bins]
+
+
 def shaft_frequency(
-    x: np.ndarray, sample_rate: float, low: float, high: float, harmonics: int = SHAFT_HARMONICS
+    x: np.ndarray,
+    sample_rate: float,
+    low: float,
+    high: float,
+    harmonics: int = SHAFT_HARMONICS,
+    spectrum=None,
 ) -> ShaftEstimate:
     """Shaft frequency [Hz] in [``low``, ``high``] shown by the record ``x``.
 
@@ -123,6 +159,8 @@ def shaft_frequency(
         Search range [Hz], 0 < low < high.
     harmonics : int
         Harmonics read.
+    spectrum : numpy.ndarray, optional
+        ``numpy.fft.rfft(x - x.mean())``, when at hand (:func:`hann_power`).
 
     Returns
     -------
@@ -142,15 +180,13 @@ def shaft_frequency(
     from .statistics import FLOOR_BINS, normalised
 
     n = segment_length(x.size, sample_rate, sample_rate / x.size)
-    y = x[:n] - np.mean(x[:n])
-    power = np.abs(np.fft.rfft(y * _hann(n))) ** 2
     resolution = sample_rate / n
     centre = 0.5 * (low + high)
     top = min(0.5 * sample_rate, (harmonics + 0.5) * high)
     # only the bins up to the top harmonic are read; the floor's running median there
     # needs FLOOR_BINS beyond it (normalised()'s guard against a zero floor now scales with
     # these bins' largest floor: the same but for records with exact zeros)
-    power = power[: int(top / resolution) + FLOOR_BINS + 8]
+    power = hann_power(x, n, int(top / resolution) + FLOOR_BINS + 8, spectrum)
     z = normalised(power, 2.0)
     # the shaft's lines read by their rank (the speed check's levels are set on it)
     test = series_test(
@@ -230,7 +266,7 @@ def supply_line(frequency: float, supply=None, expected=None) -> bool:
     )
 
 
-def shaft_multiple(x: np.ndarray, sample_rate: float, nominal: float, supply=None):
+def shaft_multiple(x: np.ndarray, sample_rate: float, nominal: float, supply=None, spectrum=None):
     """(k, frequency [Hz]) of an unambiguous shaft series at k times ``nominal`` [Hz]
     (k in MULTIPLES, the smallest first), or None: asked when no shaft line stands near
     the nominal speed, where a sample rate given k times too high puts the real one.
@@ -245,33 +281,34 @@ def shaft_multiple(x: np.ndarray, sample_rate: float, nominal: float, supply=Non
         low, high = (k * nominal * (1 + s) for s in (-SEARCH, SEARCH))
         if high * UNAMBIGUOUS_HARMONICS >= 0.5 * sample_rate:
             break
-        found = shaft_frequency(x, sample_rate, low, high)
+        found = shaft_frequency(x, sample_rate, low, high, spectrum=spectrum)
         # Bonferroni over the multiples tried
         if (
             found.unambiguous
             and found.resolves(found.frequency, RESOLVED)
             and found.p_value < SPEED_ALPHA / len(MULTIPLES)
             and not supply_line(found.frequency, supply, k * nominal)
-            and not fundamental_shows(x, sample_rate, found.frequency, k)
+            and not fundamental_shows(x, sample_rate, found.frequency, k, spectrum)
         ):
             return k, found.frequency
     return None
 
 
-def _periodogram(x: np.ndarray, sample_rate: float, top: float):
+def _periodogram(x: np.ndarray, sample_rate: float, top: float, spectrum=None):
     """z (a Hann periodogram over its running median, chi2_2 / 2 in noise) of the longest
     power-of-two stretch of ``x`` up to ``top`` [Hz], and its resolution [Hz]."""
     from .methods import segment_length
     from .statistics import FLOOR_BINS, normalised
 
     n = segment_length(x.size, sample_rate, sample_rate / x.size)
-    y = x[:n] - np.mean(x[:n])
-    power = np.abs(np.fft.rfft(y * _hann(n))) ** 2
     resolution = sample_rate / n
-    return normalised(power[: int(top / resolution) + FLOOR_BINS + 8], 2.0), resolution
+    power = hann_power(x, n, int(top / resolution) + FLOOR_BINS + 8, spectrum)
+    return normalised(power, 2.0), resolution
 
 
-def line_near(x: np.ndarray, sample_rate: float, frequency: float, tolerance: float = None):
+def line_near(
+    x: np.ndarray, sample_rate: float, frequency: float, tolerance: float = None, spectrum=None
+):
     """The line within ``tolerance`` (default SPEED_WARNING) of ``frequency`` [Hz] that
     stands out of its own neighbourhood: (its frequency [Hz], ln p), the largest reading
     there, when its chance under the chi-square law of a periodogram bin over its running
@@ -283,7 +320,7 @@ def line_near(x: np.ndarray, sample_rate: float, frequency: float, tolerance: fl
     tolerance = SPEED_WARNING if tolerance is None else tolerance
     if not frequency > 0 or frequency * (1 + tolerance) >= 0.5 * sample_rate:
         return None
-    z, resolution = _periodogram(x, sample_rate, frequency * (1 + tolerance) * 1.5)
+    z, resolution = _periodogram(x, sample_rate, frequency * (1 + tolerance) * 1.5, spectrum)
     lo = max(int(math.floor(frequency * (1 - tolerance) / resolution)), 1)
     hi = min(int(math.ceil(frequency * (1 + tolerance) / resolution)), z.size - 2)
     if hi < lo:
@@ -293,7 +330,9 @@ def line_near(x: np.ndarray, sample_rate: float, frequency: float, tolerance: fl
     return (i * resolution, log_p) if log_p < math.log(SPEED_ALPHA) else None
 
 
-def fundamental_shows(x: np.ndarray, sample_rate: float, frequency: float, k: int) -> bool:
+def fundamental_shows(
+    x: np.ndarray, sample_rate: float, frequency: float, k: int, spectrum=None
+) -> bool:
     """Whether the lines of a shaft at ``frequency`` / k [Hz] that are not harmonics of
     ``frequency`` (j f / k, j = 1 .. SHAFT_HARMONICS, j not a multiple of k) make a
     series at SPEED_ALPHA in the record ``x``, or its first line stands out of its own
@@ -301,10 +340,10 @@ def fundamental_shows(x: np.ndarray, sample_rate: float, frequency: float, k: in
     shaft, whose series was found."""
     from .series import series_test
 
-    if line_near(x, sample_rate, frequency / k) is not None:
+    if line_near(x, sample_rate, frequency / k, spectrum=spectrum) is not None:
         return True
     top = min(0.5 * sample_rate, (SHAFT_HARMONICS + 0.5) * frequency / k * 1.01)
-    z, resolution = _periodogram(x, sample_rate, top)
+    z, resolution = _periodogram(x, sample_rate, top, spectrum)
     own = np.ones(z.size, bool)
     for m in range(1, int(top / frequency) + 2):
         i = int(round(m * frequency / resolution))
@@ -315,7 +354,9 @@ def fundamental_shows(x: np.ndarray, sample_rate: float, frequency: float, k: in
     return bool(sub.lines) and sub.p_value < SPEED_ALPHA
 
 
-def speed_used(x, sample_rate, nominal, speed_range, auto: bool, warnings: list, supply=None):
+def speed_used(
+    x, sample_rate, nominal, speed_range, auto: bool, warnings: list, supply=None, spectrum=None
+):
     """The speed a diagnosis runs at, and what the record's shaft series says of it.
 
     The shaft series is searched in ``speed_range`` ((low, high) [rad/s]; default
@@ -325,7 +366,8 @@ def speed_used(x, sample_rate, nominal, speed_range, auto: bool, warnings: list,
     sub-multiple of it, or none near it but one at k x it (:func:`shaft_multiple`), is a
     doubt that the verdict settles (a sample rate or speed given k times wrong).
     Warnings are appended to ``warnings``; ``supply`` [Hz] is the supply frequency given
-    (its harmonics, and 50 and 60 Hz's, are never a shaft at a multiple of the speed).
+    (its harmonics, and 50 and 60 Hz's, are never a shaft at a multiple of the speed);
+    ``spectrum``: ``numpy.fft.rfft(x - x.mean())`` when at hand (:func:`hann_power`).
 
     Returns
     -------
@@ -357,7 +399,7 @@ def speed_used(x, sample_rate, nominal, speed_range, auto: bool, warnings: list,
         raise InputError(
             "speed_range", speed_range, f"speeds below Nyquist ({sample_rate / 2:g} Hz)"
         )
-    found = shaft_frequency(x, sample_rate, low, high)
+    found = shaft_frequency(x, sample_rate, low, high, spectrum=spectrum)
     record = {"given_rpm": None if nominal is None else nominal * 30 / math.pi, **found.to_dict()}
     doubt = None  # why the signal's shaft series points away from the speed given
     if auto:
@@ -374,7 +416,11 @@ def speed_used(x, sample_rate, nominal, speed_range, auto: bool, warnings: list,
         used, record["source"] = nominal, "given"
         given_rpm = nominal * 30 / math.pi
         nominal_hz = nominal / (2 * math.pi)
-        line = None if found.frequency is not None else line_near(x, sample_rate, nominal_hz)
+        line = (
+            None
+            if found.frequency is not None
+            else line_near(x, sample_rate, nominal_hz, spectrum=spectrum)
+        )
         if line is not None:
             # no series stands out near the speed given, but its line does: the speed is
             # where it was given (HIT-SM Normal_900, 900 rpm: its shaft line at 15.23 Hz
@@ -389,7 +435,7 @@ def speed_used(x, sample_rate, nominal, speed_range, auto: bool, warnings: list,
                 if speed_range is None
                 else f"between {60 * low:.6g} and {60 * high:.6g} rpm"
             )
-            above = shaft_multiple(x, sample_rate, nominal / (2 * math.pi), supply)
+            above = shaft_multiple(x, sample_rate, nominal / (2 * math.pi), supply, spectrum)
             if above is None:
                 warnings.append(f"no shaft line found {where}: the speed is not checked")
             else:

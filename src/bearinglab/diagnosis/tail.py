@@ -214,14 +214,17 @@ def own_intervals(index, use, hills, size: int) -> tuple[np.ndarray, np.ndarray]
     hill (:func:`line_hills`) widened by one bin, the positions whose three bins reach
     it."""
     lo, hi = hills
-    i = np.clip(index, 0, lo.size - 1)
-    a = np.clip(np.minimum(lo[i] - 1, index - OWN_BINS), 0, size - 1)
-    b = np.clip(np.maximum(hi[i] + 1, index + OWN_BINS), 0, size - 1)
+    # (np.minimum and np.maximum: np.clip's wrapper costs several times their call)
+    i = np.minimum(np.maximum(index, 0), lo.size - 1)
+    a = np.minimum(np.maximum(np.minimum(lo[i] - 1, index - OWN_BINS), 0), size - 1)
+    b = np.minimum(np.maximum(np.maximum(hi[i] + 1, index + OWN_BINS), 0), size - 1)
     a = np.where(use, a, size)  # unused lines: empty, sorted last
     b = np.where(use, b, -1)
+    # each row sorted by its starts (take_along_axis, by flat indices)
     order = np.argsort(a, axis=1, kind="stable")
-    a = np.take_along_axis(a, order, axis=1)
-    b = np.take_along_axis(b, order, axis=1)
+    order += np.arange(a.shape[0])[:, None] * a.shape[1]
+    a = a.ravel()[order]
+    b = b.ravel()[order]
     reach = np.maximum.accumulate(b, axis=1)
     before = np.concatenate([np.full((b.shape[0], 1), -1), reach[:, :-1]], axis=1)
     return np.maximum(a, before + 1), b
@@ -451,7 +454,11 @@ def _region_logp(zmax, fit, values, lo, hi) -> np.ndarray:
 def _free_count(zmax, region, values, which, lo, hi, ref=None) -> np.ndarray:
     """For the lines ``which`` (rows x lines), the positions of ``region`` that are not the
     row's own (merged intervals ``lo``..``hi``) and read at least the line's value
-    (``ref``: the region's readings sorted, when at hand)."""
+    (``ref``: the region's readings sorted, when at hand).
+
+    Only the positions that read at least the smallest of those values can count: each
+    row's own among them are found by their places in the row's intervals, whatever the
+    intervals' widths."""
     out = np.zeros(values.shape)
     r, j = np.nonzero(which)
     if r.size == 0:
@@ -459,14 +466,23 @@ def _free_count(zmax, region, values, which, lo, hi, ref=None) -> np.ndarray:
     v = values[r, j]
     ref = np.sort(zmax[region]) if ref is None else ref
     total = ref.size - np.searchsorted(ref, v, side="left")
-    # the row's own positions in the region, and how many of them reach each value
-    rows, back = np.unique(r, return_inverse=True)
-    width = int(np.max(hi[rows] - lo[rows], initial=-1)) + 1
-    if width > 0:
-        at = lo[rows][:, :, None] + np.arange(width)[None, None, :]
-        inside = at <= hi[rows][:, :, None]
-        at = np.clip(at, 0, zmax.size - 1)
-        own_z = np.where(inside & region[at], zmax[at], -np.inf).reshape(rows.size, -1)
-        total = total - (own_z[back] >= v[:, None]).sum(axis=1)
+    # the positions of the region that may count, and which of them each row owns (the
+    # intervals do not overlap: a position is in at most one of a row's); np.nonzero
+    # gives r sorted: its distinct values by their changes
+    high = np.flatnonzero(region & (zmax >= v.min()))
+    if high.size:
+        first = np.empty(r.size, bool)
+        first[0] = True
+        np.not_equal(r[1:], r[:-1], out=first[1:])
+        rows, back = r[first], np.cumsum(first) - 1
+        start, end = lo[rows], hi[rows]
+        some = end >= start
+        a = np.searchsorted(high, start[some], side="left")
+        b = np.searchsorted(high, end[some], side="right")
+        owner = np.nonzero(some)[0] * (high.size + 1)
+        edges = np.bincount(owner + a, minlength=rows.size * (high.size + 1))
+        edges -= np.bincount(owner + b, minlength=rows.size * (high.size + 1))
+        owned = np.cumsum(edges.reshape(rows.size, high.size + 1), axis=1)[:, :-1] > 0
+        total = total - (owned[back] & (zmax[high][None, :] >= v[:, None])).sum(axis=1)
     out[r, j] = total
     return out

@@ -68,7 +68,7 @@ def cepstral_prewhitening(x) -> np.ndarray:
     return prewhitened(samples(x))[0]
 
 
-def prewhitened(x: np.ndarray) -> tuple[np.ndarray, np.ndarray | None]:
+def prewhitened(x: np.ndarray, spectrum=None) -> tuple[np.ndarray, np.ndarray | None]:
     """(:func:`cepstral_prewhitening` of the samples ``x``, its real spectrum X / |X| when
     the transform's length is the record's own - a fast length - else None): the
     spectrum of the whitened record, for an envelope that needs it not to transform the
@@ -78,10 +78,14 @@ def prewhitened(x: np.ndarray) -> tuple[np.ndarray, np.ndarray | None]:
     ----------
     x : numpy.ndarray
         Samples (1-D, float, checked).
+    spectrum : numpy.ndarray, optional
+        ``numpy.fft.rfft(x - x.mean())`` when already at hand and the record's length is
+        a fast one (not changed).
     """
     n = x.size
     nfft = fast_length(n)
-    spectrum = np.fft.rfft(x - x.mean(), n=nfft)
+    if spectrum is None or nfft != n or len(spectrum) != n // 2 + 1:
+        spectrum = np.fft.rfft(x - x.mean(), n=nfft)
     magnitude = np.abs(spectrum)
     live = magnitude > 1e-12 * max(float(magnitude.max()), 1e-300)
     whitened = np.divide(spectrum, magnitude, out=np.zeros_like(spectrum), where=live)

@@ -367,13 +367,14 @@ def analytic_power(x, spectrum=None) -> np.ndarray:
     n = x.size
     m = fast_length(n)
     if spectrum is not None and m == n and len(spectrum) == n // 2 + 1:
-        half = np.array(spectrum, dtype=complex)
+        half = np.asarray(spectrum, dtype=complex) * -1j  # a new array: the input kept
     else:
         half = np.fft.rfft(x, m)
+        half *= -1j
     half[0] = 0.0
     if m % 2 == 0:
         half[-1] = 0.0
-    hilbert = np.fft.irfft(half * -1j, m)[:n]
+    hilbert = np.fft.irfft(half, m)[:n]
     return x * x + hilbert * hilbert
 
 
