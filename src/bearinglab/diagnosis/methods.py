@@ -78,7 +78,9 @@ class MethodSpectrum:
     """Squared envelope spectrum of one method: ``frequency`` [Hz], ``power`` (Welch power
     of each line, in the squared envelope's unit squared), equivalent degrees of freedom
     ``nu``, demodulation ``band`` (None: whole band) and the ``kurtogram`` that chose it
-    (``drs-sk`` only), and ``z``, the power over its local noise level, once normalised."""
+    (``drs-sk`` only), ``z``, the power over its local noise level, once normalised, and
+    the squared ``envelope`` it was taken of (mean removed; None for ``ies``), which the
+    second look (:mod:`.residual`) reads again."""
 
     method: str
     frequency: np.ndarray
@@ -87,6 +89,7 @@ class MethodSpectrum:
     band: tuple[float, float] | None
     kurtogram: object | None
     z: np.ndarray | None = None
+    envelope: np.ndarray | None = None
 
     @property
     def amplitude(self) -> np.ndarray:
@@ -140,7 +143,8 @@ def segment_length(n: int, sample_rate: float, resolution: float) -> int:
 def squared_envelope_power(
     x: np.ndarray, sample_rate: float, resolution: float, band=None, spectrum=None
 ):
-    """(frequency [Hz], Welch power of the squared envelope, nu) at ``resolution`` [Hz];
+    """(frequency [Hz], Welch power of the squared envelope, nu, the squared envelope) at
+    ``resolution`` [Hz];
     ``spectrum``: the real spectrum of ``x`` at its own (fast) length, when at hand and
     there is no ``band`` (the envelope is then not transformed again)."""
     from ..signal.spectra import analytic_power, envelope, welch_power
@@ -157,7 +161,7 @@ def squared_envelope_power(
     nperseg = segment_length(env.size, sample_rate, resolution)
     noverlap = nperseg // 2
     frequency, power = welch_power(env, sample_rate, nperseg, noverlap)
-    return frequency, power, welch_dof(nperseg, noverlap, env.size)
+    return frequency, power, welch_dof(nperseg, noverlap, env.size), env
 
 
 def _inside(band, sample_rate: float):
@@ -285,5 +289,5 @@ def method_spectrum(
         )
         z = standardised(power, nu)
         return MethodSpectrum(method, frequency, power, nu, band, kurtogram, z)
-    frequency, power, nu = squared_envelope_power(y, sample_rate, resolution, band, spectrum)
-    return MethodSpectrum(method, frequency, power, nu, band, kurtogram)
+    frequency, power, nu, env = squared_envelope_power(y, sample_rate, resolution, band, spectrum)
+    return MethodSpectrum(method, frequency, power, nu, band, kurtogram, envelope=env)

@@ -100,9 +100,15 @@ class ShaftEstimate:
 
 
 @functools.lru_cache(maxsize=8)
-def _hann(n: int) -> np.ndarray:
+def periodic_hann(n: int) -> np.ndarray:
     """The periodic Hann window of ``n`` samples (``numpy.hanning(n + 1)[:-1]``), kept
-    for the record lengths seen: a cosine of 120 000 points costs 0.5 ms a call."""
+    for the record lengths seen: a cosine of 120 000 points costs 0.5 ms a call.
+
+    Parameters
+    ----------
+    n : int
+        Samples [-].
+    """
     window = np.hanning(n + 1)[:-1]
     window.flags.writeable = False
     return window
@@ -111,7 +117,7 @@ def _hann(n: int) -> np.ndarray:
 def hann_power(x: np.ndarray, n: int, bins: int, spectrum=None) -> np.ndarray:
     """|rfft(y w)|^2 at bins 0 .. ``bins`` - 1 (fewer if the transform has fewer), y the
     first ``n`` samples of ``x`` less their mean and w the periodic Hann window
-    (:func:`_hann`).
+    (:func:`periodic_hann`).
 
     ``spectrum``: ``numpy.fft.rfft`` of the whole of ``x`` less its mean, when at hand
     and ``n`` is the record's length; the window is then applied to it - the periodic Hann
@@ -136,7 +142,7 @@ def hann_power(x: np.ndarray, n: int, bins: int, spectrum=None) -> np.ndarray:
         windowed = 0.5 * s[:bins] - 0.25 * (before + s[1 : bins + 1])
         return windowed.real**2 + windowed.imag**2
     y = x[:n] - np.mean(x[:n])
-    return (np.abs(np.fft.rfft(y * _hann(n))) ** 2)[:bins]
+    return (np.abs(np.fft.rfft(y * periodic_hann(n))) ** 2)[:bins]
 
 
 def shaft_frequency(
