@@ -101,14 +101,14 @@ def _made_up(monkeypatch, table, fams, prior, alpha=None):
     """decide() on made-up tests (one round repeated), after ``prior`` faults."""
     import bearinglab.diagnosis.verdict as verdict
 
-    def test_all(spectra, fams_left, *args, **kwargs):
+    def read_families(spectra, fams_left, *args, **kwargs):
         names = {f.name for f in fams_left}
         return {key: t for key, t in table.items() if key[1] in names}
 
     class Spectrum:
         method, resolution, z = "cpw", 1.0, np.zeros(64)
 
-    monkeypatch.setattr(verdict, "test_all", test_all)
+    monkeypatch.setattr(verdict, "read_families", read_families)
     valid = {"cpw": np.ones(64, bool)}
     return verdict.decide([Spectrum()], fams, valid, 50.0, 8, 0.01, prior=prior, alpha=alpha)
 
@@ -163,7 +163,9 @@ def test_a_first_fault_is_gone_only_when_it_no_longer_shows_at_one_percent(monke
     left = {}
     monkeypatch.setattr(residual, "residual_spectra", lambda *a: [(Spectrum(), 106.3)])
     monkeypatch.setattr(verdict, "discrete_mask", lambda *a: ({"raw": np.ones(64, bool)}, {}))
-    monkeypatch.setattr(verdict, "test_all", lambda *a, **k: {("raw", "outer_race"): left["t"]})
+    monkeypatch.setattr(
+        verdict, "read_families", lambda *a, **k: {("raw", "outer_race"): left["t"]}
+    )
     inner = _series(3.44, (1, 3))
     monkeypatch.setattr(
         verdict,

@@ -32,12 +32,12 @@ def _decide(monkeypatch, rounds, fams, methods=("raw", "cpw")):
     of the greedy verdict (the last repeats)."""
     calls = iter(range(100))
 
-    def test_all(spectra, fams_left, *args, **kwargs):
+    def read_families(spectra, fams_left, *args, **kwargs):
         table = rounds[min(next(calls), len(rounds) - 1)]
         names = {f.name for f in fams_left}
         return {key: t for key, t in table.items() if key[1] in names}
 
-    monkeypatch.setattr(verdict, "test_all", test_all)
+    monkeypatch.setattr(verdict, "read_families", read_families)
     spectra = [_Spectrum(m) for m in methods]
     valid = {m: np.ones(64, bool) for m in methods}
     return verdict.decide(spectra, fams, valid, 50.0, 8, 0.01)

@@ -226,7 +226,7 @@ def second_look(
     The decision returned carries ``second_look``: the first fault, the rate [Hz] its
     impacts were removed at, and the faults the remainder added.
     """
-    from .verdict import decide, discrete_mask, test_all
+    from .verdict import decide, discrete_mask, read_families
 
     accepted = list(decision["faults"])
     others = [f for f in fams if f.name not in accepted]
@@ -241,7 +241,7 @@ def second_look(
     valid, _ = discrete_mask(rest, lines, max(reference, max_frequency))
     by_name = {f.name: f for f in fams}
     bottom = min(f.lowest for f in fams)
-    gone = test_all(rest, [by_name[first]], valid, max_frequency, harmonics, bottom, reference)
+    gone = read_families(rest, [by_name[first]], valid, max_frequency, harmonics, bottom, reference)
     # gone: not even a series at the gates' level (SUPPORT_ALPHA) - a first fault just
     # above the threshold falls below it by little, and is not removed for that
     if any(t.log_p < math.log(SUPPORT_ALPHA) for t in gone.values()):

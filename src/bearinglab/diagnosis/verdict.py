@@ -154,7 +154,7 @@ def _reach(reference, spec):
     return min(reference, float(band[1]) - float(band[0]))
 
 
-def test_all(
+def read_families(
     spectra,
     fams: list[Family],
     valid: dict,
@@ -263,7 +263,7 @@ def decide(
 
     ball_beside_cage = None
     while remaining:
-        tests = test_all(
+        tests = read_families(
             spectra,
             [f for f in fams if f.name in remaining],
             valid,
