@@ -47,6 +47,8 @@ from functools import lru_cache
 
 import numpy as np
 
+from .similarity import WINDOW
+
 #: The 80 % interval's quantiles.
 INTERVAL = (0.1, 0.9)
 #: Quantiles of the remaining life over which the challenge's score is averaged.
@@ -209,8 +211,8 @@ LEAD_METHOD = (
 SIMILARITY_METHOD = (
     "the remaining lives of the learning runs at the moments their health indicator (the "
     "largest deviation of every indicator and channel above its baseline) matched this "
-    "series' last 20 min, weighted by the match; the estimate maximises the expected PHM "
-    "2012 score"
+    f"series' history (up to its last {WINDOW / 60:g} min), weighted by the match; the "
+    "estimate maximises the expected PHM 2012 score"
 )
 TREND_METHOD = (
     "the r.m.s. level's rise since the alarm (Theil-Sen, Mann-Kendall p < 0.05) extrapolated "
@@ -273,18 +275,18 @@ def estimate_at(life: dict, times, hi, alarm: int | None, i: int) -> tuple:
 
 def _similar(trajectories, times, health, alarm, i: int) -> tuple:
     """:func:`estimate_at` by trajectory similarity (:mod:`.similarity`); ``health`` is
-    its health indicator. Basis: survival before the alarm (the match is to the learned
-    runs' healthy stretches), degradation from it on."""
+    its health indicator. The basis is a label: survival before the alarm, degradation from
+    it on (the match itself reads the indicator, not the alarm); survival too where nothing
+    learned can be matched yet (the lives' law given the series' age)."""
     from .similarity import candidates, weighted_quantile
 
     basis = "survival" if alarm is None or i < alarm else "degradation"
     found = candidates(trajectories, times, health, i)
     if found is None:
-        lives = [float(tr["life_s"]) for tr in trajectories]
-        p = Predictive.of(lives)
+        p = Predictive.of([float(tr["life_s"]) for tr in trajectories])
         r = p.quantiles(float(times[i]), QUANTILES)
         lo, hi_ = p.quantiles(float(times[i]), INTERVAL)
-        return best_estimate(r), float(lo), float(hi_), SURVIVAL_METHOD, basis
+        return best_estimate(r), float(lo), float(hi_), SURVIVAL_METHOD, "survival"
     r, w = found
     lo, hi_ = weighted_quantile(r, w, INTERVAL)
     est = min(max(best_estimate(r, w), float(lo)), float(hi_))

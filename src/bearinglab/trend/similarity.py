@@ -7,8 +7,11 @@ levels over the persistence window, :mod:`.alarm`) above the series' own baselin
 robust scales, as log(1 + max(0, z)): 0 while every test sits at or below its baseline, 1.8
 at 5 scales, 4.6 at 100. It reads the kurtosis, the spectral kurtosis, the peak and the
 crest factor as well as the r.m.s., each normalised to the run's own baseline, so that
-runs of different machines and sensors compare; the largest over the tests keeps it
-independent of how many channels a series has.
+runs of different machines and sensors compare; the largest over the tests, so that a
+change of any one shows. Its healthy level grows a little with the number of tests (for
+independent ones, about 0.73 on one channel's 5 tests and 0.90 on two channels' 10): the
+packaged runs have two channels, so a one-channel series reads somewhat healthier than
+a two-channel one would (docs/capabilities/trend.md, Known limits).
 
 **Similarity.** The indicator over the series' last :data:`WINDOW` seconds (or what there
 is of it since the baseline) is compared with every stretch of the same length of each
@@ -74,7 +77,17 @@ def health_indicator(values, tests, first: int, stop: int, window: int) -> np.nd
 def trajectory(name: str, times, health) -> dict:
     """A learned run's indicator as kept in the learned file: ``run``, ``life_s`` (its last
     record's time), ``times_s`` and ``health`` (the records with a level, at most
-    :data:`MAX_RECORDS` of them, evenly spaced, the last one included)."""
+    :data:`MAX_RECORDS` of them, evenly spaced, the last one included).
+
+    Parameters
+    ----------
+    name : str
+        The run's name.
+    times : array_like
+        Its record times [s]; the last is its life.
+    health : array_like
+        Its health indicator (:func:`health_indicator`; NaN where it has no level) [-].
+    """
     times = np.asarray(times, dtype=float)
     health = np.asarray(health, dtype=float)
     life = float(times[-1])
@@ -94,11 +107,28 @@ def weighted_quantile(samples, weights, q) -> np.ndarray:
     """Quantiles ``q`` of ``samples`` under ``weights`` (the weighted empirical law,
     interpolated between the samples' cumulative weights).
 
+    Parameters
+    ----------
+    samples : array_like
+        The values (at least one).
+    weights : array_like
+        Their weights, >= 0 and not all 0 [-].
+    q : float or array_like
+        Quantiles in [0, 1] [-].
+
+    Examples
+    --------
     >>> float(weighted_quantile([1.0, 2.0, 3.0], [1.0, 0.0, 1.0], 0.5))
     2.0
     """
+    from ..errors import InputError
+
     x = np.asarray(samples, dtype=float)
     w = np.asarray(weights, dtype=float)
+    if x.size == 0 or w.shape != x.shape:
+        raise InputError("samples", x.size, "at least one value, with one weight each")
+    if not (np.all(w >= 0.0) and w.sum() > 0.0):
+        raise InputError("weights", "all 0 or some negative", "weights >= 0, not all 0")
     order = np.argsort(x)
     cum = np.cumsum(w[order])
     mid = (cum - 0.5 * w[order]) / cum[-1]
@@ -156,7 +186,8 @@ def _stretches(trajectories, span: float, offsets):
     """(learned indicators at ``offsets`` before each record tau, stretches x offsets; the
     remaining lives life - tau; the run of each) over the learned ``trajectories``, or None
     when none is as long as ``span``; the last few are kept, since a series' history asks
-    for the same ones at every record once it is longer than the window."""
+    for the same ones at every record once it is longer than the window (keyed on the
+    ``trajectories`` object: a learned file's, never changed in place)."""
     for key, value in _STRETCHES:
         if key[0] is trajectories and key[1] == span:
             return value
@@ -173,6 +204,8 @@ def _stretches(trajectories, span: float, offsets):
     value = (
         (np.concatenate(blocks), np.concatenate(lives), np.concatenate(runs)) if blocks else None
     )
+    for a in value or ():  # shared by every later call: read-only
+        a.setflags(write=False)
     _STRETCHES.insert(0, ((trajectories, span), value))
     del _STRETCHES[4:]
     return value
