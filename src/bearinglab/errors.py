@@ -236,6 +236,8 @@ def bore_below_outside(bore: float, outside_diameter: float, blame: str = "outsi
     ...
     bearinglab.errors.InputError: bore = 0.06 is not allowed: expected less than the ...
     """
+    if blame not in ("outside_diameter", "bore"):
+        raise ValueError(f"blame must be 'outside_diameter' or 'bore', not {blame!r}")
     if bore < outside_diameter:
         return
     if blame == "bore":

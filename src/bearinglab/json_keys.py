@@ -160,6 +160,10 @@ DIMENSIONLESS: dict[str, str] = {
     "methods": "the diagnosis methods run (raw, cpw, drs-sk, ies)",
     "method_shown": "the method whose spectrum is shown",
     "cage_modulation_of": "faults whose FTF lines were counted as cage modulation",
+    "second_look": "null, or the faults read once the first fault's impacts were removed "
+    "from the squared envelope: removed, rate_hz, added",
+    "removed": "the fault whose impacts the second look removed",
+    "added": "the faults the second look read beside the first",
     "band_kurtosis": "spectral kurtosis of the demodulation band",
     "harmonics": "highest harmonic order tested",
     "speed": "the speed given, found in the signal and used",

@@ -51,6 +51,9 @@ def test_the_readme_compound_is_reported_whole_by_cpw(er16k):
     harmonics = {ln["n"] for ln in d.families["ball"]["lines"] if ln["kind"] == "harmonic"}
     assert len(harmonics) >= 2
     assert "impacts recurring at 104.1" in d.reason
+    look = d.to_dict()["second_look"]  # and the JSON says how it was read
+    assert look["removed"] == "outer_race" and look["added"] == ["ball"]
+    assert look["rate_hz"] == pytest.approx(kin.hz("bpfo"), rel=1e-3)
 
 
 def test_a_single_simulated_fault_stays_single(er16k):
@@ -190,7 +193,7 @@ def test_a_first_fault_is_gone_only_when_it_no_longer_shows_at_one_percent(monke
     def look(remainder):
         left["t"] = _series(remainder, ())
         return residual.second_look(
-            np.zeros(4096), FS, [Spectrum()], fams, first, {}, 900.0, 8, 0.01, (30.0, 12.0), 900.0
+            FS, [Spectrum()], fams, first, {}, 900.0, 8, 0.01, (30.0, 12.0), 900.0
         )
 
     assert look(2.65) is first  # below the threshold 10^-3.08, but still a series at 1 %

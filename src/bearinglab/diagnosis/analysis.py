@@ -9,6 +9,7 @@ against the local noise floor (:mod:`.series`) and decide (:mod:`.verdict`).
 
 from __future__ import annotations
 
+import dataclasses
 import math
 
 import numpy as np
@@ -412,7 +413,6 @@ def analyze_signal(
     )
     # a compound fault's second series, read once the first fault's impacts are removed
     decision = second_look(
-        x,
         fs,
         spectra,
         fams,
@@ -424,6 +424,8 @@ def analyze_signal(
         (rates["shaft"], rates["ftf"]),
         reference,
     )
+    # the envelopes were kept for the second look only: the result does not carry them
+    spectra = [dataclasses.replace(s, envelope=None) for s in spectra]
     faults = withdrawn = tuple(decision["faults"])
     if doubt is not None:
         # a race or ball series sits where the given speed puts it: that confirms it; else
@@ -499,6 +501,7 @@ def analyze_signal(
         reason=reason,
         modulation=tuple(decision["modulation"]),
         record=(x, fs, load),
+        second_look=decision.get("second_look"),
     )
 
 

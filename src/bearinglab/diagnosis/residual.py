@@ -74,7 +74,19 @@ def _bins(sample_rate: float, f0: float) -> int:
 
 def periodic_power(e: np.ndarray, sample_rate: float, f0: float, harmonics: int) -> float:
     """Power of the first ``harmonics`` harmonics of the synchronous average of ``e`` at
-    the rate ``f0`` [Hz] [unit of ``e`` squared]."""
+    the rate ``f0`` [Hz] [unit of ``e`` squared].
+
+    Parameters
+    ----------
+    e : numpy.ndarray
+        The squared envelope (mean removed).
+    sample_rate : float
+        f_s [Hz].
+    f0 : float
+        The rate averaged at [Hz], > 0.
+    harmonics : int
+        Harmonics of the average summed [-].
+    """
     average, _, _ = _folded(e, sample_rate, f0, max(64, 8 * harmonics))
     lines = np.fft.rfft(average)[1 : harmonics + 1] / average.size
     return float(2.0 * np.sum(np.abs(lines) ** 2))
@@ -85,14 +97,37 @@ def fault_rate(e: np.ndarray, sample_rate: float, fitted: float, uncertainty: fl
     envelope ``e``, to a small fraction of 1 / T (T the record's length).
 
     Each of the first RATE_LINES harmonics that lie below Nyquist is found as the
-    strongest bin of the Hann-windowed spectrum of the whole ``e`` within k (``fitted``
-    +- ``uncertainty``), placed between bins by the parabola through the logarithms of
-    its power and its neighbours' (Gaussian interpolation: a bias below 2 % of a bin for
-    the Hann window); the rate is their least-squares slope over k, each weighted by its
-    power. Then the synchronous average's power in its first RATE_HARMONICS harmonics is
-    read at that rate and a quarter of its main lobe either side, and the rate moved to
-    the top of the parabola through the three (:func:`periodic_power`).
+    strongest bin of the Hann-windowed spectrum of the whole ``e``: the first within
+    ``fitted`` +- ``uncertainty``, each next one within 3 bins x k / j of k times the rate
+    from the j harmonics found so far (so that another series' line beside a high
+    harmonic cannot pull the rate), placed between bins by the parabola through the
+    logarithms of its power and its neighbours' (Gaussian interpolation: a bias below a
+    few per cent of a bin for the Hann window; Gasior M., Gonzalez J. L., "Improving FFT
+    frequency measurement resolution by parabolic and Gaussian spectrum interpolation",
+    AIP Conf. Proc. 732 (2004) 276-285); the rate is their least-squares slope over k,
+    each weighted by its power. Then the synchronous average's power in its first
+    RATE_HARMONICS harmonics is read at that rate and a quarter of its main lobe either
+    side, and the rate moved to the top of the parabola through the three
+    (:func:`periodic_power`).
 
+    Parameters
+    ----------
+    e : numpy.ndarray
+        The squared envelope (mean removed).
+    sample_rate : float
+        f_s [Hz].
+    fitted : float
+        The rate the family's test fitted [Hz], > 0.
+    uncertainty : float
+        How far from ``fitted`` the rate may be [Hz] (a Welch bin).
+
+    Returns
+    -------
+    float
+        The rate [Hz]; ``fitted`` when no harmonic can be read.
+
+    Examples
+    --------
     >>> fs, f = 2000.0, 31.7
     >>> t = np.arange(8000) / fs
     >>> e = np.exp(-((t * f) % 1.0) * 20.0)
@@ -108,10 +143,11 @@ def fault_rate(e: np.ndarray, sample_rate: float, fitted: float, uncertainty: fl
     power = np.abs(np.fft.rfft((e - e.mean()) * window, size)) ** 2
     bin_hz = sample_rate / size
     ks, rates, weights = [], [], []
+    centre, half = fitted, uncertainty
     for k in range(1, RATE_LINES + 1):
-        lo = max(int(math.floor(k * (fitted - uncertainty) / bin_hz)), 1)
-        hi = int(math.ceil(k * (fitted + uncertainty) / bin_hz))
-        if hi + 1 >= power.size:
+        lo = max(int(math.floor(k * (centre - half) / bin_hz)), 1)
+        hi = int(math.ceil(k * (centre + half) / bin_hz))
+        if hi + 1 >= power.size or hi < lo:
             break
         i = lo + int(np.argmax(power[lo : hi + 1]))
         a, b, c = np.log(np.maximum(power[i - 1 : i + 2], 1e-300))
@@ -120,16 +156,22 @@ def fault_rate(e: np.ndarray, sample_rate: float, fitted: float, uncertainty: fl
         ks.append(k)
         rates.append((i + offset) * bin_hz / k)
         weights.append(power[i])
+        f = _slope(ks, rates, weights)
+        centre, half = f, min(uncertainty, 3.0 * bin_hz / k)  # k x half: 3 bins x k / j
     if not ks:
         return fitted
-    ks, rates, weights = np.array(ks), np.array(rates), np.array(weights)
-    f = float(np.sum(weights * ks * ks * rates) / np.sum(weights * ks * ks))
     step = 1.0 / (4.0 * (n / sample_rate) * RATE_HARMONICS)
     a, b, c = (periodic_power(e, sample_rate, f + d * step, RATE_HARMONICS) for d in (-1, 0, 1))
     curvature = a - 2.0 * b + c
     if curvature < 0.0:
         f += float(np.clip(0.5 * (a - c) / curvature, -1.0, 1.0)) * step
     return f
+
+
+def _slope(ks, rates, weights) -> float:
+    """The rate of the harmonics found: the least-squares slope over k, weighted by power."""
+    k2w = np.asarray(weights) * np.asarray(ks, dtype=float) ** 2
+    return float(np.sum(k2w * np.asarray(rates)) / np.sum(k2w))
 
 
 def without_impacts(e: np.ndarray, sample_rate: float, f0: float) -> np.ndarray:
@@ -140,6 +182,17 @@ def without_impacts(e: np.ndarray, sample_rate: float, f0: float) -> np.ndarray:
     impacts. Within each period the fit is of the average's shape about its mean, so that
     what does not recur (another fault's lines, the noise) stays.
 
+    Parameters
+    ----------
+    e : numpy.ndarray
+        The squared envelope (mean removed).
+    sample_rate : float
+        f_s [Hz].
+    f0 : float
+        The impacts' rate [Hz]; ``e`` is returned as it is unless 0 < f0 < f_s / 2.
+
+    Examples
+    --------
     Impacts whose strength varies at random from one to the next lose their line:
 
     >>> fs, f = 2000.0, 31.7
@@ -150,6 +203,8 @@ def without_impacts(e: np.ndarray, sample_rate: float, f0: float) -> np.ndarray:
     >>> bool(line(without_impacts(e, fs, f)) < 0.02 * line(e))
     True
     """
+    if not 0.0 < f0 < 0.5 * sample_rate or e.size < 2:
+        return e
     bins = _bins(sample_rate, f0)
     average, b, whole = _folded(e, sample_rate, f0, bins)
     width = max(bins // 16, 1)
@@ -170,33 +225,30 @@ def without_impacts(e: np.ndarray, sample_rate: float, f0: float) -> np.ndarray:
     return e - scale[period] * shape
 
 
-def _prepared(method: str, x: np.ndarray, sample_rate: float):
-    from ..signal.preprocess import cepstral_prewhitening, discrete_random_separation
+def residual_spectra(sample_rate: float, spectra, fitted: float) -> list:
+    """Each readable method's squared envelope spectrum with the impacts at the rate
+    refined from ``fitted`` [Hz] removed, as :class:`.methods.MethodSpectrum` with ``z``,
+    and the rate used for each [Hz].
 
-    if method == "raw":
-        return x
-    if method == "cpw":
-        return cepstral_prewhitening(x)
-    return discrete_random_separation(x, sample_rate)[0]
-
-
-def residual_spectra(x: np.ndarray, sample_rate: float, spectra, fitted: float) -> list:
-    """Each readable method's squared envelope spectrum of ``x`` with the impacts at the
-    rate refined from ``fitted`` [Hz] removed, as :class:`.methods.MethodSpectrum` with
-    ``z``, and the rate used for each [Hz]."""
-    from ..signal.spectra import envelope, welch_power
+    Parameters
+    ----------
+    sample_rate : float
+        f_s [Hz].
+    spectra : sequence of MethodSpectrum
+        The first reading's, each with its squared ``envelope`` (those without are left
+        out).
+    fitted : float
+        The first fault's rate as its test fitted it [Hz].
+    """
+    from ..signal.spectra import welch_power
     from .statistics import welch_dof
     from .verdict import with_z
 
     out = []
     for spec in spectra:
-        if spec.method not in READABLE:
+        e = spec.envelope
+        if spec.method not in READABLE or e is None:
             continue
-        e = spec.envelope  # the first reading's, when it kept it
-        if e is None:
-            e = envelope(
-                _prepared(spec.method, x, sample_rate), sample_rate, spec.band, squared=True
-            )
         f0 = fault_rate(e, sample_rate, fitted, spec.resolution)
         rest = without_impacts(e, sample_rate, f0)
         nperseg = int(round(sample_rate / spec.resolution))
@@ -207,7 +259,6 @@ def residual_spectra(x: np.ndarray, sample_rate: float, spectra, fitted: float) 
 
 
 def second_look(
-    x: np.ndarray,
     sample_rate: float,
     spectra,
     fams,
@@ -224,7 +275,33 @@ def second_look(
     was accepted, every family was, or the first fault is not gone from the remainder.
 
     The decision returned carries ``second_look``: the first fault, the rate [Hz] its
-    impacts were removed at, and the faults the remainder added.
+    impacts were removed at (in the method that read the first fault added), and the
+    faults the remainder added. The families read again are read at the first reading's
+    level ``alpha``, not a level split between the two readings: the second look adds at
+    most as many tests as the families left, and only where a first fault is accepted.
+
+    Parameters
+    ----------
+    sample_rate : float
+        f_s [Hz].
+    spectra : sequence of MethodSpectrum
+        The first reading's spectra, with their squared envelopes.
+    fams : sequence of Family
+        Every family tested.
+    decision : dict
+        The first reading's :func:`.verdict.decide`.
+    lines : dict
+        The machine's lines masked (shaft, supply, mesh, varying compliance) [Hz].
+    max_frequency : float
+        Top of the line search [Hz].
+    harmonics : int
+        Harmonics read per family [-].
+    false_alarm : float
+        The record's false-alarm probability [-].
+    modulations : tuple
+        (shaft, cage) rates [Hz] of the sidebands.
+    reference : float
+        Top of the tail's reference [Hz].
     """
     from .verdict import decide, discrete_mask, read_families
 
@@ -234,10 +311,11 @@ def second_look(
         return decision
     first = accepted[0]
     fitted = decision["tests"][first][1].fundamental_hz
-    read = residual_spectra(x, sample_rate, spectra, fitted)
+    read = residual_spectra(sample_rate, spectra, fitted)
     if not read:
         return decision
     rest = [spec for spec, _ in read]
+    rates = {spec.method: rate for spec, rate in read}
     valid, _ = discrete_mask(rest, lines, max(reference, max_frequency))
     by_name = {f.name: f for f in fams}
     bottom = min(f.lowest for f in fams)
@@ -264,10 +342,11 @@ def second_look(
         return decision
     tests = dict(decision["tests"])
     tests.update({f: again["tests"][f] for f in added})
+    rate = rates[again["tests"][added[0]][0]]  # in the method that read the fault added
     return {
         **decision,
         "faults": accepted + added,
         "tests": tests,
         "modulation": list(dict.fromkeys(list(decision["modulation"]) + again["modulation"])),
-        "second_look": {"removed": first, "rate_hz": read[0][1], "added": added},
+        "second_look": {"removed": first, "rate_hz": rate, "added": added},
     }

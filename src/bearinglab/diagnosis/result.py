@@ -52,6 +52,10 @@ class Diagnosis:
     record : tuple or None
         (samples, sample rate [Hz], radial load [N] or None): what the sizing of a race
         defect reads (:attr:`defect_sizes`).
+    second_look : dict or None
+        When faults were read after the first fault's impacts were removed
+        (:mod:`.residual`): ``removed`` (that fault), ``rate_hz`` (the rate its impacts
+        were removed at) and ``added`` (the faults read then); else None.
     """
 
     verdict: str
@@ -74,6 +78,7 @@ class Diagnosis:
     reason: str
     modulation: tuple = ()
     record: tuple | None = field(default=None, repr=False, compare=False)
+    second_look: dict | None = None
 
     # ---------------------------------------------------------- verdict views
     @property
@@ -166,6 +171,13 @@ class Diagnosis:
             "scores": self.scores,
             "reason": self.reason,
             "cage_modulation_of": list(self.modulation),
+            "second_look": None
+            if self.second_look is None
+            else {
+                "removed": self.second_look["removed"],
+                "rate_hz": float(self.second_look["rate_hz"]),
+                "added": list(self.second_look["added"]),
+            },
             "channel": self.channel,
             "sample_rate_hz": self.sample_rate,
             "methods": list(self.methods),
@@ -326,6 +338,10 @@ def _as_rollers(d: dict) -> dict:
     d["verdict"] = " ".join("roller" if w == "ball" else w for w in str(d["verdict"]).split(" "))
     d["faults"] = [name(f) for f in d["faults"]]
     d["cage_modulation_of"] = [name(f) for f in d["cage_modulation_of"]]
+    if d.get("second_look"):
+        look = d["second_look"]
+        added = [name(f) for f in look["added"]]
+        d["second_look"] = {**look, "removed": name(look["removed"]), "added": added}
     for key in ("families", "scores", "tolerances"):
         if isinstance(d.get(key), dict):
             d[key] = {name(k): v for k, v in d[key].items()}

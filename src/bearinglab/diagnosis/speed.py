@@ -99,10 +99,11 @@ class ShaftEstimate:
         }
 
 
-@functools.lru_cache(maxsize=8)
+@functools.lru_cache(maxsize=2)
 def periodic_hann(n: int) -> np.ndarray:
     """The periodic Hann window of ``n`` samples (``numpy.hanning(n + 1)[:-1]``), kept
-    for the record lengths seen: a cosine of 120 000 points costs 0.5 ms a call.
+    for the last two record lengths seen (a cosine of 120 000 points costs 0.5 ms a call;
+    a long record's window is megabytes, so no more are kept).
 
     Parameters
     ----------
