@@ -112,6 +112,16 @@ def test_the_prewhitening_and_the_speed_reuse_the_record_spectrum():
     assert fast.p_value == pytest.approx(plain.p_value, rel=1e-9)
 
 
+def test_the_raw_envelope_reuses_the_record_spectrum():
+    from bearinglab.diagnosis.methods import method_spectrum
+
+    x = np.random.default_rng(4).standard_normal(16000)
+    fast = method_spectrum("raw", x, 4000.0, 2.0, spectrum=np.fft.rfft(x - x.mean()))
+    plain = method_spectrum("raw", x, 4000.0, 2.0)
+    assert np.allclose(fast.power, plain.power, rtol=1e-12, atol=0.0)
+    assert np.allclose(fast.envelope, plain.envelope, rtol=1e-12, atol=1e-12)
+
+
 @pytest.mark.parametrize("designation", ["6205-2RS", "6203", "6310", "61800"])
 def test_the_ball_series_constant_is_the_two_contacts_computed_alone(designation):
     from bearinglab.catalog import bearing_from_designation

@@ -255,8 +255,8 @@ def method_spectrum(
         Upper end of the line search [Hz] (``ies`` computes its cyclic frequencies up to
         there and a margin); default 5.5 x ``largest_defect``.
     spectrum : numpy.ndarray, optional
-        ``numpy.fft.rfft(x - x.mean())`` when already at hand (``cpw`` and ``ies`` then
-        do not transform the record again).
+        ``numpy.fft.rfft(x - x.mean())`` when already at hand (``raw``, ``cpw`` and ``ies``
+        then do not transform the record again).
 
     Returns
     -------
@@ -268,7 +268,7 @@ def method_spectrum(
     kurtogram = None
     record_spectrum, spectrum = spectrum, None  # the real spectrum of y at its own length
     if method == "raw":
-        y = x
+        y, spectrum = x, record_spectrum
     elif method in ("cpw", "ies"):
         y, spectrum = prewhitened(np.asarray(x, dtype=float), record_spectrum)
     elif method == "drs-sk":
