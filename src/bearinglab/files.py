@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import os
-import tempfile
+import uuid
 from collections.abc import Callable
 from pathlib import Path
 
@@ -22,17 +22,14 @@ def write_atomically(path: str | Path, write: Callable[[str], None]) -> Path:
         Writes the content to the file name it is given.
     """
     path = Path(path)
-    tmp = None
+    # the name is chosen before the file exists, so that a Ctrl-C at any moment after its
+    # creation (even inside the call that creates it) finds it in the cleanup below
+    tmp = path.with_name(f".{path.stem}-{uuid.uuid4().hex[:8]}{path.suffix}")
     try:
-        fd, tmp = tempfile.mkstemp(suffix=path.suffix, dir=path.parent, prefix=f".{path.stem}-")
-        os.close(fd)
-        write(tmp)
-        # mkstemp makes the file private (0600); give it the mode an ordinary file gets
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)
+        os.close(os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o666))  # umask applies
+        write(str(tmp))
         os.replace(tmp, path)
     finally:  # a failure or a Ctrl-C (KeyboardInterrupt) in write: no file left behind
-        if tmp is not None and os.path.exists(tmp):
+        if os.path.exists(tmp):
             os.unlink(tmp)
     return path

@@ -26,3 +26,19 @@ def test_failed_write_leaves_no_file(tmp_path):
     with pytest.raises(RuntimeError):
         write_atomically(tmp_path / "out.txt", fail)
     assert list(tmp_path.iterdir()) == []
+
+
+def test_a_ctrl_c_just_after_the_file_is_created_leaves_no_file(tmp_path, monkeypatch):
+    # CI once found a temporary part file left by a Ctrl-C that came inside the call that
+    # created it (tempfile.mkstemp, before its name was returned)
+    real_open = os.open
+
+    def open_then_interrupt(*args, **kwargs):
+        os.close(real_open(*args, **kwargs))
+        raise KeyboardInterrupt
+
+    monkeypatch.setattr(os, "open", open_then_interrupt)
+    with pytest.raises(KeyboardInterrupt):
+        write_atomically(tmp_path / "out.txt", lambda tmp: None)
+    monkeypatch.undo()
+    assert list(tmp_path.iterdir()) == []
