@@ -33,3 +33,16 @@ def write_atomically(path: str | Path, write: Callable[[str], None]) -> Path:
         if os.path.exists(tmp):
             os.unlink(tmp)
     return path
+
+
+def write_text_atomically(path: str | Path, text: str) -> Path:
+    """Write ``text`` (UTF-8) to ``path`` by :func:`write_atomically`.
+
+    Parameters
+    ----------
+    path : str or Path
+        Destination; its directory must exist.
+    text : str
+        The content.
+    """
+    return write_atomically(path, lambda tmp: Path(tmp).write_text(text, encoding="utf-8"))

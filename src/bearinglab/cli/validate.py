@@ -138,7 +138,7 @@ def validate_command(values, json_output: JsonOpt = False, html=None):
 
 def _write_html(path: Path, results: list[dict], summary: dict) -> None:
     from .. import __version__
-    from ..files import write_atomically
+    from ..files import write_text_atomically
     from ..report import validation_page
 
     now = datetime.datetime.now().strftime("%Y-%m-%d %H:%M")
@@ -148,4 +148,4 @@ def _write_html(path: Path, results: list[dict], summary: dict) -> None:
         f"generated {now} by bearinglab {__version__} in {summary['duration_s']:.1f} s",
     )
     with writing("--html", path):
-        write_atomically(path, lambda tmp: Path(tmp).write_text(text, encoding="utf-8"))
+        write_text_atomically(path, text)

@@ -26,7 +26,7 @@ from ..engine import (
     reraise_interrupt,
 )
 from ..errors import InputError
-from ..files import write_atomically
+from ..files import write_atomically, write_text_atomically
 from ..study.cases import (
     canonical,
     check_writable,
@@ -358,7 +358,7 @@ def _run(
     with open_runner(scheduler, workers, connect_timeout) as runner:
         (folder / "signals").mkdir(parents=True, exist_ok=True)
         own.mkdir(exist_ok=True)
-        write_atomically(own / MARKER, lambda tmp: Path(tmp).write_text(marker, encoding="utf-8"))
+        write_text_atomically(own / MARKER, marker)
         info = (runner.scheduler, runner.workers, runner.dashboard)
         seconds, cpu, memory = measured_run(
             runner,

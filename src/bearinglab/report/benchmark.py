@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from ..files import write_atomically
+from ..files import write_text_atomically
 from .document import figure, page, paragraph, table
 
 
@@ -121,4 +121,4 @@ def write_benchmark_page(result, path) -> Path:
         The file written.
     """
     text = benchmark_page(result)
-    return write_atomically(path, lambda tmp: Path(tmp).write_text(text, encoding="utf-8"))
+    return write_text_atomically(path, text)

@@ -15,7 +15,7 @@ import math
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from ..files import write_atomically
+from ..files import write_text_atomically
 
 #: Resolution of the embedded figures [dots per inch]; a 11 in wide figure is 1100 px.
 FIGURE_DPI = 100
@@ -258,7 +258,7 @@ class Report:
             The file written.
         """
         text = self.to_html()
-        return write_atomically(path, lambda tmp: Path(tmp).write_text(text, encoding="utf-8"))
+        return write_text_atomically(path, text)
 
 
 def page(title: str, subtitle: list[str], body: str, meta: str = "") -> str:

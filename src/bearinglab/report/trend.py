@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from ..files import write_atomically
+from ..files import write_text_atomically
 from ..trend.result import life_text, measured_text
 from .document import figure, key_figures, notes, number, page, paragraph, table
 
@@ -185,4 +185,4 @@ def write_trend_page(result, path) -> Path:
         The file written.
     """
     text = trend_page(result)
-    return write_atomically(path, lambda tmp: Path(tmp).write_text(text, encoding="utf-8"))
+    return write_text_atomically(path, text)

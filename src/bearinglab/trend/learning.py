@@ -86,10 +86,10 @@ class LearnedRuns:
         Path
             The file written.
         """
-        from ..files import write_atomically
+        from ..files import write_text_atomically
 
         text = json.dumps(self.to_dict(), indent=1, allow_nan=False) + "\n"
-        return write_atomically(path, lambda tmp: Path(tmp).write_text(text, encoding="utf-8"))
+        return write_text_atomically(path, text)
 
 
 def read_learned(path) -> LearnedRuns:
