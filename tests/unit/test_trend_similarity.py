@@ -110,3 +110,15 @@ def test_the_packaged_defaults_hold_each_learning_runs_indicator():
         assert np.all(np.diff(t) > 0) and t[-1] == pytest.approx(row["life_s"])
         # each run ends well above its baseline (the 20 g stop)
         assert np.isfinite(h).all() and h[-1] > 1.0 and h[-1] > np.median(h) + 0.3
+
+
+@pytest.mark.parametrize(
+    "samples, weights, parameter",
+    [([], [], "samples"), ([1.0, 2.0], [1.0], "samples"), ([1.0, 2.0], [0.0, 0.0], "weights")],
+)
+def test_weighted_quantile_refuses_what_has_no_law(samples, weights, parameter):
+    from bearinglab.errors import InputError
+
+    with pytest.raises(InputError) as err:
+        weighted_quantile(samples, weights, 0.5)
+    assert err.value.parameter == parameter
